@@ -1,0 +1,64 @@
+#pragma once
+/// Flattening with a proven bound: Bézier pieces become a polyline whose
+/// two-sided (Hausdorff) distance to the true curve, after rounding of the
+/// vertices to the printed decimals, is at most the tolerance.
+///
+/// Method (bezcam's own; see docs/flattening.md):
+///  * Vertices lie on the curve (before rounding). For a chord [A, B] =
+///    [M(t0), M(t1)] the distance of the sub-curve to the chord is bounded
+///    by `chord_deviation()`, which is exact (closed form) for polynomial
+///    pieces of degree <= 3 and a rigorous convex-hull branch-and-bound bound
+///    otherwise. Because the sub-curve runs continuously from A to B, its
+///    projection covers the chord, so the chord's distance to the curve is at
+///    most the curve's distance to the chord: one number bounds both sides.
+///  * Rounding A and B to A', B' moves every point of the chord by at most
+///    max(|A'-A|, |B'-B|) (points correspond by the same affine parameter),
+///    so the printed chord is within deviation + that displacement.
+///  * Chords are chosen greedily, each as long as possible (to within a few
+///    per cent) under that bound, which keeps the count near the greedy
+///    maximal-chord minimum while never exceeding the tolerance.
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "bezcam/kernel/bezier.hpp"
+
+namespace bezcam {
+
+struct FlattenOptions {
+  /// Largest allowed distance between curve and printed polyline (model units).
+  double tolerance = 0.01;
+  /// Decimals the vertices will be printed with; -1: no rounding.
+  int decimals = -1;
+};
+
+/// One emitted vertex: the rounded point, and for diagnostics the piece and
+/// parameter it came from.
+struct FlatVertex {
+  Vec3 point;
+  size_t piece = 0;
+  double t = 0;
+};
+
+struct FlattenResult {
+  std::vector<Vec3> points;  ///< rounded vertices, first = start of first piece
+  double bound = 0;          ///< certified upper bound of the deviation
+};
+
+/// Upper bound of max over t in [t0,t1] of dist(M(t), segment [M(t0), M(t1)]),
+/// exact up to floating-point error for polynomial pieces of degree <= 3.
+double chord_deviation(const Bezier& piece, double t0, double t1);
+
+/// Callback core: emits the vertices of the polyline in order (the first
+/// vertex is the start of the first piece). Returns the certified bound.
+/// Throws InputError when `decimals` cannot honour the tolerance.
+double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
+                      const std::function<void(const FlatVertex&)>& emit);
+
+/// Collecting wrapper around flatten_pieces().
+FlattenResult flatten(std::span<const Bezier> pieces, const FlattenOptions& opt);
+inline FlattenResult flatten(const Bezier& b, const FlattenOptions& opt) {
+  return flatten(std::span<const Bezier>(&b, 1), opt);
+}
+
+}  // namespace bezcam

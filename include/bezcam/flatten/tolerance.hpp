@@ -1,0 +1,28 @@
+#pragma once
+/// Tolerance and rounding: the two quantities every bound in bezcam adds up.
+///
+/// A tolerance is the largest distance allowed between the true geometry and
+/// the tool path *as printed*, in model units. Printing rounds coordinates to
+/// a number of decimals; that displacement counts against the tolerance.
+#include "bezcam/kernel/vec.hpp"
+
+namespace bezcam {
+
+/// Default chord tolerance when a job gives none (mm).
+inline constexpr double kDefaultToleranceMm = 0.01;
+/// Relative share of the tolerance kept back for floating-point error in the
+/// bound computations (evaluation, root finding, parsing of printed text).
+inline constexpr double kToleranceSafety = 1e-9;
+
+/// The value a controller reads back when `v` is printed with `decimals`
+/// digits after the point (the printed text is parsed back, so the value is
+/// bit-for-bit what the G-code writer prints). decimals < 0: no rounding.
+double quantize(double v, int decimals);
+/// quantize() on x, y and z.
+Vec3 quantize(const Vec3& p, int decimals);
+/// Largest displacement rounding can cause to a point of `dim` coordinates.
+double max_rounding_displacement(int decimals, int dim);
+/// Margin for floating-point error at coordinates of magnitude `scale`.
+double float_margin(double tolerance, double scale);
+
+}  // namespace bezcam

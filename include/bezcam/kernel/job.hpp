@@ -1,0 +1,66 @@
+#pragma once
+/// A job: what the curve file (shared/spec/curve-file.md, version 1) holds,
+/// validated. Built only by job_json; after construction the invariants hold
+/// (finite numbers, positive tolerance, meeting path joints, ...).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "bezcam/kernel/curve.hpp"
+
+namespace bezcam {
+
+enum class Units { mm, inch };
+inline const char* to_string(Units u) { return u == Units::mm ? "mm" : "inch"; }
+/// Millimetres per unit.
+inline double mm_per_unit(Units u) { return u == Units::mm ? 1.0 : 25.4; }
+
+/// Cutting parameters (file units); unset values fall back to the entity's
+/// job, then to the machine profile.
+struct JobParams {
+  std::optional<double> feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool_radius;
+  std::optional<int> tool;
+  /// Values set here win; the rest come from `base`.
+  JobParams over(const JobParams& base) const;
+};
+
+/// Where a surface entity's passes go (curve-file.md, `toolpath`).
+struct ToolpathSpec {
+  std::string pattern = "zigzag";  ///< zigzag | raster | boundary
+  char direction = 'u';            ///< parameter that varies along a pass
+  std::optional<double> stepover;
+};
+
+struct Entity {
+  std::string id;      ///< may be empty
+  size_t index = 0;    ///< position in `entities`
+  std::string type;    ///< JSON type
+  JobParams params;    ///< this entity's overrides
+  CurveGeometry curve; ///< for curve entities (bezier, bspline, interpolate, path)
+
+  /// The id, or `entities[i]` when there is none.
+  std::string label() const { return id.empty() ? "entities[" + std::to_string(index) + "]" : id; }
+  std::string json_path() const { return "entities[" + std::to_string(index) + "]"; }
+};
+
+struct Job {
+  int version = 1;
+  Units units = Units::mm;
+  double tolerance = 0.01;
+  std::optional<std::string> machine;
+  JobParams params;
+  std::vector<Entity> entities;
+  std::vector<std::string> warnings;  ///< unknown keys and other non-fatal findings
+  std::string source;                 ///< file name, for messages
+};
+
+/// Parses and validates a job. `source` names the file in messages.
+/// Throws InputError whose place is `SOURCE: json.path`.
+Job parse_job(std::string_view text, const std::string& source);
+/// Reads a file and parses it; IoError when it cannot be read.
+Job load_job(const std::filesystem::path& file);
+
+}  // namespace bezcam

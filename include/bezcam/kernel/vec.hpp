@@ -1,0 +1,61 @@
+#pragma once
+/// A point or vector in model units. 2D geometry keeps z = 0 and records its
+/// dimension on the curve, so one type serves 2D and 3D.
+#include <algorithm>
+#include <cmath>
+
+namespace bezcam {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+
+  constexpr Vec3() = default;
+  constexpr Vec3(double x_, double y_, double z_ = 0) : x(x_), y(y_), z(z_) {}
+
+  constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+
+  constexpr Vec3 operator+(const Vec3& o) const { return {x + o.x, y + o.y, z + o.z}; }
+  constexpr Vec3 operator-(const Vec3& o) const { return {x - o.x, y - o.y, z - o.z}; }
+  constexpr Vec3 operator-() const { return {-x, -y, -z}; }
+  constexpr Vec3 operator*(double s) const { return {x * s, y * s, z * s}; }
+  constexpr Vec3 operator/(double s) const { return {x / s, y / s, z / s}; }
+  constexpr Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
+  constexpr Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
+  constexpr Vec3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
+  constexpr bool operator==(const Vec3&) const = default;
+};
+
+constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
+constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline double norm(const Vec3& v) { return std::sqrt(dot(v, v)); }
+inline double dist(const Vec3& a, const Vec3& b) { return norm(a - b); }
+/// Largest absolute coordinate: the magnitude that sets floating-point error.
+inline double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+/// a + t (b - a).
+constexpr Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + (b - a) * t; }
+
+/// Distance from p to the segment [a, b] (a point when a == b).
+inline double dist_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double len2 = dot(ab, ab);
+  if (len2 == 0) return dist(p, a);
+  const double s = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
+  return dist(p, a + ab * s);
+}
+
+/// Axis-aligned box.
+struct Box3 {
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  void add(const Vec3& p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  void add(const Box3& b) { if (!b.empty()) { add(b.lo); add(b.hi); } }
+  bool empty() const { return lo.x > hi.x; }
+};
+
+}  // namespace bezcam

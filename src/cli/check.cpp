@@ -1,0 +1,68 @@
+// bezcam check JOB.json: validates and describes a job without writing G-code.
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "bezcam/kernel/job.hpp"
+#include "command.hpp"
+
+namespace bezcam::cli {
+namespace {
+
+struct Options {
+  std::string job;
+} o;
+
+CLI::App* add(CLI::App& app) {
+  auto* s = app.add_subcommand("check", "Validate a job and print what it holds (entities, degrees, lengths, "
+                                        "continuity at path joints); writes no G-code.");
+  s->add_option("JOB", o.job, "job file (JSON)")->required();
+  return s;
+}
+
+std::string pt(const Vec3& p, int dim) {
+  std::ostringstream s;
+  s << std::setprecision(6) << "(" << p.x << ", " << p.y;
+  if (dim == 3) s << ", " << p.z;
+  s << ")";
+  return s.str();
+}
+
+int run() {
+  const Job job = load_job(o.job);
+  const char* u = to_string(job.units);
+  std::cout << job.source << ": bezcam format " << job.version << ", units " << u << ", tolerance "
+            << job.tolerance << " " << u << (job.machine ? ", machine " + *job.machine : std::string()) << "\n";
+  for (const auto& e : job.entities) {
+    const auto& g = e.curve;
+    std::cout << e.json_path() << (e.id.empty() ? "" : " \"" + e.id + "\"") << ": " << e.type;
+    if (!g.pieces.empty()) {
+      std::cout << ", " << g.dim << "D, degree " << g.max_degree() << (g.rational() ? ", rational" : "")
+                << ", " << g.pieces.size() << " Bézier piece" << (g.pieces.size() == 1 ? "" : "s") << ", length "
+                << std::setprecision(6) << g.length() << " " << u;
+      const Box3 b = g.bounds();
+      std::cout << ", bounds " << pt(b.lo, g.dim) << " to " << pt(b.hi, g.dim);
+      if (g.closed) std::cout << ", closed";
+    }
+    std::cout << "\n";
+    if (g.kind == "path") {
+      for (size_t i = 0; i < g.segments.size(); ++i)
+        std::cout << "  segments[" << i << "]: " << g.segments[i].kind << ", degree " << g.segments[i].degree
+                  << (g.segments[i].rational ? ", rational" : "") << "\n";
+      for (size_t j = 0; j < g.joints.size(); ++j) {
+        const size_t a = j, b = (j + 1) % g.segments.size();
+        std::cout << "  joint segments[" << a << "] -> segments[" << b << "]" << (j + 1 == g.segments.size() ? " (closing)" : "")
+                  << ": " << to_string(g.joints[j]) << "\n";
+      }
+    }
+  }
+  for (const auto& w : job.warnings) std::cerr << "bezcam: warning: " << w << "\n";
+  std::cout << "ok: " << job.entities.size() << " entit" << (job.entities.size() == 1 ? "y" : "ies") << " valid\n";
+  return 0;
+}
+
+Command cmd{"check", add, run};
+RegisterCommand reg(&cmd);
+
+}  // namespace
+}  // namespace bezcam::cli

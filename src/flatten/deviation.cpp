@@ -1,0 +1,152 @@
+#include "bezcam/flatten/deviation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+namespace bezcam {
+
+namespace {
+
+struct Sample {
+  Vec3 p;
+  size_t piece;
+  double t;
+};
+
+// Subdivide until the control polygon is within eps of the chord; keeps
+// on-curve end points with their parameters.
+void sample_piece(const Bezier& b, size_t piece, double t0, double t1, double eps, int depth,
+                  std::vector<Sample>& out) {
+  double flat = 0;
+  for (const auto& p : b.points) flat = std::max(flat, dist_to_segment(p, b.front(), b.back()));
+  if (flat <= eps || depth >= 40) {
+    out.push_back({b.back(), piece, t1});
+    return;
+  }
+  const double tm = 0.5 * (t0 + t1);
+  auto [l, r] = split(b, 0.5);
+  sample_piece(l, piece, t0, tm, eps, depth + 1, out);
+  sample_piece(r, piece, tm, t1, eps, depth + 1, out);
+}
+
+// Nearest distance from x to the polyline pts, searching a window around
+// *hint first and the whole polyline when the window's answer is large.
+double dist_to_polyline(const Vec3& x, std::span<const Vec3> pts, size_t& hint, size_t window, double large,
+                        size_t* seg_out = nullptr) {
+  const size_t nseg = pts.size() > 1 ? pts.size() - 1 : 0;
+  if (nseg == 0) return dist(x, pts[0]);
+  auto scan = [&](size_t a, size_t b) {
+    double best = std::numeric_limits<double>::infinity();
+    size_t arg = a;
+    for (size_t i = a; i < b; ++i) {
+      const double d = dist_to_segment(x, pts[i], pts[i + 1]);
+      if (d < best) best = d, arg = i;
+    }
+    return std::pair(best, arg);
+  };
+  const size_t a = hint > window ? hint - window : 0;
+  const size_t b = std::min(nseg, hint + window + 1);
+  auto [d, arg] = scan(a, b);
+  if (d > large) std::tie(d, arg) = scan(0, nseg);
+  hint = arg;
+  if (seg_out) *seg_out = arg;
+  return d;
+}
+
+double golden_max(double a, double b, const auto& f) {
+  const double g = 0.3819660112501051;
+  double x1 = a + g * (b - a), x2 = b - g * (b - a);
+  double f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < 60 && b - a > 1e-15; ++i) {
+    if (f1 < f2) {
+      a = x1; x1 = x2; f1 = f2; x2 = b - g * (b - a); f2 = f(x2);
+    } else {
+      b = x2; x2 = x1; f2 = f1; x1 = a + g * (b - a); f1 = f(x1);
+    }
+  }
+  return std::max(f1, f2);
+}
+
+}  // namespace
+
+Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3> polyline, double tolerance) {
+  Deviation dev;
+  if (pieces.empty() || polyline.empty()) return dev;
+  double scale = 0;
+  for (const auto& pc : pieces)
+    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
+  const double resolution = std::max(tolerance * 1e-3, scale * 1e-13);
+  std::vector<Sample> D;
+  D.push_back({pieces[0].front(), 0, 0});
+  for (size_t i = 0; i < pieces.size(); ++i) sample_piece(pieces[i], i, 0, 1, resolution, 0, D);
+  std::vector<Vec3> dpts(D.size());
+  for (size_t i = 0; i < D.size(); ++i) dpts[i] = D[i].p;
+
+  const double large = tolerance;
+  // Windows: the two sequences advance together along the curve.
+  const size_t wP = 8 + 2 * polyline.size() / D.size();
+  const size_t wD = 8 + 4 * D.size() / polyline.size();
+  // Curve -> polyline, at the on-curve samples, then refined between them.
+  {
+    size_t hint = 0;
+    std::vector<std::pair<double, size_t>> cand;
+    for (size_t i = 0; i < D.size(); ++i) {
+      const double d = dist_to_polyline(D[i].p, polyline, hint, wP, large);
+      cand.push_back({d, i});
+    }
+    std::partial_sort(cand.begin(), cand.begin() + std::min<size_t>(8, cand.size()), cand.end(),
+                      [](auto& x, auto& y) { return x.first > y.first; });
+    for (size_t c = 0; c < std::min<size_t>(8, cand.size()); ++c) {
+      dev.curve_to_path = std::max(dev.curve_to_path, cand[c].first);
+      const size_t i = cand[c].second;
+      // Refine on the true curve between the neighbouring samples of the same piece.
+      for (size_t j : {i > 0 ? i - 1 : i, i}) {
+        if (j + 1 >= D.size() || D[j].piece != D[j + 1].piece) continue;
+        const Bezier& b = pieces[D[j].piece];
+        size_t h = 0;
+        const double m = golden_max(D[j].t, D[j + 1].t, [&](double t) {
+          return dist_to_polyline(evaluate(b, t), polyline, h, polyline.size(), large);
+        });
+        dev.curve_to_path = std::max(dev.curve_to_path, m);
+      }
+    }
+  }
+  // Polyline -> curve: sample each segment, nearest distance to the dense
+  // on-curve sample, then the worst points are projected on the true curve.
+  {
+    std::vector<std::pair<double, Vec3>> cand;
+    size_t hint = 0;
+    for (size_t k = 0; k < polyline.size(); ++k) {
+      const size_t steps = k + 1 < polyline.size()
+                               ? std::min<size_t>(100000, 1 + size_t(dist(polyline[k], polyline[k + 1]) / resolution))
+                               : 1;
+      for (size_t s = 0; s < steps; ++s) {
+        const Vec3 x = k + 1 < polyline.size() ? lerp(polyline[k], polyline[k + 1], double(s) / steps) : polyline[k];
+        const double d = dist_to_polyline(x, dpts, hint, wD, large);
+        cand.push_back({d, x});
+      }
+    }
+    std::partial_sort(cand.begin(), cand.begin() + std::min<size_t>(8, cand.size()), cand.end(),
+                      [](auto& x, auto& y) { return x.first > y.first; });
+    for (size_t c = 0; c < std::min<size_t>(8, cand.size()); ++c) {
+      const Vec3 x = cand[c].second;
+      size_t seg = 0, h = 0;
+      double d = dist_to_polyline(x, dpts, h, dpts.size(), large, &seg);
+      // Exact distance to the curve near that sample: minimise over t.
+      const size_t lo = seg > 0 ? seg - 1 : 0, hi = std::min(seg + 2, D.size() - 1);
+      for (size_t j = lo; j < hi; ++j) {
+        if (D[j].piece != D[j + 1].piece) continue;
+        const Bezier& b = pieces[D[j].piece];
+        const double m = -golden_max(D[j].t, D[j + 1].t, [&](double t) { return -dist(evaluate(b, t), x); });
+        d = std::min(d, m);
+      }
+      dev.path_to_curve = std::max(dev.path_to_curve, d);
+    }
+  }
+  return dev;
+}
+
+}  // namespace bezcam

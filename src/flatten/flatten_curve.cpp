@@ -1,0 +1,297 @@
+#include "bezcam/flatten/flatten_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+#include <string>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+
+namespace bezcam {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A chord is accepted once its deviation uses this share of the budget:
+// deviation grows like the square of the chord, so the chord is then at
+// least sqrt(0.94) = 97 % of the longest allowed one.
+constexpr double kAcceptShare = 0.94;
+// Share of the budget aimed at when predicting the next step.
+constexpr double kAimShare = 0.97;
+
+// Roots in [0,1] of a + b s + c s^2 (numerically stable form).
+int quadratic_roots01(double a, double b, double c, double out[2]) {
+  int n = 0;
+  auto keep = [&](double s) {
+    if (s >= 0 && s <= 1 && std::isfinite(s)) out[n++] = s;
+  };
+  const double scale = std::max({std::abs(a), std::abs(b), std::abs(c)});
+  if (scale == 0) return 0;
+  if (std::abs(c) <= 1e-14 * scale) {
+    if (b != 0) keep(-a / b);
+    return n;
+  }
+  const double disc = b * b - 4 * a * c;
+  if (disc < 0) return 0;
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  if (q != 0) {
+    keep(q / c);
+    keep(a / q);
+  } else {
+    keep(0);
+  }
+  return n;
+}
+
+// Max over s in [0,1] of |f(s)|, f the cubic with Bernstein coefficients
+// (0, d1, d2, 0): f = 3 s (1-s) (d1 (1-s) + d2 s). Exact: the extremes are
+// at the roots of f' = 3 [d1 + 2 (k - d1) s - 3 k s^2] with k = d2 - d1.
+double bump_max(double d1, double d2) {
+  if (d1 == 0 && d2 == 0) return 0;
+  const double k = d2 - d1;
+  double r[2];
+  const int n = quadratic_roots01(d1, 2 * (k - d1), -3 * k, r);
+  double m = 0;
+  for (int i = 0; i < n; ++i) {
+    const double s = r[i];
+    m = std::max(m, std::abs(3 * s * (1 - s) * (d1 * (1 - s) + d2 * s)));
+  }
+  return m;
+}
+
+// Cubic with Bernstein coefficients (0, a1, a2, L): how far it leaves [0, L].
+double overshoot(double a1, double a2, double L) {
+  if (a1 >= 0 && a1 <= L && a2 >= 0 && a2 <= L) return 0;  // convex hull
+  auto f = [&](double s) {
+    const double u = 1 - s;
+    return 3 * a1 * s * u * u + 3 * a2 * s * s * u + L * s * s * s;
+  };
+  // f' / 3 in Bernstein form (a1, a2 - a1, L - a2) -> power form.
+  const double b0 = a1, b1 = a2 - a1, b2 = L - a2;
+  double r[2];
+  const int n = quadratic_roots01(b0, 2 * (b1 - b0), b0 - 2 * b1 + b2, r);
+  double o = 0;
+  for (int i = 0; i < n; ++i) {
+    const double v = f(r[i]);
+    o = std::max({o, -v, v - L});
+  }
+  return o;
+}
+
+// Exact distance bound for the cubic A, Q1, Q2, B to the segment [A, B].
+double cubic_chord_deviation(const Vec3& A, const Vec3& Q1, const Vec3& Q2, const Vec3& B) {
+  const Vec3 ab = B - A;
+  const double L = norm(ab);
+  const Vec3 e1 = Q1 - A, e2 = Q2 - A;
+  if (!(L > 1e-300)) {
+    // Chord of zero length: the sub-curve lies in the hull of its points.
+    return std::max(norm(e1), norm(e2));
+  }
+  const Vec3 u = ab / L;
+  const double a1 = dot(e1, u), a2 = dot(e2, u);
+  const Vec3 p1 = e1 - u * a1, p2 = e2 - u * a2;
+  // Perpendicular part on two orthonormal axes across the chord; the first
+  // is in the plane of the piece when the piece is planar, making the bound
+  // exact there (always in 2D).
+  Vec3 n1 = p1 + p2;
+  if (norm(n1) < 1e-3 * std::max(norm(p1), norm(p2))) n1 = norm(p1) >= norm(p2) ? p1 : p2;
+  double perp = 0;
+  const double ln1 = norm(n1);
+  if (ln1 > 0) {
+    n1 = n1 / ln1;
+    const Vec3 n2 = cross(u, n1);
+    const double m1 = bump_max(dot(p1, n1), dot(p2, n1));
+    const double m2 = bump_max(dot(p1, n2), dot(p2, n2));
+    perp = std::sqrt(m1 * m1 + m2 * m2);
+  }
+  const double o = overshoot(a1, a2, L);
+  return o == 0 ? perp : std::sqrt(perp * perp + o * o);
+}
+
+// Rigorous bound for any (rational) piece by branch and bound on the convex
+// hull: dist(., [A,B]) is convex, so on a sub-curve it is at most its value
+// at the control points, and splitting tightens that quadratically.
+// `budget` allows an early exit once the answer (accept/reject) is certain.
+double hull_chord_deviation(const Bezier& sub, const Vec3& A, const Vec3& B, double budget) {
+  auto ub_of = [&](const Bezier& b) {
+    double m = 0;
+    for (const auto& p : b.points) m = std::max(m, dist_to_segment(p, A, B));
+    return m;
+  };
+  struct Node {
+    double ub;
+    Bezier b;
+    bool operator<(const Node& o) const { return ub < o.ub; }
+  };
+  std::priority_queue<Node> heap;
+  heap.push({ub_of(sub), sub});
+  double lb = 0;
+  for (int iter = 0; iter < 400; ++iter) {
+    const Node& top = heap.top();
+    if (top.ub <= budget) return top.ub;           // certainly within
+    if (lb > budget) return lb;                     // certainly over
+    if (top.ub - lb <= 2e-3 * top.ub) return top.ub;  // known to 0.2 %
+    Node n = heap.top();
+    heap.pop();
+    auto [l, r] = split(n.b, 0.5);
+    lb = std::max(lb, dist_to_segment(l.back(), A, B));
+    heap.push({ub_of(l), std::move(l)});
+    heap.push({ub_of(r), std::move(r)});
+  }
+  return heap.top().ub;
+}
+
+// One piece, prepared for fast repeated chord tests.
+struct Prepared {
+  const Bezier* b = nullptr;
+  bool cubic = false;         // polynomial of degree <= 3 (elevated to 3)
+  Vec3 c0, c1, c2, c3;        // power form of the cubic
+  double scale = 0;           // magnitude of the coordinates
+
+  explicit Prepared(const Bezier& piece) : b(&piece) {
+    for (const auto& p : piece.points) scale = std::max(scale, max_abs(p));
+    if (!piece.rational() && piece.degree() <= 3) {
+      Bezier e = piece;
+      while (e.degree() < 3) e = elevate(e);
+      const auto& P = e.points;
+      cubic = true;
+      c0 = P[0];
+      c1 = (P[1] - P[0]) * 3;
+      c2 = (P[0] - P[1] * 2 + P[2]) * 3;
+      c3 = P[3] - P[0] + (P[1] - P[2]) * 3;
+    }
+  }
+  Vec3 point(double t) const {
+    if (t <= 0) return b->front();
+    if (t >= 1) return b->back();
+    if (cubic) return ((c3 * t + c2) * t + c1) * t + c0;
+    return evaluate(*b, t);
+  }
+  Vec3 tangent(double t) const { return (c3 * (3 * t) + c2 * 2) * t + c1; }
+
+  double deviation(double t0, double t1, const Vec3& A, const Vec3& B, double budget) const {
+    if (cubic) {
+      const double h = (t1 - t0) / 3;
+      return cubic_chord_deviation(A, A + tangent(t0) * h, B - tangent(t1) * h, B);
+    }
+    return hull_chord_deviation(subcurve(*b, t0, t1), A, B, budget);
+  }
+
+  // Uniform step that Wang's formula proves safe for a polynomial piece;
+  // used as the first guess only.
+  double wang_step(double tol) const {
+    const auto& P = b->points;
+    const int n = b->degree();
+    if (n < 2) return 1;
+    double m = 0;
+    for (int i = 0; i + 2 <= n; ++i) m = std::max(m, norm(P[i] - P[i + 1] * 2 + P[i + 2]));
+    const double k = std::sqrt(n * (n - 1) * m / (8 * tol));
+    return k <= 1 ? 1.0 : 1.0 / std::ceil(k);
+  }
+};
+
+}  // namespace
+
+double chord_deviation(const Bezier& piece, double t0, double t1) {
+  const Prepared p(piece);
+  return p.deviation(t0, t1, p.point(t0), p.point(t1), -1);
+}
+
+double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
+                      const std::function<void(const FlatVertex&)>& emit) {
+  if (pieces.empty()) return 0;
+  const double tol = opt.tolerance;
+  if (!(tol > 0) || !std::isfinite(tol))
+    throw InputError("flatten.tolerance", "tolerance", "expected a finite tolerance > 0, found " + fmt_num(tol));
+  const int dim = pieces.front().dim;
+  const double rmax = max_rounding_displacement(opt.decimals, dim);
+  if (rmax >= 0.9 * tol)
+    throw InputError("flatten.tolerance-below-rounding", "tolerance",
+                     "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(opt.decimals) +
+                         " decimals: rounding alone moves a point by up to " + fmt_num(rmax) +
+                         "; use a tolerance above " + fmt_num(rmax / 0.9) + " or a profile with more decimals");
+  double scale = 0;
+  for (const auto& pc : pieces)
+    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
+  const double margin = float_margin(tol, scale);
+  if (margin >= 0.05 * tol)
+    throw InputError("flatten.tolerance-below-precision", "tolerance",
+                     "tolerance " + fmt_num(tol) + " is too small for coordinates of magnitude " + fmt_num(scale) +
+                         " in double precision; use a tolerance above " + fmt_num(margin * 20));
+
+  double bound = 0;
+  Vec3 Ar = quantize(pieces.front().front(), opt.decimals);
+  emit({Ar, 0, 0});
+  double dt_hint = -1;
+  for (size_t pi = 0; pi < pieces.size(); ++pi) {
+    const Prepared P(pieces[pi]);
+    Vec3 A = pieces[pi].front();
+    double dispA = dist(Ar, A);  // includes the tiny gap at a path joint
+    double t0 = 0;
+    double dt = dt_hint > 0 ? dt_hint : std::min(1.0, 1.5 * P.wang_step(tol));
+    while (t0 < 1) {
+      // Search the longest chord from t0 whose bound fits the budget.
+      double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
+      double best_dev = 0, best_disp = 0, best_ratio = 0, best_t1 = t0;
+      Vec3 bestB, bestBr;
+      bool found = false;
+      for (int iter = 0; iter < 200; ++iter) {
+        const bool last = dt >= 1 - t0;
+        const double t1 = last ? 1.0 : t0 + dt;
+        if (last) dt = 1 - t0;
+        const Vec3 B = P.point(t1);
+        const Vec3 Br = quantize(B, opt.decimals);
+        const double dispB = dist(Br, B);
+        const double budget = tol - margin - std::max(dispA, dispB);
+        const double dev = budget > 0 ? P.deviation(t0, t1, A, B, budget) : kInf;
+        const bool ok = dev <= budget;
+        if (ok) {
+          found = true;
+          lo = dt;
+          best_t1 = t1;
+          best_dev = dev;
+          best_disp = std::max(dispA, dispB);
+          best_ratio = dev / budget;
+          bestB = B;
+          bestBr = Br;
+          if (last || best_ratio >= kAcceptShare || lo >= 0.985 * hi) break;
+          double g = best_ratio > 1e-12 ? std::sqrt(kAimShare / best_ratio) : 4.0;
+          double nd = dt * std::min(g, 4.0);
+          if (nd >= hi) nd = 0.5 * (lo + hi);
+          dt = nd;
+        } else {
+          hi = dt;
+          if (found && lo >= 0.985 * hi) break;
+          double g = std::isfinite(dev) && dev > 0 ? std::sqrt(kAimShare * budget / dev) : 0.5;
+          double nd = dt * std::clamp(g, 0.05, 0.9);
+          if (nd <= lo) nd = 0.5 * (lo + hi);
+          dt = nd;
+        }
+      }
+      if (!found) throw std::logic_error("flatten: no chord fits (internal error)");
+      const double t1 = best_t1;
+      bound = std::max(bound, best_dev + best_disp);
+      emit({bestBr, pi, t1});
+      // Next guess: the same step, stretched if this one had room left.
+      dt_hint = t1 >= 1 ? -1 : lo * std::clamp(std::sqrt(kAimShare / std::max(best_ratio, 1e-12)), 1.0, 2.0);
+      if (dt_hint > 0) dt = dt_hint;
+      t0 = t1;
+      A = bestB;
+      Ar = bestBr;
+      dispA = dist(Ar, A);
+    }
+    dt_hint = -1;
+  }
+  return bound;
+}
+
+FlattenResult flatten(std::span<const Bezier> pieces, const FlattenOptions& opt) {
+  FlattenResult r;
+  r.bound = flatten_pieces(pieces, opt, [&](const FlatVertex& v) { r.points.push_back(v.point); });
+  return r;
+}
+
+}  // namespace bezcam
