@@ -2,12 +2,15 @@
 /// A curve entity as the rest of bezcam sees it: the exact decomposition into
 /// Bézier pieces, end to end, whatever the source form was (a Bézier, a
 /// B-spline, an interpolating spline or a path of several of these).
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "bezcam/kernel/bezier.hpp"
 
 namespace bezcam {
+
+struct NurbsCurve;  // bezcam/kernel/nurbs_curve.hpp
 
 /// Continuity where two pieces meet, weakest to strongest. G1 = tangent
 /// directions agree; C1 = first derivatives equal; C2 = second too.
@@ -25,6 +28,12 @@ struct CurveSegment {
   bool rational = false;
   size_t first_piece = 0;  ///< index into CurveGeometry::pieces
   size_t piece_count = 0;
+  /// The segment as a B-spline/NURBS, for exact output (knots as given, so
+  /// possibly unclamped: see clamp() in nurbs_curve.hpp). Set for `bspline`
+  /// segments and cubic-spline `interpolate` entities; null for Bézier
+  /// segments (their pieces are the exact form). `pieces` always holds the
+  /// same curve, decomposed.
+  std::shared_ptr<const NurbsCurve> nurbs;
 };
 
 struct CurveGeometry {
