@@ -97,6 +97,7 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
   Vec3 pos;
   bool pos_known = false;
   for (const Entity& e : job.entities) {
+    if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
     const CutParams cp = cut_params(job, e, m);
     const double safe = quantize(cp.safe_z, p.decimals);
     p.safe_z = p.entities.empty() ? safe : std::min(p.safe_z, safe);
@@ -140,6 +141,7 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 
     EntityReport r;
     r.label = e.label();
+    r.entity = static_cast<int>(e.index);
     r.type = e.type;
     r.degree = g.max_degree();
     r.length = g.length();
@@ -186,6 +188,7 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
     p.max_bound = std::max(p.max_bound, r.bound);
     p.entities.push_back(r);
   }
+  if (opt.on_entity) opt.on_entity(job.entities.size(), job.entities.size(), "");
   return p;
 }
 

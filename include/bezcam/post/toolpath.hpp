@@ -2,6 +2,7 @@
 /// Canonical moves: the program as motion, before any text. Built from a job
 /// and a profile, validated as a whole (validate.hpp), then printed by the
 /// G-code writer in the profile's dialect.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,7 @@ struct EntityReport {
   size_t blocks = 0;       ///< cutting blocks emitted
   double measured = 0;     ///< largest deviation measured on the printed path
   double bound = 0;        ///< proven upper bound
+  int entity = -1;         ///< index in the job's entities (Move::entity)
 };
 
 enum class OutputMode { lines, arcs, nurbs };
@@ -56,6 +58,10 @@ struct ConvertOptions {
   OutputMode output = OutputMode::lines;
   std::optional<double> tolerance;  ///< overrides the job's
   bool measure = true;              ///< measure the printed path (header, report)
+  /// Called by build_program() before each entity with (entities done so
+  /// far, total entities, the entity's label), and once more with
+  /// (total, total, "") at the end; for progress bars. May be empty.
+  std::function<void(size_t done, size_t total, const std::string& label)> on_entity;
 };
 
 struct Program {
