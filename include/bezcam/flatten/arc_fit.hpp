@@ -1,0 +1,106 @@
+#pragma once
+/// Circular-arc fitting with a proven bound after rounding: Bézier pieces
+/// become G02/G03 arcs in the XY plane (and G01 lines where no arc fits),
+/// such that the path a controller draws *from the printed numbers* stays
+/// within the tolerance of the true curve, both ways.
+///
+/// Method (bezcam's own; the proof is in arc_fit.cpp):
+///  * Greedy spans, each as long as possible: from the current point the
+///    longest chord the flattener's bound allows is found first, then the
+///    longest span a single arc fits; the longer wins (a line on ties). This
+///    is "better than biarc": one block per span instead of two, with the
+///    centre chosen minimax on the perpendicular bisector of the span's ends.
+///  * The printed arc: start S' (the current printed point), end E' (the
+///    rounded curve point), centre c' = S' + rounded (I, J). Up to nine
+///    neighbouring grid centres are tried so that the radius mismatch
+///    |r_start - r_end| stays within the controller's arc tolerance
+///    (LinuxCNC and Grbl reject larger ones).
+///  * The controller's path is modelled as the spiral around c' from S' to
+///    E' whose radius moves linearly from r_start to r_end with the angle
+///    (LinuxCNC's circle with a radius mismatch; a plain circle when the
+///    radii agree). Its two-sided distance to the true span is bounded by
+///    branch and bound over convex hulls of sub-curves (radial distance in
+///    the arc's sector, distance to the ends outside it), plus the
+///    rounding of the ends; every emitted arc carries that bound.
+///  * Only pieces that lie in a plane z = const are fitted with arcs; a
+///    piece whose z varies gets G01 lines (flatten_curve.hpp's bound).
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "bezcam/kernel/bezier.hpp"
+
+namespace bezcam {
+
+struct ArcFitOptions {
+  /// Largest allowed distance between the curve and the drawn path (model units).
+  double tolerance = 0.01;
+  /// Decimals the end points and I/J words are printed with; -1: no rounding.
+  int decimals = -1;
+  /// Largest |r_start - r_end| of a printed arc the controller accepts
+  /// (model units; the profile's arc_tolerance_mm converted).
+  double radius_tolerance = 0.002;
+};
+
+enum class FitKind { line, arc_cw, arc_ccw };
+
+/// One emitted move, with everything as printed.
+struct FitMove {
+  FitKind kind = FitKind::line;
+  Vec3 to;          ///< rounded end point (z rounded too; a 2D curve keeps z = 0)
+  Vec3 center;      ///< arcs: S' + rounded (I, J), z = to.z
+  Vec3 ij;          ///< arcs: the printed I, J (x, y), relative to the move's start
+  size_t piece = 0; ///< piece and parameter of the curve point the move ends at
+  double t = 0;
+  double bound = 0; ///< certified two-sided deviation of this move from its span
+};
+
+struct ArcFitResult {
+  Vec3 start;                ///< rounded first point (where the tool must be)
+  std::vector<FitMove> moves;
+  double bound = 0;          ///< largest certified deviation
+};
+
+/// Callback core: emits the moves in order, starting from the rounded start
+/// of the first piece. Returns the certified bound. Throws InputError when
+/// `decimals` cannot honour the tolerance (as flatten_pieces does).
+double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
+                const std::function<void(const FitMove&)>& emit);
+
+/// Collecting wrapper around the callback core.
+ArcFitResult fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt);
+
+/// True when the piece lies in a plane z = const (all control points share
+/// their z exactly; for rational and polynomial pieces alike that is the
+/// condition). 2D pieces always do.
+bool planar_xy(const Bezier& piece);
+
+/// A printed G17 arc: what the controller knows.
+struct PrintedArc {
+  Vec3 from, to, center;  ///< as printed (center = from + I/J)
+  bool ccw = true;
+  /// Swept angle in (0, 2 pi], in the arc's direction.
+  double sweep() const;
+  double r_start() const;
+  double r_end() const;
+  /// Point of the drawn path at s in [0,1]: angle from + s * sweep, radius
+  /// r_start + s * (r_end - r_start), z = from.z (the model the bound uses).
+  Vec3 point(double s) const;
+};
+
+/// Rigorous upper bound of the two-sided distance between the XY part of the
+/// curve span (piece on [t0, t1], which must start at S = M(t0) and end at
+/// E = M(t1)) and the drawn path of `arc`. Returns +infinity when the proof's
+/// preconditions fail (sweep above pi - 0.02, bound not small against the
+/// radius). With `budget` >= 0 the search stops once the comparison with it
+/// is certain (a result <= budget is proven; a result above it means the
+/// bound exceeds it). With `budget` < 0 the bound is refined until it is
+/// within `resolution` (model units) or 0.1 % of the supremum it bounds.
+double arc_span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
+                          double resolution = 0);
+
+/// Dense points of the drawn path of a printed arc, consecutive chords within
+/// `sagitta` of it (for independent measurement and drawing); includes both ends.
+std::vector<Vec3> sample_arc(const PrintedArc& arc, double sagitta);
+
+}  // namespace bezcam

@@ -1,0 +1,475 @@
+#include "bezcam/flatten/arc_fit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <queue>
+#include <stdexcept>
+#include <string>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+
+// Why the bound holds (the notation of arc_fit.hpp).
+//
+// Let C be the true span from S = C(t0) to E = C(t1), and D the drawn path:
+// centre c', start S', end E', sweep W <= pi - 0.02 in the arc's direction,
+// D(theta) at radius rho(theta) moving linearly from r_s = |S'-c'| to
+// r_e = |E'-c'|. Write rmin, rmax for min/max(r_s, r_e), and for a point p
+//   d(p) = max(|p-c'| - rmin, rmax - |p-c'|)   if p lies in the sector of D
+//   d(p) = min(|p-S'|, |p-E'|)                  otherwise.
+// Both are upper bounds of dist(p, D): in the sector, D has a point at the
+// angle of p at a radius in [rmin, rmax]; outside, S' and E' are points of D.
+// Let U = sup over the span of d(C(t)). Then:
+//  (a) every curve point is within U of D (by the definition of d);
+//  (b) every point of D is within
+//        B = max(U, |S-S'|, |E-E'|) + |r_e - r_s| * max(sS, sE)
+//      of the curve, where sS, sE are the fractions of the sweep between
+//      S' and the angle of S (resp. the angle of E and E') when those lie
+//      inside the sweep. Proof: the curve stays within U < rmin/2 of D, a
+//      region of angular extent below 2 pi that avoids c' (W < pi, and the
+//      end discs of radius rmin/2 subtend 30 degrees each), so the angle of
+//      C(t) around c' is a continuous single-valued function running from
+//      the angle of S to that of E. By the intermediate value theorem every
+//      angle of D between them is taken by a curve point p in the sector,
+//      and |p - D(angle)| = ||p-c'| - rho| <= d(p) <= U. The angles of D
+//      before the angle of S (a sliver next to S') are within
+//      max(|S'-S|, ||S-c'| - r_s|) + |rho - r_s| of S: on a circle of
+//      radius r_s the distance to S grows with the angle from S, and
+//      ||S-c'| - r_s| <= max(U, |S-S'|) (triangle inequality when S is
+//      outside the sector). The same holds at the end.
+// U itself is bounded by branch and bound on the convex hulls of
+// sub-curves (every piece, rational or not, lies in the hull of its
+// control points): |p-c'| <= max |Q_i - c'| and |p-c'| >= min (Q_i-c').u
+// for a unit u; when all Q_i are in the sector (a convex cone, W < pi) the
+// hull is too and only the radial term applies, otherwise the end-distance
+// term max |Q_i - S'| (or E') is added. Splitting tightens both terms
+// quadratically (radial) or linearly (near the ends), and the curve's own
+// points give the lower bound that ends the search.
+// Finally the drawn path lies at the printed z' while a planar piece lies at
+// z: the 3D distance is hypot(B, |z - z'|).
+
+namespace bezcam {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Largest sweep of an emitted arc: the sector must stay a convex cone.
+constexpr double kMaxSweep = kPi - 0.02;
+// Largest radius per unit of chord (sweep >= 0.001 rad): flatter spans are
+// lines, and huge I/J words help no controller.
+constexpr double kMaxRadiusPerChord = 1000;
+// Curve samples used to choose the centre (the proof does not rely on them).
+constexpr int kFitSamples = 16;
+
+double cross2(const Vec3& a, const Vec3& b) { return a.x * b.y - a.y * b.x; }
+double dot2(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y; }
+double norm2(const Vec3& v) { return std::hypot(v.x, v.y); }
+double dist2(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// Angle from direction a to v, positive in the arc's direction, in (-pi, pi].
+double directed_angle(const Vec3& a, const Vec3& v, bool ccw) {
+  const double ang = std::atan2(cross2(a, v), dot2(a, v));
+  return ccw ? ang : -ang;
+}
+
+Vec3 point_at(const Bezier& b, double t) {
+  if (t <= 0) return b.front();
+  if (t >= 1) return b.back();
+  return evaluate(b, t);
+}
+
+// The sector test and the point distance d(p) of the proof.
+struct ArcGeometry {
+  const PrintedArc& arc;
+  Vec3 a, b;  // S' - c', E' - c'
+  double rmin, rmax;
+  explicit ArcGeometry(const PrintedArc& pa) : arc(pa), a(pa.from - pa.center), b(pa.to - pa.center) {
+    rmin = std::min(norm2(a), norm2(b));
+    rmax = std::max(norm2(a), norm2(b));
+  }
+  bool in_sector(const Vec3& v) const {
+    const double c1 = cross2(a, v), c2 = cross2(v, b);
+    return arc.ccw ? (c1 >= 0 && c2 >= 0) : (c1 <= 0 && c2 <= 0);
+  }
+  double d(const Vec3& p) const {
+    const Vec3 v = p - arc.center;
+    if (in_sector(v)) {
+      const double r = norm2(v);
+      return std::max(r - rmin, rmax - r);
+    }
+    return std::min(dist2(p, arc.from), dist2(p, arc.to));
+  }
+  // Upper bound of d over the convex hull of the node's control points.
+  double hull_bound(const Bezier& node) const {
+    double Rmax = 0, toS = 0, toE = 0;
+    Vec3 sum;
+    bool all_in = true;
+    for (const auto& q : node.points) {
+      const Vec3 v = q - arc.center;
+      Rmax = std::max(Rmax, norm2(v));
+      sum += v;
+      all_in = all_in && in_sector(v);
+      toS = std::max(toS, dist2(q, arc.from));
+      toE = std::max(toE, dist2(q, arc.to));
+    }
+    double Rmin = 0;
+    const double ls = norm2(sum);
+    if (ls > 0) {
+      const Vec3 u = sum / ls;
+      Rmin = kInf;
+      for (const auto& q : node.points) Rmin = std::min(Rmin, dot2(q - arc.center, u));
+      Rmin = std::max(Rmin, 0.0);
+    }
+    const double radial = std::max(Rmax - rmin, rmax - Rmin);
+    return all_in ? radial : std::max(radial, std::min(toS, toE));
+  }
+};
+
+// sup over the sub-curve of d(C(t)), by branch and bound (see the top).
+// Early exits when budget >= 0: a result <= budget is a proven upper bound;
+// a result above it is at least a proven lower bound of the same supremum.
+// Otherwise the upper bound is refined to `resolution` (or 0.1 %).
+double sup_d(const ArcGeometry& g, const Bezier& sub, double budget, double resolution) {
+  struct Node {
+    double ub;
+    Bezier b;
+    bool operator<(const Node& o) const { return ub < o.ub; }
+  };
+  std::priority_queue<Node> heap;
+  heap.push({g.hull_bound(sub), sub});
+  double lb = std::max(g.d(sub.front()), g.d(sub.back()));
+  for (int iter = 0; iter < 4000; ++iter) {
+    const Node& top = heap.top();
+    if (budget >= 0 && top.ub <= budget) return top.ub;
+    if (budget >= 0 && lb > budget) return lb;
+    if (top.ub - lb <= std::max(1e-3 * top.ub, resolution)) return top.ub;
+    Node n = heap.top();
+    heap.pop();
+    auto [l, r] = split(n.b, 0.5);
+    lb = std::max(lb, g.d(l.back()));
+    heap.push({g.hull_bound(l), std::move(l)});
+    heap.push({g.hull_bound(r), std::move(r)});
+  }
+  return heap.top().ub;
+}
+
+// Bound of the distance between the sub-curve on [t0, t1] and the chord
+// [A, B] = [M(t0), M(t1)]: chord_deviation() (exact) for polynomial pieces of
+// degree <= 3, branch and bound on convex hulls otherwise (dist to a segment
+// is convex, so a hull's bound is its worst control point). Early exit as in
+// sup_d: a result <= budget is proven, one above it is a proven lower bound.
+double line_deviation(const Bezier& b, double t0, double t1, double budget) {
+  if (!b.rational() && b.degree() <= 3) return chord_deviation(b, t0, t1);
+  const Bezier sub = subcurve(b, t0, t1);
+  const Vec3 A = sub.front(), B = sub.back();
+  auto ub_of = [&](const Bezier& n) {
+    double m = 0;
+    for (const auto& p : n.points) m = std::max(m, dist_to_segment(p, A, B));
+    return m;
+  };
+  struct Node {
+    double ub;
+    Bezier b;
+    bool operator<(const Node& o) const { return ub < o.ub; }
+  };
+  std::priority_queue<Node> heap;
+  heap.push({ub_of(sub), sub});
+  double lb = 0;
+  for (int iter = 0; iter < 2000; ++iter) {
+    const Node& top = heap.top();
+    if (top.ub <= budget) return top.ub;
+    if (lb > budget) return lb;
+    if (top.ub - lb <= 1e-3 * top.ub) return top.ub;
+    Node n = heap.top();
+    heap.pop();
+    auto [l, r] = split(n.b, 0.5);
+    lb = std::max(lb, dist_to_segment(l.back(), A, B));
+    heap.push({ub_of(l), std::move(l)});
+    heap.push({ub_of(r), std::move(r)});
+  }
+  return heap.top().ub;
+}
+
+// A candidate arc for the span, and its certified XY bound.
+struct ArcCandidate {
+  PrintedArc arc;
+  Vec3 ij;
+  double bound_xy = kInf;
+};
+
+struct Span {
+  const Bezier& b;
+  double t0, t1;
+  Vec3 S, E;    // true ends
+  Vec3 Sr, Er;  // printed ends
+};
+
+// Fits one arc to the span: centre on the perpendicular bisector of S E,
+// bulge chosen minimax over samples (golden section from the three-point
+// circle), then the printed centre among the grid points around it, then
+// certification. Returns nothing when no arc fits `budget_xy`.
+std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, double budget_xy, double rtol) {
+  const Vec3 chord{sp.E.x - sp.S.x, sp.E.y - sp.S.y, 0};
+  const double L = norm2(chord);
+  const double q = opt.decimals >= 0 ? std::pow(10.0, -opt.decimals) : 0.0;
+  // Printed ends that coincide would mean a full circle.
+  if (!(L > 0) || dist2(sp.Er, sp.Sr) < std::max(1.5 * q, 1e-12 * L)) return std::nullopt;
+  const Vec3 u = chord / L, n{-u.y, u.x, 0};
+  const Vec3 M = (sp.S + sp.E) * 0.5;
+  std::array<Vec3, kFitSamples - 1> P;
+  for (int j = 1; j < kFitSamples; ++j) P[j - 1] = point_at(sp.b, sp.t0 + (sp.t1 - sp.t0) * j / kFitSamples);
+  // Three-point circle through S, the middle sample and E: its bulge.
+  const Vec3 pm = P[kFitSamples / 2 - 1] - M;
+  const double xm = dot2(pm, u), ym = dot2(pm, n);
+  if (std::abs(ym) <= 1e-9 * L) return std::nullopt;
+  const double k3 = (xm * xm + ym * ym - L * L / 4) / (2 * ym);
+  const double r3 = std::sqrt(L * L / 4 + k3 * k3);
+  const double b3 = ym > 0 ? k3 + r3 : k3 - r3;
+  // Bulge b: arc midpoint M + n b; centre M + n k, k = (b^2 - L^2/4) / 2b.
+  const double bmax = L / 2 * std::tan(kMaxSweep / 4);
+  const double bmin = L / (8 * kMaxRadiusPerChord);
+  auto centre_of = [&](double bb) { return M + n * ((bb * bb - L * L / 4) / (2 * bb)); };
+  auto misfit = [&](double bb) {
+    const Vec3 c = centre_of(bb);
+    const double r = dist2(sp.S, c);
+    double m = 0;
+    for (const auto& p : P) m = std::max(m, std::abs(dist2(p, c) - r));
+    return m;
+  };
+  const double sgn = b3 > 0 ? 1 : -1;
+  double lo = std::clamp(0.6 * std::abs(b3), bmin, bmax), hi = std::clamp(1.4 * std::abs(b3), bmin, bmax);
+  if (!(hi > lo)) return std::nullopt;
+  {
+    const double g = 0.3819660112501051;
+    double x1 = lo + g * (hi - lo), x2 = hi - g * (hi - lo);
+    double f1 = misfit(sgn * x1), f2 = misfit(sgn * x2);
+    for (int i = 0; i < 40 && hi - lo > 1e-12 * L; ++i) {
+      if (f1 < f2) {
+        hi = x2; x2 = x1; f2 = f1; x1 = lo + g * (hi - lo); f1 = misfit(sgn * x1);
+      } else {
+        lo = x1; x1 = x2; f1 = f2; x2 = hi - g * (hi - lo); f2 = misfit(sgn * x2);
+      }
+    }
+  }
+  const double bb = sgn * 0.5 * (lo + hi);
+  if (misfit(bb) > budget_xy) return std::nullopt;  // hopeless even before rounding
+  const Vec3 c = centre_of(bb);
+  const bool ccw = bb < 0;  // bulge to the left of S->E means clockwise travel
+
+  // Printed centres: the rounded one and its grid neighbours, best first.
+  struct Option {
+    PrintedArc arc;
+    Vec3 ij;
+    double estimate;
+  };
+  std::vector<Option> opts;
+  const Vec3 ij0{quantize(c.x - sp.Sr.x, opt.decimals), quantize(c.y - sp.Sr.y, opt.decimals), 0};
+  for (int di = -1; di <= 1; ++di)
+    for (int dj = -1; dj <= 1; ++dj) {
+      if (q == 0 && (di || dj)) continue;
+      const Vec3 ij{quantize(ij0.x + di * q, opt.decimals), quantize(ij0.y + dj * q, opt.decimals), 0};
+      PrintedArc a;
+      a.from = sp.Sr;
+      a.to = sp.Er;
+      a.center = {sp.Sr.x + ij.x, sp.Sr.y + ij.y, sp.Sr.z};
+      a.ccw = ccw;
+      const double rs = a.r_start(), re = a.r_end();
+      if (std::abs(rs - re) > rtol) continue;
+      if (a.sweep() > kMaxSweep) continue;
+      const ArcGeometry g(a);
+      double est = std::max(dist2(sp.S, sp.Sr), dist2(sp.E, sp.Er));
+      for (const auto& p : P) est = std::max(est, g.d(p));
+      opts.push_back({a, ij, est});
+    }
+  std::sort(opts.begin(), opts.end(), [](const Option& x, const Option& y) { return x.estimate < y.estimate; });
+  for (size_t i = 0; i < opts.size() && i < 3; ++i) {
+    if (opts[i].estimate > budget_xy) break;
+    const double B = arc_span_deviation(sp.b, sp.t0, sp.t1, opts[i].arc, budget_xy, 0);
+    if (B <= budget_xy) return ArcCandidate{opts[i].arc, opts[i].ij, B};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+double PrintedArc::r_start() const { return dist2(from, center); }
+double PrintedArc::r_end() const { return dist2(to, center); }
+
+double PrintedArc::sweep() const {
+  const double ang = directed_angle(from - center, to - center, ccw);
+  return ang > 0 ? ang : ang + 2 * kPi;
+}
+
+Vec3 PrintedArc::point(double s) const {
+  if (s <= 0) return from;
+  if (s >= 1) return to;
+  const double a0 = std::atan2(from.y - center.y, from.x - center.x);
+  const double a = a0 + (ccw ? 1 : -1) * s * sweep();
+  const double r = r_start() + s * (r_end() - r_start());
+  return {center.x + r * std::cos(a), center.y + r * std::sin(a), from.z};
+}
+
+bool planar_xy(const Bezier& piece) {
+  for (const auto& p : piece.points)
+    if (p.z != piece.points.front().z) return false;
+  return true;
+}
+
+double arc_span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
+                          double resolution) {
+  const double W = arc.sweep();
+  if (!(W > 0) || W > kMaxSweep) return kInf;
+  const ArcGeometry g(arc);
+  if (!(g.rmin > 0)) return kInf;
+  const Bezier sub = subcurve(piece, t0, t1);
+  const Vec3 S = sub.front(), E = sub.back();
+  // Slivers of D outside the curve's angular range, as sweep fractions.
+  const double aS = directed_angle(g.a, S - arc.center, arc.ccw);
+  const double aE = directed_angle(g.b, E - arc.center, arc.ccw);
+  const double sS = aS > 0 ? std::min(aS / W, 1.0) : 0.0;
+  const double sE = aE < 0 ? std::min(-aE / W, 1.0) : 0.0;
+  const double spiral = std::abs(arc.r_end() - arc.r_start()) * std::max(sS, sE);
+  const double U = sup_d(g, sub, budget < 0 ? budget : std::max(budget - spiral, 0.0), resolution);
+  const double B = std::max({U, dist2(S, arc.from), dist2(E, arc.to)}) + spiral;
+  // The covering argument needs the curve to stay well away from the centre.
+  if (!(B < 0.5 * g.rmin)) return kInf;
+  return B;
+}
+
+std::vector<Vec3> sample_arc(const PrintedArc& arc, double sagitta) {
+  const double rho = std::max(arc.r_start(), arc.r_end());
+  const double W = arc.sweep();
+  double step = W;
+  if (rho > 0 && sagitta < rho) step = 2 * std::acos(1 - sagitta / rho) * 0.9;
+  const size_t n = std::max<size_t>(1, static_cast<size_t>(std::ceil(W / step)));
+  std::vector<Vec3> out;
+  out.reserve(n + 1);
+  for (size_t i = 0; i <= n; ++i) out.push_back(arc.point(static_cast<double>(i) / static_cast<double>(n)));
+  return out;
+}
+
+double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
+                const std::function<void(const FitMove&)>& emit) {
+  if (pieces.empty()) return 0;
+  const double tol = opt.tolerance;
+  if (!(tol > 0) || !std::isfinite(tol))
+    throw InputError("flatten.tolerance", "tolerance", "expected a finite tolerance > 0, found " + fmt_num(tol));
+  const int dim = pieces.front().dim;
+  const double rmax = max_rounding_displacement(opt.decimals, dim);
+  if (rmax >= 0.9 * tol)
+    throw InputError("flatten.tolerance-below-rounding", "tolerance",
+                     "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(opt.decimals) +
+                         " decimals: rounding alone moves a point by up to " + fmt_num(rmax) +
+                         "; use a tolerance above " + fmt_num(rmax / 0.9) + " or a profile with more decimals");
+  double scale = 0;
+  for (const auto& pc : pieces)
+    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
+  const double margin = float_margin(tol, scale);
+  if (margin >= 0.05 * tol)
+    throw InputError("flatten.tolerance-below-precision", "tolerance",
+                     "tolerance " + fmt_num(tol) + " is too small for coordinates of magnitude " + fmt_num(scale) +
+                         " in double precision; use a tolerance above " + fmt_num(margin * 20));
+  const double budget = tol - margin;
+  // The controller compares radii computed from the same printed numbers;
+  // keep a floating-point margin below its limit.
+  const double rtol = opt.radius_tolerance - 64 * std::numeric_limits<double>::epsilon() * std::max(scale, 1.0);
+
+  double bound = 0;
+  Vec3 Sr = quantize(pieces.front().front(), opt.decimals);
+  double line_hint = -1, arc_hint = -1;
+  for (size_t pi = 0; pi < pieces.size(); ++pi) {
+    const Bezier& b = pieces[pi];
+    const bool planar = planar_xy(b);
+    const double dz = planar ? std::abs(b.front().z - quantize(b.front().z, opt.decimals)) : 0.0;
+    const double budget_xy = dz < budget ? std::sqrt(budget * budget - dz * dz) : -1.0;
+    double t0 = 0;
+    Vec3 S = b.front();
+    while (t0 < 1) {
+      // Longest chord: the flattener's bound (exact deviation + rounding).
+      auto line_ok = [&](double t1, Vec3& E, Vec3& Er, double& dev) {
+        E = point_at(b, t1);
+        Er = quantize(E, opt.decimals);
+        const double disp = std::max(dist(Sr, S), dist(Er, E));
+        dev = line_deviation(b, t0, t1, budget - disp) + disp;
+        return dev <= budget;
+      };
+      double lo = 0, hi = kInf, dt = line_hint > 0 ? std::min(line_hint, 1 - t0) : 1 - t0;
+      FitMove best;
+      Vec3 bestE;
+      for (int iter = 0; iter < 200; ++iter) {
+        const double t1 = dt >= 1 - t0 ? 1.0 : t0 + dt;
+        Vec3 E, Er;
+        double dev;
+        if (line_ok(t1, E, Er, dev)) {
+          lo = dt;
+          best = {FitKind::line, Er, {}, {}, pi, t1, dev};
+          bestE = E;
+          if (t1 >= 1) break;
+          dt = hi == kInf ? dt * 2 : 0.5 * (lo + hi);
+        } else {
+          hi = dt;
+          dt = lo > 0 ? 0.5 * (lo + hi) : dt * 0.25;
+        }
+        if (lo > 0 && hi != kInf && hi - lo <= 0.02 * lo) break;
+      }
+      if (!(lo > 0)) throw std::logic_error("arc fit: no chord fits (internal error)");
+      line_hint = lo;
+      // Longest arc, only worth it beyond the chord.
+      if (planar && budget_xy > 0 && best.t < 1) {
+        double alo = lo, ahi = kInf;
+        double adt = std::min(std::max(2 * lo, arc_hint), 1 - t0);
+        std::optional<ArcCandidate> found;
+        double found_t1 = 0;
+        Vec3 foundE;
+        for (int iter = 0; iter < 60 && adt > alo * 1.0001; ++iter) {
+          const double t1 = adt >= 1 - t0 ? 1.0 : t0 + adt;
+          const Vec3 E = point_at(b, t1);
+          const Span sp{.b = b, .t0 = t0, .t1 = t1, .S = S, .E = E, .Sr = Sr, .Er = quantize(E, opt.decimals)};
+          if (auto c = try_arc(sp, opt, budget_xy, rtol)) {
+            found = c;
+            found_t1 = t1;
+            foundE = E;
+            alo = adt;
+            if (t1 >= 1) break;
+            adt = ahi == kInf ? std::min(adt * 2, 1 - t0) : 0.5 * (alo + ahi);
+          } else {
+            ahi = adt;
+            adt = 0.5 * (alo + ahi);
+          }
+          if (ahi != kInf && ahi - alo <= 0.02 * alo) break;
+        }
+        if (found) {
+          arc_hint = found_t1 - t0;
+          // Report a tight bound, not merely the accepted one.
+          const double tight = arc_span_deviation(b, t0, found_t1, found->arc, -1, 1e-4 * tol);
+          const double B = std::hypot(std::min(found->bound_xy, tight), dz);
+          best = {found->arc.ccw ? FitKind::arc_ccw : FitKind::arc_cw, found->arc.to, found->arc.center, found->ij,
+                  pi, found_t1, B};
+          best.center.z = best.to.z;
+          bestE = foundE;
+        }
+      }
+      bound = std::max(bound, best.bound);
+      emit(best);
+      t0 = best.t;
+      S = bestE;
+      Sr = best.to;
+    }
+  }
+  return bound;
+}
+
+ArcFitResult fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt) {
+  ArcFitResult r;
+  if (!pieces.empty()) r.start = quantize(pieces.front().front(), opt.decimals);
+  r.bound = fit_arcs(pieces, opt, [&](const FitMove& m) { r.moves.push_back(m); });
+  return r;
+}
+
+}  // namespace bezcam
