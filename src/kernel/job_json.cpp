@@ -154,12 +154,19 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
     ctx.fail(path + ".spindle_rpm", "job.range", "expected a speed >= 0, found " + fmt_num(*p.spindle_rpm));
   if (p.tool_radius && *p.tool_radius < 0)
     ctx.fail(path + ".tool_radius", "job.range", "expected a radius >= 0, found " + fmt_num(*p.tool_radius));
+  if (auto it = obj.find("gouge"); it != obj.end()) {
+    const std::string kp = path.empty() ? "gouge" : path + ".gouge";
+    const std::string g = ctx.string(*it, kp);
+    if (g == "refuse") p.gouge = GougePolicy::refuse;
+    else if (g == "skip") p.gouge = GougePolicy::skip;
+    else ctx.fail(kp, "job.gouge", "expected \"refuse\" or \"skip\", found " + describe(*it));
+  }
   if (auto it = obj.find("tool"); it != obj.end()) {
     p.tool = ctx.integer(*it, path + ".tool");
     if (*p.tool < 0) ctx.fail(path + ".tool", "job.range", "expected a tool number >= 0, found " + std::to_string(*p.tool));
   }
   if (!entity_level)
-    ctx.check_keys(obj, path, {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius"});
+    ctx.check_keys(obj, path, {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius", "gouge"});
   if (p.safe_z && p.cut_z && *p.cut_z >= *p.safe_z)
     ctx.fail(path + ".cut_z", "job.range",
              "expected cut_z below safe_z (" + fmt_num(*p.safe_z) + "), found " + fmt_num(*p.cut_z));
@@ -175,7 +182,7 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   if (auto it = obj.find("id"); it != obj.end()) e.id = ctx.string(*it, path + ".id");
   e.params = parse_params(ctx, obj, path, true);
   static const std::initializer_list<const char*> param_keys = {"feed", "plunge_feed", "safe_z", "cut_z",
-                                                                "spindle_rpm", "tool", "tool_radius"};
+                                                                "spindle_rpm", "tool", "tool_radius", "gouge"};
   auto keys = [&](std::initializer_list<const char*> own) {
     std::vector<const char*> all(own);
     all.insert(all.end(), param_keys.begin(), param_keys.end());
@@ -204,10 +211,19 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   } else if (e.type == "interpolate") {
     keys({"through", "method", "closed"});
     parse_interpolate_entity(ctx, obj, path, e);
+  } else if (e.type == "bezier_patch") {  // surfaces: job_json_surfaces.cpp
+    keys({"points", "weights", "toolpath"});
+    parse_bezier_patch_entity(ctx, obj, path, e);
+  } else if (e.type == "coons_patch") {
+    keys({"boundaries", "blend", "toolpath"});
+    parse_coons_patch_entity(ctx, obj, path, e);
+  } else if (e.type == "curve_on_surface") {
+    keys({"surface", "curve"});
+    parse_curve_on_surface_entity(ctx, obj, path, e);
   } else {
     ctx.fail(path + ".type", "job.entity-type",
              "expected one of \"bezier\", \"bspline\", \"path\", \"interpolate\", \"bezier_patch\", "
-             "\"coons_patch\", found " + describe(obj["type"]));
+             "\"coons_patch\", \"curve_on_surface\", found " + describe(obj["type"]));
   }
   return e;
 }
@@ -224,6 +240,7 @@ JobParams JobParams::over(const JobParams& base) const {
   if (spindle_rpm) r.spindle_rpm = spindle_rpm;
   if (tool_radius) r.tool_radius = tool_radius;
   if (tool) r.tool = tool;
+  if (gouge) r.gouge = gouge;
   return r;
 }
 
@@ -268,6 +285,7 @@ Job parse_job(std::string_view text, const std::string& source) {
   }
   const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
   for (size_t i = 0; i < ents.size(); ++i) job.entities.push_back(detail::parse_entity(ctx, ents[i], i));
+  detail::resolve_surface_references(ctx, ents, job);  // curve_on_surface naming a patch by id
   return job;
 }
 

@@ -60,5 +60,12 @@ CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::
 void parse_bspline_segment(const JsonCtx& ctx, const json& obj, const std::string& path, int* dim,
                            std::vector<Bezier>& pieces, CurveSegment& seg);
 void parse_interpolate_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+// Surfaces (job_json_surfaces.cpp).
+void parse_bezier_patch_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+void parse_coons_patch_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+void parse_curve_on_surface_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+/// After all entities are read: a curve_on_surface whose `surface` is a
+/// string gets the surface of the patch entity with that id.
+void resolve_surface_references(const JsonCtx& ctx, const json& entities, Job& job);
 
 }  // namespace bezcam::detail

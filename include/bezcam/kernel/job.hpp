@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bezcam/kernel/curve.hpp"
+#include "bezcam/kernel/surface.hpp"
 
 namespace bezcam {
 
@@ -18,11 +19,16 @@ inline const char* to_string(Units u) { return u == Units::mm ? "mm" : "inch"; }
 /// Millimetres per unit.
 inline double mm_per_unit(Units u) { return u == Units::mm ? 1.0 : 25.4; }
 
+/// What to do where a ball-end tool would gouge a surface (key `gouge`):
+/// refuse the job (exit 2, naming entity, u and v) or leave those regions uncut.
+enum class GougePolicy { refuse, skip };
+
 /// Cutting parameters (file units); unset values fall back to the entity's
 /// job, then to the machine profile.
 struct JobParams {
   std::optional<double> feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool_radius;
   std::optional<int> tool;
+  std::optional<GougePolicy> gouge;  ///< surfaces with tool_radius > 0; default refuse
   /// Values set here win; the rest come from `base`.
   JobParams over(const JobParams& base) const;
 };
@@ -40,6 +46,11 @@ struct Entity {
   std::string type;    ///< JSON type
   JobParams params;    ///< this entity's overrides
   CurveGeometry curve; ///< for curve entities (bezier, bspline, interpolate, path)
+  /// bezier_patch, coons_patch: the surface; curve_on_surface: the surface
+  /// it lies on (shared with the patch entity it names, if any).
+  std::shared_ptr<const SurfaceGeometry> surface;
+  ToolpathSpec toolpath;  ///< bezier_patch, coons_patch
+  CurveGeometry uv_curve; ///< curve_on_surface: the 2D curve in the (u, v) square
 
   /// The id, or `entities[i]` when there is none.
   std::string label() const { return id.empty() ? "entities[" + std::to_string(index) + "]" : id; }
