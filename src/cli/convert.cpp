@@ -1,15 +1,18 @@
 // bezcam convert JOB.json [-o OUT.nc] [--machine NAME|FILE] [--tolerance T]
-//                [--output lines|arcs|nurbs]
+//                [--output lines|arcs|nurbs] [--report FILE.json] [-q]
 #include <iostream>
 
+#include "bezcam/error.hpp"
 #include "bezcam/post/convert.hpp"
+#include "bezcam/post/report.hpp"
 #include "command.hpp"
+#include "progress.hpp"
 
 namespace bezcam::cli {
 namespace {
 
 struct Options {
-  std::string job, out = "-", machine, output = "lines";
+  std::string job, out = "-", machine, output = "lines", report;
   double tolerance = 0;
   bool quiet = false;
 } o;
@@ -24,27 +27,36 @@ CLI::App* add(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   s->add_option("--output", o.output, "cutting moves: lines (G01), arcs (G02/G03) or nurbs (exact blocks)")
       ->check(CLI::IsMember({"lines", "arcs", "nurbs"}));
+  s->add_option("--report", o.report, "also write a JSON report (per entity: kind, degree, length, blocks, "
+                                      "deviation measured and proven; lengths and estimated time); written only "
+                                      "with the program");
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   return s;
 }
 
 int run() {
+  // Both files on stdout would be one unreadable stream; one file for both
+  // would lose the program.
+  if (!o.report.empty() && (o.report == o.out || (o.report == "-" && o.out == "-")))
+    throw InputError("usage.report", "--report",
+                     "the report cannot go to the same place as the program (" + (o.out == "-" ? std::string("standard output") : o.out) +
+                         "); give --report another file name, or write the program with -o FILE");
   const Job job = load_job(o.job);
   const MachineProfile m = resolve_profile(job, o.machine);
   ConvertOptions opt;
   opt.output = parse_output_mode(o.output);
   if (o.tolerance > 0) opt.tolerance = o.tolerance;
+  Progress progress("convert", "entities", job.entities.size(), progress_config(o.quiet));
+  opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
   const ConvertResult r = convert(job, m, opt);
+  progress.finish();
+  const ProgramReport rep = make_report(r.program, m, r.gcode);
   write_output_atomically(o.out, r.gcode);
+  if (!o.report.empty()) write_output_atomically(o.report, report_json(rep));
   if (!o.quiet) {
     for (const auto& w : job.warnings) std::cerr << "bezcam: warning: " << w << "\n";
-    const auto& p = r.program;
-    size_t blocks = 0;
-    for (const auto& e : p.entities) blocks += e.blocks;
-    std::cerr << "bezcam: " << p.entities.size() << " entit" << (p.entities.size() == 1 ? "y" : "ies") << ", "
-              << blocks << " cutting blocks for machine " << m.name << "; tolerance " << p.tolerance << " "
-              << to_string(p.units) << ", largest deviation measured " << p.max_measured << " (bound "
-              << p.max_bound << ")" << (o.out == "-" ? "" : "; wrote " + o.out) << "\n";
+    std::cerr << report_text(rep);
+    if (o.out != "-") std::cerr << "bezcam: wrote " << o.out << (o.report.empty() || o.report == "-" ? "" : " and " + o.report) << "\n";
   }
   return 0;
 }
