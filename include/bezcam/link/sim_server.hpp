@@ -1,0 +1,80 @@
+#pragma once
+/// Modbus TCP server in front of a SimController: libmodbus on the
+/// controller's side (modbus_tcp_pi_listen, modbus_receive, modbus_reply,
+/// modbus_reply_exception), one thread per connection so that a slow or
+/// silent client never holds up the others.
+///
+/// Safe defaults: loopback only unless told otherwise; at most
+/// `max_connections` connections (when full, the connection silent the
+/// longest, never the transfer's owner, is closed to make room); a
+/// connection silent for `idle_timeout` is closed; a request must arrive
+/// whole within `frame_timeout` between bytes; every receive buffer is one
+/// Modbus ADU (260 bytes).
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <list>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "bezcam/link/sim_controller.hpp"
+
+namespace bezcam::link {
+
+struct ServerConfig {
+  std::string host = "127.0.0.1";  ///< address to bind; 127.0.0.1 unless told otherwise
+  std::uint16_t port = 0;          ///< 0: a free port chosen by the system (see port())
+  int max_connections = 8;         ///< 2..64
+  std::chrono::milliseconds idle_timeout{30000};
+  std::chrono::milliseconds frame_timeout{500};
+  std::chrono::milliseconds send_timeout{2000};  ///< a client that does not read its replies is dropped
+};
+
+class ModbusServer {
+ public:
+  /// Binds and listens. Throws IoError("sim.listen", HOST:PORT, ...) when
+  /// the address cannot be bound, InputError("sim.config") for bad limits.
+  ModbusServer(SimController& controller, ServerConfig cfg);
+  /// stop().
+  ~ModbusServer();
+  ModbusServer(const ModbusServer&) = delete;
+  ModbusServer& operator=(const ModbusServer&) = delete;
+
+  /// The bound port (the system's choice when the config said 0).
+  std::uint16_t port() const { return port_; }
+  const std::string& host() const { return cfg_.host; }
+
+  /// Accepts and serves until stop(); returns after every connection has
+  /// been closed.
+  void run();
+  /// run() in a background thread.
+  void start();
+  /// Thread-safe and idempotent; may be called from a signal-waiting thread.
+  /// Joins the background thread of start() (not callable from within it).
+  void stop();
+
+ private:
+  struct Conn {
+    ConnId id = 0;
+    int fd = -1;
+    bool closed = false;  // fd released (guarded by mu_)
+    std::atomic<std::int64_t> last_ms{0};
+    std::thread th;
+  };
+  void serve(Conn* c);
+  void evict_one_locked();
+  void reap_locked(bool all);
+
+  SimController& ctl_;
+  ServerConfig cfg_;
+  int listen_fd_ = -1;
+  int wake_[2] = {-1, -1};
+  std::uint16_t port_ = 0;
+  std::mutex mu_;
+  std::list<Conn> conns_;
+  std::atomic<bool> stopping_{false};
+  std::thread bg_;
+};
+
+}  // namespace bezcam::link

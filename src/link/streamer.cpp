@@ -1,0 +1,399 @@
+#include "bezcam/link/streamer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include "bezcam/link/crc32.hpp"
+
+namespace bezcam::link {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using std::chrono::milliseconds;
+
+std::string hex32(std::uint32_t v) {
+  char b[16];
+  std::snprintf(b, sizeof b, "%08X", v);
+  return b;
+}
+
+class Sender {
+ public:
+  Sender(std::string_view program, const Endpoint& to, const StreamOptions& opt)
+      : prog_(program), to_(to), opt_(opt), crc_(crc32(program)) {
+    for (std::size_t i = 0; i < prog_.size(); ++i)
+      if (prog_[i] == '\n') newlines_.push_back(i);
+    lines_total_ = newlines_.size() + (prog_.empty() || prog_.back() == '\n' ? 0 : 1);
+    std::random_device rd;
+    do token_ = static_cast<std::uint32_t>(rd()); while (token_ == 0);
+  }
+
+  StreamResult run() {
+    start_ = Clock::now();
+    client_ = std::make_unique<ModbusClient>(to_, opt_.timeout);
+    st_ = read_status();
+    check_identity();
+    open();
+    send_all();
+    commit();
+    wait_done();
+    StreamResult r;
+    r.session = session_;
+    r.crc = crc_;
+    r.bytes = prog_.size();
+    r.lines = lines_total_;
+    r.chunks = chunks_;
+    r.lines_executed = st_.lines_executed;
+    r.blocks_executed = st_.blocks_executed;
+    r.reconnects = reconnects_;
+    r.seconds = seconds();
+    return r;
+  }
+
+ private:
+  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+  Status read_status() {
+    std::array<std::uint16_t, reg::status_count> r{};
+    client_->read_holding(0, r);
+    return Status::decode(r);
+  }
+
+  Status write_read(std::uint16_t addr, const std::vector<std::uint16_t>& regs) {
+    std::array<std::uint16_t, reg::status_count> r{};
+    client_->write_and_read(addr, regs, 0, r);
+    return Status::decode(r);
+  }
+
+  std::string read_alarm_text() {
+    try {
+      std::array<std::uint16_t, reg::alarm_text_count> r{};
+      client_->read_holding(reg::alarm_text, r);
+      return unpack_text(r, 2 * reg::alarm_text_count, true);
+    } catch (const std::exception&) {
+      return {};
+    }
+  }
+
+  void check_identity() {
+    if (st_.magic != kMagic)
+      throw IoError("link.protocol", to_.str(),
+                    "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(st_.magic) +
+                        ", expected 0000425A); check the address");
+    if (st_.version != kProtocolVersion)
+      throw ControllerError("link.version", to_.str(),
+                            "the controller speaks protocol version " + std::to_string(st_.version) +
+                                ", this sender version " + std::to_string(kProtocolVersion) + "; update one of them");
+  }
+
+  void report(bool waiting = false) {
+    if (!opt_.on_progress) return;
+    StreamProgress p;
+    p.bytes_acked = st_.ack_bytes;
+    p.bytes_total = prog_.size();
+    p.lines_acked = static_cast<std::uint64_t>(
+        std::lower_bound(newlines_.begin(), newlines_.end(), std::size_t{st_.ack_bytes}) - newlines_.begin());
+    if (st_.ack_bytes == prog_.size()) p.lines_acked = lines_total_;
+    p.lines_total = lines_total_;
+    p.lines_executed = st_.lines_executed;
+    p.seconds = seconds();
+    p.rate = p.seconds > 0 ? static_cast<double>(st_.ack_bytes) / p.seconds : 0;
+    p.state = st_.state;
+    p.reconnects = reconnects_;
+    p.waiting = waiting;
+    opt_.on_progress(p);
+  }
+
+  void event(const std::string& s) {
+    if (opt_.on_event) opt_.on_event(s);
+  }
+
+  std::string position() const {
+    const auto line = std::lower_bound(newlines_.begin(), newlines_.end(), std::size_t{st_.ack_bytes}) - newlines_.begin();
+    return std::to_string(st_.ack_bytes) + " of " + std::to_string(prog_.size()) + " bytes acknowledged (" +
+           std::to_string(line) + " of " + std::to_string(lines_total_) + " lines), " +
+           std::to_string(st_.lines_executed) + " lines executed";
+  }
+
+  [[noreturn]] void alarm_error() {
+    std::string text = read_alarm_text();
+    std::string where = st_.alarm_line > 0 ? "line " + std::to_string(st_.alarm_line) : to_.str();
+    // The controller's text starts with "line N: "; the place is given separately.
+    if (const std::string prefix = "line " + std::to_string(st_.alarm_line) + ": ";
+        st_.alarm_line > 0 && text.rfind(prefix, 0) == 0)
+      text.erase(0, prefix.size());
+    throw ControllerError("controller.alarm", where,
+                          std::string("the controller stopped with alarm ") + to_string(st_.alarm) + " (" +
+                              std::to_string(static_cast<int>(st_.alarm)) + "): " +
+                              (text.empty() ? "no message" : text) + "; " + position());
+  }
+
+  // A request was refused with a Modbus exception: the status says why.
+  [[noreturn]] void refused(const ModbusException& e, const std::string& doing) {
+    st_ = read_status();
+    if (st_.state == State::alarm) alarm_error();
+    if (st_.session != session_) restarted();
+    throw ControllerError("link.refused", to_.str(),
+                          std::string("the controller refused ") + doing + " (Modbus exception " +
+                              std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
+                              describe(st_.last_reject) + "); " + position());
+  }
+
+  [[noreturn]] void restarted() {
+    throw ControllerError(
+        "link.restarted", to_.str(),
+        "the controller no longer holds this transfer: session " + hex32(session_) + " was expected, it reports " +
+            (st_.session == 0 ? std::string("no session") : "session " + hex32(st_.session)) + " in state " +
+            to_string(st_.state) +
+            "; it was restarted or another program was started, so nothing was resumed. Before the loss " +
+            std::to_string(acked_high_) + " of " + std::to_string(prog_.size()) +
+            " bytes had been acknowledged; check the machine, then stream the program again from the start");
+  }
+
+  void open() {
+    const auto total = static_cast<std::uint32_t>(prog_.size());
+    const auto cmd = encode_command(Command::open, std::array<std::uint32_t, 2>{token_, total});
+    for (;;) {
+      try {
+        st_ = write_read(reg::command, cmd);
+        break;
+      } catch (const ModbusException& e) {
+        st_ = read_status();
+        if (st_.last_reject == Reject::busy)
+          throw ControllerError("link.busy", to_.str(),
+                                "the controller is busy with another sender's program (session " + hex32(st_.session) +
+                                    ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
+                                    std::to_string(st_.total_bytes) +
+                                    " bytes received); try again when it is done, or abort it there");
+        throw ControllerError("link.refused", to_.str(),
+                              "the controller refused to open a transfer (Modbus exception " +
+                                  std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
+                                  describe(st_.last_reject) + ")");
+      } catch (const IoError& e) {
+        // OPEN is repeatable with the same token: reconnect and ask again.
+        reconnect_raw(e.message());
+      }
+    }
+    session_ = st_.session;
+    event("transfer opened: session " + hex32(session_) + ", controller buffer " +
+          std::to_string(st_.buffer_capacity) + " bytes");
+    max_chunk_ = std::min<std::uint16_t>(st_.max_chunk, kMaxChunkBytes);
+    if (opt_.chunk_bytes > 0) max_chunk_ = std::min(max_chunk_, opt_.chunk_bytes);
+    if (max_chunk_ == 0) throw ControllerError("link.protocol", to_.str(), "the controller announces chunks of 0 bytes");
+    mark_progress();
+    report();
+  }
+
+  void mark_progress() {
+    progress_mark_ = {st_.ack_bytes, st_.lines_executed};
+    progress_time_ = Clock::now();
+  }
+
+  // Raises if neither bytes nor lines moved for stall_timeout.
+  void check_stall() {
+    const std::pair<std::uint32_t, std::uint32_t> now{st_.ack_bytes, st_.lines_executed};
+    if (now != progress_mark_) {
+      progress_mark_ = now;
+      progress_time_ = Clock::now();
+      return;
+    }
+    if (Clock::now() - progress_time_ > opt_.stall_timeout)
+      throw ControllerError("link.stalled", to_.str(),
+                            "the controller took no byte and executed no line for " +
+                                fmt_num(std::chrono::duration<double>(opt_.stall_timeout).count()) + " s (state " +
+                                to_string(st_.state) + "); " + position());
+  }
+
+  void poll_wait() {
+    std::this_thread::sleep_for(milliseconds(poll_ms_));
+    poll_ms_ = std::min(poll_ms_ * 2, 20);
+  }
+
+  void send_all() {
+    std::uint64_t sent = st_.ack_bytes;
+    std::uint32_t seq = st_.ack_seq;
+    while (sent < prog_.size()) {
+      try {
+        if (st_.state == State::alarm) alarm_error();
+        if (st_.session != session_) restarted();
+        const std::size_t want = std::min<std::size_t>(max_chunk_, prog_.size() - sent);
+        // Never more than the controller said it can take (flow control);
+        // a nearly full buffer is waited for rather than fed in crumbs.
+        if (st_.buffer_free < std::min<std::size_t>(want, 64)) {
+          report(true);
+          check_stall();
+          poll_wait();
+          st_ = read_status();
+          continue;
+        }
+        const std::size_t n = std::min<std::size_t>(want, st_.buffer_free);
+        const auto regs = encode_chunk({session_, seq + 1, prog_.substr(sent, n)});
+        sent_high_ = std::max<std::uint64_t>(sent_high_, sent + n);
+        st_ = write_read(reg::chunk, regs);
+        if (st_.ack_seq != seq + 1 || st_.ack_bytes != sent + n)
+          throw ControllerError("link.ack", to_.str(),
+                                "chunk " + std::to_string(seq + 1) + " was acknowledged as sequence " +
+                                    std::to_string(st_.ack_seq) + " at byte " + std::to_string(st_.ack_bytes) +
+                                    ", expected byte " + std::to_string(sent + n) + "; the program may be corrupted");
+        ++seq;
+        sent += n;
+        ++chunks_;
+        acked_high_ = std::max<std::uint64_t>(acked_high_, st_.ack_bytes);
+        failures_ = 0;
+        poll_ms_ = 1;
+        check_stall();
+        report();
+      } catch (const ModbusException& e) {
+        st_ = read_status();
+        if (st_.last_reject == Reject::buffer_full) continue;  // raced with the executor: wait
+        if (st_.last_reject == Reject::not_owner && st_.session == session_) {
+          resume();  // our connection was replaced or evicted: take the transfer back
+        } else {
+          refused(e, "chunk " + std::to_string(seq + 1));
+        }
+        sent = st_.ack_bytes;
+        seq = st_.ack_seq;
+      } catch (const IoError& e) {
+        reconnect(e.message());
+        sent = st_.ack_bytes;
+        seq = st_.ack_seq;
+      }
+    }
+  }
+
+  void commit() {
+    const auto cmd = encode_command(
+        Command::commit, std::array<std::uint32_t, 4>{token_, session_, static_cast<std::uint32_t>(prog_.size()), crc_});
+    for (;;) {
+      try {
+        st_ = write_read(reg::command, cmd);
+        break;
+      } catch (const ModbusException& e) {
+        refused(e, "COMMIT (length and CRC-32 check)");
+      } catch (const IoError& e) {
+        reconnect(e.message());
+        if (st_.state == State::finishing || st_.state == State::done) break;  // it got through
+        if (st_.ack_bytes != prog_.size())
+          throw ControllerError("link.ack", to_.str(), "after reconnecting before COMMIT the controller reports " +
+                                                           position() + "; the program may be corrupted");
+      }
+    }
+    event("controller confirmed length " + std::to_string(prog_.size()) + " bytes and CRC-32 " + hex32(crc_));
+    report();
+  }
+
+  void wait_done() {
+    poll_ms_ = 1;
+    mark_progress();
+    while (st_.state != State::done) {
+      if (st_.state == State::alarm) alarm_error();
+      if (st_.session != session_) restarted();
+      check_stall();
+      poll_wait();
+      try {
+        st_ = read_status();
+      } catch (const IoError& e) {
+        reconnect(e.message());
+      }
+      report();
+    }
+    report();
+  }
+
+  // Replaces the connection; throws IoError when the budget is spent.
+  void reconnect_raw(const std::string& why) {
+    client_.reset();
+    event("connection lost (" + why + "); reconnecting");
+    const auto deadline = Clock::now() + opt_.retry_time;
+    for (int attempt = 1;; ++attempt) {
+      if (failures_ >= opt_.retries || Clock::now() >= deadline)
+        throw IoError("link.lost", to_.str(),
+                      "the connection was lost and could not be restored (" + std::to_string(failures_) +
+                          " attempts, last: " + why + "); " + std::to_string(acked_high_) + " of " +
+                          std::to_string(prog_.size()) +
+                          " bytes had been acknowledged. The controller keeps the transfer until its session "
+                          "timeout; check the link and stream again");
+      ++failures_;
+      if (attempt > 1) {
+        const auto wait = milliseconds(std::min(1000, 50 << std::min(attempt - 2, 5)));
+        std::this_thread::sleep_for(std::min<milliseconds>(wait, std::chrono::duration_cast<milliseconds>(
+                                                                     deadline - Clock::now())));
+      }
+      try {
+        client_ = std::make_unique<ModbusClient>(to_, opt_.timeout);
+        st_ = read_status();
+        check_identity();
+        ++reconnects_;
+        return;
+      } catch (const IoError&) {
+        client_.reset();
+      }
+    }
+  }
+
+  void resume() {
+    const auto cmd = encode_command(Command::resume, std::array<std::uint32_t, 2>{token_, session_});
+    try {
+      st_ = write_read(reg::command, cmd);
+    } catch (const ModbusException& e) {
+      refused(e, "RESUME");
+    }
+    if (st_.ack_bytes > sent_high_)
+      throw ControllerError("link.ack", to_.str(), "after reconnecting the controller reports " + position() +
+                                                       ", more than was sent; the program may be corrupted");
+  }
+
+  void reconnect(const std::string& why) {
+    for (;;) {
+      reconnect_raw(why);
+      if (st_.session != session_) restarted();
+      try {
+        resume();
+        break;
+      } catch (const IoError&) {
+        continue;  // lost again while resuming: next attempt
+      }
+    }
+    event("reconnected; resuming at byte " + std::to_string(st_.ack_bytes) + " (chunk " +
+          std::to_string(st_.ack_seq + 1) + "), controller " + to_string(st_.state));
+    report();
+  }
+
+  std::string_view prog_;
+  Endpoint to_;
+  const StreamOptions& opt_;
+  std::uint32_t crc_ = 0, token_ = 0, session_ = 0;
+  std::vector<std::size_t> newlines_;
+  std::uint64_t lines_total_ = 0, chunks_ = 0, acked_high_ = 0, sent_high_ = 0;
+  std::unique_ptr<ModbusClient> client_;
+  Status st_;
+  std::uint16_t max_chunk_ = kMaxChunkBytes;
+  int reconnects_ = 0, failures_ = 0, poll_ms_ = 1;
+  Clock::time_point start_, progress_time_;
+  std::pair<std::uint32_t, std::uint32_t> progress_mark_{0, 0};
+};
+
+}  // namespace
+
+StreamResult stream_program(std::string_view program, const Endpoint& to, const StreamOptions& opt) {
+  if (program.empty()) throw InputError("link.empty", "", "the program is empty; nothing to send");
+  if (program.size() > std::numeric_limits<std::uint32_t>::max())
+    throw InputError("link.too-large", "", "the program is larger than 4 GiB, the protocol's limit");
+  if (const auto nul = program.find('\0'); nul != std::string_view::npos) {
+    const auto line = 1 + std::count(program.begin(), program.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    throw InputError("link.nul-byte", "line " + std::to_string(line),
+                     "the program holds a NUL byte (offset " + std::to_string(nul) + "); G-code is text");
+  }
+  if (opt.retries < 0 || opt.timeout.count() <= 0 || opt.stall_timeout.count() <= 0)
+    throw InputError("link.options", "", "timeouts must be positive and retries not negative");
+  return Sender(program, to, opt).run();
+}
+
+}  // namespace bezcam::link
