@@ -19,7 +19,9 @@ std::string describe(const json& v) {
       if (s.size() > 40) s = s.substr(0, 40) + "...";
       return "the string \"" + s + "\"";
     }
-    case json::value_t::array: return "an array of " + std::to_string(v.size());
+    case json::value_t::array:
+      return v.empty() ? "an empty array"
+                       : "an array of " + std::to_string(v.size()) + (v.size() == 1 ? " element" : " elements");
     case json::value_t::object: return "an object";
     case json::value_t::number_integer:
     case json::value_t::number_unsigned:
@@ -46,7 +48,10 @@ void JsonCtx::check_keys(const json& obj, const std::string& path, std::initiali
 }
 const json& JsonCtx::require(const json& obj, const std::string& path, const char* key) const {
   auto it = obj.find(key);
-  if (it == obj.end()) fail(path.empty() ? key : path + "." + key, "job.missing", std::string("required key is missing"));
+  if (it == obj.end())
+    fail(path.empty() ? key : path + "." + key, "job.missing",
+         std::string("the required key \"") + key + "\" is missing" + (path.empty() ? "" : " from " + path) +
+             "; add it");
   return *it;
 }
 double JsonCtx::number(const json& v, const std::string& path) const {
@@ -76,8 +81,10 @@ bool JsonCtx::boolean(const json& v, const std::string& path) const {
   return v.get<bool>();
 }
 const json& JsonCtx::array(const json& v, const std::string& path, size_t min_size) const {
-  if (!v.is_array()) expected(path, min_size ? "an array of at least " + std::to_string(min_size) : "an array", v);
-  if (v.size() < min_size) expected(path, "an array of at least " + std::to_string(min_size), v);
+  const std::string at_least =
+      "an array of at least " + std::to_string(min_size) + (min_size == 1 ? " element" : " elements");
+  if (!v.is_array()) expected(path, min_size ? at_least : "an array", v);
+  if (v.size() < min_size) expected(path, at_least, v);
   return v;
 }
 Vec3 JsonCtx::point(const json& v, const std::string& path, int* dim) const {
@@ -259,10 +266,37 @@ Job parse_job(std::string_view text, const std::string& source) {
       if (text[i] == '\n') ++line, col = 1;
       else ++col;
     }
+    // nlohmann's text repeats the line and column: keep what follows them.
     std::string what = e.what();
-    if (auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
+    if (auto p = what.find("column "); p != std::string::npos && what.find(": ", p) != std::string::npos)
+      what = what.substr(what.find(": ", p) + 2);
+    std::string hint;
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) hint = "; the file is empty";
+    else if (what.find("unexpected end of input") != std::string::npos)
+      hint = "; the file ends too early (is a closing bracket or brace missing?)";
+    else if (what.find("unexpected") != std::string::npos && what.find("literal") != std::string::npos &&
+             (what.find("expected '}'") != std::string::npos || what.find("expected ']'") != std::string::npos))
+      hint = "; is a comma missing before it?";
     throw InputError("job.syntax", source + ": line " + std::to_string(line) + ", column " + std::to_string(col),
-                     "this is not valid JSON (" + what + ")");
+                     "this is not valid JSON: " + what + hint);
+  } catch (const json::out_of_range& e) {
+    // The only range error while parsing: a number too large for a double
+    // (JSON has no NaN or infinity, so this is how non-finite values come).
+    std::string what = e.what(), token;
+    if (auto a = what.find('\''), b = what.rfind('\''); a != std::string::npos && b > a)
+      token = what.substr(a + 1, b - a - 1);
+    std::string where = source;
+    if (const size_t at = token.empty() ? std::string_view::npos : text.find(token); at != std::string_view::npos) {
+      size_t line = 1, col = 1;
+      for (size_t i = 0; i < at; ++i) {
+        if (text[i] == '\n') ++line, col = 1;
+        else ++col;
+      }
+      where += ": line " + std::to_string(line) + ", column " + std::to_string(col);
+    }
+    throw InputError("job.not-finite", where,
+                     "expected a finite number, found " + (token.empty() ? std::string("a number") : token) +
+                         ", which is too large for a double (about 1.8e308 at most)");
   }
   if (!doc.is_object()) ctx.expected("(top level)", "a JSON object", doc);
   ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities"});

@@ -9,6 +9,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/kernel/surface.hpp"
 #include "bezcam/post/report.hpp"
 
 namespace bezcam {
@@ -19,6 +20,70 @@ namespace {
 // Deviation of cutting blocks
 // ---------------------------------------------------------------------------
 
+// What an entity looks like: the exact curves to draw (a curve entity's
+// pieces; a curve on a surface composed with the surface; a surface's
+// iso-parameter lines), its control polygons, and the curve its cut is
+// measured against (empty for surfaces).
+struct Shape {
+  std::vector<std::vector<Bezier>> chains;
+  std::vector<std::vector<Vec3>> polygons;
+  std::vector<Vec3> control_points;
+  std::vector<Bezier> measure;
+  int dim = 2;
+  bool closed = false;
+  bool surface = false;
+};
+
+// Iso-parameter lines drawn per direction on a surface (borders included).
+constexpr int kIsoLines = 10;
+
+Shape entity_shape(const Entity& e) {
+  Shape s;
+  auto add_polygons = [&](const std::vector<Bezier>& pieces) {
+    for (size_t i = 0; i < pieces.size(); ++i) {
+      s.polygons.push_back(pieces[i].points);
+      // A piece's first point is the previous piece's last.
+      for (size_t j = i == 0 ? 0 : 1; j < pieces[i].points.size(); ++j) s.control_points.push_back(pieces[i].points[j]);
+    }
+  };
+  if (!e.curve.pieces.empty()) {
+    s.chains.push_back(e.curve.pieces);
+    s.measure = e.curve.pieces;
+    s.dim = e.curve.dim;
+    s.closed = e.curve.closed;
+    add_polygons(e.curve.pieces);
+  } else if (e.surface && !e.uv_curve.pieces.empty()) {
+    // The exact 3D curve S(c(w)): what the tool follows.
+    s.measure = map_curve(*e.surface, e.uv_curve, false).points;
+    s.chains.push_back(s.measure);
+    s.dim = 3;
+    s.closed = e.uv_curve.closed;
+    add_polygons(s.measure);
+  } else if (e.surface) {
+    s.surface = true;
+    s.dim = 3;
+    for (int k = 0; k <= kIsoLines; ++k) {
+      const double at = double(k) / kIsoLines;
+      s.chains.push_back(iso_curve(*e.surface, 'u', at, false).points);
+      s.chains.push_back(iso_curve(*e.surface, 'v', at, false).points);
+    }
+    // The control net of every cell: its rows and its columns.
+    for (const BezierPatch& c : e.surface->grid.cells) {
+      for (int i = 0; i <= c.nu; ++i) {
+        std::vector<Vec3> row;
+        for (int j = 0; j <= c.nv; ++j) row.push_back(c.at(i, j)), s.control_points.push_back(c.at(i, j));
+        s.polygons.push_back(std::move(row));
+      }
+      for (int j = 0; j <= c.nv; ++j) {
+        std::vector<Vec3> col;
+        for (int i = 0; i <= c.nu; ++i) col.push_back(c.at(i, j));
+        s.polygons.push_back(std::move(col));
+      }
+    }
+  }
+  return s;
+}
+
 // An entity's curve as a dense on-curve polyline (2D curves in the XY plane).
 struct DenseCurve {
   int entity = -1;
@@ -27,12 +92,12 @@ struct DenseCurve {
   std::vector<Vec3> pts;
 };
 
-DenseCurve dense_curve(const Entity& e, double tol) {
+DenseCurve dense_curve(const Entity& e, const Shape& sh, double tol) {
   DenseCurve d;
   d.entity = static_cast<int>(e.index);
-  d.dim = e.curve.dim;
-  const auto& pc = e.curve.pieces;
-  d.closed = e.curve.closed || (!pc.empty() && pc.front().front() == pc.back().back());
+  d.dim = sh.dim;
+  const auto& pc = sh.measure;
+  d.closed = sh.closed || (!pc.empty() && pc.front().front() == pc.back().back());
   // The flattener certifies its bound; a thousandth of the tolerance makes
   // the sampling error negligible next to what is measured.
   for (double frac : {1e-3, 1e-2}) {
@@ -304,8 +369,10 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Too
     for (const Entity& e : job.entities) {
       if (on_entity) on_entity(e.index, total, e.label());
       auto it = by_entity.find(static_cast<int>(e.index));
-      if (it == by_entity.end() || e.curve.pieces.empty()) continue;
-      const DenseCurve c = dense_curve(e, tolerance);
+      if (it == by_entity.end()) continue;
+      const Shape sh = entity_shape(e);
+      if (sh.measure.empty()) continue;
+      const DenseCurve c = dense_curve(e, sh, tolerance);
       size_t hint = 0;
       for (size_t i : it->second) {
         const auto P = measuring_points(motion[i].block, tolerance, c.dim);
@@ -318,7 +385,8 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Too
     std::vector<DenseCurve> curves;
     for (const Entity& e : job.entities) {
       if (on_entity) on_entity(e.index, total, e.label());
-      if (!e.curve.pieces.empty()) curves.push_back(dense_curve(e, tolerance));
+      const Shape sh = entity_shape(e);
+      if (!sh.measure.empty()) curves.push_back(dense_curve(e, sh, tolerance));
     }
     std::vector<size_t> hints(curves.size(), 0);
     for (size_t i = 0; i < motion.size() && !curves.empty(); ++i) {
@@ -359,10 +427,13 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
     for (const auto& d : devs) dev_of[d.block] = d.deviation, dev_max = std::max(dev_max, d.deviation);
   }
 
+  std::vector<Shape> shapes;
+  if (job)
+    for (const auto& e : job->entities) shapes.push_back(entity_shape(e));
+
   // Is there anything 3D to show in an isometric view?
   bool three_d = false;
-  if (job)
-    for (const auto& e : job->entities) three_d = three_d || (!e.curve.pieces.empty() && e.curve.dim == 3);
+  for (const auto& sh : shapes) three_d = three_d || (!sh.chains.empty() && sh.dim == 3);
   for (size_t i = 0; i < in.motion.size() && !three_d; ++i) {
     const auto& b = in.motion[i].block;
     if (!is_feed(b) || is_plunge(in.motion, i)) continue;
@@ -382,9 +453,12 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
 
   // Bounds: tight curve boxes, control points, tool path samples.
   Box3 all;
-  if (job)
-    for (const auto& e : job->entities)
-      for (const auto& pc : e.curve.pieces) all.add(opt.control ? control_bounds(pc) : bounds(pc));
+  for (const auto& sh : shapes) {
+    for (const auto& ch : sh.chains)
+      for (const auto& pc : ch) all.add(bounds(pc));
+    if (opt.control)
+      for (const auto& p : sh.control_points) all.add(p);
+  }
   for (const auto& m : in.motion) {
     all.add(m.block.from);
     all.add(m.block.to);
@@ -393,14 +467,12 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   std::vector<std::vector<Vec3>> msamples(in.motion.size());
   for (size_t i = 0; i < in.motion.size(); ++i) msamples[i] = sample_block(in.motion[i].block, size0 * 2e-4);
   for (auto& v : views) {
-    if (job)
-      for (const auto& e : job->entities)
-        for (const auto& pc : e.curve.pieces) {
-          if (opt.control)
-            for (const auto& p : pc.points) v.fit(p);
-          else
-            v.fit(bounds(pc));
-        }
+    for (const auto& sh : shapes) {
+      for (const auto& ch : sh.chains)
+        for (const auto& pc : ch) v.fit(bounds(pc));
+      if (opt.control)
+        for (const auto& p : sh.control_points) v.fit(p);
+    }
     for (const auto& s : msamples)
       for (const auto& p : s) v.fit(p);
     if (v.empty()) v.fit(Vec3{0, 0, 0});
@@ -446,19 +518,16 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   for (const auto& v : views) smax = std::max(smax, v.s);
   double draw_tol = 0.2 / smax;
   if (in.tolerance > 0) draw_tol = std::min(draw_tol, in.tolerance / 20);
-  std::vector<std::vector<Vec3>> curve_pts;
-  if (job)
-    for (const auto& e : job->entities) {
-      std::vector<Vec3> pts;
-      if (!e.curve.pieces.empty()) {
-        try {
-          pts = flatten(e.curve.pieces, FlattenOptions{draw_tol, -1}).points;
-        } catch (const InputError&) {
-          pts = flatten(e.curve.pieces, FlattenOptions{0.2 / smax, -1}).points;
-        }
-      }
-      curve_pts.push_back(std::move(pts));
+  auto sample_chain = [&](const std::vector<Bezier>& chain) {
+    try {
+      return flatten(chain, FlattenOptions{draw_tol, -1}).points;
+    } catch (const InputError&) {  // finer than double precision allows
+      return flatten(chain, FlattenOptions{0.2 / smax, -1}).points;
     }
+  };
+  std::vector<std::vector<std::vector<Vec3>>> chain_pts(shapes.size());
+  for (size_t k = 0; k < shapes.size(); ++k)
+    for (const auto& ch : shapes[k].chains) chain_pts[k].push_back(sample_chain(ch));
 
   std::string o;
   o.reserve(1 << 16);
@@ -556,42 +625,78 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
       o += "<g class=\"entities\">\n";
       for (size_t k = 0; k < job->entities.size(); ++k) {
         const Entity& e = job->entities[k];
-        const auto& g = e.curve;
-        if (g.pieces.empty()) continue;
+        const Shape& sh = shapes[k];
+        if (sh.chains.empty()) continue;
         o += "<g class=\"entity\" data-entity=\"" + std::to_string(e.index) + "\" data-id=\"" + esc(e.id) + "\">\n";
-        o += "<title>" + esc(e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
-                         (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")) +
-             "</title>\n";
-        if (opt.control) {
+        std::string what = e.label() + ": " + e.type;
+        if (sh.surface) {
+          what += ", degree " + std::to_string(e.surface->degree_u()) + " x " + std::to_string(e.surface->degree_v()) +
+                  (e.surface->rational() ? ", rational" : "") + ", surface";
+        } else {
+          int deg = 0;
+          bool rat = false;
+          for (const auto& pc : sh.measure) deg = std::max(deg, pc.degree()), rat = rat || pc.rational();
+          what += ", degree " + std::to_string(deg) + (rat ? ", rational" : "") + (sh.dim == 3 ? ", 3D" : ", 2D");
+        }
+        o += "<title>" + esc(what) + "</title>\n";
+        if (opt.control && !sh.polygons.empty()) {
           std::string d;
-          for (const auto& pc : g.pieces) d += (d.empty() ? "" : " ") + path_d(v, pc.points);
+          for (const auto& poly : sh.polygons) d += (d.empty() ? "" : " ") + path_d(v, poly);
           o += "<path class=\"control-polygon\" d=\"" + d + "\" fill=\"none\" stroke=\"" + kControlColour +
                "\" stroke-width=\"0.8\"/>\n";
-          for (size_t pi = 0; pi < g.pieces.size(); ++pi)
-            for (size_t j = 0; j < g.pieces[pi].points.size(); ++j) {
-              if (pi > 0 && j == 0) continue;  // shared with the previous piece's end
-              const P2 q = v.screen(g.pieces[pi].points[j]);
-              o += "<circle class=\"control-point\" cx=\"" + n3(q.x) + "\" cy=\"" + n3(q.y) +
-                   "\" r=\"2.5\" fill=\"#ffffff\" stroke=\"" + kControlColour + "\" stroke-width=\"1\"/>\n";
-            }
+          for (const auto& p : sh.control_points) {
+            const P2 q = v.screen(p);
+            o += "<circle class=\"control-point\" cx=\"" + n3(q.x) + "\" cy=\"" + n3(q.y) +
+                 "\" r=\"2.5\" fill=\"#ffffff\" stroke=\"" + kControlColour + "\" stroke-width=\"1\"/>\n";
+          }
         }
-        o += "<path class=\"curve\" d=\"" + path_d(v, curve_pts[k]) + "\" fill=\"none\" stroke=\"" + kCurveColour +
-             "\" stroke-width=\"1.2\" stroke-linejoin=\"round\"/>\n";
-        // Start point and direction: an arrow leaving the start, another
-        // at the middle of the curve.
-        const Bezier& first = g.pieces.front();
-        const P2 s0 = v.screen(first.front());
-        const P2 d0 = v.screen_dir(first.front(), tangent(first, 0));
-        o += "<circle class=\"start-point\" cx=\"" + n3(s0.x) + "\" cy=\"" + n3(s0.y) + "\" r=\"3.5\" fill=\"" +
-             kCurveColour + "\"/>\n";
-        o += "<path class=\"direction-arrow\" d=\"" + arrow_d({s0.x + d0.x * 16, s0.y + d0.y * 16}, d0, 9, 4) +
-             "\" fill=\"" + kCurveColour + "\"/>\n";
-        const Bezier& mid = g.pieces[g.pieces.size() / 2];
-        const double tm = g.pieces.size() % 2 == 1 ? 0.5 : 0.0;
-        const Vec3 pm = evaluate(mid, tm);
-        const P2 sm = v.screen(pm), dm = v.screen_dir(pm, tangent(mid, tm));
-        o += "<path class=\"direction-arrow\" d=\"" + arrow_d({sm.x + dm.x * 4.5, sm.y + dm.y * 4.5}, dm, 9, 4) +
-             "\" fill=\"" + kCurveColour + "\"/>\n";
+        for (size_t c = 0; c < chain_pts[k].size(); ++c) {
+          // A surface's border lines (the first and last of each direction)
+          // are drawn heavier than its inner iso lines.
+          const bool border = !sh.surface || c < 2 || c + 2 >= chain_pts[k].size();
+          o += "<path class=\"curve" + std::string(sh.surface ? " iso-line" : "") + "\" d=\"" +
+               path_d(v, chain_pts[k][c]) + "\" fill=\"none\" stroke=\"" + kCurveColour + "\" stroke-width=\"" +
+               (border ? "1.2" : "0.6") + "\" stroke-linejoin=\"round\"" + (border ? "" : " stroke-opacity=\"0.6\"") +
+               "/>\n";
+        }
+        // Start point and direction: an arrow leaving the start, another at
+        // the middle of the curve. A surface's are those of its first cut.
+        Vec3 start, start_dir, mid_pt, mid_dir;
+        bool have_start = false, have_mid = false;
+        if (!sh.surface) {
+          const auto& ch = sh.chains.front();
+          start = ch.front().front();
+          start_dir = tangent(ch.front(), 0);
+          const Bezier& mid = ch[ch.size() / 2];
+          const double tm = ch.size() % 2 == 1 ? 0.5 : 0.0;
+          mid_pt = evaluate(mid, tm);
+          mid_dir = tangent(mid, tm);
+          have_start = have_mid = true;
+        } else {
+          for (size_t i = 0; i < in.motion.size() && !have_start; ++i) {
+            const auto& b = in.motion[i].block;
+            if (in.motion[i].entity != static_cast<int>(e.index) || !is_feed(b) || is_plunge(in.motion, i) ||
+                b.from == b.to)
+              continue;
+            start = b.from;
+            start_dir = msamples[i][1] - msamples[i][0];
+            have_start = true;
+          }
+          if (!have_start) start = evaluate(*e.surface, 0, 0);
+        }
+        const P2 s0 = v.screen(start);
+        const P2 d0 = have_start ? v.screen_dir(start, start_dir) : P2{1, 0};
+        if (have_start) {
+          o += "<circle class=\"start-point\" cx=\"" + n3(s0.x) + "\" cy=\"" + n3(s0.y) + "\" r=\"3.5\" fill=\"" +
+               kCurveColour + "\"/>\n";
+          o += "<path class=\"direction-arrow\" d=\"" + arrow_d({s0.x + d0.x * 18, s0.y + d0.y * 18}, d0, 10, 4.5) +
+               "\" fill=\"" + kCurveColour + "\"/>\n";
+        }
+        if (have_mid) {
+          const P2 sm = v.screen(mid_pt), dm = v.screen_dir(mid_pt, mid_dir);
+          o += "<path class=\"direction-arrow\" d=\"" + arrow_d({sm.x + dm.x * 5, sm.y + dm.y * 5}, dm, 10, 4.5) +
+               "\" fill=\"" + kCurveColour + "\"/>\n";
+        }
         // The label sits beside the start, on the side away from the path.
         const double lx = s0.x - d0.y * 10 + (d0.y > 0 ? 0 : 2), ly = s0.y + d0.x * 10 + (d0.x > 0 ? 10 : -4);
         o += "<text class=\"entity-label\" x=\"" + n3(lx) + "\" y=\"" + n3(ly) + "\" fill=\"" + kCurveColour +
@@ -643,7 +748,7 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
            "\" stroke-width=\"" + n3(width) + "\"" + (*dash ? std::string(" stroke-dasharray=\"") + dash + "\"" : "") +
            " fill=\"none\"/>";
   };
-  key("key-curve", line(kCurveColour, 1.2, ""), "true curve");
+  key("key-curve", line(kCurveColour, 1.2, ""), "true curve (surfaces: iso lines)");
   if (opt.control) key("key-control", line(kControlColour, 0.8, ""), "control polygon");
   key("key-feed", line(opt.deviation ? deviation_colour(0, 1) : std::string(kFeedColour), 3, ""), "feed (cutting)");
   key("key-rapid", line(kRapidColour, 1, "6 4"), "rapid");

@@ -81,7 +81,26 @@ void emit_lines(CutContext& c, EntityReport& r) {
 
 }  // namespace detail
 
+namespace {
+Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
+}  // namespace
+
 Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
+  try {
+    return build_program_unchecked(job, m, opt);
+  } catch (const InputError& e) {
+    // The flattener knows neither the file nor the machine: say where the
+    // tolerance came from and whose decimals it meets.
+    if (!e.id().starts_with("flatten.tolerance")) throw;
+    throw InputError(e.id(), opt.tolerance ? std::string("--tolerance") : job.source + ": tolerance",
+                     e.message() + " (machine \"" + m.name + "\" prints " + std::to_string(m.decimals(job.units)) +
+                         " decimals in " + to_string(job.units) + ")");
+  }
+}
+
+namespace {
+
+Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
   Program p;
   p.job_name = std::filesystem::path(job.source).filename().string();
   p.machine = m.name;
@@ -191,5 +210,7 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
   if (opt.on_entity) opt.on_entity(job.entities.size(), job.entities.size(), "");
   return p;
 }
+
+}  // namespace
 
 }  // namespace bezcam
