@@ -98,18 +98,19 @@ Bezier fit_reduced(const Bezier& b, int m) {
   return r;
 }
 
-bool reduce_rec(const Bezier& b, int target, double budget, int depth, std::vector<Bezier>& out, double& worst) {
+bool reduce_rec(const Bezier& b, int target, double budget, int depth, double t0, double t1,
+                std::vector<ReducedPiece>& out) {
   const Bezier r = fit_reduced(b, target);
   const double d = parametric_distance(b, r, budget);
   if (d <= budget) {
-    out.push_back(r);
-    worst = std::max(worst, d);
+    out.push_back({r, b, t0, t1, d});
     return true;
   }
   if (depth <= 0) return false;
   auto [left, right] = split(b, 0.5);
-  return reduce_rec(left, target, budget, depth - 1, out, worst) &&
-         reduce_rec(right, target, budget, depth - 1, out, worst);
+  const double tm = 0.5 * (t0 + t1);
+  return reduce_rec(left, target, budget, depth - 1, t0, tm, out) &&
+         reduce_rec(right, target, budget, depth - 1, tm, t1, out);
 }
 
 }  // namespace
@@ -153,19 +154,16 @@ double parametric_distance(const Bezier& a, const Bezier& b, double budget, doub
   return heap.top().ub;
 }
 
-std::optional<std::vector<Bezier>> reduce_degree(const Bezier& b, int target, double budget, int max_depth,
-                                                 double* bound) {
-  std::vector<Bezier> out;
-  double worst = 0;
+std::optional<std::vector<ReducedPiece>> reduce_degree(const Bezier& b, int target, double budget, int max_depth) {
+  std::vector<ReducedPiece> out;
   if (target < 1) return std::nullopt;
   if (!b.rational() && b.degree() <= target) {
     Bezier e = b;
-    while (e.degree() < target) e = elevate(e);
-    out.push_back(e);
-  } else if (!reduce_rec(b, target, budget, max_depth, out, worst)) {
+    while (e.degree() < target) e = elevate(e);  // exact
+    out.push_back({e, b, 0, 1, 0});
+  } else if (!reduce_rec(b, target, budget, max_depth, 0, 1, out)) {
     return std::nullopt;
   }
-  if (bound) *bound = worst;
   return out;
 }
 

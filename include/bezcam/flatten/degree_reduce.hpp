@@ -34,9 +34,14 @@ double parametric_distance(const Bezier& a, const Bezier& b, double budget, doub
 /// fits the middle point by least squares; target 1 gives chords. Pieces
 /// that do not fit are split in half (de Casteljau), at most `max_depth`
 /// times. Returns nothing when even that does not fit.
-/// `bound`, when given, receives the largest proven parametric distance.
-std::optional<std::vector<Bezier>> reduce_degree(const Bezier& b, int target, double budget, int max_depth = 10,
-                                                 double* bound = nullptr);
+struct ReducedPiece {
+  Bezier approx;  ///< polynomial, degree `target`
+  Bezier source;  ///< the part of the input it replaces, same parameter
+  double t0 = 0, t1 = 1;  ///< that part's interval of the input's parameter
+  double bound = 0;       ///< proven parametric distance approx vs source
+};
+std::optional<std::vector<ReducedPiece>> reduce_degree(const Bezier& b, int target, double budget,
+                                                       int max_depth = 10);
 
 /// The same rational piece in standard form: first and last weights 1
 /// (w_i -> w_i / (w_0^(n-i)/n w_n^(i/n)), a change of parameter that keeps
