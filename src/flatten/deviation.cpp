@@ -104,46 +104,63 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
       const size_t i = cand[c].second;
       // Refine on the true curve between the neighbouring samples of the same piece.
       for (size_t j : {i > 0 ? i - 1 : i, i}) {
-        if (j + 1 >= D.size() || D[j].piece != D[j + 1].piece) continue;
-        const Bezier& b = pieces[D[j].piece];
+        if (j + 1 >= D.size()) continue;
+        const Bezier& b = pieces[D[j + 1].piece];
+        const double t0 = D[j].piece == D[j + 1].piece ? D[j].t : 0.0;
         size_t h = 0;
-        const double m = golden_max(D[j].t, D[j + 1].t, [&](double t) {
+        const double m = golden_max(t0, D[j + 1].t, [&](double t) {
           return dist_to_polyline(evaluate(b, t), polyline, h, polyline.size(), large);
         });
         dev.curve_to_path = std::max(dev.curve_to_path, m);
       }
     }
   }
-  // Polyline -> curve: sample each segment, nearest distance to the dense
-  // on-curve sample, then the worst points are projected on the true curve.
+  // Polyline -> curve: 64 samples per segment against the dense on-curve
+  // chain (itself within `resolution` of the curve), then the worst samples
+  // are refined along their segment and projected exactly on the true curve.
   {
-    std::vector<std::pair<double, Vec3>> cand;
+    constexpr int kSteps = 64;
+    struct Cand {
+      double d;
+      size_t k;
+      double s;
+    };
+    std::vector<Cand> cand;
     size_t hint = 0;
+    auto point_at = [&](size_t k, double s) {
+      return k + 1 < polyline.size() ? lerp(polyline[k], polyline[k + 1], s) : polyline[k];
+    };
     for (size_t k = 0; k < polyline.size(); ++k) {
-      const size_t steps = k + 1 < polyline.size()
-                               ? std::min<size_t>(100000, 1 + size_t(dist(polyline[k], polyline[k + 1]) / resolution))
-                               : 1;
-      for (size_t s = 0; s < steps; ++s) {
-        const Vec3 x = k + 1 < polyline.size() ? lerp(polyline[k], polyline[k + 1], double(s) / steps) : polyline[k];
-        const double d = dist_to_polyline(x, dpts, hint, wD, large);
-        cand.push_back({d, x});
+      const int steps = k + 1 < polyline.size() ? kSteps : 1;
+      for (int i = 0; i < steps; ++i) {
+        const double s = double(i) / steps;
+        cand.push_back({dist_to_polyline(point_at(k, s), dpts, hint, wD, large), k, s});
       }
     }
-    std::partial_sort(cand.begin(), cand.begin() + std::min<size_t>(8, cand.size()), cand.end(),
-                      [](auto& x, auto& y) { return x.first > y.first; });
-    for (size_t c = 0; c < std::min<size_t>(8, cand.size()); ++c) {
-      const Vec3 x = cand[c].second;
+    const size_t top = std::min<size_t>(8, cand.size());
+    std::partial_sort(cand.begin(), cand.begin() + top, cand.end(), [](auto& x, auto& y) { return x.d > y.d; });
+    // Exact distance from x to the true curve near its nearest dense sample.
+    auto to_curve = [&](const Vec3& x) {
       size_t seg = 0, h = 0;
       double d = dist_to_polyline(x, dpts, h, dpts.size(), large, &seg);
-      // Exact distance to the curve near that sample: minimise over t.
       const size_t lo = seg > 0 ? seg - 1 : 0, hi = std::min(seg + 2, D.size() - 1);
       for (size_t j = lo; j < hi; ++j) {
-        if (D[j].piece != D[j + 1].piece) continue;
-        const Bezier& b = pieces[D[j].piece];
-        const double m = -golden_max(D[j].t, D[j + 1].t, [&](double t) { return -dist(evaluate(b, t), x); });
-        d = std::min(d, m);
+        if (D[j].piece == D[j + 1].piece && D[j + 1].t <= D[j].t) continue;
+        const Bezier& b = pieces[D[j + 1].piece];
+        const double t0 = D[j].piece == D[j + 1].piece ? D[j].t : 0.0;
+        d = std::min(d, -golden_max(t0, D[j + 1].t, [&](double t) { return -dist(evaluate(b, t), x); }));
       }
-      dev.path_to_curve = std::max(dev.path_to_curve, d);
+      return d;
+    };
+    for (size_t c = 0; c < top; ++c) {
+      const auto& cd = cand[c];
+      if (cd.k + 1 >= polyline.size()) {
+        dev.path_to_curve = std::max(dev.path_to_curve, to_curve(polyline[cd.k]));
+        continue;
+      }
+      const double a = std::max(0.0, cd.s - 1.0 / kSteps), b = std::min(1.0, cd.s + 1.0 / kSteps);
+      dev.path_to_curve =
+          std::max(dev.path_to_curve, golden_max(a, b, [&](double s) { return to_curve(point_at(cd.k, s)); }));
     }
   }
   return dev;

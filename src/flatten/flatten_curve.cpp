@@ -111,6 +111,18 @@ double cubic_chord_deviation(const Vec3& A, const Vec3& Q1, const Vec3& Q2, cons
   return o == 0 ? perp : std::sqrt(perp * perp + o * o);
 }
 
+// The same in the plane, without building a frame (the common case).
+double cubic_chord_deviation_2d(const Vec3& A, const Vec3& Q1, const Vec3& Q2, const Vec3& B) {
+  const double abx = B.x - A.x, aby = B.y - A.y;
+  const double e1x = Q1.x - A.x, e1y = Q1.y - A.y, e2x = Q2.x - A.x, e2y = Q2.y - A.y;
+  const double L2 = abx * abx + aby * aby;
+  if (!(L2 > 1e-300)) return std::max(std::hypot(e1x, e1y), std::hypot(e2x, e2y));
+  const double L = std::sqrt(L2), inv = 1 / L;
+  const double perp = bump_max((abx * e1y - aby * e1x) * inv, (abx * e2y - aby * e2x) * inv);
+  const double o = overshoot((abx * e1x + aby * e1y) * inv, (abx * e2x + aby * e2y) * inv, L);
+  return o == 0 ? perp : std::sqrt(perp * perp + o * o);
+}
+
 // Rigorous bound for any (rational) piece by branch and bound on the convex
 // hull: dist(., [A,B]) is convex, so on a sub-curve it is at most its value
 // at the control points, and splitting tightens that quadratically.
@@ -148,6 +160,7 @@ double hull_chord_deviation(const Bezier& sub, const Vec3& A, const Vec3& B, dou
 struct Prepared {
   const Bezier* b = nullptr;
   bool cubic = false;         // polynomial of degree <= 3 (elevated to 3)
+  bool planar = false;        // 2D
   Vec3 c0, c1, c2, c3;        // power form of the cubic
   double scale = 0;           // magnitude of the coordinates
 
@@ -158,6 +171,7 @@ struct Prepared {
       while (e.degree() < 3) e = elevate(e);
       const auto& P = e.points;
       cubic = true;
+      planar = piece.dim == 2;
       c0 = P[0];
       c1 = (P[1] - P[0]) * 3;
       c2 = (P[0] - P[1] * 2 + P[2]) * 3;
@@ -171,17 +185,38 @@ struct Prepared {
     return evaluate(*b, t);
   }
   Vec3 tangent(double t) const { return (c3 * (3 * t) + c2 * 2) * t + c1; }
+  // |M''| across the tangent: a chord of parameter length dt deviates by
+  // about dt^2 / 8 times this (the local parabola). Used to predict steps.
+  double bend(double t) const {
+    if (!cubic) return 0;
+    const Vec3 d1 = tangent(t), d2 = c3 * (6 * t) + c2 * 2;
+    const double n = norm(d1);
+    return n > 0 ? norm(cross(d1, d2)) / n : norm(d2);
+  }
 
   double deviation(double t0, double t1, const Vec3& A, const Vec3& B, double budget) const {
     if (cubic) {
       const double h = (t1 - t0) / 3;
-      return cubic_chord_deviation(A, A + tangent(t0) * h, B - tangent(t1) * h, B);
+      const Vec3 Q1 = A + tangent(t0) * h, Q2 = B - tangent(t1) * h;
+      return planar ? cubic_chord_deviation_2d(A, Q1, Q2, B) : cubic_chord_deviation(A, Q1, Q2, B);
     }
     return hull_chord_deviation(subcurve(*b, t0, t1), A, B, budget);
   }
 
-  // Uniform step that Wang's formula proves safe for a polynomial piece;
-  // used as the first guess only.
+  // First guess for a piece: from the local parabola at the start, refined
+  // once at the middle of the guessed chord; Wang's uniform step otherwise.
+  double first_step(double budget) const {
+    if (cubic) {
+      double k = bend(0);
+      if (!(k > 0)) return 1;
+      double dt = std::sqrt(8 * kAimShare * budget / k);
+      k = bend(std::min(1.0, dt / 2));
+      if (k > 0) dt = std::sqrt(8 * kAimShare * budget / k);
+      return std::min(1.0, dt);
+    }
+    return std::min(1.0, 1.5 * wang_step(budget));
+  }
+  // Uniform step that Wang's formula proves safe for a polynomial piece.
   double wang_step(double tol) const {
     const auto& P = b->points;
     const int n = b->degree();
@@ -231,7 +266,7 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
     Vec3 A = pieces[pi].front();
     double dispA = dist(Ar, A);  // includes the tiny gap at a path joint
     double t0 = 0;
-    double dt = dt_hint > 0 ? dt_hint : std::min(1.0, 1.5 * P.wang_step(tol));
+    double dt = dt_hint > 0 ? dt_hint : P.first_step(tol - margin - dispA);
     while (t0 < 1) {
       // Search the longest chord from t0 whose bound fits the budget.
       double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
@@ -243,8 +278,8 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
         const double t1 = last ? 1.0 : t0 + dt;
         if (last) dt = 1 - t0;
         const Vec3 B = P.point(t1);
-        const Vec3 Br = quantize(B, opt.decimals);
-        const double dispB = dist(Br, B);
+        const Vec3 Br = opt.decimals < 0 ? B : quantize(B, opt.decimals);
+        const double dispB = opt.decimals < 0 ? 0.0 : dist(Br, B);
         const double budget = tol - margin - std::max(dispA, dispB);
         const double dev = budget > 0 ? P.deviation(t0, t1, A, B, budget) : kInf;
         const bool ok = dev <= budget;
@@ -275,9 +310,17 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
       const double t1 = best_t1;
       bound = std::max(bound, best_dev + best_disp);
       emit({bestBr, pi, t1});
-      // Next guess: the same step, stretched if this one had room left.
-      dt_hint = t1 >= 1 ? -1 : lo * std::clamp(std::sqrt(kAimShare / std::max(best_ratio, 1e-12)), 1.0, 2.0);
-      if (dt_hint > 0) dt = dt_hint;
+      // Next guess: the same step scaled by the room this chord left and by
+      // the change of bending between this chord's middle and the next's.
+      if (t1 >= 1) {
+        dt_hint = -1;
+      } else {
+        double g = std::sqrt(kAimShare / std::max(best_ratio, 1e-12));
+        const double b0 = P.bend(t1 - 0.5 * lo), b1 = P.bend(std::min(1.0, t1 + 0.5 * lo));
+        if (b0 > 0 && b1 > 0) g *= std::sqrt(b0 / b1);
+        dt_hint = lo * std::clamp(g, 0.25, 2.0);
+        dt = dt_hint;
+      }
       t0 = t1;
       A = bestB;
       Ar = bestBr;

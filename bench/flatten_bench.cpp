@@ -1,0 +1,190 @@
+// Flattening benchmark on the shared corpus (shared/bench/cubics-10k.json):
+// for tolerances 0.1, 0.01 and 0.001 mm, prints for bezcam's flattener and
+// for cairo's (same process, same machine, so the speed is a ratio):
+// curves per second, segments against the greedy maximal-chord minimum
+// (computed here by bisection on the exact chord deviation), curves over
+// tolerance and the largest deviation as a fraction of the tolerance, both
+// measured independently (flatten/deviation.hpp).
+//
+// Usage: flatten_bench [CORPUS.json] [--quick]   (--quick: every 10th curve)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bezcam/flatten/deviation.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+
+#ifdef BEZCAM_HAVE_CAIRO
+#include <cairo.h>
+#endif
+
+using namespace bezcam;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct Curve {
+  Bezier b;
+  std::string kind;
+};
+
+std::vector<Curve> load(const std::string& path, bool quick) {
+  std::ifstream in(path);
+  if (!in) {
+    std::fprintf(stderr, "flatten_bench: cannot read %s\n", path.c_str());
+    std::exit(3);
+  }
+  nlohmann::json doc = nlohmann::json::parse(in);
+  std::vector<Curve> out;
+  const auto& cs = doc["curves"];
+  for (size_t i = 0; i < cs.size(); ++i) {
+    if (quick && i % 10) continue;
+    std::vector<Vec3> pts;
+    for (const auto& p : cs[i]) pts.push_back({p[0].get<double>(), p[1].get<double>()});
+    out.push_back({Bezier::make(pts), doc["kinds"][i].get<std::string>()});
+  }
+  return out;
+}
+
+// Greedy maximal chords: from each on-curve vertex, the longest chord whose
+// exact deviation is within tol (bisection to 1e-12 in t).
+size_t greedy_count(const Bezier& b, double tol) {
+  size_t n = 0;
+  double t0 = 0;
+  while (t0 < 1) {
+    ++n;
+    if (chord_deviation(b, t0, 1) <= tol) break;
+    double lo = t0, hi = 1;
+    while (hi - lo > 1e-12) {
+      const double m = 0.5 * (lo + hi);
+      (chord_deviation(b, t0, m) <= tol ? lo : hi) = m;
+    }
+    if (lo <= t0) lo = std::nextafter(t0, 2.0);
+    t0 = lo;
+  }
+  return n;
+}
+
+#ifdef BEZCAM_HAVE_CAIRO
+struct Cairo {
+  cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1);
+  cairo_t* cr = cairo_create(s);
+  ~Cairo() {
+    cairo_destroy(cr);
+    cairo_surface_destroy(s);
+  }
+  // CTM scaled by 1/tol so that cairo's device tolerance of 1 is tol in
+  // user space and its 24.8 fixed point is tol/256.
+  void flatten(const Bezier& b, double tol, std::vector<Vec3>& out) {
+    cairo_identity_matrix(cr);
+    cairo_scale(cr, 1 / tol, 1 / tol);
+    cairo_set_tolerance(cr, 1.0);
+    cairo_new_path(cr);
+    const auto& p = b.points;
+    cairo_move_to(cr, p[0].x, p[0].y);
+    cairo_curve_to(cr, p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y);
+    cairo_path_t* path = cairo_copy_path_flat(cr);
+    out.clear();
+    for (int i = 0; i < path->num_data; i += path->data[i].header.length)
+      if (path->data[i].header.type == CAIRO_PATH_MOVE_TO || path->data[i].header.type == CAIRO_PATH_LINE_TO)
+        out.push_back({path->data[i + 1].point.x, path->data[i + 1].point.y});
+    cairo_path_destroy(path);
+  }
+};
+#endif
+
+struct Row {
+  std::string method;
+  double tol = 0;
+  size_t segments = 0, over = 0;
+  double worst = 0, us_per_curve = 0;
+};
+
+// Times several methods in interleaved rounds (so that a change of load on
+// the machine hits all of them alike) and keeps each one's best round.
+std::vector<double> time_us_per_curve(const std::vector<Curve>& cs,
+                                      const std::vector<std::function<void(const Bezier&)>>& fs) {
+  std::vector<double> best(fs.size(), 1e300);
+  for (int rep = 0; rep < 7; ++rep)
+    for (size_t k = 0; k < fs.size(); ++k) {
+      const auto t0 = Clock::now();
+      for (const auto& c : cs) fs[k](c.b);
+      best[k] = std::min(best[k], std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
+    }
+  for (auto& b : best) b /= cs.size();
+  return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string corpus = std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json";
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else corpus = argv[i];
+  }
+  const auto curves = load(corpus, quick);
+  std::printf("corpus: %s, %zu curves%s\n\n", corpus.c_str(), curves.size(), quick ? " (quick: every 10th)" : "");
+  std::printf("| tol mm | method | segments | ratio to greedy | curves over tol | max dev / tol | us per curve | curves/s | speed vs cairo |\n");
+  std::printf("|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (double tol : {0.1, 0.01, 0.001}) {
+    size_t greedy = 0;
+    for (const auto& c : curves) greedy += greedy_count(c.b, tol);
+    std::vector<Row> rows;
+    std::vector<Vec3> pts_b, pts_c;
+    std::vector<std::function<void(const Bezier&)>> fs;
+    fs.push_back([&](const Bezier& b) {
+      pts_b.clear();
+      flatten_pieces(std::span<const Bezier>(&b, 1), {tol, -1}, [&](const FlatVertex& v) { pts_b.push_back(v.point); });
+    });
+#ifdef BEZCAM_HAVE_CAIRO
+    Cairo cairo;
+    fs.push_back([&](const Bezier& b) { cairo.flatten(b, tol, pts_c); });
+#endif
+    const std::vector<double> us = time_us_per_curve(curves, fs);
+    // bezcam
+    {
+      Row r{"bezcam (exact chord bound, greedy search)", tol};
+      r.us_per_curve = us[0];
+      for (const auto& c : curves) {
+        const auto f = flatten(c.b, {tol, -1});
+        r.segments += f.points.size() - 1;
+        const double d = measure_deviation(std::span<const Bezier>(&c.b, 1), f.points, tol).max();
+        r.over += d > tol;
+        r.worst = std::max(r.worst, d / tol);
+      }
+      rows.push_back(r);
+    }
+#ifdef BEZCAM_HAVE_CAIRO
+    {
+      Row r{"cairo copy_path_flat, CTM scaled by 1/tol", tol};
+      std::vector<Vec3> pts;
+      r.us_per_curve = us[1];
+      for (const auto& c : curves) {
+        cairo.flatten(c.b, tol, pts);
+        r.segments += pts.size() - 1;
+        const double d = measure_deviation(std::span<const Bezier>(&c.b, 1), pts, tol).max();
+        r.over += d > tol;
+        r.worst = std::max(r.worst, d / tol);
+      }
+      rows.push_back(r);
+    }
+#endif
+    const double cairo_us = rows.size() > 1 ? rows[1].us_per_curve : 0;
+    std::printf("| %g | greedy maximal chords (reference minimum) | %zu | 1.000 | 0 | - | - | - | - |\n", tol, greedy);
+    for (const auto& r : rows)
+      std::printf("| %g | %s | %zu | %.3f | %zu | %.4f | %.2f | %.0f | %s |\n", tol, r.method.c_str(), r.segments,
+                  double(r.segments) / greedy, r.over, r.worst, r.us_per_curve, 1e6 / r.us_per_curve,
+                  cairo_us > 0 ? (std::to_string(cairo_us / r.us_per_curve).substr(0, 4) + "x").c_str() : "-");
+    std::fflush(stdout);
+  }
+  return 0;
+}

@@ -1,0 +1,548 @@
+#include "bezcam/flatten/flatten_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+
+namespace bezcam {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const Vec3 kZ{0, 0, 1};
+
+[[noreturn]] void normal_undefined(const SurfaceCurve& c, double t) {
+  const auto [u, v] = uv_at(c, t);
+  throw InputError("surface.normal-undefined", "",
+                   "the surface normal vanishes near u = " + fmt_num(u) + ", v = " + fmt_num(v) +
+                       " (a collapsed edge or a cusp), so a ball-end tool cannot follow it there; "
+                       "use tool_radius 0 or a patch without degenerate points");
+}
+
+// Largest norm among the control points of the k-th hodograph of a
+// polynomial piece, times n (n-1) ... : a bound of |b^(k)| on [0,1].
+double derivative_bound(const Bezier& b, int k) {
+  const int n = b.degree();
+  if (k > n) return 0;
+  std::vector<Vec3> d = b.points;
+  double f = 1;
+  for (int j = 0; j < k; ++j) {
+    for (size_t i = 0; i + 1 < d.size(); ++i) d[i] = d[i + 1] - d[i];
+    d.pop_back();
+    f *= n - j;
+  }
+  double m = 0;
+  for (const auto& p : d) m = std::max(m, norm(p));
+  return f * m;
+}
+
+// Bound of |P''| on [0,1] for a polynomial or rational piece (module comment).
+double second_derivative_bound(const Bezier& b) {
+  if (!b.rational()) return derivative_bound(b, 2);
+  const int n = b.degree();
+  const Vec3 c = evaluate(b, 0.5);
+  double R = 0, wmin = kInf;
+  Bezier h;  // H = w (P - c), as a polynomial curve
+  Bezier w;  // w as a polynomial curve in x
+  h.dim = w.dim = 3;
+  for (int i = 0; i <= n; ++i) {
+    R = std::max(R, dist(b.points[i], c));
+    wmin = std::min(wmin, b.weights[i]);
+    h.points.push_back((b.points[i] - c) * b.weights[i]);
+    w.points.push_back({b.weights[i], 0, 0});
+  }
+  const double h1 = derivative_bound(h, 1), h2 = derivative_bound(h, 2);
+  const double w1 = derivative_bound(w, 1), w2 = derivative_bound(w, 2);
+  const double p1 = (h1 + w1 * R) / wmin;
+  return (h2 + w2 * R + 2 * w1 * p1) / wmin;
+}
+
+// Lower bound of |n| on [0,1]: the least projection of the control points
+// on the direction of n(1/2) (convex hull); 0 when not provably positive.
+double min_norm_bound(const Bezier& n) {
+  const Vec3 m = evaluate(n, 0.5);
+  const double l = norm(m);
+  if (!(l > 0)) return 0;
+  const Vec3 d = m / l;
+  double lo = kInf;
+  for (const auto& p : n.points) lo = std::min(lo, dot(p, d));
+  return std::max(lo, 0.0);
+}
+
+double magnitude(const SurfaceCurve& c) {
+  double m = 0;
+  for (const auto& b : c.points)
+    for (const auto& p : b.points) m = std::max(m, max_abs(p));
+  return m;
+}
+
+// Tip of piece k at local parameter x.
+Vec3 tip_local(const SurfaceCurve& c, double radius, size_t k, double x, double global_t) {
+  const Vec3 p = evaluate(c.points[k], x);
+  if (radius == 0 || c.normals.empty()) return p;
+  const Vec3 n = evaluate(c.normals[k], x);
+  const double l = norm(n);
+  if (!(l > 0)) normal_undefined(c, global_t);
+  return p + (n / l - kZ) * radius;
+}
+
+double global_of(const SurfaceCurve& c, size_t k, double x) {
+  return c.breaks[k] + x * (c.breaks[k + 1] - c.breaks[k]);
+}
+
+}  // namespace
+
+Vec3 tip_point(const SurfaceCurve& c, double radius, double t) {
+  const auto [k, x] = locate(c, t);
+  return tip_local(c, radius, k, x, t);
+}
+
+double tip_chord_bound(const Bezier& point, const Bezier* normal, double radius, double t0, double t1) {
+  const Bezier p = subcurve(point, t0, t1);
+  double m2 = second_derivative_bound(p);
+  if (radius > 0 && normal) {
+    const Bezier n = subcurve(*normal, t0, t1);
+    const double s = min_norm_bound(n);
+    if (!(s > 0)) return kInf;
+    const double n1 = derivative_bound(n, 1) / s, n2 = derivative_bound(n, 2) / s;
+    m2 += radius * std::hypot(n2 + 2 * n1 * n1, n1 * n1);
+  }
+  return m2 / 8;
+}
+
+TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptions& opt) {
+  TipPolyline out;
+  if (radius == 0 || c.normals.empty()) {
+    // Exact pieces: the curve flattener's proven bound.
+    out.bound = flatten_pieces(c.points, opt, [&](const FlatVertex& v) {
+      out.points.push_back(v.point);
+      out.params.push_back(global_of(c, v.piece, v.t));
+    });
+    return out;
+  }
+  const double tol = opt.tolerance;
+  if (!(tol > 0) || !std::isfinite(tol))
+    throw InputError("flatten.tolerance", "tolerance", "expected a finite tolerance > 0, found " + fmt_num(tol));
+  const double rmax = max_rounding_displacement(opt.decimals, 3);
+  if (rmax >= 0.9 * tol)
+    throw InputError("flatten.tolerance-below-rounding", "tolerance",
+                     "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(opt.decimals) +
+                         " decimals: rounding alone moves a point by up to " + fmt_num(rmax) +
+                         "; use a tolerance above " + fmt_num(rmax / 0.9) + " or a profile with more decimals");
+  // Evaluation of the tip adds a unit normal times r to the point.
+  const double margin = float_margin(tol, magnitude(c) + radius);
+  Vec3 Ar = quantize(tip_local(c, radius, 0, 0, 0), opt.decimals);
+  out.points.push_back(Ar);
+  out.params.push_back(0);
+  for (size_t k = 0; k < c.points.size(); ++k) {
+    const Bezier& P = c.points[k];
+    const Bezier* N = &c.normals[k];
+    Vec3 A = tip_local(c, radius, k, 0, c.breaks[k]);
+    double dispA = dist(Ar, A);  // includes the float gap at a joint
+    double t0 = 0, dt = 0.25;
+    while (t0 < 1) {
+      // Longest step whose bound fits: the bound shrinks like dt^2.
+      double lo = 0, hi = kInf, best_t1 = t0, best_dev = 0, best_disp = 0;
+      Vec3 bestB, bestBr;
+      bool found = false;
+      for (int iter = 0; iter < 200; ++iter) {
+        const bool last = dt >= 1 - t0;
+        if (last) dt = 1 - t0;
+        const double t1 = last ? 1.0 : t0 + dt;
+        const double dev = tip_chord_bound(P, N, radius, t0, t1);
+        double budget = -1, dispB = 0;
+        Vec3 B, Br;
+        if (std::isfinite(dev)) {
+          B = tip_local(c, radius, k, t1, global_of(c, k, t1));
+          Br = quantize(B, opt.decimals);
+          dispB = dist(Br, B);
+          budget = tol - margin - std::max(dispA, dispB);
+        }
+        if (budget > 0 && dev <= budget) {
+          found = true;
+          lo = dt, best_t1 = t1, best_dev = dev, best_disp = std::max(dispA, dispB), bestB = B, bestBr = Br;
+          const double ratio = dev / budget;
+          if (last || ratio >= 0.9 || lo >= 0.97 * hi) break;
+          double nd = dt * std::min(ratio > 1e-12 ? std::sqrt(0.95 / ratio) : 4.0, 4.0);
+          if (nd >= hi) nd = 0.5 * (lo + hi);
+          dt = nd;
+        } else {
+          hi = dt;
+          if (found && lo >= 0.97 * hi) break;
+          const double g = budget > 0 && std::isfinite(dev) ? std::sqrt(0.95 * budget / dev) : 0.5;
+          double nd = dt * std::clamp(g, 0.05, 0.9);
+          if (nd <= lo) nd = 0.5 * (lo + hi);
+          dt = nd;
+        }
+        if (!found && dt < 1e-13) normal_undefined(c, global_of(c, k, t0));
+      }
+      if (!found) normal_undefined(c, global_of(c, k, t0));
+      out.bound = std::max(out.bound, best_dev + best_disp);
+      out.points.push_back(bestBr);
+      out.params.push_back(global_of(c, k, best_t1));
+      t0 = best_t1;
+      A = bestB;
+      Ar = bestBr;
+      dispA = dist(Ar, A);
+      dt = std::min(2 * lo, 1.0);
+    }
+  }
+  out.params.back() = 1;
+  return out;
+}
+
+namespace {
+
+template <class F>
+double golden_min(double a, double b, F f, int iters) {
+  const double g = 0.3819660112501051;
+  double x1 = a + g * (b - a), x2 = b - g * (b - a);
+  double f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < iters; ++i) {
+    if (f1 < f2) {
+      b = x2, x2 = x1, f2 = f1, x1 = a + g * (b - a), f1 = f(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2, x2 = b - g * (b - a), f2 = f(x2);
+    }
+  }
+  return std::min({f1, f2, f(a), f(b)});
+}
+
+}  // namespace
+
+Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p) {
+  Deviation d;
+  const auto& V = p.points;
+  const auto& T = p.params;
+  if (V.size() < 2) return d;
+  auto tip = [&](double t) { return tip_point(c, radius, std::clamp(t, 0.0, 1.0)); };
+  auto dist_poly = [&](const Vec3& x, size_t i) {  // to segments i-1 .. i+1
+    double m = kInf;
+    for (size_t j = i > 0 ? i - 1 : 0; j <= i + 1 && j + 1 < V.size(); ++j) m = std::min(m, dist_to_segment(x, V[j], V[j + 1]));
+    return m;
+  };
+  constexpr int kSamples = 8;
+  for (size_t i = 0; i + 1 < V.size(); ++i) {
+    const double a = T[i], b = T[i + 1];
+    // Curve -> polyline: the curve between the vertices, worst refined.
+    double best = -1, bt = a;
+    for (int s = 0; s <= kSamples; ++s) {
+      const double t = a + (b - a) * s / kSamples;
+      const double e = dist_poly(tip(t), i);
+      if (e > best) best = e, bt = t;
+    }
+    const double h = (b - a) / kSamples;
+    best = std::max(best, -golden_min(std::max(a, bt - h), std::min(b, bt + h),
+                                      [&](double t) { return -dist_poly(tip(t), i); }, 30));
+    d.curve_to_path = std::max(d.curve_to_path, best);
+    // Polyline -> curve: chord points to their nearest curve point, searched
+    // over the vertices' parameter range widened by half a segment each side.
+    const double lo = std::max(0.0, a - 0.5 * (b - a)), hi = std::min(1.0, b + 0.5 * (b - a));
+    for (int s = 1; s < kSamples; ++s) {
+      const Vec3 x = lerp(V[i], V[i + 1], double(s) / kSamples);
+      // Near-zero distances grow linearly off the minimum, so the search
+      // must pin the parameter down to about 1e-10 of the window.
+      const double e = golden_min(lo, hi, [&](double t) { return dist(tip(t), x); }, 50);
+      d.path_to_curve = std::max(d.path_to_curve, e);
+    }
+    d.path_to_curve = std::max(d.path_to_curve, dist(V[i], tip(a)));
+  }
+  d.path_to_curve = std::max(d.path_to_curve, dist(V.back(), tip(1)));
+  return d;
+}
+
+namespace {
+
+// Segment index of `p` whose parameter range holds t.
+size_t segment_of(const TipPolyline& p, double t) {
+  const size_t n = p.points.size();
+  if (n < 2) return 0;
+  size_t k = static_cast<size_t>(std::upper_bound(p.params.begin(), p.params.end(), t) - p.params.begin());
+  k = k == 0 ? 0 : k - 1;
+  return std::min(k, n - 2);
+}
+
+double dist_to_polyline(const Vec3& x, const TipPolyline& p, size_t from, size_t to) {
+  if (p.points.size() == 1) return dist(x, p.points[0]);
+  double m = kInf;
+  for (size_t j = from; j < to; ++j) m = std::min(m, dist_to_segment(x, p.points[j], p.points[j + 1]));
+  return m;
+}
+
+// Largest sampled distance from a's samples to b (each an upper bound of
+// the true nearest distance; exact where it matters).
+double directed_gap(const TipPolyline& a, const TipPolyline& b, double resolution, double limit) {
+  constexpr size_t kWindow = 6;
+  const size_t nb = b.points.size() > 1 ? b.points.size() - 1 : 1;
+  double worst = 0;
+  auto sample = [&](const Vec3& x, double t) {
+    const size_t j = segment_of(b, t);
+    const size_t lo = j > kWindow ? j - kWindow : 0, hi = std::min(nb, j + kWindow + 1);
+    double d = dist_to_polyline(x, b, lo, hi);
+    if (d + 0.5 * resolution > limit) d = dist_to_polyline(x, b, 0, nb);
+    worst = std::max(worst, d);
+  };
+  for (size_t i = 0; i + 1 < a.points.size(); ++i) {
+    const Vec3 &P = a.points[i], &Q = a.points[i + 1];
+    const size_t steps = std::max<size_t>(1, static_cast<size_t>(std::ceil(dist(P, Q) / resolution)));
+    for (size_t s = 0; s < steps; ++s) {
+      const double f = double(s) / double(steps);
+      sample(lerp(P, Q, f), a.params[i] + f * (a.params[i + 1] - a.params[i]));
+    }
+  }
+  sample(a.points.back(), a.params.back());
+  return worst;
+}
+
+}  // namespace
+
+double polyline_gap_bound(const TipPolyline& a, const TipPolyline& b, double resolution, double limit) {
+  return std::max(directed_gap(a, b, resolution, limit), directed_gap(b, a, resolution, limit)) + 0.5 * resolution;
+}
+
+namespace {
+
+// Tool tip at surface parameters (t along the pass, c across).
+struct TipField {
+  const SurfaceGeometry& s;
+  char dir;
+  double r;
+  Vec3 at(double t, double c) const {
+    const double u = dir == 'u' ? t : c, v = dir == 'u' ? c : t;
+    if (r == 0) return evaluate(s, u, v);
+    const PatchDerivs d = evaluate_derivs(s, u, v);
+    const Vec3 n = cross(d.su, d.sv) * s.orientation;
+    const double l = norm(n);
+    return l > 0 ? d.p + (n / l - kZ) * r : d.p;
+  }
+};
+
+// Estimated distance from pass c0 to pass c1 (both ways): at each sample
+// along the pass, the distance from one tip curve to the other's tangent
+// line at the same parameter, or to its end point where the foot of the
+// perpendicular falls beyond the end. Accurate to second order in the
+// stepover; the verification on polylines makes the result rigorous.
+struct GapEstimator {
+  TipField f;
+  std::vector<double> ts;
+
+  double one_way(const Vec3& x, double t, double c) const {
+    const double h = 1e-6;
+    const double ta = std::max(0.0, t - h), tb = std::min(1.0, t + h);
+    const Vec3 y = f.at(t, c), tan = (f.at(tb, c) - f.at(ta, c)) / (tb - ta);
+    const double sp = norm(tan);
+    const Vec3 D = x - y;
+    if (!(sp > 0)) return norm(D);
+    const Vec3 e = tan / sp;
+    const double along = dot(D, e);
+    const double foot = t + along / sp;
+    if (foot < 0 || foot > 1) return dist(x, f.at(std::clamp(foot, 0.0, 1.0), c));
+    return norm(D - e * along);
+  }
+  double gap(double c0, double c1) const {
+    double g = 0;
+    for (double t : ts) {
+      g = std::max(g, one_way(f.at(t, c0), t, c1));
+      g = std::max(g, one_way(f.at(t, c1), t, c0));
+    }
+    return g;
+  }
+};
+
+std::vector<double> along_samples(const SurfaceGeometry& s, char dir) {
+  constexpr int n = 96;
+  std::vector<double> ts;
+  for (int i = 0; i <= n; ++i) ts.push_back(double(i) / n);
+  const auto& br = dir == 'u' ? s.grid.ubreaks : s.grid.vbreaks;
+  ts.insert(ts.end(), br.begin(), br.end());
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+  return ts;
+}
+
+void check_options(const PassOptions& o) {
+  if (!(o.stepover >= 4 * o.tolerance))
+    throw InputError("toolpath.stepover", "toolpath.stepover",
+                     "expected a stepover of at least 4 times the tolerance (" + fmt_num(4 * o.tolerance) +
+                         "), found " + fmt_num(o.stepover) +
+                         ": each pass may stray from the surface by the tolerance, which the spacing must absorb");
+  if (o.direction != 'u' && o.direction != 'v') throw std::logic_error("pass direction must be u or v");
+}
+
+Pass make_pass(const SurfaceGeometry& s, const PassOptions& o, double at) {
+  Pass p;
+  p.at = at;
+  p.curve = iso_curve(s, o.direction, at, o.tool_radius > 0);
+  p.poly = flatten_tip(p.curve, o.tool_radius, {o.tolerance, o.decimals});
+  return p;
+}
+
+double target_gap(const PassOptions& o) { return 0.97 * (o.stepover - 2 * o.tolerance); }
+double resolution_of(const PassOptions& o) { return o.stepover / 40; }
+
+// Flattens the passes at `ats`, then verifies every neighbouring pair,
+// inserting a pass midway where the bound exceeds the stepover.
+PassPlan build_and_verify(const SurfaceGeometry& s, const PassOptions& o, const std::vector<double>& ats,
+                          bool allow_insert) {
+  PassPlan plan;
+  for (double c : ats) plan.passes.push_back(make_pass(s, o, c));
+  const double res = resolution_of(o);
+  for (size_t i = 0; i + 1 < plan.passes.size();) {
+    const double g = polyline_gap_bound(plan.passes[i].poly, plan.passes[i + 1].poly, res, o.stepover);
+    if (g <= o.stepover) {
+      plan.gap_bound = std::max(plan.gap_bound, g);
+      ++i;
+      continue;
+    }
+    if (!allow_insert) {
+      plan.gap_bound = kInf;
+      return plan;
+    }
+    const double a = plan.passes[i].at, b = plan.passes[i + 1].at;
+    if (b - a < 1e-9)
+      throw InputError("toolpath.stepover", "toolpath.stepover",
+                       "neighbouring passes near " + std::string(1, o.direction == 'u' ? 'v' : 'u') + " = " +
+                           fmt_num(a) + " stay " + fmt_num(g) + " apart however close their parameters are: "
+                           "the tool path jumps there (a crease under a ball-end tool?); use a larger stepover or a "
+                           "smaller tool_radius");
+    plan.passes.insert(plan.passes.begin() + static_cast<std::ptrdiff_t>(i) + 1, make_pass(s, o, 0.5 * (a + b)));
+    ++plan.refined;
+  }
+  for (const auto& p : plan.passes) plan.bound = std::max(plan.bound, p.poly.bound);
+  return plan;
+}
+
+}  // namespace
+
+PassPlan plan_passes(const SurfaceGeometry& s, const PassOptions& o) {
+  check_options(o);
+  const GapEstimator est{{s, o.direction, o.tool_radius}, along_samples(s, o.direction)};
+  const double target = target_gap(o);
+  std::vector<double> ats{0};
+  double c = 0, step = 1.0 / 64;
+  while (c < 1) {
+    // The gap grows about linearly with the step: secant steps, then
+    // bisection, to within 2 % of the largest step that fits.
+    double lo = 0, hi = kInf, s_try = std::min(step, 1 - c);
+    for (int iter = 0; iter < 60; ++iter) {
+      const bool last = s_try >= 1 - c;
+      const double g = est.gap(c, last ? 1.0 : c + s_try);
+      if (g <= target) {
+        lo = s_try;
+        if (last || lo >= 0.98 * hi) break;
+        double nx = g > 0 ? s_try * std::min(0.99 * target / g, 4.0) : 4 * s_try;
+        if (nx >= hi) nx = 0.5 * (lo + hi);
+        s_try = std::min(nx, 1 - c);
+      } else {
+        hi = s_try;
+        if (lo > 0 && lo >= 0.98 * hi) break;
+        double nx = s_try * std::clamp(0.99 * target / g, 0.1, 0.9);
+        if (nx <= lo) nx = 0.5 * (lo + hi);
+        s_try = nx;
+      }
+      if (lo == 0 && s_try < 1e-9) break;
+    }
+    if (lo == 0) lo = std::min(s_try, 1 - c);  // the verification decides
+    c = c + lo >= 1 - 1e-12 ? 1.0 : c + lo;
+    ats.push_back(c);
+    step = lo;
+  }
+  return build_and_verify(s, o, ats, true);
+}
+
+PassPlan plan_uniform_passes(const SurfaceGeometry& s, const PassOptions& o) {
+  check_options(o);
+  const GapEstimator est{{s, o.direction, o.tool_radius}, along_samples(s, o.direction)};
+  const double target = target_gap(o);
+  auto fits = [&](size_t n) {  // n intervals
+    for (size_t k = 0; k < n; ++k)
+      if (est.gap(double(k) / double(n), double(k + 1) / double(n)) > target) return false;
+    return true;
+  };
+  // Smallest interval count whose estimated gaps all fit (doubling, then
+  // bisection), then the smallest that also verifies on the polylines.
+  size_t hi = 1;
+  while (!fits(hi) && hi < (1u << 20)) hi *= 2;
+  size_t lo = hi / 2;
+  while (hi - lo > 1) {
+    const size_t mid = (lo + hi) / 2;
+    (fits(mid) ? hi : lo) = mid;
+  }
+  for (size_t n = hi;; n += std::max<size_t>(1, n / 50)) {
+    std::vector<double> ats;
+    for (size_t k = 0; k <= n; ++k) ats.push_back(double(k) / double(n));
+    PassPlan p = build_and_verify(s, o, ats, false);
+    if (std::isfinite(p.gap_bound)) return p;
+  }
+}
+
+std::vector<GougeSpan> find_gouges(const SurfaceGeometry& s, const SurfaceCurve& c, double radius, int samples) {
+  std::vector<GougeSpan> out;
+  if (!(radius > 0)) return out;
+  struct Probe {
+    bool bad;
+    double k;  // concave curvature
+    bool under;
+  };
+  auto probe = [&](double t) {
+    const auto [u, v] = uv_at(c, t);
+    const Curvatures k = principal_curvatures(s, u, v);
+    const bool under = unit_normal(s, u, v).z < 0;
+    // An undefined normal is left to the flattener, which names it.
+    return Probe{k.defined && (k.k_max * radius > 1 || under), k.k_max, under};
+  };
+  auto edge = [&](double good, double bad) {  // bisection to 1e-9
+    while (std::abs(bad - good) > 1e-9) {
+      const double m = 0.5 * (good + bad);
+      (probe(m).bad ? bad : good) = m;
+    }
+    return bad;
+  };
+  const int n = std::max(samples, 2);
+  Probe prev = probe(0);
+  GougeSpan cur;
+  bool open = false;
+  auto worst = [&](double t, const Probe& p) {
+    if (!open || (p.under && !cur.undercut) || (!cur.undercut && p.k > 1 / std::max(cur.curvature_radius, 1e-300))) {
+      const auto [u, v] = uv_at(c, t);
+      cur.worst_t = t, cur.worst_u = u, cur.worst_v = v;
+      cur.undercut = p.under;
+      cur.curvature_radius = p.under ? 0 : 1 / p.k;
+    }
+  };
+  if (prev.bad) {
+    cur = GougeSpan{};
+    worst(0, prev);
+    open = true;
+    cur.t0 = 0;
+  }
+  for (int i = 1; i <= n; ++i) {
+    const double t = double(i) / n, tp = double(i - 1) / n;
+    const Probe p = probe(t);
+    if (p.bad && !open) {
+      cur = GougeSpan{};
+      cur.t0 = edge(tp, t);
+      worst(t, p);
+      open = true;
+    } else if (p.bad) {
+      worst(t, p);
+    } else if (open) {
+      cur.t1 = edge(t, tp);
+      out.push_back(cur);
+      open = false;
+    }
+    prev = p;
+  }
+  if (open) {
+    cur.t1 = 1;
+    out.push_back(cur);
+  }
+  return out;
+}
+
+}  // namespace bezcam
