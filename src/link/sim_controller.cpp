@@ -227,14 +227,17 @@ Reject SimController::apply_chunk_locked(ConnId c, std::uint32_t session, std::u
   return Reject::none;
 }
 
-Reject SimController::chunk_locked(ConnId c, std::span<const std::uint16_t> regs) {
+Reject SimController::chunk_locked(ConnId c, std::span<const std::uint16_t> regs, bool corrupt) {
   if (regs.size() <= reg::chunk_header) return Reject::bad_length;
   const std::uint32_t session = get_u32(&regs[0]), seq = get_u32(&regs[2]), crc = get_u32(&regs[5]);
   const std::uint16_t len = regs[4];
   if (len == 0 || len > kMaxChunkBytes || regs.size() != reg::chunk_header + (len + 1u) / 2u) return Reject::bad_length;
-  const std::string payload = unpack_text(regs.subspan(reg::chunk_header), len, false);
+  std::string payload = unpack_text(regs.subspan(reg::chunk_header), len, false);
   if (crc32(payload) != crc) return Reject::bad_chunk_crc;
   if (payload.find('\0') != std::string::npos) return Reject::nul_byte;
+  if (corrupt && seq == ack_seq_ + 1)
+    if (const auto d = payload.find_first_of("0123456789"); d != std::string::npos)
+      payload[d] = payload[d] == '0' ? '1' : static_cast<char>(payload[d] - 1);
   return apply_chunk_locked(c, session, seq, payload, crc);
 }
 
@@ -365,7 +368,7 @@ FrameReply SimController::handle_frame(ConnId c, std::span<const std::uint8_t> a
       out.drop = true;
       return Reject::none;
     }
-    const Reject r = chunk_locked(c, v);
+    const Reject r = chunk_locked(c, v, fires(cfg_.corrupt_chunk));
     if (fires(cfg_.drop_after_chunk)) out.drop = true;
     return r;
   };

@@ -55,7 +55,8 @@ CLI::App* add(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   s->add_option("--fault", o.faults,
                 "fault injection for tests: drop-before:N or drop-after:N drops the connection at the N-th chunk "
-                "write, before or after applying it (repeatable)");
+                "write, before or after applying it; corrupt:N alters a digit of the N-th chunk once it is "
+                "accepted (repeatable)");
   s->add_option("--session-base", o.session_base, "first session id (tests and documentation; default random)");
   s->add_flag("-q,--quiet", o.quiet, "print nothing but the listening line and errors");
   return s;
@@ -92,8 +93,8 @@ std::vector<std::uint64_t> parse_faults(const std::string& kind) {
   for (const auto& f : o.faults) {
     const auto colon = f.find(':');
     const std::string k = f.substr(0, colon);
-    if (k != "drop-before" && k != "drop-after")
-      throw InputError("sim.fault", f, "expected drop-before:N or drop-after:N");
+    if (k != "drop-before" && k != "drop-after" && k != "corrupt")
+      throw InputError("sim.fault", f, "expected drop-before:N, drop-after:N or corrupt:N");
     std::uint64_t n = 0;
     try {
       n = std::stoull(colon == std::string::npos ? "" : f.substr(colon + 1));
@@ -161,6 +162,7 @@ int run() {
   cfg.first_session = o.session_base;
   cfg.drop_before_chunk = parse_faults("drop-before");
   cfg.drop_after_chunk = parse_faults("drop-after");
+  cfg.corrupt_chunk = parse_faults("corrupt");
   std::shared_ptr<FileSink> sink;
   if (!o.trace.empty()) {
     sink = std::make_shared<FileSink>(o.trace);

@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -152,17 +153,38 @@ struct Run {
   std::string out, err;
 };
 
-/// Runs the bezcam executable with `args` and waits for it.
-inline Run run_bezcam(const std::vector<std::string>& args, const TempDir& dir) {
+/// Runs a program (absolute path first) and waits for it.
+inline Run run_command(const std::vector<std::string>& argv, const TempDir& dir) {
   static int counter = 0;
-  std::vector<std::string> argv{BEZCAM_EXE};
-  argv.insert(argv.end(), args.begin(), args.end());
   Child c(argv, dir / ("stderr-" + std::to_string(++counter) + ".txt"));
   Run r;
   r.out = c.read_rest();
   r.status = c.wait();
   r.err = c.stderr_text();
   return r;
+}
+
+/// Runs the bezcam executable with `args` and waits for it.
+inline Run run_bezcam(const std::vector<std::string>& args, const TempDir& dir) {
+  std::vector<std::string> argv{BEZCAM_EXE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run_command(argv, dir);
+}
+
+/// The absolute path of a program on PATH, or "" when it is not installed.
+inline std::string find_on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::string all = path ? path : "/usr/bin:/bin";
+  std::size_t i = 0;
+  while (i <= all.size()) {
+    const auto j = all.find(':', i);
+    const std::string d = all.substr(i, j == std::string::npos ? std::string::npos : j - i);
+    const auto p = std::filesystem::path(d.empty() ? "." : d) / name;
+    if (::access(p.c_str(), X_OK) == 0) return p.string();
+    if (j == std::string::npos) break;
+    i = j + 1;
+  }
+  return {};
 }
 
 /// `bezcam simulate --listen 127.0.0.1:PORT` as a child process; the port

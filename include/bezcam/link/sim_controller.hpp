@@ -63,6 +63,10 @@ struct ControllerConfig {
   /// drop, before the chunk is applied or after it is applied but before
   /// the reply is sent. Each number fires once.
   std::vector<std::uint64_t> drop_before_chunk, drop_after_chunk;
+  /// Fault injection: the N-th chunk write, once validated, has its first
+  /// digit changed before it is stored, as faulty memory would: the chunk
+  /// is acknowledged, and only the whole-program CRC-32 can catch it.
+  std::vector<std::uint64_t> corrupt_chunk;
   /// Where the trace goes (may be empty).
   TraceSink trace;
   /// Test hook: every program line as the executor takes it, in order.
@@ -122,7 +126,7 @@ class SimController {
  private:
   struct Pending;  // an alarm waiting for the executor to trace it
   Reject command_locked(ConnId c, std::span<const std::uint16_t> regs);
-  Reject chunk_locked(ConnId c, std::span<const std::uint16_t> regs);
+  Reject chunk_locked(ConnId c, std::span<const std::uint16_t> regs, bool corrupt);
   Reject apply_chunk_locked(ConnId c, std::uint32_t session, std::uint32_t seq, std::string_view payload,
                             std::uint32_t crc);
   void open_locked(ConnId c, std::uint32_t token, std::uint32_t total);
