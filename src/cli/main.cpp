@@ -79,8 +79,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // Usage errors read like every other refusal: one sentence, then how
+    // to find the right form.
+    std::cerr << "bezcam: error: " << e.what()
+              << "\n  (bezcam --help lists the commands, bezcam COMMAND --help their options)\n";
+    return 2;
   }
   try {
     for (auto* c : cmds)

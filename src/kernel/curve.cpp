@@ -94,11 +94,16 @@ CurveGeometry make_path(std::vector<CurveSegment> segs, std::vector<Bezier> piec
   }
   if (closed) {
     const Continuity c = joint_continuity(pieces.back(), pieces.front(), tol);
-    if (c == Continuity::none)
+    if (c == Continuity::none) {
+      const Vec3 a = pieces.back().back(), b = pieces.front().front();
+      auto pt = [&](const Vec3& p) {
+        return "(" + fmt_num(p.x) + ", " + fmt_num(p.y) + (dim == 3 ? ", " + fmt_num(p.z) : std::string()) + ")";
+      };
       throw InputError("path.not-closed", "closed",
-                       "the path is marked closed but its last segment ends " +
-                           fmt_num(dist(pieces.back().back(), pieces.front().front())) +
-                           " away from the start of segments[0]");
+                       "the path is marked closed but its last segment ends at " + pt(a) + ", " +
+                           fmt_num(dist(a, b)) + " away from the start of segments[0] at " + pt(b) +
+                           "; make them meet, or set \"closed\": false");
+    }
     g.joints.push_back(c);
   }
   g.segments = std::move(segs);

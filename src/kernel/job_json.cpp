@@ -50,8 +50,7 @@ const json& JsonCtx::require(const json& obj, const std::string& path, const cha
   auto it = obj.find(key);
   if (it == obj.end())
     fail(path.empty() ? key : path + "." + key, "job.missing",
-         std::string("the required key \"") + key + "\" is missing" + (path.empty() ? "" : " from " + path) +
-             "; add it");
+         std::string("the required key \"") + key + "\" is missing; add it");
   return *it;
 }
 double JsonCtx::number(const json& v, const std::string& path) const {
@@ -300,6 +299,9 @@ Job parse_job(std::string_view text, const std::string& source) {
   }
   if (!doc.is_object()) ctx.expected("(top level)", "a JSON object", doc);
   ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities"});
+  if (!doc.contains("bezcam"))
+    ctx.fail("bezcam", "job.missing",
+             "the file does not say its format version; add \"bezcam\": 1 at the top level (is this a bezcam job?)");
   const json& ver = ctx.require(doc, "", "bezcam");
   job.version = ctx.integer(ver, "bezcam");
   if (job.version != 1)
