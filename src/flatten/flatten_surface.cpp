@@ -307,22 +307,34 @@ double polyline_gap_bound(const TipPolyline& a, const TipPolyline& b, double res
 
 namespace {
 
-// Tool tip at surface parameters (t along the pass, c across).
+// Tool tip at surface parameters (t along the pass, c across), with its
+// derivative along the pass: T' = P' + r N', N' = (n' - N <N, n'>) / |n|,
+// n' = Suu x Sv + Su x Suv along u (Suv x Sv + Su x Svv along v).
+struct TipSample {
+  Vec3 p, d;
+};
 struct TipField {
   const SurfaceGeometry& s;
   char dir;
   double r;
-  Vec3 at(double t, double c) const {
+  TipSample at(double t, double c) const {
     const double u = dir == 'u' ? t : c, v = dir == 'u' ? c : t;
-    if (r == 0) return evaluate(s, u, v);
     const PatchDerivs d = evaluate_derivs(s, u, v);
+    const Vec3 pt = dir == 'u' ? d.su : d.sv;
+    if (r == 0) return {d.p, pt};
     const Vec3 n = cross(d.su, d.sv) * s.orientation;
     const double l = norm(n);
-    return l > 0 ? d.p + (n / l - kZ) * r : d.p;
+    if (!(l > 0)) return {d.p, pt};
+    const Vec3 N = n / l;
+    const Vec3 nt =
+        (dir == 'u' ? cross(d.suu, d.sv) + cross(d.su, d.suv) : cross(d.suv, d.sv) + cross(d.su, d.svv)) *
+        s.orientation;
+    const Vec3 Nt = (nt - N * dot(N, nt)) / l;
+    return {d.p + (N - kZ) * r, pt + Nt * r};
   }
 };
 
-// Estimated distance from pass c0 to pass c1 (both ways): at each sample
+// Estimated distance between passes c0 and c1 (both ways): at each sample
 // along the pass, the distance from one tip curve to the other's tangent
 // line at the same parameter, or to its end point where the foot of the
 // perpendicular falls beyond the end. Accurate to second order in the
@@ -331,24 +343,31 @@ struct GapEstimator {
   TipField f;
   std::vector<double> ts;
 
-  double one_way(const Vec3& x, double t, double c) const {
-    const double h = 1e-6;
-    const double ta = std::max(0.0, t - h), tb = std::min(1.0, t + h);
-    const Vec3 y = f.at(t, c), tan = (f.at(tb, c) - f.at(ta, c)) / (tb - ta);
-    const double sp = norm(tan);
-    const Vec3 D = x - y;
+  struct Row {
+    double c = 0;
+    std::vector<TipSample> s;
+  };
+  Row row(double c) const {
+    Row r{c, {}};
+    r.s.reserve(ts.size());
+    for (double t : ts) r.s.push_back(f.at(t, c));
+    return r;
+  }
+  double one_way(const Vec3& x, const TipSample& y, double t, double c) const {
+    const double sp = norm(y.d);
+    const Vec3 D = x - y.p;
     if (!(sp > 0)) return norm(D);
-    const Vec3 e = tan / sp;
+    const Vec3 e = y.d / sp;
     const double along = dot(D, e);
     const double foot = t + along / sp;
-    if (foot < 0 || foot > 1) return dist(x, f.at(std::clamp(foot, 0.0, 1.0), c));
+    if (foot < 0 || foot > 1) return dist(x, f.at(std::clamp(foot, 0.0, 1.0), c).p);
     return norm(D - e * along);
   }
-  double gap(double c0, double c1) const {
+  double gap(const Row& a, const Row& b) const {
     double g = 0;
-    for (double t : ts) {
-      g = std::max(g, one_way(f.at(t, c0), t, c1));
-      g = std::max(g, one_way(f.at(t, c1), t, c0));
+    for (size_t i = 0; i < ts.size(); ++i) {
+      g = std::max(g, one_way(a.s[i].p, b.s[i], ts[i], b.c));
+      g = std::max(g, one_way(b.s[i].p, a.s[i], ts[i], a.c));
     }
     return g;
   }
@@ -425,15 +444,19 @@ PassPlan plan_passes(const SurfaceGeometry& s, const PassOptions& o) {
   const double target = target_gap(o);
   std::vector<double> ats{0};
   double c = 0, step = 1.0 / 64;
+  GapEstimator::Row here = est.row(0);
   while (c < 1) {
     // The gap grows about linearly with the step: secant steps, then
     // bisection, to within 2 % of the largest step that fits.
     double lo = 0, hi = kInf, s_try = std::min(step, 1 - c);
+    GapEstimator::Row best;
     for (int iter = 0; iter < 60; ++iter) {
       const bool last = s_try >= 1 - c;
-      const double g = est.gap(c, last ? 1.0 : c + s_try);
+      GapEstimator::Row next = est.row(last ? 1.0 : c + s_try);
+      const double g = est.gap(here, next);
       if (g <= target) {
         lo = s_try;
+        best = std::move(next);
         if (last || lo >= 0.98 * hi) break;
         double nx = g > 0 ? s_try * std::min(0.99 * target / g, 4.0) : 4 * s_try;
         if (nx >= hi) nx = 0.5 * (lo + hi);
@@ -447,9 +470,14 @@ PassPlan plan_passes(const SurfaceGeometry& s, const PassOptions& o) {
       }
       if (lo == 0 && s_try < 1e-9) break;
     }
-    if (lo == 0) lo = std::min(s_try, 1 - c);  // the verification decides
+    if (lo == 0) {  // nothing fits however small: let the verification decide
+      lo = std::min(s_try, 1 - c);
+      best = est.row(c + lo >= 1 - 1e-12 ? 1.0 : c + lo);
+    }
     c = c + lo >= 1 - 1e-12 ? 1.0 : c + lo;
+    best.c = c;
     ats.push_back(c);
+    here = std::move(best);
     step = lo;
   }
   return build_and_verify(s, o, ats, true);
@@ -460,8 +488,12 @@ PassPlan plan_uniform_passes(const SurfaceGeometry& s, const PassOptions& o) {
   const GapEstimator est{{s, o.direction, o.tool_radius}, along_samples(s, o.direction)};
   const double target = target_gap(o);
   auto fits = [&](size_t n) {  // n intervals
-    for (size_t k = 0; k < n; ++k)
-      if (est.gap(double(k) / double(n), double(k + 1) / double(n)) > target) return false;
+    GapEstimator::Row a = est.row(0);
+    for (size_t k = 0; k < n; ++k) {
+      GapEstimator::Row b = est.row(double(k + 1) / double(n));
+      if (est.gap(a, b) > target) return false;
+      a = std::move(b);
+    }
     return true;
   };
   // Smallest interval count whose estimated gaps all fit (doubling, then

@@ -122,9 +122,106 @@ BezierPatch BezierPatch::make(const std::vector<std::vector<Vec3>>& rows,
   return s;
 }
 
+namespace {
+
+// Degrees up to this are evaluated in reused scratch (no allocation: the
+// pass planner evaluates the surface millions of times).
+constexpr int kStackDegree = 160;
+
+// Value and first and second derivatives at t of the Bernstein polynomial
+// c[0..n], by de Casteljau down to three points q0, q1, q2: f'' = n (n-1)
+// (q0 - 2 q1 + q2), then r0, r1 one level lower: f' = n (r1 - r0).
+// `work` holds n + 1 values.
+void bern_eval2(const Hom* c, int n, double t, Hom* work, Hom& f, Hom& d1, Hom& d2) {
+  if (n == 0) {
+    f = c[0];
+    d1 = d2 = Hom(Vec3{}, 0);
+    return;
+  }
+  std::copy(c, c + n + 1, work);
+  const double s = 1 - t;
+  for (int r = 1; r <= n - 2; ++r)
+    for (int i = 0; i + r <= n; ++i) work[i] = work[i] * s + work[i + 1] * t;
+  Hom r0 = work[0], r1 = work[1];
+  d2 = Hom(Vec3{}, 0);
+  if (n >= 2) {
+    d2 = (work[0] - work[1] * 2 + work[2]) * double(n * (n - 1));
+    r0 = work[0] * s + work[1] * t;
+    r1 = work[1] * s + work[2] * t;
+  }
+  d1 = (r1 - r0) * double(n);
+  f = r0 * s + r1 * t;
+}
+
+// Homogeneous value and partials up to order 2: H, Hu, Hv, Huu, Huv, Hvv.
+struct HomDerivs {
+  Hom h, hu, hv, huu, huv, hvv;
+};
+
+HomDerivs hom_derivs(const BezierPatch& s, double u, double v) {
+  HomDerivs r;
+  if (s.nu > kStackDegree || s.nv > kStackDegree) {
+    // Rare (very high degrees): the allocating form.
+    const Grid<Hom> g = hom_grid(s);
+    Poly<Hom> c0(s.nu + 1), c1(s.nu + 1), c2(s.nu + 1);
+    for (int i = 0; i <= s.nu; ++i) {
+      const Poly<Hom> row = g.row(i);
+      const Poly<Hom> r1 = detail::bern_derivative(row);
+      c0[i] = detail::bern_eval(row, v);
+      c1[i] = detail::bern_eval(r1, v);
+      c2[i] = detail::bern_eval(detail::bern_derivative(r1), v);
+    }
+    const Poly<Hom> c0u = detail::bern_derivative(c0);
+    r.h = detail::bern_eval(c0, u);
+    r.hu = detail::bern_eval(c0u, u);
+    r.huu = detail::bern_eval(detail::bern_derivative(c0u), u);
+    r.hv = detail::bern_eval(c1, u);
+    r.huv = detail::bern_eval(detail::bern_derivative(c1), u);
+    r.hvv = detail::bern_eval(c2, u);
+    return r;
+  }
+  // Scratch reused across calls (a stack array of Hom would be zeroed on
+  // every call, which costs more than the evaluation).
+  thread_local std::vector<Hom> scratch;
+  scratch.resize(size_t(5) * (kStackDegree + 1));
+  Hom* row = scratch.data();
+  Hom* work = row + (kStackDegree + 1);
+  Hom* c0 = work + (kStackDegree + 1);
+  Hom* c1 = c0 + (kStackDegree + 1);
+  Hom* c2 = c1 + (kStackDegree + 1);
+  for (int i = 0; i <= s.nu; ++i) {
+    for (int j = 0; j <= s.nv; ++j) row[j] = Hom::of(s.at(i, j), s.weight(i, j));
+    bern_eval2(row, s.nv, v, work, c0[i], c1[i], c2[i]);
+  }
+  Hom unused;
+  bern_eval2(c0, s.nu, u, work, r.h, r.hu, r.huu);
+  bern_eval2(c1, s.nu, u, work, r.hv, r.huv, unused);
+  bern_eval2(c2, s.nu, u, work, r.hvv, unused, unused);
+  return r;
+}
+
+}  // namespace
+
 Vec3 evaluate(const BezierPatch& s, double u, double v) {
-  const Grid<Hom> g = hom_grid(s);
-  return detail::bern_eval(detail::grid_at(g, 'v', v), u).point();
+  if (s.nu > kStackDegree || s.nv > kStackDegree) {
+    const Grid<Hom> g = hom_grid(s);
+    return detail::bern_eval(detail::grid_at(g, 'v', v), u).point();
+  }
+  // de Casteljau on every row at v, then on the column of results at u.
+  thread_local std::vector<Hom> scratch;
+  scratch.resize(size_t(2) * (kStackDegree + 1));
+  Hom* col = scratch.data();
+  Hom* row = col + (kStackDegree + 1);
+  const double su = 1 - u, sv = 1 - v;
+  for (int i = 0; i <= s.nu; ++i) {
+    for (int j = 0; j <= s.nv; ++j) row[j] = Hom::of(s.at(i, j), s.weight(i, j));
+    for (int r = 1; r <= s.nv; ++r)
+      for (int j = 0; j + r <= s.nv; ++j) row[j] = row[j] * sv + row[j + 1] * v;
+    col[i] = row[0];
+  }
+  for (int r = 1; r <= s.nu; ++r)
+    for (int i = 0; i + r <= s.nu; ++i) col[i] = col[i] * su + col[i + 1] * u;
+  return col[0].point();
 }
 
 Vec3 evaluate_bernstein(const BezierPatch& s, double u, double v) {
@@ -140,21 +237,8 @@ Vec3 evaluate_bernstein(const BezierPatch& s, double u, double v) {
 }
 
 PatchDerivs evaluate_derivs(const BezierPatch& s, double u, double v) {
-  // Homogeneous value and v-derivatives of every row at v, then the
-  // resulting column polynomials and their u-derivatives at u.
-  const Grid<Hom> g = hom_grid(s);
-  Poly<Hom> c0(s.nu + 1), c1(s.nu + 1), c2(s.nu + 1);
-  for (int i = 0; i <= s.nu; ++i) {
-    const Poly<Hom> r = g.row(i);
-    const Poly<Hom> r1 = detail::bern_derivative(r);
-    c0[i] = detail::bern_eval(r, v);
-    c1[i] = detail::bern_eval(r1, v);
-    c2[i] = detail::bern_eval(detail::bern_derivative(r1), v);
-  }
-  const Poly<Hom> c0u = detail::bern_derivative(c0);
-  const Hom h = detail::bern_eval(c0, u), hu = detail::bern_eval(c0u, u),
-            huu = detail::bern_eval(detail::bern_derivative(c0u), u), hv = detail::bern_eval(c1, u),
-            huv = detail::bern_eval(detail::bern_derivative(c1), u), hvv = detail::bern_eval(c2, u);
+  const HomDerivs r = hom_derivs(s, u, v);
+  const Hom &h = r.h, &hu = r.hu, &hv = r.hv, &huu = r.huu, &huv = r.huv, &hvv = r.hvv;
   // Quotient rule for S = X / w (X = w S): X' = w' S + w S', and so on.
   PatchDerivs d;
   const double w = h.w;
