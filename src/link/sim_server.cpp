@@ -123,22 +123,16 @@ void ModbusServer::run() {
     timeval tv{static_cast<time_t>(snd / 1000), static_cast<suseconds_t>((snd % 1000) * 1000)};
     ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
     std::unique_lock lk(mu_);
-    std::size_t open = 0;
-    for (const auto& c : conns_) open += c.closed ? 0 : 1;
-    if (open >= static_cast<std::size_t>(cfg_.max_connections)) {
+    auto open_count = [&] {
+      std::size_t live = 0;
+      for (const auto& c : conns_) live += c.closed ? 0 : 1;
+      return live;
+    };
+    if (open_count() >= static_cast<std::size_t>(cfg_.max_connections)) {
       evict_one_locked();
-      // Wait for the evicted thread outside the lock (it takes mu_ to
-      // release its socket), so that at most max_connections are served.
-      lk.unlock();
-      for (;;) {
-        std::unique_lock lk2(mu_);
-        std::size_t still = 0;
-        for (const auto& c : conns_) still += c.closed ? 0 : 1;
-        if (still < static_cast<std::size_t>(cfg_.max_connections) || stopping_) break;
-        lk2.unlock();
-        std::this_thread::yield();
-      }
-      lk.lock();
+      // The evicted thread takes mu_ to release its socket: wait for it, so
+      // that never more than max_connections are served at once.
+      closed_cv_.wait(lk, [&] { return stopping_ || open_count() < static_cast<std::size_t>(cfg_.max_connections); });
       reap_locked(false);
     }
     auto& c = conns_.emplace_back();
@@ -202,6 +196,7 @@ void ModbusServer::serve(Conn* c) {
     ::close(c->fd);
     c->closed = true;
   }
+  closed_cv_.notify_all();
   ctl_.connection_closed(c->id);
 }
 

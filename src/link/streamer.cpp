@@ -165,7 +165,12 @@ class Sender {
         st_ = write_read(reg::command, cmd);
         break;
       } catch (const ModbusException& e) {
-        st_ = read_status();
+        try {
+          st_ = read_status();
+        } catch (const IoError& io) {
+          reconnect_raw(io.message());
+          continue;  // ask again
+        }
         if (st_.last_reject == Reject::busy)
           throw ControllerError("link.busy", to_.str(),
                                 "the controller is busy with another sender's program (session " + hex32(st_.session) +
@@ -251,12 +256,14 @@ class Sender {
         check_stall();
         report();
       } catch (const ModbusException& e) {
-        st_ = read_status();
-        if (st_.last_reject == Reject::buffer_full) continue;  // raced with the executor: wait
-        if (st_.last_reject == Reject::not_owner && st_.session == session_) {
-          resume();  // our connection was replaced or evicted: take the transfer back
-        } else {
-          refused(e, "chunk " + std::to_string(seq + 1));
+        try {
+          st_ = read_status();
+          if (st_.last_reject == Reject::not_owner && st_.session == session_)
+            resume();  // our connection was replaced or evicted: take the transfer back
+          else if (st_.last_reject != Reject::buffer_full)  // buffer-full: raced with the executor, wait
+            refused(e, "chunk " + std::to_string(seq + 1));
+        } catch (const IoError& io) {
+          reconnect(io.message());
         }
         sent = st_.ack_bytes;
         seq = st_.ack_seq;
@@ -276,7 +283,12 @@ class Sender {
         st_ = write_read(reg::command, cmd);
         break;
       } catch (const ModbusException& e) {
-        refused(e, "COMMIT (length and CRC-32 check)");
+        try {
+          refused(e, "COMMIT (length and CRC-32 check)");
+        } catch (const IoError& io) {
+          reconnect(io.message());
+          if (st_.state == State::finishing || st_.state == State::done) break;
+        }
       } catch (const IoError& e) {
         reconnect(e.message());
         if (st_.state == State::finishing || st_.state == State::done) break;  // it got through

@@ -121,6 +121,13 @@ TEST(StreamCommand, ExitCodesAndProgressLines) {
   EXPECT_NE(r.err.find("the controller confirmed CRC-32"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\r'), std::string::npos);  // no bar redraws off a terminal
 
+  // On a terminal (forced here): one bar redrawn in place, then a newline.
+  r = test::run_bezcam({"stream", (dir / "good.nc").string(), "--to", to, "--progress", "bar"}, dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("\rstream [####################] 100%"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("lines"), std::string::npos);
+  EXPECT_NE(r.err.find("done, 511 executed"), std::string::npos) << r.err;
+
   // The trace of the streamed program equals `simulate --program` on the file.
   auto local = test::run_bezcam({"simulate", "--program", (dir / "good.nc").string(), "--trace",
                                  (dir / "local.trace").string()},

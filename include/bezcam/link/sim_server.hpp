@@ -12,6 +12,7 @@
 /// Modbus ADU (260 bytes).
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <list>
 #include <mutex>
@@ -72,6 +73,7 @@ class ModbusServer {
   int wake_[2] = {-1, -1};
   std::uint16_t port_ = 0;
   std::mutex mu_;
+  std::condition_variable closed_cv_;  // a connection released its socket
   std::list<Conn> conns_;
   std::atomic<bool> stopping_{false};
   std::thread bg_;
