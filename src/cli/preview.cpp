@@ -1,12 +1,19 @@
 // bezcam preview JOB.json -o OUT.svg [--machine NAME|FILE] [--tolerance T]
 //                [--output lines|arcs|nurbs] [--no-control] [--deviation]
+// bezcam preview [JOB.json] --program FILE.nc -o OUT.svg [--machine ...]
 // Draws the true curves, their control polygons and the tool path that
-// `convert` would write with the same options (top view, plus an isometric
-// view for 3D work), as a self-contained SVG file.
+// `convert` would write with the same options, or the motion of any G-code
+// program the reader understands (top view, plus an isometric view for 3D
+// work), as a self-contained SVG file.
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
 #include "bezcam/error.hpp"
 #include "bezcam/post/convert.hpp"
+#include "bezcam/post/gcode_reader.hpp"
 #include "bezcam/post/preview_svg.hpp"
 #include "bezcam/post/report.hpp"
 #include "command.hpp"
@@ -16,21 +23,24 @@ namespace bezcam::cli {
 namespace {
 
 struct Options {
-  std::string job, out, machine, output = "lines";
+  std::string job, out, machine, output = "lines", program;
   double tolerance = 0, width = 1200;
   bool no_control = false, deviation = false, quiet = false;
 } o;
+CLI::App* sub = nullptr;
 
 CLI::App* add(CLI::App& app) {
-  auto* s = app.add_subcommand("preview", "Draw a job's curves, control polygons and tool path as an SVG file "
+  auto* s = sub = app.add_subcommand("preview", "Draw a job's curves, control polygons and tool path as an SVG file "
                                           "(top view; isometric view too for 3D work).");
-  s->add_option("JOB", o.job, "job file (JSON, curve-file format version 1)")->required();
+  s->add_option("JOB", o.job, "job file (JSON, curve-file format version 1); optional with --program");
+  s->add_option("--program", o.program,
+                "draw this G-code program instead of building one (with JOB: against the job's curves)");
   s->add_option("-o,--output-file", o.out, "SVG file to write; written whole or not at all")->required();
   s->add_option("--machine", o.machine, "machine profile: a name in machines/ or a .json file "
                                         "(default: the job's \"machine\", else generic)");
   s->add_option("--tolerance", o.tolerance, "chord tolerance in the job's units, overriding the job's")
       ->check(CLI::PositiveNumber);
-  s->add_option("--output", o.output, "cutting moves, as for convert: lines, arcs or nurbs")
+  s->add_option("--output", o.output, "cutting moves, as for convert: lines, arcs or nurbs (not with --program)")
       ->check(CLI::IsMember({"lines", "arcs", "nurbs"}));
   s->add_flag("--no-control", o.no_control, "leave out control polygons and control points");
   s->add_flag("--deviation", o.deviation,
@@ -40,11 +50,99 @@ CLI::App* add(CLI::App& app) {
   return s;
 }
 
+std::string read_text(const std::string& path, const char* what) {
+  if (std::filesystem::is_directory(path)) throw IoError("io.read", path, std::string("is a directory, not a ") + what);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("io.read", path, std::string("cannot open the ") + what + " for reading");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw IoError("io.read", path, std::string("error while reading the ") + what);
+  return ss.str();
+}
+
+// --program: the motion of a G-code file, read line by line with progress
+// in bytes; a refusal names the file and the line.
+int run_program() {
+  if (sub->count("--output") > 0)
+    throw InputError("usage.preview", "--output",
+                     "--output chooses the moves of a program built from the job; it does not apply to --program, "
+                     "which is drawn as written (leave one of them out)");
+  std::optional<Job> job;
+  if (!o.job.empty()) job = load_job(o.job);
+  const std::string text = read_text(o.program, "G-code file");
+  // The machine, when named, is checked by lint (its findings are shown,
+  // not fatal: seeing the path helps to fix it) and gives the rapid rate.
+  const bool named = !o.machine.empty() || (job && job->machine);
+  const MachineProfile m = job ? resolve_profile(*job, o.machine) : load_machine_profile(o.machine.empty() ? "generic" : o.machine);
+  Progress progress("preview", "bytes", text.size(), progress_config(o.quiet));
+  GcodeInterpreter reader;
+  PreviewInput in;
+  int line_no = 0;
+  size_t pos = 0;
+  try {
+    while (pos < text.size()) {
+      size_t end = text.find('\n', pos);
+      if (end == std::string::npos) end = text.size();
+      for (auto& b : reader.feed_line(std::string_view(text).substr(pos, end - pos), ++line_no))
+        in.motion.push_back({std::move(b), -1});
+      pos = end + 1;
+      progress.set(std::min(pos, text.size()));
+    }
+    for (auto& b : reader.finish()) in.motion.push_back({std::move(b), -1});
+  } catch (const InputError& e) {
+    throw InputError(e.id(), o.program + ": " + e.where(),
+                     e.message() + "; the preview draws only programs the reader accepts (bezcam lint lists every "
+                                   "finding)");
+  }
+  progress.finish();
+  in.units = reader.state().units;
+  const char* u = to_string(in.units);
+  if (job && job->units != in.units)
+    throw InputError("preview.units", o.program,
+                     std::string("the program is in ") + u + " (" + (in.units == Units::mm ? "G21" : "G20") +
+                         ") but the job " + job->source + " is in " + to_string(job->units) +
+                         "; compare a program with the job it was made from");
+  in.job = job ? &*job : nullptr;
+  in.tolerance = o.tolerance > 0 ? o.tolerance : (job ? job->tolerance : 0);
+  in.title = "bezcam preview: " + o.program + (job ? " against " + job->source : std::string());
+  const double rapid_rate = m.max_feed_mm_min / mm_per_unit(in.units);
+  const MotionTotals t = motion_totals(in.motion, rapid_rate);
+  in.notes.push_back(std::to_string(line_no) + " lines, " + std::to_string(t.feed_blocks) + " feed and " +
+                     std::to_string(t.rapid_blocks) + " rapid blocks; " + format_significant(t.feed_length, 6) + " " +
+                     u + " at feed, " + format_significant(t.rapid_length, 6) + " " + u + " rapid; about " +
+                     format_duration(t.time_s()) + " (rapids at " + format_significant(rapid_rate, 6) + " " + u +
+                     "/min, the maximum feed of machine " + m.name + ")");
+  if (named) {
+    const auto findings = lint_gcode(text, m);
+    for (size_t i = 0; i < findings.size() && i < 5; ++i)
+      in.warnings.push_back("lint for machine " + m.name + ": line " + std::to_string(findings[i].line) + ": " +
+                            findings[i].message);
+    if (findings.size() > 5) in.warnings.push_back("... and " + std::to_string(findings.size() - 5) + " more findings");
+    if (!findings.empty() && !o.quiet)
+      std::cerr << "bezcam: warning: " << o.program << " has " << findings.size() << " lint finding"
+                << (findings.size() == 1 ? "" : "s") << " for machine " << m.name << " (bezcam lint lists them)\n";
+  }
+  PreviewOptions popt;
+  popt.control = !o.no_control;
+  popt.deviation = o.deviation;
+  popt.width = o.width;
+  const std::string svg = preview_svg(in, popt);
+  write_output_atomically(o.out, svg);
+  if (!o.quiet)
+    std::cerr << "bezcam: wrote " << o.out << ": " << in.motion.size() << " motion blocks from " << o.program
+              << (o.deviation ? ", coloured by deviation" : "") << "\n";
+  return 0;
+}
+
 int run() {
+  if (!o.program.empty()) return run_program();
+  if (o.job.empty())
+    throw InputError("usage.preview", "JOB", "give a job file to draw, or a G-code program with --program FILE.nc");
   const Job job = load_job(o.job);
   const MachineProfile m = resolve_profile(job, o.machine);
   const size_t n = job.entities.size();
-  Progress progress("preview", "entities", o.deviation ? 2 * n : n, progress_config(o.quiet));
+  const ProgressConfig pcfg = progress_config(o.quiet);
+  Progress progress("preview", "entities", n, pcfg);
 
   // The same program convert would build, from the same options.
   ConvertOptions copt;
@@ -52,6 +150,7 @@ int run() {
   if (o.tolerance > 0) copt.tolerance = o.tolerance;
   copt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
   const Program p = build_program(job, m, copt);
+  progress.finish();
 
   PreviewInput in;
   in.job = &job;
@@ -79,7 +178,6 @@ int run() {
   } catch (const InputError& e) {
     in.warnings.push_back(std::string("convert would refuse this program: ") + e.what());
     if (!o.quiet) {
-      progress.clear();
       std::cerr << "bezcam: warning: convert would refuse this program: " << e.what() << "\n";
     }
   }
@@ -89,10 +187,14 @@ int run() {
   popt.control = !o.no_control;
   popt.deviation = o.deviation;
   popt.width = o.width;
-  popt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(n + done, label); };
+  // Measuring deviations is a second pass over the entities.
+  ProgressConfig mcfg = pcfg;
+  mcfg.delay_s = std::max(0.0, pcfg.delay_s - progress.elapsed());
+  Progress measuring("preview: measuring deviation", "entities", o.deviation ? n : 0, mcfg);
+  popt.on_entity = [&](size_t done, size_t, const std::string& label) { measuring.set(done, label); };
   const std::string svg = preview_svg(in, popt);
+  measuring.finish();
   write_output_atomically(o.out, svg);
-  progress.finish();
   if (!o.quiet) {
     for (const auto& w : job.warnings) std::cerr << "bezcam: warning: " << w << "\n";
     std::cerr << "bezcam: wrote " << o.out << ": " << n << (n == 1 ? " entity, " : " entities, ") << blocks

@@ -119,6 +119,8 @@ void Progress::set_total(std::uint64_t total) {
   total_ = total;
 }
 
+double Progress::elapsed() const { return now() - start_; }
+
 bool Progress::shown() const {
   std::lock_guard lock(mu_);
   return shown_;

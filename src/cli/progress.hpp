@@ -79,6 +79,10 @@ class Progress {
   void finish();
   /// Whether anything has been shown so far.
   bool shown() const;
+  /// Seconds since construction (a following phase can pass
+  /// `delay_s - elapsed()` on so that the whole command, not each phase,
+  /// gets the quiet first second).
+  double elapsed() const;
 
   /// The text of the bar line or the plain line for the current state (what
   /// update() prints), for tests.

@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <optional>
-
-#include "bezcam/kernel/nurbs_curve.hpp"
 
 namespace bezcam {
 
@@ -13,9 +10,9 @@ namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-// A G17 arc as start angle, signed sweep and radii at both ends (printed
-// ends may sit at slightly different radii; the tool follows a spiral
-// between them, as LinuxCNC does).
+// A G17 arc's start angle, signed sweep and radii at both ends, for its
+// length and its sampling (printed ends may sit at slightly different
+// radii; the tool follows a spiral between them, as evaluate_block does).
 struct ArcParams {
   double a0, sweep, r0, r1;
 };
@@ -32,44 +29,19 @@ ArcParams arc_params(const MotionBlock& b) {
   return {a0, ccw ? sweep : -sweep, r0, r1};
 }
 
-Vec3 arc_point(const MotionBlock& b, const ArcParams& a, double t) {
-  if (t <= 0) return b.from;
-  if (t >= 1) return b.to;
-  const double ang = a.a0 + t * a.sweep, r = a.r0 + t * (a.r1 - a.r0);
-  return {b.center.x + r * std::cos(ang), b.center.y + r * std::sin(ang), b.from.z + t * (b.to.z - b.from.z)};
-}
-
 bool is_arc(const MotionBlock& b) { return b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw; }
 
-// A block prepared for evaluation at t in [0, 1]: lines by interpolation,
-// arcs by angle, Bézier blocks by de Casteljau and NURBS blocks by A4.1
-// over their knot domain (the kernel's curves, so the preview and the report
-// evaluate exactly what the kernel and the reader define).
+// A block for evaluation at t in [0, 1]: the reader's evaluate_block()
+// (lines, arcs by angle, Bézier blocks, NURBS over their knot domain), so
+// that the report and the preview follow exactly the motion the reader and
+// the simulated controller define.
 class BlockCurve {
  public:
-  explicit BlockCurve(const MotionBlock& b) : b_(b) {
-    if (is_arc(b)) {
-      arc_ = arc_params(b);
-    } else if (b.kind == BlockKind::bezier) {
-      bez_ = Bezier::make(b.ctrl, {}, 3);
-    } else if (b.kind == BlockKind::nurbs) {
-      nurbs_ = NurbsCurve::make(b.order - 1, b.ctrl, b.knots, b.weights, 3);
-    }
-  }
-  Vec3 at(double t) const {
-    if (t <= 0) return b_.from;
-    if (t >= 1) return b_.to;
-    if (is_arc(b_)) return arc_point(b_, arc_, t);
-    if (bez_) return evaluate(*bez_, t);
-    if (nurbs_) return evaluate(*nurbs_, nurbs_->domain_start() + t * (nurbs_->domain_end() - nurbs_->domain_start()));
-    return lerp(b_.from, b_.to, t);
-  }
+  explicit BlockCurve(const MotionBlock& b) : b_(b) {}
+  Vec3 at(double t) const { return evaluate_block(b_, t); }
 
  private:
   const MotionBlock& b_;
-  ArcParams arc_{};
-  std::optional<Bezier> bez_;
-  std::optional<NurbsCurve> nurbs_;
 };
 
 // Adaptive sampling of a curved block on [t0, t1]: split while the curve's
@@ -88,6 +60,18 @@ void refine(const BlockCurve& c, double t0, const Vec3& p0, double t1, const Vec
   }
   refine(c, t0, p0, tm, pm, chord, depth + 1, out);
   refine(c, tm, pm, t1, p1, chord, depth + 1, out);
+}
+
+// Arc length on [t0, t1] from chord sums with Richardson extrapolation: a
+// chord misses the arc by O(h^3) and two half chords by a quarter of that,
+// so (4 halves - whole) / 3 is accurate to O(h^5); intervals are halved
+// until the two chord sums agree to `eps`.
+double arc_length(const BlockCurve& c, double t0, const Vec3& p0, double t1, const Vec3& p1, double eps, int depth) {
+  const double tm = 0.5 * (t0 + t1);
+  const Vec3 pm = c.at(tm);
+  const double whole = dist(p0, p1), halves = dist(p0, pm) + dist(pm, p1);
+  if (halves - whole <= eps || depth >= 30) return halves + (halves - whole) / 3;
+  return arc_length(c, t0, p0, tm, pm, eps / 2, depth + 1) + arc_length(c, tm, pm, t1, p1, eps / 2, depth + 1);
 }
 
 double box_size(const MotionBlock& b) {
@@ -151,9 +135,16 @@ double block_length(const MotionBlock& b) {
     }
     default: break;
   }
-  const auto pts = sample_block(b, 1e-7 * box_size(b));
+  // 16 uniform spans first, so that a loop cannot hide between samples.
+  const BlockCurve c(b);
+  const double eps = 1e-9 * box_size(b);
   double len = 0;
-  for (size_t i = 1; i < pts.size(); ++i) len += dist(pts[i - 1], pts[i]);
+  Vec3 prev = b.from;
+  for (int i = 1; i <= 16; ++i) {
+    const Vec3 p = c.at(i / 16.0);
+    len += arc_length(c, (i - 1) / 16.0, prev, i / 16.0, p, eps / 16, 0);
+    prev = p;
+  }
   return len;
 }
 
@@ -167,7 +158,7 @@ std::vector<Vec3> sample_block(const MotionBlock& b, double chord) {
     const double r = std::max({a.r0, a.r1, 1e-300});
     const double dtheta = 2 * std::acos(std::clamp(1 - chord / r, -1.0, 1.0));
     const int n = std::clamp(static_cast<int>(std::ceil(std::abs(a.sweep) / std::max(dtheta, 1e-9))), 1, 1 << 20);
-    for (int i = 1; i <= n; ++i) out.push_back(arc_point(b, a, double(i) / n));
+    for (int i = 1; i <= n; ++i) out.push_back(evaluate_block(b, double(i) / n));
     return out;
   }
   constexpr int kStart = 16;

@@ -25,8 +25,9 @@ struct ToolMotion {
 std::vector<ToolMotion> program_motion(const Program& p);
 
 /// Length of a block in program units: exact for lines and arcs (helical
-/// arcs included); NURBS and Bézier blocks by chord sums refined until the
-/// chords are within 1e-7 of the block's size of the curve.
+/// arcs included); NURBS and Bézier blocks (and arcs whose ends sit at
+/// different radii) by chord sums with Richardson extrapolation, halving
+/// until successive sums agree to 1e-9 of the block's size.
 double block_length(const MotionBlock& b);
 
 /// Points along a block from `from` to `to` (both included). Lines give their
