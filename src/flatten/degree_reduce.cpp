@@ -37,14 +37,18 @@ C4 split4(const Poly4& p, Poly4& left, Poly4& right) {
 
 double ratio_at(const C4& c) { return std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / c[3]; }
 
-// max |N_k| / min W_k: the hull bound of |N / W| on the node's interval.
+// max |N_k / W_k|: N / W is a rational Bézier curve with homogeneous control
+// points (N_k, W_k), W_k > 0, so it lies in the convex hull of the points
+// N_k / W_k (the convex hull property of rational curves with positive
+// weights), and its norm is at most theirs. Converges quadratically under
+// subdivision, like the control polygon.
 double hull_ratio(const Poly4& p) {
-  double nmax = 0, wmin = std::numeric_limits<double>::infinity();
+  double m = 0;
   for (const auto& c : p) {
-    nmax = std::max(nmax, std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
-    wmin = std::min(wmin, c[3]);
+    if (!(c[3] > 0)) return std::numeric_limits<double>::infinity();
+    m = std::max(m, ratio_at(c));
   }
-  return wmin > 0 ? nmax / wmin : std::numeric_limits<double>::infinity();
+  return m;
 }
 
 // Least-squares fit of degree `m` to b on [0,1] with the end constraints of

@@ -1,6 +1,7 @@
 #include "bezcam/post/gcode_writer.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "bezcam/post/number_format.hpp"
 
@@ -42,6 +43,7 @@ class Writer {
     line(comment("tolerance " + format_number(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
                  format_number(p_.max_measured, 6) + " " + u + ", proven bound " + format_number(p_.max_bound, 6) +
                  " " + u + ", rounding included"));
+    for (const auto& n : p_.notes) line(comment(n));
     line(std::string(p_.units == Units::mm ? "G21" : "G20") + " G90 G17");
     for (const Move& mv : p_.moves) move(mv);
     for (const auto& f : m_.footer) {
@@ -115,22 +117,93 @@ class Writer {
         break;
       }
       case MoveKind::arc_cw:
-      case MoveKind::arc_ccw: {
-        const Vec3 from = pos_;
-        const std::string g = motion(mv.kind == MoveKind::arc_cw ? m_.word_cw : m_.word_ccw);
-        // Arcs always print both end words (some controllers require them).
-        axis_[0].clear();
-        axis_[1].clear();
-        const std::string a = axes(mv.to, mv.axes);
-        line(join({g, a, "I" + num(mv.center.x - from.x), "J" + num(mv.center.y - from.y), feed(mv.feed)}));
-        motion_.clear();  // arcs are always written with their word
-        pos_ = mv.to;
-        break;
-      }
+      case MoveKind::arc_ccw: arc(mv); break;
       case MoveKind::nurbs:
+        if (m_.nurbs == NurbsDialect::fanuc) fanuc_block(mv);
+        else if (m_.nurbs == NurbsDialect::linuxcnc) g52_block(mv);
+        else throw std::logic_error("a NURBS move for a machine without a NURBS dialect");
+        break;
       case MoveKind::bezier:
-        throw std::logic_error("exact-curve moves need the NURBS writer");
+        if (m_.nurbs != NurbsDialect::linuxcnc) throw std::logic_error("a G5/G5.1 move for a machine without them");
+        g5(mv);
+        break;
     }
+  }
+
+  // Every digit, as the seeds' listing prints NURBS blocks (never "-0.000").
+  static std::string fixed(double v, int decimals) {
+    std::string s = format_number(v, decimals);
+    const size_t dot = s.find('.');
+    s.append(static_cast<size_t>(decimals) - (s.size() - dot - 1), '0');
+    return s;
+  }
+  void arrived(const Vec3& to) {
+    for (int a = 0; a < 3; ++a) axis_[a] = num(to[a]);
+    pos_ = to;
+  }
+
+  // G02/G03 in G17: both end words always (some controllers require them),
+  // the centre as I and J relative to the start (the active plane's words
+  // only: some controllers reject K in G17), Z only if it changes (which
+  // bezcam's arcs never do). The word is always printed.
+  void arc(const Move& mv) {
+    const Vec3 from = pos_;
+    const std::string g = mv.kind == MoveKind::arc_cw ? m_.word_cw : m_.word_ccw;
+    axis_[0].clear();
+    axis_[1].clear();
+    const std::string a = axes(mv.to, mv.axes);
+    line(join({g, a, "I" + num(mv.center.x - from.x), "J" + num(mv.center.y - from.y), feed(mv.feed)}));
+    motion_ = g;
+    for (int k = 0; k < 3; ++k)
+      if (mv.axes & (1u << k)) pos_[k] = mv.to[k];
+  }
+
+  // Fanuc-style block (gcode-dialects.md): start word, P rank and the first
+  // control point (the current position) with its knot and weight, one
+  // K X Y Z R block per further point, then the remaining knots alone.
+  void fanuc_block(const Move& mv) {
+    const bool fx = m_.nurbs_fixed_decimals;
+    auto coord = [&](double v) { return fx ? fixed(v, p_.decimals) : num(v); };
+    auto knot = [&](double k) {
+      return "K" + (fx ? fixed(k, m_.knot_decimals) : format_number(k, m_.knot_decimals));
+    };
+    auto point = [&](size_t i) {
+      const Vec3& p = mv.ctrl[i];
+      const double w = mv.weights.empty() ? 1.0 : mv.weights[i];
+      return join({knot(mv.knots[i]), "X" + coord(p.x), "Y" + coord(p.y), "Z" + coord(p.z),
+                   "R" + (fx ? fixed(w, m_.weight_decimals) : format_number(w, m_.weight_decimals))});
+    };
+    line(join({m_.nurbs_start_word, "P" + std::to_string(mv.order), point(0), feed(mv.feed)}));
+    for (size_t i = 1; i < mv.ctrl.size(); ++i) line(point(i));
+    for (size_t j = mv.ctrl.size(); j < mv.knots.size(); ++j) line(knot(mv.knots[j]));
+    motion_.clear();  // the next G00/G01/G02/G03 must say so: it ends the mode
+    arrived(mv.ctrl.back());
+  }
+
+  // LinuxCNC G5.2 ... G5.3: the current position is the first point; its
+  // weight and the order on the G5.2 line; X Y P per further point (P
+  // always: older versions do not default it to 1).
+  void g52_block(const Move& mv) {
+    auto w = [&](size_t i) { return "P" + format_number(mv.weights.empty() ? 1.0 : mv.weights[i], m_.weight_decimals); };
+    line(join({"G5.2", w(0), "L" + std::to_string(mv.order), feed(mv.feed)}));
+    for (size_t i = 1; i < mv.ctrl.size(); ++i)
+      line(join({"X" + num(mv.ctrl[i].x), "Y" + num(mv.ctrl[i].y), w(i)}));
+    line("G5.3");
+    motion_.clear();
+    arrived({mv.ctrl.back().x, mv.ctrl.back().y, pos_.z});
+  }
+
+  // LinuxCNC G5 (cubic: I J = P1 - P0, P Q = P2 - P3) and G5.1 (quadratic:
+  // I J = P1 - P0), X and Y always, Z never.
+  void g5(const Move& mv) {
+    const auto& c = mv.ctrl;
+    const Vec3& to = c.back();
+    std::string s = std::string(c.size() == 4 ? "G5" : "G5.1") + " X" + num(to.x) + " Y" + num(to.y) + " I" +
+                    num(c[1].x - c[0].x) + " J" + num(c[1].y - c[0].y);
+    if (c.size() == 4) s += " P" + num(c[2].x - c[3].x) + " Q" + num(c[2].y - c[3].y);
+    line(join({s, feed(mv.feed)}));
+    motion_.clear();
+    arrived({to.x, to.y, pos_.z});
   }
 
   const Program& p_;

@@ -104,6 +104,12 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
     if (auto s = r.opt(*v, "max_rank")) m.nurbs_max_rank = r.integer(*s, "nurbs.max_rank");
     if (auto s = r.opt(*v, "knot_decimals")) m.knot_decimals = r.integer(*s, "nurbs.knot_decimals");
     if (auto s = r.opt(*v, "weight_decimals")) m.weight_decimals = r.integer(*s, "nurbs.weight_decimals");
+    if (auto s = r.opt(*v, "fixed_decimals")) {
+      if (!s->is_boolean()) r.fail("nurbs.fixed_decimals", "expected true or false");
+      m.nurbs_fixed_decimals = s->get<bool>();
+    }
+    if (m.knot_decimals < 0 || m.knot_decimals > 9 || m.weight_decimals < 0 || m.weight_decimals > 9)
+      r.fail("nurbs", "expected knot_decimals and weight_decimals between 0 and 9");
     if (m.nurbs_max_rank < 2 || m.nurbs_max_rank > 4) r.fail("nurbs.max_rank", "expected a rank from 2 to 4");
   }
   if (auto v = r.opt(doc, "travel_mm")) {

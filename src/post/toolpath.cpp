@@ -190,10 +190,8 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
 
     switch (opt.output) {
       case OutputMode::lines: detail::emit_lines(ctx, r); break;
-      case OutputMode::arcs:
-      case OutputMode::nurbs:
-        throw InputError("usage.output", "--output",
-                         std::string("output mode \"") + to_string(opt.output) + "\" is not available in this build");
+      case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
+      case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
     }
     pos = p.moves.back().to;
     Move retract;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "bezcam/error.hpp"
 
@@ -80,6 +81,13 @@ void validate_program(const Program& p, const MachineProfile& m) {
     for (int a = 0; a < 3; ++a)
       if (mv.axes & (1u << a)) to[a] = mv.to[a];
     if (mv.kind == MoveKind::arc_cw || mv.kind == MoveKind::arc_ccw) {
+      if (!m.arcs)
+        throw InputError("program.arcs", where(mv), "machine \"" + m.name + "\" does not take arcs (\"arcs\": false)");
+      // The emitters keep printed arcs within the controller's radius check.
+      const double rs = std::hypot(pos.x - mv.center.x, pos.y - mv.center.y);
+      const double re = std::hypot(to.x - mv.center.x, to.y - mv.center.y);
+      if (std::abs(rs - re) > m.arc_tolerance_mm * k * (1 + 1e-9))
+        throw std::logic_error("internal check failed: an arc's radii differ by " + fmt_num(std::abs(rs - re)));
       b = arc_box(pos, mv);
       b.add(to);
     } else {

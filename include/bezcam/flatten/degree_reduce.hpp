@@ -18,9 +18,10 @@ namespace bezcam {
 /// polynomial or rational with positive weights). Method: a(t) - b(t) =
 /// N(t) / W(t) with N = A wb - B wa and W = wa wb (A, B the homogeneous
 /// numerators), all products of Bernstein polynomials computed exactly in
-/// the Bernstein basis of degree deg a + deg b; then |N / W| <= max |N_k| /
-/// min W_k on each sub-interval (convex hull; W_k > 0), refined by
-/// subdivision. Early exits as elsewhere: with `budget` >= 0 a result <=
+/// the Bernstein basis of degree deg a + deg b; N / W is then a rational
+/// Bézier curve with weights W_k > 0, inside the convex hull of its points
+/// N_k / W_k, so |N / W| <= max_k |N_k| / W_k on each sub-interval, refined
+/// by subdivision. Early exits as elsewhere: with `budget` >= 0 a result <=
 /// budget is proven and a result above it is a proven lower bound; with
 /// `budget` < 0 the bound is refined to within `resolution` or 0.1 %.
 double parametric_distance(const Bezier& a, const Bezier& b, double budget, double resolution = 0);

@@ -37,6 +37,10 @@ struct MachineProfile {
   std::string nurbs_start_word = "G06.2";
   int nurbs_max_rank = 4;
   int knot_decimals = 4, weight_decimals = 4;
+  /// NURBS block numbers printed with all their decimals (`K0.000000
+  /// X55.507 Y52.139 Z0.000 R1.000`, the seeds' listing) instead of with
+  /// trailing zeros trimmed (`K0. X55.507 ... R1.`).
+  bool nurbs_fixed_decimals = false;
   /// Travel in program coordinates, mm: {min, max} per axis.
   std::array<std::array<double, 2>, 3> travel_mm{{{-1e4, 1e4}, {-1e4, 1e4}, {-1e4, 1e4}}};
   double max_feed_mm_min = 1e5;

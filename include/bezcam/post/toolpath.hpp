@@ -77,6 +77,9 @@ struct Program {
   std::vector<Move> moves;
   std::vector<EntityReport> entities;
   std::vector<std::string> warnings;
+  /// Extra lines for the program's header comment (e.g. how an output mode
+  /// the machine lacks was replaced); each is also one of `warnings`.
+  std::vector<std::string> notes;
 };
 
 /// Builds the canonical program: header state, per entity a retract, rapid,

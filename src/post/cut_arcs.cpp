@@ -1,0 +1,88 @@
+// --output arcs: G02/G03 in G17 with I/J, G01 where no arc fits.
+#include <stdexcept>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/arc_fit.hpp"
+#include "bezcam/flatten/deviation.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+#include "cut_emitters.hpp"
+
+namespace bezcam::detail {
+
+namespace {
+
+// Chords of the drawn path used for measurement stay this close to it, as
+// a share of the tolerance (the measurement itself resolves 1e-3 of it).
+constexpr double kSampleShare = 1e-5;
+
+}  // namespace
+
+double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path,
+                            size_t& blocks) {
+  const int entity = static_cast<int>(c.entity.index);
+  Vec3 from = quantize(pieces.front().front(), c.decimals);
+  if (path.empty()) path.push_back(from);
+  auto push_line = [&](const Vec3& to) {
+    Move mv;
+    mv.kind = MoveKind::linear;
+    mv.to = cut_point(c, to);
+    mv.feed = c.params.feed;
+    mv.entity = entity;
+    c.program.moves.push_back(mv);
+    path.push_back(to);
+    ++blocks;
+  };
+  if (!c.machine.arcs) {
+    FlattenOptions fo{c.tolerance, c.decimals};
+    bool first = true;
+    return flatten_pieces(pieces, fo, [&](const FlatVertex& v) {
+      if (!first) push_line(v.point);
+      first = false;
+    });
+  }
+  ArcFitOptions ao;
+  ao.tolerance = c.tolerance;
+  ao.decimals = c.decimals;
+  // The controller's radius check is in its own units: the program's.
+  ao.radius_tolerance = c.machine.arc_tolerance_mm / mm_per_unit(c.job.units);
+  return fit_arcs(pieces, ao, [&](const FitMove& f) {
+    if (f.kind == FitKind::line) {
+      push_line(f.to);
+    } else {
+      Move mv;
+      mv.kind = f.kind == FitKind::arc_cw ? MoveKind::arc_cw : MoveKind::arc_ccw;
+      mv.to = cut_point(c, f.to);
+      mv.center = cut_point(c, f.center);
+      mv.feed = c.params.feed;
+      mv.entity = entity;
+      c.program.moves.push_back(mv);
+      const PrintedArc a{from, f.to, f.center, f.kind == FitKind::arc_ccw};
+      const auto pts = sample_arc(a, kSampleShare * c.tolerance);
+      path.insert(path.end(), pts.begin() + 1, pts.end());
+      ++blocks;
+    }
+    from = f.to;
+  });
+}
+
+void emit_arcs(CutContext& c, EntityReport& r) {
+  if (!c.machine.arcs)
+    throw InputError("usage.output", "--output",
+                     "machine profile \"" + c.machine.name +
+                         "\" does not take arcs (\"arcs\": false), so --output arcs cannot be honoured; use "
+                         "--output lines, or a profile that takes G02/G03");
+  const auto& pieces = c.entity.curve.pieces;
+  std::vector<Vec3> path;
+  r.blocks = 0;
+  r.bound = append_arcs_or_lines(c, pieces, path, r.blocks);
+  if (c.measure) {
+    r.measured = measure_deviation(pieces, path, c.tolerance).max();
+    // The sampled path lies within kSampleShare of the drawn one.
+    if (r.measured > c.tolerance * (1 + kSampleShare))
+      throw std::logic_error("internal check failed: " + r.label + " deviates by " + fmt_num(r.measured) +
+                             " beyond the tolerance " + fmt_num(c.tolerance));
+  }
+}
+
+}  // namespace bezcam::detail
