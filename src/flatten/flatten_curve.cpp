@@ -81,7 +81,13 @@ double overshoot(double a1, double a2, double L) {
   return o;
 }
 
-// Exact distance bound for the cubic A, Q1, Q2, B to the segment [A, B].
+// Returned by the closed forms when the curve leaves the chord's slab past
+// an end: the distance there is to an end point, not to the line, and the
+// caller switches to the hull bound below (rare: only near turnarounds).
+constexpr double kOvershoot = -1;
+
+// Exact distance of the cubic A, Q1, Q2, B to the segment [A, B] when it
+// stays within the chord's slab (kOvershoot otherwise).
 double cubic_chord_deviation(const Vec3& A, const Vec3& Q1, const Vec3& Q2, const Vec3& B) {
   const Vec3 ab = B - A;
   const double L = norm(ab);
@@ -107,8 +113,8 @@ double cubic_chord_deviation(const Vec3& A, const Vec3& Q1, const Vec3& Q2, cons
     const double m2 = bump_max(dot(p1, n2), dot(p2, n2));
     perp = std::sqrt(m1 * m1 + m2 * m2);
   }
-  const double o = overshoot(a1, a2, L);
-  return o == 0 ? perp : std::sqrt(perp * perp + o * o);
+  if (overshoot(a1, a2, L) > 0) return kOvershoot;
+  return perp;
 }
 
 // The same in the plane, without building a frame (the common case).
@@ -118,9 +124,8 @@ double cubic_chord_deviation_2d(const Vec3& A, const Vec3& Q1, const Vec3& Q2, c
   const double L2 = abx * abx + aby * aby;
   if (!(L2 > 1e-300)) return std::max(std::hypot(e1x, e1y), std::hypot(e2x, e2y));
   const double L = std::sqrt(L2), inv = 1 / L;
-  const double perp = bump_max((abx * e1y - aby * e1x) * inv, (abx * e2y - aby * e2x) * inv);
-  const double o = overshoot((abx * e1x + aby * e1y) * inv, (abx * e2x + aby * e2y) * inv, L);
-  return o == 0 ? perp : std::sqrt(perp * perp + o * o);
+  if (overshoot((abx * e1x + aby * e1y) * inv, (abx * e2x + aby * e2y) * inv, L) > 0) return kOvershoot;
+  return bump_max((abx * e1y - aby * e1x) * inv, (abx * e2y - aby * e2x) * inv);
 }
 
 // Rigorous bound for any (rational) piece by branch and bound on the convex
@@ -143,8 +148,8 @@ double hull_chord_deviation(const Bezier& sub, const Vec3& A, const Vec3& B, dou
   double lb = 0;
   for (int iter = 0; iter < 400; ++iter) {
     const Node& top = heap.top();
-    if (top.ub <= budget) return top.ub;           // certainly within
-    if (lb > budget) return lb;                     // certainly over
+    if (budget >= 0 && top.ub <= budget) return top.ub;  // certainly within
+    if (budget >= 0 && lb > budget) return lb;           // certainly over
     if (top.ub - lb <= 2e-3 * top.ub) return top.ub;  // known to 0.2 %
     Node n = heap.top();
     heap.pop();
@@ -198,7 +203,12 @@ struct Prepared {
     if (cubic) {
       const double h = (t1 - t0) / 3;
       const Vec3 Q1 = A + tangent(t0) * h, Q2 = B - tangent(t1) * h;
-      return planar ? cubic_chord_deviation_2d(A, Q1, Q2, B) : cubic_chord_deviation(A, Q1, Q2, B);
+      const double d = planar ? cubic_chord_deviation_2d(A, Q1, Q2, B) : cubic_chord_deviation(A, Q1, Q2, B);
+      if (d != kOvershoot) return d;
+      Bezier sub;
+      sub.dim = b->dim;
+      sub.points = {A, Q1, Q2, B};
+      return hull_chord_deviation(sub, A, B, budget);
     }
     return hull_chord_deviation(subcurve(*b, t0, t1), A, B, budget);
   }

@@ -1,0 +1,227 @@
+// The flattener's promise, checked by independent measurement: the printed
+// polyline (vertices rounded to the decimals) is within the tolerance of the
+// true curve, both ways, on hard cases, on random curves and on the shared
+// corpus; and it stays close to the greedy maximal-chord minimum.
+#include "bezcam/flatten/flatten_curve.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/deviation.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+
+using namespace bezcam;
+
+namespace {
+
+// Flattens, checks the endpoints and the rounding, and returns the
+// independently measured deviation.
+double flatten_and_measure(const std::vector<Bezier>& pieces, double tol, int decimals, size_t* count = nullptr) {
+  const FlattenResult r = flatten(pieces, {tol, decimals});
+  EXPECT_GE(r.points.size(), 2u);
+  EXPECT_EQ(r.points.front(), quantize(pieces.front().front(), decimals));
+  EXPECT_EQ(r.points.back(), quantize(pieces.back().back(), decimals));
+  for (const auto& p : r.points) EXPECT_EQ(p, quantize(p, decimals)) << "vertex not on the printed grid";
+  EXPECT_LE(r.bound, tol);
+  if (count) *count = r.points.size() - 1;
+  const double d = measure_deviation(pieces, r.points, tol).max();
+  EXPECT_LE(d, r.bound * (1 + 1e-9) + 1e-12) << "measured deviation above the proven bound";
+  return d;
+}
+
+Bezier bz(std::vector<Vec3> p, std::vector<double> w = {}, int dim = 2) { return Bezier::make(std::move(p), std::move(w), dim); }
+
+// Greedy maximal chords by bisection on the exact chord deviation.
+size_t greedy_count(const Bezier& b, double tol) {
+  size_t n = 0;
+  double t0 = 0;
+  while (t0 < 1) {
+    ++n;
+    if (chord_deviation(b, t0, 1) <= tol) break;
+    double lo = t0, hi = 1;
+    while (hi - lo > 1e-12) {
+      const double m = 0.5 * (lo + hi);
+      (chord_deviation(b, t0, m) <= tol ? lo : hi) = m;
+    }
+    t0 = std::max(lo, std::nextafter(t0, 2.0));
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST(ChordDeviation, ExactForCubicsAgainstBruteForce) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> c(-50, 50), tt(0, 1);
+  for (int i = 0; i < 300; ++i) {
+    const int dim = i % 3 == 0 ? 3 : 2;
+    const Bezier b = bz({{c(rng), c(rng), dim == 3 ? c(rng) : 0},
+                         {c(rng), c(rng), dim == 3 ? c(rng) : 0},
+                         {c(rng), c(rng), dim == 3 ? c(rng) : 0},
+                         {c(rng), c(rng), dim == 3 ? c(rng) : 0}},
+                        {}, dim);
+    double t0 = tt(rng), t1 = tt(rng);
+    if (t0 > t1) std::swap(t0, t1);
+    const Vec3 A = evaluate(b, t0), B = evaluate(b, t1);
+    double brute = 0;
+    bool inside_slab = true;  // the curve's projection stays on the chord
+    for (int k = 0; k <= 20000; ++k) {
+      const Vec3 p = evaluate(b, t0 + (t1 - t0) * k / 20000.0);
+      brute = std::max(brute, dist_to_segment(p, A, B));
+      const double s = dot(p - A, B - A) / dot(B - A, B - A);
+      inside_slab = inside_slab && s >= 0 && s <= 1;
+    }
+    const double exact = chord_deviation(b, t0, t1);
+    EXPECT_GE(exact, brute - 1e-9) << "the bound must never be below the truth";
+    if (dim == 2 && inside_slab) EXPECT_NEAR(exact, brute, 1e-6 * std::max(1.0, brute)) << "planar bound is exact";
+    else if (dim == 2) EXPECT_LE(exact, brute * 1.003 + 1e-9) << "hull bound past the chord's ends";
+    else EXPECT_LE(exact, 1.5 * brute + 1e-9) << "3D bound stays tight";
+  }
+}
+
+TEST(ChordDeviation, HullBoundForRationalAndHighDegreeIsSafeAndTight) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> c(-50, 50), w(0.3, 3);
+  for (int i = 0; i < 60; ++i) {
+    const int n = 2 + i % 8;
+    std::vector<Vec3> p;
+    std::vector<double> ws;
+    for (int k = 0; k <= n; ++k) p.push_back({c(rng), c(rng), c(rng)}), ws.push_back(w(rng));
+    const Bezier b = bz(p, i % 2 ? ws : std::vector<double>{}, 3);
+    const Vec3 A = evaluate(b, 0.2), B = evaluate(b, 0.45);
+    double brute = 0;
+    for (int k = 0; k <= 20000; ++k) brute = std::max(brute, dist_to_segment(evaluate(b, 0.2 + 0.25 * k / 20000.0), A, B));
+    const double bound = chord_deviation(b, 0.2, 0.45);
+    EXPECT_GE(bound, brute - 1e-9);
+    EXPECT_LE(bound, brute * 1.01 + 1e-9);
+  }
+}
+
+TEST(Flatten, HardCasesStayWithinTolerance) {
+  const double tol = 0.01;
+  const std::vector<std::pair<const char*, std::vector<Bezier>>> cases = {
+      {"cusp", {bz({{0, 0}, {2, 2}, {2, 0}, {0, 2}})}},
+      {"loop", {bz({{0, 0}, {30, 20}, {-10, 20}, {20, 0}})}},
+      {"two inflections", {bz({{0, 0}, {10, 10}, {20, -10}, {30, 0}})}},
+      {"collinear, runs forward and doubles back", {bz({{0, 0}, {30, 0}, {-10, 0}, {10, 0}})}},
+      {"collinear, overshoots both ends", {bz({{0, 0}, {-5, 0}, {15, 0}, {10, 0}})}},
+      {"coincident control points", {bz({{0, 0}, {0, 0}, {10, 5}, {10, 5}})}},
+      {"a single point", {bz({{3, 4}, {3, 4}, {3, 4}, {3, 4}})}},
+      {"closed", {bz({{0, 0}, {10, 10}, {-10, 10}, {0, 0}})}},
+      {"rational quarter circle", {bz({{10, 0}, {10, 10}, {0, 10}}, {1, std::sqrt(0.5), 1})}},
+      {"rational, strong weight", {bz({{0, 0}, {5, 10}, {10, 0}}, {1, 20, 1})}},
+      {"3D cube curve", {bz({{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {10, 10, 10}}, {}, 3)}},
+      {"3D twisted", {bz({{0, 0, 0}, {10, -5, 7}, {-3, 12, -4}, {8, 8, 8}}, {}, 3)}},
+      {"degree 20", {bz([] {
+         std::vector<Vec3> p;
+         for (int i = 0; i <= 20; ++i) p.push_back({double(i), (i % 2 ? 5.0 : -5.0)});
+         return p;
+       }())}},
+      {"line", {bz({{0, 0}, {100, 50}})}},
+      {"tiny (0.02 mm)", {bz({{0, 0}, {0.02, 0.01}, {0.01, 0.02}, {0, 0.015}})}},
+      {"huge (2 m)", {bz({{0, 0}, {2000, 1000}, {-500, 1500}, {1800, 2000}})}},
+  };
+  for (const auto& [name, pieces] : cases) {
+    SCOPED_TRACE(name);
+    EXPECT_LE(flatten_and_measure(pieces, tol, 3), tol);
+    EXPECT_LE(flatten_and_measure(pieces, tol, -1), tol);
+  }
+}
+
+TEST(Flatten, FarFromTheOriginAtAMicrometre) {
+  // 100 000 mm from the origin, 0.001 mm tolerance, 4 decimals.
+  const Bezier b = bz({{1e5, 1e5}, {1e5 + 30, 1e5 + 10}, {1e5 + 5, 1e5 + 40}, {1e5 + 50, 1e5 + 50}});
+  EXPECT_LE(flatten_and_measure({b}, 0.001, 4), 0.001);
+  EXPECT_LE(flatten_and_measure({b}, 0.001, 3), 0.001);  // rounding eats 70 % of it, still proven
+}
+
+TEST(Flatten, InchJob) {
+  const Bezier b = bz({{-3, 0}, {-3, 4}, {3, 4}, {3, 0}});
+  EXPECT_LE(flatten_and_measure({b}, 0.0005, 4), 0.0005);
+}
+
+TEST(Flatten, PathOfPiecesIsOnePolyline) {
+  const std::vector<Bezier> path = {bz({{0, 0}, {20, 10}, {30, 20}, {30, 30}}),
+                                    bz({{30, 30}, {30, 40}, {20, 45}, {10, 40}}),
+                                    bz({{10, 40}, {0, 35}, {-10, 20}, {0, 0}})};
+  size_t n = 0;
+  EXPECT_LE(flatten_and_measure(path, 0.01, 3, &n), 0.01);
+  EXPECT_GT(n, 3u);
+}
+
+TEST(Flatten, RandomCurvesOfEveryKindWithRounding) {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> c(-100, 100), w(0.2, 5);
+  for (int i = 0; i < 200; ++i) {
+    const int n = 1 + i % 7, dim = i % 4 == 0 ? 3 : 2;
+    const bool rational = i % 3 == 0;
+    std::vector<Vec3> p;
+    std::vector<double> ws;
+    for (int k = 0; k <= n; ++k) p.push_back({c(rng), c(rng), dim == 3 ? c(rng) : 0}), ws.push_back(w(rng));
+    const double tol = i % 2 ? 0.01 : 0.05;
+    EXPECT_LE(flatten_and_measure({bz(p, rational ? ws : std::vector<double>{}, dim)}, tol, 3), tol) << "curve " << i;
+  }
+}
+
+TEST(Flatten, CallbackAndCollectingFormsAgree) {
+  const Bezier b = bz({{0, 0}, {30, 20}, {-10, 20}, {20, 0}});
+  std::vector<FlatVertex> seen;
+  const double bound = flatten_pieces(std::span<const Bezier>(&b, 1), {0.01, 3}, [&](const FlatVertex& v) { seen.push_back(v); });
+  const FlattenResult r = flatten(b, {0.01, 3});
+  ASSERT_EQ(seen.size(), r.points.size());
+  for (size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i].point, r.points[i]);
+  EXPECT_EQ(bound, r.bound);
+  // Parameters increase and end exactly at 1.
+  for (size_t i = 1; i < seen.size(); ++i) EXPECT_GT(seen[i].t, seen[i - 1].t);
+  EXPECT_EQ(seen.back().t, 1.0);
+}
+
+TEST(Flatten, RefusesATolerancetheDecimalsCannotHonour) {
+  const Bezier b = bz({{0, 0}, {1, 0}, {2, 1}, {0, 1}});
+  try {
+    flatten(b, {0.0005, 3});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "flatten.tolerance-below-rounding");
+    EXPECT_NE(e.message().find("3 decimals"), std::string::npos) << e.message();
+  }
+  EXPECT_THROW(flatten(b, {0, 3}), InputError);
+  EXPECT_THROW(flatten(b, {-1, 3}), InputError);
+  // Below what double precision can honour at 1e9 mm.
+  EXPECT_THROW(flatten(bz({{1e9, 0}, {1e9 + 1, 1}, {1e9 + 2, 0}}), {1e-9, -1}), InputError);
+}
+
+TEST(Flatten, TheMeasurementIsNotVacuous) {
+  // The control polygon of the semicircle is far from the curve: the
+  // measurement must say so, in both directions.
+  const Bezier b = bz({{-3, 0}, {-3, 4}, {3, 4}, {3, 0}});
+  const Deviation d = measure_deviation(std::span<const Bezier>(&b, 1), b.points, 0.01);
+  EXPECT_GT(d.path_to_curve, 0.9);
+  // A chord skipping the top of the curve: curve -> path is 3.
+  const std::vector<Vec3> chord = {{-3, 0}, {3, 0}};
+  EXPECT_NEAR(measure_deviation(std::span<const Bezier>(&b, 1), chord, 0.01).curve_to_path, 3, 1e-9);
+}
+
+TEST(Flatten, NearTheGreedyMinimumOnTheSharedCorpus) {
+  std::ifstream in(std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json");
+  if (!in) GTEST_SKIP() << "shared corpus not found at " << BEZCAM_SHARED_DIR;
+  const auto doc = nlohmann::json::parse(in);
+  size_t ours = 0, greedy = 0, over = 0, n = 0;
+  for (size_t i = 0; i < doc["curves"].size(); i += 25) {
+    std::vector<Vec3> p;
+    for (const auto& q : doc["curves"][i]) p.push_back({q[0].get<double>(), q[1].get<double>()});
+    const Bezier b = bz(p);
+    const FlattenResult r = flatten(b, {0.01, -1});
+    ours += r.points.size() - 1;
+    greedy += greedy_count(b, 0.01);
+    over += measure_deviation(std::span<const Bezier>(&b, 1), r.points, 0.01).max() > 0.01;
+    ++n;
+  }
+  EXPECT_EQ(over, 0u);
+  EXPECT_LE(double(ours), 1.10 * greedy) << ours << " segments against a greedy minimum of " << greedy;
+  RecordProperty("ratio_to_greedy", std::to_string(double(ours) / greedy));
+}
