@@ -750,7 +750,15 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   };
   key("key-curve", line(kCurveColour, 1.2, ""), "true curve (surfaces: iso lines)");
   if (opt.control) key("key-control", line(kControlColour, 0.8, ""), "control polygon");
-  key("key-feed", line(opt.deviation ? deviation_colour(0, 1) : std::string(kFeedColour), 3, ""), "feed (cutting)");
+  if (opt.deviation) {
+    key("key-feed", line(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
+    bool unmeasured = false;
+    for (size_t i = 0; i < in.motion.size(); ++i)
+      unmeasured = unmeasured || (is_feed(in.motion[i].block) && !is_plunge(in.motion, i) && dev_of[i] < 0);
+    if (unmeasured) key("key-feed-unmeasured", line(kFeedColour, 3, ""), "feed, not measured (surface passes)");
+  } else {
+    key("key-feed", line(kFeedColour, 3, ""), "feed (cutting)");
+  }
   key("key-rapid", line(kRapidColour, 1, "6 4"), "rapid");
   key("key-start", "<circle cx=\"" + n3(lx + 6) + "\" cy=\"" + n3(ly) + "\" r=\"3.5\" fill=\"" + kCurveColour +
                        "\"/><path d=\"" + arrow_d({lx + 26, ly}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>",

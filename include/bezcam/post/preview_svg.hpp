@@ -5,8 +5,11 @@
 /// control polygons and points, the tool path with feeds solid and rapids
 /// dashed, entity ids, start points and directions, a scale bar and the
 /// units. A top view always; an isometric view as well when the job has 3D
-/// entities or the tool path cuts in 3D. Optionally every cutting block is
-/// coloured by its measured deviation from the true geometry.
+/// entities or the tool path cuts in 3D. Surfaces are drawn as iso-parameter
+/// lines (11 each way, borders heavier) with the control nets of their
+/// cells; a curve on a surface as its exact composition with the surface.
+/// Optionally every cutting block of a curve is coloured by its measured
+/// deviation from the true geometry (surface passes are drawn, not measured).
 ///
 /// Element classes (stable, for tests and for styling): `view` groups with
 /// ids `top-view` / `iso-view`; per entity a group `entity` (data-entity =
