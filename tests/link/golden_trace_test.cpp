@@ -107,3 +107,46 @@ INSTANTIATE_TEST_SUITE_P(Samples, GoldenTrace, ::testing::ValuesIn(sample_names(
                            std::replace_if(n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
                            return n;
                          });
+
+// Every dialect the profiles emit (arcs, Fanuc NURBS blocks, LinuxCNC G5 /
+// G5.2) runs on the controller with that profile, and streaming changes
+// nothing in the trace. No goldens here: the G-code of these modes belongs
+// to the post-processor's own golden tests.
+class DialectTrace : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(DialectTrace, StreamedEqualsDirect) {
+  const auto& [machine, output] = GetParam();
+  const MachineProfile profile = load_machine_profile(machine);
+  ConvertOptions opt;
+  opt.output = parse_output_mode(output);
+  bool sampled = false;  // a 3D polyline has no arc: look at the samples together
+  for (const std::string sample : {"curve-semicircle", "curve-rational-quarter-circle", "curve-cube-3d"}) {
+    SCOPED_TRACE(sample);
+    const Job job = load_job((fs::path(BEZCAM_SOURCE_DIR) / "samples" / (sample + ".json")).string());
+    const std::string program = convert(job, profile, opt).gcode;
+    Traced direct(profile);
+    const Status ds = direct.ctl->run_program(program);
+    EXPECT_EQ(ds.state, State::done) << direct.ctl->alarm_text();
+    Traced remote(profile);
+    ModbusServer server(*remote.ctl, ServerConfig{});
+    server.start();
+    stream_program(program, {"127.0.0.1", server.port()});
+    ASSERT_TRUE(remote.ctl->wait_final(std::chrono::seconds(10)));
+    server.stop();
+    const std::string trace = direct.get();
+    EXPECT_EQ(remote.get(), trace);
+    EXPECT_NE(trace.find("\ndone lines "), std::string::npos);
+    sampled = sampled || trace.find("\n  at ") != std::string::npos;
+  }
+  EXPECT_TRUE(sampled) << "no arc or curve was sampled in " << output << " mode";
+}
+
+INSTANTIATE_TEST_SUITE_P(Profiles, DialectTrace,
+                         ::testing::Values(std::make_tuple("generic", "arcs"), std::make_tuple("grbl", "arcs"),
+                                           std::make_tuple("fanuc", "nurbs"), std::make_tuple("fanuc-g063", "nurbs"),
+                                           std::make_tuple("linuxcnc", "nurbs"), std::make_tuple("linuxcnc", "arcs")),
+                         [](const auto& i) {
+                           std::string n = std::get<0>(i.param) + "_" + std::get<1>(i.param);
+                           std::replace(n.begin(), n.end(), '-', '_');
+                           return n;
+                         });
