@@ -7,6 +7,10 @@
 // measured independently (flatten/deviation.hpp).
 //
 // Usage: flatten_bench [CORPUS.json] [--quick]   (--quick: every 10th curve)
+//        flatten_bench [--quick] --only bezcam|cairo --tol T
+//          runs one method once over the corpus inside run_only(), for
+//          bench/flatten_instructions.sh (instruction counts under callgrind,
+//          which machine load does not change).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -124,14 +128,45 @@ std::vector<double> time_us_per_curve(const std::vector<Curve>& cs,
 
 }  // namespace
 
+// One method, once over the corpus (callgrind collects inside this only).
+__attribute__((noinline)) size_t run_only(const std::vector<Curve>& curves, const std::string& method, double tol) {
+  size_t segments = 0;
+  std::vector<Vec3> pts;
+  if (method == "bezcam") {
+    for (const auto& c : curves) {
+      pts.clear();
+      flatten_pieces(std::span<const Bezier>(&c.b, 1), {tol, -1}, [&](const FlatVertex& v) { pts.push_back(v.point); });
+      segments += pts.size() - 1;
+    }
+  }
+#ifdef BEZCAM_HAVE_CAIRO
+  if (method == "cairo") {
+    Cairo cairo;
+    for (const auto& c : curves) {
+      cairo.flatten(c.b, tol, pts);
+      segments += pts.size() - 1;
+    }
+  }
+#endif
+  return segments;
+}
+
 int main(int argc, char** argv) {
   std::string corpus = std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json";
   bool quick = false;
+  std::string only;
+  double only_tol = 0.01;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+    else if (!std::strcmp(argv[i], "--tol") && i + 1 < argc) only_tol = std::atof(argv[++i]);
     else corpus = argv[i];
   }
   const auto curves = load(corpus, quick);
+  if (!only.empty()) {
+    std::printf("%s tol %g: %zu segments\n", only.c_str(), only_tol, run_only(curves, only, only_tol));
+    return 0;
+  }
   std::printf("corpus: %s, %zu curves%s\n\n", corpus.c_str(), curves.size(), quick ? " (quick: every 10th)" : "");
   std::printf("| tol mm | method | segments | ratio to greedy | curves over tol | max dev / tol | us per curve | curves/s | speed vs cairo |\n");
   std::printf("|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
