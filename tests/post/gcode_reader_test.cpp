@@ -6,7 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -15,6 +20,7 @@
 #include "bezcam/kernel/nurbs_curve.hpp"
 
 using namespace bezcam;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -507,4 +513,91 @@ TEST(GcodeReader, ModalMotionGoesOnWithoutItsWord) {
   EXPECT_EQ(b[3].center, (Vec3{0, 0, 0}));
   EXPECT_EQ(b[5].kind, BlockKind::bezier);
   EXPECT_EQ(b[5].ctrl, (std::vector<Vec3>{{-10, -20, 0}, {-10, -15, 0}, {-10, -45, 0}, {-10, -40, 0}}));
+}
+
+// Interoperability: LinuxCNC's own interpreter (rs274, Debian package
+// linuxcnc-uspace, listed in .ci/packages) reads the same program. Its
+// canonical calls give arc ends, centres and directions (4 decimals) and
+// the control-point count of each G5 / G5.1 / G5.2 curve (NURBS_FEED(n, ...)),
+// which pins down the meaning of R arcs and of the G5.2 first line. Checked
+// with linuxcnc-uspace 2.9.0~pre1.
+TEST(GcodeReader, AgreesWithLinuxCncInterpreter) {
+  if (std::system("command -v rs274 >/dev/null 2>&1") != 0) GTEST_SKIP() << "rs274 (linuxcnc-uspace) not installed";
+  const std::string prog =
+      "G21 G90 G17\nF500\nG0 X10 Y0 Z0\n"
+      "G2 X0 Y10 R10\n"            // minor CW
+      "G2 X10 Y0 R-10\n"           // major CW
+      "G3 X-10 Y0 R10\n"           // R arcs the other way
+      "G3 X10 Y0 R-10\n"
+      "G3 X10 Y0 I-10 J0\n"        // full circle
+      "G2 X20 Y0 I5 J0 Z-1\n"      // helix half
+      "G1 X25 Y5\n"
+      "G5 I5 J0 P-5 Q0 X35 Y15\n"
+      "G5 P0 Q-3 X45 Y5\n"         // I, J continued
+      "G5.1 X55 Y5 I5 J5\n"
+      "G5.2 X65 Y15 P1 L4\nX75 Y15 P2\nX85 Y5 P1\nG5.3\n"  // first line with a point: 4 points
+      "G5.2 P1\nX95 Y15 P1\nX105 Y5 P1\nG5.3\n"             // first line without: 3 points
+      "G3 X105 Y5 I-5 J3\n"
+      "M2\n";
+  const fs::path dir = fs::temp_directory_path() / ("bezcam-rs274-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "p.ngc") << prog;
+  FILE* p = ::popen(("cd " + dir.string() + " && rs274 -g p.ngc 2>&1").c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  ::pclose(p);
+  fs::remove_all(dir);
+  // Their calls, in order.
+  struct Call {
+    std::string name;
+    std::vector<double> args;
+  };
+  std::vector<Call> calls;
+  std::istringstream ls(out);
+  for (std::string l; std::getline(ls, l);) {
+    for (const char* name : {"STRAIGHT_TRAVERSE(", "STRAIGHT_FEED(", "ARC_FEED(", "NURBS_FEED("}) {
+      const size_t at = l.find(name);
+      if (at == std::string::npos) continue;
+      Call c{std::string(name, std::strlen(name) - 1), {}};
+      std::string args = l.substr(at + std::strlen(name));
+      for (char& ch : args)
+        if (ch == ',' || ch == ')') ch = ' ';
+      std::istringstream as(args);
+      for (std::string tok; as >> tok;)
+        if (tok != "...") c.args.push_back(std::stod(tok));
+      calls.push_back(c);
+    }
+  }
+  const auto blocks = read_gcode(prog);
+  ASSERT_EQ(calls.size(), blocks.size()) << out;
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    const MotionBlock& b = blocks[i];
+    const Call& c = calls[i];
+    SCOPED_TRACE("block of line " + std::to_string(b.line) + ", " + c.name);
+    switch (b.kind) {
+      case BlockKind::rapid:
+      case BlockKind::linear:
+        EXPECT_EQ(c.name, b.kind == BlockKind::rapid ? "STRAIGHT_TRAVERSE" : "STRAIGHT_FEED");
+        EXPECT_NEAR(c.args[0], b.to.x, 5e-5);
+        EXPECT_NEAR(c.args[1], b.to.y, 5e-5);
+        EXPECT_NEAR(c.args[2], b.to.z, 5e-5);
+        break;
+      case BlockKind::arc_cw:
+      case BlockKind::arc_ccw:
+        ASSERT_EQ(c.name, "ARC_FEED");
+        EXPECT_NEAR(c.args[0], b.to.x, 5e-5);
+        EXPECT_NEAR(c.args[1], b.to.y, 5e-5);
+        EXPECT_NEAR(c.args[2], b.center.x, 5e-5);
+        EXPECT_NEAR(c.args[3], b.center.y, 5e-5);
+        EXPECT_EQ(c.args[4], b.kind == BlockKind::arc_ccw ? 1 : -1);
+        EXPECT_NEAR(c.args[5], b.to.z, 5e-5);
+        break;
+      case BlockKind::bezier:
+      case BlockKind::nurbs:
+        ASSERT_EQ(c.name, "NURBS_FEED");
+        EXPECT_EQ(c.args[0], static_cast<double>(b.ctrl.size()));
+        break;
+    }
+  }
 }
