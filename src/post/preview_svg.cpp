@@ -9,6 +9,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/kernel/surface.hpp"
 #include "bezcam/post/report.hpp"
 
@@ -39,11 +40,16 @@ constexpr int kIsoLines = 10;
 
 Shape entity_shape(const Entity& e) {
   Shape s;
+  // A point where one piece or segment starts as the previous one ended is
+  // drawn once.
+  auto add_points = [&](const std::vector<Vec3>& pts) {
+    for (size_t j = 0; j < pts.size(); ++j)
+      if (j > 0 || s.control_points.empty() || !(s.control_points.back() == pts[j])) s.control_points.push_back(pts[j]);
+  };
   auto add_polygons = [&](const std::vector<Bezier>& pieces) {
-    for (size_t i = 0; i < pieces.size(); ++i) {
-      s.polygons.push_back(pieces[i].points);
-      // A piece's first point is the previous piece's last.
-      for (size_t j = i == 0 ? 0 : 1; j < pieces[i].points.size(); ++j) s.control_points.push_back(pieces[i].points[j]);
+    for (const Bezier& pc : pieces) {
+      s.polygons.push_back(pc.points);
+      add_points(pc.points);
     }
   };
   if (!e.curve.pieces.empty()) {
@@ -51,7 +57,17 @@ Shape entity_shape(const Entity& e) {
     s.measure = e.curve.pieces;
     s.dim = e.curve.dim;
     s.closed = e.curve.closed;
-    add_polygons(e.curve.pieces);
+    // The control polygon the user wrote: a B-spline's de Boor points, a
+    // Bézier segment's own points (not the pieces of a decomposition).
+    for (const CurveSegment& seg : e.curve.segments) {
+      if (seg.nurbs) {
+        s.polygons.push_back(seg.nurbs->points);
+        add_points(seg.nurbs->points);
+      } else {
+        add_polygons(std::vector<Bezier>(e.curve.pieces.begin() + static_cast<long>(seg.first_piece),
+                                         e.curve.pieces.begin() + static_cast<long>(seg.first_piece + seg.piece_count)));
+      }
+    }
   } else if (e.surface && !e.uv_curve.pieces.empty()) {
     // The exact 3D curve S(c(w)): what the tool follows.
     s.measure = map_curve(*e.surface, e.uv_curve, false).points;

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
 #include "support/mini_xml.hpp"
 
 namespace bezcam {
@@ -132,6 +133,21 @@ TEST(PreviewSvg, EntityGroupHoldsCurveControlPolygonPointsStartAndArrows) {
   EXPECT_TRUE(r2.by_class("control-polygon").empty());
   EXPECT_TRUE(r2.by_class("control-point").empty());
   EXPECT_EQ(r2.by_class("curve").size(), 1u);
+}
+
+TEST(PreviewSvg, BsplineControlPolygonIsTheOneInTheFile) {
+  // The drawn control points are the de Boor points as written, not the
+  // control points of the Bézier decomposition.
+  const std::string text = slurp(BEZCAM_SOURCE_DIR "/samples/curve-bspline-wave.json");
+  const Built b = build(text);
+  ASSERT_EQ(b.job.entities.size(), 1u);
+  const auto& seg = b.job.entities[0].curve.segments.at(0);
+  ASSERT_TRUE(seg.nurbs);
+  const Element root = testxml::parse(preview_svg(input_for(b), PreviewOptions{}));
+  const auto cps = root.by_class("control-point");
+  ASSERT_EQ(cps.size(), seg.nurbs->points.size());
+  EXPECT_GT(b.job.entities[0].curve.pieces.size() * 3 + 1, cps.size());  // fewer than the pieces' points
+  EXPECT_EQ(points_of(root.by_class("control-polygon").at(0)->attr("d")).size(), seg.nurbs->points.size());
 }
 
 TEST(PreviewSvg, ScaleBarIsTrueToTheDrawing) {
