@@ -27,6 +27,21 @@ Vec3 cut_point(const CutContext& c, const Vec3& p);
 /// G01 polyline within the tolerance after rounding (flatten_curve.hpp).
 void emit_lines(CutContext& c, EntityReport& r);
 
+/// build_program()'s running state, continued by an emitter that positions
+/// the tool itself.
+struct MotionState {
+  int& tool;
+  double& rpm;
+  Vec3& pos;
+  bool& pos_known;
+};
+/// Cuts a surface entity completely (surface_emitter.cpp): bezier_patch and
+/// coons_patch by their toolpath (zigzag, raster, boundary), curve_on_surface
+/// along its curve; tool and spindle, rapids at safe Z, plunges, cutting
+/// moves, links, gouge policy and the final retract. G01 lines in every
+/// output mode. Returns the filled report.
+EntityReport emit_surface(CutContext& c, MotionState& st);
+
 /// G02/G03 arcs and G01 lines within the tolerance after rounding
 /// (arc_fit.hpp); refuses a profile with "arcs": false (cut_arcs.cpp).
 void emit_arcs(CutContext& c, EntityReport& r);

@@ -121,7 +121,16 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     const double safe = quantize(cp.safe_z, p.decimals);
     p.safe_z = p.entities.empty() ? safe : std::min(p.safe_z, safe);
     const auto& g = e.curve;
-    if (g.pieces.empty()) continue;  // surfaces are cut by their own emitter
+    if (e.surface) {  // patches and curves on surfaces: surface_emitter.cpp
+      detail::CutContext sc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
+      detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known};
+      const EntityReport r = detail::emit_surface(sc, ms);
+      p.max_measured = std::max(p.max_measured, r.measured);
+      p.max_bound = std::max(p.max_bound, r.bound);
+      p.entities.push_back(r);
+      continue;
+    }
+    if (g.pieces.empty()) continue;
 
     if (g.dim == 3) {
       const Box3 b = g.bounds();

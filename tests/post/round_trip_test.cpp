@@ -50,6 +50,9 @@ TEST(RoundTrip, LinesModeProgramsReadBackWithinTolerance) {
   int programs = 0, skipped = 0;
   for (const auto& file : samples()) {
     const Job job = load_job(file);
+    // Surfaces cut in many runs; surface_emitter_test.cpp reads them back.
+    if (std::any_of(job.entities.begin(), job.entities.end(), [](const Entity& e) { return e.surface != nullptr; }))
+      continue;
     for (const char* name : kProfiles) {
       SCOPED_TRACE(file.filename().string() + " for " + name);
       const MachineProfile m = load_machine_profile(name);
