@@ -103,6 +103,8 @@ int run_program() {
                          ") but the job " + job->source + " is in " + to_string(job->units) +
                          "; compare a program with the job it was made from");
   in.job = job ? &*job : nullptr;
+  if (job)
+    for (const auto& w : job->warnings) in.warnings.push_back("warning: " + w);
   in.tolerance = o.tolerance > 0 ? o.tolerance : (job ? job->tolerance : 0);
   in.title = "bezcam preview: " + o.program + (job ? " against " + job->source : std::string());
   const double rapid_rate = m.max_feed_mm_min / mm_per_unit(in.units);
@@ -181,7 +183,7 @@ int run() {
       std::cerr << "bezcam: warning: convert would refuse this program: " << e.what() << "\n";
     }
   }
-  for (const auto& w : job.warnings) in.warnings.push_back("warning: " + w);
+  for (const auto& w : p.warnings) in.warnings.push_back("warning: " + w);  // the job's and the program's own
 
   PreviewOptions popt;
   popt.control = !o.no_control;
@@ -196,7 +198,7 @@ int run() {
   measuring.finish();
   write_output_atomically(o.out, svg);
   if (!o.quiet) {
-    for (const auto& w : job.warnings) std::cerr << "bezcam: warning: " << w << "\n";
+    for (const auto& w : p.warnings) std::cerr << "bezcam: warning: " << w << "\n";
     std::cerr << "bezcam: wrote " << o.out << ": " << n << (n == 1 ? " entity, " : " entities, ") << blocks
               << " cutting blocks for machine " << m.name << (o.deviation ? ", coloured by deviation" : "") << "\n";
   }
