@@ -54,7 +54,8 @@ int run() {
   write_output_atomically(o.out, r.gcode);
   if (!o.report.empty()) write_output_atomically(o.report, report_json(rep));
   if (!o.quiet) {
-    for (const auto& w : job.warnings) std::cerr << "bezcam: warning: " << w << "\n";
+    // The job's warnings and the program's own (e.g. an output mode replaced).
+    for (const auto& w : r.program.warnings) std::cerr << "bezcam: warning: " << w << "\n";
     std::cerr << report_text(rep);
     if (o.out != "-") std::cerr << "bezcam: wrote " << o.out << (o.report.empty() || o.report == "-" ? "" : " and " + o.report) << "\n";
   }
