@@ -37,11 +37,14 @@ Box3 arc_box(const Vec3& from, const Move& m) {
 void validate_program(const Program& p, const MachineProfile& m) {
   const double k = 1.0 / mm_per_unit(p.units);
   const char* unit = to_string(p.units);
+  // The entity's JSON path, and its id when it has one.
   auto where = [&](const Move& mv) {
-    if (mv.entity >= 0 && mv.entity < static_cast<int>(p.entities.size()))
-      return p.job_name + ": " + p.entities[mv.entity].label;
-    if (mv.entity >= 0) return p.job_name + ": entities[" + std::to_string(mv.entity) + "]";
-    return p.job_name;
+    if (mv.entity < 0) return p.job_name;
+    std::string w = p.job_name + ": entities[" + std::to_string(mv.entity) + "]";
+    for (const auto& r : p.entities)
+      if (r.entity == mv.entity && r.label != "entities[" + std::to_string(mv.entity) + "]")
+        w += " (id \"" + r.label + "\")";
+    return w;
   };
   auto check_box = [&](const Move& mv, const Box3& b, unsigned axes) {
     static const char* names = "XYZ";

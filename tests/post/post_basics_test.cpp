@@ -117,7 +117,7 @@ TEST(Program, RefusalsBeforeAnythingIsWritten) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(e.id(), "program.travel");
-    EXPECT_EQ(e.where(), "t.json: far");
+    EXPECT_EQ(e.where(), "t.json: entities[0] (id \"far\")");
     EXPECT_NE(e.message().find("Y"), std::string::npos) << e.message();
   }
   // A 3D curve rising above safe Z would be crossed by rapids.
