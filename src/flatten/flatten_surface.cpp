@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 
 namespace bezcam {
@@ -406,8 +407,17 @@ double resolution_of(const PassOptions& o) { return o.stepover / 40; }
 
 // Flattens the passes at `ats`, then verifies every neighbouring pair,
 // inserting a pass midway where the bound exceeds the stepover.
+// Stated limit (limits.hpp): passes on one patch.
+[[noreturn]] void too_many_passes(const PassOptions& o, const std::string& found) {
+  throw InputError("toolpath.too-many-passes", "toolpath.stepover",
+                   "the patch needs " + found + " passes at stepover " + fmt_num(o.stepover) + ", more than the " +
+                       std::to_string(kMaxPassesPerPatch) +
+                       " one patch may have (docs/limits.md); use a larger stepover or split the patch");
+}
+
 PassPlan build_and_verify(const SurfaceGeometry& s, const PassOptions& o, const std::vector<double>& ats,
                           bool allow_insert) {
+  if (ats.size() > kMaxPassesPerPatch) too_many_passes(o, std::to_string(ats.size()));
   PassPlan plan;
   for (double c : ats) plan.passes.push_back(make_pass(s, o, c));
   const double res = resolution_of(o);
@@ -429,6 +439,7 @@ PassPlan build_and_verify(const SurfaceGeometry& s, const PassOptions& o, const 
                            fmt_num(a) + " stay " + fmt_num(g) + " apart however close their parameters are: "
                            "the tool path jumps there (a crease under a ball-end tool?); use a larger stepover or a "
                            "smaller tool_radius");
+    if (plan.passes.size() >= kMaxPassesPerPatch) too_many_passes(o, "more than " + std::to_string(plan.passes.size()));
     plan.passes.insert(plan.passes.begin() + static_cast<std::ptrdiff_t>(i) + 1, make_pass(s, o, 0.5 * (a + b)));
     ++plan.refined;
   }
@@ -445,9 +456,16 @@ PassPlan plan_passes(const SurfaceGeometry& s, const PassOptions& o) {
   std::vector<double> ats{0};
   double c = 0, step = 1.0 / 64;
   GapEstimator::Row here = est.row(0);
+  // The first and last passes' distance needs this many steps at least:
+  // refuse a stepover far too small for the patch before planning.
+  const double across = est.gap(here, est.row(1));
+  if (across > target * static_cast<double>(kMaxPassesPerPatch))
+    too_many_passes(o, "about " + fmt_num(std::ceil(across / target)) + " or more");
   while (c < 1) {
-    // The gap grows about linearly with the step: secant steps, then
-    // bisection, to within 2 % of the largest step that fits.
+    if (ats.size() > kMaxPassesPerPatch) too_many_passes(o, "more than " + std::to_string(kMaxPassesPerPatch));
+    // The gap grows about linearly with the step: secant steps aimed at
+    // 99.7 % of the target, accepted from 99.4 % (then the step is within
+    // about 0.6 % of the largest that fits), bisection as a fallback.
     double lo = 0, hi = kInf, s_try = std::min(step, 1 - c);
     GapEstimator::Row best;
     for (int iter = 0; iter < 60; ++iter) {
@@ -457,14 +475,14 @@ PassPlan plan_passes(const SurfaceGeometry& s, const PassOptions& o) {
       if (g <= target) {
         lo = s_try;
         best = std::move(next);
-        if (last || lo >= 0.98 * hi) break;
-        double nx = g > 0 ? s_try * std::min(0.99 * target / g, 4.0) : 4 * s_try;
+        if (last || g >= 0.994 * target || lo >= 0.995 * hi) break;
+        double nx = g > 0 ? s_try * std::min(0.997 * target / g, 4.0) : 4 * s_try;
         if (nx >= hi) nx = 0.5 * (lo + hi);
         s_try = std::min(nx, 1 - c);
       } else {
         hi = s_try;
-        if (lo > 0 && lo >= 0.98 * hi) break;
-        double nx = s_try * std::clamp(0.99 * target / g, 0.1, 0.9);
+        if (lo > 0 && lo >= 0.995 * hi) break;
+        double nx = s_try * std::clamp(0.997 * target / g, 0.1, 0.999);
         if (nx <= lo) nx = 0.5 * (lo + hi);
         s_try = nx;
       }
@@ -499,7 +517,10 @@ PassPlan plan_uniform_passes(const SurfaceGeometry& s, const PassOptions& o) {
   // Smallest interval count whose estimated gaps all fit (doubling, then
   // bisection), then the smallest that also verifies on the polylines.
   size_t hi = 1;
-  while (!fits(hi) && hi < (1u << 20)) hi *= 2;
+  while (!fits(hi)) {
+    if (hi >= kMaxPassesPerPatch) too_many_passes(o, "more than " + std::to_string(hi));
+    hi = std::min<size_t>(2 * hi, kMaxPassesPerPatch);
+  }
   size_t lo = hi / 2;
   while (hi - lo > 1) {
     const size_t mid = (lo + hi) / 2;
