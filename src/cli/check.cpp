@@ -3,6 +3,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "bezcam/error.hpp"
 #include "bezcam/kernel/job.hpp"
 #include "command.hpp"
 
@@ -43,6 +44,20 @@ int run() {
       const Box3 b = g.bounds();
       std::cout << ", bounds " << pt(b.lo, g.dim) << " to " << pt(b.hi, g.dim);
       if (g.closed) std::cout << ", closed";
+    }
+    if (e.surface) {  // bezier_patch, coons_patch, curve_on_surface
+      const SurfaceGeometry& s = *e.surface;
+      const Box3 b = bounds(s);
+      std::cout << (e.type == "curve_on_surface" ? ", on a " + s.kind : std::string()) << ", degree "
+                << s.degree_u() << " x " << s.degree_v() << (s.rational() ? ", rational" : "") << ", "
+                << s.grid.cells.size() << " Bézier cell" << (s.grid.cells.size() == 1 ? "" : "s") << ", bounds "
+                << std::setprecision(6) << pt(b.lo, 3) << " to " << pt(b.hi, 3);
+      if (e.type == "curve_on_surface")
+        std::cout << ", curve of " << e.uv_curve.pieces.size() << " piece" << (e.uv_curve.pieces.size() == 1 ? "" : "s")
+                  << " in (u, v)" << (e.uv_curve.closed ? ", closed" : "");
+      else
+        std::cout << ", toolpath " << e.toolpath.pattern << " along " << e.toolpath.direction
+                  << (e.toolpath.stepover ? ", stepover " + fmt_num(*e.toolpath.stepover) : std::string());
     }
     std::cout << "\n";
     if (g.kind == "path") {
