@@ -74,12 +74,18 @@ class SurfaceEmitter {
 
   EntityReport run() {
     check_safe_z();
-    if (e_.type == "curve_on_surface") {
-      cut_curve_on_surface();
-    } else if (e_.toolpath.pattern == "boundary") {
-      cut_boundary();
-    } else {
-      cut_passes();
+    try {
+      if (e_.type == "curve_on_surface") {
+        cut_curve_on_surface();
+      } else if (e_.toolpath.pattern == "boundary") {
+        cut_boundary();
+      } else {
+        cut_passes();
+      }
+    } catch (const InputError& err) {
+      // The geometry layers know no file: name the entity.
+      if (!err.where().empty()) throw;
+      throw InputError(err.id(), where(), err.message());
     }
     retract();
     st_.pos_known = true;
