@@ -66,9 +66,10 @@ ModbusServer::ModbusServer(SimController& controller, ServerConfig cfg) : ctl_(c
 ModbusServer::~ModbusServer() {
   stop();
   if (bg_.joinable()) bg_.join();
+  std::lock_guard lk(wake_mu_);  // a late stop() from another thread has finished writing
   if (listen_fd_ >= 0) ::close(listen_fd_);
-  for (int fd : wake_)
-    if (fd >= 0) ::close(fd);
+  for (int& fd : wake_)
+    if (fd >= 0) ::close(fd), fd = -1;
 }
 
 void ModbusServer::start() {
@@ -76,11 +77,11 @@ void ModbusServer::start() {
 }
 
 void ModbusServer::stop() {
-  if (!stopping_.exchange(true)) {
+  std::lock_guard lk(wake_mu_);
+  if (!stopping_.exchange(true) && wake_[1] >= 0) {
     const char b = 1;
     [[maybe_unused]] const auto n = ::write(wake_[1], &b, 1);
   }
-  if (bg_.joinable() && bg_.get_id() != std::this_thread::get_id()) bg_.join();
 }
 
 void ModbusServer::reap_locked(bool all) {
@@ -159,22 +160,23 @@ void ModbusServer::run() {
   conns_.clear();
 }
 
-void ModbusServer::serve(Conn* c) {
+void serve_connection(SimController& ctl, ConnId id, int fd, const ServerConfig& cfg, const std::atomic<bool>& stop,
+                      const std::function<void()>& on_request) {
   modbus_t* ctx = modbus_new_tcp("127.0.0.1", 502);  // address unused: the socket is given
   modbus_mapping_t* map = ctx ? modbus_mapping_new_start_address(0, 0, 0, 0, 0, kHoldingRegs, 0, reg::readable_end)
                               : nullptr;
   if (ctx && map) {
-    modbus_set_socket(ctx, c->fd);
-    set_timeout(ctx, modbus_set_indication_timeout, cfg_.idle_timeout);
-    set_timeout(ctx, modbus_set_byte_timeout, cfg_.frame_timeout);
-    set_timeout(ctx, modbus_set_response_timeout, cfg_.frame_timeout);
+    modbus_set_socket(ctx, fd);
+    set_timeout(ctx, modbus_set_indication_timeout, cfg.idle_timeout);
+    set_timeout(ctx, modbus_set_byte_timeout, cfg.frame_timeout);
+    set_timeout(ctx, modbus_set_response_timeout, cfg.frame_timeout);
     std::uint8_t req[MODBUS_TCP_MAX_ADU_LENGTH];
-    while (!stopping_) {
+    while (!stop) {
       const int rc = modbus_receive(ctx, req);
       if (rc < 0) break;  // closed, idle or half a frame for too long, or garbage
       if (rc == 0) continue;
-      c->last_ms = now_ms();
-      const FrameReply r = ctl_.handle_frame(c->id, std::span<const std::uint8_t>(req, static_cast<std::size_t>(rc)));
+      if (on_request) on_request();
+      const FrameReply r = ctl.handle_frame(id, std::span<const std::uint8_t>(req, static_cast<std::size_t>(rc)));
       if (r.drop) break;
       int sent = 0;
       if (r.exception != 0) {
@@ -187,17 +189,24 @@ void ModbusServer::serve(Conn* c) {
       }
       if (sent < 0) break;
     }
-    modbus_set_socket(ctx, -1);  // the socket is closed below, under the lock
+    modbus_set_socket(ctx, -1);  // the caller closes the socket
   }
   if (map) modbus_mapping_free(map);
   if (ctx) modbus_free(ctx);
+}
+
+void ModbusServer::serve(Conn* c) {
+  serve_connection(ctl_, c->id, c->fd, cfg_, stopping_, [c] { c->last_ms = now_ms(); });
+  // Tell the controller before the slot is freed: the accept loop opens the
+  // next connection as soon as it is, and the count readers see must never
+  // exceed the cap.
+  ctl_.connection_closed(c->id);
   {
     std::lock_guard lk(mu_);
     ::close(c->fd);
     c->closed = true;
   }
   closed_cv_.notify_all();
-  ctl_.connection_closed(c->id);
 }
 
 }  // namespace bezcam::link

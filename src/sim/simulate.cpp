@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
 #include "bezcam/link/sim_controller.hpp"
 #include "bezcam/link/sim_server.hpp"
 #include "bezcam/link/trace.hpp"
@@ -106,14 +107,8 @@ std::vector<std::uint64_t> parse_faults(const std::string& kind) {
   return out;
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("io.read", path, "cannot open the program file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw IoError("io.read", path, "cannot read the program file");
-  return s.str();
-}
+// At most kMaxProgramBytes, refused before it is read (limits.hpp).
+std::string read_file(const std::string& path) { return read_bounded(path, kMaxProgramBytes, "program file"); }
 
 // SIGINT and SIGTERM are blocked in every thread and taken by one waiting
 // thread, so that stopping happens in ordinary code, not in a handler.
@@ -137,7 +132,10 @@ class SignalWaiter {
       }
     });
   }
-  ~SignalWaiter() {
+  ~SignalWaiter() { finish(); }
+  /// Ends the waiting thread (whether or not a signal came) and waits for
+  /// it, so that nothing it calls outlives the objects it calls.
+  void finish() {
     if (th_.joinable()) {
       if (signal_ == 0) pthread_kill(th_.native_handle(), SIGUSR1);
       th_.join();
@@ -175,6 +173,7 @@ int run() {
   if (!o.program.empty()) {
     signals.start([&ctl] { ctl.stop(); });
     const Status st = ctl.run_program(program);
+    signals.finish();
     if (signals.signal() != 0) {
       std::cerr << "bezcam: simulate: stopped by signal " << signals.signal() << " after " << st.lines_executed
                 << " lines; the trace is complete up to there\n";
@@ -207,6 +206,7 @@ int run() {
             << o.machine << ", buffer " << o.buffer << " bytes, at most " << o.max_connections << " connections)"
             << std::endl;
   server.run();
+  signals.finish();
   ctl.stop();  // the line in progress completes; the trace is flushed
   if (!o.quiet) {
     const Status st = ctl.status();

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <list>
 #include <mutex>
 #include <string>
@@ -31,6 +32,18 @@ struct ServerConfig {
   std::chrono::milliseconds frame_timeout{500};
   std::chrono::milliseconds send_timeout{2000};  ///< a client that does not read its replies is dropped
 };
+
+/// Serves one client on the connected stream socket `fd` until the client
+/// closes it, a request breaks the protocol, a timeout of `cfg` (idle,
+/// frame) runs out, or `stop` becomes true: libmodbus reads each request
+/// (one ADU of at most 260 bytes), the controller answers it as connection
+/// `id`, libmodbus sends the reply. This is ModbusServer's per-connection
+/// loop; it neither closes `fd` nor opens or closes the connection with the
+/// controller. Public so that a socketpair can drive exactly this code (the
+/// frame fuzzer, tests/fuzz/fuzz_modbus_frames.cpp). `on_request` (may be
+/// empty) runs after each request is received, before it is answered.
+void serve_connection(SimController& ctl, ConnId id, int fd, const ServerConfig& cfg, const std::atomic<bool>& stop,
+                      const std::function<void()>& on_request = {});
 
 class ModbusServer {
  public:
@@ -51,8 +64,9 @@ class ModbusServer {
   void run();
   /// run() in a background thread.
   void start();
-  /// Thread-safe and idempotent; may be called from a signal-waiting thread.
-  /// Joins the background thread of start() (not callable from within it).
+  /// Asks run() to return: thread-safe, idempotent, returns at once (from a
+  /// signal-waiting thread, for instance). run() closes every connection
+  /// before it returns; the destructor waits for start()'s thread.
   void stop();
 
  private:
@@ -76,6 +90,7 @@ class ModbusServer {
   std::condition_variable closed_cv_;  // a connection released its socket
   std::list<Conn> conns_;
   std::atomic<bool> stopping_{false};
+  std::mutex wake_mu_;  // stop()'s write against the destructor's close
   std::thread bg_;
 };
 
