@@ -104,6 +104,33 @@ TEST(FlattenSurface, TipCurveBoundHoldsByIndependentMeasurement) {
   }
 }
 
+TEST(FlattenSurface, CurveOnASurfaceWithABallEndToolHoldsItsBound) {
+  // An S-shaped (u, v) path on the rational cylinder and on a Coons grid,
+  // ridden by a ball of radius 4: the bound checked against the tip
+  // recomputed from the surface at c(w), sampled densely.
+  const Bezier c1 = Bezier::make({{0.05, 0.1}, {0.9, 0.2}, {0.1, 0.95}, {0.85, 0.9}}, {}, 2);
+  CurveSegment seg{"bezier", 3, false, 0, 1, nullptr};
+  const CurveGeometry uv = make_single(seg, {c1}, 2);
+  for (auto s : {SurfaceGeometry::make(fixtures::quarter_cylinder(25, 40, false)),
+                 SurfaceGeometry::make(fixtures::curved_coons(CoonsBlend::quintic))}) {
+    const double r = 4;
+    const SurfaceCurve m = map_curve(*s, uv, true);
+    const TipPolyline p = flatten_tip(m, r, {kTol, 3});
+    EXPECT_LE(p.bound, kTol);
+    std::vector<Vec3> dense;
+    for (int k = 0; k <= 6000; ++k) {
+      const Vec3 q = evaluate(c1, k / 6000.0);
+      dense.push_back(direct_tip(*s, r, q.x, q.y));
+    }
+    double d = 0;
+    for (const auto& x : dense) d = std::max(d, dist_to_poly(x, p.points));
+    for (size_t i = 0; i + 1 < p.points.size(); ++i)
+      for (double f : {0.25, 0.5, 0.75}) d = std::max(d, dist_to_poly(lerp(p.points[i], p.points[i + 1], f), dense));
+    EXPECT_LE(d, p.bound + 1e-5);
+    EXPECT_GT(d, 0.3 * kTol);  // and the bound is not vacuous
+  }
+}
+
 TEST(FlattenSurface, BallOnACylinderHasItsCentreOnTheOffsetCircle) {
   // Crest cylinder of radius 25 around the y axis: the ball centre (tip +
   // r z) lies at distance 25 + r from the axis, exactly.
