@@ -69,11 +69,12 @@ void check_result(std::span<const Bezier> pieces, const ArcFitOptions& o, const 
   }
   EXPECT_LE(r.bound, o.tolerance);
   const auto poly = drawn(r, o.tolerance * 1e-4);
-  const double measured = measure_deviation(pieces, poly, o.tolerance).max();
-  EXPECT_LE(measured, o.tolerance);
   // The measurement (accurate to ~1e-3 tol, plus the sampling sagitta) never
-  // exceeds the proven bound.
-  EXPECT_LE(measured, r.bound + 2e-3 * o.tolerance);
+  // exceeds the proven bound. measure_deviation() reads true distances above
+  // its `tolerance` argument (below it a windowed search may read high), so
+  // it is asked about the bound itself.
+  const double check = r.bound + 2e-3 * o.tolerance;
+  EXPECT_LE(measure_deviation(pieces, poly, check).max(), check);
 }
 
 TEST(ArcFit, ExactQuarterCircleIsOneArcAroundTheTrueCentre) {

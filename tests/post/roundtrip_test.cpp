@@ -169,8 +169,13 @@ TEST(RoundTrip, EveryCurveSampleInEveryModeAndProfileReadsBackWithinTolerance) {
           const Deviation d = measured(file.string(), i, e.curve.pieces, poly, tol);
           EXPECT_LE(d.max(), tol) << e.label() << ": curve to path " << d.curve_to_path << ", path to curve "
                                   << d.path_to_curve;
-          // The read-back path agrees with what the program claims.
-          EXPECT_LE(d.max(), r.program.entities[i].bound + 1e-3 * tol) << e.label();
+          // The read-back path agrees with the bound the program claims.
+          // measure_deviation() reads true distances above its `tolerance`
+          // argument but may read high below it (windowed search): a reading
+          // above the bound is confirmed by asking about the bound itself.
+          const double claim = r.program.entities[i].bound + 1e-3 * tol;
+          if (d.max() > claim)
+            EXPECT_LE(measure_deviation(e.curve.pieces, poly, claim).max(), claim) << e.label();
         }
         // G-code lines that cut (all but the plunge in each run).
         size_t lines = 0;
