@@ -537,7 +537,7 @@ void SimController::exec_loop() {
         emit(text, false);
         lk.lock();
         if (epoch_ != cur_epoch) continue;  // the program was replaced meanwhile
-        ++lines_done_;
+        if (!failed) ++lines_done_;  // a refused line changed nothing: it was not executed
         blocks_done_ += static_cast<long>(nblocks);
         machine_ = interp->state();
         if (failed && state_ != State::alarm) {

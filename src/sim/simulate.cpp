@@ -172,9 +172,11 @@ int run() {
 
   if (!o.program.empty()) {
     signals.start([&ctl] { ctl.stop(); });
-    const Status st = ctl.run_program(program);
+    Status st = ctl.run_program(program);
     signals.finish();
     if (signals.signal() != 0) {
+      ctl.stop();  // the line in progress completes first
+      st = ctl.status();
       std::cerr << "bezcam: simulate: stopped by signal " << signals.signal() << " after " << st.lines_executed
                 << " lines; the trace is complete up to there\n";
       return 128 + signals.signal();
