@@ -2,6 +2,8 @@
 
 #include "bezcam/link/crc32.hpp"
 
+// Tables of the register map (docs/modbus-register-map.md, sections 3 and
+// 4). Codes are part of the protocol: never renumber, only append.
 namespace bezcam::link {
 
 std::uint16_t command_length(Command c) {
@@ -15,6 +17,9 @@ std::uint16_t command_length(Command c) {
   return 0;
 }
 
+// Standard exception codes only, so a generic master shows something
+// meaningful: 02 for where, 03 for what, 04 for the controller's state, 06
+// for "not now".
 int exception_for(Reject r) {
   using namespace exception_code;
   switch (r) {
@@ -106,6 +111,7 @@ std::string describe(Reject r) {
   return "unknown refusal code";
 }
 
+// Every field in its documented register, 32-bit values high word first.
 std::array<std::uint16_t, reg::status_count> Status::encode() const {
   std::array<std::uint16_t, reg::status_count> r{};
   r[reg::magic] = magic;
@@ -188,6 +194,9 @@ std::string unpack_text(std::span<const std::uint16_t> regs, std::size_t n_bytes
   return s;
 }
 
+// Header (session, seq, length, CRC-32 of the payload), then the payload
+// packed like any text; the CRC lets the controller refuse a chunk damaged
+// anywhere between the sender's memory and its own.
 std::vector<std::uint16_t> encode_chunk(const Chunk& c) {
   const std::size_t n = c.payload.size();
   std::vector<std::uint16_t> r(reg::chunk_header + (n + 1) / 2);

@@ -9,6 +9,10 @@
 #include "bezcam/error.hpp"
 #include "bezcam/link/trace.hpp"
 
+// The controller's side of docs/modbus-register-map.md. One mutex guards
+// the transfer and the status; requests hold it only while they decide and
+// read, and the executor releases it while a line runs and its trace is
+// written, so a slow line or a slow disk never delays a reply.
 namespace bezcam::link {
 
 namespace {
@@ -106,6 +110,9 @@ std::uint32_t SimController::next_session_locked() {
   return s;
 }
 
+// A new program starts from nothing: buffer, counters, alarm and machine
+// state are reset here; the executor sees the new epoch and restarts the
+// interpreter and the trace itself (they belong to its thread).
 void SimController::open_locked(ConnId c, std::uint32_t token, std::uint32_t total) {
   ++epoch_;
   session_ = next_session_locked();
@@ -131,6 +138,9 @@ void SimController::open_locked(ConnId c, std::uint32_t token, std::uint32_t tot
   cv_.notify_all();
 }
 
+// For alarms raised by requests (COMMIT checks, ABORT) and by the lease: the
+// state changes at once, so further chunks are refused, and the executor
+// writes the record into the trace (only it writes the trace).
 void SimController::raise_alarm_locked(Alarm a, long line, std::string id, std::string message) {
   if (state_ == State::alarm) return;  // the first alarm is the one that counts
   state_ = State::alarm;
@@ -186,6 +196,8 @@ std::string SimController::alarm_text() const {
   return alarm_text_;
 }
 
+// The readable registers are rebuilt per read from the live state, so a
+// read never sees half an update.
 std::vector<std::uint16_t> SimController::read_locked(ConnId c, std::uint16_t addr, std::uint16_t n) const {
   std::array<std::uint16_t, reg::readable_end> image{};
   const auto st = status_locked(c).encode();
@@ -195,6 +207,8 @@ std::vector<std::uint16_t> SimController::read_locked(ConnId c, std::uint16_t ad
   return {image.begin() + addr, image.begin() + addr + n};
 }
 
+// Checks in the order that gives the most useful refusal: state, ownership,
+// session, then the sequence rules of section 5, then room in the buffer.
 Reject SimController::apply_chunk_locked(ConnId c, std::uint32_t session, std::uint32_t seq, std::string_view payload,
                                          std::uint32_t crc) {
   if (state_ == State::alarm) return Reject::in_alarm;
@@ -227,6 +241,8 @@ Reject SimController::apply_chunk_locked(ConnId c, std::uint32_t session, std::u
   return Reject::none;
 }
 
+// Decodes and checks the chunk's own integrity (length against the
+// registers written, CRC-32, no NUL) before any state is looked at.
 Reject SimController::chunk_locked(ConnId c, std::span<const std::uint16_t> regs, bool corrupt) {
   if (regs.size() <= reg::chunk_header) return Reject::bad_length;
   const std::uint32_t session = get_u32(&regs[0]), seq = get_u32(&regs[2]), crc = get_u32(&regs[5]);
@@ -241,6 +257,8 @@ Reject SimController::chunk_locked(ConnId c, std::span<const std::uint16_t> regs
   return apply_chunk_locked(c, session, seq, payload, crc);
 }
 
+// Commands are whole writes at 0x0100 with an exact register count, so a
+// truncated or misaddressed command can never be half-understood.
 Reject SimController::command_locked(ConnId c, std::span<const std::uint16_t> regs) {
   if (regs.empty()) return Reject::bad_command;
   const auto code = static_cast<Command>(regs[0]);
@@ -338,6 +356,7 @@ FrameReply SimController::handle_frame(ConnId c, std::span<const std::uint8_t> a
   const std::uint8_t fc = adu[7];
   const std::size_t pdu = adu.size() - 7;  // function code + data
   std::lock_guard lk(m_);
+  // Any request from the owner, reads included, renews its lease.
   if (c == owner_ && c != 0) owner_seen_ = Clock::now();
   auto refuse = [&](Reject why) {
     ++rejects_;
@@ -375,6 +394,7 @@ FrameReply SimController::handle_frame(ConnId c, std::span<const std::uint8_t> a
   switch (fc) {
     case 3:
     case 4: {
+      // FC 03 / 04: address, count. Both tables hold the same registers.
       if (pdu != 5) return refuse(Reject::bad_count);
       const std::uint16_t addr = u16(8), n = u16(10);
       if (n < 1 || n > 125) return refuse(Reject::bad_count);
@@ -385,6 +405,7 @@ FrameReply SimController::handle_frame(ConnId c, std::span<const std::uint8_t> a
       return out;
     }
     case 6: {
+      // FC 06: address, value. Only RESET is a one-register command.
       if (pdu != 5) return refuse(Reject::bad_count);
       const std::uint16_t addr = u16(8);
       if (addr != reg::command) return refuse(addr < reg::readable_end ? Reject::read_only : Reject::bad_address);
@@ -393,6 +414,7 @@ FrameReply SimController::handle_frame(ConnId c, std::span<const std::uint8_t> a
       return out;
     }
     case 16: {
+      // FC 16: address, count, byte count, values.
       if (pdu < 6) return refuse(Reject::bad_count);
       const std::uint16_t addr = u16(8), n = u16(10);
       if (n < 1 || n > 123 || adu[12] != 2 * n || pdu != 6u + 2u * n) return refuse(Reject::bad_count);
@@ -403,6 +425,8 @@ FrameReply SimController::handle_frame(ConnId c, std::span<const std::uint8_t> a
       return out;
     }
     case 23: {
+      // FC 23: read address, read count, write address, write count, byte
+      // count, values. The write happens first, the read sees its effect.
       if (pdu < 10) return refuse(Reject::bad_count);
       const std::uint16_t raddr = u16(8), rn = u16(10), waddr = u16(12), wn = u16(14);
       if (rn < 1 || rn > 125 || wn < 1 || wn > 121 || adu[16] != 2 * wn || pdu != 10u + 2u * wn)
@@ -421,6 +445,8 @@ FrameReply SimController::handle_frame(ConnId c, std::span<const std::uint8_t> a
   }
 }
 
+// `simulate --program`: the file goes through open/apply/commit exactly as
+// a streamed one, as a local "connection", so both give the same trace.
 Status SimController::run_program(std::string_view program) {
   if (const auto nul = program.find('\0'); nul != std::string_view::npos) {
     const auto line = 1 + std::count(program.begin(), program.begin() + static_cast<std::ptrdiff_t>(nul), '\n');

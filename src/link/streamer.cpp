@@ -11,6 +11,11 @@
 
 #include "bezcam/link/crc32.hpp"
 
+// The sender's side of docs/modbus-register-map.md, section 6. The design
+// rule throughout: the controller's acknowledged position is the truth. The
+// sender never resends from its own count, never assumes a request that got
+// no reply was or was not applied, and never reports success before the
+// controller itself has confirmed length and CRC-32 and reached DONE.
 namespace bezcam::link {
 
 namespace {
@@ -24,13 +29,17 @@ std::string hex32(std::uint32_t v) {
   return b;
 }
 
+// One transfer, from OPEN to DONE; not reusable.
 class Sender {
  public:
   Sender(std::string_view program, const Endpoint& to, const StreamOptions& opt)
       : prog_(program), to_(to), opt_(opt), crc_(crc32(program)) {
+    // Line ends, to turn acknowledged bytes into lines for progress.
     for (std::size_t i = 0; i < prog_.size(); ++i)
       if (prog_[i] == '\n') newlines_.push_back(i);
     lines_total_ = newlines_.size() + (prog_.empty() || prog_.back() == '\n' ? 0 : 1);
+    // The token proves, after a reconnection, that this sender opened the
+    // transfer; the session id alone is readable by anyone.
     std::random_device rd;
     do token_ = static_cast<std::uint32_t>(rd()); while (token_ == 0);
   }
@@ -66,6 +75,8 @@ class Sender {
     return Status::decode(r);
   }
 
+  // FC 23: the write and the status after it in one round trip, so every
+  // chunk comes back with its acknowledgement and the new buffer_free.
   Status write_read(std::uint16_t addr, const std::vector<std::uint16_t>& regs) {
     std::array<std::uint16_t, reg::status_count> r{};
     client_->write_and_read(addr, regs, 0, r);
@@ -196,6 +207,8 @@ class Sender {
     report();
   }
 
+  // Stall detection looks at both counters: a slow machine with a full
+  // buffer still executes lines, a dead one does neither.
   void mark_progress() {
     progress_mark_ = {st_.ack_bytes, st_.lines_executed};
     progress_time_ = Clock::now();
@@ -216,6 +229,8 @@ class Sender {
                                 to_string(st_.state) + "); " + position());
   }
 
+  // Polling backs off from 1 ms to 20 ms: quick when the buffer is about
+  // to free up, cheap when the machine is slow.
   void poll_wait() {
     std::this_thread::sleep_for(milliseconds(poll_ms_));
     poll_ms_ = std::min(poll_ms_ * 2, 20);
@@ -238,10 +253,15 @@ class Sender {
           st_ = read_status();
           continue;
         }
+        // Chunks start at the controller's acknowledged position and are
+        // numbered from its acknowledged sequence: after a resume both come
+        // from the controller, so nothing is skipped and nothing doubled.
         const std::size_t n = std::min<std::size_t>(want, st_.buffer_free);
         const auto regs = encode_chunk({session_, seq + 1, prog_.substr(sent, n)});
         sent_high_ = std::max<std::uint64_t>(sent_high_, sent + n);
         st_ = write_read(reg::chunk, regs);
+        // The acknowledgement must account for exactly this chunk; anything
+        // else means the two sides disagree about the program.
         if (st_.ack_seq != seq + 1 || st_.ack_bytes != sent + n)
           throw ControllerError("link.ack", to_.str(),
                                 "chunk " + std::to_string(seq + 1) + " was acknowledged as sequence " +
@@ -251,7 +271,7 @@ class Sender {
         sent += n;
         ++chunks_;
         acked_high_ = std::max<std::uint64_t>(acked_high_, st_.ack_bytes);
-        failures_ = 0;
+        failures_ = 0;  // progress: the reconnection budget starts afresh
         poll_ms_ = 1;
         check_stall();
         report();
@@ -275,6 +295,9 @@ class Sender {
     }
   }
 
+  // COMMIT is idempotent on the controller, so a COMMIT whose reply was
+  // lost is either visible in the state after reconnecting (FINISHING or
+  // DONE) or simply sent again.
   void commit() {
     const auto cmd = encode_command(
         Command::commit, std::array<std::uint32_t, 4>{token_, session_, static_cast<std::uint32_t>(prog_.size()), crc_});
@@ -319,7 +342,10 @@ class Sender {
     report();
   }
 
-  // Replaces the connection; throws IoError when the budget is spent.
+  // Replaces the connection; throws IoError when the budget is spent. The
+  // budget counts attempts since the last acknowledged progress, so a link
+  // that keeps failing without letting a byte through ends in bounded time,
+  // while a long transfer may survive many separate outages.
   void reconnect_raw(const std::string& why) {
     client_.reset();
     event("connection lost (" + why + "); reconnecting");
@@ -333,7 +359,7 @@ class Sender {
                           " bytes had been acknowledged. The controller keeps the transfer until its session "
                           "timeout; check the link and stream again");
       ++failures_;
-      if (attempt > 1) {
+      if (attempt > 1) {  // back off: 50, 100, 200 ... 1000 ms, within the deadline
         const auto wait = milliseconds(std::min(1000, 50 << std::min(attempt - 2, 5)));
         std::this_thread::sleep_for(std::min<milliseconds>(wait, std::chrono::duration_cast<milliseconds>(
                                                                      deadline - Clock::now())));
@@ -362,6 +388,9 @@ class Sender {
                                                        ", more than was sent; the program may be corrupted");
   }
 
+  // Reconnect, then decide: the same session is resumed from the
+  // controller's position; any other session (0 after a restart, or another
+  // sender's program) is a lost transfer and is never written into.
   void reconnect(const std::string& why) {
     for (;;) {
       reconnect_raw(why);

@@ -72,6 +72,8 @@ int trace_sample_count(const MotionBlock& b) {
   return 0;
 }
 
+// The end point is exact (it is what the program printed); the samples show
+// the shape between, at parameters k/(n+1) so that neither end repeats.
 std::string trace_block(const MotionBlock& b) {
   std::string s = line_ref(b) + " " + kind_name(b.kind) + " to " + xyz(b.to);
   if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) s += " center " + xyz(b.center);
@@ -87,6 +89,8 @@ std::string trace_block(const MotionBlock& b) {
   return s;
 }
 
+// Only what a machinist would check between moves: units, distance mode,
+// tool, spindle, program end. Feed is on each move record instead.
 std::string trace_state(int line, const MachineState& a, const MachineState& b) {
   std::string s;
   const std::string at = "line " + std::to_string(line) + " ";
@@ -100,6 +104,7 @@ std::string trace_state(int line, const MachineState& a, const MachineState& b) 
 }
 
 std::string trace_alarm(int line, std::string_view code, std::string_view id, std::string_view message) {
+  // One record per line: a message's own line breaks would split it.
   std::string m(message);
   for (char& c : m)
     if (c == '\n' || c == '\r') c = ' ';
@@ -125,6 +130,8 @@ std::vector<std::string_view> split(std::string_view s, char sep, bool skip_empt
   return out;
 }
 
+// A token is a number only if it reads as one whole; "1-5" (a line range)
+// or "arc_cw" stay words and must match exactly.
 std::optional<double> as_number(std::string_view t) {
   double v = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
@@ -134,6 +141,8 @@ std::optional<double> as_number(std::string_view t) {
 
 }  // namespace
 
+// Structure (lines, field counts, words) must match exactly; only numbers get
+// the tolerance, so a changed move kind or line number is always caught.
 std::optional<TraceMismatch> compare_traces(std::string_view expected, std::string_view actual, double tolerance) {
   const auto el = split(expected, '\n', false), al = split(actual, '\n', false);
   const std::size_t n = std::max(el.size(), al.size());

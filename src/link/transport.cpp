@@ -13,6 +13,8 @@ std::string Endpoint::str() const {
   return (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
 }
 
+// Accepts what people type: "host:port", "[v6]:port", ":port" and a bare
+// port; the host defaults to loopback, the safe choice.
 Endpoint parse_endpoint(std::string_view text, bool allow_zero) {
   const std::string shown(text);
   auto bad = [&](const std::string& why) -> InputError {
@@ -43,12 +45,14 @@ Endpoint parse_endpoint(std::string_view text, bool allow_zero) {
 
 ModbusClient::ModbusClient(const Endpoint& to, std::chrono::milliseconds timeout) : to_(to) {
   const std::string service = std::to_string(to.port);
+  // The _pi variant resolves host names and IPv6 as well as dotted quads.
   ctx_ = modbus_new_tcp_pi(to.host.c_str(), service.c_str());
   if (!ctx_) throw IoError("link.connection", to.str(), std::string("cannot create a Modbus context: ") + std::strerror(errno));
   const auto ms = std::max<long long>(1, timeout.count());
   modbus_set_response_timeout(ctx_, static_cast<uint32_t>(ms / 1000), static_cast<uint32_t>((ms % 1000) * 1000));
   // A reply's bytes arrive together on TCP; the same bound per byte is generous.
   modbus_set_byte_timeout(ctx_, static_cast<uint32_t>(ms / 1000), static_cast<uint32_t>((ms % 1000) * 1000));
+  // libmodbus bounds connect() by the response timeout too.
   if (modbus_connect(ctx_) == -1) {
     const int err = errno;
     modbus_free(ctx_);
@@ -69,6 +73,8 @@ void ModbusClient::close() {
   }
 }
 
+// libmodbus reports an exception reply as errno MODBUS_ENOBASE + code; the
+// controller answered, so the connection stays usable.
 void ModbusClient::fail(const char* what) {
   const int err = errno;
   if (err > MODBUS_ENOBASE && err < MODBUS_ENOBASE + MODBUS_EXCEPTION_MAX)
@@ -79,6 +85,8 @@ void ModbusClient::fail(const char* what) {
 }
 
 namespace {
+// The callers build requests from the register map's constants: a count
+// out of range is a bug here, not something the controller should see.
 void check_count(std::size_t n, std::size_t max, const Endpoint& to) {
   if (n == 0 || n > max)
     throw IoError("link.request", to.str(), "a request of " + std::to_string(n) + " registers is outside 1.." +
