@@ -7,6 +7,7 @@
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "cut_emitters.hpp"
+#include "measure_path.hpp"
 
 namespace bezcam::detail {
 
@@ -77,7 +78,7 @@ void emit_arcs(CutContext& c, EntityReport& r) {
   r.blocks = 0;
   r.bound = append_arcs_or_lines(c, pieces, path, r.blocks);
   if (c.measure) {
-    r.measured = measure_deviation(pieces, path, c.tolerance).max();
+    r.measured = measure_printed(pieces, path, c.tolerance, r.bound);
     // The sampled path lies within kSampleShare of the drawn one.
     if (r.measured > c.tolerance * (1 + kSampleShare))
       throw std::logic_error("internal check failed: " + r.label + " deviates by " + fmt_num(r.measured) +

@@ -8,6 +8,7 @@
 #include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/post/nurbs_blocks.hpp"
 #include "cut_emitters.hpp"
+#include "measure_path.hpp"
 
 namespace bezcam::detail {
 
@@ -104,7 +105,7 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
     }
   }
   if (c.measure) {
-    r.measured = measure_deviation(g.pieces, path, c.tolerance).max();
+    r.measured = measure_printed(g.pieces, path, c.tolerance, r.bound);
     if (r.measured > c.tolerance * (1 + 10 * kSampleShare))
       throw std::logic_error("internal check failed: " + r.label + " deviates by " + fmt_num(r.measured) +
                              " beyond the tolerance " + fmt_num(c.tolerance));
