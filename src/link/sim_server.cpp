@@ -105,6 +105,9 @@ void ModbusServer::evict_one_locked() {
   if (victim) ::shutdown(victim->fd, SHUT_RDWR);  // its thread sees the end of the stream and leaves
 }
 
+// The accept loop: poll() on the listening socket and the wake pipe, with
+// a 1 s timeout so finished connection threads are joined even when nobody
+// connects.
 void ModbusServer::run() {
   while (!stopping_) {
     pollfd p[2] = {{listen_fd_, POLLIN, 0}, {wake_[0], POLLIN, 0}};
@@ -167,6 +170,10 @@ void serve_connection(SimController& ctl, ConnId id, int fd, const ServerConfig&
                               : nullptr;
   if (ctx && map) {
     modbus_set_socket(ctx, fd);
+    // Indication timeout: how long a request may take to start (idle
+    // connections); byte timeout: how long between its bytes (half frames).
+    // Its own context and mapping per connection: a libmodbus context is
+    // not thread-safe, and modbus_reply then never reads shared memory.
     set_timeout(ctx, modbus_set_indication_timeout, cfg.idle_timeout);
     set_timeout(ctx, modbus_set_byte_timeout, cfg.frame_timeout);
     set_timeout(ctx, modbus_set_response_timeout, cfg.frame_timeout);
