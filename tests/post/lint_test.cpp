@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
+#include <random>
 #include <sstream>
 
+#include "bezcam/error.hpp"
 #include "bezcam/post/convert.hpp"
 #include "bezcam/post/gcode_reader.hpp"
 
@@ -169,4 +172,42 @@ TEST(Lint, LinuxCncBlocksAgainstTheProfile) {
   // The same words on a Fanuc are a dialect error, each line on its own.
   const auto f = lint_gcode(kHead + "G5.1 X10 Y0 I5 J5\n" + kTail, profile("fanuc"));
   EXPECT_EQ(brief(f), (std::vector<std::string>{"8:gcode.dialect"}));
+}
+
+TEST(Lint, SeededGarbageNeverCrashesTheReaderOrLint) {
+  // Random lines over the G-code alphabet (and valid fragments): the reader
+  // refuses with an InputError or reads, lint reports; nothing else escapes.
+  std::mt19937 rng(1234);
+  const std::string alphabet = "GXYZIJKRPQLFSTMNO0123456789.-+ ()%;/";
+  const std::vector<std::string> frags = {"G06.2 P4 K0 X0 Y0 Z0", "K0 X1", "K1", "G5.2 P1", "X1 Y1 P1", "G5.3",
+                                          "G02 X1 Y1 I1 J0",     "G01 X5 F100", "G03 X0 Y0 R5", "M30", "G5 P1 Q1"};
+  for (int trial = 0; trial < 400; ++trial) {
+    std::string prog = "G21 G90 G17\nG00 X0 Y0 Z0\nF100\n";
+    const int lines = 1 + static_cast<int>(rng() % 12);
+    for (int l = 0; l < lines; ++l) {
+      if (rng() % 2) {
+        prog += frags[rng() % frags.size()];
+      } else {
+        const int len = static_cast<int>(rng() % 24);
+        for (int c = 0; c < len; ++c) prog += alphabet[rng() % alphabet.size()];
+      }
+      prog += "\n";
+    }
+    try {
+      read_gcode(prog, &profile("fanuc"));
+      read_gcode(prog);
+    } catch (const InputError&) {
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "unexpected " << e.what() << " for\n" << prog;
+    }
+    for (const char* m : {"fanuc", "linuxcnc", "grbl"}) {
+      std::vector<GcodeFinding> fs;
+      EXPECT_NO_THROW(fs = lint_gcode(prog, profile(m))) << prog;
+      for (const auto& f : fs) {
+        EXPECT_GE(f.line, 1);
+        EXPECT_EQ(f.id.rfind("gcode.", 0), 0u) << f.id;
+        EXPECT_FALSE(f.message.empty());
+      }
+    }
+  }
 }
