@@ -208,8 +208,12 @@ class Planner {
       ExactBlock blk;
       blk.kind = pp.printed.rational() ? ExactKind::nurbs : ExactKind::bezier;
       blk.ctrl = pp.printed.points;
-      if (pp.printed.rational()) {
-        blk.weights = pp.printed.weights;
+      // LinuxCNC documents G5.1 with I and J both zero as an error: such a
+      // quadratic is written as the same curve with G5.2 (weights 1).
+      const bool degenerate = !pp.printed.rational() && pp.printed.degree() == 2 && blk.ctrl[1] == blk.ctrl[0];
+      if (degenerate) blk.kind = ExactKind::nurbs;
+      if (blk.kind == ExactKind::nurbs) {
+        blk.weights = degenerate ? std::vector<double>(3, 1.0) : pp.printed.weights;
         blk.order = pp.printed.degree() + 1;
         // The interpreter's clamped uniform knots: one Bézier span.
         blk.knots.assign(blk.order, 0.0);

@@ -249,6 +249,19 @@ TEST(NurbsBlocks, RankThreeMachineGetsQuadratics) {
   EXPECT_EQ(lines[0].kind, ExactKind::fallback);
 }
 
+TEST(NurbsBlocks, LinuxcncQuadraticWithZeroIJIsG52) {
+  // I = J = 0 after rounding: G5.1 would be refused by LinuxCNC's rules.
+  const auto g = single(Bezier::make({{0, 0}, {0.00004, 0}, {4, 3}}));
+  const auto blocks = plan_exact_blocks(g, linuxcnc());
+  ASSERT_EQ(blocks.size(), 1u);
+  EXPECT_EQ(blocks[0].kind, ExactKind::nurbs);
+  EXPECT_EQ(blocks[0].order, 3);
+  EXPECT_EQ(blocks[0].weights, (std::vector<double>{1, 1, 1}));
+  EXPECT_EQ(blocks[0].knots, (std::vector<double>{0, 0, 0, 1, 1, 1}));
+  EXPECT_EQ(blocks[0].ctrl[1], blocks[0].ctrl[0]);
+  check_plan(g, linuxcnc(), blocks);
+}
+
 TEST(NurbsBlocks, LinuxcncLeavesNonPlanarPiecesToTheFallback) {
   const Bezier c = Bezier::make({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}}, {}, 3);
   const auto g = single(c);
