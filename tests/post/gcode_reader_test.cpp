@@ -542,7 +542,10 @@ TEST(GcodeReader, AgreesWithLinuxCncInterpreter) {
   const fs::path dir = fs::temp_directory_path() / ("bezcam-rs274-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "p.ngc") << prog;
-  FILE* p = ::popen(("cd " + dir.string() + " && rs274 -g p.ngc 2>&1").c_str(), "r");
+  // Two rs274 processes at once share LinuxCNC's shared memory and die of
+  // SIGBUS: hold the same lock as linuxcnc_rs274_test.cpp (flock(1)).
+  const std::string lock = (fs::temp_directory_path() / "bezcam-rs274.lock").string();
+  FILE* p = ::popen(("cd " + dir.string() + " && flock " + lock + " rs274 -g p.ngc 2>&1").c_str(), "r");
   std::string out;
   char buf[4096];
   while (size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
