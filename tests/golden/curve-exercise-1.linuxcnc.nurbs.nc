@@ -1,0 +1,16 @@
+%
+(bezcam 0.1.0: curve-exercise-1.json, machine linuxcnc, output nurbs)
+(tolerance 0.01 mm; largest deviation measured 0. mm, proven bound 0. mm, rounding included)
+G21 G90 G17
+T1 M6
+S12000 M3
+(entity seed-ex-1: bezier, degree 2, 2D)
+G0 Z5.
+X0. Y0.
+G1 Z-0.5 F200.
+G5.1 X1. Y1. I2. J0. F600.
+G0 Z5.
+M05
+G00 Z5.
+M30
+%

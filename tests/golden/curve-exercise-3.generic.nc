@@ -1,0 +1,20 @@
+%
+(bezcam 0.1.0: curve-exercise-3.json, machine generic, output lines)
+(tolerance 0.01 mm; largest deviation measured 0.009777 mm, proven bound 0.009933 mm, rounding included)
+G21 G90 G17
+T1 M06
+S12000 M03
+(entity seed-ex-3: bezier, degree 2, 2D)
+G00 Z5.
+X-1. Y0.
+G01 Z-0.5 F200.
+X-0.545 Y0.403 F600.
+X-0.119 Y0.687
+X0.286 Y0.872
+X0.675 Y0.974
+X1. Y1.
+G00 Z5.
+M05
+G00 Z5.
+M30
+%

@@ -1,0 +1,29 @@
+%
+O1000 (BEZCAM)
+N10 (bezcam 0.1.0: curve-exercise-6.json, machine fanuc, output lines)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009479 mm, proven bound 0.009916 mm, rounding included)
+N30 G21 G90 G17
+N40 T1 M06
+N50 S12000 M03
+N60 (entity seed-ex-6: bezier, degree 3, 2D)
+N70 G00 Z5.
+N80 X0. Y0.
+N90 G01 Z-0.5 F200.
+N100 X0.44 Y0.036 F600.
+N110 X0.801 Y0.135
+N120 X1.085 Y0.284
+N130 X1.296 Y0.471
+N140 X1.432 Y0.685
+N150 X1.495 Y0.915
+N160 X1.485 Y1.149
+N170 X1.401 Y1.376
+N180 X1.244 Y1.585
+N190 X1.012 Y1.763
+N200 X0.706 Y1.899
+N210 X0.326 Y1.981
+N220 X0. Y2.
+N230 G00 Z5.
+N240 M05
+N250 G00 Z5.
+N260 M30
+%

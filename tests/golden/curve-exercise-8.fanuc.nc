@@ -1,0 +1,29 @@
+%
+O1000 (BEZCAM)
+N10 (bezcam 0.1.0: curve-exercise-8.json, machine fanuc, output lines)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009543 mm, proven bound 0.009955 mm, rounding included)
+N30 G21 G90 G17
+N40 T1 M06
+N50 S12000 M03
+N60 (entity seed-ex-8: bezier, degree 3, 2D)
+N70 G00 Z5.
+N80 X0. Y0.
+N90 G01 Z-0.5 F200.
+N100 X0.349 Y0.031 F600.
+N110 X0.511 Y0.099
+N120 X0.572 Y0.189
+N130 X0.562 Y0.314
+N140 X0.442 Y0.522
+N150 X0.056 Y0.944
+N160 X-0.414 Y1.442
+N170 X-0.555 Y1.667
+N180 X-0.575 Y1.801
+N190 X-0.521 Y1.893
+N200 X-0.373 Y1.963
+N210 X-0.056 Y1.999
+N220 X0. Y2.
+N230 G00 Z5.
+N240 M05
+N250 G00 Z5.
+N260 M30
+%

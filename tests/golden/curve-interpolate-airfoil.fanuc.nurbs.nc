@@ -1,0 +1,31 @@
+%
+O1000 (BEZCAM)
+N10 (bezcam 0.1.0: curve-interpolate-airfoil.json, machine fanuc, output nurbs)
+N20 (tolerance 0.01 mm; largest deviation measured 0.000382 mm, proven bound 0.000521 mm, rounding included)
+N30 G21 G90 G17
+N40 T1 M06
+N50 S18000 M03
+N60 (entity upper-surface: interpolate, degree 3, 2D)
+N70 G00 Z5.
+N80 X0. Y0.
+N90 G01 Z-1. F300.
+N100 G06.2 P4 K0. X0. Y0. Z-1. R1. F1200.
+N110 K0. X0.501 Y1.873 Z-1. R1.
+N120 K0. X1.688 Y6.309 Z-1. R1.
+N130 K0. X9.435 Y11.465 Z-1. R1.
+N140 K0.2871 X22.229 Y15.669 Z-1. R1.
+N150 K0.6797 X39.946 Y17.894 Z-1. R1.
+N160 K1.3275 X63.403 Y17.366 Z-1. R1.
+N170 K2.351 X90.156 Y14.311 Z-1. R1.
+N180 K3.3647 X120.171 Y8.878 Z-1. R1.
+N190 K4.8938 X140.022 Y4.035 Z-1. R1.
+N200 K6.4387 X150. Y1.6 Z-1. R1.
+N210 K8.
+N220 K8.
+N230 K8.
+N240 K8.
+N250 G00 Z5.
+N260 M05
+N270 G00 Z5.
+N280 M30
+%

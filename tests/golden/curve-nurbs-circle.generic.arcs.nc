@@ -1,0 +1,19 @@
+%
+(bezcam 0.1.0: curve-nurbs-circle.json, machine generic, output arcs)
+(tolerance 0.01 mm; largest deviation measured 0. mm, proven bound 0.000002 mm, rounding included)
+G21 G90 G17
+T1 M06
+S12000 M03
+(entity circle-d80: bspline, degree 2, rational, 2D)
+G00 Z5.
+X100. Y50.
+G01 Z-1. F300.
+G03 X60. Y90. I-40. J0. F1000.
+G03 X20. Y50. I0. J-40.
+G03 X60. Y10. I40. J0.
+G03 X100. Y50. I0. J40.
+G00 Z5.
+M05
+G00 Z5.
+M30
+%

@@ -1,0 +1,31 @@
+%
+(bezcam 0.1.0: curve-nurbs-circle.json, machine linuxcnc, output nurbs)
+(tolerance 0.01 mm; largest deviation measured 0.000066 mm, proven bound 0.000075 mm, rounding included)
+G21 G90 G17
+T1 M6
+S12000 M3
+(entity circle-d80: bspline, degree 2, rational, 2D)
+G0 Z5.
+X100. Y50.
+G1 Z-1. F300.
+G5.2 P1. L3 F1000.
+X100. Y90. P0.7071
+X60. Y90. P1.
+G5.3
+G5.2 P1. L3
+X20. Y90. P0.7071
+X20. Y50. P1.
+G5.3
+G5.2 P1. L3
+X20. Y10. P0.7071
+X60. Y10. P1.
+G5.3
+G5.2 P1. L3
+X100. Y10. P0.7071
+X100. Y50. P1.
+G5.3
+G0 Z5.
+M05
+G00 Z5.
+M30
+%

@@ -1,0 +1,22 @@
+%
+O1000 (BEZCAM)
+(bezcam 0.1.0: curve-rational-quarter-circle.json, machine fanuc-g063, output nurbs)
+(tolerance 0.01 mm; largest deviation measured 0.000259 mm, proven bound 0.000291 mm, rounding included)
+G21 G90 G17
+T1 M06
+S12000 M03
+(entity quarter-circle-r10: bezier, degree 2, rational, 2D)
+G00 Z5.
+X10. Y0.
+G01 Z-1. F300.
+G06.3 P3 K0.000000 X10.000 Y0.000 Z-1.000 R1.000 F1000.
+K0.000000 X10.000 Y10.000 Z-1.000 R0.707
+K0.000000 X0.000 Y10.000 Z-1.000 R1.000
+K1.000000
+K1.000000
+K1.000000
+G00 Z5.
+M05
+G00 Z5.
+M30
+%

@@ -1,0 +1,35 @@
+%
+O1000 (BEZCAM)
+N10 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine fanuc, output lines)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009658 mm, proven bound 0.009987 mm, rounding included)
+N30 G21 G90 G17
+N40 T1 M06
+N50 S12000 M03
+N60 (entity quarter-circle-r10: bezier, degree 2, rational, 2D)
+N70 G00 Z5.
+N80 X10. Y0.
+N90 G01 Z-1. F300.
+N100 X9.962 Y0.866 F1000.
+N110 X9.851 Y1.718
+N120 X9.666 Y2.562
+N130 X9.41 Y3.383
+N140 X9.084 Y4.181
+N150 X8.684 Y4.959
+N160 X8.218 Y5.697
+N170 X7.694 Y6.388
+N180 X7.114 Y7.028
+N190 X6.483 Y7.614
+N200 X5.8 Y8.146
+N210 X5.077 Y8.616
+N220 X4.332 Y9.013
+N230 X3.531 Y9.356
+N240 X2.719 Y9.623
+N250 X1.896 Y9.819
+N260 X1.052 Y9.945
+N270 X0.206 Y9.998
+N280 X0. Y10.
+N290 G00 Z5.
+N300 M05
+N310 G00 Z5.
+N320 M30
+%

@@ -1,0 +1,14 @@
+(bezcam 0.1.0: curve-rational-quarter-circle.json, machine grbl, output arcs)
+(tolerance 0.01 mm; largest deviation measured 0. mm, proven bound 0.000001 mm, rounding included)
+G21 G90 G17
+(tool 1)
+S12000 M3
+(entity quarter-circle-r10: bezier, degree 2, rational, 2D)
+G0 Z5.
+X10. Y0.
+G1 Z-1. F300.
+G3 X0. Y10. I-10. J0. F1000.
+G0 Z5.
+M5
+G0 Z5.
+M30

@@ -1,0 +1,19 @@
+(bezcam 0.1.0: curve-semicircle.json, machine grbl, output nurbs)
+(tolerance 0.005 mm; largest deviation measured 0.00488 mm, proven bound 0.004891 mm, rounding included)
+(machine grbl has no NURBS words: --output nurbs cuts with arcs [G02/G03] and G01 lines)
+G21 G90 G17
+(tool 1)
+S12000 M3
+(entity semicircle-r3: bezier, degree 3, 2D)
+G0 Z5.
+X-3. Y0.
+G1 Z-0.5 F200.
+G2 X-2.372 Y1.925 I3.023 J0.079 F800.
+G2 X-0.267 Y2.989 I2.286 J-1.909
+G2 X2.131 Y2.187 I0.295 J-3.104
+G2 X2.995 Y0.19 I-2.031 J-2.064
+G1 X3. Y0.
+G0 Z5.
+M5
+G0 Z5.
+M30
