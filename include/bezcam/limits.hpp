@@ -31,11 +31,15 @@ inline constexpr std::size_t kMaxPatchCells = 10'000;
 /// Passes planned on one patch.
 inline constexpr std::size_t kMaxPassesPerPatch = 10'000;
 
-/// Programs: lines of a program bezcam writes (a NURBS block counts one line
-/// per control point and per knot-only block), lines the G-code reader and
-/// lint read, lines the simulated controller executes; also the vertices
-/// one flattening may produce. 2 million lines of about 30 bytes.
-inline constexpr std::size_t kMaxProgramLines = 2'000'000;
+/// Programs bezcam writes: at most this many lines (a NURBS block counts one
+/// line per control point and per knot-only block); also the vertices one
+/// flattening, or all the passes of one patch, may produce. Every program
+/// written is measured against the geometry (about 50 us per segment), so
+/// this also bounds the time a job may take: about a minute.
+inline constexpr std::size_t kMaxProgramLines = 1'000'000;
+/// Programs bezcam reads (the G-code reader, lint, the simulated
+/// controller): at most this many lines, twice what it writes.
+inline constexpr std::size_t kMaxReadLines = 2'000'000;
 /// Bytes of a program file the reader, lint, preview and stream accept
 /// (128 MiB).
 inline constexpr std::size_t kMaxProgramBytes = std::size_t{128} << 20;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
 #include "bezcam/post/gcode_reader.hpp"
 #include "command.hpp"
 
@@ -32,12 +33,7 @@ CLI::App* add(CLI::App& app) {
 int run() {
   const MachineProfile m = load_machine_profile(o.machine);
   if (std::filesystem::is_directory(o.file)) throw IoError("io.read", o.file, "is a directory, not a G-code file");
-  std::ifstream in(o.file, std::ios::binary);
-  if (!in) throw IoError("io.read", o.file, "cannot open the G-code file for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw IoError("io.read", o.file, "error while reading the G-code file");
-  const auto findings = lint_gcode(ss.str(), m);
+  const auto findings = lint_gcode(read_bounded(o.file, kMaxProgramBytes, "G-code file"), m);
   for (const auto& f : findings) std::cout << o.file << ":" << f.line << ": " << f.message << " [" << f.id << "]\n";
   if (!o.quiet)
     std::cerr << "bezcam: " << o.file << ": " << (findings.empty() ? "no findings" : std::to_string(findings.size()) +

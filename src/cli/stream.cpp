@@ -12,6 +12,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "bezcam/limits.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "command.hpp"
 
@@ -135,14 +136,8 @@ class Display {
   std::chrono::steady_clock::time_point drawn_{};
 };
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("io.read", path, "cannot open the program file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw IoError("io.read", path, "cannot read the program file");
-  return s.str();
-}
+// At most kMaxProgramBytes, refused before it is read (limits.hpp).
+std::string read_file(const std::string& path) { return read_bounded(path, kMaxProgramBytes, "program file"); }
 
 std::chrono::milliseconds ms(double seconds) {
   return std::chrono::milliseconds(static_cast<long long>(seconds * 1000.0 + 0.5));

@@ -88,13 +88,18 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
   const double large = tolerance;
   // Windows: the two sequences advance together along the curve.
   const size_t wP = 8 + 2 * polyline.size() / D.size();
-  const size_t wD = 8 + 4 * D.size() / polyline.size();
+  // (A window of one polyline segment's worth of dense samples either side
+  // is ample: consecutive samples are 1/64 of a segment apart. Any window
+  // can only over-read a distance, never under-read it.)
+  const size_t wD = 8 + D.size() / polyline.size();
   // Curve -> polyline, at the on-curve samples, then refined between them.
   {
     size_t hint = 0;
     std::vector<std::pair<double, size_t>> cand;
+    std::vector<size_t> near(D.size());  // nearest polyline segment of each sample
     for (size_t i = 0; i < D.size(); ++i) {
       const double d = dist_to_polyline(D[i].p, polyline, hint, wP, large);
+      near[i] = hint;
       cand.push_back({d, i});
     }
     std::partial_sort(cand.begin(), cand.begin() + std::min<size_t>(8, cand.size()), cand.end(),
@@ -107,9 +112,11 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
         if (j + 1 >= D.size()) continue;
         const Bezier& b = pieces[D[j + 1].piece];
         const double t0 = D[j].piece == D[j + 1].piece ? D[j].t : 0.0;
-        size_t h = 0;
+        // Around the sample's nearest segment, not the whole polyline: the
+        // refinement cost no longer grows with the program's length.
+        size_t h = near[j];
         const double m = golden_max(t0, D[j + 1].t, [&](double t) {
-          return dist_to_polyline(evaluate(b, t), polyline, h, polyline.size(), large);
+          return dist_to_polyline(evaluate(b, t), polyline, h, wP, large);
         });
         dev.curve_to_path = std::max(dev.curve_to_path, m);
       }
@@ -124,6 +131,7 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
       double d;
       size_t k;
       double s;
+      size_t near;  // nearest dense segment found
     };
     std::vector<Cand> cand;
     size_t hint = 0;
@@ -134,15 +142,18 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
       const int steps = k + 1 < polyline.size() ? kSteps : 1;
       for (int i = 0; i < steps; ++i) {
         const double s = double(i) / steps;
-        cand.push_back({dist_to_polyline(point_at(k, s), dpts, hint, wD, large), k, s});
+        const double d = dist_to_polyline(point_at(k, s), dpts, hint, wD, large);
+        cand.push_back({d, k, s, hint});
       }
     }
     const size_t top = std::min<size_t>(8, cand.size());
     std::partial_sort(cand.begin(), cand.begin() + top, cand.end(), [](auto& x, auto& y) { return x.d > y.d; });
     // Exact distance from x to the true curve near its nearest dense sample.
-    auto to_curve = [&](const Vec3& x) {
-      size_t seg = 0, h = 0;
-      double d = dist_to_polyline(x, dpts, h, dpts.size(), large, &seg);
+    // Searched around the candidate's nearest dense segment (a whole-chain
+    // scan per evaluation made long programs quadratic).
+    auto to_curve = [&](const Vec3& x, size_t near) {
+      size_t seg = 0, h = near;
+      double d = dist_to_polyline(x, dpts, h, wD, large, &seg);
       const size_t lo = seg > 0 ? seg - 1 : 0, hi = std::min(seg + 2, D.size() - 1);
       for (size_t j = lo; j < hi; ++j) {
         if (D[j].piece == D[j + 1].piece && D[j + 1].t <= D[j].t) continue;
@@ -155,12 +166,12 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
     for (size_t c = 0; c < top; ++c) {
       const auto& cd = cand[c];
       if (cd.k + 1 >= polyline.size()) {
-        dev.path_to_curve = std::max(dev.path_to_curve, to_curve(polyline[cd.k]));
+        dev.path_to_curve = std::max(dev.path_to_curve, to_curve(polyline[cd.k], cd.near));
         continue;
       }
       const double a = std::max(0.0, cd.s - 1.0 / kSteps), b = std::min(1.0, cd.s + 1.0 / kSteps);
       dev.path_to_curve =
-          std::max(dev.path_to_curve, golden_max(a, b, [&](double s) { return to_curve(point_at(cd.k, s)); }));
+          std::max(dev.path_to_curve, golden_max(a, b, [&](double s) { return to_curve(point_at(cd.k, s), cd.near); }));
     }
   }
   return dev;

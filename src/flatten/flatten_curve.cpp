@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <queue>
 #include <stdexcept>
@@ -238,11 +239,40 @@ struct Prepared {
   }
 };
 
+// Three significant digits, rounded up, for figures in advice.
+std::string short_num(double v) {
+  char buf[32];
+  const double mag = std::pow(10.0, std::floor(std::log10(v)) - 2);
+  std::snprintf(buf, sizeof buf, "%g", std::ceil(v / mag) * mag);
+  return buf;
+}
+
 }  // namespace
 
 double chord_deviation(const Bezier& piece, double t0, double t1) {
   const Prepared p(piece);
   return p.deviation(t0, t1, p.point(t0), p.point(t1), -1);
+}
+
+double estimate_segments(std::span<const Bezier> pieces, double tolerance) {
+  // Gauss-Legendre nodes would do no better on the kinks of a wild piece;
+  // midpoints avoid the ends, where a cusp makes the integrand singular.
+  constexpr int kSamples = 16;
+  double total = 0;
+  for (const auto& b : pieces) {
+    double n = 0;
+    if (b.degree() >= 2) {
+      for (int i = 0; i < kSamples; ++i) {
+        const double t = (i + 0.5) / kSamples;
+        const Vec3 d1 = derivative(b, t), d2 = second_derivative(b, t);
+        const double speed = norm(d1);
+        // sqrt(k / (8 tol)) |M'| with k = |M' x M''| / |M'|^3.
+        if (speed > 0) n += std::sqrt(norm(cross(d1, d2)) / (8 * tolerance * speed)) / kSamples;
+      }
+    }
+    total += std::isfinite(n) ? std::max(1.0, std::ceil(n)) : kInf;
+  }
+  return total;
 }
 
 double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
@@ -256,8 +286,8 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
   if (rmax >= 0.9 * tol)
     throw InputError("flatten.tolerance-below-rounding", "tolerance",
                      "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(opt.decimals) +
-                         " decimals: rounding alone moves a point by up to " + fmt_num(rmax) +
-                         "; use a tolerance above " + fmt_num(rmax / 0.9) + " or a profile with more decimals");
+                         " decimals: rounding alone moves a point by up to " + short_num(rmax) +
+                         "; use a tolerance above " + short_num(rmax / 0.9) + " or a profile with more decimals");
   double scale = 0;
   for (const auto& pc : pieces)
     for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
@@ -265,11 +295,28 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
   if (margin >= 0.05 * tol)
     throw InputError("flatten.tolerance-below-precision", "tolerance",
                      "tolerance " + fmt_num(tol) + " is too small for coordinates of magnitude " + fmt_num(scale) +
-                         " in double precision; use a tolerance above " + fmt_num(margin * 20));
+                         " in double precision; use a tolerance above " + short_num(margin * 20));
+
+  // Stated limit (limits.hpp): a count that would exceed it is refused
+  // before the work, or as soon as it is exceeded.
+  auto too_many = [&](const std::string& found) {
+    return InputError("limit.segments", "tolerance",
+                      "flattening within tolerance " + fmt_num(tol) + " needs " + found + " segments, more than the " +
+                          std::to_string(opt.max_vertices) +
+                          " a program may hold (docs/limits.md); raise the tolerance or split the curve");
+  };
+  const double estimate = estimate_segments(pieces, tol - rmax);
+  if (estimate > static_cast<double>(opt.max_vertices))
+    throw too_many("about " + (std::isfinite(estimate) ? fmt_num(std::round(estimate)) : std::string("infinitely many")));
+  std::size_t emitted = 0;
+  auto emit_counted = [&](const FlatVertex& v) {
+    if (++emitted > opt.max_vertices) throw too_many("at least " + std::to_string(emitted));
+    emit(v);
+  };
 
   double bound = 0;
   Vec3 Ar = quantize(pieces.front().front(), opt.decimals);
-  emit({Ar, 0, 0});
+  emit_counted({Ar, 0, 0});
   double dt_hint = -1;
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
     const Prepared P(pieces[pi]);
@@ -319,7 +366,7 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
       if (!found) throw std::logic_error("flatten: no chord fits (internal error)");
       const double t1 = best_t1;
       bound = std::max(bound, best_dev + best_disp);
-      emit({bestBr, pi, t1});
+      emit_counted({bestBr, pi, t1});
       // Next guess: the same step scaled by the room this chord left and by
       // the change of bending between this chord's middle and the next's.
       if (t1 >= 1) {

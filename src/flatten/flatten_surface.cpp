@@ -394,12 +394,35 @@ void check_options(const PassOptions& o) {
   if (o.direction != 'u' && o.direction != 'v') throw std::logic_error("pass direction must be u or v");
 }
 
-Pass make_pass(const SurfaceGeometry& s, const PassOptions& o, double at) {
+// `max_vertices`: what is left of the patch's share of the program
+// (limits.hpp); flatten_tip() refuses more.
+Pass make_pass(const SurfaceGeometry& s, const PassOptions& o, double at, size_t max_vertices) {
   Pass p;
   p.at = at;
   p.curve = iso_curve(s, o.direction, at, o.tool_radius > 0);
-  p.poly = flatten_tip(p.curve, o.tool_radius, {o.tolerance, o.decimals});
+  FlattenOptions fo{o.tolerance, o.decimals};
+  fo.max_vertices = max_vertices;
+  p.poly = flatten_tip(p.curve, o.tool_radius, fo);
   return p;
+}
+
+// Stated limit (limits.hpp): the passes of one patch together produce at
+// most kMaxProgramLines vertices. Estimated from the exact pass curves
+// before any is flattened (the tip of a ball-end tool bends about as its
+// surface curve does), so a stepover and a tolerance that would need
+// millions are refused at once; counted while flattening as well.
+void check_pass_segments(const SurfaceGeometry& s, const PassOptions& o, const std::vector<double>& ats) {
+  const double budget = o.tolerance - max_rounding_displacement(o.decimals, 3);
+  if (!(budget > 0)) return;  // the flattener refuses that, naming the decimals
+  double total = 0;
+  for (double c : ats) total += estimate_segments(iso_curve(s, o.direction, c, false).points, budget);
+  if (total > static_cast<double>(kMaxProgramLines))
+    throw InputError("limit.segments", "tolerance",
+                     "the patch's " + std::to_string(ats.size()) + " passes need about " +
+                         (std::isfinite(total) ? fmt_num(std::round(total)) : std::string("infinitely many")) +
+                         " segments within tolerance " + fmt_num(o.tolerance) + ", more than the " +
+                         std::to_string(kMaxProgramLines) +
+                         " a program may hold (docs/limits.md); raise the tolerance or the stepover");
 }
 
 double target_gap(const PassOptions& o) { return 0.97 * (o.stepover - 2 * o.tolerance); }
@@ -418,8 +441,15 @@ double resolution_of(const PassOptions& o) { return o.stepover / 40; }
 PassPlan build_and_verify(const SurfaceGeometry& s, const PassOptions& o, const std::vector<double>& ats,
                           bool allow_insert) {
   if (ats.size() > kMaxPassesPerPatch) too_many_passes(o, std::to_string(ats.size()));
+  check_pass_segments(s, o, ats);
   PassPlan plan;
-  for (double c : ats) plan.passes.push_back(make_pass(s, o, c));
+  size_t vertices = 0;  // of every pass so far
+  auto pass_at = [&](double c) {
+    Pass p = make_pass(s, o, c, kMaxProgramLines - std::min(vertices, kMaxProgramLines));
+    vertices += p.poly.points.size();
+    return p;
+  };
+  for (double c : ats) plan.passes.push_back(pass_at(c));
   const double res = resolution_of(o);
   for (size_t i = 0; i + 1 < plan.passes.size();) {
     const double g = polyline_gap_bound(plan.passes[i].poly, plan.passes[i + 1].poly, res, o.stepover);
@@ -440,7 +470,7 @@ PassPlan build_and_verify(const SurfaceGeometry& s, const PassOptions& o, const 
                            "the tool path jumps there (a crease under a ball-end tool?); use a larger stepover or a "
                            "smaller tool_radius");
     if (plan.passes.size() >= kMaxPassesPerPatch) too_many_passes(o, "more than " + std::to_string(plan.passes.size()));
-    plan.passes.insert(plan.passes.begin() + static_cast<std::ptrdiff_t>(i) + 1, make_pass(s, o, 0.5 * (a + b)));
+    plan.passes.insert(plan.passes.begin() + static_cast<std::ptrdiff_t>(i) + 1, pass_at(0.5 * (a + b)));
     ++plan.refined;
   }
   for (const auto& p : plan.passes) plan.bound = std::max(plan.bound, p.poly.bound);

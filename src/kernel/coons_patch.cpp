@@ -5,6 +5,7 @@
 
 #include "bernstein_ops.hpp"
 #include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
 
 namespace bezcam {
 
@@ -213,6 +214,15 @@ PatchGrid to_bezier_cells(const CoonsPatch& s) {
   PatchGrid g;
   g.ubreaks = merge_breaks(s.v0.breaks, s.v1.breaks);
   g.vbreaks = merge_breaks(s.u0.breaks, s.u1.breaks);
+  // One exact cell per pair of spans across: refuse a grid too large to
+  // hold or to cut before building it (limits.hpp).
+  const size_t cells = (g.ubreaks.size() - 1) * (g.vbreaks.size() - 1);
+  if (cells > kMaxPatchCells)
+    throw InputError("limit.patch-cells", "boundaries",
+                     "the boundaries' " + std::to_string(g.ubreaks.size() - 1) + " spans along u and " +
+                         std::to_string(g.vbreaks.size() - 1) + " along v make " + std::to_string(cells) +
+                         " exact Bézier cells, more than the limit of " + std::to_string(kMaxPatchCells) +
+                         " (docs/limits.md); use boundary curves with fewer knot spans or split the patch");
   bool rational = false;
   for (const BoundaryCurve* c : {&s.v0, &s.v1, &s.u0, &s.u1})
     for (const auto& b : c->pieces) rational = rational || b.rational();

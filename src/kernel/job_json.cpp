@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "bezcam/limits.hpp"
 #include "job_json_detail.hpp"
 
 namespace bezcam {
@@ -100,6 +101,7 @@ Vec3 JsonCtx::point(const json& v, const std::string& path, int* dim) const {
 }
 std::vector<Vec3> JsonCtx::points(const json& v, const std::string& path, int* dim, size_t min_size) const {
   array(v, path, min_size);
+  count_points(v.size(), path);
   std::vector<Vec3> out;
   out.reserve(v.size());
   for (size_t i = 0; i < v.size(); ++i) out.push_back(point(v[i], path + "[" + std::to_string(i) + "]", dim));
@@ -111,6 +113,23 @@ std::vector<double> JsonCtx::numbers(const json& v, const std::string& path) con
   out.reserve(v.size());
   for (size_t i = 0; i < v.size(); ++i) out.push_back(number(v[i], path + "[" + std::to_string(i) + "]"));
   return out;
+}
+
+void JsonCtx::count_points(std::size_t n, const std::string& path) const {
+  entity_points += n;
+  if (entity_points > kMaxEntityPoints)
+    fail(path, "limit.points",
+         "expected at most " + std::to_string(kMaxEntityPoints) + " points in one entity (docs/limits.md), found " +
+             (entity_points == n ? std::to_string(n) : std::to_string(entity_points) + " with these") +
+             "; split the geometry into several entities");
+}
+void JsonCtx::count_bezier_points(std::size_t n, const std::string& path) const {
+  job_points += n;
+  if (job_points > kMaxJobPoints)
+    fail(path, "limit.points",
+         "the job's curves and patches need " + std::to_string(job_points) +
+             " control points in their exact Bézier form with this one, more than the limit of " +
+             std::to_string(kMaxJobPoints) + " (docs/limits.md); split the job into several files");
 }
 
 CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::string& path, int* dim,
@@ -125,6 +144,7 @@ CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::
     auto pts = ctx.points(ctx.require(obj, path, "points"), path + ".points", dim, 2);
     std::vector<double> w;
     if (obj.contains("weights")) w = ctx.numbers(obj["weights"], path + ".weights");
+    ctx.count_bezier_points(pts.size(), path + ".points");
     pieces.push_back(ctx.at(path, [&] { return Bezier::make(std::move(pts), std::move(w), *dim); }));
     seg.degree = pieces.back().degree();
     seg.rational = pieces.back().rational();
@@ -184,6 +204,7 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   if (!obj.is_object()) ctx.expected(path, "an entity object", obj);
   Entity e;
   e.index = index;
+  ctx.entity_points = 0;
   e.type = ctx.string(ctx.require(obj, path, "type"), path + ".type");
   if (auto it = obj.find("id"); it != obj.end()) e.id = ctx.string(*it, path + ".id");
   e.params = parse_params(ctx, obj, path, true);
@@ -255,6 +276,10 @@ Job parse_job(std::string_view text, const std::string& source) {
   Job job;
   job.source = source;
   detail::JsonCtx ctx{source, &job.warnings};
+  if (text.size() > kMaxJobBytes)
+    throw InputError("limit.file-size", source,
+                     "the job file is " + std::to_string(text.size() >> 20) + " MiB, more than bezcam reads (" +
+                         std::to_string(kMaxJobBytes >> 20) + " MiB, docs/limits.md); split it into smaller files");
   json doc;
   try {
     doc = json::parse(text.begin(), text.end());
@@ -320,18 +345,17 @@ Job parse_job(std::string_view text, const std::string& source) {
     job.params = detail::parse_params(ctx, *it, "job", false);
   }
   const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
+  if (ents.size() > kMaxEntities)
+    ctx.fail("entities", "limit.entities",
+             "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md), found " +
+                 std::to_string(ents.size()) + "; split the job into several files");
   for (size_t i = 0; i < ents.size(); ++i) job.entities.push_back(detail::parse_entity(ctx, ents[i], i));
   detail::resolve_surface_references(ctx, ents, job);  // curve_on_surface naming a patch by id
   return job;
 }
 
 Job load_job(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError("io.read", file.string(), "cannot open the job file for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw IoError("io.read", file.string(), "error while reading the job file");
-  return parse_job(ss.str(), file.string());
+  return parse_job(read_bounded(file, kMaxJobBytes, "job file"), file.string());
 }
 
 }  // namespace bezcam

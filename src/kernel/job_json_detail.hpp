@@ -16,6 +16,9 @@ using json = nlohmann::json;
 struct JsonCtx {
   std::string source;
   std::vector<std::string>* warnings = nullptr;
+  // Limits (bezcam/limits.hpp): points written in the entity being read,
+  // and points of the exact Bézier form of the whole job so far.
+  mutable std::size_t entity_points = 0, job_points = 0;
 
   [[noreturn]] void fail(const std::string& path, const std::string& id, const std::string& what) const;
   [[noreturn]] void expected(const std::string& path, const std::string& what, const json& found) const;
@@ -35,6 +38,12 @@ struct JsonCtx {
   Vec3 point(const json& v, const std::string& path, int* dim) const;
   std::vector<Vec3> points(const json& v, const std::string& path, int* dim, size_t min_size) const;
   std::vector<double> numbers(const json& v, const std::string& path) const;
+  /// Counts `n` points written at `path` (an array of points) against
+  /// kMaxEntityPoints for the entity being read; fails naming the path.
+  void count_points(std::size_t n, const std::string& path) const;
+  /// Counts `n` control points of the exact Bézier form against
+  /// kMaxJobPoints, before that form is built; fails naming the path.
+  void count_bezier_points(std::size_t n, const std::string& path) const;
   /// Runs f, re-throwing a kernel InputError with `path` prefixed to its place.
   template <class F>
   auto at(const std::string& path, F&& f) const -> decltype(f()) {

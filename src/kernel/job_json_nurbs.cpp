@@ -17,6 +17,10 @@ void parse_bspline_segment(const JsonCtx& ctx, const json& obj, const std::strin
   auto knots = ctx.numbers(ctx.require(obj, path, "knots"), path + ".knots");
   std::vector<double> weights;
   if (obj.contains("weights")) weights = ctx.numbers(obj["weights"], path + ".weights");
+  // Its Bézier form has at most one piece of degree + 1 points per span.
+  if (degree >= 1 && degree <= kMaxBezierDegree && pts.size() > static_cast<size_t>(degree))
+    ctx.count_bezier_points((pts.size() - static_cast<size_t>(degree)) * static_cast<size_t>(degree + 1),
+                            path + ".points");
   // Kernel errors name `knots[7]`, `weights[2]`, `degree`...: prefix the path.
   NurbsCurve c = ctx.at(path, [&] { return NurbsCurve::make(degree, pts, knots, weights, *dim); });
   // Equal weights cancel out: the curve is polynomial, and exactly so.
@@ -46,6 +50,8 @@ void parse_interpolate_entity(const JsonCtx& ctx, const json& obj, const std::st
              "a closed curve through the points is a periodic spline: use method \"cubic-spline\" with closed, or "
              "leave closed out for \"lagrange\"");
 
+  // Lagrange: one piece through every point; cubic spline: a cubic per gap.
+  ctx.count_bezier_points(method == "lagrange" ? through.size() : 4 * through.size(), path + ".through");
   CurveSegment seg;
   seg.kind = "interpolate";
   std::vector<Bezier> pieces;

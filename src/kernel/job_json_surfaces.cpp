@@ -84,6 +84,7 @@ std::shared_ptr<const SurfaceGeometry> parse_bezier_patch(const JsonCtx& ctx, co
   const json& pts = ctx.array(ctx.require(obj, path, "points"), path + ".points", 2);
   std::vector<std::vector<Vec3>> rows;
   for (size_t i = 0; i < pts.size(); ++i) rows.push_back(points3(ctx, pts[i], idx(path + ".points", i), 2));
+  ctx.count_bezier_points(pts.size() * rows.front().size(), path + ".points");
   std::vector<std::vector<double>> weights;
   if (auto it = obj.find("weights"); it != obj.end()) {
     ctx.array(*it, path + ".weights");

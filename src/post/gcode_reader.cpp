@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
 #include "bezcam/kernel/knot_vector.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 
@@ -228,6 +229,26 @@ struct GcodeInterpreter::Impl {
   std::vector<MotionBlock> out;
   Line ln;
   std::string word;  // the line's motion word as written (G06.3, G1, ...), if any
+  // The open block's lists as they were before this line (see feed_line()):
+  // their sizes, and a copy once the line clears or replaces them.
+  struct Lists {
+    std::vector<Vec3> ctrl;
+    std::vector<double> weights, knots;
+    std::vector<int> knot_lines;
+  };
+  std::array<size_t, 4> sizes0{};
+  bool lists_saved = false;
+  Lists saved{};
+  void save_lists() {
+    if (lists_saved) return;
+    lists_saved = true;
+    // Before this call the line only appended: the first sizes0 elements
+    // are the lists as they were.
+    saved.ctrl.assign(mo.ctrl.begin(), mo.ctrl.begin() + static_cast<std::ptrdiff_t>(sizes0[0]));
+    saved.weights.assign(mo.weights.begin(), mo.weights.begin() + static_cast<std::ptrdiff_t>(sizes0[1]));
+    saved.knots.assign(mo.knots.begin(), mo.knots.begin() + static_cast<std::ptrdiff_t>(sizes0[2]));
+    saved.knot_lines.assign(mo.knot_lines.begin(), mo.knot_lines.begin() + static_cast<std::ptrdiff_t>(sizes0[3]));
+  }
 
   // A motion code for messages: as written on this line, else canonical.
   std::string wt(int code) const { return word.empty() ? g_text(code) : word; }
@@ -307,7 +328,12 @@ struct GcodeInterpreter::Impl {
       w.letter = letter;
       w.text = std::string(1, letter) + num;
       const std::string digits_only = num[0] == '+' ? num.substr(1) : num;
-      std::from_chars(digits_only.data(), digits_only.data() + digits_only.size(), w.value);
+      const auto fc = std::from_chars(digits_only.data(), digits_only.data() + digits_only.size(), w.value);
+      // A number too large for a double must not read as 0 (from_chars
+      // leaves the value alone then): that would be a different program.
+      if (fc.ec != std::errc() || !std::isfinite(w.value))
+        fail("number", std::string("the number after '") + letter + "' is too large to read (" +
+                           std::to_string(num.size()) + " digits): expected at most about 1e308");
       add(std::move(w));
     }
     for (size_t k = 0; k < ln.words.size(); ++k) {
@@ -663,6 +689,7 @@ struct GcodeInterpreter::Impl {
   }
 
   void clear_block() {
+    save_lists();
     mo.open = 0;
     mo.ctrl.clear();
     mo.weights.clear();
@@ -1029,6 +1056,7 @@ struct GcodeInterpreter::Impl {
     mo.open_line = line;
     mo.order = order;
     mo.open_feed = st.feed;
+    save_lists();
     mo.ctrl = {st.pos};
     mo.weights = {1};
     if (ln.has('X') || ln.has('Y')) {
@@ -1114,6 +1142,7 @@ struct GcodeInterpreter::Impl {
     mo.open_line = line;
     mo.order = rank;
     mo.open_feed = st.feed;
+    save_lists();
     mo.ctrl = {p0};
     mo.weights = {w};
     mo.knots.clear();
@@ -1139,8 +1168,46 @@ GcodeInterpreter::GcodeInterpreter(const MachineProfile* profile) : profile_(pro
 
 std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int line_no) {
   more_.last_line = line_no;  // bookkeeping for finish(), even if the line is refused
-  Impl im{*this, state_, more_, line_no, {}, {}, {}};
-  im.run(text);
+  // Stated limits (limits.hpp), checked before the line is looked at.
+  if (static_cast<size_t>(line_no) > kMaxReadLines)
+    throw InputError("gcode.program-too-long", "line " + std::to_string(line_no),
+                     "the program has more than " + std::to_string(kMaxReadLines) +
+                         " lines, the most bezcam reads (docs/limits.md); split it into several programs");
+  while (!text.empty() && (text.back() == '\r' || text.back() == '\n')) text.remove_suffix(1);
+  if (text.size() > kMaxLineBytes)
+    throw InputError("gcode.line-too-long", "line " + std::to_string(line_no),
+                     "the line has " + std::to_string(text.size()) + " characters, more than the " +
+                         std::to_string(kMaxLineBytes) + " bezcam reads in one line (docs/limits.md)");
+  // The line runs on copies of the state, committed only when it is
+  // accepted. The open NURBS block's lists are moved in, not copied (a copy
+  // per line made a block of n control points cost n^2): until a line
+  // clears or replaces them (Impl::save_lists() keeps them then) it only
+  // appends, so a refused line is undone by cutting them back.
+  const std::array<size_t, 4> sizes{more_.ctrl.size(), more_.weights.size(), more_.knots.size(),
+                                    more_.knot_lines.size()};
+  Impl im{*this, state_, std::move(more_), line_no, {}, {}, {}};
+  im.sizes0 = sizes;
+  try {
+    im.run(text);
+  } catch (...) {
+    // more_ kept every scalar (moving copies them); give the lists back.
+    Impl::Lists& back = im.saved;
+    if (!im.lists_saved) {
+      back.ctrl = std::move(im.mo.ctrl);
+      back.weights = std::move(im.mo.weights);
+      back.knots = std::move(im.mo.knots);
+      back.knot_lines = std::move(im.mo.knot_lines);
+      back.ctrl.resize(sizes[0]);
+      back.weights.resize(sizes[1]);
+      back.knots.resize(sizes[2]);
+      back.knot_lines.resize(sizes[3]);
+    }
+    more_.ctrl = std::move(back.ctrl);
+    more_.weights = std::move(back.weights);
+    more_.knots = std::move(back.knots);
+    more_.knot_lines = std::move(back.knot_lines);
+    throw;
+  }
   state_ = im.st;
   more_ = std::move(im.mo);
   return std::move(im.out);
@@ -1160,7 +1227,22 @@ std::vector<MotionBlock> GcodeInterpreter::finish() {
   return {};
 }
 
+namespace {
+
+// The whole text's limit (limits.hpp); the lines' count and length are
+// checked line by line by feed_line().
+std::optional<GcodeFinding> too_large(std::string_view text) {
+  if (text.size() <= kMaxProgramBytes) return std::nullopt;
+  return GcodeFinding{1, "gcode.program-too-large",
+                      "the program is " + std::to_string(text.size() >> 20) + " MiB, more than the " +
+                          std::to_string(kMaxProgramBytes >> 20) +
+                          " MiB bezcam reads (docs/limits.md); split it into several programs"};
+}
+
+}  // namespace
+
 std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile* profile) {
+  if (const auto f = too_large(text)) throw InputError(f->id, "line 1", f->message);
   GcodeInterpreter in(profile);
   std::vector<MotionBlock> out;
   int no = 0;
@@ -1177,6 +1259,7 @@ std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile*
 }
 
 std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile& profile) {
+  if (const auto f = too_large(text)) return {*f};
   std::vector<GcodeFinding> findings;
   GcodeInterpreter in(&profile);
   in.findings_ = &findings;
@@ -1190,6 +1273,10 @@ std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile
       in.feed_line(text.substr(pos, end - pos), no);
     } catch (const InputError& e) {
       findings.push_back({no, e.id(), e.message()});  // the line is skipped
+      if (e.id() == "gcode.program-too-long") {  // and so is the rest: one finding, not millions
+        std::stable_sort(findings.begin(), findings.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
+        return findings;
+      }
     }
     pos = end + 1;
   }

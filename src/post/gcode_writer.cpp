@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "bezcam/post/number_format.hpp"
+#include "bezcam/limits.hpp"
 
 #ifndef BEZCAM_VERSION
 #define BEZCAM_VERSION "0"
@@ -22,7 +23,9 @@ std::string replace_all(std::string s, const std::string& from, const std::strin
 // ASCII only.
 std::string comment(const std::string& text) {
   std::string s;
-  for (unsigned char ch : text) {
+  // A long id must not make a line longer than a reader takes (limits.hpp).
+  const bool cut = text.size() > kMaxCommentBytes;
+  for (unsigned char ch : cut ? text.substr(0, kMaxCommentBytes - 3) + "..." : text) {
     if (ch == '(') s += '[';
     else if (ch == ')') s += ']';
     else if (ch < 32 || ch > 126) s += '?';

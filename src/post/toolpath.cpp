@@ -6,6 +6,7 @@
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/post/program_limits.hpp"
 #include "cut_emitters.hpp"
 
 namespace bezcam {
@@ -91,7 +92,8 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
   } catch (const InputError& e) {
     // The flattener knows neither the file nor the machine: say where the
     // tolerance came from and whose decimals it meets.
-    if (!e.id().starts_with("flatten.tolerance")) throw;
+    // (Also the flattener's own segment limit, found while flattening.)
+    if (!e.id().starts_with("flatten.tolerance") && !(e.id() == "limit.segments" && e.where() == "tolerance")) throw;
     throw InputError(e.id(), opt.tolerance ? std::string("--tolerance") : job.source + ": tolerance",
                      e.message() + " (machine \"" + m.name + "\" prints " + std::to_string(m.decimals(job.units)) +
                          " decimals in " + to_string(job.units) + ")");
@@ -115,9 +117,12 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
   double cur_rpm = -1;
   Vec3 pos;
   bool pos_known = false;
+  ProgramLength length;  // stated limits (program_limits.hpp)
   for (const Entity& e : job.entities) {
     if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
     const CutParams cp = cut_params(job, e, m);
+    check_entity_limits(job, e, p.tolerance, p.decimals, cp.tool_radius,
+                        opt.tolerance ? std::string("--tolerance") : job.source + ": tolerance");
     const double safe = quantize(cp.safe_z, p.decimals);
     p.safe_z = p.entities.empty() ? safe : std::min(p.safe_z, safe);
     const auto& g = e.curve;
@@ -128,6 +133,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
       p.max_measured = std::max(p.max_measured, r.measured);
       p.max_bound = std::max(p.max_bound, r.bound);
       p.entities.push_back(r);
+      length.after_entity(p, job, e);
       continue;
     }
     if (g.pieces.empty()) continue;
@@ -213,6 +219,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     p.max_measured = std::max(p.max_measured, r.measured);
     p.max_bound = std::max(p.max_bound, r.bound);
     p.entities.push_back(r);
+    length.after_entity(p, job, e);
   }
   if (opt.on_entity) opt.on_entity(job.entities.size(), job.entities.size(), "");
   return p;

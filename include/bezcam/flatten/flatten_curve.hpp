@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "bezcam/kernel/bezier.hpp"
+#include "bezcam/limits.hpp"
 
 namespace bezcam {
 
@@ -30,6 +31,10 @@ struct FlattenOptions {
   double tolerance = 0.01;
   /// Decimals the vertices will be printed with; -1: no rounding.
   int decimals = -1;
+  /// Most vertices one flattening may produce (limits.hpp): more is refused
+  /// with InputError "limit.segments", up front when estimate_segments()
+  /// predicts it, else as soon as it happens.
+  std::size_t max_vertices = kMaxProgramLines;
 };
 
 /// One emitted vertex: the rounded point, and for diagnostics the piece and
@@ -49,9 +54,17 @@ struct FlattenResult {
 /// exact up to floating-point error for polynomial pieces of degree <= 3.
 double chord_deviation(const Bezier& piece, double t0, double t1);
 
+/// About how many chords a flattening within `tolerance` needs: at least
+/// one per piece, and along a piece the integral of sqrt(k / (8 tolerance))
+/// ds (a chord of length l where the curvature is k deviates by about
+/// k l^2 / 8), sampled at 16 points per piece. Asymptotically exact for
+/// small tolerances, where counts explode; not a bound.
+double estimate_segments(std::span<const Bezier> pieces, double tolerance);
+
 /// Callback core: emits the vertices of the polyline in order (the first
 /// vertex is the start of the first piece). Returns the certified bound.
-/// Throws InputError when `decimals` cannot honour the tolerance.
+/// Throws InputError when `decimals` cannot honour the tolerance, and
+/// "limit.segments" when more than opt.max_vertices vertices are needed.
 double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
                       const std::function<void(const FlatVertex&)>& emit);
 
