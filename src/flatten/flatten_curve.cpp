@@ -305,7 +305,17 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
                           std::to_string(opt.max_vertices) +
                           " a program may hold (docs/limits.md); raise the tolerance or split the curve");
   };
-  const double estimate = estimate_segments(pieces, tol - rmax);
+  // Wang's formula bounds the uniform step count of each polynomial piece
+  // from its control points alone (O(n), no allocation); only when that
+  // bound could reach the limit is the sampled estimate worth its cost.
+  double wang = 0;
+  for (const auto& pc : pieces) {
+    const Prepared P(pc);
+    const double step = pc.rational() ? 0 : P.wang_step(tol - rmax);
+    wang += step > 0 ? 1 / step : kInf;
+  }
+  const double estimate =
+      wang <= static_cast<double>(opt.max_vertices) ? wang : estimate_segments(pieces, tol - rmax);
   if (estimate > static_cast<double>(opt.max_vertices))
     throw too_many("about " + (std::isfinite(estimate) ? fmt_num(std::round(estimate)) : std::string("infinitely many")));
   std::size_t emitted = 0;
