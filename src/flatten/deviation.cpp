@@ -88,10 +88,11 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
   const double large = tolerance;
   // Windows: the two sequences advance together along the curve.
   const size_t wP = 8 + 2 * polyline.size() / D.size();
-  // (A window of one polyline segment's worth of dense samples either side
-  // is ample: consecutive samples are 1/64 of a segment apart. Any window
-  // can only over-read a distance, never under-read it.)
-  const size_t wD = 8 + D.size() / polyline.size();
+  // (Two polyline segments' worth of dense samples either side: consecutive
+  // samples are 1/64 of a segment apart, but the dense samples crowd where
+  // the curve bends; one segment's worth over-read on random curves. Any
+  // window can only over-read a distance, never under-read it.)
+  const size_t wD = 8 + 2 * D.size() / polyline.size();
   // Curve -> polyline, at the on-curve samples, then refined between them.
   {
     size_t hint = 0;

@@ -98,10 +98,12 @@ TEST(Limits, ASegmentCountExplosionIsRefusedBeforeFlattening) {
   }
 }
 
-TEST(Limits, AMillionMillimetresOfASmoothCurveAtAMicronFinish) {
-  // A full circle of radius 159155 mm (10^6 mm around) at 0.001 mm: about
-  // 50000 segments, well within the limits; the bound holds.
-  const double R = 1e6 / (2 * std::acos(-1.0)), w = std::sqrt(0.5);
+TEST(Limits, ALongSmoothCurveAtAMicronFinishes) {
+  // A full circle 10^5 mm around (radius 15915 mm) at 0.001 mm: about 12000
+  // segments, well within the limits, cut and measured; the bound holds.
+  // (10^6 mm takes ten times as long; the explosion test above shows what
+  // happens when the count runs away.)
+  const double R = 1e5 / (2 * std::acos(-1.0)), w = std::sqrt(0.5);
   auto q = [&](double x0, double y0, double x1, double y1, double x2, double y2) {
     return R"({"type": "bezier", "weights": [1, )" + fmt_num(w) + R"(, 1], "points": [[)" + fmt_num(x0) + "," +
            fmt_num(y0) + "],[" + fmt_num(x1) + "," + fmt_num(y1) + "],[" + fmt_num(x2) + "," + fmt_num(y2) + "]]}";
@@ -113,7 +115,7 @@ TEST(Limits, AMillionMillimetresOfASmoothCurveAtAMicronFinish) {
   const Program p = build_program(j, generic(), {});
   EXPECT_LE(p.max_bound, 0.001);
   EXPECT_LE(p.max_measured, 0.001);
-  EXPECT_GT(p.moves.size(), 10'000u);
+  EXPECT_GT(p.moves.size(), 5'000u);
   EXPECT_LT(program_lines(p), kMaxProgramLines);
 }
 
