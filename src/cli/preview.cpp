@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
 #include "bezcam/post/convert.hpp"
 #include "bezcam/post/gcode_reader.hpp"
 #include "bezcam/post/preview_svg.hpp"
@@ -52,12 +53,7 @@ CLI::App* add(CLI::App& app) {
 
 std::string read_text(const std::string& path, const char* what) {
   if (std::filesystem::is_directory(path)) throw IoError("io.read", path, std::string("is a directory, not a ") + what);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("io.read", path, std::string("cannot open the ") + what + " for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw IoError("io.read", path, std::string("error while reading the ") + what);
-  return ss.str();
+  return read_bounded(path, kMaxProgramBytes, what);  // refused before it is read when too large (limits.hpp)
 }
 
 // --program: the motion of a G-code file, read line by line with progress

@@ -803,7 +803,9 @@ struct GcodeInterpreter::Impl {
       st.spindle_rpm = val('S');
     }
     if (ln.has('T')) {
-      if (val('T') < 0 || val('T') != std::floor(val('T'))) fail("tool", "expected a whole tool number T >= 0, found " + txt('T'));
+      // (Bounded before the conversion: T1e20 as an int is undefined; found by fuzzing.)
+      if (val('T') < 0 || val('T') != std::floor(val('T')) || val('T') > 1e9)
+        fail("tool", "expected a whole tool number T from 0 to 1000000000, found " + txt('T'));
       mo.selected_tool = static_cast<int>(val('T'));
     }
     for (const auto& [c, t] : ln.m) {
@@ -1045,12 +1047,13 @@ struct GcodeInterpreter::Impl {
       const double L = val('L');
       if (L != std::floor(L) || L < 3)
         soft("rank", "G5.2 order " + txt('L') + ": LinuxCNC ignores an order below 3 (it then uses 3); give L3 or more");
-      else order = static_cast<int>(L);
+      // Any order above the largest is refused below; one past it keeps a
+      // huge L from overflowing the int (found by fuzzing).
+      else order = static_cast<int>(std::min(L, static_cast<double>(kMaxBezierDegree) + 2));
     }
     const int max = self.profile_ ? self.profile_->nurbs_max_rank : kMaxBezierDegree + 1;
     if (order > max) {
-      soft("rank", "G5.2 order L" + std::to_string(order) + " exceeds the largest order" + machine() + ", " +
-                       std::to_string(max));
+      soft("rank", "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
     }
     mo.open = 52;
     mo.open_line = line;

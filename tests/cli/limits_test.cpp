@@ -36,6 +36,7 @@ TEST(Limits, CommandsRefuseOversizedFilesBeforeReadingThem) {
       {{"check", job}, job, "32 MiB"},
       {{"lint", nc, "--machine", "generic"}, nc, "128 MiB"},
       {{"simulate", "--program", nc}, nc, "128 MiB"},
+      {{"preview", "--program", nc, "-o", (dir / "out.svg").string()}, nc, "128 MiB"},
   };
   for (const auto& c : cases) {
     const auto r = testproc::run(BEZCAM_EXE, c.args);
@@ -44,4 +45,5 @@ TEST(Limits, CommandsRefuseOversizedFilesBeforeReadingThem) {
     EXPECT_NE(r.err.find("more than bezcam reads (" + c.limit), std::string::npos) << r.err;
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "out.nc"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.svg"));
 }
