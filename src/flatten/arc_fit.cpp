@@ -358,24 +358,8 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
                 const std::function<void(const FitMove&)>& emit) {
   if (pieces.empty()) return 0;
   const double tol = opt.tolerance;
-  if (!(tol > 0) || !std::isfinite(tol))
-    throw InputError("flatten.tolerance", "tolerance", "expected a finite tolerance > 0, found " + fmt_num(tol));
-  const int dim = pieces.front().dim;
-  const double rmax = max_rounding_displacement(opt.decimals, dim);
-  if (rmax >= 0.9 * tol)
-    throw InputError("flatten.tolerance-below-rounding", "tolerance",
-                     "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(opt.decimals) +
-                         " decimals: rounding alone moves a point by up to " + fmt_num(rmax) +
-                         "; use a tolerance above " + fmt_num(rmax / 0.9) + " or a profile with more decimals");
-  double scale = 0;
-  for (const auto& pc : pieces)
-    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
-  const double margin = float_margin(tol, scale);
-  if (margin >= 0.05 * tol)
-    throw InputError("flatten.tolerance-below-precision", "tolerance",
-                     "tolerance " + fmt_num(tol) + " is too small for coordinates of magnitude " + fmt_num(scale) +
-                         " in double precision; use a tolerance above " + fmt_num(margin * 20));
-  const double budget = tol - margin;
+  const double scale = control_magnitude(pieces);
+  const double budget = check_tolerance(tol, opt.decimals, pieces.front().dim, scale).budget;
   // The controller compares radii computed from the same printed numbers;
   // keep a floating-point margin below its limit.
   const double rtol = opt.radius_tolerance - 64 * std::numeric_limits<double>::epsilon() * std::max(scale, 1.0);

@@ -239,14 +239,6 @@ struct Prepared {
   }
 };
 
-// Three significant digits, rounded up, for figures in advice.
-std::string short_num(double v) {
-  char buf[32];
-  const double mag = std::pow(10.0, std::floor(std::log10(v)) - 2);
-  std::snprintf(buf, sizeof buf, "%g", std::ceil(v / mag) * mag);
-  return buf;
-}
-
 }  // namespace
 
 double chord_deviation(const Bezier& piece, double t0, double t1) {
@@ -279,23 +271,8 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
                       const std::function<void(const FlatVertex&)>& emit) {
   if (pieces.empty()) return 0;
   const double tol = opt.tolerance;
-  if (!(tol > 0) || !std::isfinite(tol))
-    throw InputError("flatten.tolerance", "tolerance", "expected a finite tolerance > 0, found " + fmt_num(tol));
-  const int dim = pieces.front().dim;
-  const double rmax = max_rounding_displacement(opt.decimals, dim);
-  if (rmax >= 0.9 * tol)
-    throw InputError("flatten.tolerance-below-rounding", "tolerance",
-                     "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(opt.decimals) +
-                         " decimals: rounding alone moves a point by up to " + short_num(rmax) +
-                         "; use a tolerance above " + short_num(rmax / 0.9) + " or a profile with more decimals");
-  double scale = 0;
-  for (const auto& pc : pieces)
-    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
-  const double margin = float_margin(tol, scale);
-  if (margin >= 0.05 * tol)
-    throw InputError("flatten.tolerance-below-precision", "tolerance",
-                     "tolerance " + fmt_num(tol) + " is too small for coordinates of magnitude " + fmt_num(scale) +
-                         " in double precision; use a tolerance above " + short_num(margin * 20));
+  const ToleranceBudget tb = check_tolerance(tol, opt.decimals, pieces.front().dim, control_magnitude(pieces));
+  const double rmax = tb.rounding, margin = tb.margin;
 
   // Stated limit (limits.hpp): a count that would exceed it is refused
   // before the work, or as soon as it is exceeded.

@@ -127,16 +127,9 @@ TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptio
     return out;
   }
   const double tol = opt.tolerance;
-  if (!(tol > 0) || !std::isfinite(tol))
-    throw InputError("flatten.tolerance", "tolerance", "expected a finite tolerance > 0, found " + fmt_num(tol));
-  const double rmax = max_rounding_displacement(opt.decimals, 3);
-  if (rmax >= 0.9 * tol)
-    throw InputError("flatten.tolerance-below-rounding", "tolerance",
-                     "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(opt.decimals) +
-                         " decimals: rounding alone moves a point by up to " + fmt_num(rmax) +
-                         "; use a tolerance above " + fmt_num(rmax / 0.9) + " or a profile with more decimals");
   // Evaluation of the tip adds a unit normal times r to the point.
-  const double margin = float_margin(tol, magnitude(c) + radius);
+  const ToleranceBudget tb = check_tolerance(tol, opt.decimals, 3, magnitude(c) + radius);
+  const double margin = tb.margin;
   Vec3 Ar = quantize(tip_local(c, radius, 0, 0, 0), opt.decimals);
   out.points.push_back(Ar);
   out.params.push_back(0);

@@ -1,8 +1,13 @@
 #include "bezcam/flatten/tolerance.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
+
+#include "bezcam/error.hpp"
 
 namespace bezcam {
 
@@ -28,6 +33,46 @@ double float_margin(double tolerance, double scale) {
   // Evaluation of a Bézier curve by de Casteljau is backward stable: errors
   // are a small multiple of eps times the control points' magnitude.
   return tolerance * kToleranceSafety + 64 * std::numeric_limits<double>::epsilon() * scale;
+}
+
+double control_magnitude(std::span<const Bezier> pieces) {
+  double scale = 0;
+  for (const auto& pc : pieces)
+    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
+  return scale;
+}
+
+namespace {
+
+// Three significant digits, rounded up, for figures in advice.
+std::string advice_num(double v) {
+  if (!(v > 0) || !std::isfinite(v)) return fmt_num(v);
+  char buf[32];
+  const double mag = std::pow(10.0, std::floor(std::log10(v)) - 2);
+  std::snprintf(buf, sizeof buf, "%g", std::ceil(v / mag) * mag);
+  return buf;
+}
+
+}  // namespace
+
+ToleranceBudget check_tolerance(double tol, int decimals, int dim, double scale) {
+  if (!(tol > 0) || !std::isfinite(tol))
+    throw InputError("flatten.tolerance", "tolerance", "expected a finite tolerance > 0, found " + fmt_num(tol));
+  ToleranceBudget b;
+  b.rounding = max_rounding_displacement(decimals, dim);
+  if (b.rounding >= 0.9 * tol)
+    throw InputError("flatten.tolerance-below-rounding", "tolerance",
+                     "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(decimals) +
+                         " decimals: rounding alone moves a point by up to " + advice_num(b.rounding) +
+                         "; use a tolerance above " + advice_num(b.rounding / 0.9) +
+                         " or a profile with more decimals");
+  b.margin = float_margin(tol, scale);
+  if (b.margin >= 0.05 * tol)
+    throw InputError("flatten.tolerance-below-precision", "tolerance",
+                     "tolerance " + fmt_num(tol) + " is too small for coordinates of magnitude " + fmt_num(scale) +
+                         " in double precision; use a tolerance above " + advice_num(b.margin * 20));
+  b.budget = tol - b.margin;
+  return b;
 }
 
 }  // namespace bezcam

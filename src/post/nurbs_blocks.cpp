@@ -26,17 +26,9 @@ struct PrintedPiece {
 class Planner {
  public:
   Planner(const CurveGeometry& g, const ExactOptions& o) : g_(g), o_(o) {
-    const double tol = o.tolerance;
-    rmax_ = max_rounding_displacement(o.decimals, g.dim);
-    if (rmax_ >= 0.9 * tol)
-      throw InputError("flatten.tolerance-below-rounding", "tolerance",
-                       "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(o.decimals) +
-                           " decimals: rounding alone moves a point by up to " + fmt_num(rmax_) +
-                           "; use a tolerance above " + fmt_num(rmax_ / 0.9) + " or a profile with more decimals");
-    double scale = 0;
-    for (const auto& pc : g.pieces)
-      for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
-    budget_ = tol - float_margin(tol, scale);
+    const ToleranceBudget tb = check_tolerance(o.tolerance, o.decimals, g.dim, control_magnitude(g.pieces));
+    rmax_ = tb.rounding;
+    budget_ = tb.budget;
     maxdeg_ = o.dialect == NurbsDialect::linuxcnc ? 3 : std::clamp(o.max_rank, 2, 4) - 1;
   }
 

@@ -4,6 +4,9 @@
 /// A tolerance is the largest distance allowed between the true geometry and
 /// the tool path *as printed*, in model units. Printing rounds coordinates to
 /// a number of decimals; that displacement counts against the tolerance.
+#include <span>
+
+#include "bezcam/kernel/bezier.hpp"
 #include "bezcam/kernel/vec.hpp"
 
 namespace bezcam {
@@ -24,5 +27,23 @@ Vec3 quantize(const Vec3& p, int decimals);
 double max_rounding_displacement(int decimals, int dim);
 /// Margin for floating-point error at coordinates of magnitude `scale`.
 double float_margin(double tolerance, double scale);
+/// Largest coordinate magnitude among the control points of `pieces`.
+double control_magnitude(std::span<const Bezier> pieces);
+
+/// What is left of a tolerance for the geometry once rounding and
+/// floating-point error are set aside.
+struct ToleranceBudget {
+  double rounding = 0;  ///< max_rounding_displacement(decimals, dim)
+  double margin = 0;    ///< float_margin(tolerance, scale)
+  double budget = 0;    ///< tolerance - margin: what the rounded path may deviate by
+};
+/// The one check every flattener and fitter makes before it starts. Refuses,
+/// with an InputError naming "tolerance", a tolerance that is not finite and
+/// positive (flatten.tolerance), one that rounding to `decimals` alone would
+/// use up (flatten.tolerance-below-rounding), and one too small for double
+/// precision at coordinates of magnitude `scale`
+/// (flatten.tolerance-below-precision). Each message gives the smallest
+/// tolerance that would be accepted.
+ToleranceBudget check_tolerance(double tolerance, int decimals, int dim, double scale);
 
 }  // namespace bezcam
