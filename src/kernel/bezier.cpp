@@ -57,6 +57,23 @@ Bezier from_homogeneous(const std::vector<H>& hs, const Bezier& like) {
 
 }  // namespace
 
+void validate_control_points(std::span<const Vec3> pts, std::span<const double> w, int dim) {
+  for (size_t i = 0; i < pts.size(); ++i) {
+    if (!finite(pts[i])) throw InputError("curve.not-finite", "points[" + std::to_string(i) + "]", "expected finite coordinates");
+    if (dim == 2 && pts[i].z != 0)
+      throw InputError("curve.dimension", "points[" + std::to_string(i) + "]", "2D curve with a z coordinate");
+  }
+  if (w.empty()) return;
+  if (w.size() != pts.size())
+    throw InputError("curve.weights-count", "weights",
+                     "expected one weight per control point (" + std::to_string(pts.size()) + "), found " +
+                         std::to_string(w.size()));
+  for (size_t i = 0; i < w.size(); ++i)
+    if (!(w[i] > 0) || !std::isfinite(w[i]))
+      throw InputError("curve.weight", "weights[" + std::to_string(i) + "]",
+                       "expected a finite weight > 0, found " + fmt_num(w[i]));
+}
+
 Bezier Bezier::make(std::vector<Vec3> pts, std::vector<double> w, int d) {
   if (d != 2 && d != 3) throw InputError("curve.dimension", "", "expected dimension 2 or 3, found " + std::to_string(d));
   if (pts.size() < 2)
@@ -66,19 +83,8 @@ Bezier Bezier::make(std::vector<Vec3> pts, std::vector<double> w, int d) {
     throw InputError("curve.degree-too-high", "points",
                      "expected at most " + std::to_string(kMaxBezierDegree + 1) + " control points (degree " +
                          std::to_string(kMaxBezierDegree) + "), found " + std::to_string(pts.size()));
-  for (size_t i = 0; i < pts.size(); ++i) {
-    if (!finite(pts[i])) throw InputError("curve.not-finite", "points[" + std::to_string(i) + "]", "expected finite coordinates");
-    if (d == 2 && pts[i].z != 0) throw InputError("curve.dimension", "points[" + std::to_string(i) + "]", "2D curve with a z coordinate");
-  }
+  validate_control_points(pts, w, d);
   if (!w.empty()) {
-    if (w.size() != pts.size())
-      throw InputError("curve.weights-count", "weights",
-                       "expected one weight per control point (" + std::to_string(pts.size()) + "), found " +
-                           std::to_string(w.size()));
-    for (size_t i = 0; i < w.size(); ++i)
-      if (!(w[i] > 0) || !std::isfinite(w[i]))
-        throw InputError("curve.weight", "weights[" + std::to_string(i) + "]",
-                         "expected a finite weight > 0, found " + fmt_num(w[i]));
     // All weights equal: the curve is polynomial; keep it so (faster, exact).
     bool all_equal = true;
     for (double x : w) all_equal = all_equal && x == w.front();

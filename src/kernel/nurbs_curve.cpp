@@ -44,8 +44,6 @@ NurbsCurve from_homogeneous(const NurbsCurve& like, const std::vector<H>& hs, st
   return out;
 }
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 double clamp_to_domain(const NurbsCurve& c, double u) {
   return std::clamp(u, c.domain_start(), c.domain_end());
 }
@@ -59,22 +57,8 @@ NurbsCurve NurbsCurve::make(int degree, std::vector<Vec3> pts, std::vector<doubl
     throw InputError("curve.degree-too-high", "degree",
                      "expected a degree of at most " + std::to_string(kMaxBezierDegree) + ", found " +
                          std::to_string(degree));
-  for (size_t i = 0; i < pts.size(); ++i) {
-    if (!finite(pts[i])) throw InputError("curve.not-finite", "points[" + std::to_string(i) + "]", "expected finite coordinates");
-    if (dim == 2 && pts[i].z != 0)
-      throw InputError("curve.dimension", "points[" + std::to_string(i) + "]", "2D curve with a z coordinate");
-  }
+  validate_control_points(pts, w, dim);
   validate_knots(knots, degree, pts.size());
-  if (!w.empty()) {
-    if (w.size() != pts.size())
-      throw InputError("curve.weights-count", "weights",
-                       "expected one weight per control point (" + std::to_string(pts.size()) + "), found " +
-                           std::to_string(w.size()));
-    for (size_t i = 0; i < w.size(); ++i)
-      if (!(w[i] > 0) || !std::isfinite(w[i]))
-        throw InputError("curve.weight", "weights[" + std::to_string(i) + "]",
-                         "expected a finite weight > 0, found " + fmt_num(w[i]));
-  }
   NurbsCurve c;
   c.dim = dim;
   c.degree = degree;

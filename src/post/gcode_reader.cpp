@@ -631,6 +631,15 @@ struct GcodeInterpreter::Impl {
       abandon_block();
       return;
     }
+    finish_nurbs_block(mo.knots);
+    st.motion = mo.open;  // NURBS mode goes on until G00..G03
+    clear_block();
+  }
+
+  // Travel and lint checks of a completed NURBS block, then the move.
+  // The NURBS block collected since line mo.open_line (Fanuc G06.2 or
+  // LinuxCNC G5.2), ending at this line, with these knots.
+  void finish_nurbs_block(std::vector<double> knots) {
     MotionBlock b;
     b.kind = BlockKind::nurbs;
     b.first_line = mo.open_line;
@@ -641,13 +650,10 @@ struct GcodeInterpreter::Impl {
     b.order = mo.order;
     b.ctrl = mo.ctrl;
     b.weights = mo.weights;
-    b.knots = mo.knots;
+    b.knots = std::move(knots);
     finish_curve_block(b);
-    st.motion = mo.open;  // NURBS mode goes on until G00..G03
-    clear_block();
   }
 
-  // Travel and lint checks of a completed NURBS block, then the move.
   void finish_curve_block(MotionBlock& b) {
     const bool valid = std::none_of(b.knots.begin(), b.knots.end(), [](double k) { return std::isnan(k); });
     Box3 box;
@@ -1087,18 +1093,7 @@ struct GcodeInterpreter::Impl {
       abandon_block();
       return;
     }
-    MotionBlock b;
-    b.kind = BlockKind::nurbs;
-    b.first_line = mo.open_line;
-    b.line = line;
-    b.from = mo.ctrl.front();
-    b.to = mo.ctrl.back();
-    b.feed = mo.open_feed;
-    b.order = mo.order;
-    b.ctrl = mo.ctrl;
-    b.weights = mo.weights;
-    b.knots = linuxcnc_knots(mo.ctrl.size(), mo.order);
-    finish_curve_block(b);
+    finish_nurbs_block(linuxcnc_knots(mo.ctrl.size(), mo.order));
     clear_block();
     st.motion = -1;  // as LinuxCNC does after G5.3
   }

@@ -10,24 +10,15 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/run_process.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CheckRun {
-  int status;
-  std::string out;  // stdout and stderr together
-};
+using CheckRun = testproc::Result;  // stdout and stderr together in `out`
 
-CheckRun check(const std::string& file) {
-  const std::string cmd = std::string(BEZCAM_EXE) + " check " + file + " 2>&1";
-  FILE* p = ::popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  const int st = ::pclose(p);
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
+CheckRun check(const std::string& file) { return testproc::shell(std::string(BEZCAM_EXE) + " check " + file + " 2>&1"); }
 
 std::string sample(const char* name) { return std::string(BEZCAM_SOURCE_DIR "/samples/") + name; }
 

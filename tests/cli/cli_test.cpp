@@ -10,25 +10,15 @@
 #include <sstream>
 
 #include "bezcam/post/convert.hpp"
+#include "support/run_process.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int status;
-  std::string out;  // stdout and stderr together
-};
+using Result = testproc::Result;  // stdout and stderr together in `out`
 
-Result run(const std::string& args) {
-  const std::string cmd = std::string(BEZCAM_EXE) + " " + args + " 2>&1";
-  FILE* p = ::popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  const int st = ::pclose(p);
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
+Result run(const std::string& args) { return testproc::shell(std::string(BEZCAM_EXE) + " " + args + " 2>&1"); }
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

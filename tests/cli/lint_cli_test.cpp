@@ -9,26 +9,19 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/run_process.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct LintRun {
-  int status;
-  std::string out, err;
-};
+using LintRun = testproc::Result;
 
 LintRun lint(const std::string& args, const fs::path& dir) {
   const fs::path err = dir / "stderr.txt";
-  const std::string cmd = std::string(BEZCAM_EXE) + " lint " + args + " 2>" + err.string();
-  FILE* p = ::popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  const int st = ::pclose(p);
-  std::ifstream e(err);
-  std::string errs((std::istreambuf_iterator<char>(e)), std::istreambuf_iterator<char>());
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out, errs};
+  LintRun r = testproc::shell(std::string(BEZCAM_EXE) + " lint " + args + " 2>" + err.string());
+  r.err = testproc::slurp(err);
+  return r;
 }
 
 struct Dir {

@@ -26,6 +26,7 @@
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/link/transport.hpp"
 #include "link_test_util.hpp"
+#include "server_rig.hpp"
 
 using namespace bezcam;
 using namespace bezcam::link;
@@ -33,61 +34,10 @@ using namespace std::chrono_literals;
 
 namespace {
 
-// A controller and its server on a free loopback port, recording the lines
-// its executor takes.
-struct Rig {
-  std::mutex m;
-  std::vector<std::string> lines;
-  std::unique_ptr<SimController> ctl;
-  std::unique_ptr<ModbusServer> server;
+using Rig = test::ServerRig;
+using test::read_status;
 
-  explicit Rig(ControllerConfig cfg, ServerConfig scfg) {
-    cfg.profile = load_machine_profile("generic");
-    cfg.on_line = [this](long, std::string_view t) {
-      std::lock_guard lk(m);
-      lines.emplace_back(t);
-    };
-    ctl = std::make_unique<SimController>(std::move(cfg));
-    scfg.host = "127.0.0.1";
-    scfg.port = 0;
-    server = std::make_unique<ModbusServer>(*ctl, scfg);
-    server->start();
-  }
-  ~Rig() {
-    server->stop();
-    ctl->stop();
-  }
-  Endpoint ep() const { return {"127.0.0.1", server->port()}; }
-  std::vector<std::string> executed() {
-    std::lock_guard lk(m);
-    return lines;
-  }
-  // A raw TCP connection to the server.
-  int raw() const {
-    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_port = htons(server->port());
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
-    return fd;
-  }
-};
-
-Status read_status(ModbusClient& c) {
-  std::array<std::uint16_t, reg::status_count> r{};
-  c.read_holding(0, r);
-  return Status::decode(r);
-}
-
-StreamOptions quick() {
-  StreamOptions o;
-  o.timeout = 3000ms;
-  o.retries = 5;
-  o.retry_time = 20s;
-  o.stall_timeout = 20s;
-  return o;
-}
+StreamOptions quick() { return test::quick_stream(3000ms, 20s); }
 
 // Streams `program` in the background; `opened` is ready once the
 // controller has accepted the transfer (the sender owns it from then on).

@@ -21,6 +21,7 @@
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/link/transport.hpp"
 #include "link_test_util.hpp"
+#include "server_rig.hpp"
 
 using namespace bezcam;
 using namespace bezcam::link;
@@ -28,57 +29,10 @@ using namespace std::chrono_literals;
 
 namespace {
 
-// A controller and its server on a free loopback port, recording what the
-// executor takes.
-struct Rig {
-  std::mutex m;
-  std::vector<std::string> lines;
-  std::string trace;
-  std::unique_ptr<SimController> ctl;
-  std::unique_ptr<ModbusServer> server;
+using Rig = test::ServerRig;
+using test::read_status;
 
-  explicit Rig(ControllerConfig cfg, ServerConfig scfg = {}) {
-    if (cfg.profile.name.empty()) cfg.profile = load_machine_profile("generic");
-    cfg.on_line = [this](long, std::string_view t) {
-      std::lock_guard lk(m);
-      lines.emplace_back(t);
-    };
-    cfg.trace = [this](std::string_view t, bool restart) {
-      std::lock_guard lk(m);
-      if (restart) trace.clear();
-      trace += t;
-    };
-    ctl = std::make_unique<SimController>(std::move(cfg));
-    scfg.host = "127.0.0.1";
-    scfg.port = 0;
-    server = std::make_unique<ModbusServer>(*ctl, scfg);
-    server->start();
-  }
-  ~Rig() {
-    server->stop();
-    ctl->stop();
-  }
-  Endpoint ep() const { return {"127.0.0.1", server->port()}; }
-  std::vector<std::string> executed() {
-    std::lock_guard lk(m);
-    return lines;
-  }
-};
-
-Status read_status(ModbusClient& c) {
-  std::array<std::uint16_t, reg::status_count> r{};
-  c.read_holding(0, r);
-  return Status::decode(r);
-}
-
-StreamOptions quick() {
-  StreamOptions o;
-  o.timeout = 2000ms;
-  o.retries = 5;
-  o.retry_time = 10s;
-  o.stall_timeout = 10s;
-  return o;
-}
+StreamOptions quick() { return test::quick_stream(2000ms, 10s); }
 
 }  // namespace
 
@@ -300,15 +254,7 @@ TEST(SimServer, StaysResponsiveUnderIdleConnectionsHalfFramesAndTheCap) {
   scfg.idle_timeout = 2000ms;
   scfg.frame_timeout = 200ms;
   Rig rig(cfg, scfg);
-  auto raw = [&] {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_port = htons(rig.server->port());
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
-    return fd;
-  };
+  auto raw = [&] { return rig.raw(); };
   std::vector<int> fds;
   for (int i = 0; i < 10; ++i) fds.push_back(raw());  // open and never speak
   for (int i = 0; i < 3; ++i) {                       // half a frame, then nothing

@@ -18,6 +18,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
+#include "support/run_process.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;
@@ -545,11 +546,7 @@ TEST(GcodeReader, AgreesWithLinuxCncInterpreter) {
   // Two rs274 processes at once share LinuxCNC's shared memory and die of
   // SIGBUS: hold the same lock as linuxcnc_rs274_test.cpp (flock(1)).
   const std::string lock = (fs::temp_directory_path() / "bezcam-rs274.lock").string();
-  FILE* p = ::popen(("cd " + dir.string() + " && flock " + lock + " rs274 -g p.ngc 2>&1").c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  ::pclose(p);
+  const std::string out = testproc::shell("cd " + dir.string() + " && flock " + lock + " rs274 -g p.ngc 2>&1").out;
   fs::remove_all(dir);
   // Their calls, in order.
   struct Call {

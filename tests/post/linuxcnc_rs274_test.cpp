@@ -24,6 +24,7 @@
 #include "bezcam/error.hpp"
 #include "bezcam/post/convert.hpp"
 #include "bezcam/post/number_format.hpp"
+#include "support/run_process.hpp"
 
 namespace bezcam {
 namespace {
@@ -56,12 +57,9 @@ std::vector<Rs274Run> run_rs274(const std::string& exe, const std::vector<std::s
     std::ofstream(dir / "program.ngc") << programs[i];
     const std::string cmd = "cd '" + dir.string() + "' && '" + exe + "' -g program.ngc 2>&1";
     if (lock >= 0) ::flock(lock, LOCK_EX);
-    if (FILE* p = ::popen(cmd.c_str(), "r")) {
-      char buf[4096];
-      for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) runs[i].output.append(buf, n);
-      const int st = ::pclose(p);
-      runs[i].status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    }
+    const testproc::Result r = testproc::shell(cmd);
+    runs[i].output = r.out;
+    runs[i].status = r.status;
     if (lock >= 0) ::flock(lock, LOCK_UN);
   }
   if (lock >= 0) ::close(lock);

@@ -136,6 +136,9 @@ TEST(RoundTrip, EveryCurveSampleInEveryModeAndProfileReadsBackWithinTolerance) {
           EXPECT_EQ(run[0].kind, BlockKind::linear);
           EXPECT_EQ(run[0].from.x, run[0].to.x);
           EXPECT_EQ(run[0].from.y, run[0].to.y);
+          EXPECT_EQ(run[0].feed, quantize(cp.plunge_feed, m.feed_decimals));
+          // The report counts the cutting blocks the reader finds.
+          if (mode == OutputMode::lines) EXPECT_EQ(run.size() - 1, r.program.entities[i].blocks);
           const double cut_z = quantize(cp.cut_z, m.decimals(job.units));
           std::vector<Vec3> poly{run[0].to};
           for (size_t k = 1; k < run.size(); ++k) {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +83,20 @@ inline Result run(const std::string& exe, const std::vector<std::string>& args,
   r.err = slurp(err_path);
   std::error_code ec;
   fs::remove_all(dir, ec);
+  return r;
+}
+
+/// Runs `command` through /bin/sh (for pipes, redirections and cd); `out`
+/// holds what it writes to stdout (add 2>&1 for stderr too), `status` its
+/// exit status, or -1 when it did not exit normally.
+inline Result shell(const std::string& command) {
+  Result r;
+  FILE* p = ::popen(command.c_str(), "r");
+  if (!p) throw std::runtime_error("popen failed: " + command);
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
+  const int st = ::pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
 }
 

@@ -6,6 +6,7 @@
 /// cascade (in homogeneous coordinates for rational curves), the form the
 /// digest calls numerically the most robust; the other forms are provided so
 /// that tests can show all five agree.
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -36,6 +37,11 @@ struct Bezier {
 };
 
 /// Point at t by de Casteljau (homogeneous for rational curves).
+/// Checks control points (finite; z = 0 when dim is 2) and weights (none,
+/// or one finite weight > 0 per point), throwing InputError naming
+/// points[i] or weights[i]. Shared by Bézier and NURBS curves.
+void validate_control_points(std::span<const Vec3> pts, std::span<const double> w, int dim);
+
 Vec3 evaluate(const Bezier& b, double t);
 /// First derivative dM/dt at t (quotient rule for rational curves).
 Vec3 derivative(const Bezier& b, double t);
