@@ -159,43 +159,6 @@ double sup_d(const ArcGeometry& g, const Bezier& sub, double budget, double reso
   return heap.top().ub;
 }
 
-// Bound of the distance between the sub-curve on [t0, t1] and the chord
-// [A, B] = [M(t0), M(t1)]: chord_deviation() (exact) for polynomial pieces of
-// degree <= 3, branch and bound on convex hulls otherwise (dist to a segment
-// is convex, so a hull's bound is its worst control point). Early exit as in
-// sup_d: a result <= budget is proven, one above it is a proven lower bound.
-double line_deviation(const Bezier& b, double t0, double t1, double budget) {
-  if (!b.rational() && b.degree() <= 3) return chord_deviation(b, t0, t1);
-  const Bezier sub = subcurve(b, t0, t1);
-  const Vec3 A = sub.front(), B = sub.back();
-  auto ub_of = [&](const Bezier& n) {
-    double m = 0;
-    for (const auto& p : n.points) m = std::max(m, dist_to_segment(p, A, B));
-    return m;
-  };
-  struct Node {
-    double ub;
-    Bezier b;
-    bool operator<(const Node& o) const { return ub < o.ub; }
-  };
-  std::priority_queue<Node> heap;
-  heap.push({ub_of(sub), sub});
-  double lb = 0;
-  for (int iter = 0; iter < 2000; ++iter) {
-    const Node& top = heap.top();
-    if (top.ub <= budget) return top.ub;
-    if (lb > budget) return lb;
-    if (top.ub - lb <= 1e-3 * top.ub) return top.ub;
-    Node n = heap.top();
-    heap.pop();
-    auto [l, r] = split(n.b, 0.5);
-    lb = std::max(lb, dist_to_segment(l.back(), A, B));
-    heap.push({ub_of(l), std::move(l)});
-    heap.push({ub_of(r), std::move(r)});
-  }
-  return heap.top().ub;
-}
-
 // A candidate arc for the span, and its certified XY bound.
 struct ArcCandidate {
   PrintedArc arc;
@@ -380,7 +343,7 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
         E = point_at(b, t1);
         Er = quantize(E, opt.decimals);
         const double disp = std::max(dist(Sr, S), dist(Er, E));
-        dev = line_deviation(b, t0, t1, budget - disp) + disp;
+        dev = chord_deviation(b, t0, t1, budget - disp) + disp;
         return dev <= budget;
       };
       double lo = 0, hi = kInf, dt = line_hint > 0 ? std::min(line_hint, 1 - t0) : 1 - t0;

@@ -241,9 +241,9 @@ struct Prepared {
 
 }  // namespace
 
-double chord_deviation(const Bezier& piece, double t0, double t1) {
+double chord_deviation(const Bezier& piece, double t0, double t1, double budget) {
   const Prepared p(piece);
-  return p.deviation(t0, t1, p.point(t0), p.point(t1), -1);
+  return p.deviation(t0, t1, p.point(t0), p.point(t1), budget);
 }
 
 double estimate_segments(std::span<const Bezier> pieces, double tolerance) {

@@ -51,8 +51,11 @@ struct FlattenResult {
 };
 
 /// Upper bound of max over t in [t0,t1] of dist(M(t), segment [M(t0), M(t1)]),
-/// exact up to floating-point error for polynomial pieces of degree <= 3.
-double chord_deviation(const Bezier& piece, double t0, double t1);
+/// exact up to floating-point error for polynomial pieces of degree <= 3, by
+/// branch and bound on convex hulls otherwise. With a `budget` >= 0 the
+/// search may stop as soon as the answer is certain: a result <= budget is a
+/// proven bound, one above it a proven lower bound of the deviation.
+double chord_deviation(const Bezier& piece, double t0, double t1, double budget = -1);
 
 /// About how many chords a flattening within `tolerance` needs: at least
 /// one per piece, and along a piece the integral of sqrt(k / (8 tolerance))
