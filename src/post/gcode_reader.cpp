@@ -130,6 +130,21 @@ std::vector<double> linuxcnc_knots(size_t n_points, int order) {
   return U;
 }
 
+namespace {
+
+// The curve of a NURBS block, in 3D, as the reader collected it.
+NurbsCurve block_nurbs(const MotionBlock& b) {
+  NurbsCurve c;
+  c.dim = 3;
+  c.degree = b.order - 1;
+  c.points = b.ctrl;
+  c.weights = b.weights;
+  c.knots = b.knots;
+  return c;
+}
+
+}  // namespace
+
 Vec3 evaluate_block(const MotionBlock& b, double t) {
   if (t <= 0) return b.from;
   if (t >= 1) return b.to;
@@ -153,12 +168,7 @@ Vec3 evaluate_block(const MotionBlock& b, double t) {
       return evaluate(z, t);
     }
     case BlockKind::nurbs: {
-      NurbsCurve c;
-      c.dim = 3;
-      c.degree = b.order - 1;
-      c.points = b.ctrl;
-      c.weights = b.weights;
-      c.knots = b.knots;
+      const NurbsCurve c = block_nurbs(b);
       return evaluate(c, c.domain_start() + (c.domain_end() - c.domain_start()) * t);
     }
   }
@@ -178,12 +188,7 @@ std::vector<Bezier> block_to_bezier(const MotionBlock& b) {
     case BlockKind::linear: return {bez({b.from, b.to})};
     case BlockKind::bezier: return {bez(b.ctrl)};
     case BlockKind::nurbs: {
-      NurbsCurve c;
-      c.dim = 3;
-      c.degree = b.order - 1;
-      c.points = b.ctrl;
-      c.weights = b.weights;
-      c.knots = b.knots;
+      const NurbsCurve c = block_nurbs(b);
       try {
         validate_knots(c.knots, c.degree, c.points.size());
         for (double w : c.weights)
