@@ -162,27 +162,41 @@ double hull_chord_deviation(const Bezier& sub, const Vec3& A, const Vec3& B, dou
   return heap.top().ub;
 }
 
+// Uniform step that Wang's formula proves safe for a polynomial piece.
+double wang_step(const Bezier& b, double tol) {
+  const auto& P = b.points;
+  const int n = b.degree();
+  if (n < 2) return 1;
+  double m = 0;
+  for (int i = 0; i + 2 <= n; ++i) m = std::max(m, norm(P[i] - P[i + 1] * 2 + P[i + 2]));
+  const double k = std::sqrt(n * (n - 1) * m / (8 * tol));
+  return k <= 1 ? 1.0 : 1.0 / std::ceil(k);
+}
+
 // One piece, prepared for fast repeated chord tests.
 struct Prepared {
   const Bezier* b = nullptr;
   bool cubic = false;         // polynomial of degree <= 3 (elevated to 3)
   bool planar = false;        // 2D
   Vec3 c0, c1, c2, c3;        // power form of the cubic
-  double scale = 0;           // magnitude of the coordinates
 
   explicit Prepared(const Bezier& piece) : b(&piece) {
-    for (const auto& p : piece.points) scale = std::max(scale, max_abs(p));
-    if (!piece.rational() && piece.degree() <= 3) {
+    if (piece.rational() || piece.degree() > 3) return;
+    cubic = true;
+    planar = piece.dim == 2;
+    if (piece.degree() == 3) {
+      power_form(piece.points);  // the common case: no copy
+    } else {
       Bezier e = piece;
       while (e.degree() < 3) e = elevate(e);
-      const auto& P = e.points;
-      cubic = true;
-      planar = piece.dim == 2;
-      c0 = P[0];
-      c1 = (P[1] - P[0]) * 3;
-      c2 = (P[0] - P[1] * 2 + P[2]) * 3;
-      c3 = P[3] - P[0] + (P[1] - P[2]) * 3;
+      power_form(e.points);
     }
+  }
+  void power_form(const std::vector<Vec3>& P) {
+    c0 = P[0];
+    c1 = (P[1] - P[0]) * 3;
+    c2 = (P[0] - P[1] * 2 + P[2]) * 3;
+    c3 = P[3] - P[0] + (P[1] - P[2]) * 3;
   }
   Vec3 point(double t) const {
     if (t <= 0) return b->front();
@@ -225,17 +239,7 @@ struct Prepared {
       if (k > 0) dt = std::sqrt(8 * kAimShare * budget / k);
       return std::min(1.0, dt);
     }
-    return std::min(1.0, 1.5 * wang_step(budget));
-  }
-  // Uniform step that Wang's formula proves safe for a polynomial piece.
-  double wang_step(double tol) const {
-    const auto& P = b->points;
-    const int n = b->degree();
-    if (n < 2) return 1;
-    double m = 0;
-    for (int i = 0; i + 2 <= n; ++i) m = std::max(m, norm(P[i] - P[i + 1] * 2 + P[i + 2]));
-    const double k = std::sqrt(n * (n - 1) * m / (8 * tol));
-    return k <= 1 ? 1.0 : 1.0 / std::ceil(k);
+    return std::min(1.0, 1.5 * wang_step(*b, budget));
   }
 };
 
@@ -287,8 +291,7 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
   // bound could reach the limit is the sampled estimate worth its cost.
   double wang = 0;
   for (const auto& pc : pieces) {
-    const Prepared P(pc);
-    const double step = pc.rational() ? 0 : P.wang_step(tol - rmax);
+    const double step = pc.rational() ? 0 : wang_step(pc, tol - rmax);
     wang += step > 0 ? 1 / step : kInf;
   }
   const double estimate =
