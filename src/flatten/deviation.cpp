@@ -78,7 +78,7 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
   double scale = 0;
   for (const auto& pc : pieces)
     for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
-  const double resolution = std::max(tolerance * 1e-3, scale * 1e-13);
+  const double resolution = std::max(tolerance * kMeasureResolution, scale * 1e-13);
   std::vector<Sample> D;
   D.push_back({pieces[0].front(), 0, 0});
   for (size_t i = 0; i < pieces.size(); ++i) sample_piece(pieces[i], i, 0, 1, resolution, 0, D);

@@ -11,14 +11,6 @@
 
 namespace bezcam::detail {
 
-namespace {
-
-// Chords of the drawn path used for measurement stay this close to it, as
-// a share of the tolerance (the measurement itself resolves 1e-3 of it).
-constexpr double kSampleShare = 1e-5;
-
-}  // namespace
-
 double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path,
                             size_t& blocks) {
   const int entity = static_cast<int>(c.entity.index);

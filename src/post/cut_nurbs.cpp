@@ -14,10 +14,6 @@ namespace bezcam::detail {
 
 namespace {
 
-// Share of the tolerance within which the printed curves are sampled for the
-// independent measurement, so that the sampling itself does not show in it.
-constexpr double kSampleShare = 1e-5;
-
 // Says once per program that the machine has no NURBS words.
 void note_fallback(CutContext& c) {
   const std::string n = "machine " + c.machine.name + " has no NURBS words: --output nurbs cuts with " +

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "bezcam/post/number_format.hpp"
+#include "bezcam/post/report.hpp"
 #include "bezcam/limits.hpp"
 
 #ifndef BEZCAM_VERSION
@@ -44,8 +45,8 @@ class Writer {
     line(comment(std::string("bezcam ") + BEZCAM_VERSION + ": " + p_.job_name + ", machine " + m_.name +
                  ", output " + to_string(p_.output)));
     line(comment("tolerance " + format_number(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
-                 format_number(p_.max_measured, 6) + " " + u + ", proven bound " + format_number(p_.max_bound, 6) +
-                 " " + u + ", rounding included"));
+                 measured_text(p_.max_measured, p_.tolerance, [](double v) { return format_number(v, 6); }) + " " +
+                 u + ", proven bound " + format_number(p_.max_bound, 6) + " " + u + ", rounding included"));
     for (const auto& n : p_.notes) line(comment(n));
     line(std::string(p_.units == Units::mm ? "G21" : "G20") + " G90 G17");
     for (const Move& mv : p_.moves) move(mv);

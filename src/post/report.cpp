@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bezcam/error.hpp"
+#include "bezcam/flatten/deviation.hpp"
 
 namespace bezcam {
 
@@ -16,6 +17,11 @@ std::string format_significant(double v, int digits) {
   // or large values, which deviations of 1e-5 and lengths of 1e4 are not.
   std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
+}
+
+std::string measured_text(double measured, double tolerance, std::string (*format)(double)) {
+  const double resolution = kMeasureResolution * tolerance;
+  return measured <= resolution ? "below " + format(resolution) : format(measured);
 }
 
 MotionTotals motion_totals(std::span<const ToolMotion> motion, double rapid_rate, int entity) {
@@ -46,6 +52,7 @@ ProgramReport make_report(const Program& p, const MachineProfile& m, std::string
   r.decimals = p.decimals;
   r.max_measured = p.max_measured;
   r.max_bound = p.max_bound;
+  r.measurement_resolution = kMeasureResolution * p.tolerance;
   r.warnings = p.warnings;
   // The profile has no rapid rate of its own: its maximum feed is the
   // fastest the machine is known to move.
@@ -88,6 +95,7 @@ std::string report_json(const ProgramReport& r) {
   j["decimals"] = r.decimals;
   j["max_measured_deviation"] = r.max_measured;
   j["max_proven_bound"] = r.max_bound;
+  j["measurement_resolution"] = r.measurement_resolution;
   auto& ents = j["entities"] = nlohmann::ordered_json::array();
   for (const auto& e : r.entities) {
     nlohmann::ordered_json x;
@@ -116,6 +124,9 @@ std::string report_json(const ProgramReport& r) {
 
 std::string report_text(const ProgramReport& r, size_t max_entities) {
   const std::string u = std::string(" ") + to_string(r.units);
+  auto measured = [&](double m) {
+    return measured_text(m, r.tolerance, [](double v) { return format_significant(v, 3); }) + u;
+  };
   size_t blocks = 0;
   for (const auto& e : r.entities) blocks += e.report.blocks;
   const size_t n = r.entities.size();
@@ -126,12 +137,12 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
     const EntityReport& e = r.entities[i].report;
     s += "  " + e.label + ": " + e.type + ", degree " + std::to_string(e.degree) + ", length " +
          format_significant(e.length, 6) + u + ", " + std::to_string(e.blocks) + " block" +
-         (e.blocks == 1 ? "" : "s") + ", deviation " + format_significant(e.measured, 3) + u + " (proven bound " +
+         (e.blocks == 1 ? "" : "s") + ", deviation " + measured(e.measured) + " (proven bound " +
          format_significant(e.bound, 3) + u + ")\n";
   }
   if (n > max_entities)
     s += "  ... and " + std::to_string(n - max_entities) + " more entit" + (n - max_entities == 1 ? "y" : "ies") +
-         "; the largest deviation measured is " + format_significant(r.max_measured, 3) + u + "\n";
+         "; the largest deviation measured is " + measured(r.max_measured) + "\n";
   const double t = r.total.time_s();
   char tbuf[64];
   if (t < 60) std::snprintf(tbuf, sizeof tbuf, "%.1f s", t);

@@ -9,8 +9,9 @@
 # Seeds: job files from samples/ and tests/bad/; G-code from tests/golden/
 # and tests/bad/ and the samples converted for every dialect; Modbus frames
 # from the worked example of docs/modbus-register-map.md. Each input gets
-# TIMEOUT seconds (default 20; 60 for the job reader, whose sample patches
-# take 5 to 10 s in this instrumented -O1 build): slower is a hang.
+# TIMEOUT seconds (default 20; 60 for the job reader, which converts what
+# it reads in this instrumented -O1 build, 30 times slower than a release
+# build): slower is a hang.
 # A finding is written to BUILD_DIR/artifacts/TARGET/ and the run stops;
 # reproduce it with BUILD_DIR/TARGET FILE, fix it, and keep it as a gtest
 # regression test (tests/<layer>/fuzz_regressions_test.cpp).
@@ -70,5 +71,10 @@ case "$target" in
 esac
 timeout=20
 [ "$target" = fuzz_job_reader ] && timeout=60
+# Inputs of at most MAX_LEN bytes (default 8192: a few hundred G-code lines
+# or a job of many entities). The golden programs reach 140 KB; mutating
+# those runs at about 30 inputs a second instead of thousands, and what
+# only a long input reaches (the line, program and file limits) is tested
+# directly in tests/*/limits_test.cpp.
 exec "$exe" -max_total_time="$secs" -timeout="${TIMEOUT:-$timeout}" -rss_limit_mb=2048 -print_final_stats=1 \
-  -artifact_prefix="$artifacts/" "${dict[@]}" "$corpus" "$seeds"
+  -max_len="${MAX_LEN:-8192}" -artifact_prefix="$artifacts/" "${dict[@]}" "$corpus" "$seeds"

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-9.json, machine fanuc, output nurbs)
-N20 (tolerance 0.01 mm; largest deviation measured 0.00798 mm, proven bound 0.008309 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.007981 mm, proven bound 0.008309 mm, rounding included)
 N30 G21 G90 G17
 N40 T1 M06
 N50 S12000 M03

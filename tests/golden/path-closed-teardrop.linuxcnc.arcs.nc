@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: path-closed-teardrop.json, machine linuxcnc, output arcs)
-(tolerance 0.01 mm; largest deviation measured 0.009956 mm, proven bound 0.009962 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009957 mm, proven bound 0.009962 mm, rounding included)
 G21 G90 G17
 T2 M6
 S12000 M3

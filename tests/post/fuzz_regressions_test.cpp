@@ -15,7 +15,7 @@ using namespace bezcam;
 namespace {
 
 std::string read_file(const std::string& name) {
-  std::ifstream in(std::string(BEZCAM_SOURCE_DIR) + "/tests/fuzz/regressions/" + name, std::ios::binary);
+  std::ifstream in(std::string(BEZCAM_SOURCE_DIR) + "/tests/fuzz/regressions/gcode/" + name, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
@@ -43,7 +43,7 @@ TEST(FuzzRegression, AToolNumberBeyondAnIntIsRefused) {
   // T1e20 was converted to int: undefined behaviour (UBSan: 1e+20 is
   // outside the range of representable values of type 'int').
   const MachineProfile generic = load_machine_profile("generic");
-  const std::string whole = read_file("gcode-tool-number-overflow.nc");
+  const std::string whole = read_file("tool-number-overflow.nc");
   ASSERT_FALSE(whole.empty());
   // read_gcode stops at the first garbled line; lint, which the fuzzer ran,
   // goes on to line 18 and reaches the tool number.

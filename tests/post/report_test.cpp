@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "bezcam/post/convert.hpp"
+
 namespace bezcam {
 namespace {
 
@@ -155,6 +157,30 @@ TEST(Report, TextIsShortAndNamesEveryEntityUpToTheLimit) {
   const std::string short_form = report_text(r, 2);
   EXPECT_NE(short_form.find("  ... and 7 more entities"), std::string::npos) << short_form;
   EXPECT_EQ(short_form.find("seed-ex-3"), std::string::npos);
+}
+
+TEST(Report, ExactOutputMeasuresWithinTheMeasurementsResolution) {
+  // fanuc prints the B-spline's own knots and points: the proven bound is
+  // rounding only, far below what the measurement resolves. The report says
+  // so instead of a measured figure above the bound.
+  const Job job = load_sample("curve-bspline-wave.json");
+  const MachineProfile m = load_machine_profile("fanuc");
+  ConvertOptions opt;
+  opt.output = OutputMode::nurbs;
+  const ProgramReport r = make_report(build_program(job, m, opt), m);
+  EXPECT_DOUBLE_EQ(r.measurement_resolution, 1e-3 * job.tolerance);
+  const auto j = nlohmann::json::parse(report_json(r));
+  EXPECT_DOUBLE_EQ(j["measurement_resolution"].get<double>(), r.measurement_resolution);
+  for (const auto& x : j["entities"]) {
+    EXPECT_LT(x["proven_bound"].get<double>(), 1e-6 * job.tolerance);
+    EXPECT_LE(x["measured_deviation"].get<double>(), x["proven_bound"].get<double>() + r.measurement_resolution);
+  }
+  const std::string text = report_text(r);
+  EXPECT_NE(text.find("deviation below 1e-05 mm (proven bound "), std::string::npos) << text;
+  // The program's header says the same.
+  const std::string gcode = convert(job, m, opt).gcode;
+  EXPECT_NE(gcode.find("largest deviation measured below 0.00001 mm, proven bound 0. mm"), std::string::npos)
+      << gcode.substr(0, 300);
 }
 
 TEST(FormatSignificant, TrimsAndRounds) {

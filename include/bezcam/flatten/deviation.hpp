@@ -20,8 +20,12 @@ struct Deviation {
   double max() const { return curve_to_path > path_to_curve ? curve_to_path : path_to_curve; }
 };
 
-/// `tolerance`: the bound being checked; sampling resolution is 1/1000 of
-/// it. Nearest-point searches look in a window along the path first and
+/// Share of the `tolerance` argument at which measure_deviation() samples:
+/// its readings are accurate to about this much of it.
+inline constexpr double kMeasureResolution = 1e-3;
+
+/// `tolerance`: the bound being checked; sampling resolution is
+/// kMeasureResolution of it. Nearest-point searches look in a window along the path first and
 /// over everything when the windowed answer exceeds the tolerance, so any
 /// reading above the tolerance is a true (set) distance.
 Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3> polyline,

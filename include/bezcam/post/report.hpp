@@ -43,6 +43,11 @@ struct ProgramReport {
   double tolerance = 0;
   int decimals = 3;
   double max_measured = 0, max_bound = 0;
+  /// What the independent measurement can resolve (kMeasureResolution of
+  /// the tolerance): a measured deviation above the proven bound by less
+  /// than this is the measurement's own error (exact NURBS output, whose
+  /// bound is often 0, measures about 1e-5 of the tolerance).
+  double measurement_resolution = 0;
   /// Rate assumed for rapids (units/min) and where it comes from.
   double rapid_rate = 0;
   std::string rapid_rate_basis;
@@ -68,5 +73,12 @@ std::string report_text(const ProgramReport& r, size_t max_entities = 10);
 
 /// `v` with `digits` significant digits, trailing zeros trimmed ("0.00987").
 std::string format_significant(double v, int digits);
+
+/// A measured deviation as bezcam states it (program header, report,
+/// preview): `format(measured)`, or "below " + `format(resolution)` when it
+/// is within the measurement's resolution (kMeasureResolution of the
+/// tolerance), where a figure would only show the measurement's own error,
+/// possibly above a proven bound of 0 (exact NURBS output).
+std::string measured_text(double measured, double tolerance, std::string (*format)(double));
 
 }  // namespace bezcam
