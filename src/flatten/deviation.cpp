@@ -75,10 +75,7 @@ double golden_max(double a, double b, const auto& f) {
 Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3> polyline, double tolerance) {
   Deviation dev;
   if (pieces.empty() || polyline.empty()) return dev;
-  double scale = 0;
-  for (const auto& pc : pieces)
-    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
-  const double resolution = std::max(tolerance * kMeasureResolution, scale * 1e-13);
+  const double resolution = std::max(tolerance * kMeasureResolution, control_magnitude(pieces) * 1e-13);
   std::vector<Sample> D;
   D.push_back({pieces[0].front(), 0, 0});
   for (size_t i = 0; i < pieces.size(); ++i) sample_piece(pieces[i], i, 0, 1, resolution, 0, D);

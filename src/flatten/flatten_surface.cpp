@@ -128,8 +128,7 @@ TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptio
   }
   const double tol = opt.tolerance;
   // Evaluation of the tip adds a unit normal times r to the point.
-  const ToleranceBudget tb = check_tolerance(tol, opt.decimals, 3, magnitude(c) + radius);
-  const double margin = tb.margin;
+  const double margin = check_tolerance(tol, opt.decimals, 3, magnitude(c) + radius).margin;
   Vec3 Ar = quantize(tip_local(c, radius, 0, 0, 0), opt.decimals);
   out.points.push_back(Ar);
   out.params.push_back(0);

@@ -35,13 +35,6 @@ double float_margin(double tolerance, double scale) {
   return tolerance * kToleranceSafety + 64 * std::numeric_limits<double>::epsilon() * scale;
 }
 
-double control_magnitude(std::span<const Bezier> pieces) {
-  double scale = 0;
-  for (const auto& pc : pieces)
-    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
-  return scale;
-}
-
 namespace {
 
 // Three significant digits, rounded up, for figures in advice.

@@ -74,6 +74,13 @@ void validate_control_points(std::span<const Vec3> pts, std::span<const double> 
                        "expected a finite weight > 0, found " + fmt_num(w[i]));
 }
 
+double control_magnitude(std::span<const Bezier> pieces) {
+  double scale = 0;
+  for (const auto& pc : pieces)
+    for (const auto& p : pc.points) scale = std::max(scale, max_abs(p));
+  return scale;
+}
+
 Bezier Bezier::make(std::vector<Vec3> pts, std::vector<double> w, int d) {
   if (d != 2 && d != 3) throw InputError("curve.dimension", "", "expected dimension 2 or 3, found " + std::to_string(d));
   if (pts.size() < 2)

@@ -74,10 +74,7 @@ CurveGeometry make_path(std::vector<CurveSegment> segs, std::vector<Bezier> piec
   g.kind = "path";
   g.dim = dim;
   g.closed = closed;
-  double scale = 0;
-  for (const auto& p : pieces)
-    for (const auto& q : p.points) scale = std::max(scale, max_abs(q));
-  const double tol = 1e-9 * std::max(scale, 1.0);
+  const double tol = 1e-9 * std::max(control_magnitude(pieces), 1.0);
   for (size_t i = 1; i < segs.size(); ++i) {
     const Bezier& end = pieces[segs[i - 1].first_piece + segs[i - 1].piece_count - 1];
     const Bezier& start = pieces[segs[i].first_piece];

@@ -27,8 +27,6 @@ Vec3 quantize(const Vec3& p, int decimals);
 double max_rounding_displacement(int decimals, int dim);
 /// Margin for floating-point error at coordinates of magnitude `scale`.
 double float_margin(double tolerance, double scale);
-/// Largest coordinate magnitude among the control points of `pieces`.
-double control_magnitude(std::span<const Bezier> pieces);
 
 /// What is left of a tolerance for the geometry once rounding and
 /// floating-point error are set aside.

@@ -41,6 +41,9 @@ struct Bezier {
 /// or one finite weight > 0 per point), throwing InputError naming
 /// points[i] or weights[i]. Shared by Bézier and NURBS curves.
 void validate_control_points(std::span<const Vec3> pts, std::span<const double> w, int dim);
+/// Largest coordinate magnitude among the control points of `pieces` (the
+/// scale floating-point margins are taken against).
+double control_magnitude(std::span<const Bezier> pieces);
 
 Vec3 evaluate(const Bezier& b, double t);
 /// First derivative dM/dt at t (quotient rule for rational curves).
