@@ -20,12 +20,13 @@
 #include <vector>
 
 #include "bezcam/link/crc32.hpp"
-#include "bezcam/link/sim_server.hpp"
+#include "bezcam/sim/sim_server.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/link/transport.hpp"
 
 using namespace bezcam;
 using namespace bezcam::link;
+using namespace bezcam::sim;
 using Clock = std::chrono::steady_clock;
 
 namespace {

@@ -18,8 +18,9 @@
 #include <vector>
 
 #include "bezcam/error.hpp"
-#include "bezcam/post/convert.hpp"
-#include "bezcam/post/gcode_reader.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/gcode/reader.hpp"
+#include "bezcam/job/job_json.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;

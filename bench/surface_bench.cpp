@@ -13,8 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "bezcam/flatten/flatten_surface.hpp"
-#include "bezcam/post/convert.hpp"
+#include "bezcam/cam/gouge.hpp"
+#include "bezcam/cam/pass_plan.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/job/job_json.hpp"
 
 using namespace bezcam;
 using Clock = std::chrono::steady_clock;
@@ -63,7 +65,7 @@ int main(int argc, char** argv) {
   for (const char* f : files) {
     const Job job = load_job(dir + f);
     const Entity& e = job.entities[0];
-    const MachineProfile m = resolve_profile(job, "");
+    const MachineProfile m = load_machine_profile(job.machine.value_or("generic"));
     const CutParams cp = cut_params(job, e, m);
     PassOptions o;
     o.direction = e.toolpath.direction;
@@ -106,7 +108,7 @@ int main(int argc, char** argv) {
     const double t = ms(
         [&] {
           const Job job = load_job(dir + f);
-          res = convert(job, resolve_profile(job, ""), ConvertOptions{});
+          res = convert(job, load_machine_profile(job.machine.value_or("generic")), ConvertOptions{});
         },
         reps);
     size_t blocks = 0, lines = 0;

@@ -4,7 +4,8 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
-#include "bezcam/kernel/job.hpp"
+#include "bezcam/job/job.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "command.hpp"
 
 namespace bezcam::cli {

@@ -32,3 +32,19 @@ void write_output_atomically(const std::string& path, const std::string& data);
 bool stderr_is_tty();
 
 }  // namespace bezcam::cli
+
+namespace bezcam {
+struct Job;
+struct MachineProfile;
+}  // namespace bezcam
+
+namespace bezcam::cli {
+
+/// Loads the profile named by `--machine` (a name or a .json file); an
+/// unknown name is refused naming the option.
+MachineProfile load_profile_option(const std::string& machine);
+/// Picks the profile: `--machine` if given, else the job's `machine`, else
+/// "generic"; an unknown name from the file is refused naming its key.
+MachineProfile resolve_profile(const Job& job, const std::string& cli_machine);
+
+}  // namespace bezcam::cli

@@ -3,8 +3,9 @@
 #include <iostream>
 
 #include "bezcam/error.hpp"
-#include "bezcam/post/convert.hpp"
-#include "bezcam/post/report.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/report/report.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "command.hpp"
 #include "progress.hpp"
 

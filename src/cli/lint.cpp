@@ -9,7 +9,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/limits.hpp"
-#include "bezcam/post/gcode_reader.hpp"
+#include "bezcam/gcode/reader.hpp"
 #include "command.hpp"
 
 namespace bezcam::cli {
@@ -31,7 +31,7 @@ CLI::App* add(CLI::App& app) {
 }
 
 int run() {
-  const MachineProfile m = load_machine_profile(o.machine);
+  const MachineProfile m = load_profile_option(o.machine);
   if (std::filesystem::is_directory(o.file)) throw IoError("io.read", o.file, "is a directory, not a G-code file");
   const auto findings = lint_gcode(read_bounded(o.file, kMaxProgramBytes, "G-code file"), m);
   for (const auto& f : findings) std::cout << o.file << ":" << f.line << ": " << f.message << " [" << f.id << "]\n";

@@ -14,11 +14,9 @@
 #include <iostream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/version.hpp"
 #include "command.hpp"
 
-#ifndef BEZCAM_VERSION
-#define BEZCAM_VERSION "0"
-#endif
 
 namespace bezcam::cli {
 
@@ -71,7 +69,7 @@ int main(int argc, char** argv) {
   using namespace bezcam;
   CLI::App app{"bezcam: exact curves and surfaces (JSON) to CNC programs whose chord error is proven, "
                "streamed to controllers over Modbus TCP."};
-  app.set_version_flag("--version", std::string("bezcam ") + BEZCAM_VERSION);
+  app.set_version_flag("--version", std::string("bezcam ") + kVersion);
   app.require_subcommand(1);
   auto& cmds = cli::commands();
   std::sort(cmds.begin(), cmds.end(), [](auto* a, auto* b) { return a->name < b->name; });

@@ -13,10 +13,11 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/limits.hpp"
-#include "bezcam/post/convert.hpp"
-#include "bezcam/post/gcode_reader.hpp"
-#include "bezcam/post/preview_svg.hpp"
-#include "bezcam/post/report.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/gcode/reader.hpp"
+#include "bezcam/report/preview_svg.hpp"
+#include "bezcam/report/report.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "command.hpp"
 #include "progress.hpp"
 
@@ -69,7 +70,7 @@ int run_program() {
   // The machine, when named, is checked by lint (its findings are shown,
   // not fatal: seeing the path helps to fix it) and gives the rapid rate.
   const bool named = !o.machine.empty() || (job && job->machine);
-  const MachineProfile m = job ? resolve_profile(*job, o.machine) : load_machine_profile(o.machine.empty() ? "generic" : o.machine);
+  const MachineProfile m = job ? resolve_profile(*job, o.machine) : load_profile_option(o.machine.empty() ? "generic" : o.machine);
   Progress progress("preview", "bytes", text.size(), progress_config(o.quiet));
   GcodeInterpreter reader;
   PreviewInput in;

@@ -9,7 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "bezcam/post/convert.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "support/run_process.hpp"
 
 namespace fs = std::filesystem;

@@ -9,9 +9,10 @@
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
-#include "bezcam/flatten/flatten_surface.hpp"
+#include "bezcam/cam/gouge.hpp"
+#include "bezcam/cam/pass_plan.hpp"
 #include "bezcam/limits.hpp"
-#include "surface_fixtures.hpp"
+#include "support/surface_fixtures.hpp"
 
 namespace bezcam {
 namespace {

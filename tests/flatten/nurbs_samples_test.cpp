@@ -9,9 +9,10 @@
 
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
-#include "bezcam/kernel/job.hpp"
+#include "bezcam/job/job.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/kernel/spline_interp.hpp"
+#include "bezcam/job/job_json.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;

@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "bezcam/error.hpp"
-#include "bezcam/post/gcode_reader.hpp"
+#include "bezcam/gcode/reader.hpp"
 
 namespace {
 

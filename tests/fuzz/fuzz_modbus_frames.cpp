@@ -18,7 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "bezcam/link/sim_server.hpp"
+#include "bezcam/sim/sim_server.hpp"
 
 namespace {
 
@@ -33,6 +33,7 @@ void drain(int fd) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace bezcam;
   using namespace bezcam::link;
+using namespace bezcam::sim;
   if (size > 64 * 1024) return 0;  // more than a socket buffer: nothing new to find
   static const MachineProfile generic = load_machine_profile("generic");
   int sv[2];

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "bezcam/error.hpp"
-#include "surface_fixtures.hpp"
+#include "support/surface_fixtures.hpp"
 
 namespace bezcam {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <random>
 
-#include "surface_fixtures.hpp"
+#include "support/surface_fixtures.hpp"
 
 namespace bezcam {
 namespace {

@@ -13,7 +13,7 @@
 #include "bezcam/link/crc32.hpp"
 #include "bezcam/link/register_map.hpp"
 #include "bezcam/link/transport.hpp"
-#include "link_test_util.hpp"
+#include "support/link_test_util.hpp"
 
 using namespace bezcam;
 using namespace bezcam::link;

@@ -1,0 +1,66 @@
+#pragma once
+/// A machine profile: everything that differs between controllers, as data
+/// (machines/NAME.json; docs/machines.md documents every key).
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bezcam/flatten/exact_blocks.hpp"
+#include "bezcam/job/job.hpp"
+#include "bezcam/kernel/units.hpp"
+
+namespace bezcam {
+
+struct MachineProfile {
+  std::string name;
+  std::string description;
+  std::vector<std::string> header;   ///< raw lines before the program
+  std::vector<std::string> footer;   ///< raw lines after the final retract
+  bool line_numbers = false;
+  int line_start = 10, line_step = 10;
+  int decimals_mm = 3, decimals_inch = 4;
+  int feed_decimals = 1;
+  std::string word_rapid = "G00", word_feed = "G01", word_cw = "G02", word_ccw = "G03";
+  std::string tool_change = "T{tool} M06";  ///< {tool} is replaced
+  std::string spindle_on = "S{rpm} M03";    ///< {rpm} is replaced
+  std::string spindle_off = "M05";
+  bool arcs = true;
+  double arc_tolerance_mm = 0.002;  ///< allowed radius mismatch of a printed arc
+  NurbsDialect nurbs = NurbsDialect::none;
+  std::string nurbs_start_word = "G06.2";
+  int nurbs_max_rank = 4;
+  int knot_decimals = 4, weight_decimals = 4;
+  /// NURBS block numbers printed with all their decimals (`K0.000000
+  /// X55.507 Y52.139 Z0.000 R1.000`, the seeds' listing) instead of with
+  /// trailing zeros trimmed (`K0. X55.507 ... R1.`).
+  bool nurbs_fixed_decimals = false;
+  /// Travel in program coordinates, mm: {min, max} per axis.
+  std::array<std::array<double, 2>, 3> travel_mm{{{-1e4, 1e4}, {-1e4, 1e4}, {-1e4, 1e4}}};
+  double max_feed_mm_min = 1e5;
+  JobParams defaults;  ///< feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool (mm)
+
+  int decimals(Units u) const { return u == Units::mm ? decimals_mm : decimals_inch; }
+};
+
+/// Parses a profile document; `source` names it in messages.
+MachineProfile parse_machine_profile(const std::string& text, const std::string& source);
+/// The folders searched for a profile given by name, in order: each entry
+/// of the BEZCAM_MACHINES environment variable (':'-separated), then
+/// `extra`. The library holds no source path: a program that links bezcam
+/// passes its own folders (the CLI adds ../machines beside its executable,
+/// the build tree's, and ../share/bezcam/machines, where `cmake --install`
+/// puts the shipped profiles; the CMake package names that folder in
+/// `bezcam_MACHINES_DIR`).
+std::vector<std::filesystem::path> machine_search_path(const std::vector<std::filesystem::path>& extra = {});
+
+/// `name_or_file`: a path to a .json file, or a name looked up in `dirs`
+/// (the first folder that holds NAME.json wins). Throws InputError
+/// (machine.unknown) for an unknown or invalid name, listing the known ones.
+MachineProfile load_machine_profile(const std::string& name_or_file,
+                                    const std::vector<std::filesystem::path>& dirs = machine_search_path());
+/// Names of the profiles found in `dirs`, sorted, without duplicates.
+std::vector<std::string> machine_profile_names(const std::vector<std::filesystem::path>& dirs = machine_search_path());
+
+}  // namespace bezcam

@@ -1,0 +1,77 @@
+#pragma once
+/// A program's motion as absolute blocks (MotionBlock). The canonical moves
+/// of a built Program become the same type that the G-code reader produces, so
+/// that the report and the preview measure and draw a program built from a
+/// job and a program read back from text in one way.
+#include <span>
+#include <vector>
+
+#include "bezcam/cam/program.hpp"
+
+namespace bezcam {
+
+enum class BlockKind { rapid, linear, arc_cw, arc_ccw, nurbs, bezier };
+
+/// One executed motion in absolute program coordinates (program units).
+struct MotionBlock {
+  BlockKind kind = BlockKind::linear;
+  int line = 0;            ///< 1-based line of the program where the block ends
+  int first_line = 0;      ///< where it starts (NURBS blocks span lines)
+  Vec3 from, to;
+  /// Axes of `from` known before the move (X 1, Y 2, Z 4); an unknown axis
+  /// of `from` holds the value of `to` (no motion assumed along it).
+  unsigned from_known = 7;
+  double feed = 0;         ///< units/min (0 for rapids)
+  Vec3 center;             ///< arcs
+  int order = 0;           ///< nurbs: degree + 1; bezier: degree + 1
+  std::vector<Vec3> ctrl;  ///< nurbs / bezier control points, ctrl[0] == from
+  std::vector<double> weights, knots;  ///< nurbs (LinuxCNC G5.2: the interpreter's clamped uniform knots)
+};
+
+/// Point of a block at t in [0,1] (arcs by angle, NURBS over the knot domain).
+/// Arcs: the radius runs linearly from the start's to the end's (they may
+/// differ within the arc tolerance) and Z linearly (helix); t = 0 and t = 1
+/// give `from` and `to` exactly.
+Vec3 evaluate_block(const MotionBlock& b, double t);
+
+/// The exact Bézier pieces (3D) of a block, end to end: lines as degree 1,
+/// G5/G5.1 as they are, NURBS blocks decomposed (to_bezier), planar arcs as
+/// rational quadratic pieces of at most 90 degrees on the circle through
+/// `from` around `center` (exact when `to` lies on it; the last piece ends
+/// at `to`). Helical arcs (Z varies) throw std::invalid_argument, as do
+/// NURBS blocks that cannot be decomposed (lint-recovered bad knots).
+std::vector<Bezier> block_to_bezier(const MotionBlock& b);
+
+/// Swept angle of a G17 arc block, in (0, 2 pi] (equal ends: a full circle).
+double arc_sweep(const MotionBlock& b);
+
+
+/// One motion block and the entity it belongs to.
+struct ToolMotion {
+  MotionBlock block;
+  int entity = -1;  ///< index in the job's entities; -1 when unknown or none
+};
+
+/// The motion blocks of `p`, in order, in program coordinates (job units).
+/// Axis words are modal: a move that sets only some axes keeps the others.
+/// Axes no move has set yet (the first retract sets only Z) count as being
+/// already at the target, so a block never starts from an invented origin.
+/// Comments, tool changes and spindle moves produce no block.
+std::vector<ToolMotion> program_motion(const Program& p);
+
+/// Length of a block in program units: exact for lines and arcs (helical
+/// arcs included); NURBS and Bézier blocks (and arcs whose ends sit at
+/// different radii) by chord sums with Richardson extrapolation, halving
+/// until successive sums agree to 1e-9 of the block's size.
+double block_length(const MotionBlock& b);
+
+/// Points along a block from `from` to `to` (both included). Lines give their
+/// two ends; arcs and exact-curve blocks are sampled so that each chord
+/// stays within `chord` (program units, > 0) of the block (arcs exactly,
+/// curves by subdivision until chord midpoints agree).
+std::vector<Vec3> sample_block(const MotionBlock& b, double chord);
+
+/// Whether the block moves at a feed (everything but rapids).
+inline bool is_feed(const MotionBlock& b) { return b.kind != BlockKind::rapid; }
+
+}  // namespace bezcam

@@ -1,0 +1,97 @@
+#pragma once
+/// Canonical moves: the program as motion, before any text. Built from a job
+/// and a profile, validated as a whole (validate.hpp), then printed by the
+/// G-code writer in the profile's dialect.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bezcam/job/job.hpp"
+#include "bezcam/cam/machine_profile.hpp"
+
+namespace bezcam {
+
+enum class MoveKind {
+  comment,      ///< text
+  rapid,        ///< G00 to `to` (only at or above safe Z, or straight up to it)
+  linear,       ///< G01 to `to` at `feed`
+  arc_cw,       ///< G02 in G17 to `to` around `center` at `feed`
+  arc_ccw,      ///< G03
+  nurbs,        ///< exact curve block: `ctrl` (first = current position), `weights`, `knots`, `order`
+  bezier,       ///< LinuxCNC G5 (cubic) / G5.1 (quadratic): `ctrl` = P0..Pn
+  tool_change,  ///< `tool`
+  spindle_on,   ///< `rpm`
+  spindle_off,
+};
+
+struct Move {
+  MoveKind kind = MoveKind::comment;
+  Vec3 to;                    ///< end point (printed values: already rounded)
+  unsigned axes = 7;          ///< which of X (1), Y (2), Z (4) `to` sets
+  double feed = 0;            ///< units/min
+  Vec3 center;                ///< arcs: absolute centre (rounded as printed I/J)
+  std::vector<Vec3> ctrl;     ///< nurbs / bezier control points
+  std::vector<double> weights, knots;
+  int order = 0;              ///< nurbs: degree + 1
+  int tool = 0;
+  double rpm = 0;
+  std::string text;           ///< comment
+  int entity = -1;            ///< index of the entity it cuts, -1 for none
+};
+
+/// What was asked for and achieved, per entity.
+struct EntityReport {
+  std::string label, type;
+  int degree = 0;
+  double length = 0;       ///< true curve length (units)
+  size_t blocks = 0;       ///< cutting blocks emitted
+  double measured = 0;     ///< largest deviation measured on the printed path
+  double bound = 0;        ///< proven upper bound
+  int entity = -1;         ///< index in the job's entities (Move::entity)
+};
+
+enum class OutputMode { lines, arcs, nurbs };
+OutputMode parse_output_mode(const std::string& s);  ///< throws InputError
+const char* to_string(OutputMode m);
+
+struct ConvertOptions {
+  OutputMode output = OutputMode::lines;
+  std::optional<double> tolerance;  ///< overrides the job's
+  bool measure = true;              ///< measure the printed path (header, report)
+  /// Called by build_program() before each entity with (entities done so
+  /// far, total entities, the entity's label), and once more with
+  /// (total, total, "") at the end; for progress bars. May be empty.
+  std::function<void(size_t done, size_t total, const std::string& label)> on_entity;
+};
+
+struct Program {
+  std::string job_name;
+  std::string machine;
+  Units units = Units::mm;
+  OutputMode output = OutputMode::lines;
+  double tolerance = 0;
+  double max_measured = 0;  ///< largest deviation measured (units)
+  double max_bound = 0;     ///< largest proven bound (units)
+  double safe_z = 0;        ///< lowest safe Z of the entities (rapids stay at or above it)
+  int decimals = 3;
+  std::vector<Move> moves;
+  std::vector<EntityReport> entities;
+  std::vector<std::string> warnings;
+  /// Extra lines for the program's header comment (e.g. how an output mode
+  /// the machine lacks was replaced); each is also one of `warnings`.
+  std::vector<std::string> notes;
+};
+
+/// Builds the canonical program: header state, per entity a retract, rapid,
+/// plunge, cut and retract, and the final retract. Does not validate.
+Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
+
+/// The effective cutting parameters of an entity (entity > job > profile),
+/// in job units; InputError naming the missing key when one is unset.
+struct CutParams {
+  double feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool_radius;
+  int tool;
+};
+CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m);
+
+}  // namespace bezcam

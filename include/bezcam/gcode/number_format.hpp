@@ -1,0 +1,21 @@
+#pragma once
+/// Numbers as G-code prints them: fixed decimals, trailing zeros trimmed,
+/// the decimal point always kept ("10.", "0.5", "-1.25"), never "-0.".
+/// The value a controller reads back is exactly quantize(v, decimals).
+#include <string>
+
+namespace bezcam {
+
+std::string format_number(double v, int decimals);
+
+/// `v` with `digits` significant digits, trailing zeros trimmed ("0.00987").
+std::string format_significant(double v, int digits);
+
+/// A measured deviation as bezcam states it (program header, report,
+/// preview): `format(measured)`, or "below " + `format(resolution)` when it
+/// is within the measurement's resolution (kMeasureResolution of the
+/// tolerance), where a figure would only show the measurement's own error,
+/// possibly above a proven bound of 0 (exact NURBS output).
+std::string measured_text(double measured, double tolerance, std::string (*format)(double));
+
+}  // namespace bezcam

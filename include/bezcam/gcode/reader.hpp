@@ -1,0 +1,151 @@
+#pragma once
+/// One G-code reader for every dialect bezcam emits: G00/G01, G02/G03 (G17
+/// with I/J), the Fanuc-style NURBS block (G06.2 or G06.3 start word, P rank,
+/// K knots, R weights), LinuxCNC G5 / G5.1 Bézier moves and G5.2 ... G5.3
+/// NURBS. Used by `bezcam lint`, by the round-trip tests, by the simulated
+/// controller and by the preview. Parse, validate, then execute (Grbl's
+/// structure): a line is checked completely before it changes the state.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/cam/motion.hpp"
+
+namespace bezcam {
+
+/// Modal state of the interpreter.
+struct MachineState {
+  Vec3 pos;
+  unsigned known_axes = 0;   ///< X 1, Y 2, Z 4: set once a word gave the axis
+  Units units = Units::mm;
+  bool units_set = false;
+  bool absolute = true;
+  int plane = 17;
+  /// Modal motion: 0, 1, 2, 3 (G00..G03), 50 (G5), 51 (G5.1), 52 (a G5.2
+  /// block is open), 62 / 63 (Fanuc NURBS mode, G06.2 / G06.3), -1 none
+  /// (at the start, after G80 and after G5.3).
+  int motion = -1;
+  double feed = 0;
+  double spindle_rpm = 0;
+  bool spindle_on = false;
+  int tool = 0;
+  bool program_end = false;  ///< M02 / M30 seen
+};
+
+/// A problem in a program, naming its line.
+struct GcodeFinding {
+  int line = 0;
+  std::string id;       ///< stable id, e.g. gcode.knot-order
+  std::string message;  ///< what is wrong and what was expected
+};
+
+/// Streaming interpreter: feed it lines in order.
+///
+/// What it accepts (shared/spec/gcode-dialects.md; every refusal is an
+/// InputError "gcode.<what>" at "line N" naming the word and what was
+/// expected):
+///  - `%` lines, an `O1234` program-number line, `N` line numbers, comments
+///    in parentheses and after `;`, upper- or lower-case words;
+///  - G00 G01 G02 G03 (G17 only, centre by I/J or radius by R; K refused),
+///    G04 P dwell, G17, G20/G21 (not changed after the first move), G90,
+///    G94, G40, G49, G54-G59, G61/G61.1/G64, G80; refused with a reason:
+///    G18/G19, G91 (incremental), G93/G95, G41/G42, G43, anything else;
+///  - M00 M01 M02 M30 M03 M04 M05 M06 M07 M08 M09, F, S, T;
+///  - the Fanuc-style NURBS block: start word G06.2 or G06.3 (with a
+///    profile: its start word only), `P` rank 2..4 (default 4; the
+///    profile's maximum) on the first block only, the first block's point =
+///    the current position, one `K X Y Z R` block per control point (axis
+///    words left out keep the previous point's value, R defaults to 1),
+///    then exactly P knot-only `K` blocks, after which the block is
+///    complete. Knots must not decrease, the first P and the last P must be
+///    equal (clamped), no knot may repeat more than P times, weights > 0;
+///  - LinuxCNC G5 (I J P Q; I and J may be left out right after another G5:
+///    they continue its tangent), G5.1 (I and J), G5.2 P- L- ... X- Y- P-
+///    ... G5.3 (order L >= 3, default 3; P on every point; the interpreter's
+///    clamped uniform integer knots 0..n-k+2, see linuxcnc_knots()). These
+///    move in X and Y only: a Z word is refused.
+/// With a profile, the profile's NURBS dialect is enforced (no G5 on a Fanuc,
+/// no G06.2 on Grbl), and so are its travel limits (program units, arcs and
+/// curves by their true extent), maximum feed and arc tolerance (the
+/// centre's distances to start and end may differ by at most
+/// arc_tolerance_mm; 0.002 mm without a profile).
+class GcodeInterpreter {
+ public:
+  /// With a profile, travel limits and maximum feed are enforced too. The
+  /// profile must outlive the interpreter.
+  explicit GcodeInterpreter(const MachineProfile* profile = nullptr);
+
+  /// Interprets one line (`line_no` is 1-based). Returns the motion blocks
+  /// the line completes (a NURBS block completes on the line that ends it).
+  /// Throws InputError("gcode.*", "line N", ...) on any error; the state is
+  /// unchanged by a refused line.
+  std::vector<MotionBlock> feed_line(std::string_view text, int line_no);
+  /// End of input: throws if a multi-line block is still open.
+  std::vector<MotionBlock> finish();
+
+  const MachineState& state() const { return state_; }
+
+ private:
+  struct Impl;  // the interpretation of one line (gcode_reader.cpp)
+  friend std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile& profile);
+
+  // Everything beyond MachineState that later lines depend on. A line is
+  // interpreted on copies of state_ and more_, committed only when accepted.
+  struct More {
+    int open = 0;          // open multi-line block: 0 none, 62/63 Fanuc, 52 G5.2
+    int open_line = 0;     // where it started
+    int order = 0;         // its rank / order
+    double open_feed = 0;  // the feed it runs at
+    std::vector<Vec3> ctrl;
+    std::vector<double> weights, knots;  // Fanuc knots; NaN where lint recovered a missing K
+    std::vector<int> knot_lines;
+    int knot_only = 0;       // Fanuc: knot-only blocks so far
+    int knot_only_line = 0;  // the first of them
+    int nurbs_mode_line = 0; // where the Fanuc NURBS mode was entered
+    int selected_tool = -1;  // last T word (-1: none)
+    bool g5_chain = false;   // the previous motion was a G5: I and J may be left out
+    Vec3 g5_next_ij;         // ... and then default to minus its P and Q
+    bool moved = false;      // a move has been made (units may no longer change)
+    bool distance_set = false, plane_set = false;
+    int end_line = 0;        // M02 / M30 seen there
+    long last_n = -1;        // last N word
+    int last_line = 0;       // last line fed
+    // Lint-only bookkeeping: findings already reported once.
+    bool noted_modes = false, noted_position = false, noted_spindle = false;
+    double feed_reported = -1;  // the excessive feed last reported
+  };
+
+  const MachineProfile* profile_;
+  MachineState state_;
+  More more_;
+  // lint_gcode(): recoverable problems are recorded here (and the line goes
+  // on with the values as given) instead of thrown.
+  std::vector<GcodeFinding>* findings_ = nullptr;
+};
+
+/// Reads a whole program; throws at the first error (InputError, "line N").
+std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile* profile = nullptr);
+
+/// LinuxCNC's knot vector for a G5.2 block of `n_points` control points and
+/// order k (its interpreter, knot_vector_creator() in
+/// nurbs_additional_functions.cc): k zeros, then 1, 2, ..., n_points - k,
+/// then k times n_points - k + 1.
+std::vector<double> linuxcnc_knots(size_t n_points, int order);
+
+/// Checks a program against a profile; every finding names its line.
+/// Syntax, knot order and counts and the other NURBS block rules, arcs valid
+/// after rounding, travel limits and feeds: everything read_gcode() refuses,
+/// but all of it (a line with an error is skipped, recoverable problems such
+/// as a decreasing knot are reported and the values kept, so that every
+/// decreasing knot is listed). Beyond the reader, it flags: a first move
+/// before G20/G21, G90 and G17 are all set; cutting from an unknown
+/// position; cutting with the spindle stopped; a rapid that lowers Z while
+/// moving in X or Y; M06 without a T word; N numbers that do not increase;
+/// a NURBS block whose interior knot of multiplicity P lets the curve jump;
+/// no M02/M30. Sorted by line.
+std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile& profile);
+
+}  // namespace bezcam

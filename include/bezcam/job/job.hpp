@@ -1,0 +1,68 @@
+#pragma once
+/// A job: what the curve file (shared/spec/curve-file.md, version 1) holds,
+/// validated. Built by the JSON reader (job_json.hpp) or in memory
+/// (job_builder.hpp); after construction the invariants hold
+/// (finite numbers, positive tolerance, meeting path joints, ...).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "bezcam/kernel/curve.hpp"
+#include "bezcam/kernel/surface.hpp"
+#include "bezcam/kernel/units.hpp"
+
+namespace bezcam {
+
+/// What to do where a ball-end tool would gouge a surface (key `gouge`):
+/// refuse the job (exit 2, naming entity, u and v) or leave those regions uncut.
+enum class GougePolicy { refuse, skip };
+
+/// Cutting parameters (file units); unset values fall back to the entity's
+/// job, then to the machine profile.
+struct JobParams {
+  std::optional<double> feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool_radius;
+  std::optional<int> tool;
+  std::optional<GougePolicy> gouge;  ///< surfaces with tool_radius > 0; default refuse
+  /// Values set here win; the rest come from `base`.
+  JobParams over(const JobParams& base) const;
+};
+
+/// Where a surface entity's passes go (curve-file.md, `toolpath`).
+struct ToolpathSpec {
+  std::string pattern = "zigzag";  ///< zigzag | raster | boundary
+  char direction = 'u';            ///< parameter that varies along a pass
+  std::optional<double> stepover;
+};
+
+struct Entity {
+  std::string id;      ///< may be empty
+  size_t index = 0;    ///< position in `entities`
+  std::string type;    ///< JSON type
+  JobParams params;    ///< this entity's overrides
+  CurveGeometry curve; ///< for curve entities (bezier, bspline, interpolate, path)
+  /// bezier_patch, coons_patch: the surface; curve_on_surface: the surface
+  /// it lies on (shared with the patch entity it names, if any).
+  std::shared_ptr<const SurfaceGeometry> surface;
+  ToolpathSpec toolpath;  ///< bezier_patch, coons_patch
+  CurveGeometry uv_curve; ///< curve_on_surface: the 2D curve in the (u, v) square
+
+  /// The id, or `entities[i]` when there is none.
+  std::string label() const { return id.empty() ? "entities[" + std::to_string(index) + "]" : id; }
+  std::string json_path() const { return "entities[" + std::to_string(index) + "]"; }
+};
+
+struct Job {
+  int version = 1;
+  Units units = Units::mm;
+  double tolerance = 0.01;
+  std::optional<std::string> machine;
+  JobParams params;
+  std::vector<Entity> entities;
+  std::vector<std::string> warnings;  ///< unknown keys and other non-fatal findings
+  std::string source;                 ///< file name, for messages
+};
+
+}  // namespace bezcam

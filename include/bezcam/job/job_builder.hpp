@@ -1,0 +1,61 @@
+#pragma once
+/// Builds a Job from in-memory curves, for programs that use bezcam as a
+/// library (a CAD system that has the geometry already, with no JSON file).
+/// The result obeys the same invariants as a job read from a file: every
+/// curve is built by the kernel's validating factories, and build() checks
+/// what the JSON reader checks of the job as a whole.
+///
+///   Job job = JobBuilder("bracket")
+///                 .tolerance(0.01)
+///                 .feed(600).plunge_feed(200).safe_z(5).cut_z(-1)
+///                 .bezier("outline", Bezier::make({{0, 0}, {10, 20}, {30, 0}}))
+///                 .build();
+#include <string>
+#include <vector>
+
+#include "bezcam/job/job.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
+
+namespace bezcam {
+
+class JobBuilder {
+ public:
+  /// `name` stands for the file name in messages and program headers.
+  explicit JobBuilder(std::string name = "job");
+
+  JobBuilder& units(Units u);
+  /// Largest distance between the true geometry and the cut path (job
+  /// units, > 0, finite); InputError otherwise.
+  JobBuilder& tolerance(double t);
+  /// The profile to use when the caller names none.
+  JobBuilder& machine(std::string name);
+  /// Job-wide cutting parameters (job units; feeds per minute).
+  JobBuilder& feed(double v);
+  JobBuilder& plunge_feed(double v);
+  JobBuilder& safe_z(double v);
+  JobBuilder& cut_z(double v);
+  JobBuilder& spindle_rpm(double v);
+  JobBuilder& tool(int t);
+  JobBuilder& params(const JobParams& p);
+
+  /// One Bézier curve (polynomial or rational) as an entity; `id` may be
+  /// empty. `params` overrides the job's for this entity.
+  JobBuilder& bezier(std::string id, Bezier curve, JobParams params = {});
+  /// A B-spline or NURBS curve as an entity (decomposed exactly; the exact
+  /// form is kept for NURBS output).
+  JobBuilder& nurbs(std::string id, NurbsCurve curve, JobParams params = {});
+  /// A path of Bézier segments end to end (each starts where the previous
+  /// ends, within 1e-9 of the coordinates' magnitude; InputError naming
+  /// `segments[i]` otherwise); `closed` joins the end to the start.
+  JobBuilder& path(std::string id, std::vector<Bezier> segments, bool closed = false, JobParams params = {});
+
+  /// The job. Throws InputError (place: the builder's name and
+  /// `entities[i]`) when an entity's values are invalid or no entity was added.
+  Job build() const;
+
+ private:
+  Job job_;
+  JobBuilder& entity(std::string id, std::string type, CurveGeometry g, JobParams params);
+};
+
+}  // namespace bezcam

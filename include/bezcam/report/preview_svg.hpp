@@ -1,0 +1,84 @@
+#pragma once
+/// A picture of a job and its tool path, as a self-contained SVG document
+/// (viewBox, no scripts, no external fonts or images: it opens in any
+/// browser): the true curves sampled from their exact Bézier pieces, their
+/// control polygons and points, the tool path with feeds solid and rapids
+/// dashed, entity ids, start points and directions, a scale bar and the
+/// units. A top view always; an isometric view as well when the job has 3D
+/// entities or the tool path cuts in 3D. Surfaces are drawn as iso-parameter
+/// lines (11 each way, borders heavier) with the control nets of their
+/// cells; a curve on a surface as its exact composition with the surface.
+/// Optionally every cutting block of a curve is coloured by its measured
+/// deviation from the true geometry (surface passes are drawn, not measured).
+///
+/// Element classes (stable, for tests and for styling): `view` groups with
+/// ids `top-view` / `iso-view`; per entity a group `entity` (data-entity =
+/// index, data-id = id) holding `curve`, `control-polygon`,
+/// `control-point`, `start-point`, `direction-arrow`, `entity-label`; the
+/// tool path group `toolpath` holding `feed` and `rapid` paths (feeds carry
+/// data-deviation in deviation mode); `scale-bar`; `legend`.
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "bezcam/job/job.hpp"
+#include "bezcam/cam/motion.hpp"
+
+namespace bezcam {
+
+/// Progress callback: (entities done, total, label of the next one).
+using EntityProgress = std::function<void(size_t done, size_t total, const std::string& label)>;
+
+struct PreviewOptions {
+  bool control = true;     ///< draw control polygons and points
+  bool deviation = false;  ///< colour cutting blocks by deviation (needs a job)
+  double width = 1200;     ///< width of the drawing in CSS pixels (>= 400)
+  /// Called before each entity's deviation is measured (the slow part)
+  /// with (entities done, total, label), and with (total, total, "") at the
+  /// end. May be empty.
+  EntityProgress on_entity;
+};
+
+struct PreviewInput {
+  /// The true geometry; null when only a program is drawn.
+  const Job* job = nullptr;
+  /// The tool path (a built program's motion, or a G-code file's).
+  std::vector<ToolMotion> motion;
+  Units units = Units::mm;
+  /// Top of the deviation colour scale (units, > 0 when deviation is on):
+  /// the tolerance the program promises.
+  double tolerance = 0;
+  std::string title;                  ///< first header line
+  std::vector<std::string> notes;     ///< further header lines
+  std::vector<std::string> warnings;  ///< drawn in red under the header
+};
+
+/// A cutting block's deviation from the true geometry: the larger of the
+/// block's distance to the curve and the distance of the stretch of curve
+/// it cuts to the block. `entity`: the entity measured against (the
+/// block's own, or the nearest when the motion has no entity tags).
+struct BlockDeviation {
+  size_t block = 0;  ///< index in the motion
+  int entity = -1;
+  double deviation = 0;
+};
+
+/// Measures every cutting block of `motion` (feed blocks other than
+/// plunges: a feed straight down after a rapid) against the curves of
+/// `job`: 2D entities in the XY plane (the tool cuts them at cut_z), 3D
+/// entities in space. The curve is sampled densely (flattened with a
+/// certified bound of tolerance / 1000) and each block at 16 points per
+/// line and finer along curved blocks, so the figures are accurate to about
+/// 0.2 % of `tolerance`; the largest of them agrees with the program's
+/// measured deviation (deviation.hpp) to that accuracy. Blocks of entities
+/// without curves (surfaces) are left out.
+std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const ToolMotion> motion, double tolerance,
+                                             const EntityProgress& on_entity = {});
+
+/// The SVG document. Throws InputError when there is nothing to draw (no
+/// entities and no motion) or when deviation colouring is asked for without
+/// a job or a tolerance.
+std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt);
+
+}  // namespace bezcam

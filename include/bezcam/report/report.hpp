@@ -1,0 +1,75 @@
+#pragma once
+/// What a program does, in numbers: per entity what was asked for and
+/// achieved (kind, degree, length, blocks, deviation measured and proven),
+/// and for the whole program the path lengths at feed and at rapid and the
+/// estimated run time. Written by `bezcam convert --report FILE.json` and,
+/// in short human form, to stderr.
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bezcam/cam/motion.hpp"
+#include "bezcam/gcode/number_format.hpp"
+
+namespace bezcam {
+
+/// Lengths and times of a set of motion blocks (program units).
+struct MotionTotals {
+  double feed_length = 0;     ///< blocks at a feed: cutting and plunging
+  double rapid_length = 0;    ///< rapid blocks
+  double feed_time_s = 0;     ///< sum of length / feed, in seconds
+  double rapid_time_s = 0;    ///< rapid_length / rapid rate, in seconds
+  size_t feed_blocks = 0, rapid_blocks = 0;
+  /// Estimated run time: feeds and rapids at their rates, with no
+  /// acceleration, dwell or tool-change time (so a lower bound).
+  double time_s() const { return feed_time_s + rapid_time_s; }
+};
+
+/// Sums the blocks of `motion` whose entity is `entity` (all blocks when
+/// `entity` is kAllEntities). `rapid_rate`: units/min assumed for rapids
+/// (> 0). Feeds of 0 (a reader that saw no F word) count no time.
+inline constexpr int kAllEntities = -2;
+MotionTotals motion_totals(std::span<const ToolMotion> motion, double rapid_rate, int entity = kAllEntities);
+
+struct EntitySummary {
+  EntityReport report;  ///< kind (type), degree, length, blocks, measured, bound
+  MotionTotals motion;  ///< this entity's blocks (approach, plunge, cut, retract)
+};
+
+struct ProgramReport {
+  std::string job, machine;
+  Units units = Units::mm;
+  OutputMode output = OutputMode::lines;
+  double tolerance = 0;
+  int decimals = 3;
+  double max_measured = 0, max_bound = 0;
+  /// What the independent measurement can resolve (kMeasureResolution of
+  /// the tolerance): a measured deviation above the proven bound by less
+  /// than this is the measurement's own error (exact NURBS output, whose
+  /// bound is often 0, measures about 1e-5 of the tolerance).
+  double measurement_resolution = 0;
+  /// Rate assumed for rapids (units/min) and where it comes from.
+  double rapid_rate = 0;
+  std::string rapid_rate_basis;
+  std::vector<EntitySummary> entities;
+  MotionTotals total;
+  size_t gcode_lines = 0, gcode_bytes = 0;  ///< of the printed program (0 when not given)
+  std::vector<std::string> warnings;
+};
+
+/// Builds the report of a program built for `m` (the rapid rate is the
+/// profile's maximum feed, in the program's units). `gcode`: the printed
+/// text, for its line and byte counts (may be empty).
+ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode = {});
+
+/// The report as a JSON document (`"bezcam_report": 1`; lengths in program
+/// units, times in seconds, deviations in units), ending with a newline.
+std::string report_json(const ProgramReport& r);
+
+/// A short human summary, a few lines for stderr: one line per entity (at
+/// most `max_entities`, then a count of the rest) and one for the program.
+/// Every line starts with "bezcam: " or two spaces.
+std::string report_text(const ProgramReport& r, size_t max_entities = 10);
+
+}  // namespace bezcam

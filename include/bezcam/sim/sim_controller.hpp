@@ -1,0 +1,183 @@
+#pragma once
+/// The simulated controller: the protocol state machine of
+/// docs/modbus-register-map.md, a bounded receive buffer, and an executor
+/// that runs complete lines through the shared G-code interpreter while the
+/// program is still arriving (drip feed), enforcing the profile's travel and
+/// feed limits, and writing the deterministic trace (trace.hpp).
+///
+/// It is a library class with no socket of its own: ModbusServer
+/// (sim_server.hpp) feeds it raw Modbus TCP requests over real sockets, and
+/// run_program() pushes a file through the very same buffer and executor,
+/// so a program gives the same trace either way.
+///
+/// Thread-safe: any number of connection threads may call handle_frame()
+/// concurrently; one internal thread executes.
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <vector>
+
+#include "bezcam/link/crc32.hpp"
+#include "bezcam/link/register_map.hpp"
+#include "bezcam/gcode/reader.hpp"
+#include "bezcam/cam/machine_profile.hpp"
+
+namespace bezcam::sim {
+
+// The register map and frame layouts are the link's (bezcam/link/).
+using namespace bezcam::link;
+
+
+/// Receives the trace as it is produced. `restart` is true for the first
+/// record of a new program (a file sink truncates there). Called from the
+/// executor thread only; a sink that writes a file should flush each call,
+/// so that the trace on disk is complete whenever the state says DONE.
+using TraceSink = std::function<void(std::string_view text, bool restart)>;
+
+/// Identifies one client connection (assigned by connection_opened()).
+using ConnId = std::uint64_t;
+
+struct ControllerConfig {
+  /// Travel limits, maximum feed and the machine name in the trace.
+  MachineProfile profile;
+  /// Receive buffer, bytes: at least kMaxChunkBytes, at most 65535 (the
+  /// width of register buffer_free). A program line longer than this is
+  /// refused (alarm line-too-long).
+  std::size_t buffer_bytes = 4096;
+  /// An open transfer whose owner has sent nothing for this long is
+  /// stopped with alarm sender-lost (the owner may RESUME until then).
+  std::chrono::milliseconds session_timeout{30000};
+  /// Time the executor spends per program line: a slow controller.
+  std::chrono::microseconds exec_delay{0};
+  /// Session id of the first transfer, the next ones counting up; 0 draws
+  /// them at random (the default: a restarted controller must not reuse
+  /// the id of the transfer it lost). Fixed values are for tests and docs.
+  std::uint32_t first_session = 0;
+  /// Fault injection: the N-th chunk write received (1-based, counting
+  /// every chunk request, retransmissions included) makes the connection
+  /// drop, before the chunk is applied or after it is applied but before
+  /// the reply is sent. Each number fires once.
+  std::vector<std::uint64_t> drop_before_chunk, drop_after_chunk;
+  /// Fault injection: the N-th chunk write, once validated, has its first
+  /// digit changed before it is stored, as faulty memory would: the chunk
+  /// is acknowledged, and only the whole-program CRC-32 can catch it.
+  std::vector<std::uint64_t> corrupt_chunk;
+  /// Where the trace goes (may be empty).
+  TraceSink trace;
+  /// Test hook: every program line as the executor takes it, in order.
+  std::function<void(long line, std::string_view text)> on_line;
+};
+
+/// What the connection layer does with a request.
+struct FrameReply {
+  int exception = 0;                ///< Modbus exception code; 0 for a normal reply
+  std::uint16_t read_addr = 0;      ///< first register of `regs`
+  std::vector<std::uint16_t> regs;  ///< values read (FC 03, 04, 23)
+  bool read_input = false;          ///< `regs` are input registers (FC 04)
+  bool drop = false;                ///< close the connection without a reply (fault injection)
+};
+
+/// Bounds of the simulated machine.
+inline constexpr std::size_t kMinBuffer = kMaxChunkBytes, kMaxBuffer = 65535;
+
+class SimController {
+ public:
+  /// Throws InputError("sim.config", ...) for a buffer outside
+  /// [kMinBuffer, kMaxBuffer] or a non-positive session timeout.
+  explicit SimController(ControllerConfig cfg);
+  /// Stops the executor (the trace is complete up to the last executed line).
+  ~SimController();
+  SimController(const SimController&) = delete;
+  SimController& operator=(const SimController&) = delete;
+
+  /// Connection bookkeeping for the server.
+  ConnId connection_opened();
+  void connection_closed(ConnId c);
+  /// The connection that owns the open transfer, 0 when none.
+  ConnId owner() const;
+
+  /// Handles one Modbus TCP request as received (MBAP header + PDU, at
+  /// most 260 bytes). Never throws for any input; malformed frames get an
+  /// exception reply or `drop`.
+  FrameReply handle_frame(ConnId c, std::span<const std::uint8_t> adu);
+
+  /// Executes a whole program through the same buffer, checks and executor
+  /// as a streamed one, with no network; blocks until DONE or ALARM (or
+  /// stop()). Refused (returns with the alarm, or throws InputError
+  /// "sim.busy") while a streamed transfer is open.
+  Status run_program(std::string_view program);
+
+  /// The status block as connection `c` reads it.
+  Status status(ConnId c = 0) const;
+  /// The current alarm's message ("" when none).
+  std::string alarm_text() const;
+  /// Waits until the program is DONE or in ALARM and the trace holds its
+  /// final record; false after `timeout`.
+  bool wait_final(std::chrono::milliseconds timeout) const;
+  /// Stops the executor after the line in progress; the trace is flushed.
+  /// Idempotent.
+  void stop();
+
+ private:
+  struct Pending;  // an alarm waiting for the executor to trace it
+  Reject command_locked(ConnId c, std::span<const std::uint16_t> regs);
+  Reject chunk_locked(ConnId c, std::span<const std::uint16_t> regs, bool corrupt);
+  Reject apply_chunk_locked(ConnId c, std::uint32_t session, std::uint32_t seq, std::string_view payload,
+                            std::uint32_t crc);
+  void open_locked(ConnId c, std::uint32_t token, std::uint32_t total);
+  void raise_alarm_locked(Alarm a, long line, std::string id, std::string message);
+  std::uint32_t next_session_locked();
+  std::size_t buffered_locked() const { return buf_.size() - head_; }
+  Status status_locked(ConnId c) const;
+  std::vector<std::uint16_t> read_locked(ConnId c, std::uint16_t addr, std::uint16_t n) const;
+  void exec_loop();
+
+  ControllerConfig cfg_;
+  mutable std::mutex m_;
+  mutable std::condition_variable cv_;
+  bool stop_ = false;
+
+  // Transfer (guarded by m_).
+  State state_ = State::idle;
+  std::uint64_t epoch_ = 0;  // program generation: the executor restarts on change
+  std::uint32_t session_ = 0, token_ = 0, total_ = 0, last_session_ = 0;
+  ConnId owner_ = 0, next_conn_ = 1;
+  std::chrono::steady_clock::time_point owner_seen_{};
+  std::uint32_t ack_seq_ = 0, ack_bytes_ = 0;
+  Crc32 crc_;
+  bool committed_ = false;
+  std::uint32_t commit_total_ = 0, commit_crc_ = 0;
+  std::string buf_;  // receive buffer: bytes [head_, size) are pending
+  std::size_t head_ = 0;
+  struct Recent {
+    std::uint32_t seq = 0, crc = 0;
+    std::uint16_t len = 0;
+  };
+  std::vector<Recent> recent_;  // ring of the last chunks applied (retransmission check)
+  std::uint64_t chunk_requests_ = 0;
+  std::uint32_t duplicates_ = 0, rejects_ = 0;
+  std::map<ConnId, Reject> last_reject_;
+  std::size_t connections_ = 0;
+
+  // Results of execution (guarded by m_, written by the executor).
+  Alarm alarm_ = Alarm::none;
+  std::uint32_t alarm_line_ = 0;
+  std::string alarm_text_;
+  std::unique_ptr<Pending> pending_alarm_;
+  bool final_traced_ = false;
+  long line_no_ = 0, lines_done_ = 0, blocks_done_ = 0;
+  MachineState machine_;
+
+  std::thread exec_;
+};
+
+}  // namespace bezcam::sim

@@ -1,0 +1,60 @@
+#pragma once
+// Internal to the post layer: the per-mode emitters of cutting moves. Each
+// starts with the tool at the entity's first point at cutting depth and
+// appends the moves that cut the entity, filling the report's blocks,
+// measured deviation and bound.
+#include <span>
+#include <vector>
+
+#include "bezcam/cam/program.hpp"
+
+namespace bezcam::detail {
+
+struct CutContext {
+  const Job& job;
+  const Entity& entity;
+  const MachineProfile& machine;
+  const CutParams& params;
+  int decimals;      // coordinate decimals of the program's units
+  double tolerance;  // job units
+  bool measure;
+  Program& program;
+};
+
+/// The point the tool cuts at for a curve point (2D curves at cut_z).
+Vec3 cut_point(const CutContext& c, const Vec3& p);
+
+/// G01 polyline within the tolerance after rounding (flatten_curve.hpp).
+void emit_lines(CutContext& c, EntityReport& r);
+
+/// build_program()'s running state, continued by an emitter that positions
+/// the tool itself.
+struct MotionState {
+  int& tool;
+  double& rpm;
+  Vec3& pos;
+  bool& pos_known;
+};
+/// Cuts a surface entity completely (surface_emitter.cpp): bezier_patch and
+/// coons_patch by their toolpath (zigzag, raster, boundary), curve_on_surface
+/// along its curve; tool and spindle, rapids at safe Z, plunges, cutting
+/// moves, links, gouge policy and the final retract. G01 lines in every
+/// output mode. Returns the filled report.
+EntityReport emit_surface(CutContext& c, MotionState& st);
+
+/// G02/G03 arcs and G01 lines within the tolerance after rounding
+/// (arc_fit.hpp); refuses a profile with "arcs": false (cut_arcs.cpp).
+void emit_arcs(CutContext& c, EntityReport& r);
+
+/// Exact-curve blocks in the profile's NURBS dialect (nurbs_blocks.hpp),
+/// with arcs or lines where a piece cannot be one, and arcs (or lines) for
+/// the whole program on a profile without NURBS, said in the header and a
+/// warning (cut_nurbs.cpp).
+void emit_nurbs(CutContext& c, EntityReport& r);
+
+/// The arc/line fallback for a run of pieces that starts at the current
+/// printed position: appends the moves, adds their count to `blocks`, the
+/// drawn path (model coordinates, dense) to `path`, returns the proven bound.
+double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks);
+
+}  // namespace bezcam::detail

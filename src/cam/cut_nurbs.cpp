@@ -1,0 +1,111 @@
+// --output nurbs: exact-curve blocks in the profile's dialect.
+#include <algorithm>
+#include <stdexcept>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/deviation.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/flatten/exact_blocks.hpp"
+#include "cut_emitters.hpp"
+#include "measure_path.hpp"
+
+namespace bezcam::detail {
+
+namespace {
+
+// Says once per program that the machine has no NURBS words.
+void note_fallback(CutContext& c) {
+  const std::string n = "machine " + c.machine.name + " has no NURBS words: --output nurbs cuts with " +
+                        (c.machine.arcs ? "arcs (G02/G03) and G01 lines" : "G01 lines");
+  auto& notes = c.program.notes;
+  if (std::find(notes.begin(), notes.end(), n) != notes.end()) return;
+  notes.push_back(n);
+  c.program.warnings.push_back(n);
+}
+
+// G-code lines a block takes: Fanuc one per control point plus one per knot
+// beyond them; G5.2 its start line, one per further point, G5.3; G5/G5.1 one.
+size_t block_lines(const ExactBlock& b, NurbsDialect d) {
+  if (b.kind != ExactKind::nurbs) return 1;
+  if (d == NurbsDialect::fanuc) return b.knots.size();
+  return b.ctrl.size() + 1;
+}
+
+}  // namespace
+
+void emit_nurbs(CutContext& c, EntityReport& r) {
+  const MachineProfile& m = c.machine;
+  if (m.nurbs == NurbsDialect::none) {
+    note_fallback(c);
+    if (m.arcs) emit_arcs(c, r);
+    else emit_lines(c, r);
+    return;
+  }
+  const auto& g = c.entity.curve;
+  ExactOptions eo;
+  eo.dialect = m.nurbs;
+  eo.max_rank = m.nurbs_max_rank;
+  eo.tolerance = c.tolerance;
+  eo.decimals = c.decimals;
+  eo.knot_decimals = m.knot_decimals;
+  eo.weight_decimals = m.weight_decimals;
+  const std::vector<ExactBlock> blocks = plan_exact_blocks(g, eo);
+
+  const int entity = static_cast<int>(c.entity.index);
+  const unsigned axes = m.nurbs == NurbsDialect::linuxcnc ? 3u : 7u;  // G5.x never moves Z
+  std::vector<Vec3> path{quantize(g.pieces.front().front(), c.decimals)};
+  // What is not exact, said before the moves (a comment line).
+  std::string notes;
+  for (const ExactBlock& b : blocks)
+    if (!b.note.empty() && notes.find(b.note) == std::string::npos) notes += (notes.empty() ? "" : "; ") + b.note;
+  if (!notes.empty()) {
+    Move cmt;
+    cmt.kind = MoveKind::comment;
+    cmt.text = "not exact: " + notes;
+    cmt.entity = entity;
+    c.program.moves.push_back(cmt);
+  }
+  r.blocks = 0;
+  r.bound = 0;
+  for (const ExactBlock& b : blocks) {
+    if (b.kind == ExactKind::fallback) {
+      r.bound = std::max(r.bound, append_arcs_or_lines(c, b.source, path, r.blocks) + b.snap);
+      continue;
+    }
+    Move mv;
+    mv.kind = b.kind == ExactKind::line ? MoveKind::linear
+              : b.kind == ExactKind::bezier ? MoveKind::bezier
+                                            : MoveKind::nurbs;
+    mv.feed = c.params.feed;
+    mv.entity = entity;
+    mv.to = cut_point(c, b.ctrl.back());
+    if (b.kind != ExactKind::line) {
+      mv.axes = axes;
+      for (const auto& p : b.ctrl) mv.ctrl.push_back(cut_point(c, p));
+      mv.weights = b.weights;
+      mv.knots = b.knots;
+      mv.order = b.kind == ExactKind::nurbs ? b.order : static_cast<int>(b.ctrl.size());
+    }
+    c.program.moves.push_back(std::move(mv));
+    r.blocks += block_lines(b, m.nurbs);
+    r.bound = std::max(r.bound, b.bound);
+    // The printed curve, densely, for the independent measurement.
+    if (c.measure) {
+      // Not finer than double precision allows at this size (flatten_curve.hpp).
+      double scale = 0;
+      for (const auto& p : b.ctrl) scale = std::max(scale, max_abs(p));
+      const double sample_tol = std::max(kSampleShare * c.tolerance, 1e-11 * std::max(scale, 1.0));
+      const auto f = flatten(b.printed, {sample_tol, -1}).points;
+      path.insert(path.end(), f.begin() + 1, f.end());
+    }
+  }
+  if (c.measure) {
+    r.measured = measure_printed(g.pieces, path, c.tolerance, r.bound);
+    if (r.measured > c.tolerance * (1 + 10 * kSampleShare))
+      throw std::logic_error("internal check failed: " + r.label + " deviates by " + fmt_num(r.measured) +
+                             " beyond the tolerance " + fmt_num(c.tolerance));
+  }
+}
+
+}  // namespace bezcam::detail

@@ -1,0 +1,197 @@
+#include "bezcam/cam/machine_profile.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <unistd.h>
+
+#include "bezcam/error.hpp"
+
+
+namespace bezcam {
+
+namespace {
+
+using json = nlohmann::json;
+
+struct Reader {
+  std::string source;
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw InputError("machine.invalid", source + ": " + path, what);
+  }
+  const json* opt(const json& o, const char* k) const {
+    auto it = o.find(k);
+    return it == o.end() ? nullptr : &*it;
+  }
+  double num(const json& v, const std::string& path) const {
+    if (!v.is_number()) fail(path, "expected a number");
+    return v.get<double>();
+  }
+  int integer(const json& v, const std::string& path) const {
+    if (!v.is_number_integer()) fail(path, "expected an integer");
+    return v.get<int>();
+  }
+  std::string str(const json& v, const std::string& path) const {
+    if (!v.is_string()) fail(path, "expected a string");
+    return v.get<std::string>();
+  }
+  std::vector<std::string> lines(const json& v, const std::string& path) const {
+    if (!v.is_array()) fail(path, "expected an array of strings");
+    std::vector<std::string> out;
+    for (size_t i = 0; i < v.size(); ++i) out.push_back(str(v[i], path + "[" + std::to_string(i) + "]"));
+    return out;
+  }
+};
+
+}  // namespace
+
+MachineProfile parse_machine_profile(const std::string& text, const std::string& source) {
+  Reader r{source};
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError("machine.syntax", source, std::string("the machine profile is not valid JSON (") + e.what() + ")");
+  }
+  if (!doc.is_object()) r.fail("(top level)", "expected a JSON object");
+  MachineProfile m;
+  m.name = r.str(doc.value("name", json("")), "name");
+  if (m.name.empty()) r.fail("name", "expected a non-empty profile name");
+  if (auto v = r.opt(doc, "description")) m.description = r.str(*v, "description");
+  if (auto v = r.opt(doc, "header")) m.header = r.lines(*v, "header");
+  if (auto v = r.opt(doc, "footer")) m.footer = r.lines(*v, "footer");
+  if (auto v = r.opt(doc, "line_numbers")) {
+    if (!v->is_object()) r.fail("line_numbers", "expected an object");
+    m.line_numbers = v->value("enabled", false);
+    if (auto s = r.opt(*v, "start")) m.line_start = r.integer(*s, "line_numbers.start");
+    if (auto s = r.opt(*v, "step")) m.line_step = r.integer(*s, "line_numbers.step");
+    if (m.line_step <= 0) r.fail("line_numbers.step", "expected a step > 0");
+  }
+  if (auto v = r.opt(doc, "decimals")) {
+    if (auto s = r.opt(*v, "mm")) m.decimals_mm = r.integer(*s, "decimals.mm");
+    if (auto s = r.opt(*v, "inch")) m.decimals_inch = r.integer(*s, "decimals.inch");
+    if (m.decimals_mm < 0 || m.decimals_mm > 9 || m.decimals_inch < 0 || m.decimals_inch > 9)
+      r.fail("decimals", "expected decimals between 0 and 9");
+  }
+  if (auto v = r.opt(doc, "feed_decimals")) m.feed_decimals = r.integer(*v, "feed_decimals");
+  if (auto v = r.opt(doc, "words")) {
+    if (auto s = r.opt(*v, "rapid")) m.word_rapid = r.str(*s, "words.rapid");
+    if (auto s = r.opt(*v, "feed")) m.word_feed = r.str(*s, "words.feed");
+    if (auto s = r.opt(*v, "cw")) m.word_cw = r.str(*s, "words.cw");
+    if (auto s = r.opt(*v, "ccw")) m.word_ccw = r.str(*s, "words.ccw");
+  }
+  if (auto v = r.opt(doc, "tool_change")) m.tool_change = r.str(*v, "tool_change");
+  if (auto v = r.opt(doc, "spindle_on")) m.spindle_on = r.str(*v, "spindle_on");
+  if (auto v = r.opt(doc, "spindle_off")) m.spindle_off = r.str(*v, "spindle_off");
+  if (auto v = r.opt(doc, "arcs")) {
+    if (!v->is_boolean()) r.fail("arcs", "expected true or false");
+    m.arcs = v->get<bool>();
+  }
+  if (auto v = r.opt(doc, "arc_tolerance_mm")) m.arc_tolerance_mm = r.num(*v, "arc_tolerance_mm");
+  if (auto v = r.opt(doc, "nurbs")) {
+    if (!v->is_object()) r.fail("nurbs", "expected an object");
+    const std::string d = r.str(v->value("dialect", json("none")), "nurbs.dialect");
+    if (d == "none") m.nurbs = NurbsDialect::none;
+    else if (d == "fanuc") m.nurbs = NurbsDialect::fanuc;
+    else if (d == "linuxcnc") m.nurbs = NurbsDialect::linuxcnc;
+    else r.fail("nurbs.dialect", "expected \"none\", \"fanuc\" or \"linuxcnc\", found \"" + d + "\"");
+    if (auto s = r.opt(*v, "start_word")) m.nurbs_start_word = r.str(*s, "nurbs.start_word");
+    if (auto s = r.opt(*v, "max_rank")) m.nurbs_max_rank = r.integer(*s, "nurbs.max_rank");
+    if (auto s = r.opt(*v, "knot_decimals")) m.knot_decimals = r.integer(*s, "nurbs.knot_decimals");
+    if (auto s = r.opt(*v, "weight_decimals")) m.weight_decimals = r.integer(*s, "nurbs.weight_decimals");
+    if (auto s = r.opt(*v, "fixed_decimals")) {
+      if (!s->is_boolean()) r.fail("nurbs.fixed_decimals", "expected true or false");
+      m.nurbs_fixed_decimals = s->get<bool>();
+    }
+    if (m.knot_decimals < 0 || m.knot_decimals > 9 || m.weight_decimals < 0 || m.weight_decimals > 9)
+      r.fail("nurbs", "expected knot_decimals and weight_decimals between 0 and 9");
+    if (m.nurbs_max_rank < 2 || m.nurbs_max_rank > 4) r.fail("nurbs.max_rank", "expected a rank from 2 to 4");
+  }
+  if (auto v = r.opt(doc, "travel_mm")) {
+    const char* axes[3] = {"x", "y", "z"};
+    for (int k = 0; k < 3; ++k) {
+      auto a = r.opt(*v, axes[k]);
+      if (!a) continue;
+      const std::string p = std::string("travel_mm.") + axes[k];
+      if (!a->is_array() || a->size() != 2) r.fail(p, "expected [min, max]");
+      m.travel_mm[k] = {r.num((*a)[0], p + "[0]"), r.num((*a)[1], p + "[1]")};
+      if (!(m.travel_mm[k][0] < m.travel_mm[k][1])) r.fail(p, "expected min < max");
+    }
+  }
+  if (auto v = r.opt(doc, "max_feed_mm_min")) m.max_feed_mm_min = r.num(*v, "max_feed_mm_min");
+  if (auto v = r.opt(doc, "defaults")) {
+    auto num = [&](const char* k, std::optional<double>& out) {
+      if (auto s = r.opt(*v, k)) out = r.num(*s, std::string("defaults.") + k);
+    };
+    num("feed", m.defaults.feed);
+    num("plunge_feed", m.defaults.plunge_feed);
+    num("safe_z", m.defaults.safe_z);
+    num("cut_z", m.defaults.cut_z);
+    num("spindle_rpm", m.defaults.spindle_rpm);
+    num("tool_radius", m.defaults.tool_radius);
+    if (auto s = r.opt(*v, "tool")) m.defaults.tool = r.integer(*s, "defaults.tool");
+  }
+  return m;
+}
+
+std::vector<std::filesystem::path> machine_search_path(const std::vector<std::filesystem::path>& extra) {
+  std::vector<std::filesystem::path> dirs;
+  if (const char* env = std::getenv("BEZCAM_MACHINES"); env && *env) {
+    std::string_view rest = env;
+    while (!rest.empty()) {
+      const size_t colon = rest.find(':');
+      const std::string_view one = rest.substr(0, colon);
+      if (!one.empty()) dirs.emplace_back(one);
+      if (colon == std::string_view::npos) break;
+      rest.remove_prefix(colon + 1);
+    }
+  }
+  dirs.insert(dirs.end(), extra.begin(), extra.end());
+  return dirs;
+}
+
+std::vector<std::string> machine_profile_names(const std::vector<std::filesystem::path>& dirs) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& dir : dirs)
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+      if (e.path().extension() == ".json" && e.path().stem() != "schema") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+MachineProfile load_machine_profile(const std::string& name_or_file, const std::vector<std::filesystem::path>& dirs) {
+  std::filesystem::path file;
+  const bool is_file = name_or_file.find('/') != std::string::npos ||
+                       (name_or_file.size() > 5 && name_or_file.ends_with(".json"));
+  if (is_file) {
+    file = name_or_file;
+  } else {
+    for (char c : name_or_file)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_')
+        throw InputError("machine.unknown", "", "\"" + name_or_file + "\" is not a valid profile name");
+    std::error_code ec;
+    for (const auto& dir : dirs)
+      if (std::filesystem::exists(dir / (name_or_file + ".json"), ec)) {
+        file = dir / (name_or_file + ".json");
+        break;
+      }
+    if (file.empty()) {
+      std::string known;
+      for (const auto& n : machine_profile_names(dirs)) known += (known.empty() ? "" : ", ") + n;
+      throw InputError("machine.unknown", "",
+                       "no machine profile named \"" + name_or_file + "\"; known profiles: " + known +
+                           " (or give the path of a .json profile)");
+    }
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw IoError("io.read", file.string(), "cannot open the machine profile");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse_machine_profile(ss.str(), file.string());
+}
+
+}  // namespace bezcam

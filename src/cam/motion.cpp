@@ -1,0 +1,288 @@
+#include "bezcam/cam/motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "bezcam/kernel/knot_vector.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
+
+namespace bezcam {
+
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// A G17 arc's start angle, signed sweep and radii at both ends, for its
+// length and its sampling (printed ends may sit at slightly different
+// radii; the tool follows a spiral between them, as evaluate_block does).
+struct ArcParams {
+  double a0, sweep, r0, r1;
+};
+
+ArcParams arc_params(const MotionBlock& b) {
+  const double r0 = std::hypot(b.from.x - b.center.x, b.from.y - b.center.y);
+  const double r1 = std::hypot(b.to.x - b.center.x, b.to.y - b.center.y);
+  const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
+  const double a1 = std::atan2(b.to.y - b.center.y, b.to.x - b.center.x);
+  const bool ccw = b.kind == BlockKind::arc_ccw;
+  double sweep = ccw ? a1 - a0 : a0 - a1;
+  while (sweep <= 0) sweep += kTwoPi;  // equal ends: a full circle
+  while (sweep > kTwoPi) sweep -= kTwoPi;
+  return {a0, ccw ? sweep : -sweep, r0, r1};
+}
+
+bool is_arc(const MotionBlock& b) { return b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw; }
+
+// A block for evaluation at t in [0, 1]: the reader's evaluate_block()
+// (lines, arcs by angle, Bézier blocks, NURBS over their knot domain), so
+// that the report and the preview follow exactly the motion the reader and
+// the simulated controller define.
+class BlockCurve {
+ public:
+  explicit BlockCurve(const MotionBlock& b) : b_(b) {}
+  Vec3 at(double t) const { return evaluate_block(b_, t); }
+
+ private:
+  const MotionBlock& b_;
+};
+
+// Adaptive sampling of a curved block on [t0, t1]: split while the curve's
+// points at the quarter parameters stray more than `chord` from the chord.
+// The uniform start (16 intervals) keeps a loop from hiding between samples.
+void refine(const BlockCurve& c, double t0, const Vec3& p0, double t1, const Vec3& p1, double chord, int depth,
+            std::vector<Vec3>& out) {
+  const double tm = 0.5 * (t0 + t1);
+  const Vec3 pm = c.at(tm);
+  const Vec3 pq = c.at(0.5 * (t0 + tm)), pr = c.at(0.5 * (tm + t1));
+  const double err =
+      std::max({dist_to_segment(pm, p0, p1), dist_to_segment(pq, p0, p1), dist_to_segment(pr, p0, p1)});
+  if (err <= chord || depth >= 24) {
+    out.push_back(p1);
+    return;
+  }
+  refine(c, t0, p0, tm, pm, chord, depth + 1, out);
+  refine(c, tm, pm, t1, p1, chord, depth + 1, out);
+}
+
+// Arc length on [t0, t1] from chord sums with Richardson extrapolation: a
+// chord misses the arc by O(h^3) and two half chords by a quarter of that,
+// so (4 halves - whole) / 3 is accurate to O(h^5); intervals are halved
+// until the two chord sums agree to `eps`.
+double arc_length(const BlockCurve& c, double t0, const Vec3& p0, double t1, const Vec3& p1, double eps, int depth) {
+  const double tm = 0.5 * (t0 + t1);
+  const Vec3 pm = c.at(tm);
+  const double whole = dist(p0, p1), halves = dist(p0, pm) + dist(pm, p1);
+  if (halves - whole <= eps || depth >= 30) return halves + (halves - whole) / 3;
+  return arc_length(c, t0, p0, tm, pm, eps / 2, depth + 1) + arc_length(c, tm, pm, t1, p1, eps / 2, depth + 1);
+}
+
+double box_size(const MotionBlock& b) {
+  Box3 box;
+  box.add(b.from);
+  box.add(b.to);
+  for (const auto& c : b.ctrl) box.add(c);
+  return std::max(norm(box.hi - box.lo), 1e-12);
+}
+
+}  // namespace
+
+std::vector<ToolMotion> program_motion(const Program& p) {
+  std::vector<ToolMotion> out;
+  Vec3 pos;
+  unsigned known = 0;
+  for (const Move& mv : p.moves) {
+    ToolMotion tm;
+    tm.entity = mv.entity;
+    MotionBlock& b = tm.block;
+    switch (mv.kind) {
+      case MoveKind::rapid: b.kind = BlockKind::rapid; break;
+      case MoveKind::linear: b.kind = BlockKind::linear; break;
+      case MoveKind::arc_cw: b.kind = BlockKind::arc_cw; break;
+      case MoveKind::arc_ccw: b.kind = BlockKind::arc_ccw; break;
+      case MoveKind::nurbs: b.kind = BlockKind::nurbs; break;
+      case MoveKind::bezier: b.kind = BlockKind::bezier; break;
+      default: continue;  // no motion
+    }
+    Vec3 to = pos;
+    for (int a = 0; a < 3; ++a)
+      if (mv.axes & (1u << a)) to[a] = mv.to[a];
+    Vec3 from = pos;
+    for (int a = 0; a < 3; ++a)
+      if (!(known & (1u << a))) from[a] = to[a];
+    b.from = from;
+    b.to = to;
+    b.feed = b.kind == BlockKind::rapid ? 0 : mv.feed;
+    b.center = mv.center;
+    b.ctrl = mv.ctrl;
+    b.weights = mv.weights;
+    b.knots = mv.knots;
+    b.order = mv.order;
+    if (b.kind == BlockKind::bezier) b.order = static_cast<int>(mv.ctrl.size());
+    out.push_back(std::move(tm));
+    pos = to;
+    known |= mv.axes;
+  }
+  return out;
+}
+
+double block_length(const MotionBlock& b) {
+  switch (b.kind) {
+    case BlockKind::rapid:
+    case BlockKind::linear: return dist(b.from, b.to);
+    case BlockKind::arc_cw:
+    case BlockKind::arc_ccw: {
+      const ArcParams a = arc_params(b);
+      if (a.r0 == a.r1) return std::hypot(a.r0 * a.sweep, b.to.z - b.from.z);  // helix: exact
+      break;  // a spiral: by chords below
+    }
+    default: break;
+  }
+  // 16 uniform spans first, so that a loop cannot hide between samples.
+  const BlockCurve c(b);
+  const double eps = 1e-9 * box_size(b);
+  double len = 0;
+  Vec3 prev = b.from;
+  for (int i = 1; i <= 16; ++i) {
+    const Vec3 p = c.at(i / 16.0);
+    len += arc_length(c, (i - 1) / 16.0, prev, i / 16.0, p, eps / 16, 0);
+    prev = p;
+  }
+  return len;
+}
+
+std::vector<Vec3> sample_block(const MotionBlock& b, double chord) {
+  if (b.kind == BlockKind::rapid || b.kind == BlockKind::linear) return {b.from, b.to};
+  chord = std::max(chord, 1e-12 * box_size(b));
+  std::vector<Vec3> out{b.from};
+  if (is_arc(b)) {
+    // Chord error of an arc step dθ at radius r is r (1 - cos(dθ/2)).
+    const ArcParams a = arc_params(b);
+    const double r = std::max({a.r0, a.r1, 1e-300});
+    const double dtheta = 2 * std::acos(std::clamp(1 - chord / r, -1.0, 1.0));
+    const int n = std::clamp(static_cast<int>(std::ceil(std::abs(a.sweep) / std::max(dtheta, 1e-9))), 1, 1 << 20);
+    for (int i = 1; i <= n; ++i) out.push_back(evaluate_block(b, double(i) / n));
+    return out;
+  }
+  constexpr int kStart = 16;
+  const BlockCurve c(b);
+  Vec3 prev = b.from;
+  for (int i = 1; i <= kStart; ++i) {
+    const double t0 = double(i - 1) / kStart, t1 = double(i) / kStart;
+    const Vec3 p1 = c.at(t1);
+    refine(c, t0, prev, t1, p1, chord, 0, out);
+    prev = p1;
+  }
+  out.back() = b.to;
+  return out;
+}
+
+// The swept angle of a G17 arc, in (0, 2 pi]: equal ends make a full circle
+// (LinuxCNC, Grbl and Fanuc agree).
+double arc_sweep(const MotionBlock& b) {
+  const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
+  const double a1 = std::atan2(b.to.y - b.center.y, b.to.x - b.center.x);
+  const bool ccw = b.kind == BlockKind::arc_ccw;
+  double sweep = ccw ? a1 - a0 : a0 - a1;
+  // Equal ends: a full circle (LinuxCNC, Grbl and Fanuc agree).
+  while (sweep <= 0) sweep += 2 * std::numbers::pi;
+  while (sweep > 2 * std::numbers::pi) sweep -= 2 * std::numbers::pi;
+  if (b.from.x == b.to.x && b.from.y == b.to.y) sweep = 2 * std::numbers::pi;
+  return sweep;
+}
+
+namespace {
+
+// The curve of a NURBS block, in 3D, as the reader collected it.
+NurbsCurve block_nurbs(const MotionBlock& b) {
+  NurbsCurve c;
+  c.dim = 3;
+  c.degree = b.order - 1;
+  c.points = b.ctrl;
+  c.weights = b.weights;
+  c.knots = b.knots;
+  return c;
+}
+
+}  // namespace
+
+Vec3 evaluate_block(const MotionBlock& b, double t) {
+  if (t <= 0) return b.from;
+  if (t >= 1) return b.to;
+  switch (b.kind) {
+    case BlockKind::rapid:
+    case BlockKind::linear: return lerp(b.from, b.to, t);
+    case BlockKind::arc_cw:
+    case BlockKind::arc_ccw: {
+      const double sweep = arc_sweep(b);
+      const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
+      const double a = b.kind == BlockKind::arc_ccw ? a0 + t * sweep : a0 - t * sweep;
+      const double r0 = std::hypot(b.from.x - b.center.x, b.from.y - b.center.y);
+      const double r1 = std::hypot(b.to.x - b.center.x, b.to.y - b.center.y);
+      const double r = r0 + (r1 - r0) * t;
+      return {b.center.x + r * std::cos(a), b.center.y + r * std::sin(a), b.from.z + (b.to.z - b.from.z) * t};
+    }
+    case BlockKind::bezier: {
+      Bezier z;
+      z.dim = 3;
+      z.points = b.ctrl;
+      return evaluate(z, t);
+    }
+    case BlockKind::nurbs: {
+      const NurbsCurve c = block_nurbs(b);
+      return evaluate(c, c.domain_start() + (c.domain_end() - c.domain_start()) * t);
+    }
+  }
+  return b.to;
+}
+
+std::vector<Bezier> block_to_bezier(const MotionBlock& b) {
+  auto bez = [](std::vector<Vec3> pts, std::vector<double> w = {}) {
+    Bezier z;
+    z.dim = 3;
+    z.points = std::move(pts);
+    z.weights = std::move(w);
+    return z;
+  };
+  switch (b.kind) {
+    case BlockKind::rapid:
+    case BlockKind::linear: return {bez({b.from, b.to})};
+    case BlockKind::bezier: return {bez(b.ctrl)};
+    case BlockKind::nurbs: {
+      const NurbsCurve c = block_nurbs(b);
+      try {
+        validate_knots(c.knots, c.degree, c.points.size());
+        for (double w : c.weights)
+          if (!(w > 0)) throw std::invalid_argument("weight <= 0");
+      } catch (const std::exception& e) {
+        throw std::invalid_argument(std::string("block_to_bezier: NURBS block of line ") + std::to_string(b.first_line) +
+                                    " cannot be decomposed: " + e.what());
+      }
+      return to_bezier(c);
+    }
+    case BlockKind::arc_cw:
+    case BlockKind::arc_ccw: {
+      if (b.from.z != b.to.z) throw std::invalid_argument("block_to_bezier: helical arc");
+      const double sweep = arc_sweep(b);
+      const int n = std::max(1, static_cast<int>(std::ceil(sweep / (std::numbers::pi / 2) - 1e-12)));
+      const double th = sweep / n, dir = b.kind == BlockKind::arc_ccw ? 1 : -1;
+      const double r = std::hypot(b.from.x - b.center.x, b.from.y - b.center.y);
+      const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
+      const Vec3 c{b.center.x, b.center.y, b.from.z};
+      auto on = [&](double a, double rr) { return c + Vec3{rr * std::cos(a), rr * std::sin(a), 0}; };
+      std::vector<Bezier> out;
+      // Rational quadratic arc: middle point at r / cos(th/2) on the
+      // bisector, weight cos(th/2) (The NURBS Book, section 7.3).
+      for (int k = 0; k < n; ++k) {
+        const double s = a0 + dir * th * k, e = s + dir * th, mid = s + dir * th / 2;
+        const Vec3 p0 = k == 0 ? b.from : on(s, r), p2 = k == n - 1 ? b.to : on(e, r);
+        out.push_back(bez({p0, on(mid, r / std::cos(th / 2)), p2}, {1, std::cos(th / 2), 1}));
+      }
+      return out;
+    }
+  }
+  return {};
+}
+
+}  // namespace bezcam

@@ -1,0 +1,230 @@
+#include "bezcam/cam/program.hpp"
+
+#include <cmath>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/deviation.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/cam/program_limits.hpp"
+#include "cut_emitters.hpp"
+
+namespace bezcam {
+
+OutputMode parse_output_mode(const std::string& s) {
+  if (s == "lines") return OutputMode::lines;
+  if (s == "arcs") return OutputMode::arcs;
+  if (s == "nurbs") return OutputMode::nurbs;
+  throw InputError("usage.output", "--output", "expected lines, arcs or nurbs, found \"" + s + "\"");
+}
+
+const char* to_string(OutputMode m) {
+  switch (m) {
+    case OutputMode::lines: return "lines";
+    case OutputMode::arcs: return "arcs";
+    case OutputMode::nurbs: return "nurbs";
+  }
+  return "?";
+}
+
+CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
+  // Profile defaults are in mm; convert them to the job's units.
+  JobParams prof = m.defaults;
+  const double k = 1.0 / mm_per_unit(job.units);
+  for (auto* v : {&prof.feed, &prof.plunge_feed, &prof.safe_z, &prof.cut_z, &prof.tool_radius})
+    if (*v) **v *= k;
+  const JobParams p = e.params.over(job.params.over(prof));
+  auto need = [&](const std::optional<double>& v, const char* key) {
+    if (!v)
+      throw InputError("job.missing", job.source + ": " + e.json_path() + "." + key,
+                       std::string("no ") + key + " is set by the entity, the job or machine profile \"" + m.name +
+                           "\"; add \"" + key + "\" to the file's \"job\" object");
+    return *v;
+  };
+  CutParams c{need(p.feed, "feed"),       need(p.plunge_feed, "plunge_feed"), need(p.safe_z, "safe_z"),
+              need(p.cut_z, "cut_z"),     p.spindle_rpm.value_or(0),          p.tool_radius.value_or(0),
+              p.tool.value_or(1)};
+  if (c.cut_z >= c.safe_z)
+    throw InputError("job.range", job.source + ": " + e.json_path() + ".cut_z",
+                     "expected cut_z below safe_z (" + fmt_num(c.safe_z) + "), found " + fmt_num(c.cut_z));
+  return c;
+}
+
+namespace detail {
+
+Vec3 cut_point(const CutContext& c, const Vec3& p) {
+  if (c.entity.curve.dim == 2) return {p.x, p.y, quantize(c.params.cut_z, c.decimals)};
+  return p;
+}
+
+void emit_lines(CutContext& c, EntityReport& r) {
+  const auto& pieces = c.entity.curve.pieces;
+  FlattenOptions fo{c.tolerance, c.decimals};
+  std::vector<Vec3> poly;
+  r.bound = flatten_pieces(pieces, fo, [&](const FlatVertex& v) { poly.push_back(v.point); });
+  // The first vertex is where the plunge put the tool.
+  for (size_t i = 1; i < poly.size(); ++i) {
+    Move mv;
+    mv.kind = MoveKind::linear;
+    mv.to = cut_point(c, poly[i]);
+    mv.feed = c.params.feed;
+    mv.entity = static_cast<int>(c.entity.index);
+    c.program.moves.push_back(mv);
+  }
+  r.blocks = poly.size() - 1;
+  if (c.measure) {
+    r.measured = measure_deviation(pieces, poly, c.tolerance).max();
+    if (r.measured > c.tolerance)
+      throw std::logic_error("internal check failed: " + r.label + " deviates by " + fmt_num(r.measured) +
+                             " beyond the tolerance " + fmt_num(c.tolerance));
+  }
+}
+
+}  // namespace detail
+
+namespace {
+Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
+}  // namespace
+
+Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
+  try {
+    return build_program_unchecked(job, m, opt);
+  } catch (const InputError& e) {
+    // The flattener knows neither the file nor the machine: say where the
+    // tolerance came from and whose decimals it meets.
+    // (Also the flattener's own segment limit, found while flattening.)
+    if (!e.id().starts_with("flatten.tolerance") && !(e.id() == "limit.segments" && e.where() == "tolerance")) throw;
+    throw InputError(e.id(), opt.tolerance ? std::string("--tolerance") : job.source + ": tolerance",
+                     e.message() + " (machine \"" + m.name + "\" prints " + std::to_string(m.decimals(job.units)) +
+                         " decimals in " + to_string(job.units) + ")");
+  }
+}
+
+namespace {
+
+Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
+  Program p;
+  p.job_name = std::filesystem::path(job.source).filename().string();
+  p.machine = m.name;
+  p.units = job.units;
+  p.output = opt.output;
+  p.tolerance = opt.tolerance.value_or(job.tolerance);
+  p.decimals = m.decimals(job.units);
+  p.warnings = job.warnings;
+  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
+
+  int cur_tool = -1;
+  double cur_rpm = -1;
+  Vec3 pos;
+  bool pos_known = false;
+  ProgramLength length;  // stated limits (program_limits.hpp)
+  for (const Entity& e : job.entities) {
+    if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
+    const CutParams cp = cut_params(job, e, m);
+    check_entity_limits(job, e, p.tolerance, p.decimals, cp.tool_radius,
+                        opt.tolerance ? std::string("--tolerance") : job.source + ": tolerance");
+    const double safe = quantize(cp.safe_z, p.decimals);
+    p.safe_z = p.entities.empty() ? safe : std::min(p.safe_z, safe);
+    const auto& g = e.curve;
+    if (e.surface) {  // patches and curves on surfaces: surface_emitter.cpp
+      detail::CutContext sc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
+      detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known};
+      const EntityReport r = detail::emit_surface(sc, ms);
+      p.max_measured = std::max(p.max_measured, r.measured);
+      p.max_bound = std::max(p.max_bound, r.bound);
+      p.entities.push_back(r);
+      length.after_entity(p, job, e);
+      continue;
+    }
+    if (g.pieces.empty()) continue;
+
+    if (g.dim == 3) {
+      const Box3 b = g.bounds();
+      if (b.hi.z > cp.safe_z)
+        throw InputError("job.above-safe-z", job.source + ": " + e.json_path(),
+                         "the curve rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " + fmt_num(cp.safe_z) +
+                             "; rapid moves at safe_z would cross it: raise safe_z");
+    }
+    if (cp.tool != cur_tool) {
+      Move t;
+      t.kind = MoveKind::tool_change;
+      t.tool = cp.tool;
+      if (pos_known && pos.z < safe) {
+        Move up;
+        up.kind = MoveKind::rapid;
+        up.to = {pos.x, pos.y, safe};
+        push(up);
+        pos = up.to;
+      }
+      push(t);
+      cur_tool = cp.tool;
+      cur_rpm = -1;
+    }
+    if (cp.spindle_rpm != cur_rpm) {
+      Move s;
+      s.kind = cp.spindle_rpm > 0 ? MoveKind::spindle_on : MoveKind::spindle_off;
+      s.rpm = cp.spindle_rpm;
+      push(s);
+      cur_rpm = cp.spindle_rpm;
+    }
+    Move cmt;
+    cmt.kind = MoveKind::comment;
+    cmt.text = "entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
+               (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D");
+    push(cmt);
+
+    EntityReport r;
+    r.label = e.label();
+    r.entity = static_cast<int>(e.index);
+    r.type = e.type;
+    r.degree = g.max_degree();
+    r.length = g.length();
+    detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
+    const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
+    // Retract (straight up) if below this entity's safe Z, rapid over the
+    // start, plunge at the plunge feed.
+    if (!pos_known || pos.z != safe) {
+      Move up;
+      up.kind = MoveKind::rapid;
+      up.to = {pos_known ? pos.x : 0, pos_known ? pos.y : 0, safe};
+      up.entity = static_cast<int>(e.index);
+      if (!pos_known) up.axes = 4;  // position unknown: move Z only
+      push(up);
+    }
+    Move over;
+    over.kind = MoveKind::rapid;
+    over.to = {start.x, start.y, safe};
+    over.entity = static_cast<int>(e.index);
+    push(over);
+    Move plunge;
+    plunge.kind = MoveKind::linear;
+    plunge.to = start;
+    plunge.feed = cp.plunge_feed;
+    plunge.entity = static_cast<int>(e.index);
+    push(plunge);
+
+    switch (opt.output) {
+      case OutputMode::lines: detail::emit_lines(ctx, r); break;
+      case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
+      case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
+    }
+    pos = p.moves.back().to;
+    Move retract;
+    retract.kind = MoveKind::rapid;
+    retract.to = {pos.x, pos.y, safe};
+    retract.entity = static_cast<int>(e.index);
+    push(retract);
+    pos = retract.to;
+    pos_known = true;
+    p.max_measured = std::max(p.max_measured, r.measured);
+    p.max_bound = std::max(p.max_bound, r.bound);
+    p.entities.push_back(r);
+    length.after_entity(p, job, e);
+  }
+  if (opt.on_entity) opt.on_entity(job.entities.size(), job.entities.size(), "");
+  return p;
+}
+
+}  // namespace
+
+}  // namespace bezcam

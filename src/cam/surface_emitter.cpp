@@ -1,0 +1,350 @@
+// Surface entities become moves: finishing passes over a patch (zigzag,
+// raster or its boundary) and curves traced on a patch, with the tool tip
+// on the surface (r = 0) or a ball-end tool's tip (r > 0), after the gouge
+// check the job asks for. Every cutting polyline comes from
+// flatten_surface.hpp with its proven bound; passes from plan_passes(), so
+// neighbouring passes are verified to be within the stepover.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "bezcam/error.hpp"
+#include "bezcam/cam/gouge.hpp"
+#include "bezcam/cam/pass_plan.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+#include "cut_emitters.hpp"
+
+namespace bezcam::detail {
+
+namespace {
+
+// A stretch of polyline to cut without lifting the tool, with where it
+// sits on its pass (for linking zigzag passes along the border): whether it
+// starts at the end of the pass the tool enters by and ends at the one it
+// leaves by (t = 0 and t = 1, swapped when the pass is run backwards).
+struct Run {
+  std::vector<Vec3> points;
+  bool from_start = false;
+  bool to_end = false;
+};
+
+// The polyline minus every segment that touches a gouge span: runs of at
+// least one segment.
+std::vector<Run> cut_out(const TipPolyline& p, const std::vector<GougeSpan>& spans) {
+  std::vector<Run> runs;
+  Run cur;
+  auto close = [&](bool at_end) {
+    if (cur.points.size() >= 2) {
+      cur.to_end = at_end;
+      runs.push_back(cur);
+    }
+    cur = Run{};
+  };
+  for (size_t i = 0; i + 1 < p.points.size(); ++i) {
+    const double a = p.params[i], b = p.params[i + 1];
+    bool bad = false;
+    for (const auto& s : spans) bad = bad || (a <= s.t1 && b >= s.t0);
+    if (bad) {
+      close(false);
+      continue;
+    }
+    if (cur.points.empty()) {
+      cur.points.push_back(p.points[i]);
+      cur.from_start = i == 0;
+    }
+    cur.points.push_back(p.points[i + 1]);
+  }
+  close(true);
+  return runs;
+}
+
+std::string fmt_uv(double u, double v) { return "u = " + fmt_num(std::round(u * 1e6) / 1e6) + ", v = " + fmt_num(std::round(v * 1e6) / 1e6); }
+
+class SurfaceEmitter {
+ public:
+  SurfaceEmitter(CutContext& c, MotionState& st)
+      : c_(c), st_(st), e_(c.entity), s_(*c.entity.surface), r_(c.params.tool_radius),
+        safe_(quantize(c.params.safe_z, c.decimals)),
+        policy_(e_.params.over(c.job.params).gouge.value_or(GougePolicy::refuse)) {
+    rep_.label = e_.label();
+    rep_.type = e_.type;
+    rep_.entity = static_cast<int>(e_.index);
+    rep_.degree = std::max(s_.degree_u(), s_.degree_v());
+  }
+
+  EntityReport run() {
+    check_safe_z();
+    try {
+      if (e_.type == "curve_on_surface") {
+        cut_curve_on_surface();
+      } else if (e_.toolpath.pattern == "boundary") {
+        cut_boundary();
+      } else {
+        cut_passes();
+      }
+    } catch (const InputError& err) {
+      // The geometry layers know no file: name the entity.
+      if (!err.where().empty()) throw;
+      throw InputError(err.id(), where(), err.message());
+    }
+    retract();
+    st_.pos_known = true;
+    return rep_;
+  }
+
+ private:
+  CutContext& c_;
+  MotionState& st_;
+  const Entity& e_;
+  const SurfaceGeometry& s_;
+  double r_, safe_;
+  GougePolicy policy_;
+  EntityReport rep_;
+  size_t skipped_ = 0;
+
+  std::string where() const { return c_.job.source + ": " + e_.json_path(); }
+  FlattenOptions fo() const { return {c_.tolerance, c_.decimals}; }
+
+  void check_safe_z() {
+    // The tip is never above the surface (r (N.z - 1) <= 0), and rapids at
+    // safe Z must clear the whole patch.
+    const Box3 b = bounds(s_);
+    if (b.hi.z > c_.params.safe_z)
+      throw InputError("job.above-safe-z", where(),
+                       "the surface rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " +
+                           fmt_num(c_.params.safe_z) + "; rapid moves at safe_z would cross it: raise safe_z");
+    if (c_.params.tool_radius < 0) throw std::logic_error("negative tool radius");
+  }
+
+  // ---- moves ----------------------------------------------------------
+  void push(Move mv) {
+    mv.entity = static_cast<int>(e_.index);
+    c_.program.moves.push_back(std::move(mv));
+  }
+  void comment(const std::string& text) {
+    Move m;
+    m.kind = MoveKind::comment;
+    m.text = text;
+    push(m);
+  }
+  void begin_entity(const std::string& what) {
+    const CutParams& cp = c_.params;
+    if (cp.tool != st_.tool) {
+      if (st_.pos_known && st_.pos.z < safe_) retract();
+      Move t;
+      t.kind = MoveKind::tool_change;
+      t.tool = cp.tool;
+      push(t);
+      st_.tool = cp.tool;
+      st_.rpm = -1;
+    }
+    if (cp.spindle_rpm != st_.rpm) {
+      Move s;
+      s.kind = cp.spindle_rpm > 0 ? MoveKind::spindle_on : MoveKind::spindle_off;
+      s.rpm = cp.spindle_rpm;
+      push(s);
+      st_.rpm = cp.spindle_rpm;
+    }
+    comment("entity " + e_.label() + ": " + e_.type + ", degree " + std::to_string(s_.degree_u()) + " x " +
+            std::to_string(s_.degree_v()) + (s_.rational() ? ", rational" : "") + ", " + what +
+            (r_ > 0 ? ", ball-end tool radius " + fmt_num(r_) : ", tool tip on the surface"));
+    if (c_.program.output == OutputMode::nurbs && rep_.blocks == 0)
+      c_.program.warnings.push_back(e_.label() + ": surface passes are cut with G01 lines in --output nurbs");
+  }
+  void retract() {
+    if (st_.pos_known && st_.pos.z == safe_) return;
+    Move up;
+    up.kind = MoveKind::rapid;
+    up.to = {st_.pos_known ? st_.pos.x : 0, st_.pos_known ? st_.pos.y : 0, safe_};
+    if (!st_.pos_known) up.axes = 4;  // position unknown: Z only
+    push(up);
+    st_.pos = up.to;
+    st_.pos_known = true;
+  }
+  void go_to(const Vec3& p) {  // retract, rapid over, plunge
+    if (st_.pos_known && st_.pos == p) return;
+    retract();
+    Move over;
+    over.kind = MoveKind::rapid;
+    over.to = {p.x, p.y, safe_};
+    push(over);
+    Move plunge;
+    plunge.kind = MoveKind::linear;
+    plunge.to = p;
+    plunge.feed = c_.params.plunge_feed;
+    push(plunge);
+    st_.pos = p;
+  }
+  void feed_to(const Vec3& p) {
+    if (st_.pos == p) return;
+    Move m;
+    m.kind = MoveKind::linear;
+    m.to = p;
+    m.feed = c_.params.feed;
+    push(m);
+    ++rep_.blocks;
+    rep_.length += dist(st_.pos, p);
+    st_.pos = p;
+  }
+  void cut(const std::vector<Vec3>& pts) {
+    for (const auto& q : pts) feed_to(q);
+  }
+
+  // ---- geometry ---------------------------------------------------------
+  // Flattens a curve, measures it, and returns the cut runs (after the
+  // gouge policy).
+  std::vector<Run> prepare(const SurfaceCurve& curve, const TipPolyline& poly, const std::string& what) {
+    rep_.bound = std::max(rep_.bound, poly.bound);
+    if (c_.measure) {
+      const double m = measure_tip(curve, r_, poly).max();
+      rep_.measured = std::max(rep_.measured, m);
+      if (m > c_.tolerance * (1 + 1e-6))
+        throw std::logic_error("internal check failed: " + rep_.label + " " + what + " deviates by " + fmt_num(m) +
+                               " beyond the tolerance " + fmt_num(c_.tolerance));
+    }
+    std::vector<GougeSpan> spans;
+    if (r_ > 0) spans = find_gouges(s_, curve, r_, std::max<int>(256, 4 * static_cast<int>(poly.points.size())));
+    if (!spans.empty()) {
+      if (policy_ == GougePolicy::refuse) refuse(spans, what);
+      for (const auto& sp : spans)
+        comment("skipped " + what + " where the tool would gouge: around " + fmt_uv(sp.worst_u, sp.worst_v) +
+                (sp.undercut ? " (the surface faces down)" : ", concave radius " + fmt_num(sp.curvature_radius)));
+      skipped_ += spans.size();
+    }
+    return cut_out(poly, spans);
+  }
+
+  [[noreturn]] void refuse(const std::vector<GougeSpan>& spans, const std::string& what) {
+    const GougeSpan& g = spans.front();
+    const std::string why =
+        g.undercut ? "the surface faces down there, out of reach of a tool coming from above"
+                   : "the surface is concave there with a curvature radius of " +
+                         fmt_num(std::round(g.curvature_radius * 1e4) / 1e4) + ", less than the ball-end radius " +
+                         fmt_num(r_);
+    throw InputError("surface.gouge", where(),
+                     "the tool would gouge the surface on " + what + " around " + fmt_uv(g.worst_u, g.worst_v) +
+                         ": " + why + "; use a smaller tool_radius, or set \"gouge\": \"skip\" (in \"job\" or on the "
+                         "entity) to leave such regions uncut");
+  }
+
+  void note_skips() {
+    if (skipped_ == 0) return;
+    c_.program.warnings.push_back(where() + ": " + std::to_string(skipped_) +
+                                  " region(s) left uncut where the ball-end tool would gouge (\"gouge\": \"skip\"); "
+                                  "see the comments in the program");
+  }
+
+  // ---- patterns ---------------------------------------------------------
+  void cut_curve_on_surface() {
+    begin_entity("curve traced on the surface");
+    const SurfaceCurve m = map_curve(s_, e_.uv_curve, r_ > 0);
+    const TipPolyline poly = flatten_tip(m, r_, fo());
+    for (const Run& run : prepare(m, poly, "the curve")) {
+      go_to(run.points.front());
+      cut(run.points);
+    }
+    note_skips();
+  }
+
+  void cut_boundary() {
+    begin_entity("boundary pattern (the four border curves)");
+    const bool nz = r_ > 0;
+    const SurfaceCurve borders[4] = {iso_curve(s_, 'u', 0, nz), iso_curve(s_, 'v', 1, nz),
+                                     reversed(iso_curve(s_, 'u', 1, nz)), reversed(iso_curve(s_, 'v', 0, nz))};
+    const char* names[4] = {"border v = 0", "border u = 1", "border v = 1", "border u = 0"};
+    for (int k = 0; k < 4; ++k) {
+      const TipPolyline poly = flatten_tip(borders[k], r_, fo());
+      for (const Run& run : prepare(borders[k], poly, names[k])) {
+        // Borders meet end to end: continue without lifting when the run
+        // starts where the tool is.
+        go_to(run.points.front());
+        cut(run.points);
+      }
+    }
+    note_skips();
+  }
+
+  void cut_passes() {
+    const ToolpathSpec& tp = e_.toolpath;
+    if (!tp.stepover)
+      throw InputError("job.missing", where() + ".toolpath.stepover",
+                       "a \"" + tp.pattern + "\" toolpath needs \"stepover\": the largest distance allowed between "
+                       "neighbouring passes, in file units");
+    PassOptions o;
+    o.direction = tp.direction;
+    o.stepover = *tp.stepover;
+    o.tolerance = c_.tolerance;
+    o.decimals = c_.decimals;
+    o.tool_radius = r_;
+    PassPlan plan;
+    try {
+      plan = plan_passes(s_, o);
+    } catch (const InputError& err) {
+      if (!err.id().starts_with("toolpath.")) throw;
+      throw InputError(err.id(), where() + ".toolpath.stepover", err.message());
+    }
+    const char across = tp.direction == 'u' ? 'v' : 'u';
+    const bool zigzag = tp.pattern == "zigzag";
+    begin_entity(tp.pattern + " along " + std::string(1, tp.direction) + ", stepover " + fmt_num(o.stepover) +
+                 ", " + std::to_string(plan.passes.size()) + " passes");
+    comment("neighbouring passes at most " + fmt_num(std::round(plan.gap_bound * 1e4) / 1e4) +
+            " apart (verified on the printed passes; stepover " + fmt_num(o.stepover) + ")");
+    bool have_prev = false;
+    bool prev_reversed = false;
+    bool prev_reached_side = false;  // the last run ended on the side the next pass starts from
+    double prev_at = 0;
+    const size_t n = plan.passes.size();
+    for (size_t k = 0; k < n; ++k) {
+      const Pass& ps = plan.passes[k];
+      const std::string label = "pass " + std::to_string(k + 1) + " of " + std::to_string(n) + " at " +
+                                std::string(1, across) + " = " + fmt_num(std::round(ps.at * 1e6) / 1e6);
+      comment(label);
+      std::vector<Run> runs = prepare(ps.curve, ps.poly, label);
+      const bool rev = zigzag && k % 2 == 1;
+      if (rev) {
+        std::reverse(runs.begin(), runs.end());
+        for (auto& r : runs) {
+          std::reverse(r.points.begin(), r.points.end());
+          std::swap(r.from_start, r.to_end);
+        }
+      }
+      for (size_t j = 0; j < runs.size(); ++j) {
+        const Run& run = runs[j];
+        const bool linkable = zigzag && j == 0 && have_prev && prev_reached_side && run.from_start;
+        if (!(linkable && link(prev_at, ps.at, prev_reversed ? 0.0 : 1.0, run.points.front()))) go_to(run.points.front());
+        cut(run.points);
+        prev_reached_side = run.to_end;
+      }
+      if (runs.empty()) prev_reached_side = false;
+      have_prev = true;
+      prev_reversed = rev;
+      prev_at = ps.at;
+    }
+    note_skips();
+  }
+
+  // Feeds along the border at `side` (the pass parameter there) from pass
+  // `a` to pass `b`: the tip curve of the border, flattened like a pass, so
+  // the link is as close to the surface as the passes. False (no moves)
+  // where the link would gouge: the caller lifts the tool instead.
+  bool link(double a, double b, double side, const Vec3& target) {
+    const char across = e_.toolpath.direction == 'u' ? 'v' : 'u';
+    const SurfaceCurve border = restrict(iso_curve(s_, across, side, r_ > 0), a, b);
+    if (r_ > 0 && !find_gouges(s_, border, r_, 64).empty()) return false;
+    const TipPolyline poly = flatten_tip(border, r_, fo());
+    rep_.bound = std::max(rep_.bound, poly.bound);
+    if (c_.measure) rep_.measured = std::max(rep_.measured, measure_tip(border, r_, poly).max());
+    // Its ends are the printed ends of the two passes (up to a last-digit
+    // difference of the rounding, which a tiny move absorbs).
+    cut(poly.points);
+    feed_to(target);
+    return true;
+  }
+};
+
+}  // namespace
+
+EntityReport emit_surface(CutContext& c, MotionState& st) { return SurfaceEmitter(c, st).run(); }
+
+}  // namespace bezcam::detail

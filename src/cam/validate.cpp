@@ -1,0 +1,110 @@
+#include "bezcam/cam/validate.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "bezcam/error.hpp"
+
+namespace bezcam {
+
+namespace {
+
+// Extent of a G17 arc from `from` to `to` around `c`: the ends plus every
+// axis extreme the sweep passes.
+Box3 arc_box(const Vec3& from, const Move& m) {
+  Box3 b;
+  b.add(from);
+  b.add(m.to);
+  const double r = std::hypot(from.x - m.center.x, from.y - m.center.y);
+  double a0 = std::atan2(from.y - m.center.y, from.x - m.center.x);
+  double a1 = std::atan2(m.to.y - m.center.y, m.to.x - m.center.x);
+  const bool ccw = m.kind == MoveKind::arc_ccw;
+  double sweep = ccw ? a1 - a0 : a0 - a1;
+  while (sweep <= 0) sweep += 2 * std::numbers::pi;
+  for (int q = 0; q < 4; ++q) {
+    const double a = q * std::numbers::pi / 2;
+    double d = ccw ? a - a0 : a0 - a;
+    while (d < 0) d += 2 * std::numbers::pi;
+    while (d >= 2 * std::numbers::pi) d -= 2 * std::numbers::pi;
+    if (d <= sweep) b.add({m.center.x + r * std::cos(a), m.center.y + r * std::sin(a), from.z});
+  }
+  return b;
+}
+
+}  // namespace
+
+void validate_program(const Program& p, const MachineProfile& m) {
+  const double k = 1.0 / mm_per_unit(p.units);
+  const char* unit = to_string(p.units);
+  // The entity's JSON path, and its id when it has one.
+  auto where = [&](const Move& mv) {
+    if (mv.entity < 0) return p.job_name;
+    std::string w = p.job_name + ": entities[" + std::to_string(mv.entity) + "]";
+    for (const auto& r : p.entities)
+      if (r.entity == mv.entity && r.label != "entities[" + std::to_string(mv.entity) + "]")
+        w += " (id \"" + r.label + "\")";
+    return w;
+  };
+  auto check_box = [&](const Move& mv, const Box3& b, unsigned axes) {
+    static const char* names = "XYZ";
+    for (int a = 0; a < 3; ++a) {
+      if (!(axes & (1u << a))) continue;
+      const double lo = m.travel_mm[a][0] * k, hi = m.travel_mm[a][1] * k;
+      const double v = b.lo[a] < lo ? b.lo[a] : (b.hi[a] > hi ? b.hi[a] : lo);
+      if (b.lo[a] < lo || b.hi[a] > hi)
+        throw InputError("program.travel", where(mv),
+                         std::string("the tool path reaches ") + names[a] + " = " + fmt_num(v) + " " + unit +
+                             ", outside the travel of machine \"" + m.name + "\" (" + names[a] + " from " +
+                             fmt_num(lo) + " to " + fmt_num(hi) + " " + unit +
+                             "); move the part or use another machine profile");
+    }
+  };
+  const double max_feed = m.max_feed_mm_min * k;
+  Vec3 pos;
+  unsigned known = 0;
+  for (const Move& mv : p.moves) {
+    switch (mv.kind) {
+      case MoveKind::rapid:
+      case MoveKind::linear:
+      case MoveKind::arc_cw:
+      case MoveKind::arc_ccw:
+      case MoveKind::nurbs:
+      case MoveKind::bezier: break;
+      default: continue;
+    }
+    if (mv.kind != MoveKind::rapid && mv.feed > max_feed)
+      throw InputError("program.feed", where(mv),
+                       "feed " + fmt_num(mv.feed) + " " + unit + "/min exceeds the maximum feed of machine \"" +
+                           m.name + "\" (" + fmt_num(max_feed) + " " + unit + "/min); lower \"feed\" or \"plunge_feed\"");
+    if (mv.kind != MoveKind::rapid && !(mv.feed > 0))
+      throw std::logic_error("cutting move without a feed");
+    Box3 b;
+    Vec3 to = pos;
+    for (int a = 0; a < 3; ++a)
+      if (mv.axes & (1u << a)) to[a] = mv.to[a];
+    if (mv.kind == MoveKind::arc_cw || mv.kind == MoveKind::arc_ccw) {
+      if (!m.arcs)
+        throw InputError("program.arcs", where(mv), "machine \"" + m.name + "\" does not take arcs (\"arcs\": false)");
+      // The emitters keep printed arcs within the controller's radius check.
+      const double rs = std::hypot(pos.x - mv.center.x, pos.y - mv.center.y);
+      const double re = std::hypot(to.x - mv.center.x, to.y - mv.center.y);
+      if (std::abs(rs - re) > m.arc_tolerance_mm * k * (1 + 1e-9))
+        throw std::logic_error("internal check failed: an arc's radii differ by " + fmt_num(std::abs(rs - re)));
+      b = arc_box(pos, mv);
+      b.add(to);
+    } else {
+      b.add(to);
+      for (const auto& c : mv.ctrl) b.add(c);  // NURBS / Bézier: hull contains the curve
+    }
+    check_box(mv, b, mv.axes | known);
+    const bool moves_xy = (mv.axes & 3) && ((known & 3) != 3 || to.x != pos.x || to.y != pos.y);
+    if (mv.kind == MoveKind::rapid && moves_xy && (to.z < p.safe_z || ((known & 4) && pos.z < p.safe_z)))
+      throw InputError("program.rapid-below-safe-z", where(mv),
+                       "a rapid move would cross the part below safe Z (" + fmt_num(p.safe_z) + " " + unit + ")");
+    pos = to;
+    known |= mv.axes;
+  }
+}
+
+}  // namespace bezcam

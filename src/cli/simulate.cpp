@@ -1,0 +1,226 @@
+// bezcam simulate --listen HOST:PORT [--machine NAME|FILE] [--trace FILE] [limits, faults]
+// bezcam simulate --program FILE.nc [--machine NAME|FILE] [--trace FILE]
+//
+// The simulated controller's front end: the same SimController either
+// behind a Modbus TCP server or fed a file directly. SIGINT and SIGTERM stop
+// it cleanly: the executor finishes the line in progress and the trace is
+// flushed before the process exits.
+#include <pthread.h>
+#include <signal.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
+#include "bezcam/sim/sim_controller.hpp"
+#include "bezcam/sim/sim_server.hpp"
+#include "bezcam/sim/trace.hpp"
+#include "bezcam/link/transport.hpp"
+#include "command.hpp"
+
+namespace bezcam::cli {
+namespace {
+
+using namespace bezcam::link;
+using namespace bezcam::sim;
+
+struct Options {
+  std::string listen, program, machine = "generic", trace;
+  std::size_t buffer = 4096;
+  int max_connections = 8;
+  double idle_timeout = 30, session_timeout = 30, exec_delay_ms = 0;
+  std::vector<std::string> faults;
+  std::uint32_t session_base = 0;
+  bool quiet = false;
+} o;
+
+CLI::App* add(CLI::App& app) {
+  auto* s = app.add_subcommand("simulate", "Run the simulated controller: a Modbus TCP server that accepts programs "
+                                           "(--listen) or a program file executed directly (--program).");
+  auto* l = s->add_option("--listen", o.listen, "HOST:PORT to listen on (port 0: a free port, printed on stdout)");
+  auto* p = s->add_option("--program", o.program, "G-code file to execute directly, no network");
+  l->excludes(p);
+  p->excludes(l);
+  s->add_option("--machine", o.machine, "machine profile: travel limits and maximum feed (default generic)");
+  s->add_option("--trace", o.trace, "write the trace here (\"-\" for stdout); restarted for each program");
+  s->add_option("--buffer", o.buffer, "receive buffer in bytes")->check(CLI::Range(kMinBuffer, kMaxBuffer));
+  s->add_option("--max-connections", o.max_connections, "simultaneous Modbus connections")->check(CLI::Range(2, 64));
+  s->add_option("--idle-timeout", o.idle_timeout, "close a connection silent this many seconds")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--session-timeout", o.session_timeout,
+                "stop a transfer whose sender is silent this many seconds (alarm sender-lost)")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--exec-delay-ms", o.exec_delay_ms, "time spent per program line: a slow controller")
+      ->check(CLI::NonNegativeNumber);
+  s->add_option("--fault", o.faults,
+                "fault injection for tests: drop-before:N or drop-after:N drops the connection at the N-th chunk "
+                "write, before or after applying it; corrupt:N alters a digit of the N-th chunk once it is "
+                "accepted (repeatable)");
+  s->add_option("--session-base", o.session_base, "first session id (tests and documentation; default random)");
+  s->add_flag("-q,--quiet", o.quiet, "print nothing but the listening line and errors");
+  return s;
+}
+
+// Writes the trace to a file as it is produced; each piece is flushed so the
+// file is complete whenever the controller reports DONE.
+class FileSink {
+ public:
+  explicit FileSink(std::string path) : path_(std::move(path)) {}
+  ~FileSink() {
+    if (f_ && f_ != stdout) std::fclose(f_);
+  }
+  void operator()(std::string_view text, bool restart) {
+    if (restart && path_ != "-") {
+      if (f_) std::fclose(f_);
+      f_ = std::fopen(path_.c_str(), "w");
+      if (!f_) std::cerr << "bezcam: error: " << path_ << ": cannot write the trace\n";
+    } else if (!f_ && path_ == "-") {
+      f_ = stdout;
+    }
+    if (!f_) return;
+    std::fwrite(text.data(), 1, text.size(), f_);
+    std::fflush(f_);
+  }
+
+ private:
+  std::string path_;
+  std::FILE* f_ = nullptr;
+};
+
+std::vector<std::uint64_t> parse_faults(const std::string& kind) {
+  std::vector<std::uint64_t> out;
+  for (const auto& f : o.faults) {
+    const auto colon = f.find(':');
+    const std::string k = f.substr(0, colon);
+    if (k != "drop-before" && k != "drop-after" && k != "corrupt")
+      throw InputError("sim.fault", f, "expected drop-before:N, drop-after:N or corrupt:N");
+    std::uint64_t n = 0;
+    try {
+      n = std::stoull(colon == std::string::npos ? "" : f.substr(colon + 1));
+    } catch (const std::exception&) {
+      throw InputError("sim.fault", f, "expected a chunk count after the colon, such as drop-after:5");
+    }
+    if (k == kind) out.push_back(n);
+  }
+  return out;
+}
+
+// At most kMaxProgramBytes, refused before it is read (limits.hpp).
+std::string read_file(const std::string& path) { return read_bounded(path, kMaxProgramBytes, "program file"); }
+
+// SIGINT and SIGTERM are blocked in every thread and taken by one waiting
+// thread, so that stopping happens in ordinary code, not in a handler.
+class SignalWaiter {
+ public:
+  SignalWaiter() {
+    sigemptyset(&set_);
+    sigaddset(&set_, SIGINT);
+    sigaddset(&set_, SIGTERM);
+    sigaddset(&set_, SIGUSR1);  // internal: "stop waiting"
+    pthread_sigmask(SIG_BLOCK, &set_, nullptr);
+  }
+  template <class F>
+  void start(F on_signal) {
+    th_ = std::thread([this, on_signal] {
+      int sig = 0;
+      sigwait(&set_, &sig);
+      if (sig != SIGUSR1) {
+        signal_ = sig;
+        on_signal();
+      }
+    });
+  }
+  ~SignalWaiter() { finish(); }
+  /// Ends the waiting thread (whether or not a signal came) and waits for
+  /// it, so that nothing it calls outlives the objects it calls.
+  void finish() {
+    if (th_.joinable()) {
+      if (signal_ == 0) pthread_kill(th_.native_handle(), SIGUSR1);
+      th_.join();
+    }
+  }
+  int signal() const { return signal_; }
+
+ private:
+  sigset_t set_;
+  std::thread th_;
+  std::atomic<int> signal_{0};
+};
+
+int run() {
+  if (o.listen.empty() && o.program.empty())
+    throw InputError("sim.usage", "simulate", "give --listen HOST:PORT or --program FILE.nc");
+  ControllerConfig cfg;
+  cfg.profile = load_profile_option(o.machine);
+  cfg.buffer_bytes = o.buffer;
+  cfg.session_timeout = std::chrono::milliseconds(static_cast<long long>(o.session_timeout * 1000));
+  cfg.exec_delay = std::chrono::microseconds(static_cast<long long>(o.exec_delay_ms * 1000));
+  cfg.first_session = o.session_base;
+  cfg.drop_before_chunk = parse_faults("drop-before");
+  cfg.drop_after_chunk = parse_faults("drop-after");
+  cfg.corrupt_chunk = parse_faults("corrupt");
+  std::shared_ptr<FileSink> sink;
+  if (!o.trace.empty()) {
+    sink = std::make_shared<FileSink>(o.trace);
+    cfg.trace = [sink](std::string_view t, bool restart) { (*sink)(t, restart); };
+  }
+  const std::string program = o.program.empty() ? std::string() : read_file(o.program);
+  SignalWaiter signals;  // before any thread exists, so that all inherit the mask
+  SimController ctl(std::move(cfg));
+
+  if (!o.program.empty()) {
+    signals.start([&ctl] { ctl.stop(); });
+    Status st = ctl.run_program(program);
+    signals.finish();
+    if (signals.signal() != 0) {
+      ctl.stop();  // the line in progress completes first
+      st = ctl.status();
+      std::cerr << "bezcam: simulate: stopped by signal " << signals.signal() << " after " << st.lines_executed
+                << " lines; the trace is complete up to there\n";
+      return 128 + signals.signal();
+    }
+    if (st.state == State::alarm) {
+      std::string text = ctl.alarm_text();
+      const std::string prefix = "line " + std::to_string(st.alarm_line) + ": ";
+      if (text.rfind(prefix, 0) == 0) text.erase(0, prefix.size());
+      throw InputError(std::string("sim.") + to_string(st.alarm),
+                       st.alarm_line ? "line " + std::to_string(st.alarm_line) : o.program,
+                       text + " (alarm " + to_string(st.alarm) + " of the simulated controller)");
+    }
+    if (!o.quiet)
+      std::cerr << "bezcam: simulate: " << o.program << ": " << st.lines_executed << " lines, " << st.blocks_executed
+                << " motion blocks executed on machine " << o.machine << "\n";
+    return 0;
+  }
+
+  ServerConfig scfg;
+  const Endpoint ep = parse_endpoint(o.listen, true);
+  scfg.host = ep.host;
+  scfg.port = ep.port;
+  scfg.max_connections = o.max_connections;
+  scfg.idle_timeout = std::chrono::milliseconds(static_cast<long long>(o.idle_timeout * 1000));
+  ModbusServer server(ctl, scfg);
+  signals.start([&server] { server.stop(); });
+  // The readiness line: tests and scripts wait for it (never a sleep).
+  std::cout << "bezcam simulate: listening on " << Endpoint{ep.host, server.port()}.str() << " (machine "
+            << o.machine << ", buffer " << o.buffer << " bytes, at most " << o.max_connections << " connections)"
+            << std::endl;
+  server.run();
+  signals.finish();
+  ctl.stop();  // the line in progress completes; the trace is flushed
+  if (!o.quiet) {
+    const Status st = ctl.status();
+    std::cerr << "bezcam: simulate: stopped" << (signals.signal() ? " by signal " + std::to_string(signals.signal()) : "")
+              << "; last program " << to_string(st.state) << ", " << st.lines_executed << " lines executed\n";
+  }
+  return 0;
+}
+
+Command cmd{"simulate", add, run};
+RegisterCommand registration(&cmd);
+
+}  // namespace
+}  // namespace bezcam::cli

@@ -1,0 +1,252 @@
+#include "bezcam/flatten/tip_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+
+namespace bezcam {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const Vec3 kZ{0, 0, 1};
+
+[[noreturn]] void normal_undefined(const SurfaceCurve& c, double t) {
+  const auto [u, v] = uv_at(c, t);
+  throw InputError("surface.normal-undefined", "",
+                   "the surface normal vanishes near u = " + fmt_num(u) + ", v = " + fmt_num(v) +
+                       " (a collapsed edge or a cusp), so a ball-end tool cannot follow it there; "
+                       "use tool_radius 0 or a patch without degenerate points");
+}
+
+// Largest norm among the control points of the k-th hodograph of a
+// polynomial piece, times n (n-1) ... : a bound of |b^(k)| on [0,1].
+double derivative_bound(const Bezier& b, int k) {
+  const int n = b.degree();
+  if (k > n) return 0;
+  std::vector<Vec3> d = b.points;
+  double f = 1;
+  for (int j = 0; j < k; ++j) {
+    for (size_t i = 0; i + 1 < d.size(); ++i) d[i] = d[i + 1] - d[i];
+    d.pop_back();
+    f *= n - j;
+  }
+  double m = 0;
+  for (const auto& p : d) m = std::max(m, norm(p));
+  return f * m;
+}
+
+// Bound of |P''| on [0,1] for a polynomial or rational piece (module comment).
+double second_derivative_bound(const Bezier& b) {
+  if (!b.rational()) return derivative_bound(b, 2);
+  const int n = b.degree();
+  const Vec3 c = evaluate(b, 0.5);
+  double R = 0, wmin = kInf;
+  Bezier h;  // H = w (P - c), as a polynomial curve
+  Bezier w;  // w as a polynomial curve in x
+  h.dim = w.dim = 3;
+  for (int i = 0; i <= n; ++i) {
+    R = std::max(R, dist(b.points[i], c));
+    wmin = std::min(wmin, b.weights[i]);
+    h.points.push_back((b.points[i] - c) * b.weights[i]);
+    w.points.push_back({b.weights[i], 0, 0});
+  }
+  const double h1 = derivative_bound(h, 1), h2 = derivative_bound(h, 2);
+  const double w1 = derivative_bound(w, 1), w2 = derivative_bound(w, 2);
+  const double p1 = (h1 + w1 * R) / wmin;
+  return (h2 + w2 * R + 2 * w1 * p1) / wmin;
+}
+
+// Lower bound of |n| on [0,1]: the least projection of the control points
+// on the direction of n(1/2) (convex hull); 0 when not provably positive.
+double min_norm_bound(const Bezier& n) {
+  const Vec3 m = evaluate(n, 0.5);
+  const double l = norm(m);
+  if (!(l > 0)) return 0;
+  const Vec3 d = m / l;
+  double lo = kInf;
+  for (const auto& p : n.points) lo = std::min(lo, dot(p, d));
+  return std::max(lo, 0.0);
+}
+
+double magnitude(const SurfaceCurve& c) {
+  double m = 0;
+  for (const auto& b : c.points)
+    for (const auto& p : b.points) m = std::max(m, max_abs(p));
+  return m;
+}
+
+// Tip of piece k at local parameter x.
+Vec3 tip_local(const SurfaceCurve& c, double radius, size_t k, double x, double global_t) {
+  const Vec3 p = evaluate(c.points[k], x);
+  if (radius == 0 || c.normals.empty()) return p;
+  const Vec3 n = evaluate(c.normals[k], x);
+  const double l = norm(n);
+  if (!(l > 0)) normal_undefined(c, global_t);
+  return p + (n / l - kZ) * radius;
+}
+
+double global_of(const SurfaceCurve& c, size_t k, double x) {
+  return c.breaks[k] + x * (c.breaks[k + 1] - c.breaks[k]);
+}
+
+}  // namespace
+
+Vec3 tip_point(const SurfaceCurve& c, double radius, double t) {
+  const auto [k, x] = locate(c, t);
+  return tip_local(c, radius, k, x, t);
+}
+
+double tip_chord_bound(const Bezier& point, const Bezier* normal, double radius, double t0, double t1) {
+  const Bezier p = subcurve(point, t0, t1);
+  double m2 = second_derivative_bound(p);
+  if (radius > 0 && normal) {
+    const Bezier n = subcurve(*normal, t0, t1);
+    const double s = min_norm_bound(n);
+    if (!(s > 0)) return kInf;
+    const double n1 = derivative_bound(n, 1) / s, n2 = derivative_bound(n, 2) / s;
+    m2 += radius * std::hypot(n2 + 2 * n1 * n1, n1 * n1);
+  }
+  return m2 / 8;
+}
+
+TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptions& opt) {
+  TipPolyline out;
+  if (radius == 0 || c.normals.empty()) {
+    // Exact pieces: the curve flattener's proven bound.
+    out.bound = flatten_pieces(c.points, opt, [&](const FlatVertex& v) {
+      out.points.push_back(v.point);
+      out.params.push_back(global_of(c, v.piece, v.t));
+    });
+    return out;
+  }
+  const double tol = opt.tolerance;
+  // Evaluation of the tip adds a unit normal times r to the point.
+  const double margin = check_tolerance(tol, opt.decimals, 3, magnitude(c) + radius).margin;
+  Vec3 Ar = quantize(tip_local(c, radius, 0, 0, 0), opt.decimals);
+  out.points.push_back(Ar);
+  out.params.push_back(0);
+  for (size_t k = 0; k < c.points.size(); ++k) {
+    const Bezier& P = c.points[k];
+    const Bezier* N = &c.normals[k];
+    Vec3 A = tip_local(c, radius, k, 0, c.breaks[k]);
+    double dispA = dist(Ar, A);  // includes the float gap at a joint
+    double t0 = 0, dt = 0.25;
+    while (t0 < 1) {
+      // Longest step whose bound fits: the bound shrinks like dt^2.
+      double lo = 0, hi = kInf, best_t1 = t0, best_dev = 0, best_disp = 0;
+      Vec3 bestB, bestBr;
+      bool found = false;
+      for (int iter = 0; iter < 200; ++iter) {
+        const bool last = dt >= 1 - t0;
+        if (last) dt = 1 - t0;
+        const double t1 = last ? 1.0 : t0 + dt;
+        const double dev = tip_chord_bound(P, N, radius, t0, t1);
+        double budget = -1, dispB = 0;
+        Vec3 B, Br;
+        if (std::isfinite(dev)) {
+          B = tip_local(c, radius, k, t1, global_of(c, k, t1));
+          Br = quantize(B, opt.decimals);
+          dispB = dist(Br, B);
+          budget = tol - margin - std::max(dispA, dispB);
+        }
+        if (budget > 0 && dev <= budget) {
+          found = true;
+          lo = dt, best_t1 = t1, best_dev = dev, best_disp = std::max(dispA, dispB), bestB = B, bestBr = Br;
+          const double ratio = dev / budget;
+          if (last || ratio >= 0.9 || lo >= 0.97 * hi) break;
+          double nd = dt * std::min(ratio > 1e-12 ? std::sqrt(0.95 / ratio) : 4.0, 4.0);
+          if (nd >= hi) nd = 0.5 * (lo + hi);
+          dt = nd;
+        } else {
+          hi = dt;
+          if (found && lo >= 0.97 * hi) break;
+          const double g = budget > 0 && std::isfinite(dev) ? std::sqrt(0.95 * budget / dev) : 0.5;
+          double nd = dt * std::clamp(g, 0.05, 0.9);
+          if (nd <= lo) nd = 0.5 * (lo + hi);
+          dt = nd;
+        }
+        if (!found && dt < 1e-13) normal_undefined(c, global_of(c, k, t0));
+      }
+      if (!found) normal_undefined(c, global_of(c, k, t0));
+      out.bound = std::max(out.bound, best_dev + best_disp);
+      out.points.push_back(bestBr);
+      out.params.push_back(global_of(c, k, best_t1));
+      t0 = best_t1;
+      A = bestB;
+      Ar = bestBr;
+      dispA = dist(Ar, A);
+      dt = std::min(2 * lo, 1.0);
+    }
+  }
+  out.params.back() = 1;
+  return out;
+}
+
+namespace {
+
+template <class F>
+double golden_min(double a, double b, F f, int iters) {
+  const double g = 0.3819660112501051;
+  double x1 = a + g * (b - a), x2 = b - g * (b - a);
+  double f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < iters; ++i) {
+    if (f1 < f2) {
+      b = x2, x2 = x1, f2 = f1, x1 = a + g * (b - a), f1 = f(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2, x2 = b - g * (b - a), f2 = f(x2);
+    }
+  }
+  return std::min({f1, f2, f(a), f(b)});
+}
+
+}  // namespace
+
+Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p) {
+  Deviation d;
+  const auto& V = p.points;
+  const auto& T = p.params;
+  if (V.size() < 2) return d;
+  auto tip = [&](double t) { return tip_point(c, radius, std::clamp(t, 0.0, 1.0)); };
+  auto dist_poly = [&](const Vec3& x, size_t i) {  // to segments i-1 .. i+1
+    double m = kInf;
+    for (size_t j = i > 0 ? i - 1 : 0; j <= i + 1 && j + 1 < V.size(); ++j) m = std::min(m, dist_to_segment(x, V[j], V[j + 1]));
+    return m;
+  };
+  constexpr int kSamples = 8;
+  for (size_t i = 0; i + 1 < V.size(); ++i) {
+    const double a = T[i], b = T[i + 1];
+    // Curve -> polyline: the curve between the vertices, worst refined.
+    double best = -1, bt = a;
+    for (int s = 0; s <= kSamples; ++s) {
+      const double t = a + (b - a) * s / kSamples;
+      const double e = dist_poly(tip(t), i);
+      if (e > best) best = e, bt = t;
+    }
+    const double h = (b - a) / kSamples;
+    best = std::max(best, -golden_min(std::max(a, bt - h), std::min(b, bt + h),
+                                      [&](double t) { return -dist_poly(tip(t), i); }, 30));
+    d.curve_to_path = std::max(d.curve_to_path, best);
+    // Polyline -> curve: chord points to their nearest curve point, searched
+    // over the vertices' parameter range widened by half a segment each side.
+    const double lo = std::max(0.0, a - 0.5 * (b - a)), hi = std::min(1.0, b + 0.5 * (b - a));
+    for (int s = 1; s < kSamples; ++s) {
+      const Vec3 x = lerp(V[i], V[i + 1], double(s) / kSamples);
+      // Near-zero distances grow linearly off the minimum, so the search
+      // must pin the parameter down to about 1e-10 of the window.
+      const double e = golden_min(lo, hi, [&](double t) { return dist(tip(t), x); }, 50);
+      d.path_to_curve = std::max(d.path_to_curve, e);
+    }
+    d.path_to_curve = std::max(d.path_to_curve, dist(V[i], tip(a)));
+  }
+  d.path_to_curve = std::max(d.path_to_curve, dist(V.back(), tip(1)));
+  return d;
+}
+
+}  // namespace bezcam

@@ -1,0 +1,222 @@
+#include "bezcam/gcode/writer.hpp"
+#include "bezcam/version.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "bezcam/gcode/number_format.hpp"
+#include "bezcam/limits.hpp"
+
+
+namespace bezcam {
+
+namespace {
+
+std::string replace_all(std::string s, const std::string& from, const std::string& to) {
+  for (size_t i = s.find(from); i != std::string::npos; i = s.find(from, i + to.size())) s.replace(i, from.size(), to);
+  return s;
+}
+
+// Comment text safe for every controller: no nested parentheses, printable
+// ASCII only.
+std::string comment(const std::string& text) {
+  std::string s;
+  // A long id must not make a line longer than a reader takes (limits.hpp).
+  const bool cut = text.size() > kMaxCommentBytes;
+  for (unsigned char ch : cut ? text.substr(0, kMaxCommentBytes - 3) + "..." : text) {
+    if (ch == '(') s += '[';
+    else if (ch == ')') s += ']';
+    else if (ch < 32 || ch > 126) s += '?';
+    else s += static_cast<char>(ch);
+  }
+  return "(" + s + ")";
+}
+
+class Writer {
+ public:
+  Writer(const Program& p, const MachineProfile& m) : p_(p), m_(m) {}
+
+  std::string run() {
+    for (const auto& h : m_.header) raw(subst(h));
+    const char* u = to_string(p_.units);
+    line(comment(std::string("bezcam ") + kVersion + ": " + p_.job_name + ", machine " + m_.name +
+                 ", output " + to_string(p_.output)));
+    line(comment("tolerance " + format_number(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
+                 measured_text(p_.max_measured, p_.tolerance, [](double v) { return format_number(v, 6); }) + " " +
+                 u + ", proven bound " + format_number(p_.max_bound, 6) + " " + u + ", rounding included"));
+    for (const auto& n : p_.notes) line(comment(n));
+    line(std::string(p_.units == Units::mm ? "G21" : "G20") + " G90 G17");
+    for (const Move& mv : p_.moves) move(mv);
+    for (const auto& f : m_.footer) {
+      if (!f.empty() && f[0] == '%') raw(subst(f));
+      else line(subst(f));
+    }
+    return out_;
+  }
+
+ private:
+  std::string subst(const std::string& s) const {
+    return replace_all(s, "{safe_z}", format_number(p_.safe_z, p_.decimals));
+  }
+  void raw(const std::string& s) { out_ += s + "\n"; }
+  void line(const std::string& s) {
+    if (m_.line_numbers) {
+      out_ += "N" + std::to_string(n_) + " ";
+      n_ += m_.line_step;
+    }
+    out_ += s + "\n";
+  }
+  std::string num(double v) const { return format_number(v, p_.decimals); }
+
+  // Axis words whose printed value changes; updates the modal state.
+  std::string axes(const Vec3& to, unsigned mask) {
+    std::string s;
+    static const char names[3] = {'X', 'Y', 'Z'};
+    for (int a = 0; a < 3; ++a) {
+      if (!(mask & (1u << a))) continue;
+      const std::string v = num(to[a]);
+      if (v != axis_[a]) {
+        s += std::string(s.empty() ? "" : " ") + names[a] + v;
+        axis_[a] = v;
+      }
+    }
+    return s;
+  }
+  std::string motion(const std::string& word) {
+    if (word == motion_) return "";
+    motion_ = word;
+    return word;
+  }
+  std::string feed(double f) {
+    const std::string v = format_number(f, m_.feed_decimals);
+    if (v == feed_) return "";
+    feed_ = v;
+    return "F" + v;
+  }
+  static std::string join(std::initializer_list<std::string> parts) {
+    std::string s;
+    for (const auto& x : parts)
+      if (!x.empty()) s += (s.empty() ? "" : " ") + x;
+    return s;
+  }
+
+  void move(const Move& mv) {
+    switch (mv.kind) {
+      case MoveKind::comment: line(comment(mv.text)); break;
+      case MoveKind::tool_change: line(replace_all(m_.tool_change, "{tool}", std::to_string(mv.tool))); break;
+      case MoveKind::spindle_on: line(replace_all(m_.spindle_on, "{rpm}", std::to_string(std::llround(mv.rpm)))); break;
+      case MoveKind::spindle_off: line(m_.spindle_off); break;
+      case MoveKind::rapid:
+      case MoveKind::linear: {
+        const std::string a = axes(mv.to, mv.axes);
+        for (int k = 0; k < 3; ++k)
+          if (mv.axes & (1u << k)) pos_[k] = mv.to[k];
+        if (a.empty()) return;  // no motion once printed: nothing to say
+        const bool rapid = mv.kind == MoveKind::rapid;
+        const std::string g = motion(rapid ? m_.word_rapid : m_.word_feed);
+        line(join({g, a, rapid ? "" : feed(mv.feed)}));
+        break;
+      }
+      case MoveKind::arc_cw:
+      case MoveKind::arc_ccw: arc(mv); break;
+      case MoveKind::nurbs:
+        if (m_.nurbs == NurbsDialect::fanuc) fanuc_block(mv);
+        else if (m_.nurbs == NurbsDialect::linuxcnc) g52_block(mv);
+        else throw std::logic_error("a NURBS move for a machine without a NURBS dialect");
+        break;
+      case MoveKind::bezier:
+        if (m_.nurbs != NurbsDialect::linuxcnc) throw std::logic_error("a G5/G5.1 move for a machine without them");
+        g5(mv);
+        break;
+    }
+  }
+
+  // Every digit, as the seeds' listing prints NURBS blocks (never "-0.000").
+  static std::string fixed(double v, int decimals) {
+    std::string s = format_number(v, decimals);
+    const size_t dot = s.find('.');
+    s.append(static_cast<size_t>(decimals) - (s.size() - dot - 1), '0');
+    return s;
+  }
+  void arrived(const Vec3& to) {
+    for (int a = 0; a < 3; ++a) axis_[a] = num(to[a]);
+    pos_ = to;
+  }
+
+  // G02/G03 in G17: both end words always (some controllers require them),
+  // the centre as I and J relative to the start (the active plane's words
+  // only: some controllers reject K in G17), Z only if it changes (which
+  // bezcam's arcs never do). The word is always printed.
+  void arc(const Move& mv) {
+    const Vec3 from = pos_;
+    const std::string g = mv.kind == MoveKind::arc_cw ? m_.word_cw : m_.word_ccw;
+    axis_[0].clear();
+    axis_[1].clear();
+    const std::string a = axes(mv.to, mv.axes);
+    line(join({g, a, "I" + num(mv.center.x - from.x), "J" + num(mv.center.y - from.y), feed(mv.feed)}));
+    motion_ = g;
+    for (int k = 0; k < 3; ++k)
+      if (mv.axes & (1u << k)) pos_[k] = mv.to[k];
+  }
+
+  // Fanuc-style block (gcode-dialects.md): start word, P rank and the first
+  // control point (the current position) with its knot and weight, one
+  // K X Y Z R block per further point, then the remaining knots alone.
+  void fanuc_block(const Move& mv) {
+    const bool fx = m_.nurbs_fixed_decimals;
+    auto coord = [&](double v) { return fx ? fixed(v, p_.decimals) : num(v); };
+    auto knot = [&](double k) {
+      return "K" + (fx ? fixed(k, m_.knot_decimals) : format_number(k, m_.knot_decimals));
+    };
+    auto point = [&](size_t i) {
+      const Vec3& p = mv.ctrl[i];
+      const double w = mv.weights.empty() ? 1.0 : mv.weights[i];
+      return join({knot(mv.knots[i]), "X" + coord(p.x), "Y" + coord(p.y), "Z" + coord(p.z),
+                   "R" + (fx ? fixed(w, m_.weight_decimals) : format_number(w, m_.weight_decimals))});
+    };
+    line(join({m_.nurbs_start_word, "P" + std::to_string(mv.order), point(0), feed(mv.feed)}));
+    for (size_t i = 1; i < mv.ctrl.size(); ++i) line(point(i));
+    for (size_t j = mv.ctrl.size(); j < mv.knots.size(); ++j) line(knot(mv.knots[j]));
+    motion_.clear();  // the next G00/G01/G02/G03 must say so: it ends the mode
+    arrived(mv.ctrl.back());
+  }
+
+  // LinuxCNC G5.2 ... G5.3: the current position is the first point; its
+  // weight and the order on the G5.2 line; X Y P per further point (P
+  // always: older versions do not default it to 1).
+  void g52_block(const Move& mv) {
+    auto w = [&](size_t i) { return "P" + format_number(mv.weights.empty() ? 1.0 : mv.weights[i], m_.weight_decimals); };
+    line(join({"G5.2", w(0), "L" + std::to_string(mv.order), feed(mv.feed)}));
+    for (size_t i = 1; i < mv.ctrl.size(); ++i)
+      line(join({"X" + num(mv.ctrl[i].x), "Y" + num(mv.ctrl[i].y), w(i)}));
+    line("G5.3");
+    motion_.clear();
+    arrived({mv.ctrl.back().x, mv.ctrl.back().y, pos_.z});
+  }
+
+  // LinuxCNC G5 (cubic: I J = P1 - P0, P Q = P2 - P3) and G5.1 (quadratic:
+  // I J = P1 - P0), X and Y always, Z never.
+  void g5(const Move& mv) {
+    const auto& c = mv.ctrl;
+    const Vec3& to = c.back();
+    std::string s = std::string(c.size() == 4 ? "G5" : "G5.1") + " X" + num(to.x) + " Y" + num(to.y) + " I" +
+                    num(c[1].x - c[0].x) + " J" + num(c[1].y - c[0].y);
+    if (c.size() == 4) s += " P" + num(c[2].x - c[3].x) + " Q" + num(c[2].y - c[3].y);
+    line(join({s, feed(mv.feed)}));
+    motion_.clear();
+    arrived({to.x, to.y, pos_.z});
+  }
+
+  const Program& p_;
+  const MachineProfile& m_;
+  std::string out_;
+  int n_ = m_.line_start;
+  std::string axis_[3], motion_, feed_;
+  Vec3 pos_;  // current position as printed
+};
+
+}  // namespace
+
+std::string write_gcode(const Program& p, const MachineProfile& m) { return Writer(p, m).run(); }
+
+}  // namespace bezcam

@@ -1,0 +1,158 @@
+// Jobs from in-memory curves: the same invariants as the JSON reader's.
+#include "bezcam/job/job_builder.hpp"
+
+#include <cmath>
+
+#include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
+
+namespace bezcam {
+
+namespace {
+
+// The checks the JSON reader makes of a number that must be positive.
+double positive(double v, const std::string& source, const std::string& key) {
+  if (!std::isfinite(v) || v <= 0)
+    throw InputError("job.not-positive", source + ": " + key, "expected a finite number > 0, found " + fmt_num(v));
+  return v;
+}
+
+double finite(double v, const std::string& source, const std::string& key) {
+  if (!std::isfinite(v)) throw InputError("job.not-finite", source + ": " + key, "expected a finite number, found " + fmt_num(v));
+  return v;
+}
+
+void check_params(const JobParams& p, const std::string& source, const std::string& path) {
+  const std::string at = path.empty() ? "" : path + ".";
+  if (p.feed) positive(*p.feed, source, at + "feed");
+  if (p.plunge_feed) positive(*p.plunge_feed, source, at + "plunge_feed");
+  if (p.spindle_rpm && (!std::isfinite(*p.spindle_rpm) || *p.spindle_rpm < 0))
+    throw InputError("job.not-positive", source + ": " + at + "spindle_rpm",
+                     "expected a finite number >= 0, found " + fmt_num(*p.spindle_rpm));
+  if (p.safe_z) finite(*p.safe_z, source, at + "safe_z");
+  if (p.cut_z) finite(*p.cut_z, source, at + "cut_z");
+  if (p.tool_radius && (!std::isfinite(*p.tool_radius) || *p.tool_radius < 0))
+    throw InputError("job.not-positive", source + ": " + at + "tool_radius",
+                     "expected a finite number >= 0, found " + fmt_num(*p.tool_radius));
+  if (p.tool && *p.tool < 0)
+    throw InputError("job.not-positive", source + ": " + at + "tool", "expected a tool number >= 0, found " + std::to_string(*p.tool));
+}
+
+}  // namespace
+
+JobBuilder::JobBuilder(std::string name) { job_.source = std::move(name); }
+
+JobBuilder& JobBuilder::units(Units u) {
+  // The default tolerance is 0.01 mm in the job's units, as in a file.
+  if (job_.tolerance == 0.01 / mm_per_unit(job_.units)) job_.tolerance = 0.01 / mm_per_unit(u);
+  job_.units = u;
+  return *this;
+}
+JobBuilder& JobBuilder::tolerance(double t) {
+  job_.tolerance = positive(t, job_.source, "tolerance");
+  return *this;
+}
+JobBuilder& JobBuilder::machine(std::string name) {
+  job_.machine = std::move(name);
+  return *this;
+}
+JobBuilder& JobBuilder::feed(double v) {
+  job_.params.feed = v;
+  return *this;
+}
+JobBuilder& JobBuilder::plunge_feed(double v) {
+  job_.params.plunge_feed = v;
+  return *this;
+}
+JobBuilder& JobBuilder::safe_z(double v) {
+  job_.params.safe_z = v;
+  return *this;
+}
+JobBuilder& JobBuilder::cut_z(double v) {
+  job_.params.cut_z = v;
+  return *this;
+}
+JobBuilder& JobBuilder::spindle_rpm(double v) {
+  job_.params.spindle_rpm = v;
+  return *this;
+}
+JobBuilder& JobBuilder::tool(int t) {
+  job_.params.tool = t;
+  return *this;
+}
+JobBuilder& JobBuilder::params(const JobParams& p) {
+  job_.params = p.over(job_.params);
+  return *this;
+}
+
+JobBuilder& JobBuilder::entity(std::string id, std::string type, CurveGeometry g, JobParams params) {
+  if (job_.entities.size() >= kMaxEntities)
+    throw InputError("limit.entities", job_.source + ": entities",
+                     "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md)");
+  Entity e;
+  e.id = std::move(id);
+  e.index = job_.entities.size();
+  e.type = std::move(type);
+  e.params = std::move(params);
+  e.curve = std::move(g);
+  job_.entities.push_back(std::move(e));
+  return *this;
+}
+
+JobBuilder& JobBuilder::bezier(std::string id, Bezier curve, JobParams params) {
+  CurveSegment seg;
+  seg.kind = "bezier";
+  seg.degree = curve.degree();
+  seg.rational = curve.rational();
+  seg.piece_count = 1;
+  const int dim = curve.dim;
+  return entity(std::move(id), "bezier", make_single(seg, {std::move(curve)}, dim), std::move(params));
+}
+
+JobBuilder& JobBuilder::nurbs(std::string id, NurbsCurve curve, JobParams params) {
+  std::vector<Bezier> pieces = to_bezier(curve);
+  CurveSegment seg;
+  seg.kind = "bspline";
+  seg.degree = curve.degree;
+  seg.rational = !curve.weights.empty();
+  seg.piece_count = pieces.size();
+  const int dim = curve.dim;
+  seg.nurbs = std::make_shared<const NurbsCurve>(std::move(curve));
+  return entity(std::move(id), "bspline", make_single(seg, std::move(pieces), dim), std::move(params));
+}
+
+JobBuilder& JobBuilder::path(std::string id, std::vector<Bezier> segments, bool closed, JobParams params) {
+  if (segments.empty())
+    throw InputError("job.missing", job_.source + ": entities[" + std::to_string(job_.entities.size()) + "].segments",
+                     "a path needs at least one segment");
+  std::vector<CurveSegment> segs;
+  int dim = 2;
+  for (size_t i = 0; i < segments.size(); ++i) {
+    CurveSegment s;
+    s.kind = "bezier";
+    s.degree = segments[i].degree();
+    s.rational = segments[i].rational();
+    s.first_piece = i;
+    s.piece_count = 1;
+    dim = std::max(dim, segments[i].dim);
+    segs.push_back(std::move(s));
+  }
+  const std::string at = job_.source + ": entities[" + std::to_string(job_.entities.size()) + "]";
+  CurveGeometry g;
+  try {
+    g = make_path(std::move(segs), std::move(segments), closed, dim);
+  } catch (const InputError& e) {
+    throw InputError(e.id(), e.where().empty() ? at : at + "." + e.where(), e.message());
+  }
+  return entity(std::move(id), "path", std::move(g), std::move(params));
+}
+
+Job JobBuilder::build() const {
+  if (job_.entities.empty())
+    throw InputError("job.missing", job_.source + ": entities", "expected at least one entity");
+  check_params(job_.params, job_.source, "job");
+  for (const Entity& e : job_.entities) check_params(e.params, job_.source, e.json_path());
+  return job_;
+}
+
+}  // namespace bezcam

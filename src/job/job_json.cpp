@@ -1,0 +1,362 @@
+// The only kernel file family that knows JSON: reads a version-1 curve file
+// (shared/spec/curve-file.md) into a validated Job.
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "bezcam/limits.hpp"
+#include "job_json_detail.hpp"
+#include "bezcam/job/job_json.hpp"
+
+namespace bezcam {
+
+namespace detail {
+
+std::string describe(const json& v) {
+  switch (v.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return v.get<bool>() ? "true" : "false";
+    case json::value_t::string: {
+      std::string s = v.get<std::string>();
+      if (s.size() > 40) s = s.substr(0, 40) + "...";
+      return "the string \"" + s + "\"";
+    }
+    case json::value_t::array:
+      return v.empty() ? "an empty array"
+                       : "an array of " + std::to_string(v.size()) + (v.size() == 1 ? " element" : " elements");
+    case json::value_t::object: return "an object";
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float: return fmt_num(v.get<double>());
+    default: return "a value of another kind";
+  }
+}
+
+void JsonCtx::fail(const std::string& path, const std::string& id, const std::string& what) const {
+  throw InputError(id, source + ": " + path, what);
+}
+void JsonCtx::expected(const std::string& path, const std::string& what, const json& found) const {
+  fail(path, "job.type", "expected " + what + ", found " + describe(found));
+}
+void JsonCtx::warn(const std::string& path, const std::string& what) const {
+  if (warnings) warnings->push_back(source + ": " + path + ": " + what);
+}
+void JsonCtx::check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> known) const {
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || it.key() == k;
+    if (!ok) warn(path.empty() ? it.key() : path + "." + it.key(), "unknown key, ignored");
+  }
+}
+const json& JsonCtx::require(const json& obj, const std::string& path, const char* key) const {
+  auto it = obj.find(key);
+  if (it == obj.end())
+    fail(path.empty() ? key : path + "." + key, "job.missing",
+         std::string("the required key \"") + key + "\" is missing; add it");
+  return *it;
+}
+double JsonCtx::number(const json& v, const std::string& path) const {
+  if (!v.is_number()) expected(path, "a number", v);
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) fail(path, "job.not-finite", "expected a finite number, found " + fmt_num(d));
+  return d;
+}
+double JsonCtx::positive(const json& v, const std::string& path) const {
+  const double d = number(v, path);
+  if (!(d > 0)) fail(path, "job.not-positive", "expected a number > 0, found " + fmt_num(d));
+  return d;
+}
+int JsonCtx::integer(const json& v, const std::string& path) const {
+  if (!v.is_number_integer() && !(v.is_number_float() && std::nearbyint(v.get<double>()) == v.get<double>()))
+    expected(path, "an integer", v);
+  const double d = v.get<double>();
+  if (std::abs(d) > 1e9) fail(path, "job.range", "expected an integer of at most 1e9, found " + fmt_num(d));
+  return static_cast<int>(d);
+}
+std::string JsonCtx::string(const json& v, const std::string& path) const {
+  if (!v.is_string()) expected(path, "a string", v);
+  return v.get<std::string>();
+}
+bool JsonCtx::boolean(const json& v, const std::string& path) const {
+  if (!v.is_boolean()) expected(path, "true or false", v);
+  return v.get<bool>();
+}
+const json& JsonCtx::array(const json& v, const std::string& path, size_t min_size) const {
+  const std::string at_least =
+      "an array of at least " + std::to_string(min_size) + (min_size == 1 ? " element" : " elements");
+  if (!v.is_array()) expected(path, min_size ? at_least : "an array", v);
+  if (v.size() < min_size) expected(path, at_least, v);
+  return v;
+}
+Vec3 JsonCtx::point(const json& v, const std::string& path, int* dim) const {
+  if (!v.is_array() || (v.size() != 2 && v.size() != 3)) expected(path, "a point [x, y] or [x, y, z]", v);
+  const int d = static_cast<int>(v.size());
+  if (*dim == 0) *dim = d;
+  if (d != *dim)
+    fail(path, "job.dimension",
+         "expected a " + std::to_string(*dim) + "D point like the entity's first point, found a " + std::to_string(d) +
+             "D point");
+  Vec3 p;
+  for (int k = 0; k < d; ++k) p[k] = number(v[k], path + "[" + std::to_string(k) + "]");
+  return p;
+}
+std::vector<Vec3> JsonCtx::points(const json& v, const std::string& path, int* dim, size_t min_size) const {
+  array(v, path, min_size);
+  count_points(v.size(), path);
+  std::vector<Vec3> out;
+  out.reserve(v.size());
+  for (size_t i = 0; i < v.size(); ++i) out.push_back(point(v[i], path + "[" + std::to_string(i) + "]", dim));
+  return out;
+}
+std::vector<double> JsonCtx::numbers(const json& v, const std::string& path) const {
+  array(v, path);
+  std::vector<double> out;
+  out.reserve(v.size());
+  for (size_t i = 0; i < v.size(); ++i) out.push_back(number(v[i], path + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+void JsonCtx::count_points(std::size_t n, const std::string& path) const {
+  entity_points += n;
+  if (entity_points > kMaxEntityPoints)
+    fail(path, "limit.points",
+         "expected at most " + std::to_string(kMaxEntityPoints) + " points in one entity (docs/limits.md), found " +
+             (entity_points == n ? std::to_string(n) : std::to_string(entity_points) + " with these") +
+             "; split the geometry into several entities");
+}
+void JsonCtx::count_bezier_points(std::size_t n, const std::string& path) const {
+  job_points += n;
+  if (job_points > kMaxJobPoints)
+    fail(path, "limit.points",
+         "the job's curves and patches need " + std::to_string(job_points) +
+             " control points in their exact Bézier form with this one, more than the limit of " +
+             std::to_string(kMaxJobPoints) + " (docs/limits.md); split the job into several files");
+}
+
+CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::string& path, int* dim,
+                                std::vector<Bezier>& pieces, bool in_path) {
+  if (!obj.is_object()) ctx.expected(path, "a curve object", obj);
+  const std::string type = ctx.string(ctx.require(obj, path, "type"), path + ".type");
+  CurveSegment seg;
+  seg.kind = type;
+  seg.first_piece = pieces.size();
+  if (type == "bezier") {
+    if (in_path) ctx.check_keys(obj, path, {"type", "points", "weights"});
+    auto pts = ctx.points(ctx.require(obj, path, "points"), path + ".points", dim, 2);
+    std::vector<double> w;
+    if (obj.contains("weights")) w = ctx.numbers(obj["weights"], path + ".weights");
+    ctx.count_bezier_points(pts.size(), path + ".points");
+    pieces.push_back(ctx.at(path, [&] { return Bezier::make(std::move(pts), std::move(w), *dim); }));
+    seg.degree = pieces.back().degree();
+    seg.rational = pieces.back().rational();
+  } else if (type == "bspline") {
+    if (in_path) ctx.check_keys(obj, path, {"type", "degree", "points", "knots", "weights"});
+    parse_bspline_segment(ctx, obj, path, dim, pieces, seg);
+  } else {
+    ctx.fail(path + ".type", "job.segment-type",
+             std::string("expected \"bezier\" or \"bspline\"") + (in_path ? " in a path" : "") + ", found " +
+                 describe(obj["type"]));
+  }
+  seg.piece_count = pieces.size() - seg.first_piece;
+  return seg;
+}
+
+namespace {
+
+JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& path, bool entity_level) {
+  JobParams p;
+  auto num = [&](const char* key, std::optional<double>& out, bool must_be_positive) {
+    auto it = obj.find(key);
+    if (it == obj.end()) return;
+    const std::string kp = path.empty() ? key : path + "." + key;
+    out = must_be_positive ? ctx.positive(*it, kp) : ctx.number(*it, kp);
+  };
+  num("feed", p.feed, true);
+  num("plunge_feed", p.plunge_feed, true);
+  num("safe_z", p.safe_z, false);
+  num("cut_z", p.cut_z, false);
+  num("spindle_rpm", p.spindle_rpm, false);
+  num("tool_radius", p.tool_radius, false);
+  if (p.spindle_rpm && *p.spindle_rpm < 0)
+    ctx.fail(path + ".spindle_rpm", "job.range", "expected a speed >= 0, found " + fmt_num(*p.spindle_rpm));
+  if (p.tool_radius && *p.tool_radius < 0)
+    ctx.fail(path + ".tool_radius", "job.range", "expected a radius >= 0, found " + fmt_num(*p.tool_radius));
+  if (auto it = obj.find("gouge"); it != obj.end()) {
+    const std::string kp = path.empty() ? "gouge" : path + ".gouge";
+    const std::string g = ctx.string(*it, kp);
+    if (g == "refuse") p.gouge = GougePolicy::refuse;
+    else if (g == "skip") p.gouge = GougePolicy::skip;
+    else ctx.fail(kp, "job.gouge", "expected \"refuse\" or \"skip\", found " + describe(*it));
+  }
+  if (auto it = obj.find("tool"); it != obj.end()) {
+    p.tool = ctx.integer(*it, path + ".tool");
+    if (*p.tool < 0) ctx.fail(path + ".tool", "job.range", "expected a tool number >= 0, found " + std::to_string(*p.tool));
+  }
+  if (!entity_level)
+    ctx.check_keys(obj, path, {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius", "gouge"});
+  if (p.safe_z && p.cut_z && *p.cut_z >= *p.safe_z)
+    ctx.fail(path + ".cut_z", "job.range",
+             "expected cut_z below safe_z (" + fmt_num(*p.safe_z) + "), found " + fmt_num(*p.cut_z));
+  return p;
+}
+
+Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
+  const std::string path = "entities[" + std::to_string(index) + "]";
+  if (!obj.is_object()) ctx.expected(path, "an entity object", obj);
+  Entity e;
+  e.index = index;
+  ctx.entity_points = 0;
+  e.type = ctx.string(ctx.require(obj, path, "type"), path + ".type");
+  if (auto it = obj.find("id"); it != obj.end()) e.id = ctx.string(*it, path + ".id");
+  e.params = parse_params(ctx, obj, path, true);
+  static const std::initializer_list<const char*> param_keys = {"feed", "plunge_feed", "safe_z", "cut_z",
+                                                                "spindle_rpm", "tool", "tool_radius", "gouge"};
+  auto keys = [&](std::initializer_list<const char*> own) {
+    std::vector<const char*> all(own);
+    all.insert(all.end(), param_keys.begin(), param_keys.end());
+    all.push_back("id");
+    all.push_back("type");
+    for (auto it = obj.begin(); it != obj.end(); ++it)
+      if (std::find_if(all.begin(), all.end(), [&](const char* k) { return it.key() == k; }) == all.end())
+        ctx.warn(path + "." + it.key(), "unknown key, ignored");
+  };
+  int dim = 0;
+  if (e.type == "bezier" || e.type == "bspline") {
+    keys({"points", "weights", "degree", "knots"});
+    std::vector<Bezier> pieces;
+    CurveSegment seg = parse_curve_object(ctx, obj, path, &dim, pieces, false);
+    e.curve = make_single(seg, std::move(pieces), dim);
+  } else if (e.type == "path") {
+    keys({"segments", "closed"});
+    const json& segs = ctx.array(ctx.require(obj, path, "segments"), path + ".segments", 1);
+    std::vector<Bezier> pieces;
+    std::vector<CurveSegment> ss;
+    for (size_t i = 0; i < segs.size(); ++i)
+      ss.push_back(parse_curve_object(ctx, segs[i], path + ".segments[" + std::to_string(i) + "]", &dim, pieces, true));
+    bool closed = false;
+    if (obj.contains("closed")) closed = ctx.boolean(obj["closed"], path + ".closed");
+    e.curve = ctx.at(path, [&] { return make_path(std::move(ss), std::move(pieces), closed, dim); });
+  } else if (e.type == "interpolate") {
+    keys({"through", "method", "closed"});
+    parse_interpolate_entity(ctx, obj, path, e);
+  } else if (e.type == "bezier_patch") {  // surfaces: job_json_surfaces.cpp
+    keys({"points", "weights", "toolpath"});
+    parse_bezier_patch_entity(ctx, obj, path, e);
+  } else if (e.type == "coons_patch") {
+    keys({"boundaries", "blend", "toolpath"});
+    parse_coons_patch_entity(ctx, obj, path, e);
+  } else if (e.type == "curve_on_surface") {
+    keys({"surface", "curve"});
+    parse_curve_on_surface_entity(ctx, obj, path, e);
+  } else {
+    ctx.fail(path + ".type", "job.entity-type",
+             "expected one of \"bezier\", \"bspline\", \"path\", \"interpolate\", \"bezier_patch\", "
+             "\"coons_patch\", \"curve_on_surface\", found " + describe(obj["type"]));
+  }
+  return e;
+}
+
+}  // namespace
+}  // namespace detail
+
+JobParams JobParams::over(const JobParams& base) const {
+  JobParams r = base;
+  if (feed) r.feed = feed;
+  if (plunge_feed) r.plunge_feed = plunge_feed;
+  if (safe_z) r.safe_z = safe_z;
+  if (cut_z) r.cut_z = cut_z;
+  if (spindle_rpm) r.spindle_rpm = spindle_rpm;
+  if (tool_radius) r.tool_radius = tool_radius;
+  if (tool) r.tool = tool;
+  if (gouge) r.gouge = gouge;
+  return r;
+}
+
+Job parse_job(std::string_view text, const std::string& source) {
+  using detail::json;
+  Job job;
+  job.source = source;
+  detail::JsonCtx ctx{source, &job.warnings};
+  if (text.size() > kMaxJobBytes)
+    throw InputError("limit.file-size", source,
+                     "the job file is " + std::to_string(text.size() >> 20) + " MiB, more than bezcam reads (" +
+                         std::to_string(kMaxJobBytes >> 20) + " MiB, docs/limits.md); split it into smaller files");
+  json doc;
+  try {
+    doc = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& e) {
+    // Turn the byte offset into line and column.
+    size_t line = 1, col = 1;
+    for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') ++line, col = 1;
+      else ++col;
+    }
+    // nlohmann's text repeats the line and column: keep what follows them.
+    std::string what = e.what();
+    if (auto p = what.find("column "); p != std::string::npos && what.find(": ", p) != std::string::npos)
+      what = what.substr(what.find(": ", p) + 2);
+    std::string hint;
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) hint = "; the file is empty";
+    else if (what.find("unexpected end of input") != std::string::npos)
+      hint = "; the file ends too early (is a closing bracket or brace missing?)";
+    else if (what.find("unexpected") != std::string::npos && what.find("literal") != std::string::npos &&
+             (what.find("expected '}'") != std::string::npos || what.find("expected ']'") != std::string::npos))
+      hint = "; is a comma missing before it?";
+    throw InputError("job.syntax", source + ": line " + std::to_string(line) + ", column " + std::to_string(col),
+                     "this is not valid JSON: " + what + hint);
+  } catch (const json::out_of_range& e) {
+    // The only range error while parsing: a number too large for a double
+    // (JSON has no NaN or infinity, so this is how non-finite values come).
+    std::string what = e.what(), token;
+    if (auto a = what.find('\''), b = what.rfind('\''); a != std::string::npos && b > a)
+      token = what.substr(a + 1, b - a - 1);
+    std::string where = source;
+    if (const size_t at = token.empty() ? std::string_view::npos : text.find(token); at != std::string_view::npos) {
+      size_t line = 1, col = 1;
+      for (size_t i = 0; i < at; ++i) {
+        if (text[i] == '\n') ++line, col = 1;
+        else ++col;
+      }
+      where += ": line " + std::to_string(line) + ", column " + std::to_string(col);
+    }
+    throw InputError("job.not-finite", where,
+                     "expected a finite number, found " + (token.empty() ? std::string("a number") : token) +
+                         ", which is too large for a double (about 1.8e308 at most)");
+  }
+  if (!doc.is_object()) ctx.expected("(top level)", "a JSON object", doc);
+  ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities"});
+  if (!doc.contains("bezcam"))
+    ctx.fail("bezcam", "job.missing",
+             "the file does not say its format version; add \"bezcam\": 1 at the top level (is this a bezcam job?)");
+  const json& ver = ctx.require(doc, "", "bezcam");
+  job.version = ctx.integer(ver, "bezcam");
+  if (job.version != 1)
+    ctx.fail("bezcam", "job.version", "expected format version 1, found " + std::to_string(job.version));
+  if (auto it = doc.find("units"); it != doc.end()) {
+    const std::string u = ctx.string(*it, "units");
+    if (u == "mm") job.units = Units::mm;
+    else if (u == "inch") job.units = Units::inch;
+    else ctx.fail("units", "job.units", "expected \"mm\" or \"inch\", found " + detail::describe(*it));
+  }
+  job.tolerance = 0.01 / mm_per_unit(job.units);
+  if (auto it = doc.find("tolerance"); it != doc.end()) job.tolerance = ctx.positive(*it, "tolerance");
+  if (auto it = doc.find("machine"); it != doc.end()) job.machine = ctx.string(*it, "machine");
+  if (auto it = doc.find("job"); it != doc.end()) {
+    if (!it->is_object()) ctx.expected("job", "an object", *it);
+    job.params = detail::parse_params(ctx, *it, "job", false);
+  }
+  const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
+  if (ents.size() > kMaxEntities)
+    ctx.fail("entities", "limit.entities",
+             "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md), found " +
+                 std::to_string(ents.size()) + "; split the job into several files");
+  for (size_t i = 0; i < ents.size(); ++i) job.entities.push_back(detail::parse_entity(ctx, ents[i], i));
+  detail::resolve_surface_references(ctx, ents, job);  // curve_on_surface naming a patch by id
+  return job;
+}
+
+Job load_job(const std::filesystem::path& file) {
+  return parse_job(read_bounded(file, kMaxJobBytes, "job file"), file.string());
+}
+
+}  // namespace bezcam

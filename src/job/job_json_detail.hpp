@@ -1,0 +1,80 @@
+#pragma once
+// Shared by the job_json*.cpp files: reading typed values with errors that
+// name the JSON path, expected and found. Only the kernel's job_json files
+// know JSON.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "bezcam/error.hpp"
+#include "bezcam/job/job.hpp"
+
+namespace bezcam::detail {
+
+using json = nlohmann::json;
+
+struct JsonCtx {
+  std::string source;
+  std::vector<std::string>* warnings = nullptr;
+  // Limits (bezcam/limits.hpp): points written in the entity being read,
+  // and points of the exact Bézier form of the whole job so far.
+  mutable std::size_t entity_points = 0, job_points = 0;
+
+  [[noreturn]] void fail(const std::string& path, const std::string& id, const std::string& what) const;
+  [[noreturn]] void expected(const std::string& path, const std::string& what, const json& found) const;
+  void warn(const std::string& path, const std::string& what) const;
+  /// Warns about keys of `obj` not in `known`.
+  void check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> known) const;
+
+  const json& require(const json& obj, const std::string& path, const char* key) const;
+  double number(const json& v, const std::string& path) const;
+  double positive(const json& v, const std::string& path) const;
+  int integer(const json& v, const std::string& path) const;
+  std::string string(const json& v, const std::string& path) const;
+  bool boolean(const json& v, const std::string& path) const;
+  const json& array(const json& v, const std::string& path, size_t min_size = 0) const;
+  /// A point [x, y] or [x, y, z]; *dim is set by the first point and every
+  /// later point must match it.
+  Vec3 point(const json& v, const std::string& path, int* dim) const;
+  std::vector<Vec3> points(const json& v, const std::string& path, int* dim, size_t min_size) const;
+  std::vector<double> numbers(const json& v, const std::string& path) const;
+  /// Counts `n` points written at `path` (an array of points) against
+  /// kMaxEntityPoints for the entity being read; fails naming the path.
+  void count_points(std::size_t n, const std::string& path) const;
+  /// Counts `n` control points of the exact Bézier form against
+  /// kMaxJobPoints, before that form is built; fails naming the path.
+  void count_bezier_points(std::size_t n, const std::string& path) const;
+  /// Runs f, re-throwing a kernel InputError with `path` prefixed to its place.
+  template <class F>
+  auto at(const std::string& path, F&& f) const -> decltype(f()) {
+    try {
+      return f();
+    } catch (const InputError& e) {
+      const std::string where = e.where().empty() ? path : path + "." + e.where();
+      throw InputError(e.id(), source + ": " + where, e.message());
+    }
+  }
+};
+
+/// Describes a JSON value for "found ..." in messages.
+std::string describe(const json& v);
+
+/// A curve object ({"type": "bezier" | "bspline", ...}) as a segment with
+/// its Bézier pieces, appended to `pieces`. `in_path`: objects inside a
+/// path's segments (no id allowed).
+CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::string& path, int* dim,
+                                std::vector<Bezier>& pieces, bool in_path);
+
+// Entity parsers by type (each file of the job_json family adds its own).
+void parse_bspline_segment(const JsonCtx& ctx, const json& obj, const std::string& path, int* dim,
+                           std::vector<Bezier>& pieces, CurveSegment& seg);
+void parse_interpolate_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+// Surfaces (job_json_surfaces.cpp).
+void parse_bezier_patch_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+void parse_coons_patch_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+void parse_curve_on_surface_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+/// After all entities are read: a curve_on_surface whose `surface` is a
+/// string gets the surface of the patch entity with that id.
+void resolve_surface_references(const JsonCtx& ctx, const json& entities, Job& job);
+
+}  // namespace bezcam::detail

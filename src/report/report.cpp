@@ -1,0 +1,142 @@
+#include "bezcam/report/report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/deviation.hpp"
+
+namespace bezcam {
+
+MotionTotals motion_totals(std::span<const ToolMotion> motion, double rapid_rate, int entity) {
+  MotionTotals t;
+  for (const ToolMotion& m : motion) {
+    if (entity != kAllEntities && m.entity != entity) continue;
+    const double len = block_length(m.block);
+    if (is_feed(m.block)) {
+      t.feed_length += len;
+      ++t.feed_blocks;
+      if (m.block.feed > 0) t.feed_time_s += 60 * len / m.block.feed;
+    } else {
+      t.rapid_length += len;
+      ++t.rapid_blocks;
+    }
+  }
+  if (rapid_rate > 0) t.rapid_time_s = 60 * t.rapid_length / rapid_rate;
+  return t;
+}
+
+ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode) {
+  ProgramReport r;
+  r.job = p.job_name;
+  r.machine = p.machine;
+  r.units = p.units;
+  r.output = p.output;
+  r.tolerance = p.tolerance;
+  r.decimals = p.decimals;
+  r.max_measured = p.max_measured;
+  r.max_bound = p.max_bound;
+  r.measurement_resolution = kMeasureResolution * p.tolerance;
+  r.warnings = p.warnings;
+  // The profile has no rapid rate of its own: its maximum feed is the
+  // fastest the machine is known to move.
+  r.rapid_rate = m.max_feed_mm_min / mm_per_unit(p.units);
+  r.rapid_rate_basis = "the maximum feed of machine \"" + m.name + "\" (max_feed_mm_min " +
+                       fmt_num(m.max_feed_mm_min) + "); the controller's true rapid rate may differ";
+  const auto motion = program_motion(p);
+  r.total = motion_totals(motion, r.rapid_rate);
+  for (const EntityReport& e : p.entities) r.entities.push_back({e, motion_totals(motion, r.rapid_rate, e.entity)});
+  r.gcode_bytes = gcode.size();
+  for (char c : gcode) r.gcode_lines += c == '\n';
+  if (!gcode.empty() && gcode.back() != '\n') ++r.gcode_lines;
+  return r;
+}
+
+namespace {
+
+nlohmann::ordered_json totals_json(const MotionTotals& t) {
+  nlohmann::ordered_json j;
+  j["feed_length"] = t.feed_length;
+  j["rapid_length"] = t.rapid_length;
+  j["feed_blocks"] = t.feed_blocks;
+  j["rapid_blocks"] = t.rapid_blocks;
+  j["feed_time_s"] = t.feed_time_s;
+  j["rapid_time_s"] = t.rapid_time_s;
+  j["estimated_time_s"] = t.time_s();
+  return j;
+}
+
+}  // namespace
+
+std::string report_json(const ProgramReport& r) {
+  nlohmann::ordered_json j;
+  j["bezcam_report"] = 1;
+  j["job"] = r.job;
+  j["machine"] = r.machine;
+  j["units"] = to_string(r.units);
+  j["output"] = to_string(r.output);
+  j["tolerance"] = r.tolerance;
+  j["decimals"] = r.decimals;
+  j["max_measured_deviation"] = r.max_measured;
+  j["max_proven_bound"] = r.max_bound;
+  j["measurement_resolution"] = r.measurement_resolution;
+  auto& ents = j["entities"] = nlohmann::ordered_json::array();
+  for (const auto& e : r.entities) {
+    nlohmann::ordered_json x;
+    x["index"] = e.report.entity;
+    x["label"] = e.report.label;
+    x["kind"] = e.report.type;
+    x["degree"] = e.report.degree;
+    x["length"] = e.report.length;
+    x["blocks"] = e.report.blocks;
+    x["measured_deviation"] = e.report.measured;
+    x["proven_bound"] = e.report.bound;
+    x["motion"] = totals_json(e.motion);
+    ents.push_back(std::move(x));
+  }
+  auto& prog = j["program"] = totals_json(r.total);
+  prog["rapid_rate"] = r.rapid_rate;
+  prog["rapid_rate_basis"] = r.rapid_rate_basis;
+  prog["time_note"] = "feeds and rapids at their rates; acceleration, dwells and tool changes not counted";
+  if (r.gcode_bytes > 0) {
+    prog["gcode_lines"] = r.gcode_lines;
+    prog["gcode_bytes"] = r.gcode_bytes;
+  }
+  j["warnings"] = r.warnings;
+  return j.dump(2) + "\n";
+}
+
+std::string report_text(const ProgramReport& r, size_t max_entities) {
+  const std::string u = std::string(" ") + to_string(r.units);
+  auto measured = [&](double m) {
+    return measured_text(m, r.tolerance, [](double v) { return format_significant(v, 3); }) + u;
+  };
+  size_t blocks = 0;
+  for (const auto& e : r.entities) blocks += e.report.blocks;
+  const size_t n = r.entities.size();
+  std::string s = "bezcam: " + std::to_string(n) + (n == 1 ? " entity, " : " entities, ") + std::to_string(blocks) +
+                  " cutting block" + (blocks == 1 ? "" : "s") + " for machine " + r.machine + " (output " +
+                  to_string(r.output) + ", tolerance " + format_significant(r.tolerance, 6) + u + ")\n";
+  for (size_t i = 0; i < n && i < max_entities; ++i) {
+    const EntityReport& e = r.entities[i].report;
+    s += "  " + e.label + ": " + e.type + ", degree " + std::to_string(e.degree) + ", length " +
+         format_significant(e.length, 6) + u + ", " + std::to_string(e.blocks) + " block" +
+         (e.blocks == 1 ? "" : "s") + ", deviation " + measured(e.measured) + " (proven bound " +
+         format_significant(e.bound, 3) + u + ")\n";
+  }
+  if (n > max_entities)
+    s += "  ... and " + std::to_string(n - max_entities) + " more entit" + (n - max_entities == 1 ? "y" : "ies") +
+         "; the largest deviation measured is " + measured(r.max_measured) + "\n";
+  const double t = r.total.time_s();
+  char tbuf[64];
+  if (t < 60) std::snprintf(tbuf, sizeof tbuf, "%.1f s", t);
+  else if (t < 3600) std::snprintf(tbuf, sizeof tbuf, "%d min %02d s", int(t / 60), int(std::fmod(t, 60)));
+  else std::snprintf(tbuf, sizeof tbuf, "%d h %02d min", int(t / 3600), int(std::fmod(t, 3600) / 60));
+  s += "  program: " + format_significant(r.total.feed_length, 6) + u + " at feed, " +
+       format_significant(r.total.rapid_length, 6) + u + " rapid; about " + tbuf + " (rapids at " +
+       format_significant(r.rapid_rate, 6) + u + "/min, no acceleration)\n";
+  return s;
+}
+
+}  // namespace bezcam

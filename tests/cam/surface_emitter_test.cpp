@@ -1,0 +1,368 @@
+// Surface programs measured as the controller sees them: every sample is
+// converted, printed, read back through the G-code reader, and the read
+// blocks are checked against the true surface, independently of how they
+// were made: each cutting point lies within the tolerance of the surface
+// (for a ball-end tool: the ball centre is at distance r from it, on the
+// upper side), neighbouring passes are never farther apart than the
+// stepover, zigzag passes are the raster passes linked, the curve on a
+// surface follows the mapped curve, and gouges are refused or skipped.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/gcode/reader.hpp"
+#include "bezcam/job/job_json.hpp"
+
+namespace bezcam {
+namespace {
+
+const std::string kSamples = BEZCAM_SOURCE_DIR "/samples/";
+
+struct Closest {
+  double d = 1e300, u = 0, v = 0;
+  Vec3 p;
+};
+
+// Nearest point of the surface to x by damped Newton on |S(u,v) - x|^2,
+// clamped to the parameter square, from (u, v).
+Closest newton(const SurfaceGeometry& s, const Vec3& x, double u, double v) {
+  Closest c;
+  for (int it = 0; it < 40; ++it) {
+    const PatchDerivs d = evaluate_derivs(s, u, v);
+    const Vec3 e = d.p - x;
+    const double f = dot(e, e);
+    c = {std::sqrt(f), u, v, d.p};
+    const double gu = dot(d.su, e), gv = dot(d.sv, e);
+    const double a = dot(d.su, d.su) + dot(d.suu, e), b = dot(d.su, d.sv) + dot(d.suv, e),
+                 cc = dot(d.sv, d.sv) + dot(d.svv, e);
+    double det = a * cc - b * b, du, dv;
+    if (det > 1e-12 * (a * cc) && a > 0) {
+      du = -(cc * gu - b * gv) / det;
+      dv = -(a * gv - b * gu) / det;
+    } else {  // gradient step
+      const double k = 1 / std::max(dot(d.su, d.su) + dot(d.sv, d.sv), 1e-300);
+      du = -gu * k, dv = -gv * k;
+    }
+    double step = 1;
+    bool moved = false;
+    for (int h = 0; h < 30; ++h, step *= 0.5) {
+      const double nu = std::clamp(u + step * du, 0.0, 1.0), nv = std::clamp(v + step * dv, 0.0, 1.0);
+      const Vec3 q = evaluate(s, nu, nv);
+      if (dot(q - x, q - x) < f) {
+        moved = std::abs(nu - u) + std::abs(nv - v) > 1e-15;
+        u = nu, v = nv;
+        break;
+      }
+    }
+    if (!moved) break;
+  }
+  return c;
+}
+
+Closest closest(const SurfaceGeometry& s, const Vec3& x, double u0 = -1, double v0 = -1) {
+  Closest best;
+  if (u0 >= 0) best = newton(s, x, u0, v0);
+  // A coarse grid search as well when the warm start is not clearly right.
+  constexpr int n = 16;
+  Closest grid;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double d = dist(evaluate(s, double(i) / n, double(j) / n), x);
+      if (d < grid.d) grid = {d, double(i) / n, double(j) / n, {}};
+    }
+  const Closest g = newton(s, x, grid.u, grid.v);
+  return g.d < best.d ? g : best;
+}
+
+struct Read {
+  Job job;
+  MachineProfile m;
+  ConvertResult r;
+  std::vector<MotionBlock> blocks;
+};
+
+Read convert_and_read(Job job, const std::string& machine = "") {
+  Read x{std::move(job), {}, {}, {}};
+  x.m = load_machine_profile(machine.empty() ? x.job.machine.value_or("generic") : machine);
+  x.r = convert(x.job, x.m, ConvertOptions{});
+  x.blocks = read_gcode(x.r.gcode, &x.m);
+  return x;
+}
+
+// Cutting runs of one entity: feed moves between rapids, plunge dropped.
+std::vector<std::vector<Vec3>> runs_of(const Read& x, double feed) {
+  std::vector<std::vector<Vec3>> runs;
+  bool in = false;
+  for (const auto& b : x.blocks) {
+    if (b.kind == BlockKind::rapid) {
+      in = false;
+      continue;
+    }
+    if (b.feed != feed) continue;  // plunges, other entities
+    if (!in) runs.push_back({b.from});
+    in = true;
+    runs.back().push_back(b.to);
+  }
+  return runs;
+}
+
+// Every cutting point (vertices and chord points between them) of a
+// surface entity is where it must be: tip on the surface within the
+// tolerance (r = 0), or the ball centre tip + r z at distance r within the
+// tolerance and above the surface (r > 0). Returns the largest error.
+double check_on_surface(const SurfaceGeometry& s, const std::vector<std::vector<Vec3>>& runs, double r, double tol) {
+  double worst = 0;
+  for (const auto& run : runs) {
+    double u = -1, v = -1;
+    for (size_t i = 0; i + 1 < run.size(); ++i)
+      for (double f : {0.0, 0.25, 0.5, 0.75}) {
+        const Vec3 c = lerp(run[i], run[i + 1], f) + Vec3{0, 0, r};
+        Closest k = newton(s, c, u < 0 ? 0.5 : u, v < 0 ? 0.5 : v);
+        if (u < 0 || std::abs(k.d - r) > tol) k = closest(s, c, u, v);
+        u = k.u, v = k.v;
+        worst = std::max(worst, std::abs(k.d - r));
+        if (r > 0) EXPECT_GT(dot(c - k.p, unit_normal(s, k.u, k.v)), 0) << "ball centre below the surface";
+      }
+  }
+  return worst;
+}
+
+double dist_to_poly(const Vec3& x, const std::vector<Vec3>& p) {
+  double m = 1e300;
+  for (size_t i = 0; i + 1 < p.size(); ++i) m = std::min(m, dist_to_segment(x, p[i], p[i + 1]));
+  return p.size() == 1 ? dist(x, p[0]) : m;
+}
+
+double brute_gap(const std::vector<Vec3>& a, const std::vector<Vec3>& b, double step) {
+  double g = 0;
+  for (int side = 0; side < 2; ++side) {
+    const auto& x = side ? b : a;
+    const auto& y = side ? a : b;
+    for (size_t i = 0; i + 1 < x.size(); ++i) {
+      const int n = 1 + static_cast<int>(dist(x[i], x[i + 1]) / step);
+      for (int k = 0; k <= n; ++k) g = std::max(g, dist_to_poly(lerp(x[i], x[i + 1], double(k) / n), y));
+    }
+  }
+  return g;
+}
+
+struct SampleCase {
+  const char* file;
+  size_t entity;
+};
+const SampleCase kPatchSamples[] = {{"patch-saddle.json", 0},
+                                    {"patch-bonnet-bicubic.json", 0},
+                                    {"patch-coons-curved.json", 0},
+                                    {"job-curve-on-surface.json", 0}};
+
+TEST(SurfaceProgram, EveryPassLiesWithinTheToleranceOfTheSurface) {
+  for (const auto& sc : kPatchSamples) {
+    SCOPED_TRACE(sc.file);
+    const Read x = convert_and_read(load_job(kSamples + sc.file));
+    const Entity& e = x.job.entities[sc.entity];
+    const CutParams cp = cut_params(x.job, e, x.m);
+    const auto runs = runs_of(x, quantize(cp.feed, x.m.feed_decimals));
+    ASSERT_FALSE(runs.empty());
+    const double worst = check_on_surface(*e.surface, runs, cp.tool_radius, x.job.tolerance);
+    EXPECT_LE(worst, x.job.tolerance);
+    // The report agrees: bound within tolerance, measured within bound.
+    const EntityReport& rep = x.r.program.entities[sc.entity];
+    EXPECT_LE(rep.bound, x.job.tolerance);
+    EXPECT_LE(rep.measured, rep.bound + 1e-7);
+    size_t cut_blocks = 0;
+    for (const auto& run : runs) cut_blocks += run.size() - 1;
+    EXPECT_EQ(cut_blocks, rep.blocks);
+  }
+}
+
+// The sample jobs as raster passes: each pass is one run between a plunge
+// and a retract, so neighbours can be compared run by run.
+Job as_raster(Job job, size_t entity) {
+  job.entities[entity].toolpath.pattern = "raster";
+  return job;
+}
+
+TEST(SurfaceProgram, NeighbouringPassesAreNeverFartherApartThanTheStepover) {
+  for (const auto& sc : kPatchSamples) {
+    SCOPED_TRACE(sc.file);
+    const Read x = convert_and_read(as_raster(load_job(kSamples + sc.file), sc.entity));
+    const Entity& e = x.job.entities[sc.entity];
+    const double stepover = *e.toolpath.stepover;
+    const auto runs = runs_of(x, quantize(cut_params(x.job, e, x.m).feed, x.m.feed_decimals));
+    ASSERT_GE(runs.size(), 10u);
+    double worst = 0;
+    for (size_t i = 0; i + 1 < runs.size(); ++i)
+      worst = std::max(worst, brute_gap(runs[i], runs[i + 1], stepover / 40));
+    EXPECT_LE(worst, stepover);
+    EXPECT_GE(worst, 0.8 * stepover);  // and the passes are not needlessly dense
+    RecordProperty(std::string(sc.file) + ".passes", static_cast<int>(runs.size()));
+  }
+}
+
+TEST(SurfaceProgram, ZigzagIsTheRasterPassesLinkedAlongTheBorder) {
+  const Job job = load_job(kSamples + "patch-saddle.json");
+  const Read zig = convert_and_read(job);
+  const Read ras = convert_and_read(as_raster(job, 0));
+  const double feed = quantize(cut_params(job, job.entities[0], zig.m).feed, zig.m.feed_decimals);
+  const auto zr = runs_of(zig, feed), rr = runs_of(ras, feed);
+  ASSERT_EQ(zr.size(), 1u);  // one plunge, one continuous cut
+  const std::vector<Vec3>& path = zr[0];
+  size_t at = 0;
+  for (size_t k = 0; k < rr.size(); ++k) {
+    std::vector<Vec3> pass = rr[k];
+    if (k % 2) std::reverse(pass.begin(), pass.end());
+    // The pass appears whole, in order, after the previous one.
+    auto it = std::search(path.begin() + static_cast<std::ptrdiff_t>(at), path.end(), pass.begin(), pass.end());
+    ASSERT_NE(it, path.end()) << "pass " << k;
+    const size_t start = static_cast<size_t>(it - path.begin());
+    // Links are short: along the border, about one stepover.
+    if (k > 0) {
+      double link = 0;
+      for (size_t i = at; i < start; ++i) link += dist(path[i], path[i + 1]);
+      EXPECT_LE(link, 2.0 * 1.05) << "pass " << k;
+    }
+    at = start + pass.size() - 1;
+  }
+  EXPECT_EQ(at, path.size() - 1);
+}
+
+TEST(SurfaceProgram, CurveOnASurfaceFollowsTheMappedCurve) {
+  const Read x = convert_and_read(load_job(kSamples + "job-curve-on-surface.json"));
+  const Entity& e = x.job.entities[1];
+  ASSERT_EQ(e.type, "curve_on_surface");
+  EXPECT_EQ(e.surface, x.job.entities[0].surface);  // the wing, by id
+  const auto runs = runs_of(x, quantize(cut_params(x.job, e, x.m).feed, x.m.feed_decimals));
+  ASSERT_EQ(runs.size(), 1u);
+  // S(c(w)) sampled densely, straight from the surface and the uv path.
+  std::vector<Vec3> dense;
+  for (const auto& piece : e.uv_curve.pieces)
+    for (int k = 0; k <= 4000; ++k) {
+      const Vec3 uv = evaluate(piece, k / 4000.0);
+      dense.push_back(evaluate(*e.surface, uv.x, uv.y));
+    }
+  const double tol = x.job.tolerance;
+  double worst = 0;
+  for (size_t i = 0; i + 1 < runs[0].size(); ++i)
+    for (double f : {0.0, 0.5}) worst = std::max(worst, dist_to_poly(lerp(runs[0][i], runs[0][i + 1], f), dense));
+  for (size_t k = 0; k < dense.size(); k += 7) worst = std::max(worst, dist_to_poly(dense[k], runs[0]));
+  EXPECT_LE(worst, tol + 1e-4);
+  EXPECT_LE(check_on_surface(*e.surface, runs, 0, tol), tol);
+  // It starts and ends on the wing's lower border (v = 0) at u = 0.25, 0.75.
+  EXPECT_LE(dist(runs[0].front(), evaluate(*e.surface, 0.25, 0)), 0.001);
+  EXPECT_LE(dist(runs[0].back(), evaluate(*e.surface, 0.75, 0)), 0.001);
+}
+
+// A bowl: the paraboloid z = (x^2 + y^2) / 40 over [-30, 30]^2 (curvature
+// radius 20 at the bottom), cut with a ball of radius `r`.
+Job bowl(double r, const char* gouge) {
+  std::string pts = "[";
+  const double x[3] = {-30, 0, 30}, z[3] = {22.5, -22.5, 22.5};
+  for (int i = 0; i < 3; ++i) {
+    pts += i ? ",[" : "[";
+    for (int j = 0; j < 3; ++j)
+      pts += (j ? "," : "") + std::string("[") + std::to_string(x[i]) + "," + std::to_string(x[j]) + "," +
+             std::to_string(z[i] + z[j] + 20) + "]";
+    pts += "]";
+  }
+  pts += "]";
+  const std::string text = R"({"bezcam": 1, "units": "mm", "tolerance": 0.01, "machine": "generic",
+    "job": {"feed": 1000, "plunge_feed": 200, "safe_z": 90, "tool_radius": )" +
+                           std::to_string(r) + (gouge ? std::string(R"(, "gouge": ")") + gouge + "\"" : "") + R"(},
+    "entities": [{"id": "bowl", "type": "bezier_patch", "points": )" +
+                           pts + R"(, "toolpath": {"stepover": 3}}]})";
+  return parse_job(text, "bowl.json");
+}
+
+TEST(SurfaceProgram, GougesAreRefusedNamingEntityUAndV) {
+  for (const char* policy : {static_cast<const char*>(nullptr), "refuse"}) {
+    try {
+      convert(bowl(25, policy), load_machine_profile("generic"), ConvertOptions{});
+      FAIL() << "no refusal";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.id(), "surface.gouge");
+      EXPECT_EQ(e.where(), "bowl.json: entities[0]");
+      EXPECT_NE(e.message().find("around u = 0.5, v = "), std::string::npos) << e.message();
+      EXPECT_NE(e.message().find("less than the ball-end radius 25"), std::string::npos) << e.message();
+      EXPECT_NE(e.message().find("\"gouge\": \"skip\""), std::string::npos) << e.message();
+    }
+  }
+  // A tool smaller than the tightest valley cuts the whole bowl.
+  EXPECT_NO_THROW(convert(bowl(19, nullptr), load_machine_profile("generic"), ConvertOptions{}));
+}
+
+TEST(SurfaceProgram, SkippedGougeRegionsAreLeftUncutAndTheRestIsSafe) {
+  const double r = 25;
+  const Read x = convert_and_read(bowl(r, "skip"));
+  const Entity& e = x.job.entities[0];
+  const auto runs = runs_of(x, 1000);
+  ASSERT_GT(runs.size(), 3u);  // the tool lifts over the bottom
+  // Nothing cut is a gouge: every ball centre is r away from the bowl.
+  EXPECT_LE(check_on_surface(*e.surface, runs, r, x.job.tolerance), x.job.tolerance);
+  // The bottom is left: the ball touches the bowl (at its nearest point)
+  // only outside the disc where the curvature radius is below 25,
+  // |(x, y)| < sqrt(25^2 - 20^2) = 15.
+  for (const auto& run : runs)
+    for (const auto& p : run) {
+      const Closest k = closest(*e.surface, p + Vec3{0, 0, r});
+      EXPECT_GT(std::hypot(k.p.x, k.p.y), 15 - 0.05) << p.x << " " << p.y;
+    }
+  bool warned = false;
+  for (const auto& w : x.r.program.warnings) warned = warned || w.find("left uncut") != std::string::npos;
+  EXPECT_TRUE(warned);
+  size_t skips = 0;
+  for (size_t i = x.r.gcode.find("(skipped pass"); i != std::string::npos; i = x.r.gcode.find("(skipped pass", i + 1))
+    ++skips;
+  EXPECT_GE(skips, 5u);
+}
+
+TEST(SurfaceProgram, BoundaryPatternCutsTheFourBordersInOneLoop) {
+  Job job = load_job(kSamples + "patch-coons-curved.json");
+  job.entities[0].toolpath.pattern = "boundary";
+  const Read x = convert_and_read(job);
+  const Entity& e = x.job.entities[0];
+  const CutParams cp = cut_params(x.job, e, x.m);
+  const auto runs = runs_of(x, quantize(cp.feed, x.m.feed_decimals));
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].front(), runs[0].back());  // closed
+  EXPECT_LE(check_on_surface(*e.surface, runs, cp.tool_radius, x.job.tolerance), x.job.tolerance);
+  // Every border point is near the loop (ball tips: compare tip curves).
+  const SurfaceGeometry& s = *e.surface;
+  for (int k = 0; k <= 40; ++k) {
+    const double t = k / 40.0;
+    for (auto [u, v] : {std::pair{t, 0.0}, {1.0, t}, {t, 1.0}, {0.0, t}}) {
+      const Vec3 tip = evaluate(s, u, v) + (unit_normal(s, u, v) - Vec3{0, 0, 1}) * cp.tool_radius;
+      EXPECT_LE(dist_to_poly(tip, runs[0]), x.job.tolerance + 1e-6);
+    }
+  }
+}
+
+TEST(SurfaceProgram, TravelLimitsAndSafeZAreEnforced) {
+  // The bonnet fits UNISURF's 1500 x 1200 mm; moved 400 mm it does not.
+  Job job = load_job(kSamples + "patch-bonnet-bicubic.json");
+  EXPECT_NO_THROW(convert(job, load_machine_profile("unisurf"), ConvertOptions{}));
+  std::string text = R"({"bezcam": 1, "tolerance": 0.05, "job": {"feed": 2000, "plunge_feed": 500,
+    "safe_z": 50, "tool_radius": 10}, "entities": [{"type": "bezier_patch", "points":
+    [[[400, -100, 0], [400, 100, 0]], [[800, -100, 10], [800, 100, 10]]], "toolpath": {"stepover": 8}}]})";
+  try {
+    convert(parse_job(text, "far.json"), load_machine_profile("unisurf"), ConvertOptions{});
+    FAIL() << "no refusal";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "program.travel");
+  }
+  text.replace(text.find("\"safe_z\": 50"), 12, "\"safe_z\": 5");
+  try {
+    convert(parse_job(text, "low.json"), load_machine_profile("generic"), ConvertOptions{});
+    FAIL() << "no refusal";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "job.above-safe-z");
+    EXPECT_NE(e.message().find("the surface rises to z = 10"), std::string::npos) << e.message();
+  }
+}
+
+}  // namespace
+}  // namespace bezcam

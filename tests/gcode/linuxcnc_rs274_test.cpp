@@ -1,0 +1,257 @@
+// LinuxCNC's own interpreter as the judge of the `linuxcnc` profile's
+// programs: `rs274` (Debian package linuxcnc-uspace, .ci/packages) runs a
+// program standalone (`rs274 -g FILE`: no machine, no configuration) and
+// prints the canonical machining calls it makes of it. Every sample, in
+// every output mode, must be accepted (exit 0, PROGRAM_END reached) and mean
+// what bezcam meant: the same end point for every move, the same centre and
+// direction for every arc, the same order for every G5/G5.1/G5.2 curve.
+// rs274 prints NURBS_FEED without coordinates, so a `(DEBUG,...)` comment
+// with the interpreter's position parameters #5420-#5422 is added after
+// each curve block; rs274 prints it as MESSAGE("POS x y z").
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "bezcam/error.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/gcode/number_format.hpp"
+#include "bezcam/job/job_json.hpp"
+#include "support/run_process.hpp"
+
+namespace bezcam {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string find_rs274() {
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path ? path : "/usr/bin");
+  for (std::string d; std::getline(dirs, d, ':');)
+    if (!d.empty() && ::access((fs::path(d) / "rs274").c_str(), X_OK) == 0) return (fs::path(d) / "rs274").string();
+  return "";
+}
+
+struct Rs274Run {
+  int status = -1;
+  std::string output;
+};
+
+// Runs rs274 on each program in turn, each in its own scratch directory
+// (nothing of a machine is needed). Never two at once, not even from two
+// test processes: concurrent rs274 processes share LinuxCNC's shared memory
+// and die of SIGBUS, so every run holds an exclusive lock on a lock file.
+std::vector<Rs274Run> run_rs274(const std::string& exe, const std::vector<std::string>& programs) {
+  std::vector<Rs274Run> runs(programs.size());
+  const fs::path dir = fs::temp_directory_path() / ("bezcam-rs274-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const int lock = ::open((fs::temp_directory_path() / "bezcam-rs274.lock").c_str(), O_CREAT | O_RDWR, 0666);
+  for (size_t i = 0; i < programs.size(); ++i) {
+    std::ofstream(dir / "program.ngc") << programs[i];
+    const std::string cmd = "cd '" + dir.string() + "' && '" + exe + "' -g program.ngc 2>&1";
+    if (lock >= 0) ::flock(lock, LOCK_EX);
+    const testproc::Result r = testproc::shell(cmd);
+    runs[i].output = r.out;
+    runs[i].status = r.status;
+    if (lock >= 0) ::flock(lock, LOCK_UN);
+  }
+  if (lock >= 0) ::close(lock);
+  fs::remove_all(dir);
+  return runs;
+}
+
+// One canonical motion call: STRAIGHT_TRAVERSE, STRAIGHT_FEED, ARC_FEED,
+// NURBS_FEED, or MESSAGE (our position probe).
+struct Canon {
+  std::string name;
+  std::vector<double> args;
+};
+
+std::vector<Canon> parse_canon(const std::string& out) {
+  std::vector<Canon> calls;
+  const std::regex call(R"(^\s*\d+ N\.+ ([A-Z_]+)\((.*)\)\s*$)");
+  const std::regex probe(R"xx("POS (\S+) (\S+) (\S+)")xx");
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (!std::regex_match(line, m, call)) continue;
+    const std::string name = m[1];
+    Canon c{name, {}};
+    if (name == "MESSAGE") {
+      std::smatch q;
+      const std::string args = m[2];
+      if (!std::regex_search(args, q, probe)) continue;
+      for (int i = 1; i <= 3; ++i) c.args.push_back(std::stod(q[i]));
+    } else if (name == "STRAIGHT_TRAVERSE" || name == "STRAIGHT_FEED" || name == "ARC_FEED" || name == "NURBS_FEED") {
+      std::istringstream a(m[2].str());
+      for (std::string tok; std::getline(a, tok, ',');) {
+        if (tok.find("...") != std::string::npos) continue;
+        c.args.push_back(std::stod(tok));
+      }
+    } else {
+      continue;
+    }
+    calls.push_back(c);
+  }
+  return calls;
+}
+
+// The program with a position probe after every G5 / G5.1 line and every G5.3.
+std::string with_probes(const std::string& gcode) {
+  std::string out;
+  std::istringstream in(gcode);
+  for (std::string line; std::getline(in, line);) {
+    out += line + "\n";
+    if (line.rfind("G5 ", 0) == 0 || line.rfind("G5.1 ", 0) == 0 || line == "G5.3")
+      out += "(DEBUG,POS #5420 #5421 #5422)\n";
+  }
+  return out;
+}
+
+// What bezcam meant: the canonical calls its moves should become, with the
+// axes each one states (the first retract leaves X and Y unknown).
+struct Expected {
+  std::string name;
+  Vec3 to, center;
+  unsigned axes = 7;
+  int order = 0;
+  int rotation = 0;
+};
+
+std::vector<Expected> expected_calls(const Program& p) {
+  std::vector<Expected> out;
+  std::string printed[3];
+  for (const Move& mv : p.moves) {
+    Expected e;
+    e.to = mv.to;
+    e.axes = mv.axes;
+    switch (mv.kind) {
+      case MoveKind::rapid:
+      case MoveKind::linear: {
+        // The writer prints only what changes; a move that changes nothing
+        // as printed is not written at all.
+        bool changes = false;
+        for (int a = 0; a < 3; ++a)
+          if ((mv.axes & (1u << a)) && format_number(mv.to[a], p.decimals) != printed[a]) changes = true;
+        if (!changes) continue;
+        e.name = mv.kind == MoveKind::rapid ? "STRAIGHT_TRAVERSE" : "STRAIGHT_FEED";
+        break;
+      }
+      case MoveKind::arc_cw:
+      case MoveKind::arc_ccw:
+        e.name = "ARC_FEED";
+        e.center = mv.center;
+        e.rotation = mv.kind == MoveKind::arc_cw ? -1 : 1;
+        break;
+      case MoveKind::bezier:
+      case MoveKind::nurbs:
+        e.name = "NURBS_FEED";
+        e.order = mv.order;
+        e.axes = 3;
+        break;
+      default: continue;
+    }
+    for (int a = 0; a < 3; ++a)
+      if (e.axes & (1u << a)) printed[a] = format_number(mv.to[a], p.decimals);
+    out.push_back(e);
+  }
+  return out;
+}
+
+const char* kModes[] = {"lines", "arcs", "nurbs"};
+
+TEST(LinuxcncRs274, EverySampleInEveryModeIsAcceptedAndMeansWhatWeMeant) {
+  const std::string exe = find_rs274();
+  if (exe.empty())
+    GTEST_SKIP() << "rs274 (LinuxCNC's standalone interpreter, Debian package linuxcnc-uspace) is not installed; "
+                    "install it to check the linuxcnc profile's programs against LinuxCNC itself";
+  const MachineProfile m = load_machine_profile("linuxcnc");
+  struct Case {
+    std::string name;
+    ConvertResult r;
+  };
+  std::vector<Case> cases;
+  for (const auto& entry : fs::directory_iterator(BEZCAM_SOURCE_DIR "/samples")) {
+    if (entry.path().extension() != ".json") continue;
+    const Job job = load_job(entry.path());
+    for (const char* mode : kModes) {
+      const std::string name = entry.path().filename().string() + ", --output " + mode;
+      ConvertOptions opt;
+      opt.output = parse_output_mode(mode);
+      opt.measure = false;  // the meaning is checked here, the deviation elsewhere
+      try {
+        cases.push_back({name, convert(job, m, opt)});
+      } catch (const InputError& e) {
+        // Only a tolerance the machine's decimals cannot honour may refuse.
+        EXPECT_EQ(e.id(), "flatten.tolerance-below-rounding") << name << ": " << e.what();
+      }
+    }
+  }
+  std::vector<std::string> programs;
+  for (const auto& c : cases) programs.push_back(with_probes(c.r.gcode));
+  const auto runs = run_rs274(exe, programs);
+
+  int curves = 0, arcs = 0;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    SCOPED_TRACE(cases[i].name);
+    const ConvertResult& r = cases[i].r;
+    const Rs274Run& run = runs[i];
+    ASSERT_EQ(run.status, 0) << run.output << "\n--- program ---\n" << r.gcode;
+    ASSERT_NE(run.output.find("PROGRAM_END()"), std::string::npos) << run.output;
+
+    const auto calls = parse_canon(run.output);
+    const auto want = expected_calls(r.program);
+    // rs274 prints 4 decimals; the program has 4 (mm) or 5 (inch).
+    const double eps = 0.5e-4 + 1e-9;
+    size_t k = 0;
+    for (const auto& w : want) {
+      ASSERT_LT(k, calls.size()) << "rs274 made fewer moves than the program has";
+      const Canon& c = calls[k++];
+      ASSERT_EQ(c.name, w.name);
+      if (w.name == "NURBS_FEED") {
+        ++curves;
+        ASSERT_EQ(c.args.size(), 1u);
+        EXPECT_EQ(c.args[0], w.order);
+        // The probe right after it: the interpreter's position, 6 decimals.
+        ASSERT_LT(k, calls.size());
+        const Canon& pos = calls[k++];
+        ASSERT_EQ(pos.name, "MESSAGE");
+        EXPECT_NEAR(pos.args[0], w.to.x, 0.5e-6 + 1e-9);
+        EXPECT_NEAR(pos.args[1], w.to.y, 0.5e-6 + 1e-9);
+        continue;
+      }
+      if (w.name == "ARC_FEED") {
+        ++arcs;
+        ASSERT_GE(c.args.size(), 6u);
+        EXPECT_NEAR(c.args[0], w.to.x, eps);
+        EXPECT_NEAR(c.args[1], w.to.y, eps);
+        EXPECT_NEAR(c.args[2], w.center.x, eps);
+        EXPECT_NEAR(c.args[3], w.center.y, eps);
+        EXPECT_EQ(c.args[4], w.rotation);
+        EXPECT_NEAR(c.args[5], w.to.z, eps);
+        continue;
+      }
+      ASSERT_GE(c.args.size(), 3u);
+      for (int a = 0; a < 3; ++a)
+        if (w.axes & (1u << a)) EXPECT_NEAR(c.args[static_cast<size_t>(a)], w.to[a], eps) << c.name << " axis " << a;
+    }
+    // After the program's moves only the footer's retract follows.
+    for (; k < calls.size(); ++k) EXPECT_EQ(calls[k].name, "STRAIGHT_TRAVERSE");
+  }
+  EXPECT_GE(cases.size(), 40u);
+  EXPECT_GT(curves, 20);  // G5, G5.1 and G5.2 blocks were exercised
+  EXPECT_GT(arcs, 50);
+  std::cout << "[ rs274    ] " << cases.size() << " programs accepted; " << curves << " G5/G5.1/G5.2 blocks, " << arcs
+            << " arcs and every line and rapid end where bezcam put them\n";
+}
+
+}  // namespace
+}  // namespace bezcam

@@ -1,0 +1,128 @@
+// Reading jobs: every rule of curve-file.md, errors that name the JSON path,
+// expected and found, and warnings for unknown keys.
+#include "bezcam/job/job.hpp"
+
+#include <gtest/gtest.h>
+
+#include "bezcam/error.hpp"
+#include "bezcam/job/job_json.hpp"
+
+using namespace bezcam;
+
+namespace {
+
+// Parses and returns the error's full text ("where: message"), or "" if none.
+std::string error_of(const std::string& text) {
+  try {
+    parse_job(text, "job.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string wrap(const std::string& entity) { return R"({"bezcam": 1, "entities": [)" + entity + "]}"; }
+
+}  // namespace
+
+TEST(JobJson, ReadsTheSpecExample) {
+  const Job j = parse_job(R"({
+    "bezcam": 1, "units": "mm", "tolerance": 0.01, "machine": "generic-fanuc",
+    "job": { "feed": 1200, "plunge_feed": 300, "safe_z": 5, "cut_z": -0.5, "spindle_rpm": 12000, "tool": 1 },
+    "entities": [ { "id": "seed-ex-4", "type": "bezier", "points": [[0,0],[1,0],[2,1],[0,1]] } ] })",
+                          "x.json");
+  EXPECT_EQ(j.units, Units::mm);
+  EXPECT_EQ(j.tolerance, 0.01);
+  EXPECT_EQ(*j.machine, "generic-fanuc");
+  EXPECT_EQ(*j.params.feed, 1200);
+  EXPECT_EQ(*j.params.tool, 1);
+  ASSERT_EQ(j.entities.size(), 1u);
+  const Entity& e = j.entities[0];
+  EXPECT_EQ(e.id, "seed-ex-4");
+  EXPECT_EQ(e.curve.dim, 2);
+  EXPECT_EQ(e.curve.max_degree(), 3);
+  EXPECT_TRUE(j.warnings.empty());
+}
+
+TEST(JobJson, DefaultsAndInchJobs) {
+  const Job j = parse_job(R"({"bezcam": 1, "units": "inch", "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "x");
+  EXPECT_EQ(j.units, Units::inch);
+  EXPECT_NEAR(j.tolerance, 0.01 / 25.4, 1e-15);  // 0.01 mm expressed in inches
+  EXPECT_EQ(j.entities[0].label(), "entities[0]");
+}
+
+TEST(JobJson, ErrorsNameThePathExpectedAndFound) {
+  EXPECT_EQ(error_of(wrap(R"({"type": "bezier", "points": [[0,0],[1,"a"]]})")),
+            "job.json: entities[0].points[1][1]: expected a number, found the string \"a\"");
+  EXPECT_EQ(error_of(wrap(R"({"type": "bezier", "points": [[0,0]]})")),
+            "job.json: entities[0].points: expected an array of at least 2 elements, found an array of 1 element");
+  EXPECT_EQ(error_of(wrap(R"({"type": "bezier", "points": [[0,0],[1,1,1]]})")),
+            "job.json: entities[0].points[1]: expected a 2D point like the entity's first point, found a 3D point");
+  EXPECT_EQ(error_of(wrap(R"({"type": "bezier", "points": [[0,0],[1,1]], "weights": [1, 0]})")),
+            "job.json: entities[0].weights[1]: expected a finite weight > 0, found 0");
+  EXPECT_EQ(error_of(wrap(R"({"type": "spiral"})")).substr(0, 40), "job.json: entities[0].type: expected one");
+  EXPECT_NE(error_of(R"({"bezcam": 2, "entities": []})").find("bezcam: expected format version 1, found 2"), std::string::npos);
+  EXPECT_NE(error_of(R"({"entities": []})").find("bezcam"), std::string::npos);
+  EXPECT_NE(error_of(R"({"bezcam": 1, "tolerance": 0, "entities": []})").find("tolerance: expected a number > 0, found 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"bezcam": 1, "units": "cm", "entities": []})").find("units: expected \"mm\" or \"inch\""),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"bezcam": 1, "job": {"safe_z": 1, "cut_z": 2}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})")
+                .find("job.cut_z: expected cut_z below safe_z"),
+            std::string::npos);
+  EXPECT_NE(error_of("[1, 2]").find("expected a JSON object"), std::string::npos);
+  // Syntax errors give line and column.
+  const std::string syn = error_of("{\n  \"bezcam\": 1,\n  \"entities\": [,]\n}");
+  EXPECT_NE(syn.find("line 3"), std::string::npos) << syn;
+}
+
+TEST(JobJson, UnknownKeysWarnButDoNotFail) {
+  const Job j = parse_job(R"({"bezcam": 1, "colour": "red", "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "speed": 3}]})", "w.json");
+  ASSERT_EQ(j.warnings.size(), 2u);
+  EXPECT_EQ(j.warnings[0], "w.json: colour: unknown key, ignored");
+  EXPECT_EQ(j.warnings[1], "w.json: entities[0].speed: unknown key, ignored");
+}
+
+TEST(JobJson, PathJointsAndContinuity) {
+  const Job j = parse_job(wrap(R"({"type": "path", "closed": true, "segments": [
+      {"type": "bezier", "points": [[0,0],[1,0],[2,0]]},
+      {"type": "bezier", "points": [[2,0],[3,0],[4,1],[4,2]]},
+      {"type": "bezier", "points": [[4,2],[4,3],[0,0]]}]})"),
+                          "p.json");
+  const auto& g = j.entities[0].curve;
+  EXPECT_TRUE(g.closed);
+  ASSERT_EQ(g.joints.size(), 3u);
+  // Quadratic (0,0)(1,0)(2,0) ends with derivative 2*(1,0); the cubic starts
+  // with 3*(1,0): same direction, different length -> G1.
+  EXPECT_EQ(g.joints[0], Continuity::G1);
+  // (4,1)->(4,2) then (4,2)->(4,3): tangents 3*(0,1) and 2*(0,1): G1.
+  EXPECT_EQ(g.joints[1], Continuity::G1);
+  EXPECT_EQ(g.joints[2], Continuity::C0);  // closing corner
+  EXPECT_NE(error_of(wrap(R"({"type": "path", "segments": [
+      {"type": "bezier", "points": [[0,0],[1,1]]}, {"type": "bezier", "points": [[1,1.001],[2,2]]}]})"))
+                .find("entities[0].segments[1]: expected to start where segments[0] ends (1, 1), found a start at (1, 1.001)"),
+            std::string::npos);
+  EXPECT_NE(error_of(wrap(R"({"type": "path", "closed": true, "segments": [{"type": "bezier", "points": [[0,0],[1,1]]}]})"))
+                .find("marked closed"),
+            std::string::npos);
+}
+
+TEST(JobJson, ContinuityLevels) {
+  // Two halves of one cubic meet C2 (same polynomial on both sides, scaled).
+  const Bezier b = Bezier::make({{0, 0}, {1, 2}, {3, 2}, {4, 0}});
+  auto [l, r] = split(b, 0.5);
+  EXPECT_EQ(joint_continuity(l, r, 1e-12), Continuity::C2);
+  // C1 but not C2: equal first derivatives, different second.
+  const Bezier a = Bezier::make({{0, 0}, {1, 0}, {2, 0}});
+  const Bezier c = Bezier::make({{2, 0}, {3, 0}, {4, 1}});
+  EXPECT_EQ(joint_continuity(a, c, 1e-12), Continuity::C1);
+  EXPECT_EQ(joint_continuity(a, Bezier::make({{2, 0}, {2, 1}}), 1e-12), Continuity::C0);
+  EXPECT_EQ(joint_continuity(a, Bezier::make({{2.1, 0}, {2, 1}}), 1e-12), Continuity::none);
+}
+
+TEST(JobJson, NonFiniteNumbersAreRefused) {
+  // 1e999 overflows to infinity in the parser: named, not crashed on.
+  const std::string e = error_of(wrap(R"({"type": "bezier", "points": [[0,0],[1e999,1]]})"));
+  EXPECT_NE(e.find("line 1, column"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected a finite number, found 1e999"), std::string::npos) << e;
+}
