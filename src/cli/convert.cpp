@@ -7,14 +7,15 @@
 #include "bezcam/report/report.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "command.hpp"
+#include "options.hpp"
 #include "progress.hpp"
 
 namespace bezcam::cli {
 namespace {
 
 struct Options {
-  std::string job, out = "-", machine, output = "lines", report;
-  double tolerance = 0;
+  std::string job, out = "-", report;
+  ConversionOptions conv;
   bool quiet = false;
 } o;
 
@@ -22,12 +23,7 @@ CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("convert", "Write the G-code program for a job (stdout when no -o).");
   s->add_option("JOB", o.job, "job file (JSON, curve-file format version 1)")->required();
   s->add_option("-o,--output-file", o.out, "program file to write; written whole or not at all");
-  s->add_option("--machine", o.machine, "machine profile: a name in machines/ or a .json file "
-                                        "(default: the job's \"machine\", else generic)");
-  s->add_option("--tolerance", o.tolerance, "chord tolerance in the job's units, overriding the job's")
-      ->check(CLI::PositiveNumber);
-  s->add_option("--output", o.output, "cutting moves: lines (G01), arcs (G02/G03) or nurbs (exact blocks)")
-      ->check(CLI::IsMember({"lines", "arcs", "nurbs"}));
+  add_conversion_options(s, o.conv, "cutting moves: lines (G01), arcs (G02/G03) or nurbs (exact blocks)");
   s->add_option("--report", o.report, "also write a JSON report (per entity: kind, degree, length, blocks, "
                                       "deviation measured and proven; lengths and estimated time); written only "
                                       "with the program");
@@ -43,10 +39,10 @@ int run() {
                      "the report cannot go to the same place as the program (" + (o.out == "-" ? std::string("standard output") : o.out) +
                          "); give --report another file name, or write the program with -o FILE");
   const Job job = load_job(o.job);
-  const MachineProfile m = resolve_profile(job, o.machine);
+  const MachineProfile m = resolve_profile(job, o.conv.machine);
   ConvertOptions opt;
-  opt.output = parse_output_mode(o.output);
-  if (o.tolerance > 0) opt.tolerance = o.tolerance;
+  opt.output = parse_output_mode(o.conv.output);
+  if (o.conv.tolerance > 0) opt.tolerance = o.conv.tolerance;
   Progress progress("convert", "entities", job.entities.size(), progress_config(o.quiet));
   opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
   const ConvertResult r = convert(job, m, opt);

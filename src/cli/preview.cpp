@@ -19,14 +19,16 @@
 #include "bezcam/report/report.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "command.hpp"
+#include "options.hpp"
 #include "progress.hpp"
 
 namespace bezcam::cli {
 namespace {
 
 struct Options {
-  std::string job, out, machine, output = "lines", program;
-  double tolerance = 0, width = 1200;
+  std::string job, out, program;
+  ConversionOptions conv;
+  double width = 1200;
   bool no_control = false, deviation = false, quiet = false;
 } o;
 CLI::App* sub = nullptr;
@@ -38,12 +40,7 @@ CLI::App* add(CLI::App& app) {
   s->add_option("--program", o.program,
                 "draw this G-code program instead of building one (with JOB: against the job's curves)");
   s->add_option("-o,--output-file", o.out, "SVG file to write; written whole or not at all")->required();
-  s->add_option("--machine", o.machine, "machine profile: a name in machines/ or a .json file "
-                                        "(default: the job's \"machine\", else generic)");
-  s->add_option("--tolerance", o.tolerance, "chord tolerance in the job's units, overriding the job's")
-      ->check(CLI::PositiveNumber);
-  s->add_option("--output", o.output, "cutting moves, as for convert: lines, arcs or nurbs (not with --program)")
-      ->check(CLI::IsMember({"lines", "arcs", "nurbs"}));
+  add_conversion_options(s, o.conv, "cutting moves, as for convert: lines, arcs or nurbs (not with --program)");
   s->add_flag("--no-control", o.no_control, "leave out control polygons and control points");
   s->add_flag("--deviation", o.deviation,
               "colour each cutting block by its measured deviation from the true curve (0 to the tolerance)");
@@ -69,8 +66,8 @@ int run_program() {
   const std::string text = read_text(o.program, "G-code file");
   // The machine, when named, is checked by lint (its findings are shown,
   // not fatal: seeing the path helps to fix it) and gives the rapid rate.
-  const bool named = !o.machine.empty() || (job && job->machine);
-  const MachineProfile m = job ? resolve_profile(*job, o.machine) : load_profile_option(o.machine.empty() ? "generic" : o.machine);
+  const bool named = !o.conv.machine.empty() || (job && job->machine);
+  const MachineProfile m = job ? resolve_profile(*job, o.conv.machine) : load_profile_option(o.conv.machine.empty() ? "generic" : o.conv.machine);
   Progress progress("preview", "bytes", text.size(), progress_config(o.quiet));
   GcodeInterpreter reader;
   PreviewInput in;
@@ -102,7 +99,7 @@ int run_program() {
   in.job = job ? &*job : nullptr;
   if (job)
     for (const auto& w : job->warnings) in.warnings.push_back("warning: " + w);
-  in.tolerance = o.tolerance > 0 ? o.tolerance : (job ? job->tolerance : 0);
+  in.tolerance = o.conv.tolerance > 0 ? o.conv.tolerance : (job ? job->tolerance : 0);
   in.title = "bezcam preview: " + o.program + (job ? " against " + job->source : std::string());
   const double rapid_rate = m.max_feed_mm_min / mm_per_unit(in.units);
   const MotionTotals t = motion_totals(in.motion, rapid_rate);
@@ -138,15 +135,15 @@ int run() {
   if (o.job.empty())
     throw InputError("usage.preview", "JOB", "give a job file to draw, or a G-code program with --program FILE.nc");
   const Job job = load_job(o.job);
-  const MachineProfile m = resolve_profile(job, o.machine);
+  const MachineProfile m = resolve_profile(job, o.conv.machine);
   const size_t n = job.entities.size();
   const ProgressConfig pcfg = progress_config(o.quiet);
   Progress progress("preview", "entities", n, pcfg);
 
   // The same program convert would build, from the same options.
   ConvertOptions copt;
-  copt.output = parse_output_mode(o.output);
-  if (o.tolerance > 0) copt.tolerance = o.tolerance;
+  copt.output = parse_output_mode(o.conv.output);
+  if (o.conv.tolerance > 0) copt.tolerance = o.conv.tolerance;
   copt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
   const Program p = build_program(job, m, copt);
   progress.finish();

@@ -52,34 +52,13 @@ JobBuilder& JobBuilder::tolerance(double t) {
   job_.tolerance = positive(t, job_.source, "tolerance");
   return *this;
 }
-JobBuilder& JobBuilder::machine(std::string name) {
-  job_.machine = std::move(name);
-  return *this;
-}
-JobBuilder& JobBuilder::feed(double v) {
-  job_.params.feed = v;
-  return *this;
-}
-JobBuilder& JobBuilder::plunge_feed(double v) {
-  job_.params.plunge_feed = v;
-  return *this;
-}
-JobBuilder& JobBuilder::safe_z(double v) {
-  job_.params.safe_z = v;
-  return *this;
-}
-JobBuilder& JobBuilder::cut_z(double v) {
-  job_.params.cut_z = v;
-  return *this;
-}
-JobBuilder& JobBuilder::spindle_rpm(double v) {
-  job_.params.spindle_rpm = v;
-  return *this;
-}
-JobBuilder& JobBuilder::tool(int t) {
-  job_.params.tool = t;
-  return *this;
-}
+JobBuilder& JobBuilder::machine(std::string name) { return set(job_.machine, std::move(name)); }
+JobBuilder& JobBuilder::feed(double v) { return set(job_.params.feed, v); }
+JobBuilder& JobBuilder::plunge_feed(double v) { return set(job_.params.plunge_feed, v); }
+JobBuilder& JobBuilder::safe_z(double v) { return set(job_.params.safe_z, v); }
+JobBuilder& JobBuilder::cut_z(double v) { return set(job_.params.cut_z, v); }
+JobBuilder& JobBuilder::spindle_rpm(double v) { return set(job_.params.spindle_rpm, v); }
+JobBuilder& JobBuilder::tool(int t) { return set(job_.params.tool, t); }
 JobBuilder& JobBuilder::params(const JobParams& p) {
   job_.params = p.over(job_.params);
   return *this;

@@ -10,7 +10,9 @@
 ///                 .feed(600).plunge_feed(200).safe_z(5).cut_z(-1)
 ///                 .bezier("outline", Bezier::make({{0, 0}, {10, 20}, {30, 0}}))
 ///                 .build();
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bezcam/job/job.hpp"
@@ -55,6 +57,12 @@ class JobBuilder {
 
  private:
   Job job_;
+  // Sets one optional value (checked by build(), like a file's).
+  template <class T, class V>
+  JobBuilder& set(std::optional<T>& field, V&& v) {
+    field = std::forward<V>(v);
+    return *this;
+  }
   JobBuilder& entity(std::string id, std::string type, CurveGeometry g, JobParams params);
 };
 
