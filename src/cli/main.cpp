@@ -1,5 +1,5 @@
 // bezcam: the command-line front end. Thin: parsing options, mapping error
-// families to exit codes (cli.md): 0 success, 2 invalid input or usage,
+// families to exit codes (docs/cli.md): 0 success, 2 invalid input or usage,
 // 3 I/O or connection failure, 4 the controller refused or lost the program.
 #include <unistd.h>
 

@@ -3,7 +3,7 @@
 //
 // Sends a program to a controller over Modbus TCP (streamer.hpp), with a
 // progress bar on a terminal and plain progress lines otherwise. Exit
-// status per cli.md: 0 the controller confirmed and executed the whole
+// status per docs/cli.md: 0 the controller confirmed and executed the whole
 // program, 2 bad file or options, 3 connection failure, 4 the controller
 // refused or lost the program.
 #include <chrono>

@@ -159,7 +159,7 @@ class Writer {
       if (mv.axes & (1u << k)) pos_[k] = mv.to[k];
   }
 
-  // Fanuc-style block (gcode-dialects.md): start word, P rank and the first
+  // Fanuc-style block (docs/gcode-dialects.md): start word, P rank and the first
   // control point (the current position) with its knot and weight, one
   // K X Y Z R block per further point, then the remaining knots alone.
   void fanuc_block(const Move& mv) {

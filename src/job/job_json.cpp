@@ -1,5 +1,5 @@
 // The only kernel file family that knows JSON: reads a version-1 curve file
-// (shared/spec/curve-file.md) into a validated Job.
+// (docs/job-format.md) into a validated Job.
 #include <cmath>
 #include <fstream>
 #include <sstream>

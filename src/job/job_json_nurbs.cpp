@@ -1,5 +1,5 @@
 // job_json family: `bspline` segments (also inside paths) and `interpolate`
-// entities (curve-file.md). The curves become exact Bézier pieces; the
+// entities (docs/job-format.md). The curves become exact Bézier pieces; the
 // B-spline form is kept on the segment for exact NURBS output.
 #include <algorithm>
 #include <memory>

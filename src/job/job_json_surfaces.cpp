@@ -1,5 +1,5 @@
 // job_json family: surface entities (`bezier_patch`, `coons_patch`,
-// `curve_on_surface`) and their `toolpath` object (curve-file.md).
+// `curve_on_surface`) and their `toolpath` object (docs/job-format.md).
 #include <algorithm>
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // Post layer basics: number format, profiles, validation before writing,
-// the writer's program structure (cli.md "What every program looks like").
+// the writer's program structure (docs/cli.md "What every program looks like").
 #include <gtest/gtest.h>
 
 #include <sstream>

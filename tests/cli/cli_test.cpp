@@ -1,4 +1,4 @@
-// The bezcam executable as a user meets it: exit codes (cli.md), messages
+// The bezcam executable as a user meets it: exit codes (docs/cli.md), messages
 // that name the place, and no output file created or truncated on refusal.
 #include <gtest/gtest.h>
 #include <sys/wait.h>

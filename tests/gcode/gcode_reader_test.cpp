@@ -162,7 +162,7 @@ TEST(GcodeReader, ArcToleranceFollowsTheProfile) {
 }
 
 TEST(GcodeReader, FanucNurbsBlockReadsBackAsWritten) {
-  // The block of gcode-dialects.md: a cubic Bézier in NURBS form.
+  // The block of docs/gcode-dialects.md: a cubic Bézier in NURBS form.
   const auto b = read_gcode(
       "G21 G90 G17\n"
       "G00 X0 Y0 Z0\n"

@@ -1,4 +1,4 @@
-// The `bspline` and `interpolate` entities of curve-file.md: parsed into
+// The `bspline` and `interpolate` entities of docs/job-format.md: parsed into
 // exact pieces with the B-spline kept for exact output, errors naming the
 // JSON path, the Lagrange overshoot warning.
 #include <gtest/gtest.h>

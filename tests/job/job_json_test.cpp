@@ -1,4 +1,4 @@
-// Reading jobs: every rule of curve-file.md, errors that name the JSON path,
+// Reading jobs: every rule of docs/job-format.md, errors that name the JSON path,
 // expected and found, and warnings for unknown keys.
 #include "bezcam/job/job.hpp"
 

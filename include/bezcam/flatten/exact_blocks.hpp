@@ -1,5 +1,5 @@
 #pragma once
-/// Exact-curve blocks for `--output nurbs` (shared/spec/gcode-dialects.md):
+/// Exact-curve blocks for `--output nurbs` (docs/gcode-dialects.md):
 /// the plan of which part of a curve entity becomes which block, with the
 /// numbers exactly as they will be printed and a proven bound of how far the
 /// curve the controller evaluates from those numbers lies from the true one.
@@ -31,7 +31,7 @@
 
 namespace bezcam {
 
-/// Which exact-curve words a controller understands (gcode-dialects.md).
+/// Which exact-curve words a controller understands (docs/gcode-dialects.md).
 enum class NurbsDialect {
   none,      ///< lines and arcs only
   fanuc,     ///< G06.2-style block (start word configurable: G06.2 / G06.3)

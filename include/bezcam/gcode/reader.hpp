@@ -44,7 +44,7 @@ struct GcodeFinding {
 
 /// Streaming interpreter: feed it lines in order.
 ///
-/// What it accepts (shared/spec/gcode-dialects.md; every refusal is an
+/// What it accepts (docs/gcode-dialects.md; every refusal is an
 /// InputError "gcode.<what>" at "line N" naming the word and what was
 /// expected):
 ///  - `%` lines, an `O1234` program-number line, `N` line numbers, comments

@@ -1,5 +1,5 @@
 #pragma once
-/// A job: what the curve file (shared/spec/curve-file.md, version 1) holds,
+/// A job: what the curve file (docs/job-format.md, version 1) holds,
 /// validated. Built by the JSON reader (job_json.hpp) or in memory
 /// (job_builder.hpp); after construction the invariants hold
 /// (finite numbers, positive tolerance, meeting path joints, ...).
@@ -30,7 +30,7 @@ struct JobParams {
   JobParams over(const JobParams& base) const;
 };
 
-/// Where a surface entity's passes go (curve-file.md, `toolpath`).
+/// Where a surface entity's passes go (docs/job-format.md, `toolpath`).
 struct ToolpathSpec {
   std::string pattern = "zigzag";  ///< zigzag | raster | boundary
   char direction = 'u';            ///< parameter that varies along a pass
