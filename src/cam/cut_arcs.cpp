@@ -17,12 +17,10 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
   Vec3 from = quantize(pieces.front().front(), c.decimals);
   if (path.empty()) path.push_back(from);
   auto push_line = [&](const Vec3& to) {
-    Move mv;
-    mv.kind = MoveKind::linear;
-    mv.to = cut_point(c, to);
-    mv.feed = c.params.feed;
-    mv.entity = entity;
-    c.program.moves.push_back(mv);
+    LineMove l;
+    l.to = cut_point(c, to);
+    l.feed = c.params.feed;
+    c.program.moves.push_back({l, entity});
     path.push_back(to);
     ++blocks;
   };
@@ -43,13 +41,12 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
     if (f.kind == FitKind::line) {
       push_line(f.to);
     } else {
-      Move mv;
-      mv.kind = f.kind == FitKind::arc_cw ? MoveKind::arc_cw : MoveKind::arc_ccw;
-      mv.to = cut_point(c, f.to);
-      mv.center = cut_point(c, f.center);
-      mv.feed = c.params.feed;
-      mv.entity = entity;
-      c.program.moves.push_back(mv);
+      ArcMove am;
+      am.to = cut_point(c, f.to);
+      am.center = cut_point(c, f.center);
+      am.ccw = f.kind == FitKind::arc_ccw;
+      am.feed = c.params.feed;
+      c.program.moves.push_back({am, entity});
       const PrintedArc a{from, f.to, f.center, f.kind == FitKind::arc_ccw};
       const auto pts = sample_arc(a, kSampleShare * c.tolerance);
       path.insert(path.end(), pts.begin() + 1, pts.end());

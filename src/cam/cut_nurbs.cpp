@@ -60,11 +60,7 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
   for (const ExactBlock& b : blocks)
     if (!b.note.empty() && notes.find(b.note) == std::string::npos) notes += (notes.empty() ? "" : "; ") + b.note;
   if (!notes.empty()) {
-    Move cmt;
-    cmt.kind = MoveKind::comment;
-    cmt.text = "not exact: " + notes;
-    cmt.entity = entity;
-    c.program.moves.push_back(cmt);
+    c.program.moves.push_back({Comment{"not exact: " + notes}, entity});
   }
   r.blocks = 0;
   r.bound = 0;
@@ -73,21 +69,23 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
       r.bound = std::max(r.bound, append_arcs_or_lines(c, b.source, path, r.blocks) + b.snap);
       continue;
     }
-    Move mv;
-    mv.kind = b.kind == ExactKind::line ? MoveKind::linear
-              : b.kind == ExactKind::bezier ? MoveKind::bezier
-                                            : MoveKind::nurbs;
-    mv.feed = c.params.feed;
-    mv.entity = entity;
-    mv.to = cut_point(c, b.ctrl.back());
-    if (b.kind != ExactKind::line) {
-      mv.axes = axes;
-      for (const auto& p : b.ctrl) mv.ctrl.push_back(cut_point(c, p));
-      mv.weights = b.weights;
-      mv.knots = b.knots;
-      mv.order = b.kind == ExactKind::nurbs ? b.order : static_cast<int>(b.ctrl.size());
+    if (b.kind == ExactKind::line) {
+      LineMove l;
+      l.to = cut_point(c, b.ctrl.back());
+      l.feed = c.params.feed;
+      c.program.moves.push_back({l, entity});
+    } else {
+      CurveMove cv;
+      cv.form = b.kind == ExactKind::bezier ? CurveMove::Form::bezier : CurveMove::Form::nurbs;
+      cv.to = cut_point(c, b.ctrl.back());
+      cv.feed = c.params.feed;
+      cv.axes = axes;
+      for (const auto& p : b.ctrl) cv.ctrl.push_back(cut_point(c, p));
+      cv.weights = b.weights;
+      cv.knots = b.knots;
+      cv.order = b.kind == ExactKind::nurbs ? b.order : static_cast<int>(b.ctrl.size());
+      c.program.moves.push_back({std::move(cv), entity});
     }
-    c.program.moves.push_back(std::move(mv));
     r.blocks += block_lines(b, m.nurbs);
     r.bound = std::max(r.bound, b.bound);
     // The printed curve, densely, for the independent measurement.

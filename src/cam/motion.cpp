@@ -93,36 +93,36 @@ std::vector<ToolMotion> program_motion(const Program& p) {
   Vec3 pos;
   unsigned known = 0;
   for (const Move& mv : p.moves) {
+    const Motion* mo = motion_of(mv);
+    if (!mo) continue;  // no motion
     ToolMotion tm;
     tm.entity = mv.entity;
     MotionBlock& b = tm.block;
-    switch (mv.kind) {
-      case MoveKind::rapid: b.kind = BlockKind::rapid; break;
-      case MoveKind::linear: b.kind = BlockKind::linear; break;
-      case MoveKind::arc_cw: b.kind = BlockKind::arc_cw; break;
-      case MoveKind::arc_ccw: b.kind = BlockKind::arc_ccw; break;
-      case MoveKind::nurbs: b.kind = BlockKind::nurbs; break;
-      case MoveKind::bezier: b.kind = BlockKind::bezier; break;
-      default: continue;  // no motion
+    b.kind = BlockKind::linear;
+    if (is_rapid(mv)) b.kind = BlockKind::rapid;
+    if (const auto* arc = std::get_if<ArcMove>(&mv.what)) {
+      b.kind = arc->ccw ? BlockKind::arc_ccw : BlockKind::arc_cw;
+      b.center = arc->center;
+    }
+    if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {
+      b.kind = cv->form == CurveMove::Form::bezier ? BlockKind::bezier : BlockKind::nurbs;
+      b.ctrl = cv->ctrl;
+      b.weights = cv->weights;
+      b.knots = cv->knots;
+      b.order = cv->form == CurveMove::Form::bezier ? static_cast<int>(cv->ctrl.size()) : cv->order;
     }
     Vec3 to = pos;
     for (int a = 0; a < 3; ++a)
-      if (mv.axes & (1u << a)) to[a] = mv.to[a];
+      if (mo->axes & (1u << a)) to[a] = mo->to[a];
     Vec3 from = pos;
     for (int a = 0; a < 3; ++a)
       if (!(known & (1u << a))) from[a] = to[a];
     b.from = from;
     b.to = to;
-    b.feed = b.kind == BlockKind::rapid ? 0 : mv.feed;
-    b.center = mv.center;
-    b.ctrl = mv.ctrl;
-    b.weights = mv.weights;
-    b.knots = mv.knots;
-    b.order = mv.order;
-    if (b.kind == BlockKind::bezier) b.order = static_cast<int>(mv.ctrl.size());
+    b.feed = b.kind == BlockKind::rapid ? 0 : mo->feed;
     out.push_back(std::move(tm));
     pos = to;
-    known |= mv.axes;
+    known |= mo->axes;
   }
   return out;
 }

@@ -64,12 +64,10 @@ void emit_lines(CutContext& c, EntityReport& r) {
   r.bound = flatten_pieces(pieces, fo, [&](const FlatVertex& v) { poly.push_back(v.point); });
   // The first vertex is where the plunge put the tool.
   for (size_t i = 1; i < poly.size(); ++i) {
-    Move mv;
-    mv.kind = MoveKind::linear;
-    mv.to = cut_point(c, poly[i]);
-    mv.feed = c.params.feed;
-    mv.entity = static_cast<int>(c.entity.index);
-    c.program.moves.push_back(mv);
+    LineMove l;
+    l.to = cut_point(c, poly[i]);
+    l.feed = c.params.feed;
+    c.program.moves.push_back({l, static_cast<int>(c.entity.index)});
   }
   r.blocks = poly.size() - 1;
   if (c.measure) {
@@ -146,32 +144,22 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
                              "; rapid moves at safe_z would cross it: raise safe_z");
     }
     if (cp.tool != cur_tool) {
-      Move t;
-      t.kind = MoveKind::tool_change;
-      t.tool = cp.tool;
       if (pos_known && pos.z < safe) {
-        Move up;
-        up.kind = MoveKind::rapid;
+        RapidMove up;
         up.to = {pos.x, pos.y, safe};
-        push(up);
+        push({up});
         pos = up.to;
       }
-      push(t);
+      push({ToolChange{cp.tool}});
       cur_tool = cp.tool;
       cur_rpm = -1;
     }
     if (cp.spindle_rpm != cur_rpm) {
-      Move s;
-      s.kind = cp.spindle_rpm > 0 ? MoveKind::spindle_on : MoveKind::spindle_off;
-      s.rpm = cp.spindle_rpm;
-      push(s);
+      push({SpindleMove{cp.spindle_rpm}});
       cur_rpm = cp.spindle_rpm;
     }
-    Move cmt;
-    cmt.kind = MoveKind::comment;
-    cmt.text = "entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
-               (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D");
-    push(cmt);
+    push({Comment{"entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
+                   (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")}});
 
     EntityReport r;
     r.label = e.label();
@@ -183,37 +171,30 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
     // Retract (straight up) if below this entity's safe Z, rapid over the
     // start, plunge at the plunge feed.
+    const int entity = static_cast<int>(e.index);
     if (!pos_known || pos.z != safe) {
-      Move up;
-      up.kind = MoveKind::rapid;
+      RapidMove up;
       up.to = {pos_known ? pos.x : 0, pos_known ? pos.y : 0, safe};
-      up.entity = static_cast<int>(e.index);
-      if (!pos_known) up.axes = 4;  // position unknown: move Z only
-      push(up);
+      if (!pos_known) up.axes = kAxisZ;  // position unknown: move Z only
+      push({up, entity});
     }
-    Move over;
-    over.kind = MoveKind::rapid;
+    RapidMove over;
     over.to = {start.x, start.y, safe};
-    over.entity = static_cast<int>(e.index);
-    push(over);
-    Move plunge;
-    plunge.kind = MoveKind::linear;
+    push({over, entity});
+    LineMove plunge;
     plunge.to = start;
     plunge.feed = cp.plunge_feed;
-    plunge.entity = static_cast<int>(e.index);
-    push(plunge);
+    push({plunge, entity});
 
     switch (opt.output) {
       case OutputMode::lines: detail::emit_lines(ctx, r); break;
       case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
       case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
     }
-    pos = p.moves.back().to;
-    Move retract;
-    retract.kind = MoveKind::rapid;
+    pos = motion_of(p.moves.back())->to;  // the cut ends with a motion
+    RapidMove retract;
     retract.to = {pos.x, pos.y, safe};
-    retract.entity = static_cast<int>(e.index);
-    push(retract);
+    push({retract, entity});
     pos = retract.to;
     pos_known = true;
     p.max_measured = std::max(p.max_measured, r.measured);

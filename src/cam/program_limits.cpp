@@ -52,10 +52,10 @@ void check_entity_limits(const Job& job, const Entity& e, double tolerance, int 
 std::size_t program_lines(const Program& p, std::size_t first) {
   std::size_t n = 0;
   for (std::size_t i = first; i < p.moves.size(); ++i) {
-    const Move& mv = p.moves[i];
     // Fanuc: a block per control point, then `order` knot-only blocks;
     // LinuxCNC G5.2: a line per point and G5.3.
-    n += mv.kind == MoveKind::nurbs ? mv.ctrl.size() + static_cast<std::size_t>(std::max(mv.order, 1)) : 1;
+    const auto* cv = std::get_if<CurveMove>(&p.moves[i].what);
+    n += cv && cv->form == CurveMove::Form::nurbs ? cv->ctrl.size() + static_cast<std::size_t>(std::max(cv->order, 1)) : 1;
   }
   return n;
 }

@@ -123,27 +123,18 @@ class SurfaceEmitter {
     c_.program.moves.push_back(std::move(mv));
   }
   void comment(const std::string& text) {
-    Move m;
-    m.kind = MoveKind::comment;
-    m.text = text;
-    push(m);
+    push({Comment{text}});
   }
   void begin_entity(const std::string& what) {
     const CutParams& cp = c_.params;
     if (cp.tool != st_.tool) {
       if (st_.pos_known && st_.pos.z < safe_) retract();
-      Move t;
-      t.kind = MoveKind::tool_change;
-      t.tool = cp.tool;
-      push(t);
+      push({ToolChange{cp.tool}});
       st_.tool = cp.tool;
       st_.rpm = -1;
     }
     if (cp.spindle_rpm != st_.rpm) {
-      Move s;
-      s.kind = cp.spindle_rpm > 0 ? MoveKind::spindle_on : MoveKind::spindle_off;
-      s.rpm = cp.spindle_rpm;
-      push(s);
+      push({SpindleMove{cp.spindle_rpm}});
       st_.rpm = cp.spindle_rpm;
     }
     comment("entity " + e_.label() + ": " + e_.type + ", degree " + std::to_string(s_.degree_u()) + " x " +
@@ -154,35 +145,31 @@ class SurfaceEmitter {
   }
   void retract() {
     if (st_.pos_known && st_.pos.z == safe_) return;
-    Move up;
-    up.kind = MoveKind::rapid;
+    RapidMove up;
     up.to = {st_.pos_known ? st_.pos.x : 0, st_.pos_known ? st_.pos.y : 0, safe_};
-    if (!st_.pos_known) up.axes = 4;  // position unknown: Z only
-    push(up);
+    if (!st_.pos_known) up.axes = kAxisZ;  // position unknown: Z only
+    push({up});
     st_.pos = up.to;
     st_.pos_known = true;
   }
   void go_to(const Vec3& p) {  // retract, rapid over, plunge
     if (st_.pos_known && st_.pos == p) return;
     retract();
-    Move over;
-    over.kind = MoveKind::rapid;
+    RapidMove over;
     over.to = {p.x, p.y, safe_};
-    push(over);
-    Move plunge;
-    plunge.kind = MoveKind::linear;
+    push({over});
+    LineMove plunge;
     plunge.to = p;
     plunge.feed = c_.params.plunge_feed;
-    push(plunge);
+    push({plunge});
     st_.pos = p;
   }
   void feed_to(const Vec3& p) {
     if (st_.pos == p) return;
-    Move m;
-    m.kind = MoveKind::linear;
-    m.to = p;
-    m.feed = c_.params.feed;
-    push(m);
+    LineMove l;
+    l.to = p;
+    l.feed = c_.params.feed;
+    push({l});
     ++rep_.blocks;
     rep_.length += dist(st_.pos, p);
     st_.pos = p;

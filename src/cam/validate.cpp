@@ -12,14 +12,14 @@ namespace {
 
 // Extent of a G17 arc from `from` to `to` around `c`: the ends plus every
 // axis extreme the sweep passes.
-Box3 arc_box(const Vec3& from, const Move& m) {
+Box3 arc_box(const Vec3& from, const ArcMove& m) {
   Box3 b;
   b.add(from);
   b.add(m.to);
   const double r = std::hypot(from.x - m.center.x, from.y - m.center.y);
   double a0 = std::atan2(from.y - m.center.y, from.x - m.center.x);
   double a1 = std::atan2(m.to.y - m.center.y, m.to.x - m.center.x);
-  const bool ccw = m.kind == MoveKind::arc_ccw;
+  const bool ccw = m.ccw;
   double sweep = ccw ? a1 - a0 : a0 - a1;
   while (sweep <= 0) sweep += 2 * std::numbers::pi;
   for (int q = 0; q < 4; ++q) {
@@ -64,46 +64,41 @@ void validate_program(const Program& p, const MachineProfile& m) {
   Vec3 pos;
   unsigned known = 0;
   for (const Move& mv : p.moves) {
-    switch (mv.kind) {
-      case MoveKind::rapid:
-      case MoveKind::linear:
-      case MoveKind::arc_cw:
-      case MoveKind::arc_ccw:
-      case MoveKind::nurbs:
-      case MoveKind::bezier: break;
-      default: continue;
-    }
-    if (mv.kind != MoveKind::rapid && mv.feed > max_feed)
+    const Motion* mo = motion_of(mv);
+    if (!mo) continue;
+    const bool rapid = is_rapid(mv);
+    if (!rapid && mo->feed > max_feed)
       throw InputError("program.feed", where(mv),
-                       "feed " + fmt_num(mv.feed) + " " + unit + "/min exceeds the maximum feed of machine \"" +
+                       "feed " + fmt_num(mo->feed) + " " + unit + "/min exceeds the maximum feed of machine \"" +
                            m.name + "\" (" + fmt_num(max_feed) + " " + unit + "/min); lower \"feed\" or \"plunge_feed\"");
-    if (mv.kind != MoveKind::rapid && !(mv.feed > 0))
+    if (!rapid && !(mo->feed > 0))
       throw std::logic_error("cutting move without a feed");
     Box3 b;
     Vec3 to = pos;
     for (int a = 0; a < 3; ++a)
-      if (mv.axes & (1u << a)) to[a] = mv.to[a];
-    if (mv.kind == MoveKind::arc_cw || mv.kind == MoveKind::arc_ccw) {
+      if (mo->axes & (1u << a)) to[a] = mo->to[a];
+    if (const auto* arc = std::get_if<ArcMove>(&mv.what)) {
       if (!m.arcs)
         throw InputError("program.arcs", where(mv), "machine \"" + m.name + "\" does not take arcs (\"arcs\": false)");
       // The emitters keep printed arcs within the controller's radius check.
-      const double rs = std::hypot(pos.x - mv.center.x, pos.y - mv.center.y);
-      const double re = std::hypot(to.x - mv.center.x, to.y - mv.center.y);
+      const double rs = std::hypot(pos.x - arc->center.x, pos.y - arc->center.y);
+      const double re = std::hypot(to.x - arc->center.x, to.y - arc->center.y);
       if (std::abs(rs - re) > m.arc_tolerance_mm * k * (1 + 1e-9))
         throw std::logic_error("internal check failed: an arc's radii differ by " + fmt_num(std::abs(rs - re)));
-      b = arc_box(pos, mv);
+      b = arc_box(pos, *arc);
       b.add(to);
     } else {
       b.add(to);
-      for (const auto& c : mv.ctrl) b.add(c);  // NURBS / Bézier: hull contains the curve
+      if (const auto* cv = std::get_if<CurveMove>(&mv.what))
+        for (const auto& c : cv->ctrl) b.add(c);  // NURBS / Bézier: hull contains the curve
     }
-    check_box(mv, b, mv.axes | known);
-    const bool moves_xy = (mv.axes & 3) && ((known & 3) != 3 || to.x != pos.x || to.y != pos.y);
-    if (mv.kind == MoveKind::rapid && moves_xy && (to.z < p.safe_z || ((known & 4) && pos.z < p.safe_z)))
+    check_box(mv, b, mo->axes | known);
+    const bool moves_xy = (mo->axes & 3) && ((known & 3) != 3 || to.x != pos.x || to.y != pos.y);
+    if (rapid && moves_xy && (to.z < p.safe_z || ((known & 4) && pos.z < p.safe_z)))
       throw InputError("program.rapid-below-safe-z", where(mv),
                        "a rapid move would cross the part below safe Z (" + fmt_num(p.safe_z) + " " + unit + ")");
     pos = to;
-    known |= mv.axes;
+    known |= mo->axes;
   }
 }
 

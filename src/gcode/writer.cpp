@@ -101,33 +101,41 @@ class Writer {
   }
 
   void move(const Move& mv) {
-    switch (mv.kind) {
-      case MoveKind::comment: line(comment(mv.text)); break;
-      case MoveKind::tool_change: line(replace_all(m_.tool_change, "{tool}", std::to_string(mv.tool))); break;
-      case MoveKind::spindle_on: line(replace_all(m_.spindle_on, "{rpm}", std::to_string(std::llround(mv.rpm)))); break;
-      case MoveKind::spindle_off: line(m_.spindle_off); break;
-      case MoveKind::rapid:
-      case MoveKind::linear: {
-        const std::string a = axes(mv.to, mv.axes);
-        for (int k = 0; k < 3; ++k)
-          if (mv.axes & (1u << k)) pos_[k] = mv.to[k];
-        if (a.empty()) return;  // no motion once printed: nothing to say
-        const bool rapid = mv.kind == MoveKind::rapid;
-        const std::string g = motion(rapid ? m_.word_rapid : m_.word_feed);
-        line(join({g, a, rapid ? "" : feed(mv.feed)}));
-        break;
-      }
-      case MoveKind::arc_cw:
-      case MoveKind::arc_ccw: arc(mv); break;
-      case MoveKind::nurbs:
-        if (m_.nurbs == NurbsDialect::fanuc) fanuc_block(mv);
-        else if (m_.nurbs == NurbsDialect::linuxcnc) g52_block(mv);
-        else throw std::logic_error("a NURBS move for a machine without a NURBS dialect");
-        break;
-      case MoveKind::bezier:
-        if (m_.nurbs != NurbsDialect::linuxcnc) throw std::logic_error("a G5/G5.1 move for a machine without them");
-        g5(mv);
-        break;
+    if (const auto* c = std::get_if<Comment>(&mv.what)) {
+      line(comment(c->text));
+    } else if (const auto* t = std::get_if<ToolChange>(&mv.what)) {
+      line(replace_all(m_.tool_change, "{tool}", std::to_string(t->tool)));
+    } else if (const auto* sp = std::get_if<SpindleMove>(&mv.what)) {
+      line(sp->rpm > 0 ? replace_all(m_.spindle_on, "{rpm}", std::to_string(std::llround(sp->rpm))) : m_.spindle_off);
+    } else if (const auto* a = std::get_if<ArcMove>(&mv.what)) {
+      arc(*a);
+    } else if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {
+      curve(*cv);
+    } else {
+      straight(*motion_of(mv), is_rapid(mv));
+    }
+  }
+
+  // G00 / G01: only the axes that change (modal), no line at all when none does.
+  void straight(const Motion& mv, bool rapid) {
+    const std::string a = axes(mv.to, mv.axes);
+    for (int k = 0; k < 3; ++k)
+      if (mv.axes & (1u << k)) pos_[k] = mv.to[k];
+    if (a.empty()) return;  // no motion once printed: nothing to say
+    const std::string g = motion(rapid ? m_.word_rapid : m_.word_feed);
+    line(join({g, a, rapid ? "" : feed(mv.feed)}));
+  }
+
+  void curve(const CurveMove& mv) {
+    if (mv.form == CurveMove::Form::bezier) {
+      if (m_.nurbs != NurbsDialect::linuxcnc) throw std::logic_error("a G5/G5.1 move for a machine without them");
+      g5(mv);
+    } else if (m_.nurbs == NurbsDialect::fanuc) {
+      fanuc_block(mv);
+    } else if (m_.nurbs == NurbsDialect::linuxcnc) {
+      g52_block(mv);
+    } else {
+      throw std::logic_error("a NURBS move for a machine without a NURBS dialect");
     }
   }
 
@@ -147,9 +155,9 @@ class Writer {
   // the centre as I and J relative to the start (the active plane's words
   // only: some controllers reject K in G17), Z only if it changes (which
   // bezcam's arcs never do). The word is always printed.
-  void arc(const Move& mv) {
+  void arc(const ArcMove& mv) {
     const Vec3 from = pos_;
-    const std::string g = mv.kind == MoveKind::arc_cw ? m_.word_cw : m_.word_ccw;
+    const std::string g = mv.ccw ? m_.word_ccw : m_.word_cw;
     axis_[0].clear();
     axis_[1].clear();
     const std::string a = axes(mv.to, mv.axes);
@@ -162,7 +170,7 @@ class Writer {
   // Fanuc-style block (docs/gcode-dialects.md): start word, P rank and the first
   // control point (the current position) with its knot and weight, one
   // K X Y Z R block per further point, then the remaining knots alone.
-  void fanuc_block(const Move& mv) {
+  void fanuc_block(const CurveMove& mv) {
     const bool fx = m_.nurbs_fixed_decimals;
     auto coord = [&](double v) { return fx ? fixed(v, p_.decimals) : num(v); };
     auto knot = [&](double k) {
@@ -184,7 +192,7 @@ class Writer {
   // LinuxCNC G5.2 ... G5.3: the current position is the first point; its
   // weight and the order on the G5.2 line; X Y P per further point (P
   // always: older versions do not default it to 1).
-  void g52_block(const Move& mv) {
+  void g52_block(const CurveMove& mv) {
     auto w = [&](size_t i) { return "P" + format_number(mv.weights.empty() ? 1.0 : mv.weights[i], m_.weight_decimals); };
     line(join({"G5.2", w(0), "L" + std::to_string(mv.order), feed(mv.feed)}));
     for (size_t i = 1; i < mv.ctrl.size(); ++i)
@@ -196,7 +204,7 @@ class Writer {
 
   // LinuxCNC G5 (cubic: I J = P1 - P0, P Q = P2 - P3) and G5.1 (quadratic:
   // I J = P1 - P0), X and Y always, Z never.
-  void g5(const Move& mv) {
+  void g5(const CurveMove& mv) {
     const auto& c = mv.ctrl;
     const Vec3& to = c.back();
     std::string s = std::string(c.size() == 4 ? "G5" : "G5.1") + " X" + num(to.x) + " Y" + num(to.y) + " I" +

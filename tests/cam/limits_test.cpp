@@ -137,11 +137,11 @@ TEST(Limits, AProgramOverTheLineLimitIsRefusedNamingTheEntity) {
   // Line counting: an exact-curve block prints a line per control point and
   // per knot-only block.
   Program p;
-  Move nurbs;
-  nurbs.kind = MoveKind::nurbs;
+  CurveMove nurbs;
+  nurbs.form = CurveMove::Form::nurbs;
   nurbs.ctrl.resize(5);
   nurbs.order = 4;
-  p.moves = {Move{}, nurbs, Move{}};
+  p.moves = {Move{}, Move{nurbs}, Move{}};
   EXPECT_EQ(program_lines(p), 1u + 9u + 1u);
   EXPECT_EQ(program_lines(p, 2), 1u);
   // An entity that takes the program past the limit is named.
@@ -149,11 +149,11 @@ TEST(Limits, AProgramOverTheLineLimitIsRefusedNamingTheEntity) {
                                      {"id": "b", "type": "bezier", "points": [[0,0],[1,1]]})"),
                           "job.json");
   ProgramLength length;
-  p.moves[1].ctrl.resize(kMaxProgramLines - 20);  // one huge block, not millions of moves
+  std::get<CurveMove>(p.moves[1].what).ctrl.resize(kMaxProgramLines - 20);  // one huge block, not millions of moves
   length.after_entity(p, j, j.entities[0]);
   EXPECT_EQ(length.lines(), kMaxProgramLines - 20 + 4 + 2);
-  p.moves.push_back(nurbs);
-  p.moves.back().ctrl.resize(30);
+  nurbs.ctrl.resize(30);
+  p.moves.push_back({nurbs});
   const Refusal r = refusal_of([&] { length.after_entity(p, j, j.entities[1]); });
   EXPECT_EQ(r.id, "limit.program-length");
   EXPECT_EQ(r.where, "job.json: entities[1]");

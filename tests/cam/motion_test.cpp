@@ -13,35 +13,31 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 Move rapid(Vec3 to, unsigned axes = 7) {
-  Move m;
-  m.kind = MoveKind::rapid;
+  RapidMove m;
   m.to = to;
   m.axes = axes;
-  return m;
+  return {m};
 }
-Move feed(MoveKind k, Vec3 to, double f, int entity = 0) {
-  Move m;
-  m.kind = k;
+Move line(Vec3 to, double f, int entity = 0) {
+  LineMove m;
   m.to = to;
   m.feed = f;
-  m.entity = entity;
-  return m;
+  return {m, entity};
 }
 
 TEST(ProgramMotion, FollowsModalAxesAndSkipsNonMotion) {
   Program p;
   p.moves.push_back(rapid({0, 0, 5}, 4));  // Z only: X and Y still unknown
-  Move t;
-  t.kind = MoveKind::tool_change;
-  p.moves.push_back(t);
+  p.moves.push_back({ToolChange{1}});
   p.moves.push_back(rapid({10, 0, 0}, 3));  // X Y only: Z stays 5
-  p.moves.push_back(feed(MoveKind::linear, {10, 0, -1}, 100));
-  Move c;
-  c.kind = MoveKind::comment;
-  p.moves.push_back(c);
-  Move arc = feed(MoveKind::arc_ccw, {0, 10, -1}, 200);
+  p.moves.push_back(line({10, 0, -1}, 100));
+  p.moves.push_back({Comment{"a comment"}});
+  ArcMove arc;
+  arc.to = {0, 10, -1};
+  arc.feed = 200;
+  arc.ccw = true;
   arc.center = {0, 0, 0};
-  p.moves.push_back(arc);
+  p.moves.push_back({arc, 0});
 
   const auto m = program_motion(p);
   ASSERT_EQ(m.size(), 4u);

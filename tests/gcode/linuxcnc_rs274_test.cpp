@@ -129,38 +129,31 @@ struct Expected {
 std::vector<Expected> expected_calls(const Program& p) {
   std::vector<Expected> out;
   std::string printed[3];
-  for (const Move& mv : p.moves) {
+  for (const Move& move : p.moves) {
+    const Motion* mv = motion_of(move);
+    if (!mv) continue;
     Expected e;
-    e.to = mv.to;
-    e.axes = mv.axes;
-    switch (mv.kind) {
-      case MoveKind::rapid:
-      case MoveKind::linear: {
-        // The writer prints only what changes; a move that changes nothing
-        // as printed is not written at all.
-        bool changes = false;
-        for (int a = 0; a < 3; ++a)
-          if ((mv.axes & (1u << a)) && format_number(mv.to[a], p.decimals) != printed[a]) changes = true;
-        if (!changes) continue;
-        e.name = mv.kind == MoveKind::rapid ? "STRAIGHT_TRAVERSE" : "STRAIGHT_FEED";
-        break;
-      }
-      case MoveKind::arc_cw:
-      case MoveKind::arc_ccw:
-        e.name = "ARC_FEED";
-        e.center = mv.center;
-        e.rotation = mv.kind == MoveKind::arc_cw ? -1 : 1;
-        break;
-      case MoveKind::bezier:
-      case MoveKind::nurbs:
-        e.name = "NURBS_FEED";
-        e.order = mv.order;
-        e.axes = 3;
-        break;
-      default: continue;
+    e.to = mv->to;
+    e.axes = mv->axes;
+    if (const auto* arc = std::get_if<ArcMove>(&move.what)) {
+      e.name = "ARC_FEED";
+      e.center = arc->center;
+      e.rotation = arc->ccw ? 1 : -1;
+    } else if (const auto* cv = std::get_if<CurveMove>(&move.what)) {
+      e.name = "NURBS_FEED";
+      e.order = cv->order;
+      e.axes = 3;
+    } else {
+      // The writer prints only what changes; a move that changes nothing
+      // as printed is not written at all.
+      bool changes = false;
+      for (int a = 0; a < 3; ++a)
+        if ((mv->axes & (1u << a)) && format_number(mv->to[a], p.decimals) != printed[a]) changes = true;
+      if (!changes) continue;
+      e.name = is_rapid(move) ? "STRAIGHT_TRAVERSE" : "STRAIGHT_FEED";
     }
     for (int a = 0; a < 3; ++a)
-      if (e.axes & (1u << a)) printed[a] = format_number(mv.to[a], p.decimals);
+      if (e.axes & (1u << a)) printed[a] = format_number(mv->to[a], p.decimals);
     out.push_back(e);
   }
   return out;

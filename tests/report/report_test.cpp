@@ -15,14 +15,14 @@
 namespace bezcam {
 namespace {
 
-Move mv(MoveKind k, Vec3 to, double f, int entity, unsigned axes = 7) {
-  Move m;
-  m.kind = k;
+enum class Kind { rapid, linear };
+Move mv(Kind k, Vec3 to, double f, int entity, unsigned axes = 7) {
+  Motion m;
   m.to = to;
   m.feed = f;
-  m.entity = entity;
   m.axes = axes;
-  return m;
+  if (k == Kind::rapid) return {RapidMove{m}, entity};
+  return {LineMove{m}, entity};
 }
 
 // A 10 x 10 square cut at depth 1 after a retract and a rapid 10 away.
@@ -31,11 +31,11 @@ Program square_program() {
   p.machine = "test";
   p.units = Units::mm;
   p.tolerance = 0.01;
-  p.moves = {mv(MoveKind::rapid, {0, 0, 5}, 0, 0, 4), mv(MoveKind::rapid, {0, 0, 5}, 0, 0),
-             mv(MoveKind::rapid, {10, 0, 5}, 0, 0),   mv(MoveKind::linear, {10, 0, -1}, 60, 0),
-             mv(MoveKind::linear, {20, 0, -1}, 600, 0), mv(MoveKind::linear, {20, 10, -1}, 600, 0),
-             mv(MoveKind::linear, {10, 10, -1}, 600, 0), mv(MoveKind::linear, {10, 0, -1}, 600, 0),
-             mv(MoveKind::rapid, {10, 0, 5}, 0, 0)};
+  p.moves = {mv(Kind::rapid, {0, 0, 5}, 0, 0, 4), mv(Kind::rapid, {0, 0, 5}, 0, 0),
+             mv(Kind::rapid, {10, 0, 5}, 0, 0),   mv(Kind::linear, {10, 0, -1}, 60, 0),
+             mv(Kind::linear, {20, 0, -1}, 600, 0), mv(Kind::linear, {20, 10, -1}, 600, 0),
+             mv(Kind::linear, {10, 10, -1}, 600, 0), mv(Kind::linear, {10, 0, -1}, 600, 0),
+             mv(Kind::rapid, {10, 0, 5}, 0, 0)};
   EntityReport r;
   r.label = "square";
   r.type = "path";

@@ -6,38 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "bezcam/cam/move.hpp"
 #include "bezcam/job/job.hpp"
 #include "bezcam/cam/machine_profile.hpp"
 
 namespace bezcam {
-
-enum class MoveKind {
-  comment,      ///< text
-  rapid,        ///< G00 to `to` (only at or above safe Z, or straight up to it)
-  linear,       ///< G01 to `to` at `feed`
-  arc_cw,       ///< G02 in G17 to `to` around `center` at `feed`
-  arc_ccw,      ///< G03
-  nurbs,        ///< exact curve block: `ctrl` (first = current position), `weights`, `knots`, `order`
-  bezier,       ///< LinuxCNC G5 (cubic) / G5.1 (quadratic): `ctrl` = P0..Pn
-  tool_change,  ///< `tool`
-  spindle_on,   ///< `rpm`
-  spindle_off,
-};
-
-struct Move {
-  MoveKind kind = MoveKind::comment;
-  Vec3 to;                    ///< end point (printed values: already rounded)
-  unsigned axes = 7;          ///< which of X (1), Y (2), Z (4) `to` sets
-  double feed = 0;            ///< units/min
-  Vec3 center;                ///< arcs: absolute centre (rounded as printed I/J)
-  std::vector<Vec3> ctrl;     ///< nurbs / bezier control points
-  std::vector<double> weights, knots;
-  int order = 0;              ///< nurbs: degree + 1
-  int tool = 0;
-  double rpm = 0;
-  std::string text;           ///< comment
-  int entity = -1;            ///< index of the entity it cuts, -1 for none
-};
 
 /// What was asked for and achieved, per entity.
 struct EntityReport {

@@ -1,0 +1,80 @@
+#pragma once
+/// The canonical move: one instruction of a program, before any text.
+/// Program building (program.hpp) makes them, validation (validate.hpp)
+/// checks them as a whole, the G-code writer (gcode/writer.hpp) prints them
+/// in a profile's dialect. One type, a variant: each alternative holds what
+/// that instruction needs and nothing else.
+///
+/// Coordinates are program coordinates in the job's units, already rounded
+/// to the decimals they will be printed with (so what is validated and
+/// measured is what the controller will read). Axis words are modal: a
+/// motion sets only the axes named in `axes`.
+#include <type_traits>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "bezcam/kernel/vec.hpp"
+
+namespace bezcam {
+
+/// Which axes a motion's end point sets: X 1, Y 2, Z 4.
+inline constexpr unsigned kAxisX = 1, kAxisY = 2, kAxisZ = 4, kAxesXYZ = 7;
+
+/// What every motion has: where it ends and the feed it runs at.
+struct Motion {
+  Vec3 to;                   ///< end point (printed values)
+  unsigned axes = kAxesXYZ;  ///< which of X, Y, Z `to` sets
+  double feed = 0;           ///< units/min; 0 for rapids
+};
+
+/// G00: straight, at the machine's rapid rate (only at or above safe Z, or
+/// straight up to it).
+struct RapidMove : Motion {};
+/// G01: straight, at `feed`.
+struct LineMove : Motion {};
+/// G02 (clockwise) / G03 in G17, around `center` (absolute; printed as I, J
+/// relative to the start).
+struct ArcMove : Motion {
+  Vec3 center;
+  bool ccw = false;
+};
+/// An exact curve block: a NURBS block (Fanuc G06.2 / LinuxCNC G5.2) or a
+/// LinuxCNC G5 / G5.1 Bézier move. `ctrl` starts at the current position.
+struct CurveMove : Motion {
+  enum class Form { nurbs, bezier };
+  Form form = Form::nurbs;
+  std::vector<Vec3> ctrl;
+  std::vector<double> weights;  ///< nurbs: one per point (empty: all 1)
+  std::vector<double> knots;    ///< nurbs: ctrl.size() + order values
+  int order = 0;                ///< degree + 1
+};
+/// M06 with a T word.
+struct ToolChange {
+  int tool = 0;
+};
+/// Spindle on at `rpm` (> 0), or off (0).
+struct SpindleMove {
+  double rpm = 0;
+};
+/// A comment line.
+struct Comment {
+  std::string text;
+};
+
+struct Move {
+  std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChange, SpindleMove, Comment> what;
+  int entity = -1;  ///< index of the job entity it cuts, -1 for none
+};
+
+/// The motion part of a move; null for tool changes, spindle and comments.
+inline const Motion* motion_of(const Move& m) {
+  return std::visit([](const auto& x) -> const Motion* {
+    if constexpr (std::is_base_of_v<Motion, std::decay_t<decltype(x)>>) return &x;
+    else return nullptr;
+  }, m.what);
+}
+/// Whether the move is a rapid (G00).
+inline bool is_rapid(const Move& m) { return std::holds_alternative<RapidMove>(m.what); }
+
+}  // namespace bezcam
