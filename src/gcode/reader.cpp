@@ -92,20 +92,7 @@ bool is_cutting(BlockKind k) { return k != BlockKind::rapid; }
 std::string pt(const Vec3& p) { return "(" + fmt_num(p.x) + ", " + fmt_num(p.y) + ", " + fmt_num(p.z) + ")"; }
 
 // Box of an arc (G17): both ends and every axis extreme the sweep passes.
-Box3 arc_box(const MotionBlock& b) {
-  Box3 box;
-  box.add(b.from);
-  box.add(b.to);
-  const double sweep = arc_sweep(b);
-  const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
-  const bool ccw = b.kind == BlockKind::arc_ccw;
-  for (int q = -8; q <= 8; ++q) {
-    const double a = q * std::numbers::pi / 2;
-    const double d = ccw ? a - a0 : a0 - a;  // angle travelled to reach a
-    if (d > 0 && d < sweep) box.add(evaluate_block(b, d / sweep));
-  }
-  return box;
-}
+Box3 arc_box(const MotionBlock& b) { return xy_box(block_arc(b)); }
 
 }  // namespace
 
