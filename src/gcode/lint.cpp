@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "bezcam/gcode/lint.hpp"
+
 #include "interpreter_impl.hpp"
 
 namespace bezcam {
