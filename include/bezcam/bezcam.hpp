@@ -44,6 +44,7 @@
 
 // gcode/: text in the profile's dialect, and back
 #include "bezcam/gcode/convert.hpp"
+#include "bezcam/gcode/lint.hpp"
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/gcode/writer.hpp"

@@ -12,27 +12,6 @@ namespace bezcam {
 
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
-
-// A G17 arc's start angle, signed sweep and radii at both ends, for its
-// length and its sampling (printed ends may sit at slightly different
-// radii; the tool follows a spiral between them, as evaluate_block does).
-struct ArcParams {
-  double a0, sweep, r0, r1;
-};
-
-ArcParams arc_params(const MotionBlock& b) {
-  const double r0 = std::hypot(b.from.x - b.center.x, b.from.y - b.center.y);
-  const double r1 = std::hypot(b.to.x - b.center.x, b.to.y - b.center.y);
-  const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
-  const double a1 = std::atan2(b.to.y - b.center.y, b.to.x - b.center.x);
-  const bool ccw = b.kind == BlockKind::arc_ccw;
-  double sweep = ccw ? a1 - a0 : a0 - a1;
-  while (sweep <= 0) sweep += kTwoPi;  // equal ends: a full circle
-  while (sweep > kTwoPi) sweep -= kTwoPi;
-  return {a0, ccw ? sweep : -sweep, r0, r1};
-}
-
 bool is_arc(const MotionBlock& b) { return b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw; }
 
 // A block for evaluation at t in [0, 1]: the reader's evaluate_block()
@@ -133,8 +112,9 @@ double block_length(const MotionBlock& b) {
     case BlockKind::linear: return dist(b.from, b.to);
     case BlockKind::arc_cw:
     case BlockKind::arc_ccw: {
-      const ArcParams a = arc_params(b);
-      if (a.r0 == a.r1) return std::hypot(a.r0 * a.sweep, b.to.z - b.from.z);  // helix: exact
+      const Arc a = block_arc(b);
+      const double r0 = a.r_start(), r1 = a.r_end();
+      if (r0 == r1) return std::hypot(r0 * a.sweep(), b.to.z - b.from.z);  // helix: exact
       break;  // a spiral: by chords below
     }
     default: break;
@@ -158,10 +138,10 @@ std::vector<Vec3> sample_block(const MotionBlock& b, double chord) {
   std::vector<Vec3> out{b.from};
   if (is_arc(b)) {
     // Chord error of an arc step dθ at radius r is r (1 - cos(dθ/2)).
-    const ArcParams a = arc_params(b);
-    const double r = std::max({a.r0, a.r1, 1e-300});
+    const Arc a = block_arc(b);
+    const double r = std::max({a.r_start(), a.r_end(), 1e-300});
     const double dtheta = 2 * std::acos(std::clamp(1 - chord / r, -1.0, 1.0));
-    const int n = std::clamp(static_cast<int>(std::ceil(std::abs(a.sweep) / std::max(dtheta, 1e-9))), 1, 1 << 20);
+    const int n = std::clamp(static_cast<int>(std::ceil(a.sweep() / std::max(dtheta, 1e-9))), 1, 1 << 20);
     for (int i = 1; i <= n; ++i) out.push_back(evaluate_block(b, double(i) / n));
     return out;
   }
@@ -178,19 +158,9 @@ std::vector<Vec3> sample_block(const MotionBlock& b, double chord) {
   return out;
 }
 
-// The swept angle of a G17 arc, in (0, 2 pi]: equal ends make a full circle
-// (LinuxCNC, Grbl and Fanuc agree).
-double arc_sweep(const MotionBlock& b) {
-  const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
-  const double a1 = std::atan2(b.to.y - b.center.y, b.to.x - b.center.x);
-  const bool ccw = b.kind == BlockKind::arc_ccw;
-  double sweep = ccw ? a1 - a0 : a0 - a1;
-  // Equal ends: a full circle (LinuxCNC, Grbl and Fanuc agree).
-  while (sweep <= 0) sweep += 2 * std::numbers::pi;
-  while (sweep > 2 * std::numbers::pi) sweep -= 2 * std::numbers::pi;
-  if (b.from.x == b.to.x && b.from.y == b.to.y) sweep = 2 * std::numbers::pi;
-  return sweep;
-}
+Arc block_arc(const MotionBlock& b) { return {b.from, b.to, b.center, b.kind == BlockKind::arc_ccw}; }
+
+double arc_sweep(const MotionBlock& b) { return block_arc(b).sweep(); }
 
 namespace {
 
@@ -214,15 +184,7 @@ Vec3 evaluate_block(const MotionBlock& b, double t) {
     case BlockKind::rapid:
     case BlockKind::linear: return lerp(b.from, b.to, t);
     case BlockKind::arc_cw:
-    case BlockKind::arc_ccw: {
-      const double sweep = arc_sweep(b);
-      const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
-      const double a = b.kind == BlockKind::arc_ccw ? a0 + t * sweep : a0 - t * sweep;
-      const double r0 = std::hypot(b.from.x - b.center.x, b.from.y - b.center.y);
-      const double r1 = std::hypot(b.to.x - b.center.x, b.to.y - b.center.y);
-      const double r = r0 + (r1 - r0) * t;
-      return {b.center.x + r * std::cos(a), b.center.y + r * std::sin(a), b.from.z + (b.to.z - b.from.z) * t};
-    }
+    case BlockKind::arc_ccw: return block_arc(b).point(t);
     case BlockKind::bezier: {
       Bezier z;
       z.dim = 3;
@@ -264,22 +226,7 @@ std::vector<Bezier> block_to_bezier(const MotionBlock& b) {
     case BlockKind::arc_cw:
     case BlockKind::arc_ccw: {
       if (b.from.z != b.to.z) throw std::invalid_argument("block_to_bezier: helical arc");
-      const double sweep = arc_sweep(b);
-      const int n = std::max(1, static_cast<int>(std::ceil(sweep / (std::numbers::pi / 2) - 1e-12)));
-      const double th = sweep / n, dir = b.kind == BlockKind::arc_ccw ? 1 : -1;
-      const double r = std::hypot(b.from.x - b.center.x, b.from.y - b.center.y);
-      const double a0 = std::atan2(b.from.y - b.center.y, b.from.x - b.center.x);
-      const Vec3 c{b.center.x, b.center.y, b.from.z};
-      auto on = [&](double a, double rr) { return c + Vec3{rr * std::cos(a), rr * std::sin(a), 0}; };
-      std::vector<Bezier> out;
-      // Rational quadratic arc: middle point at r / cos(th/2) on the
-      // bisector, weight cos(th/2) (The NURBS Book, section 7.3).
-      for (int k = 0; k < n; ++k) {
-        const double s = a0 + dir * th * k, e = s + dir * th, mid = s + dir * th / 2;
-        const Vec3 p0 = k == 0 ? b.from : on(s, r), p2 = k == n - 1 ? b.to : on(e, r);
-        out.push_back(bez({p0, on(mid, r / std::cos(th / 2)), p2}, {1, std::cos(th / 2), 1}));
-      }
-      return out;
+      return bezier_pieces(block_arc(b));
     }
   }
   return {};

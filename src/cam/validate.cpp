@@ -5,30 +5,17 @@
 #include <stdexcept>
 
 #include "bezcam/error.hpp"
+#include "bezcam/kernel/arc.hpp"
 
 namespace bezcam {
 
 namespace {
 
-// Extent of a G17 arc from `from` to `to` around `c`: the ends plus every
-// axis extreme the sweep passes.
-Box3 arc_box(const Vec3& from, const ArcMove& m) {
-  Box3 b;
-  b.add(from);
+// Extent of a G17 arc from `from` to `to` (the modal end point) around its
+// centre: the kernel's Arc box, plus m.to as the move holds it.
+Box3 arc_box(const Vec3& from, const Vec3& to, const ArcMove& m) {
+  Box3 b = xy_box(Arc{from, to, m.center, m.ccw});
   b.add(m.to);
-  const double r = std::hypot(from.x - m.center.x, from.y - m.center.y);
-  double a0 = std::atan2(from.y - m.center.y, from.x - m.center.x);
-  double a1 = std::atan2(m.to.y - m.center.y, m.to.x - m.center.x);
-  const bool ccw = m.ccw;
-  double sweep = ccw ? a1 - a0 : a0 - a1;
-  while (sweep <= 0) sweep += 2 * std::numbers::pi;
-  for (int q = 0; q < 4; ++q) {
-    const double a = q * std::numbers::pi / 2;
-    double d = ccw ? a - a0 : a0 - a;
-    while (d < 0) d += 2 * std::numbers::pi;
-    while (d >= 2 * std::numbers::pi) d -= 2 * std::numbers::pi;
-    if (d <= sweep) b.add({m.center.x + r * std::cos(a), m.center.y + r * std::sin(a), from.z});
-  }
   return b;
 }
 
@@ -85,8 +72,7 @@ void validate_program(const Program& p, const MachineProfile& m) {
       const double re = std::hypot(to.x - arc->center.x, to.y - arc->center.y);
       if (std::abs(rs - re) > m.arc_tolerance_mm * k * (1 + 1e-9))
         throw std::logic_error("internal check failed: an arc's radii differ by " + fmt_num(std::abs(rs - re)));
-      b = arc_box(pos, *arc);
-      b.add(to);
+      b = arc_box(pos, to, *arc);
     } else {
       b.add(to);
       if (const auto* cv = std::get_if<CurveMove>(&mv.what))

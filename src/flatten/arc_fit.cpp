@@ -261,23 +261,6 @@ std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, do
 
 }  // namespace
 
-double PrintedArc::r_start() const { return dist2(from, center); }
-double PrintedArc::r_end() const { return dist2(to, center); }
-
-double PrintedArc::sweep() const {
-  const double ang = directed_angle(from - center, to - center, ccw);
-  return ang > 0 ? ang : ang + 2 * kPi;
-}
-
-Vec3 PrintedArc::point(double s) const {
-  if (s <= 0) return from;
-  if (s >= 1) return to;
-  const double a0 = std::atan2(from.y - center.y, from.x - center.x);
-  const double a = a0 + (ccw ? 1 : -1) * s * sweep();
-  const double r = r_start() + s * (r_end() - r_start());
-  return {center.x + r * std::cos(a), center.y + r * std::sin(a), from.z};
-}
-
 bool planar_xy(const Bezier& piece) {
   for (const auto& p : piece.points)
     if (p.z != piece.points.front().z) return false;

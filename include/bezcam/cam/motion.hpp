@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bezcam/cam/program.hpp"
+#include "bezcam/kernel/arc.hpp"
 
 namespace bezcam {
 
@@ -41,6 +42,9 @@ Vec3 evaluate_block(const MotionBlock& b, double t);
 /// at `to`). Helical arcs (Z varies) throw std::invalid_argument, as do
 /// NURBS blocks that cannot be decomposed (lint-recovered bad knots).
 std::vector<Bezier> block_to_bezier(const MotionBlock& b);
+
+/// The printed arc of an arc block (arc_cw or arc_ccw).
+Arc block_arc(const MotionBlock& b);
 
 /// Swept angle of a G17 arc block, in (0, 2 pi] (equal ends: a full circle).
 double arc_sweep(const MotionBlock& b);

@@ -28,6 +28,7 @@
 #include <span>
 #include <vector>
 
+#include "bezcam/kernel/arc.hpp"
 #include "bezcam/kernel/bezier.hpp"
 
 namespace bezcam {
@@ -75,18 +76,10 @@ ArcFitResult fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt);
 /// condition). 2D pieces always do.
 bool planar_xy(const Bezier& piece);
 
-/// A printed G17 arc: what the controller knows.
-struct PrintedArc {
-  Vec3 from, to, center;  ///< as printed (center = from + I/J)
-  bool ccw = true;
-  /// Swept angle in (0, 2 pi], in the arc's direction.
-  double sweep() const;
-  double r_start() const;
-  double r_end() const;
-  /// Point of the drawn path at s in [0,1]: angle from + s * sweep, radius
-  /// r_start + s * (r_end - r_start), z = from.z (the model the bound uses).
-  Vec3 point(double s) const;
-};
+/// A printed G17 arc: what the controller knows (from, to, center = from +
+/// I/J, direction). The fitted pieces are planar, so its point(s) keeps
+/// z = from.z: the model the bound uses.
+using PrintedArc = Arc;
 
 /// Rigorous upper bound of the two-sided distance between the XY part of the
 /// curve span (piece on [t0, t1], which must start at S = M(t0) and end at

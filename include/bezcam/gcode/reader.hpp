@@ -13,6 +13,7 @@
 
 #include "bezcam/cam/machine_profile.hpp"
 #include "bezcam/cam/motion.hpp"
+#include "bezcam/gcode/lint.hpp"  // GcodeFinding, lint_gcode()
 
 namespace bezcam {
 
@@ -33,13 +34,6 @@ struct MachineState {
   bool spindle_on = false;
   int tool = 0;
   bool program_end = false;  ///< M02 / M30 seen
-};
-
-/// A problem in a program, naming its line.
-struct GcodeFinding {
-  int line = 0;
-  std::string id;       ///< stable id, e.g. gcode.knot-order
-  std::string message;  ///< what is wrong and what was expected
 };
 
 /// Streaming interpreter: feed it lines in order.
@@ -89,7 +83,7 @@ class GcodeInterpreter {
   const MachineState& state() const { return state_; }
 
  private:
-  struct Impl;  // the interpretation of one line (gcode_reader.cpp)
+  struct Impl;  // the interpretation of one line (src/gcode/interpreter_impl.hpp)
   friend std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile& profile);
 
   // Everything beyond MachineState that later lines depend on. A line is
@@ -134,18 +128,5 @@ std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile*
 /// nurbs_additional_functions.cc): k zeros, then 1, 2, ..., n_points - k,
 /// then k times n_points - k + 1.
 std::vector<double> linuxcnc_knots(size_t n_points, int order);
-
-/// Checks a program against a profile; every finding names its line.
-/// Syntax, knot order and counts and the other NURBS block rules, arcs valid
-/// after rounding, travel limits and feeds: everything read_gcode() refuses,
-/// but all of it (a line with an error is skipped, recoverable problems such
-/// as a decreasing knot are reported and the values kept, so that every
-/// decreasing knot is listed). Beyond the reader, it flags: a first move
-/// before G20/G21, G90 and G17 are all set; cutting from an unknown
-/// position; cutting with the spindle stopped; a rapid that lowers Z while
-/// moving in X or Y; M06 without a T word; N numbers that do not increase;
-/// a NURBS block whose interior knot of multiplicity P lets the curve jump;
-/// no M02/M30. Sorted by line.
-std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile& profile);
 
 }  // namespace bezcam

@@ -1,0 +1,157 @@
+#pragma once
+// The interpretation of one G-code line (GcodeInterpreter::Impl), private
+// to src/gcode. A line is lexed into words (lexer.hpp), checked completely
+// on copies of the modal state and only then committed by feed_line().
+// Its parts live in one file per concept:
+//   reader.cpp           the line's order, plain motions (G00-G03), the
+//                        multi-line block machinery, feed_line(), read_gcode()
+//   modal_state.cpp      modal groups, the non-motion words (F S T M G17 G21 ...)
+//   fanuc_nurbs.cpp      the Fanuc-style G06.2 / G06.3 NURBS block
+//   linuxcnc_curves.cpp  LinuxCNC G5, G5.1 and G5.2 ... G5.3
+//   lint.cpp             lint_gcode() and the checks only lint makes
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "bezcam/error.hpp"
+#include "bezcam/gcode/reader.hpp"
+#include "diagnostics.hpp"
+#include "lexer.hpp"
+
+namespace bezcam {
+
+namespace gcode {
+
+/// Radius mismatch allowed at the ends of an arc without a profile (mm):
+/// the profiles' default, LinuxCNC's order of magnitude.
+inline constexpr double kDefaultArcToleranceMm = 0.002;
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+inline std::string axis_name(int a) { return std::string(1, "XYZ"[a]); }
+
+/// A G code given x 10 as written canonically (62 -> "G6.2").
+inline std::string g_text(int code10) {
+  return "G" + std::to_string(code10 / 10) + (code10 % 10 ? "." + std::to_string(code10 % 10) : "");
+}
+
+inline bool is_fanuc(int c) { return c == 62 || c == 63; }
+inline bool is_cutting(BlockKind k) { return k != BlockKind::rapid; }
+
+/// A point for messages: "(x, y, z)".
+inline std::string pt(const Vec3& p) { return "(" + fmt_num(p.x) + ", " + fmt_num(p.y) + ", " + fmt_num(p.z) + ")"; }
+
+/// The whole text's limit (limits.hpp): a finding when `text` is too large;
+/// the lines' count and length are checked line by line by feed_line().
+std::optional<GcodeFinding> too_large(std::string_view text);
+
+}  // namespace gcode
+
+struct GcodeInterpreter::Impl {
+  const GcodeInterpreter& self;
+  MachineState st;
+  More mo;
+  int line;
+  std::vector<MotionBlock> out;
+  gcode::Line ln;
+  std::string word;  // the line's motion word as written (G06.3, G1, ...), if any
+  // The open block's lists as they were before this line (see feed_line()):
+  // their sizes, and a copy once the line clears or replaces them.
+  struct Lists {
+    std::vector<Vec3> ctrl;
+    std::vector<double> weights, knots;
+    std::vector<int> knot_lines;
+  };
+  std::array<size_t, 4> sizes0{};
+  bool lists_saved = false;
+  Lists saved{};
+
+  // ---- errors: through gcode::Diagnostics (diagnostics.cpp)
+  gcode::Diagnostics diag() const { return {line, self.findings_}; }
+  [[noreturn]] void fail(const std::string& id, const std::string& msg) const { diag().fail(id, msg); }
+  void soft(const std::string& id, const std::string& msg, int at = 0) const { diag().soft(id, msg, at); }
+  void note(const std::string& id, const std::string& msg, int at = 0) const { diag().note(id, msg, at); }
+  bool lint() const { return self.findings_ != nullptr; }
+
+  // ---- words and units
+  // A motion code for messages: as written on this line, else canonical.
+  std::string wt(int code) const { return word.empty() ? gcode::g_text(code) : word; }
+  const char* unit() const { return st.units == Units::mm ? "mm" : "inch"; }
+  double from_mm(double v) const { return v / mm_per_unit(st.units); }
+  std::string machine() const { return self.profile_ ? " of machine \"" + self.profile_->name + "\"" : ""; }
+  double val(char c) const { return ln.get(c)->value; }
+  std::string txt(char c) const { return ln.get(c)->text; }
+
+  // ---- the line (reader.cpp)
+  void run(std::string_view text);
+  void motion_line(int code, bool explicit_motion);
+  void check_dialect(int code) const;
+  static int start_code(const std::string& word);
+
+  // ---- helpers (reader.cpp)
+  // Target of a move: the current position with the given axis words.
+  std::pair<Vec3, unsigned> target() const;
+  // Start point of a move: unknown axes take the end's value.
+  Vec3 start_for(const Vec3& to) const;
+  void require_xy_known(const std::string& what) const;
+  void require_feed(const std::string& what) const;
+  // Travel limits of the profile, for the axes given by `axes`.
+  void check_travel(const Box3& b, unsigned axes) const;
+  void check_feed_limit(double feed);
+  MotionBlock block(BlockKind k, const Vec3& to) const;
+  void commit_move(const MotionBlock& b, unsigned axes);
+
+  // ---- motions (reader.cpp)
+  void linear(bool rapid);
+  double arc_tolerance() const;
+  void arc(bool cw);
+
+  // ---- multi-line NURBS blocks, shared by both dialects (reader.cpp)
+  void save_lists();
+  double weight(const gcode::Word& r) const;
+  // Travel and lint checks of a completed NURBS block, then the move.
+  // The NURBS block collected since line mo.open_line (Fanuc G06.2 or
+  // LinuxCNC G5.2), ending at this line, with these knots.
+  void finish_nurbs_block(std::vector<double> knots);
+  void finish_curve_block(MotionBlock& b);
+  void clear_block();
+  void abandon_block();
+
+  // ---- modal groups and non-motion words (modal_state.cpp)
+  void run_modal();
+  // Every word must mean something on this line.
+  void check_letters(int active, bool dwell, bool explicit_motion);
+
+  // ---- Fanuc G06.2 / G06.3 blocks (fanuc_nurbs.cpp)
+  // Lines inside an open multi-line block. Returns true when consumed.
+  bool continue_block();
+  // Knot rules of the Fanuc block (alarms PS1004-PS1009 cover the same).
+  void add_knot(const gcode::Word& k, bool knot_only);
+  void complete_fanuc();
+  void fanuc_start(int code);
+
+  // ---- LinuxCNC G5, G5.1, G5.2 ... G5.3 (linuxcnc_curves.cpp)
+  void g5();
+  void g51();
+  void curve_move(MotionBlock& b, unsigned axes);
+  void g52();
+  // G5.2 block lines: "X- Y- P-" until G5.3.
+  bool continue_g52();
+  void g52_point();
+  void g53();
+
+  // ---- lint-only checks (lint.cpp)
+  // Lint checks shared by every motion.
+  void lint_motion(BlockKind kind, const Vec3& from, const Vec3& to, unsigned axes);
+  // An interior knot of multiplicity = order lets the curve jump from
+  // ctrl[i-1] to ctrl[i]; the reader accepts it (the dialect allows it),
+  // lint flags it when the two points differ.
+  void lint_jumps(const MotionBlock& b);
+  void check_n();
+};
+
+}  // namespace bezcam

@@ -1,0 +1,154 @@
+// LinuxCNC's curve words: G5 (cubic Bézier, I J P Q), G5.1 (quadratic,
+// I J) and the G5.2 ... G5.3 NURBS block (order L, points "X- Y- P-",
+// the interpreter's clamped uniform knots).
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include "interpreter_impl.hpp"
+
+namespace bezcam {
+
+using namespace gcode;
+
+std::vector<double> linuxcnc_knots(size_t n_points, int order) {
+  // knot_vector_creator(n, k) with n = n_points - 1: i < k -> 0,
+  // k <= i <= n -> i - k + 1, else n - k + 2.
+  const long n = static_cast<long>(n_points) - 1, k = order;
+  std::vector<double> U;
+  for (long i = 0; i <= n + k; ++i) U.push_back(static_cast<double>(i < k ? 0 : (i <= n ? i - k + 1 : n - k + 2)));
+  return U;
+}
+
+bool GcodeInterpreter::Impl::continue_g52() {
+  const bool closes = ln.g.size() == 1 && ln.g[0].first == 53;
+  if (closes) return false;  // run_modal() handles G5.3
+  const bool only_points = ln.g.empty() && ln.m.empty() &&
+                           std::all_of(ln.words.begin(), ln.words.end(), [](const Word& w) {
+                             return std::string_view("XYP").find(w.letter) != std::string_view::npos;
+                           });
+  if (!only_points) {
+    std::string msg = "the G5.2 block opened at line " + std::to_string(mo.open_line) +
+                      " is still open: only control points 'X- Y- P-' may follow until G5.3";
+    if (ln.has('Z')) msg = "G5.2 blocks move in X and Y only: a Z word is not allowed (" + txt('Z') + ")";
+    if (!lint()) fail("nurbs-open", msg);
+    soft("nurbs-open", msg);
+    abandon_block();
+    return false;
+  }
+  g52_point();
+  return true;
+}
+
+void GcodeInterpreter::Impl::g52_point() {
+  if (ln.has('X') != ln.has('Y'))
+    fail("nurbs-point", std::string("a G5.2 control point needs both X and Y, found only ") + (ln.has('X') ? txt('X') : txt('Y')));
+  if (!ln.has('X')) fail("nurbs-point", "a G5.2 control point line needs X, Y and P (its weight)");
+  double w = 1;
+  if (!ln.has('P')) soft("weight", "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)");
+  else w = weight(*ln.get('P'));
+  mo.ctrl.push_back({val('X'), val('Y'), st.pos.z});
+  mo.weights.push_back(w);
+}
+
+void GcodeInterpreter::Impl::g5() {
+  st.motion = 50;
+  require_xy_known("G5");
+  require_feed("G5");
+  if (ln.has('I') != ln.has('J')) fail("bezier", "G5 needs both I and J, or neither");
+  if (!ln.has('P') || !ln.has('Q'))
+    fail("bezier", "G5 needs both P and Q (the second control point's offset from the end point)");
+  Vec3 ij;
+  if (ln.has('I')) ij = {val('I'), val('J'), 0};
+  else if (mo.g5_chain) ij = mo.g5_next_ij;
+  else fail("bezier", "G5 without I and J continues the tangent of a G5 just before it, and there is none: give I and J");
+  const auto [to, axes] = target();
+  const Vec3 from = st.pos;
+  MotionBlock b = block(BlockKind::bezier, to);
+  b.order = 4;
+  b.ctrl = {from, from + ij, to + Vec3{val('P'), val('Q'), 0}, to};
+  curve_move(b, axes);
+  mo.g5_chain = true;
+  mo.g5_next_ij = {-val('P'), -val('Q'), 0};
+}
+
+void GcodeInterpreter::Impl::g51() {
+  st.motion = 51;
+  mo.g5_chain = false;
+  require_xy_known("G5.1");
+  require_feed("G5.1");
+  if (!ln.has('I') || !ln.has('J')) fail("bezier", "G5.1 needs both I and J (the middle control point's offset from the start)");
+  const auto [to, axes] = target();
+  MotionBlock b = block(BlockKind::bezier, to);
+  b.order = 3;
+  b.ctrl = {st.pos, st.pos + Vec3{val('I'), val('J'), 0}, to};
+  curve_move(b, axes);
+}
+
+void GcodeInterpreter::Impl::curve_move(MotionBlock& b, unsigned axes) {
+  lint_motion(b.kind, b.from, b.to, axes);
+  Box3 box;
+  for (const auto& z : block_to_bezier(b)) box.add(bounds(z));
+  check_travel(box, 7);
+  check_feed_limit(st.feed);
+  commit_move(b, axes);
+}
+
+void GcodeInterpreter::Impl::g52() {
+  if (mo.open == 52)
+    fail("nurbs-open", "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
+  require_xy_known("G5.2");
+  require_feed("G5.2");
+  mo.g5_chain = false;
+  int order = 3;
+  if (ln.has('L')) {
+    const double L = val('L');
+    if (L != std::floor(L) || L < 3)
+      soft("rank", "G5.2 order " + txt('L') + ": LinuxCNC ignores an order below 3 (it then uses 3); give L3 or more");
+    // Any order above the largest is refused below; one past it keeps a
+    // huge L from overflowing the int (found by fuzzing).
+    else order = static_cast<int>(std::min(L, static_cast<double>(kMaxBezierDegree) + 2));
+  }
+  const int max = self.profile_ ? self.profile_->nurbs_max_rank : kMaxBezierDegree + 1;
+  if (order > max) {
+    soft("rank", "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
+  }
+  mo.open = 52;
+  mo.open_line = line;
+  mo.order = order;
+  mo.open_feed = st.feed;
+  save_lists();
+  mo.ctrl = {st.pos};
+  mo.weights = {1};
+  if (ln.has('X') || ln.has('Y')) {
+    // LinuxCNC: the current position gets weight 1, the point its P.
+    g52_point();
+  } else if (!ln.has('P')) {
+    soft("weight", "the G5.2 line needs P, the weight of its first control point (the current position): "
+                   "without it the weight differs between LinuxCNC versions");
+  } else {
+    mo.weights[0] = weight(*ln.get('P'));
+  }
+  st.motion = 52;
+  lint_motion(BlockKind::nurbs, st.pos, st.pos, 0);
+}
+
+void GcodeInterpreter::Impl::g53() {
+  if (mo.open != 52) fail("nurbs-start", "G5.3 ends a G5.2 block, and none is open");
+  if (!ln.words.empty()) fail("unexpected-word", "G5.3 takes no words, found " + ln.words.front().text);
+  if (mo.ctrl.size() < static_cast<size_t>(mo.order)) {
+    const std::string msg = "the G5.2 block opened at line " + std::to_string(mo.open_line) + " has " +
+                            std::to_string(mo.ctrl.size()) + " control points; order L" + std::to_string(mo.order) +
+                            " needs at least " + std::to_string(mo.order);
+    if (!lint()) fail("knot-count", msg);
+    soft("knot-count", msg);
+    abandon_block();
+    return;
+  }
+  finish_nurbs_block(linuxcnc_knots(mo.ctrl.size(), mo.order));
+  clear_block();
+  st.motion = -1;  // as LinuxCNC does after G5.3
+}
+
+}  // namespace bezcam
