@@ -6,13 +6,14 @@
 #include <limits>
 #include <numbers>
 #include <optional>
-#include <queue>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "flatten/search.hpp"
 
 // Why the bound holds (the notation of arc_fit.hpp).
 //
@@ -136,27 +137,13 @@ struct ArcGeometry {
 // a result above it is at least a proven lower bound of the same supremum.
 // Otherwise the upper bound is refined to `resolution` (or 0.1 %).
 double sup_d(const ArcGeometry& g, const Bezier& sub, double budget, double resolution) {
-  struct Node {
-    double ub;
-    Bezier b;
-    bool operator<(const Node& o) const { return ub < o.ub; }
-  };
-  std::priority_queue<Node> heap;
-  heap.push({g.hull_bound(sub), sub});
-  double lb = std::max(g.d(sub.front()), g.d(sub.back()));
-  for (int iter = 0; iter < 4000; ++iter) {
-    const Node& top = heap.top();
-    if (budget >= 0 && top.ub <= budget) return top.ub;
-    if (budget >= 0 && lb > budget) return lb;
-    if (top.ub - lb <= std::max(1e-3 * top.ub, resolution)) return top.ub;
-    Node n = heap.top();
-    heap.pop();
-    auto [l, r] = split(n.b, 0.5);
-    lb = std::max(lb, g.d(l.back()));
-    heap.push({g.hull_bound(l), std::move(l)});
-    heap.push({g.hull_bound(r), std::move(r)});
-  }
-  return heap.top().ub;
+  const double lb = std::max(g.d(sub.front()), g.d(sub.back()));
+  return flatten_detail::sup_branch_and_bound(
+      sub, lb, {budget, 1e-3, resolution, 4000}, [&](const Bezier& b) { return g.hull_bound(b); },
+      [&](const Bezier& b, Bezier& l, Bezier& r) {
+        std::tie(l, r) = split(b, 0.5);
+        return g.d(l.back());
+      });
 }
 
 // A candidate arc for the span, and its certified XY bound.
@@ -209,16 +196,9 @@ std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, do
   double lo = std::clamp(0.6 * std::abs(b3), bmin, bmax), hi = std::clamp(1.4 * std::abs(b3), bmin, bmax);
   if (!(hi > lo)) return std::nullopt;
   {
-    const double g = 0.3819660112501051;
-    double x1 = lo + g * (hi - lo), x2 = hi - g * (hi - lo);
-    double f1 = misfit(sgn * x1), f2 = misfit(sgn * x2);
-    for (int i = 0; i < 40 && hi - lo > 1e-12 * L; ++i) {
-      if (f1 < f2) {
-        hi = x2; x2 = x1; f2 = f1; x1 = lo + g * (hi - lo); f1 = misfit(sgn * x1);
-      } else {
-        lo = x1; x1 = x2; f1 = f2; x2 = hi - g * (hi - lo); f2 = misfit(sgn * x2);
-      }
-    }
+    const auto g = flatten_detail::golden_section(lo, hi, [&](double x) { return misfit(sgn * x); }, 40, 1e-12 * L);
+    lo = g.a;
+    hi = g.b;
   }
   const double bb = sgn * 0.5 * (lo + hi);
   if (misfit(bb) > budget_xy) return std::nullopt;  // hopeless even before rounding

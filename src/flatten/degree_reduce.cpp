@@ -5,7 +5,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <queue>
+#include <vector>
+
+#include "flatten/search.hpp"
 
 namespace bezcam {
 
@@ -134,28 +136,10 @@ double parametric_distance(const Bezier& a, const Bezier& b, double budget, doub
       q[2] += c * d.z;
       q[3] += c;
     }
-  struct Node {
-    double ub;
-    Poly4 p;
-    bool operator<(const Node& o) const { return ub < o.ub; }
-  };
-  std::priority_queue<Node> heap;
-  heap.push({hull_ratio(p), p});
-  double lb = std::max(ratio_at(p.front()), ratio_at(p.back()));
-  for (int iter = 0; iter < 4000; ++iter) {
-    const Node& top = heap.top();
-    if (budget >= 0 && top.ub <= budget) return top.ub;
-    if (budget >= 0 && lb > budget) return lb;
-    if (top.ub - lb <= std::max(1e-3 * top.ub, resolution)) return top.ub;
-    Node nd = heap.top();
-    heap.pop();
-    Poly4 l, r;
-    lb = std::max(lb, ratio_at(split4(nd.p, l, r)));
-    const double ul = hull_ratio(l), ur = hull_ratio(r);
-    heap.push({ul, std::move(l)});
-    heap.push({ur, std::move(r)});
-  }
-  return heap.top().ub;
+  const double lb = std::max(ratio_at(p.front()), ratio_at(p.back()));
+  return flatten_detail::sup_branch_and_bound(
+      std::move(p), lb, {budget, 1e-3, resolution, 4000}, [](const Poly4& q) { return hull_ratio(q); },
+      [](const Poly4& q, Poly4& l, Poly4& r) { return ratio_at(split4(q, l, r)); });
 }
 
 std::optional<std::vector<ReducedPiece>> reduce_degree(const Bezier& b, int target, double budget, int max_depth) {

@@ -6,6 +6,8 @@
 #include <tuple>
 #include <vector>
 
+#include "flatten/search.hpp"
+
 namespace bezcam {
 
 namespace {
@@ -56,18 +58,10 @@ double dist_to_polyline(const Vec3& x, std::span<const Vec3> pts, size_t& hint, 
   return d;
 }
 
+// The largest interior value seen by golden-section steps on [a, b].
 double golden_max(double a, double b, const auto& f) {
-  const double g = 0.3819660112501051;
-  double x1 = a + g * (b - a), x2 = b - g * (b - a);
-  double f1 = f(x1), f2 = f(x2);
-  for (int i = 0; i < 60 && b - a > 1e-15; ++i) {
-    if (f1 < f2) {
-      a = x1; x1 = x2; f1 = f2; x2 = b - g * (b - a); f2 = f(x2);
-    } else {
-      b = x2; x2 = x1; f2 = f1; x1 = a + g * (b - a); f1 = f(x1);
-    }
-  }
-  return std::max(f1, f2);
+  const auto g = flatten_detail::golden_section(a, b, f, 60, 1e-15, true);
+  return std::max(g.f1, g.f2);
 }
 
 }  // namespace

@@ -4,12 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <queue>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "flatten/search.hpp"
 
 namespace bezcam {
 
@@ -139,27 +140,13 @@ double hull_chord_deviation(const Bezier& sub, const Vec3& A, const Vec3& B, dou
     for (const auto& p : b.points) m = std::max(m, dist_to_segment(p, A, B));
     return m;
   };
-  struct Node {
-    double ub;
-    Bezier b;
-    bool operator<(const Node& o) const { return ub < o.ub; }
-  };
-  std::priority_queue<Node> heap;
-  heap.push({ub_of(sub), sub});
-  double lb = 0;
-  for (int iter = 0; iter < 400; ++iter) {
-    const Node& top = heap.top();
-    if (budget >= 0 && top.ub <= budget) return top.ub;  // certainly within
-    if (budget >= 0 && lb > budget) return lb;           // certainly over
-    if (top.ub - lb <= 2e-3 * top.ub) return top.ub;  // known to 0.2 %
-    Node n = heap.top();
-    heap.pop();
-    auto [l, r] = split(n.b, 0.5);
-    lb = std::max(lb, dist_to_segment(l.back(), A, B));
-    heap.push({ub_of(l), std::move(l)});
-    heap.push({ub_of(r), std::move(r)});
-  }
-  return heap.top().ub;
+  // Known to 0.2 % at most 400 splits in: the flattener only needs to
+  // accept or reject, which the budget usually decides much sooner.
+  const flatten_detail::SupStop stop{budget, 2e-3, 0, 400};
+  return flatten_detail::sup_branch_and_bound(sub, 0.0, stop, ub_of, [&](const Bezier& b, Bezier& l, Bezier& r) {
+    std::tie(l, r) = split(b, 0.5);
+    return dist_to_segment(l.back(), A, B);
+  });
 }
 
 // Uniform step that Wang's formula proves safe for a polynomial piece.

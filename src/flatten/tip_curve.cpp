@@ -9,6 +9,7 @@
 #include "bezcam/error.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "flatten/search.hpp"
 
 namespace bezcam {
 
@@ -191,19 +192,12 @@ TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptio
 
 namespace {
 
+// The smallest value seen by `iters` golden-section steps on [a, b],
+// the bracket's ends included.
 template <class F>
 double golden_min(double a, double b, F f, int iters) {
-  const double g = 0.3819660112501051;
-  double x1 = a + g * (b - a), x2 = b - g * (b - a);
-  double f1 = f(x1), f2 = f(x2);
-  for (int i = 0; i < iters; ++i) {
-    if (f1 < f2) {
-      b = x2, x2 = x1, f2 = f1, x1 = a + g * (b - a), f1 = f(x1);
-    } else {
-      a = x1, x1 = x2, f1 = f2, x2 = b - g * (b - a), f2 = f(x2);
-    }
-  }
-  return std::min({f1, f2, f(a), f(b)});
+  const auto g = flatten_detail::golden_section(a, b, f, iters, -1);
+  return std::min({g.f1, g.f2, f(g.a), f(g.b)});
 }
 
 }  // namespace

@@ -32,8 +32,9 @@ std::string hex32(std::uint32_t v) {
 // One transfer, from OPEN to DONE; not reusable.
 class Sender {
  public:
-  Sender(std::string_view program, const Endpoint& to, const StreamOptions& opt)
-      : prog_(program), to_(to), opt_(opt), crc_(crc32(program)) {
+  Sender(std::string_view program, const TransportFactory& connect, const std::string& peer,
+         const StreamOptions& opt)
+      : prog_(program), connect_(connect), peer_(peer), opt_(opt), crc_(crc32(program)) {
     // Line ends, to turn acknowledged bytes into lines for progress.
     for (std::size_t i = 0; i < prog_.size(); ++i)
       if (prog_[i] == '\n') newlines_.push_back(i);
@@ -46,7 +47,7 @@ class Sender {
 
   StreamResult run() {
     start_ = Clock::now();
-    client_ = std::make_unique<ModbusClient>(to_, opt_.timeout);
+    client_ = connect_(opt_.timeout);
     st_ = read_status();
     check_identity();
     open();
@@ -95,11 +96,11 @@ class Sender {
 
   void check_identity() {
     if (st_.magic != kMagic)
-      throw IoError("link.protocol", to_.str(),
+      throw IoError("link.protocol", peer_,
                     "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(st_.magic) +
                         ", expected 0000425A); check the address");
     if (st_.version != kProtocolVersion)
-      throw ControllerError("link.version", to_.str(),
+      throw ControllerError("link.version", peer_,
                             "the controller speaks protocol version " + std::to_string(st_.version) +
                                 ", this sender version " + std::to_string(kProtocolVersion) + "; update one of them");
   }
@@ -135,7 +136,7 @@ class Sender {
 
   [[noreturn]] void alarm_error() {
     std::string text = read_alarm_text();
-    std::string where = st_.alarm_line > 0 ? "line " + std::to_string(st_.alarm_line) : to_.str();
+    std::string where = st_.alarm_line > 0 ? "line " + std::to_string(st_.alarm_line) : peer_;
     // The controller's text starts with "line N: "; the place is given separately.
     if (const std::string prefix = "line " + std::to_string(st_.alarm_line) + ": ";
         st_.alarm_line > 0 && text.rfind(prefix, 0) == 0)
@@ -151,7 +152,7 @@ class Sender {
     st_ = read_status();
     if (st_.state == State::alarm) alarm_error();
     if (st_.session != session_) restarted();
-    throw ControllerError("link.refused", to_.str(),
+    throw ControllerError("link.refused", peer_,
                           std::string("the controller refused ") + doing + " (Modbus exception " +
                               std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
                               describe(st_.last_reject) + "); " + position());
@@ -159,7 +160,7 @@ class Sender {
 
   [[noreturn]] void restarted() {
     throw ControllerError(
-        "link.restarted", to_.str(),
+        "link.restarted", peer_,
         "the controller no longer holds this transfer: session " + hex32(session_) + " was expected, it reports " +
             (st_.session == 0 ? std::string("no session") : "session " + hex32(st_.session)) + " in state " +
             to_string(st_.state) +
@@ -183,12 +184,12 @@ class Sender {
           continue;  // ask again
         }
         if (st_.last_reject == Reject::busy)
-          throw ControllerError("link.busy", to_.str(),
+          throw ControllerError("link.busy", peer_,
                                 "the controller is busy with another sender's program (session " + hex32(st_.session) +
                                     ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
                                     std::to_string(st_.total_bytes) +
                                     " bytes received); try again when it is done, or abort it there");
-        throw ControllerError("link.refused", to_.str(),
+        throw ControllerError("link.refused", peer_,
                               "the controller refused to open a transfer (Modbus exception " +
                                   std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
                                   describe(st_.last_reject) + ")");
@@ -202,7 +203,7 @@ class Sender {
           std::to_string(st_.buffer_capacity) + " bytes");
     max_chunk_ = std::min<std::uint16_t>(st_.max_chunk, kMaxChunkBytes);
     if (opt_.chunk_bytes > 0) max_chunk_ = std::min(max_chunk_, opt_.chunk_bytes);
-    if (max_chunk_ == 0) throw ControllerError("link.protocol", to_.str(), "the controller announces chunks of 0 bytes");
+    if (max_chunk_ == 0) throw ControllerError("link.protocol", peer_, "the controller announces chunks of 0 bytes");
     mark_progress();
     report();
   }
@@ -223,7 +224,7 @@ class Sender {
       return;
     }
     if (Clock::now() - progress_time_ > opt_.stall_timeout)
-      throw ControllerError("link.stalled", to_.str(),
+      throw ControllerError("link.stalled", peer_,
                             "the controller took no byte and executed no line for " +
                                 fmt_num(std::chrono::duration<double>(opt_.stall_timeout).count()) + " s (state " +
                                 to_string(st_.state) + "); " + position());
@@ -263,7 +264,7 @@ class Sender {
         // The acknowledgement must account for exactly this chunk; anything
         // else means the two sides disagree about the program.
         if (st_.ack_seq != seq + 1 || st_.ack_bytes != sent + n)
-          throw ControllerError("link.ack", to_.str(),
+          throw ControllerError("link.ack", peer_,
                                 "chunk " + std::to_string(seq + 1) + " was acknowledged as sequence " +
                                     std::to_string(st_.ack_seq) + " at byte " + std::to_string(st_.ack_bytes) +
                                     ", expected byte " + std::to_string(sent + n) + "; the program may be corrupted");
@@ -316,7 +317,7 @@ class Sender {
         reconnect(e.message());
         if (st_.state == State::finishing || st_.state == State::done) break;  // it got through
         if (st_.ack_bytes != prog_.size())
-          throw ControllerError("link.ack", to_.str(), "after reconnecting before COMMIT the controller reports " +
+          throw ControllerError("link.ack", peer_, "after reconnecting before COMMIT the controller reports " +
                                                            position() + "; the program may be corrupted");
       }
     }
@@ -352,7 +353,7 @@ class Sender {
     const auto deadline = Clock::now() + opt_.retry_time;
     for (int attempt = 1;; ++attempt) {
       if (failures_ >= opt_.retries || Clock::now() >= deadline)
-        throw IoError("link.lost", to_.str(),
+        throw IoError("link.lost", peer_,
                       "the connection was lost and could not be restored (" + std::to_string(failures_) +
                           " attempts, last: " + why + "); " + std::to_string(acked_high_) + " of " +
                           std::to_string(prog_.size()) +
@@ -365,7 +366,7 @@ class Sender {
                                                                      deadline - Clock::now())));
       }
       try {
-        client_ = std::make_unique<ModbusClient>(to_, opt_.timeout);
+        client_ = connect_(opt_.timeout);
         st_ = read_status();
         check_identity();
         ++reconnects_;
@@ -384,7 +385,7 @@ class Sender {
       refused(e, "RESUME");
     }
     if (st_.ack_bytes > sent_high_)
-      throw ControllerError("link.ack", to_.str(), "after reconnecting the controller reports " + position() +
+      throw ControllerError("link.ack", peer_, "after reconnecting the controller reports " + position() +
                                                        ", more than was sent; the program may be corrupted");
   }
 
@@ -408,12 +409,13 @@ class Sender {
   }
 
   std::string_view prog_;
-  Endpoint to_;
+  const TransportFactory& connect_;
+  std::string peer_;
   const StreamOptions& opt_;
   std::uint32_t crc_ = 0, token_ = 0, session_ = 0;
   std::vector<std::size_t> newlines_;
   std::uint64_t lines_total_ = 0, chunks_ = 0, acked_high_ = 0, sent_high_ = 0;
-  std::unique_ptr<ModbusClient> client_;
+  std::unique_ptr<Transport> client_;
   Status st_;
   std::uint16_t max_chunk_ = kMaxChunkBytes;
   int reconnects_ = 0, failures_ = 0, poll_ms_ = 1;
@@ -424,6 +426,11 @@ class Sender {
 }  // namespace
 
 StreamResult stream_program(std::string_view program, const Endpoint& to, const StreamOptions& opt) {
+  return stream_program(program, modbus_transport(to), to.str(), opt);
+}
+
+StreamResult stream_program(std::string_view program, const TransportFactory& connect, const std::string& peer,
+                            const StreamOptions& opt) {
   if (program.empty()) throw InputError("link.empty", "", "the program is empty; nothing to send");
   if (program.size() > std::numeric_limits<std::uint32_t>::max())
     throw InputError("link.too-large", "", "the program is larger than 4 GiB, the protocol's limit");
@@ -434,7 +441,7 @@ StreamResult stream_program(std::string_view program, const Endpoint& to, const 
   }
   if (opt.retries < 0 || opt.timeout.count() <= 0 || opt.stall_timeout.count() <= 0)
     throw InputError("link.options", "", "timeouts must be positive and retries not negative");
-  return Sender(program, to, opt).run();
+  return Sender(program, connect, peer, opt).run();
 }
 
 }  // namespace bezcam::link

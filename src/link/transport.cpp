@@ -129,4 +129,10 @@ void ModbusClient::write_and_read(std::uint16_t waddr, std::span<const std::uint
     fail("writing and reading registers");
 }
 
+TransportFactory modbus_transport(const Endpoint& to) {
+  return [to](std::chrono::milliseconds timeout) -> std::unique_ptr<Transport> {
+    return std::make_unique<ModbusClient>(to, timeout);
+  };
+}
+
 }  // namespace bezcam::link

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "bezcam/error.hpp"
+#include "support/refusal.hpp"
 
 using namespace bezcam;
 
@@ -15,13 +16,7 @@ namespace {
 
 // Runs validate_knots and returns the error (fails the test if none).
 InputError refusal(std::vector<double> knots, int degree, size_t n_points) {
-  try {
-    validate_knots(knots, degree, n_points);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "expected a refusal";
-  return InputError("", "", "");
+  return test::refusal_of([&] { validate_knots(knots, degree, n_points); });
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/kernel/knot_vector.hpp"
+#include "support/refusal.hpp"
 
 using namespace bezcam;
 
@@ -217,15 +218,7 @@ TEST(NurbsCurve, BezierRoundTrip) {
 
 TEST(NurbsCurve, ValidationNamesTheOffendingItem) {
   const std::vector<Vec3> pts{{0, 0}, {1, 1}, {2, 0}};
-  auto refusal = [](auto f) -> InputError {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e;
-    }
-    ADD_FAILURE() << "expected a refusal";
-    return InputError("", "", "");
-  };
+  const auto refusal = [](auto f) { return test::refusal_of(f); };
   auto e = refusal([&] { NurbsCurve::make(2, pts, {0, 0, 0, 1, 1, 1}, {1, 0.5, -1}); });
   EXPECT_EQ(e.where(), "weights[2]");
   EXPECT_EQ(e.message(), "expected a finite weight > 0, found -1");

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "bezcam/error.hpp"
+#include "support/refusal.hpp"
 
 using namespace bezcam;
 
@@ -202,15 +203,7 @@ TEST(SplineInterp, LagrangePassesThroughItsPointsAndOvershootsOnAStep) {
 }
 
 TEST(SplineInterp, Refusals) {
-  auto refusal = [](auto f) -> InputError {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e;
-    }
-    ADD_FAILURE() << "expected a refusal";
-    return InputError("", "", "");
-  };
+  const auto refusal = [](auto f) { return test::refusal_of(f); };
   const std::vector<Vec3> rep{{0, 0}, {1, 2}, {1, 2}, {3, 0}};
   auto e = refusal([&] { natural_cubic_spline(rep, 2); });
   EXPECT_EQ(e.id(), "curve.repeated-point");

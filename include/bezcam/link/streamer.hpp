@@ -66,4 +66,11 @@ struct StreamResult {
 /// exit 4).
 StreamResult stream_program(std::string_view program, const Endpoint& to, const StreamOptions& opt = {});
 
+/// The same over connections made by `connect` (a Modbus TCP one, an
+/// in-process one for tests: sim/in_process_transport.hpp); `peer` names
+/// the controller in messages (the place of the errors above). Throws as
+/// above; IoError also when `connect` throws it.
+StreamResult stream_program(std::string_view program, const TransportFactory& connect, const std::string& peer,
+                            const StreamOptions& opt = {});
+
 }  // namespace bezcam::link
