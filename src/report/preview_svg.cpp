@@ -423,6 +423,232 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Too
   return out;
 }
 
+namespace {
+
+// The tool path of one view, under the curves: the path is wide and light,
+// the true curve thin and dark on top, so both stay visible where they agree.
+// `msamples` are the blocks' points, `dev_of` their deviations (-1: not measured).
+void svg_toolpath(std::string& o, const View& v, const PreviewInput& in, const std::vector<std::vector<Vec3>>& msamples,
+                  const std::vector<double>& dev_of, const std::string& unit) {
+  o += "<g class=\"toolpath\">\n";
+  std::string rapid_d;
+  // Without colours, a run of feed blocks of one entity is one path (a
+  // smaller file, and no darker dots where translucent blocks overlap).
+  std::string run_d, run_attrs;
+  Vec3 run_end;
+  auto flush_run = [&] {
+    if (!run_d.empty())
+      o += "<path " + run_attrs + " d=\"" + run_d + "\" fill=\"none\" stroke=\"" + kFeedColour +
+           "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\" stroke-opacity=\"0.75\"/>\n";
+    run_d.clear();
+  };
+  for (size_t i = 0; i < in.motion.size(); ++i) {
+    const auto& m = in.motion[i];
+    const auto& s = msamples[i];
+    const P2 a = v.screen(s.front()), b = v.screen(s.back());
+    const bool zero = s.size() == 2 && std::hypot(a.x - b.x, a.y - b.y) < 1e-6;
+    if (m.block.kind == BlockKind::rapid) {
+      if (!zero) rapid_d += (rapid_d.empty() ? "" : " ") + path_d(v, s);
+      continue;
+    }
+    if (zero) continue;  // a plunge seen from above
+    std::string attrs = "class=\"feed\"";
+    if (m.entity >= 0) attrs += " data-entity=\"" + std::to_string(m.entity) + "\"";
+    if (dev_of[i] < 0) {
+      if (run_d.empty() || attrs != run_attrs || !(s.front() == run_end)) {
+        flush_run();
+        run_attrs = attrs;
+        run_d = path_d(v, s);
+      } else {
+        run_d += " " + path_d(v, std::span<const Vec3>(s).subspan(1)).replace(0, 1, "L");
+      }
+      run_end = s.back();
+      continue;
+    }
+    flush_run();
+    // One path per block, coloured by its deviation, with a tooltip.
+    attrs += " data-deviation=\"" + fmt_num(dev_of[i]) + "\"";
+    o += "<path " + attrs + " d=\"" + path_d(v, s) + "\" fill=\"none\" stroke=\"" +
+         deviation_colour(dev_of[i], in.tolerance) +
+         "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>deviation " +
+         format_significant(dev_of[i], 3) + " " + unit + "</title></path>\n";
+  }
+  flush_run();
+  if (!rapid_d.empty())
+    o += "<path class=\"rapid\" d=\"" + rapid_d + "\" fill=\"none\" stroke=\"" + kRapidColour +
+         "\" stroke-width=\"1\" stroke-dasharray=\"6 4\"/>\n";
+  o += "</g>\n";
+
+}
+
+// One entity in one view: its true curve (`pts`, one polyline per chain),
+// control polygon (with `control`), start, direction and label.
+void svg_entity(std::string& o, const View& v, const PreviewInput& in, const Entity& e, const Shape& sh,
+                const std::vector<std::vector<Vec3>>& pts, const std::vector<std::vector<Vec3>>& msamples,
+                bool control) {
+  o += "<g class=\"entity\" data-entity=\"" + std::to_string(e.index) + "\" data-id=\"" + esc(e.id) + "\">\n";
+  std::string what = e.label() + ": " + e.type;
+  if (sh.surface) {
+    what += ", degree " + std::to_string(e.surface->degree_u()) + " x " + std::to_string(e.surface->degree_v()) +
+            (e.surface->rational() ? ", rational" : "") + ", surface";
+  } else {
+    int deg = 0;
+    bool rat = false;
+    for (const auto& pc : sh.measure) deg = std::max(deg, pc.degree()), rat = rat || pc.rational();
+    what += ", degree " + std::to_string(deg) + (rat ? ", rational" : "") + (sh.dim == 3 ? ", 3D" : ", 2D");
+  }
+  o += "<title>" + esc(what) + "</title>\n";
+  if (control && !sh.polygons.empty()) {
+    std::string d;
+    for (const auto& poly : sh.polygons) d += (d.empty() ? "" : " ") + path_d(v, poly);
+    o += "<path class=\"control-polygon\" d=\"" + d + "\" fill=\"none\" stroke=\"" + kControlColour +
+         "\" stroke-width=\"0.8\"/>\n";
+    for (const auto& p : sh.control_points) {
+      const P2 q = v.screen(p);
+      o += "<circle class=\"control-point\" cx=\"" + n3(q.x) + "\" cy=\"" + n3(q.y) +
+           "\" r=\"2.5\" fill=\"#ffffff\" stroke=\"" + kControlColour + "\" stroke-width=\"1\"/>\n";
+    }
+  }
+  for (size_t c = 0; c < pts.size(); ++c) {
+    // A surface's border lines (the first and last of each direction)
+    // are drawn heavier than its inner iso lines.
+    const bool border = !sh.surface || c < 2 || c + 2 >= pts.size();
+    o += "<path class=\"curve" + std::string(sh.surface ? " iso-line" : "") + "\" d=\"" +
+         path_d(v, pts[c]) + "\" fill=\"none\" stroke=\"" + kCurveColour + "\" stroke-width=\"" +
+         (border ? "1.2" : "0.6") + "\" stroke-linejoin=\"round\"" + (border ? "" : " stroke-opacity=\"0.6\"") +
+         "/>\n";
+  }
+  // Start point and direction: an arrow leaving the start, another at
+  // the middle of the curve. A surface's are those of its first cut.
+  Vec3 start, start_dir, mid_pt, mid_dir;
+  bool have_start = false, have_mid = false;
+  if (!sh.surface) {
+    const auto& ch = sh.chains.front();
+    start = ch.front().front();
+    start_dir = tangent(ch.front(), 0);
+    const Bezier& mid = ch[ch.size() / 2];
+    const double tm = ch.size() % 2 == 1 ? 0.5 : 0.0;
+    mid_pt = evaluate(mid, tm);
+    mid_dir = tangent(mid, tm);
+    have_start = have_mid = true;
+  } else {
+    for (size_t i = 0; i < in.motion.size() && !have_start; ++i) {
+      const auto& b = in.motion[i].block;
+      if (in.motion[i].entity != static_cast<int>(e.index) || !is_feed(b) || is_plunge(in.motion, i) ||
+          b.from == b.to)
+        continue;
+      start = b.from;
+      start_dir = msamples[i][1] - msamples[i][0];
+      have_start = true;
+    }
+    if (!have_start) start = evaluate(*e.surface, 0, 0);
+  }
+  const P2 s0 = v.screen(start);
+  const P2 d0 = have_start ? v.screen_dir(start, start_dir) : P2{1, 0};
+  if (have_start) {
+    o += "<circle class=\"start-point\" cx=\"" + n3(s0.x) + "\" cy=\"" + n3(s0.y) + "\" r=\"3.5\" fill=\"" +
+         kCurveColour + "\"/>\n";
+    o += "<path class=\"direction-arrow\" d=\"" + arrow_d({s0.x + d0.x * 18, s0.y + d0.y * 18}, d0, 10, 4.5) +
+         "\" fill=\"" + kCurveColour + "\"/>\n";
+  }
+  if (have_mid) {
+    const P2 sm = v.screen(mid_pt), dm = v.screen_dir(mid_pt, mid_dir);
+    o += "<path class=\"direction-arrow\" d=\"" + arrow_d({sm.x + dm.x * 5, sm.y + dm.y * 5}, dm, 10, 4.5) +
+         "\" fill=\"" + kCurveColour + "\"/>\n";
+  }
+  // The label sits beside the start, on the side away from the path.
+  const double lx = s0.x - d0.y * 10 + (d0.y > 0 ? 0 : 2), ly = s0.y + d0.x * 10 + (d0.x > 0 ? 10 : -4);
+  o += "<text class=\"entity-label\" x=\"" + n3(lx) + "\" y=\"" + n3(ly) + "\" fill=\"" + kCurveColour +
+       "\" font-size=\"11\"" + (d0.y > 0 ? " text-anchor=\"end\"" : "") + ">" + esc(e.label()) + "</text>\n";
+  o += "</g>\n";
+}
+
+// The scale bar of one view, bottom left; an isometric view's axis triad.
+void svg_scale_bar(std::string& o, const View& v, double pad, const std::string& unit) {
+  const double avail = (v.pw - 2 * pad) * 0.3 / v.s;
+  const double L = nice_below(avail);
+  const double bx = v.px + pad, by = v.py + v.ph - 14, bw = L * v.s;
+  o += "<g class=\"scale-bar\" data-length=\"" + fmt_num(L) + "\">\n";
+  o += "<path d=\"M" + n3(bx) + " " + n3(by - 5) + " L" + n3(bx) + " " + n3(by) + " L" + n3(bx + bw) + " " + n3(by) +
+       " L" + n3(bx + bw) + " " + n3(by - 5) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n";
+  o += "<text x=\"" + n3(bx + bw + 6) + "\" y=\"" + n3(by) + "\">" + format_significant(L, 6) + " " + unit +
+       (v.iso ? " (along the axes)" : "") + "</text>\n";
+  o += "</g>\n";
+  if (v.iso) {
+    // Axis triad, bottom right.
+    const double cx = v.px + v.pw - 60, cy = v.py + v.ph - 24;
+    o += "<g class=\"axes\">\n";
+    const char* names[3] = {"X", "Y", "Z"};
+    const Vec3 dirs[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int a = 0; a < 3; ++a) {
+      const P2 d = v.screen_dir(Vec3{}, dirs[a]);
+      o += "<path d=\"M" + n3(cx) + " " + n3(cy) + " L" + n3(cx + d.x * 22) + " " + n3(cy + d.y * 22) +
+           "\" stroke=\"#555555\" stroke-width=\"1\"/>";
+      o += "<text x=\"" + n3(cx + d.x * 30 - 4) + "\" y=\"" + n3(cy + d.y * 30 + 4) + "\" font-size=\"10\">" +
+           names[a] + "</text>\n";
+    }
+    o += "</g>\n";
+  }
+}
+
+// The legend below the views: the line styles, and the deviation scale
+// when coloured.
+void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& opt, const std::vector<double>& dev_of,
+                double dev_max, double margin, double legend_y) {
+  const std::string unit = to_string(in.units);
+  o += "<g class=\"legend\">\n";
+  double lx = margin;
+  const double ly = legend_y + 12;
+  auto key = [&](const std::string& cls, const std::string& sample, const std::string& label) {
+    o += "<g class=\"legend-key " + cls + "\">" + sample + "<text x=\"" + n3(lx + 34) + "\" y=\"" + n3(ly + 4) + "\">" +
+         esc(label) + "</text></g>\n";
+    lx += 44 + 6.8 * double(label.size());
+  };
+  auto line = [&](const std::string& colour, double width, const char* dash) {
+    return "<path d=\"M" + n3(lx) + " " + n3(ly) + " L" + n3(lx + 28) + " " + n3(ly) + "\" stroke=\"" + colour +
+           "\" stroke-width=\"" + n3(width) + "\"" + (*dash ? std::string(" stroke-dasharray=\"") + dash + "\"" : "") +
+           " fill=\"none\"/>";
+  };
+  key("key-curve", line(kCurveColour, 1.2, ""), "true curve (surfaces: iso lines)");
+  if (opt.control) key("key-control", line(kControlColour, 0.8, ""), "control polygon");
+  if (opt.deviation) {
+    key("key-feed", line(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
+    bool unmeasured = false;
+    for (size_t i = 0; i < in.motion.size(); ++i)
+      unmeasured = unmeasured || (is_feed(in.motion[i].block) && !is_plunge(in.motion, i) && dev_of[i] < 0);
+    if (unmeasured) key("key-feed-unmeasured", line(kFeedColour, 3, ""), "feed, not measured (surface passes)");
+  } else {
+    key("key-feed", line(kFeedColour, 3, ""), "feed (cutting)");
+  }
+  key("key-rapid", line(kRapidColour, 1, "6 4"), "rapid");
+  key("key-start", "<circle cx=\"" + n3(lx + 6) + "\" cy=\"" + n3(ly) + "\" r=\"3.5\" fill=\"" + kCurveColour +
+                       "\"/><path d=\"" + arrow_d({lx + 26, ly}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>",
+      "start and direction");
+  if (opt.deviation) {
+    const double gy = ly + 30, gx = margin, gw = 240;
+    o += "<g class=\"deviation-scale\" data-max=\"" + fmt_num(in.tolerance) + "\">\n";
+    o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(gy - 6) + "\">deviation of each cutting block from the true curve, " +
+         unit + " (largest " + format_significant(dev_max, 3) + " " + unit + ")</text>\n";
+    o += "<rect x=\"" + n3(gx) + "\" y=\"" + n3(gy) + "\" width=\"" + n3(gw) +
+         "\" height=\"12\" fill=\"url(#deviation-gradient)\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
+    for (double f : {0.0, 0.5, 1.0}) {
+      const double x = gx + f * gw;
+      o += "<path d=\"M" + n3(x) + " " + n3(gy + 12) + " L" + n3(x) + " " + n3(gy + 16) +
+           "\" stroke=\"#000000\" stroke-width=\"1\"/>";
+      o += "<text x=\"" + n3(x) + "\" y=\"" + n3(gy + 28) + "\" text-anchor=\"middle\" font-size=\"11\">" +
+           format_significant(f * in.tolerance, 4) + (f == 1.0 ? " (tolerance)" : "") + "</text>\n";
+    }
+    const double sx = gx + gw + 70;
+    o += "<rect x=\"" + n3(sx) + "\" y=\"" + n3(gy) + "\" width=\"24\" height=\"12\" fill=\"" +
+         deviation_colour(2, 1) + "\"/><text x=\"" + n3(sx + 30) + "\" y=\"" + n3(gy + 10) +
+         "\">above the tolerance</text>\n";
+    o += "</g>\n";
+  }
+  o += "</g>\n";
+}
+
+}  // namespace
+
 std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   const Job* job = in.job;
   const bool has_entities = job && !job->entities.empty();
@@ -585,56 +811,7 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
     o += "<text class=\"view-title\" x=\"" + n3(v.px + 8) + "\" y=\"" + n3(v.py + 16) + "\" font-weight=\"bold\">" +
          v.title + "</text>\n";
 
-    // Tool path under the curves: the path is wide and light, the true
-    // curve thin and dark on top, so both stay visible where they agree.
-    o += "<g class=\"toolpath\">\n";
-    std::string rapid_d;
-    // Without colours, a run of feed blocks of one entity is one path (a
-    // smaller file, and no darker dots where translucent blocks overlap).
-    std::string run_d, run_attrs;
-    Vec3 run_end;
-    auto flush_run = [&] {
-      if (!run_d.empty())
-        o += "<path " + run_attrs + " d=\"" + run_d + "\" fill=\"none\" stroke=\"" + kFeedColour +
-             "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\" stroke-opacity=\"0.75\"/>\n";
-      run_d.clear();
-    };
-    for (size_t i = 0; i < in.motion.size(); ++i) {
-      const auto& m = in.motion[i];
-      const auto& s = msamples[i];
-      const P2 a = v.screen(s.front()), b = v.screen(s.back());
-      const bool zero = s.size() == 2 && std::hypot(a.x - b.x, a.y - b.y) < 1e-6;
-      if (m.block.kind == BlockKind::rapid) {
-        if (!zero) rapid_d += (rapid_d.empty() ? "" : " ") + path_d(v, s);
-        continue;
-      }
-      if (zero) continue;  // a plunge seen from above
-      std::string attrs = "class=\"feed\"";
-      if (m.entity >= 0) attrs += " data-entity=\"" + std::to_string(m.entity) + "\"";
-      if (dev_of[i] < 0) {
-        if (run_d.empty() || attrs != run_attrs || !(s.front() == run_end)) {
-          flush_run();
-          run_attrs = attrs;
-          run_d = path_d(v, s);
-        } else {
-          run_d += " " + path_d(v, std::span<const Vec3>(s).subspan(1)).replace(0, 1, "L");
-        }
-        run_end = s.back();
-        continue;
-      }
-      flush_run();
-      // One path per block, coloured by its deviation, with a tooltip.
-      attrs += " data-deviation=\"" + fmt_num(dev_of[i]) + "\"";
-      o += "<path " + attrs + " d=\"" + path_d(v, s) + "\" fill=\"none\" stroke=\"" +
-           deviation_colour(dev_of[i], in.tolerance) +
-           "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>deviation " +
-           format_significant(dev_of[i], 3) + " " + unit + "</title></path>\n";
-    }
-    flush_run();
-    if (!rapid_d.empty())
-      o += "<path class=\"rapid\" d=\"" + rapid_d + "\" fill=\"none\" stroke=\"" + kRapidColour +
-           "\" stroke-width=\"1\" stroke-dasharray=\"6 4\"/>\n";
-    o += "</g>\n";
+    svg_toolpath(o, v, in, msamples, dev_of, unit);
 
     // Entities.
     if (job) {
@@ -643,163 +820,16 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
         const Entity& e = job->entities[k];
         const Shape& sh = shapes[k];
         if (sh.chains.empty()) continue;
-        o += "<g class=\"entity\" data-entity=\"" + std::to_string(e.index) + "\" data-id=\"" + esc(e.id) + "\">\n";
-        std::string what = e.label() + ": " + e.type;
-        if (sh.surface) {
-          what += ", degree " + std::to_string(e.surface->degree_u()) + " x " + std::to_string(e.surface->degree_v()) +
-                  (e.surface->rational() ? ", rational" : "") + ", surface";
-        } else {
-          int deg = 0;
-          bool rat = false;
-          for (const auto& pc : sh.measure) deg = std::max(deg, pc.degree()), rat = rat || pc.rational();
-          what += ", degree " + std::to_string(deg) + (rat ? ", rational" : "") + (sh.dim == 3 ? ", 3D" : ", 2D");
-        }
-        o += "<title>" + esc(what) + "</title>\n";
-        if (opt.control && !sh.polygons.empty()) {
-          std::string d;
-          for (const auto& poly : sh.polygons) d += (d.empty() ? "" : " ") + path_d(v, poly);
-          o += "<path class=\"control-polygon\" d=\"" + d + "\" fill=\"none\" stroke=\"" + kControlColour +
-               "\" stroke-width=\"0.8\"/>\n";
-          for (const auto& p : sh.control_points) {
-            const P2 q = v.screen(p);
-            o += "<circle class=\"control-point\" cx=\"" + n3(q.x) + "\" cy=\"" + n3(q.y) +
-                 "\" r=\"2.5\" fill=\"#ffffff\" stroke=\"" + kControlColour + "\" stroke-width=\"1\"/>\n";
-          }
-        }
-        for (size_t c = 0; c < chain_pts[k].size(); ++c) {
-          // A surface's border lines (the first and last of each direction)
-          // are drawn heavier than its inner iso lines.
-          const bool border = !sh.surface || c < 2 || c + 2 >= chain_pts[k].size();
-          o += "<path class=\"curve" + std::string(sh.surface ? " iso-line" : "") + "\" d=\"" +
-               path_d(v, chain_pts[k][c]) + "\" fill=\"none\" stroke=\"" + kCurveColour + "\" stroke-width=\"" +
-               (border ? "1.2" : "0.6") + "\" stroke-linejoin=\"round\"" + (border ? "" : " stroke-opacity=\"0.6\"") +
-               "/>\n";
-        }
-        // Start point and direction: an arrow leaving the start, another at
-        // the middle of the curve. A surface's are those of its first cut.
-        Vec3 start, start_dir, mid_pt, mid_dir;
-        bool have_start = false, have_mid = false;
-        if (!sh.surface) {
-          const auto& ch = sh.chains.front();
-          start = ch.front().front();
-          start_dir = tangent(ch.front(), 0);
-          const Bezier& mid = ch[ch.size() / 2];
-          const double tm = ch.size() % 2 == 1 ? 0.5 : 0.0;
-          mid_pt = evaluate(mid, tm);
-          mid_dir = tangent(mid, tm);
-          have_start = have_mid = true;
-        } else {
-          for (size_t i = 0; i < in.motion.size() && !have_start; ++i) {
-            const auto& b = in.motion[i].block;
-            if (in.motion[i].entity != static_cast<int>(e.index) || !is_feed(b) || is_plunge(in.motion, i) ||
-                b.from == b.to)
-              continue;
-            start = b.from;
-            start_dir = msamples[i][1] - msamples[i][0];
-            have_start = true;
-          }
-          if (!have_start) start = evaluate(*e.surface, 0, 0);
-        }
-        const P2 s0 = v.screen(start);
-        const P2 d0 = have_start ? v.screen_dir(start, start_dir) : P2{1, 0};
-        if (have_start) {
-          o += "<circle class=\"start-point\" cx=\"" + n3(s0.x) + "\" cy=\"" + n3(s0.y) + "\" r=\"3.5\" fill=\"" +
-               kCurveColour + "\"/>\n";
-          o += "<path class=\"direction-arrow\" d=\"" + arrow_d({s0.x + d0.x * 18, s0.y + d0.y * 18}, d0, 10, 4.5) +
-               "\" fill=\"" + kCurveColour + "\"/>\n";
-        }
-        if (have_mid) {
-          const P2 sm = v.screen(mid_pt), dm = v.screen_dir(mid_pt, mid_dir);
-          o += "<path class=\"direction-arrow\" d=\"" + arrow_d({sm.x + dm.x * 5, sm.y + dm.y * 5}, dm, 10, 4.5) +
-               "\" fill=\"" + kCurveColour + "\"/>\n";
-        }
-        // The label sits beside the start, on the side away from the path.
-        const double lx = s0.x - d0.y * 10 + (d0.y > 0 ? 0 : 2), ly = s0.y + d0.x * 10 + (d0.x > 0 ? 10 : -4);
-        o += "<text class=\"entity-label\" x=\"" + n3(lx) + "\" y=\"" + n3(ly) + "\" fill=\"" + kCurveColour +
-             "\" font-size=\"11\"" + (d0.y > 0 ? " text-anchor=\"end\"" : "") + ">" + esc(e.label()) + "</text>\n";
-        o += "</g>\n";
+        svg_entity(o, v, in, e, sh, chain_pts[k], msamples, opt.control);
       }
       o += "</g>\n";
     }
 
-    // Scale bar, bottom left of the panel.
-    const double avail = (v.pw - 2 * pad) * 0.3 / v.s;
-    const double L = nice_below(avail);
-    const double bx = v.px + pad, by = v.py + v.ph - 14, bw = L * v.s;
-    o += "<g class=\"scale-bar\" data-length=\"" + fmt_num(L) + "\">\n";
-    o += "<path d=\"M" + n3(bx) + " " + n3(by - 5) + " L" + n3(bx) + " " + n3(by) + " L" + n3(bx + bw) + " " + n3(by) +
-         " L" + n3(bx + bw) + " " + n3(by - 5) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n";
-    o += "<text x=\"" + n3(bx + bw + 6) + "\" y=\"" + n3(by) + "\">" + format_significant(L, 6) + " " + unit +
-         (v.iso ? " (along the axes)" : "") + "</text>\n";
-    o += "</g>\n";
-    if (v.iso) {
-      // Axis triad, bottom right.
-      const double cx = v.px + v.pw - 60, cy = v.py + v.ph - 24;
-      o += "<g class=\"axes\">\n";
-      const char* names[3] = {"X", "Y", "Z"};
-      const Vec3 dirs[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-      for (int a = 0; a < 3; ++a) {
-        const P2 d = v.screen_dir(Vec3{}, dirs[a]);
-        o += "<path d=\"M" + n3(cx) + " " + n3(cy) + " L" + n3(cx + d.x * 22) + " " + n3(cy + d.y * 22) +
-             "\" stroke=\"#555555\" stroke-width=\"1\"/>";
-        o += "<text x=\"" + n3(cx + d.x * 30 - 4) + "\" y=\"" + n3(cy + d.y * 30 + 4) + "\" font-size=\"10\">" +
-             names[a] + "</text>\n";
-      }
-      o += "</g>\n";
-    }
+    svg_scale_bar(o, v, pad, unit);
     o += "</g>\n";
   }
 
-  // Legend: the line styles, and the deviation scale when coloured.
-  o += "<g class=\"legend\">\n";
-  double lx = margin;
-  const double ly = legend_y + 12;
-  auto key = [&](const std::string& cls, const std::string& sample, const std::string& label) {
-    o += "<g class=\"legend-key " + cls + "\">" + sample + "<text x=\"" + n3(lx + 34) + "\" y=\"" + n3(ly + 4) + "\">" +
-         esc(label) + "</text></g>\n";
-    lx += 44 + 6.8 * double(label.size());
-  };
-  auto line = [&](const std::string& colour, double width, const char* dash) {
-    return "<path d=\"M" + n3(lx) + " " + n3(ly) + " L" + n3(lx + 28) + " " + n3(ly) + "\" stroke=\"" + colour +
-           "\" stroke-width=\"" + n3(width) + "\"" + (*dash ? std::string(" stroke-dasharray=\"") + dash + "\"" : "") +
-           " fill=\"none\"/>";
-  };
-  key("key-curve", line(kCurveColour, 1.2, ""), "true curve (surfaces: iso lines)");
-  if (opt.control) key("key-control", line(kControlColour, 0.8, ""), "control polygon");
-  if (opt.deviation) {
-    key("key-feed", line(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
-    bool unmeasured = false;
-    for (size_t i = 0; i < in.motion.size(); ++i)
-      unmeasured = unmeasured || (is_feed(in.motion[i].block) && !is_plunge(in.motion, i) && dev_of[i] < 0);
-    if (unmeasured) key("key-feed-unmeasured", line(kFeedColour, 3, ""), "feed, not measured (surface passes)");
-  } else {
-    key("key-feed", line(kFeedColour, 3, ""), "feed (cutting)");
-  }
-  key("key-rapid", line(kRapidColour, 1, "6 4"), "rapid");
-  key("key-start", "<circle cx=\"" + n3(lx + 6) + "\" cy=\"" + n3(ly) + "\" r=\"3.5\" fill=\"" + kCurveColour +
-                       "\"/><path d=\"" + arrow_d({lx + 26, ly}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>",
-      "start and direction");
-  if (opt.deviation) {
-    const double gy = ly + 30, gx = margin, gw = 240;
-    o += "<g class=\"deviation-scale\" data-max=\"" + fmt_num(in.tolerance) + "\">\n";
-    o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(gy - 6) + "\">deviation of each cutting block from the true curve, " +
-         unit + " (largest " + format_significant(dev_max, 3) + " " + unit + ")</text>\n";
-    o += "<rect x=\"" + n3(gx) + "\" y=\"" + n3(gy) + "\" width=\"" + n3(gw) +
-         "\" height=\"12\" fill=\"url(#deviation-gradient)\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
-    for (double f : {0.0, 0.5, 1.0}) {
-      const double x = gx + f * gw;
-      o += "<path d=\"M" + n3(x) + " " + n3(gy + 12) + " L" + n3(x) + " " + n3(gy + 16) +
-           "\" stroke=\"#000000\" stroke-width=\"1\"/>";
-      o += "<text x=\"" + n3(x) + "\" y=\"" + n3(gy + 28) + "\" text-anchor=\"middle\" font-size=\"11\">" +
-           format_significant(f * in.tolerance, 4) + (f == 1.0 ? " (tolerance)" : "") + "</text>\n";
-    }
-    const double sx = gx + gw + 70;
-    o += "<rect x=\"" + n3(sx) + "\" y=\"" + n3(gy) + "\" width=\"24\" height=\"12\" fill=\"" +
-         deviation_colour(2, 1) + "\"/><text x=\"" + n3(sx + 30) + "\" y=\"" + n3(gy + 10) +
-         "\">above the tolerance</text>\n";
-    o += "</g>\n";
-  }
-  o += "</g>\n";
+  svg_legend(o, in, opt, dev_of, dev_max, margin, legend_y);
   o += "</svg>\n";
   return o;
 }
