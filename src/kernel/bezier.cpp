@@ -215,9 +215,7 @@ namespace {
 void tight_bounds(const Bezier& b, Box3& box, double eps, int depth) {
   // The curve's end points are on the curve; the control box contains it.
   const Box3 hull = control_bounds(b);
-  bool inside = true;
-  for (int k = 0; k < 3; ++k)
-    inside = inside && hull.lo[k] >= box.lo[k] - eps && hull.hi[k] <= box.hi[k] + eps;
+  const bool inside = box.contains(hull, eps);
   if (inside || depth > 40) {
     if (!inside) box.add(hull);
     return;

@@ -313,8 +313,7 @@ namespace {
 // net's box exceeds the box found so far by at most eps in every axis.
 void tight_bounds(const BezierPatch& s, Box3& box, double eps, int depth) {
   const Box3 hull = control_bounds(s);
-  bool inside = true;
-  for (int k = 0; k < 3; ++k) inside = inside && hull.lo[k] >= box.lo[k] - eps && hull.hi[k] <= box.hi[k] + eps;
+  const bool inside = box.contains(hull, eps);
   if (inside || depth > 24) {
     if (!inside) box.add(hull);
     return;

@@ -56,6 +56,12 @@ struct Box3 {
   }
   void add(const Box3& b) { if (!b.empty()) { add(b.lo); add(b.hi); } }
   bool empty() const { return lo.x > hi.x; }
+  /// Whether `inner` lies within this box grown by `eps` on every side.
+  bool contains(const Box3& inner, double eps = 0) const {
+    for (int k = 0; k < 3; ++k)
+      if (inner.lo[k] < lo[k] - eps || inner.hi[k] > hi[k] + eps) return false;
+    return true;
+  }
 };
 
 }  // namespace bezcam
