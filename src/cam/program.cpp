@@ -102,6 +102,61 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 
 namespace {
 
+// Before a curve entity: a tool change when the tool differs (retracting
+// to `safe` first if below it), then the spindle when its speed differs.
+void change_tool_and_spindle(Program& p, const CutParams& cp, double safe, detail::MotionState& ms) {
+  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
+  if (cp.tool != ms.tool) {
+    Move t;
+    t.kind = MoveKind::tool_change;
+    t.tool = cp.tool;
+    if (ms.pos_known && ms.pos.z < safe) {
+      Move up;
+      up.kind = MoveKind::rapid;
+      up.to = {ms.pos.x, ms.pos.y, safe};
+      push(up);
+      ms.pos = up.to;
+    }
+    push(t);
+    ms.tool = cp.tool;
+    ms.rpm = -1;
+  }
+  if (cp.spindle_rpm != ms.rpm) {
+    Move s;
+    s.kind = cp.spindle_rpm > 0 ? MoveKind::spindle_on : MoveKind::spindle_off;
+    s.rpm = cp.spindle_rpm;
+    push(s);
+    ms.rpm = cp.spindle_rpm;
+  }
+}
+
+// Retract (straight up) if not at this entity's safe Z, rapid over the
+// start, plunge at the plunge feed. Leaves `ms.pos` where it was: the
+// caller takes the position from the cut that follows.
+void approach(Program& p, int entity, const Vec3& start, double safe, double plunge_feed,
+              const detail::MotionState& ms) {
+  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
+  if (!ms.pos_known || ms.pos.z != safe) {
+    Move up;
+    up.kind = MoveKind::rapid;
+    up.to = {ms.pos_known ? ms.pos.x : 0, ms.pos_known ? ms.pos.y : 0, safe};
+    up.entity = entity;
+    if (!ms.pos_known) up.axes = 4;  // position unknown: move Z only
+    push(up);
+  }
+  Move over;
+  over.kind = MoveKind::rapid;
+  over.to = {start.x, start.y, safe};
+  over.entity = entity;
+  push(over);
+  Move plunge;
+  plunge.kind = MoveKind::linear;
+  plunge.to = start;
+  plunge.feed = plunge_feed;
+  plunge.entity = entity;
+  push(plunge);
+}
+
 Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
   Program p;
   p.job_name = std::filesystem::path(job.source).filename().string();
@@ -145,28 +200,8 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
                          "the curve rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " + fmt_num(cp.safe_z) +
                              "; rapid moves at safe_z would cross it: raise safe_z");
     }
-    if (cp.tool != cur_tool) {
-      Move t;
-      t.kind = MoveKind::tool_change;
-      t.tool = cp.tool;
-      if (pos_known && pos.z < safe) {
-        Move up;
-        up.kind = MoveKind::rapid;
-        up.to = {pos.x, pos.y, safe};
-        push(up);
-        pos = up.to;
-      }
-      push(t);
-      cur_tool = cp.tool;
-      cur_rpm = -1;
-    }
-    if (cp.spindle_rpm != cur_rpm) {
-      Move s;
-      s.kind = cp.spindle_rpm > 0 ? MoveKind::spindle_on : MoveKind::spindle_off;
-      s.rpm = cp.spindle_rpm;
-      push(s);
-      cur_rpm = cp.spindle_rpm;
-    }
+    detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known};
+    change_tool_and_spindle(p, cp, safe, ms);
     Move cmt;
     cmt.kind = MoveKind::comment;
     cmt.text = "entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
@@ -181,27 +216,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     r.length = g.length();
     detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
     const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
-    // Retract (straight up) if below this entity's safe Z, rapid over the
-    // start, plunge at the plunge feed.
-    if (!pos_known || pos.z != safe) {
-      Move up;
-      up.kind = MoveKind::rapid;
-      up.to = {pos_known ? pos.x : 0, pos_known ? pos.y : 0, safe};
-      up.entity = static_cast<int>(e.index);
-      if (!pos_known) up.axes = 4;  // position unknown: move Z only
-      push(up);
-    }
-    Move over;
-    over.kind = MoveKind::rapid;
-    over.to = {start.x, start.y, safe};
-    over.entity = static_cast<int>(e.index);
-    push(over);
-    Move plunge;
-    plunge.kind = MoveKind::linear;
-    plunge.to = start;
-    plunge.feed = cp.plunge_feed;
-    plunge.entity = static_cast<int>(e.index);
-    push(plunge);
+    approach(p, static_cast<int>(e.index), start, safe, cp.plunge_feed, ms);
 
     switch (opt.output) {
       case OutputMode::lines: detail::emit_lines(ctx, r); break;
