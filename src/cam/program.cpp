@@ -100,6 +100,48 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 
 namespace {
 
+// Before a curve entity: a tool change when the tool differs (retracting
+// to `safe` first if below it), then the spindle when its speed differs.
+void change_tool_and_spindle(Program& p, const CutParams& cp, double safe, detail::MotionState& ms) {
+  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
+  if (cp.tool != ms.tool) {
+    if (ms.pos_known && ms.pos.z < safe) {
+      RapidMove up;
+      up.to = {ms.pos.x, ms.pos.y, safe};
+      push({up});
+      ms.pos = up.to;
+    }
+    push({ToolChange{cp.tool}});
+    ms.tool = cp.tool;
+    ms.rpm = -1;
+  }
+  if (cp.spindle_rpm != ms.rpm) {
+    push({SpindleMove{cp.spindle_rpm}});
+    ms.rpm = cp.spindle_rpm;
+  }
+}
+
+// Retract (straight up) if not at this entity's safe Z, rapid over the
+// start, plunge at the plunge feed. Leaves `ms.pos` where it was: the
+// caller takes the position from the cut that follows.
+void approach(Program& p, int entity, const Vec3& start, double safe, double plunge_feed,
+              const detail::MotionState& ms) {
+  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
+  if (!ms.pos_known || ms.pos.z != safe) {
+    RapidMove up;
+    up.to = {ms.pos_known ? ms.pos.x : 0, ms.pos_known ? ms.pos.y : 0, safe};
+    if (!ms.pos_known) up.axes = kAxisZ;  // position unknown: move Z only
+    push({up, entity});
+  }
+  RapidMove over;
+  over.to = {start.x, start.y, safe};
+  push({over, entity});
+  LineMove plunge;
+  plunge.to = start;
+  plunge.feed = plunge_feed;
+  push({plunge, entity});
+}
+
 Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
   Program p;
   p.job_name = std::filesystem::path(job.source).filename().string();
@@ -143,21 +185,8 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
                          "the curve rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " + fmt_num(cp.safe_z) +
                              "; rapid moves at safe_z would cross it: raise safe_z");
     }
-    if (cp.tool != cur_tool) {
-      if (pos_known && pos.z < safe) {
-        RapidMove up;
-        up.to = {pos.x, pos.y, safe};
-        push({up});
-        pos = up.to;
-      }
-      push({ToolChange{cp.tool}});
-      cur_tool = cp.tool;
-      cur_rpm = -1;
-    }
-    if (cp.spindle_rpm != cur_rpm) {
-      push({SpindleMove{cp.spindle_rpm}});
-      cur_rpm = cp.spindle_rpm;
-    }
+    detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known};
+    change_tool_and_spindle(p, cp, safe, ms);
     push({Comment{"entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
                    (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")}});
 
@@ -169,22 +198,8 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     r.length = g.length();
     detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
     const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
-    // Retract (straight up) if below this entity's safe Z, rapid over the
-    // start, plunge at the plunge feed.
     const int entity = static_cast<int>(e.index);
-    if (!pos_known || pos.z != safe) {
-      RapidMove up;
-      up.to = {pos_known ? pos.x : 0, pos_known ? pos.y : 0, safe};
-      if (!pos_known) up.axes = kAxisZ;  // position unknown: move Z only
-      push({up, entity});
-    }
-    RapidMove over;
-    over.to = {start.x, start.y, safe};
-    push({over, entity});
-    LineMove plunge;
-    plunge.to = start;
-    plunge.feed = cp.plunge_feed;
-    push({plunge, entity});
+    approach(p, entity, start, safe, cp.plunge_feed, ms);
 
     switch (opt.output) {
       case OutputMode::lines: detail::emit_lines(ctx, r); break;

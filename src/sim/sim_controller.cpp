@@ -492,14 +492,106 @@ bool SimController::wait_final(std::chrono::milliseconds timeout) const {
   });
 }
 
+// Called unlocked: a file sink may block on the disk.
+void SimController::emit_trace(const std::string& text, bool restart) {
+  if (cfg_.trace && !text.empty()) cfg_.trace(text, restart);
+}
+
+// Takes the line ending at `nl` (npos: the unterminated last line after
+// COMMIT) out of the buffer, executes and traces it unlocked, and records
+// the result unless the program was replaced meanwhile. `lk` is held on
+// entry and on return.
+void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpreter& interp, std::uint64_t cur_epoch,
+                                 std::size_t nl) {
+  const std::size_t end = nl == std::string::npos ? buf_.size() : nl;
+  std::string line = buf_.substr(head_, end - head_);
+  head_ = nl == std::string::npos ? buf_.size() : nl + 1;
+  if (head_ == buf_.size()) buf_.clear(), head_ = 0;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  const long no = ++line_no_;
+  cv_.notify_all();  // space freed: run_program may push more
+  lk.unlock();
+  if (cfg_.on_line) cfg_.on_line(no, line);
+  if (cfg_.exec_delay.count() > 0) std::this_thread::sleep_for(cfg_.exec_delay);
+  const MachineState before = interp.state();
+  std::string text;
+  std::size_t nblocks = 0;
+  std::optional<std::pair<Alarm, std::string>> failed;
+  std::string id;
+  try {
+    const auto blocks = interp.feed_line(line, static_cast<int>(no));
+    nblocks = blocks.size();
+    for (const auto& b : blocks) text += trace_block(b);
+    text += trace_state(static_cast<int>(no), before, interp.state());
+  } catch (const Error& e) {
+    id = e.id();
+    failed.emplace(alarm_for(e.id(), e.message()), e.message());
+  } catch (const std::exception& e) {
+    id = "sim.internal";
+    failed.emplace(Alarm::gcode, std::string("internal error: ") + e.what());
+  }
+  if (failed) text += trace_alarm(static_cast<int>(no), to_string(failed->first), id, failed->second);
+  emit_trace(text, false);
+  lk.lock();
+  if (epoch_ != cur_epoch) return;  // the program was replaced meanwhile
+  if (!failed) ++lines_done_;  // a refused line changed nothing: it was not executed
+  blocks_done_ += static_cast<long>(nblocks);
+  machine_ = interp.state();
+  if (failed && state_ != State::alarm) {
+    // Traced above already, so no pending record.
+    state_ = State::alarm;
+    alarm_ = failed->first;
+    alarm_line_ = static_cast<std::uint32_t>(no);
+    alarm_text_ = "line " + std::to_string(no) + ": " + failed->second;
+    final_traced_ = true;
+  }
+  cv_.notify_all();
+}
+
+// Every byte confirmed and executed: ends the program (interpreter's
+// finish, DONE record) and sets DONE, or ALARM when it is incomplete.
+// `lk` is held on entry and on return.
+void SimController::finish_program(std::unique_lock<std::mutex>& lk, GcodeInterpreter& interp,
+                                   std::uint64_t cur_epoch) {
+  const long lines = line_no_;
+  lk.unlock();
+  std::string text;
+  std::optional<std::pair<std::string, std::string>> failed;
+  long nblocks = 0;
+  try {
+    const auto blocks = interp.finish();
+    nblocks = static_cast<long>(blocks.size());
+    for (const auto& b : blocks) text += trace_block(b);
+  } catch (const Error& e) {
+    failed.emplace(e.id(), e.message());
+  }
+  lk.lock();
+  const long total_blocks = blocks_done_ + nblocks;
+  const Vec3 pos = interp.state().pos;
+  lk.unlock();
+  text += failed ? trace_alarm(static_cast<int>(lines), to_string(Alarm::incomplete), failed->first, failed->second)
+                 : trace_done(lines, total_blocks, pos);
+  emit_trace(text, false);
+  lk.lock();
+  if (epoch_ != cur_epoch || state_ != State::finishing) return;
+  blocks_done_ = total_blocks;
+  machine_ = interp.state();
+  if (failed) {
+    state_ = State::alarm;
+    alarm_ = Alarm::incomplete;
+    alarm_line_ = static_cast<std::uint32_t>(lines);
+    alarm_text_ = "line " + std::to_string(lines) + ": " + failed->second;
+  } else {
+    state_ = State::done;  // only now: the trace on disk is complete
+  }
+  final_traced_ = true;
+  cv_.notify_all();
+}
+
 void SimController::exec_loop() {
   std::unique_lock lk(m_);
   std::uint64_t cur_epoch = 0;
   std::unique_ptr<GcodeInterpreter> interp;
-  auto emit = [&](const std::string& text, bool restart) {
-    // Called unlocked: a file sink may block on the disk.
-    if (cfg_.trace && !text.empty()) cfg_.trace(text, restart);
-  };
   while (!stop_) {
     // 1. An alarm raised by a request (COMMIT checks, ABORT, lease): trace
     // it for the program it stopped, starting that program's trace first
@@ -510,7 +602,7 @@ void SimController::exec_loop() {
       const bool restart = p.epoch != cur_epoch;
       if (restart) cur_epoch = p.epoch, interp.reset();
       lk.unlock();
-      emit(restart ? trace_header(cfg_.profile.name) + p.text : p.text, restart);
+      emit_trace(restart ? trace_header(cfg_.profile.name) + p.text : p.text, restart);
       lk.lock();
       if (epoch_ == p.epoch) final_traced_ = true;
       cv_.notify_all();
@@ -522,7 +614,7 @@ void SimController::exec_loop() {
       cur_epoch = epoch_;
       interp = std::make_unique<GcodeInterpreter>(&cfg_.profile);
       lk.unlock();
-      emit(trace_header(cfg_.profile.name), true);
+      emit_trace(trace_header(cfg_.profile.name), true);
       lk.lock();
       continue;
     }
@@ -532,86 +624,12 @@ void SimController::exec_loop() {
       // buffer; after COMMIT the last line needs no newline.
       const auto nl = buf_.find('\n', head_);
       if (nl != std::string::npos || (state_ == State::finishing && buffered_locked() > 0)) {
-        const std::size_t end = nl == std::string::npos ? buf_.size() : nl;
-        std::string line = buf_.substr(head_, end - head_);
-        head_ = nl == std::string::npos ? buf_.size() : nl + 1;
-        if (head_ == buf_.size()) buf_.clear(), head_ = 0;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        const long no = ++line_no_;
-        cv_.notify_all();  // space freed: run_program may push more
-        lk.unlock();
-        if (cfg_.on_line) cfg_.on_line(no, line);
-        if (cfg_.exec_delay.count() > 0) std::this_thread::sleep_for(cfg_.exec_delay);
-        const MachineState before = interp->state();
-        std::string text;
-        std::size_t nblocks = 0;
-        std::optional<std::pair<Alarm, std::string>> failed;
-        std::string id;
-        try {
-          const auto blocks = interp->feed_line(line, static_cast<int>(no));
-          nblocks = blocks.size();
-          for (const auto& b : blocks) text += trace_block(b);
-          text += trace_state(static_cast<int>(no), before, interp->state());
-        } catch (const Error& e) {
-          id = e.id();
-          failed.emplace(alarm_for(e.id(), e.message()), e.message());
-        } catch (const std::exception& e) {
-          id = "sim.internal";
-          failed.emplace(Alarm::gcode, std::string("internal error: ") + e.what());
-        }
-        if (failed) text += trace_alarm(static_cast<int>(no), to_string(failed->first), id, failed->second);
-        emit(text, false);
-        lk.lock();
-        if (epoch_ != cur_epoch) continue;  // the program was replaced meanwhile
-        if (!failed) ++lines_done_;  // a refused line changed nothing: it was not executed
-        blocks_done_ += static_cast<long>(nblocks);
-        machine_ = interp->state();
-        if (failed && state_ != State::alarm) {
-          // Traced above already, so no pending record.
-          state_ = State::alarm;
-          alarm_ = failed->first;
-          alarm_line_ = static_cast<std::uint32_t>(no);
-          alarm_text_ = "line " + std::to_string(no) + ": " + failed->second;
-          final_traced_ = true;
-        }
-        cv_.notify_all();
+        execute_line(lk, *interp, cur_epoch, nl);
         continue;
       }
       // 4. End of program: every byte confirmed and executed.
       if (state_ == State::finishing) {
-        const long lines = line_no_;
-        lk.unlock();
-        std::string text;
-        std::optional<std::pair<std::string, std::string>> failed;
-        long nblocks = 0;
-        try {
-          const auto blocks = interp->finish();
-          nblocks = static_cast<long>(blocks.size());
-          for (const auto& b : blocks) text += trace_block(b);
-        } catch (const Error& e) {
-          failed.emplace(e.id(), e.message());
-        }
-        lk.lock();
-        const long total_blocks = blocks_done_ + nblocks;
-        const Vec3 pos = interp->state().pos;
-        lk.unlock();
-        text += failed ? trace_alarm(static_cast<int>(lines), to_string(Alarm::incomplete), failed->first, failed->second)
-                       : trace_done(lines, total_blocks, pos);
-        emit(text, false);
-        lk.lock();
-        if (epoch_ != cur_epoch || state_ != State::finishing) continue;
-        blocks_done_ = total_blocks;
-        machine_ = interp->state();
-        if (failed) {
-          state_ = State::alarm;
-          alarm_ = Alarm::incomplete;
-          alarm_line_ = static_cast<std::uint32_t>(lines);
-          alarm_text_ = "line " + std::to_string(lines) + ": " + failed->second;
-        } else {
-          state_ = State::done;  // only now: the trace on disk is complete
-        }
-        final_traced_ = true;
-        cv_.notify_all();
+        finish_program(lk, *interp, cur_epoch);
         continue;
       }
       // 5. A full buffer with no line end can never make progress.
@@ -648,7 +666,7 @@ void SimController::exec_loop() {
     tail = "stopped after line " + std::to_string(line_no_) + "\n";
   }
   lk.unlock();
-  emit(tail, false);
+  emit_trace(tail, false);
   cv_.notify_all();
 }
 

@@ -140,6 +140,10 @@ class SimController {
   Status status_locked(ConnId c) const;
   std::vector<std::uint16_t> read_locked(ConnId c, std::uint16_t addr, std::uint16_t n) const;
   void exec_loop();
+  void emit_trace(const std::string& text, bool restart);
+  void execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpreter& interp, std::uint64_t cur_epoch,
+                    std::size_t nl);
+  void finish_program(std::unique_lock<std::mutex>& lk, GcodeInterpreter& interp, std::uint64_t cur_epoch);
 
   ControllerConfig cfg_;
   mutable std::mutex m_;
