@@ -154,17 +154,17 @@ struct GcodeInterpreter::Impl {
   std::string wt(int code) const { return word.empty() ? g_text(code) : word; }
 
   // ---- errors ------------------------------------------------------------
-  [[noreturn]] void fail(const std::string& id, const std::string& msg) const {
-    throw InputError("gcode." + id, "line " + std::to_string(line), msg);
+  [[noreturn]] void fail(ErrorId id, const std::string& msg) const {
+    throw InputError(id, Place::at_line(line), msg);
   }
   // A problem the line can go on from: thrown by the reader, recorded by lint.
-  void soft(const std::string& id, const std::string& msg, int at = 0) const {
+  void soft(ErrorId id, const std::string& msg, int at = 0) const {
     if (!self.findings_) fail(id, msg);
-    self.findings_->push_back({at ? at : line, "gcode." + id, msg});
+    self.findings_->push_back({at ? at : line, id, msg});
   }
   // Lint only: what a demanding machinist flags but a controller would run.
-  void note(const std::string& id, const std::string& msg, int at = 0) const {
-    if (self.findings_) self.findings_->push_back({at ? at : line, "gcode." + id, msg});
+  void note(ErrorId id, const std::string& msg, int at = 0) const {
+    if (self.findings_) self.findings_->push_back({at ? at : line, id, msg});
   }
   bool lint() const { return self.findings_ != nullptr; }
 
@@ -181,9 +181,9 @@ struct GcodeInterpreter::Impl {
     auto skip_comment = [&] {
       const size_t close = text.find(')', i + 1);
       if (close == std::string_view::npos)
-        fail("syntax", "a comment opened with '(' is not closed on this line: add ')'");
+        fail(errc::gcode_syntax, "a comment opened with '(' is not closed on this line: add ')'");
       if (text.substr(i + 1, close - i - 1).find('(') != std::string_view::npos)
-        fail("syntax", "a comment may not contain '(' (no nested comments)");
+        fail(errc::gcode_syntax, "a comment may not contain '(' (no nested comments)");
       i = close + 1;
     };
     while (i < n && is_space(text[i])) ++i;
@@ -194,18 +194,18 @@ struct GcodeInterpreter::Impl {
         if (is_space(text[i])) ++i;
         else if (text[i] == '(') skip_comment();
         else if (text[i] == ';') break;
-        else fail("syntax", "a '%' line may hold nothing but comments, found '" + std::string(1, text[i]) + "'");
+        else fail(errc::gcode_syntax, "a '%' line may hold nothing but comments, found '" + std::string(1, text[i]) + "'");
       }
       return;
     }
-    if (i < n && text[i] == '/') fail("unsupported", "block delete ('/' at the start of a line) is not supported: remove it or the line");
+    if (i < n && text[i] == '/') fail(errc::gcode_unsupported, "block delete ('/' at the start of a line) is not supported: remove it or the line");
     while (i < n) {
       const char c = text[i];
       if (is_space(c)) { ++i; continue; }
       if (c == '(') { skip_comment(); continue; }
       if (c == ';') break;
       if (!std::isalpha(static_cast<unsigned char>(c)))
-        fail("syntax", "unexpected character '" + std::string(1, c) + "': expected a word (a letter and a number)");
+        fail(errc::gcode_syntax, "unexpected character '" + std::string(1, c) + "': expected a word (a letter and a number)");
       const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
       ++i;
       const size_t start = i;
@@ -221,7 +221,7 @@ struct GcodeInterpreter::Impl {
         size_t e = i;
         while (e < n && !is_space(text[e]) && text[e] != '(' && text[e] != ';') ++e;
         const std::string found(text.substr(start, std::max(e, i) - start));
-        fail("syntax", std::string("expected a number after '") + letter + "', found " +
+        fail(errc::gcode_syntax, std::string("expected a number after '") + letter + "', found " +
                            (found.empty() ? std::string("nothing") : "'" + found + "'"));
       }
       Word w;
@@ -232,7 +232,7 @@ struct GcodeInterpreter::Impl {
       // A number too large for a double must not read as 0 (from_chars
       // leaves the value alone then): that would be a different program.
       if (fc.ec != std::errc() || !std::isfinite(w.value))
-        fail("number", std::string("the number after '") + letter + "' is too large to read (" +
+        fail(errc::gcode_number, std::string("the number after '") + letter + "' is too large to read (" +
                            std::to_string(num.size()) + " digits): expected at most about 1e308");
       add(std::move(w));
     }
@@ -245,16 +245,16 @@ struct GcodeInterpreter::Impl {
   void add(Word w) {
     const bool first_word = ln.words.empty() && ln.g.empty() && ln.m.empty() && !ln.n && !ln.program_number;
     if (w.letter == 'N') {
-      if (!first_word) fail("syntax", "the line number " + w.text + " must be the first word of the line");
+      if (!first_word) fail(errc::gcode_syntax, "the line number " + w.text + " must be the first word of the line");
       if (w.value < 0 || w.value != std::floor(w.value) || w.value > 1e9)
-        fail("syntax", "expected a whole line number after N, found " + w.text);
+        fail(errc::gcode_syntax, "expected a whole line number after N, found " + w.text);
       ln.n = static_cast<long>(w.value);
       return;
     }
-    if (ln.program_number) fail("syntax", "a program-number line (O...) may hold nothing but comments, found " + w.text);
+    if (ln.program_number) fail(errc::gcode_syntax, "a program-number line (O...) may hold nothing but comments, found " + w.text);
     if (w.letter == 'O') {
-      if (!first_word || ln.n) fail("unsupported", "O words (" + w.text + ") are only understood as a program number alone on its line");
-      if (w.value < 0 || w.value != std::floor(w.value)) fail("syntax", "expected a whole program number after O, found " + w.text);
+      if (!first_word || ln.n) fail(errc::gcode_unsupported, "O words (" + w.text + ") are only understood as a program number alone on its line");
+      if (w.value < 0 || w.value != std::floor(w.value)) fail(errc::gcode_syntax, "expected a whole program number after O, found " + w.text);
       ln.program_number = true;
       return;
     }
@@ -262,13 +262,13 @@ struct GcodeInterpreter::Impl {
       const double x10 = w.value * 10;
       const double r = std::nearbyint(x10);
       if (w.value < 0 || std::abs(x10 - r) > 1e-9 || r > 10000)
-        fail("unsupported", "G-code " + w.text + " is not supported by this reader");
+        fail(errc::gcode_unsupported, "G-code " + w.text + " is not supported by this reader");
       ln.g.push_back({static_cast<int>(r), w.text});
       return;
     }
     if (w.letter == 'M') {
       if (w.value < 0 || w.value != std::floor(w.value) || w.value > 1000)
-        fail("unsupported", "M-code " + w.text + " is not supported by this reader");
+        fail(errc::gcode_unsupported, "M-code " + w.text + " is not supported by this reader");
       ln.m.push_back({static_cast<int>(w.value), w.text});
       return;
     }
@@ -276,7 +276,7 @@ struct GcodeInterpreter::Impl {
       if (o.letter == w.letter) {
         // Controllers differ (LinuxCNC and Grbl refuse, others keep the
         // last): refuse. Lint goes on with the first one.
-        soft("repeated-word", std::string(1, w.letter) + " appears twice on the line (" + o.text + " and " + w.text +
+        soft(errc::gcode_repeated_word, std::string(1, w.letter) + " appears twice on the line (" + o.text + " and " + w.text +
                                   "); a block gives each address once");
         return;
       }
@@ -309,13 +309,13 @@ struct GcodeInterpreter::Impl {
 
   void require_xy_known(const std::string& what) const {
     if ((st.known_axes & 3) != 3)
-      fail("position-unknown", what + " cannot start from an unknown position: no earlier move has set " +
+      fail(errc::gcode_position_unknown, what + " cannot start from an unknown position: no earlier move has set " +
                                    ((st.known_axes & 1) ? std::string("Y") : (st.known_axes & 2) ? "X" : "X and Y"));
   }
 
   void require_feed(const std::string& what) const {
     if (!(st.feed > 0))
-      soft("no-feed", what + " needs a feed rate, and no F word has set one (F is in " + unit() + "/min)");
+      soft(errc::gcode_no_feed, what + " needs a feed rate, and no F word has set one (F is in " + unit() + "/min)");
   }
 
   // Travel limits of the profile, for the axes given by `axes`.
@@ -327,7 +327,7 @@ struct GcodeInterpreter::Impl {
       const double lo = from_mm(m.travel_mm[a][0]), hi = from_mm(m.travel_mm[a][1]);
       if (b.lo[a] < lo || b.hi[a] > hi) {
         const double v = b.lo[a] < lo ? b.lo[a] : b.hi[a];
-        soft("travel", "the move reaches " + axis_name(a) + " = " + fmt_num(v) + " " + unit() +
+        soft(errc::gcode_travel, "the move reaches " + axis_name(a) + " = " + fmt_num(v) + " " + unit() +
                            ", outside the travel of machine \"" + m.name + "\" (" + axis_name(a) + " from " +
                            fmt_num(lo) + " to " + fmt_num(hi) + " " + unit() + ")");
       }
@@ -339,7 +339,7 @@ struct GcodeInterpreter::Impl {
     const double max = from_mm(self.profile_->max_feed_mm_min);
     if (feed > max && feed != mo.feed_reported) {
       mo.feed_reported = feed;  // lint: once per feed value, not on every move at it
-      soft("feed", "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" + machine() + ", " +
+      soft(errc::gcode_feed, "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" + machine() + ", " +
                        fmt_num(max) + " " + unit() + "/min");
     }
   }
@@ -354,25 +354,25 @@ struct GcodeInterpreter::Impl {
       if (!mo.plane_set) missing.push_back("G17 (XY plane)");
       std::string list = missing[0];
       for (size_t k = 1; k < missing.size(); ++k) list += (k + 1 == missing.size() ? " and " : ", ") + missing[k];
-      note("modes-unset", "the first move comes before " + list + (missing.size() == 1 ? " is" : " are") +
+      note(errc::gcode_modes_unset, "the first move comes before " + list + (missing.size() == 1 ? " is" : " are") +
                               " set: the machine would use whatever the last program left; start with a safety "
                               "line such as G21 G90 G17");
       mo.noted_modes = true;
     }
     if (is_cutting(kind)) {
       if (!mo.noted_position && (st.known_axes & 7) != 7) {
-        note("position-unknown", "this cutting move starts from an unknown position (no earlier move set " +
+        note(errc::gcode_position_unknown, "this cutting move starts from an unknown position (no earlier move set " +
                                      std::string((st.known_axes & 1) ? "" : "X ") + ((st.known_axes & 2) ? "" : "Y ") +
                                      ((st.known_axes & 4) ? "" : "Z ") +
                                      "): position the tool with G00 first");
         mo.noted_position = true;
       }
       if (!st.spindle_on && !mo.noted_spindle) {
-        note("spindle-off", "cutting move with the spindle stopped: no M03/M04 is in effect");
+        note(errc::gcode_spindle_off, "cutting move with the spindle stopped: no M03/M04 is in effect");
         mo.noted_spindle = true;
       }
     } else if ((axes & 3) && (axes & 4) && to.z < from.z && (to.x != from.x || to.y != from.y)) {
-      note("rapid-plunge", "a rapid move lowers Z while moving in X/Y: plunge separately (G00 over the point, then "
+      note(errc::gcode_rapid_plunge, "a rapid move lowers Z while moving in X/Y: plunge separately (G00 over the point, then "
                            "G01 down)");
     }
   }
@@ -404,7 +404,7 @@ struct GcodeInterpreter::Impl {
       return;
     }
     if (mo.end_line)
-      fail("after-end", "the program ended at line " + std::to_string(mo.end_line) +
+      fail(errc::gcode_after_end, "the program ended at line " + std::to_string(mo.end_line) +
                             " (M02/M30): nothing after it runs; remove this line or move the end");
     if (ln.n) check_n();
     if (mo.open) {
@@ -415,7 +415,7 @@ struct GcodeInterpreter::Impl {
 
   void check_n() {
     if (mo.last_n >= 0 && *ln.n <= mo.last_n)
-      note("line-number-order", "line number N" + std::to_string(*ln.n) + " does not increase (the previous was N" +
+      note(errc::gcode_line_number_order, "line number N" + std::to_string(*ln.n) + " does not increase (the previous was N" +
                                     std::to_string(mo.last_n) + ")");
     mo.last_n = *ln.n;
   }
@@ -430,15 +430,15 @@ struct GcodeInterpreter::Impl {
                                   });
     if (!ln.has('K') || !only_block_words) {
       if (ln.has('K') && ln.g.empty() && ln.m.empty()) {
-        if (ln.has('P')) fail("nurbs-word", "P (the rank) is only given on the first block of a NURBS block, found " + txt('P'));
-        if (ln.has('F')) fail("nurbs-word", "F is only given on the first block of a NURBS block, found " + txt('F'));
+        if (ln.has('P')) fail(errc::gcode_nurbs_word, "P (the rank) is only given on the first block of a NURBS block, found " + txt('P'));
+        if (ln.has('F')) fail(errc::gcode_nurbs_word, "F is only given on the first block of a NURBS block, found " + txt('F'));
       }
       const std::string msg = "the NURBS block opened at line " + std::to_string(mo.open_line) +
                               " is incomplete: it has " + std::to_string(mo.ctrl.size()) + " control points and " +
                               std::to_string(mo.knot_only) + " of its " + std::to_string(mo.order) +
                               " knot-only blocks; until the last knot every line must be 'K- [X- Y- Z- R-]'";
-      if (!lint()) fail("nurbs-open", msg);
-      soft("nurbs-open", msg);
+      if (!lint()) fail(errc::gcode_nurbs_open, msg);
+      soft(errc::gcode_nurbs_open, msg);
       abandon_block();
       return false;  // lint reads the line on its own
     }
@@ -446,7 +446,7 @@ struct GcodeInterpreter::Impl {
     const bool knot_only = ln.words.size() == 1;
     if (!knot_only) {
       if (mo.knot_only > 0)
-        fail("knot-count", "a control point after the knot-only blocks that began at line " +
+        fail(errc::gcode_knot_count, "a control point after the knot-only blocks that began at line " +
                                std::to_string(mo.knot_only_line) + ": a NURBS block lists every control point first, "
                                "then exactly P (" + std::to_string(mo.order) + ") knot-only K blocks");
       Vec3 p = mo.ctrl.back();
@@ -466,7 +466,7 @@ struct GcodeInterpreter::Impl {
   }
 
   double weight(const Word& r) const {
-    if (!(r.value > 0)) soft("weight", "weight " + r.text + ": expected a weight R > 0");
+    if (!(r.value > 0)) soft(errc::gcode_weight, "weight " + r.text + ": expected a weight R > 0");
     return r.value;
   }
 
@@ -478,7 +478,7 @@ struct GcodeInterpreter::Impl {
     while (prev > 0 && std::isnan(mo.knots[prev - 1])) --prev;
     bool reported = false;
     if (prev > 0 && v < mo.knots[prev - 1]) {
-      soft("knot-order", k.text + ": expected a knot >= " + fmt_num(mo.knots[prev - 1]) +
+      soft(errc::gcode_knot_order, k.text + ": expected a knot >= " + fmt_num(mo.knots[prev - 1]) +
                              " (knots must not decrease; the previous knot is on line " +
                              std::to_string(mo.knot_lines[prev - 1]) + "), found " + fmt_num(v));
       reported = true;
@@ -488,7 +488,7 @@ struct GcodeInterpreter::Impl {
     if (!reported && idx < static_cast<size_t>(rank)) {
       for (size_t j = 0; j < idx; ++j)
         if (!std::isnan(mo.knots[j]) && mo.knots[j] != v) {
-          soft("knot-clamped", k.text + " is knot " + std::to_string(idx + 1) + " of the block: the first P (" +
+          soft(errc::gcode_knot_clamped, k.text + " is knot " + std::to_string(idx + 1) + " of the block: the first P (" +
                                    std::to_string(rank) + ") knots must be equal (a clamped start: the curve starts "
                                    "at the current position), but the first is " + fmt_num(mo.knots[j]) +
                                    " (line " + std::to_string(mo.knot_lines[j]) + ")");
@@ -500,7 +500,7 @@ struct GcodeInterpreter::Impl {
     if (!reported && knot_only && mo.knot_only > 1) {
       const size_t first_end = mo.knots.size() - static_cast<size_t>(mo.knot_only - 1);
       if (mo.knots[first_end] != v) {
-        soft("knot-clamped", k.text + ": the last P (" + std::to_string(rank) + ") knots, the knot-only blocks, must "
+        soft(errc::gcode_knot_clamped, k.text + ": the last P (" + std::to_string(rank) + ") knots, the knot-only blocks, must "
                                  "be equal (a clamped end: the curve ends at its last control point), but the first "
                                  "of them is " + fmt_num(mo.knots[first_end]) + " (line " +
                                  std::to_string(mo.knot_lines[first_end]) + ")");
@@ -512,7 +512,7 @@ struct GcodeInterpreter::Impl {
       size_t run = 1;
       for (size_t j = idx; j > 0 && mo.knots[j - 1] == v; --j) ++run;
       if (run == static_cast<size_t>(rank) + 1)
-        soft("knot-multiplicity", k.text + ": knot " + fmt_num(v) + " now appears " + std::to_string(run) +
+        soft(errc::gcode_knot_multiplicity, k.text + ": knot " + fmt_num(v) + " now appears " + std::to_string(run) +
                                       " times (from line " + std::to_string(mo.knot_lines[idx + 1 - run]) +
                                       "); no knot may repeat more than the rank P (" + std::to_string(rank) +
                                       ") times");
@@ -526,8 +526,8 @@ struct GcodeInterpreter::Impl {
       const std::string msg = "the NURBS block opened at line " + std::to_string(mo.open_line) + " has " +
                               std::to_string(mo.ctrl.size()) + " control points; a block of rank P" +
                               std::to_string(mo.order) + " needs at least " + std::to_string(mo.order);
-      if (!lint()) fail("knot-count", msg);
-      soft("knot-count", msg);  // lint: the block is dropped and reading goes on
+      if (!lint()) fail(errc::gcode_knot_count, msg);
+      soft(errc::gcode_knot_count, msg);  // lint: the block is dropped and reading goes on
       abandon_block();
       return;
     }
@@ -586,7 +586,7 @@ struct GcodeInterpreter::Impl {
       size_t j = i;
       while (j + 1 < U.size() && U[j + 1] == U[i]) ++j;
       if (j - i + 1 >= k && i < b.ctrl.size() && b.ctrl[i - 1] != b.ctrl[i])
-        note("nurbs-jump", "knot " + fmt_num(U[i]) + " repeats " + std::to_string(j - i + 1) +
+        note(errc::gcode_nurbs_jump, "knot " + fmt_num(U[i]) + " repeats " + std::to_string(j - i + 1) +
                                " times inside the NURBS block of line " + std::to_string(b.first_line) +
                                ": the curve jumps from " + pt(b.ctrl[i - 1]) + " to " + pt(b.ctrl[i]),
              b.line);
@@ -621,8 +621,8 @@ struct GcodeInterpreter::Impl {
       std::string msg = "the G5.2 block opened at line " + std::to_string(mo.open_line) +
                         " is still open: only control points 'X- Y- P-' may follow until G5.3";
       if (ln.has('Z')) msg = "G5.2 blocks move in X and Y only: a Z word is not allowed (" + txt('Z') + ")";
-      if (!lint()) fail("nurbs-open", msg);
-      soft("nurbs-open", msg);
+      if (!lint()) fail(errc::gcode_nurbs_open, msg);
+      soft(errc::gcode_nurbs_open, msg);
       abandon_block();
       return false;
     }
@@ -632,10 +632,10 @@ struct GcodeInterpreter::Impl {
 
   void g52_point() {
     if (ln.has('X') != ln.has('Y'))
-      fail("nurbs-point", std::string("a G5.2 control point needs both X and Y, found only ") + (ln.has('X') ? txt('X') : txt('Y')));
-    if (!ln.has('X')) fail("nurbs-point", "a G5.2 control point line needs X, Y and P (its weight)");
+      fail(errc::gcode_nurbs_point, std::string("a G5.2 control point needs both X and Y, found only ") + (ln.has('X') ? txt('X') : txt('Y')));
+    if (!ln.has('X')) fail(errc::gcode_nurbs_point, "a G5.2 control point line needs X, Y and P (its weight)");
     double w = 1;
-    if (!ln.has('P')) soft("weight", "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)");
+    if (!ln.has('P')) soft(errc::gcode_weight, "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)");
     else w = weight(*ln.get('P'));
     mo.ctrl.push_back({val('X'), val('Y'), st.pos.z});
     mo.weights.push_back(w);
@@ -649,24 +649,24 @@ struct GcodeInterpreter::Impl {
     bool dwell = false;
     for (const auto& [c, t] : ln.g) {
       const int grp = g_group(c);
-      if (grp < 0) fail("unsupported", "G-code " + t + " is not supported by this reader");
+      if (grp < 0) fail(errc::gcode_unsupported, "G-code " + t + " is not supported by this reader");
       if (grp > 0) {
         if (!seen_g[static_cast<size_t>(grp)].empty())
-          fail("modal-group", seen_g[static_cast<size_t>(grp)] + " and " + t + " are in the same modal group: give one");
+          fail(errc::gcode_modal_group, seen_g[static_cast<size_t>(grp)] + " and " + t + " are in the same modal group: give one");
         seen_g[static_cast<size_t>(grp)] = t;
       }
       switch (c) {
         case 180: case 190:
-          fail("plane", t + " selects the " + std::string(c == 180 ? "XZ" : "YZ") +
+          fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "XZ" : "YZ") +
                             " plane: this reader supports G17 (XY) only");
-        case 910: fail("incremental", "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates");
+        case 910: fail(errc::gcode_incremental, "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates");
         case 930: case 950:
-          fail("unsupported", t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
+          fail(errc::gcode_unsupported, t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
                                   " is not supported by this reader: use G94 (units per minute)");
         case 410: case 420:
-          fail("unsupported", t + " (cutter radius compensation) is not supported by this reader: the program must "
+          fail(errc::gcode_unsupported, t + " (cutter radius compensation) is not supported by this reader: the program must "
                                   "describe the tool centre");
-        case 430: fail("unsupported", "G43 (tool length compensation) is not supported by this reader");
+        case 430: fail(errc::gcode_unsupported, "G43 (tool length compensation) is not supported by this reader");
         case 40: dwell = true; break;
         default: break;
       }
@@ -678,13 +678,13 @@ struct GcodeInterpreter::Impl {
     std::array<std::string, 16> seen_m{};
     for (const auto& [c, t] : ln.m) {
       const int grp = m_group(c);
-      if (grp < 0) fail("unsupported", "M-code " + t + " is not supported by this reader");
+      if (grp < 0) fail(errc::gcode_unsupported, "M-code " + t + " is not supported by this reader");
       if (!seen_m[static_cast<size_t>(grp)].empty())
-        fail("modal-group", seen_m[static_cast<size_t>(grp)] + " and " + t + " are in the same modal group: give one");
+        fail(errc::gcode_modal_group, seen_m[static_cast<size_t>(grp)] + " and " + t + " are in the same modal group: give one");
       seen_m[static_cast<size_t>(grp)] = t;
     }
     if (mo.open == 52 && motion != 53)
-      fail("nurbs-open", "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
+      fail(errc::gcode_nurbs_open, "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
 
     // Which motion the line's words belong to (-999: none; -1: G80).
     const bool has_axes = ln.has('X') || ln.has('Y') || ln.has('Z');
@@ -695,28 +695,28 @@ struct GcodeInterpreter::Impl {
     else if (motion != -999) active = motion;
     else if (motion_words) active = st.motion >= 0 && st.motion <= 3 ? st.motion * 10 : st.motion;
     if (dwell && (has_axes || motion != -999))
-      fail("modal-group", "G04 (dwell) cannot share a line with a motion: put it on its own line");
+      fail(errc::gcode_modal_group, "G04 (dwell) cannot share a line with a motion: put it on its own line");
     check_letters(active, dwell, motion != -999);
 
     // Execution order (RS274/NGC): F, S, T, M06, spindle, coolant, dwell,
     // plane, units, distance mode, motion, program end.
     if (ln.has('F')) {
-      if (val('F') < 0) fail("feed", "expected a feed rate F >= 0, found " + txt('F'));
+      if (val('F') < 0) fail(errc::gcode_feed, "expected a feed rate F >= 0, found " + txt('F'));
       st.feed = val('F');
     }
     if (ln.has('S')) {
-      if (val('S') < 0) fail("spindle", "expected a spindle speed S >= 0, found " + txt('S'));
+      if (val('S') < 0) fail(errc::gcode_spindle, "expected a spindle speed S >= 0, found " + txt('S'));
       st.spindle_rpm = val('S');
     }
     if (ln.has('T')) {
       // (Bounded before the conversion: T1e20 as an int is undefined; found by fuzzing.)
       if (val('T') < 0 || val('T') != std::floor(val('T')) || val('T') > 1e9)
-        fail("tool", "expected a whole tool number T from 0 to 1000000000, found " + txt('T'));
+        fail(errc::gcode_tool, "expected a whole tool number T from 0 to 1000000000, found " + txt('T'));
       mo.selected_tool = static_cast<int>(val('T'));
     }
     for (const auto& [c, t] : ln.m) {
       if (c == 6) {
-        if (mo.selected_tool < 0) note("tool-unset", "M06 changes the tool, but no T word has selected one");
+        if (mo.selected_tool < 0) note(errc::gcode_tool_unset, "M06 changes the tool, but no T word has selected one");
         st.tool = std::max(mo.selected_tool, 0);
       }
       if (c == 3 || c == 4) {
@@ -726,7 +726,7 @@ struct GcodeInterpreter::Impl {
       if (c == 5) st.spindle_on = false;
     }
     if (dwell) {
-      if (!ln.has('P') || val('P') < 0) fail("dwell", "G04 needs its duration P (seconds) >= 0");
+      if (!ln.has('P') || val('P') < 0) fail(errc::gcode_dwell, "G04 needs its duration P (seconds) >= 0");
     }
     for (const auto& [c, t] : ln.g) {
       if (c == 170) {
@@ -735,7 +735,7 @@ struct GcodeInterpreter::Impl {
       } else if (c == 200 || c == 210) {
         const Units u = c == 200 ? Units::inch : Units::mm;
         if (mo.moved && u != st.units)
-          fail("units-change", t + " changes the units after the first move: positions would change meaning; set "
+          fail(errc::gcode_units_change, t + " changes the units after the first move: positions would change meaning; set "
                                    "the units once, before any move");
         st.units = u;
         st.units_set = true;
@@ -768,24 +768,24 @@ struct GcodeInterpreter::Impl {
     for (const Word& w : ln.words) {
       if (allowed.find(w.letter) != std::string::npos) continue;
       if (std::string_view("ABCUVW").find(w.letter) != std::string_view::npos)
-        fail("unsupported", "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
+        fail(errc::gcode_unsupported, "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
       if (w.letter == 'K' && (active == 20 || active == 30))
-        fail("arc", w.text + ": K is not a centre word in the G17 plane (some controllers refuse even K0): give I and J only");
+        fail(errc::gcode_arc, w.text + ": K is not a centre word in the G17 plane (some controllers refuse even K0): give I and J only");
       if (w.letter == 'Z' && (active == 50 || active == 51 || active == 52))
-        fail("bezier", wt(active) + " moves in X and Y only: a Z word (" + w.text + ") is not allowed");
+        fail(errc::gcode_bezier, wt(active) + " moves in X and Y only: a Z word (" + w.text + ") is not allowed");
       if ((active == 62 || active == 63) && !explicit_motion) {
         if (w.letter == 'K')
-          fail("nurbs-start", "K word outside a NURBS block (the last one ended at line " +
+          fail(errc::gcode_nurbs_start, "K word outside a NURBS block (the last one ended at line " +
                                   std::to_string(mo.nurbs_mode_line) + "): a block starts with " + g_text(active) +
                                   " P- K- X- Y- Z-");
-        fail("nurbs-mode", w.text + " in NURBS mode (" + g_text(active) + " since line " +
+        fail(errc::gcode_nurbs_mode, w.text + " in NURBS mode (" + g_text(active) + " since line " +
                                std::to_string(mo.nurbs_mode_line) + ") outside a block: start a new block with " +
                                g_text(active) + ", or leave the mode with G00 or G01");
       }
       if (std::string_view("XYZ").find(w.letter) != std::string_view::npos)
-        fail("no-motion", w.text + ": axis words without a motion mode (none is active): give G00 or G01");
-      if (w.letter == 'K') fail("nurbs-start", "K word outside a NURBS block: a block starts with G06.2 P- K- X- Y- Z-");
-      fail("unexpected-word", "word " + w.text + " has no meaning on this line" +
+        fail(errc::gcode_no_motion, w.text + ": axis words without a motion mode (none is active): give G00 or G01");
+      if (w.letter == 'K') fail(errc::gcode_nurbs_start, "K word outside a NURBS block: a block starts with G06.2 P- K- X- Y- Z-");
+      fail(errc::gcode_unexpected_word, "word " + w.text + " has no meaning on this line" +
                                   (active >= 0 ? " (" + wt(active) + ")" : std::string()) + ": remove it");
     }
   }
@@ -816,14 +816,14 @@ struct GcodeInterpreter::Impl {
   void check_dialect(int code) const {
     const auto& m = *self.profile_;
     if ((code == 20 || code == 30) && !m.arcs)
-      fail("dialect", "machine \"" + m.name + "\" does not take arcs (" + wt(code) + "): use G01");
+      fail(errc::gcode_dialect, "machine \"" + m.name + "\" does not take arcs (" + wt(code) + "): use G01");
     if (code >= 50 && code <= 53 && m.nurbs != NurbsDialect::linuxcnc)
-      fail("dialect", wt(code) + " is a LinuxCNC word; machine \"" + m.name + "\" does not take it");
+      fail(errc::gcode_dialect, wt(code) + " is a LinuxCNC word; machine \"" + m.name + "\" does not take it");
     if (is_fanuc(code)) {
       if (m.nurbs != NurbsDialect::fanuc)
-        fail("dialect", "machine \"" + m.name + "\" does not take Fanuc-style NURBS blocks (" + wt(code) + ")");
+        fail(errc::gcode_dialect, "machine \"" + m.name + "\" does not take Fanuc-style NURBS blocks (" + wt(code) + ")");
       if (code != start_code(m.nurbs_start_word))
-        fail("dialect", "machine \"" + m.name + "\" starts a NURBS block with " + m.nurbs_start_word + ", not " +
+        fail(errc::gcode_dialect, "machine \"" + m.name + "\" starts a NURBS block with " + m.nurbs_start_word + ", not " +
                             wt(code));
     }
   }
@@ -857,8 +857,8 @@ struct GcodeInterpreter::Impl {
     mo.g5_chain = false;
     const std::string g = cw ? "G02" : "G03";
     const bool ij = ln.has('I') || ln.has('J'), r = ln.has('R');
-    if (ij && r) fail("arc", g + ": give either I and J (the centre) or R (the radius), not both");
-    if (!ij && !r) fail("arc", g + " needs the centre offsets I and J (or a radius R)");
+    if (ij && r) fail(errc::gcode_arc, g + ": give either I and J (the centre) or R (the radius), not both");
+    if (!ij && !r) fail(errc::gcode_arc, g + " needs the centre offsets I and J (or a radius R)");
     require_xy_known(g);
     require_feed(g);
     const auto [to, axes] = target();
@@ -868,13 +868,13 @@ struct GcodeInterpreter::Impl {
       c.x += ln.has('I') ? val('I') : 0;
       c.y += ln.has('J') ? val('J') : 0;
     } else {
-      if (!(axes & 3)) fail("arc", g + " with R needs an end point X or Y (a full circle needs I and J)");
+      if (!(axes & 3)) fail(errc::gcode_arc, g + " with R needs an end point X or Y (a full circle needs I and J)");
       const double dx = to.x - from.x, dy = to.y - from.y, d = std::hypot(dx, dy);
       const double R = val('R');
-      if (d == 0) fail("arc", g + " with R: the end point equals the start point; give a full circle with I and J");
+      if (d == 0) fail(errc::gcode_arc, g + " with R: the end point equals the start point; give a full circle with I and J");
       const double tol = arc_tolerance();
       if (std::abs(R) < d / 2 - tol)
-        fail("arc", txt('R') + " is too small for the chord of " + fmt_num(d) + " " + unit() +
+        fail(errc::gcode_arc, txt('R') + " is too small for the chord of " + fmt_num(d) + " " + unit() +
                         " between start and end (the radius must be at least half of it)");
       const double h = std::sqrt(std::max(0.0, R * R - d * d / 4));
       // Centre left of the chord for a minor CCW arc or a major CW one.
@@ -883,11 +883,11 @@ struct GcodeInterpreter::Impl {
       c.y = (from.y + to.y) / 2 + side * h * dx / d;
     }
     const double r0 = std::hypot(from.x - c.x, from.y - c.y), r1 = std::hypot(to.x - c.x, to.y - c.y);
-    if (r0 == 0) fail("arc", g + ": the centre coincides with the start point (I and J are both 0)");
+    if (r0 == 0) fail(errc::gcode_arc, g + ": the centre coincides with the start point (I and J are both 0)");
     const double tol = arc_tolerance();
     const double slack = 1e-12 * std::max({1.0, max_abs(from), max_abs(to), max_abs(c)});
     if (std::abs(r0 - r1) > tol + slack)
-      soft("arc-radius", g + ": the centre (" + fmt_num(c.x) + ", " + fmt_num(c.y) + ") is " + fmt_num(r0) +
+      soft(errc::gcode_arc_radius, g + ": the centre (" + fmt_num(c.x) + ", " + fmt_num(c.y) + ") is " + fmt_num(r0) +
                              " from the start and " + fmt_num(r1) + " from the end; they differ by " +
                              fmt_num(std::abs(r0 - r1)) + " " + unit() + ", more than the arc tolerance" + machine() +
                              " (" + fmt_num(tol) + " " + unit() + "): the end point or the centre is wrong");
@@ -903,13 +903,13 @@ struct GcodeInterpreter::Impl {
     st.motion = 50;
     require_xy_known("G5");
     require_feed("G5");
-    if (ln.has('I') != ln.has('J')) fail("bezier", "G5 needs both I and J, or neither");
+    if (ln.has('I') != ln.has('J')) fail(errc::gcode_bezier, "G5 needs both I and J, or neither");
     if (!ln.has('P') || !ln.has('Q'))
-      fail("bezier", "G5 needs both P and Q (the second control point's offset from the end point)");
+      fail(errc::gcode_bezier, "G5 needs both P and Q (the second control point's offset from the end point)");
     Vec3 ij;
     if (ln.has('I')) ij = {val('I'), val('J'), 0};
     else if (mo.g5_chain) ij = mo.g5_next_ij;
-    else fail("bezier", "G5 without I and J continues the tangent of a G5 just before it, and there is none: give I and J");
+    else fail(errc::gcode_bezier, "G5 without I and J continues the tangent of a G5 just before it, and there is none: give I and J");
     const auto [to, axes] = target();
     const Vec3 from = st.pos;
     MotionBlock b = block(BlockKind::bezier, to);
@@ -925,7 +925,7 @@ struct GcodeInterpreter::Impl {
     mo.g5_chain = false;
     require_xy_known("G5.1");
     require_feed("G5.1");
-    if (!ln.has('I') || !ln.has('J')) fail("bezier", "G5.1 needs both I and J (the middle control point's offset from the start)");
+    if (!ln.has('I') || !ln.has('J')) fail(errc::gcode_bezier, "G5.1 needs both I and J (the middle control point's offset from the start)");
     const auto [to, axes] = target();
     MotionBlock b = block(BlockKind::bezier, to);
     b.order = 3;
@@ -944,7 +944,7 @@ struct GcodeInterpreter::Impl {
 
   void g52() {
     if (mo.open == 52)
-      fail("nurbs-open", "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
+      fail(errc::gcode_nurbs_open, "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
     require_xy_known("G5.2");
     require_feed("G5.2");
     mo.g5_chain = false;
@@ -952,14 +952,14 @@ struct GcodeInterpreter::Impl {
     if (ln.has('L')) {
       const double L = val('L');
       if (L != std::floor(L) || L < 3)
-        soft("rank", "G5.2 order " + txt('L') + ": LinuxCNC ignores an order below 3 (it then uses 3); give L3 or more");
+        soft(errc::gcode_rank, "G5.2 order " + txt('L') + ": LinuxCNC ignores an order below 3 (it then uses 3); give L3 or more");
       // Any order above the largest is refused below; one past it keeps a
       // huge L from overflowing the int (found by fuzzing).
       else order = static_cast<int>(std::min(L, static_cast<double>(kMaxBezierDegree) + 2));
     }
     const int max = self.profile_ ? self.profile_->nurbs_max_rank : kMaxBezierDegree + 1;
     if (order > max) {
-      soft("rank", "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
+      soft(errc::gcode_rank, "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
     }
     mo.open = 52;
     mo.open_line = line;
@@ -972,7 +972,7 @@ struct GcodeInterpreter::Impl {
       // LinuxCNC: the current position gets weight 1, the point its P.
       g52_point();
     } else if (!ln.has('P')) {
-      soft("weight", "the G5.2 line needs P, the weight of its first control point (the current position): "
+      soft(errc::gcode_weight, "the G5.2 line needs P, the weight of its first control point (the current position): "
                      "without it the weight differs between LinuxCNC versions");
     } else {
       mo.weights[0] = weight(*ln.get('P'));
@@ -982,14 +982,14 @@ struct GcodeInterpreter::Impl {
   }
 
   void g53() {
-    if (mo.open != 52) fail("nurbs-start", "G5.3 ends a G5.2 block, and none is open");
-    if (!ln.words.empty()) fail("unexpected-word", "G5.3 takes no words, found " + ln.words.front().text);
+    if (mo.open != 52) fail(errc::gcode_nurbs_start, "G5.3 ends a G5.2 block, and none is open");
+    if (!ln.words.empty()) fail(errc::gcode_unexpected_word, "G5.3 takes no words, found " + ln.words.front().text);
     if (mo.ctrl.size() < static_cast<size_t>(mo.order)) {
       const std::string msg = "the G5.2 block opened at line " + std::to_string(mo.open_line) + " has " +
                               std::to_string(mo.ctrl.size()) + " control points; order L" + std::to_string(mo.order) +
                               " needs at least " + std::to_string(mo.order);
-      if (!lint()) fail("knot-count", msg);
-      soft("knot-count", msg);
+      if (!lint()) fail(errc::gcode_knot_count, msg);
+      soft(errc::gcode_knot_count, msg);
       abandon_block();
       return;
     }
@@ -1007,7 +1007,7 @@ struct GcodeInterpreter::Impl {
     if (ln.has('P')) {
       const double P = val('P');
       if (P != std::floor(P) || P < 2 || P > max) {
-        soft("rank", "rank " + txt('P') + ": expected P from 2 to " + std::to_string(max) + " (order = degree + 1)" +
+        soft(errc::gcode_rank, "rank " + txt('P') + ": expected P from 2 to " + std::to_string(max) + " (order = degree + 1)" +
                          machine());
         rank = static_cast<int>(std::clamp(std::floor(P), 2.0, static_cast<double>(max)));
       } else {
@@ -1023,14 +1023,14 @@ struct GcodeInterpreter::Impl {
       if (st.known_axes & (1u << a)) {
         const double slack = 1e-12 * std::max(1.0, std::abs(st.pos[a]));
         if (std::abs(w->value - st.pos[a]) > slack)
-          soft("nurbs-start", w->text + ": the first control point of a NURBS block must be the current position (" +
+          soft(errc::gcode_nurbs_start, w->text + ": the first control point of a NURBS block must be the current position (" +
                                   axis_name(a) + " = " + fmt_num(st.pos[a]) + ")");
       }
       p0[a] = w->value;
     }
     if ((st.known_axes & 7) != 7 && lint() && !mo.noted_position) {
       // Axes neither known nor given: lint goes on with 0.
-      note("position-unknown", "the NURBS block starts from a position this program has not set (its first "
+      note(errc::gcode_position_unknown, "the NURBS block starts from a position this program has not set (its first "
                                "control point must be the current position): position the tool with G00 first");
       mo.noted_position = true;
     }
@@ -1047,7 +1047,7 @@ struct GcodeInterpreter::Impl {
     mo.knot_lines.clear();
     mo.knot_only = 0;
     if (!ln.has('K')) {
-      soft("knot-missing", "the first block of a NURBS block needs its knot K (K- X- Y- Z- R-)");
+      soft(errc::gcode_knot_missing, "the first block of a NURBS block needs its knot K (K- X- Y- Z- R-)");
       mo.knots.push_back(kNaN);
       mo.knot_lines.push_back(line);
     } else {
@@ -1068,12 +1068,12 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
   more_.last_line = line_no;  // bookkeeping for finish(), even if the line is refused
   // Stated limits (limits.hpp), checked before the line is looked at.
   if (static_cast<size_t>(line_no) > kMaxReadLines)
-    throw InputError("gcode.program-too-long", "line " + std::to_string(line_no),
+    throw InputError(errc::gcode_program_too_long, Place::at_line(line_no),
                      "the program has more than " + std::to_string(kMaxReadLines) +
                          " lines, the most bezcam reads (docs/limits.md); split it into several programs");
   while (!text.empty() && (text.back() == '\r' || text.back() == '\n')) text.remove_suffix(1);
   if (text.size() > kMaxLineBytes)
-    throw InputError("gcode.line-too-long", "line " + std::to_string(line_no),
+    throw InputError(errc::gcode_line_too_long, Place::at_line(line_no),
                      "the line has " + std::to_string(text.size()) + " characters, more than the " +
                          std::to_string(kMaxLineBytes) + " bezcam reads in one line (docs/limits.md)");
   // The line runs on copies of the state, committed only when it is
@@ -1120,7 +1120,7 @@ std::vector<MotionBlock> GcodeInterpreter::finish() {
                     " of its " + std::to_string(more_.order) + " knot-only K blocks"
               : "the program ends inside the G5.2 block opened at line " + std::to_string(more_.open_line) +
                     ": close it with G5.3";
-    throw InputError("gcode.nurbs-open", "line " + std::to_string(std::max(more_.last_line, 1)), msg);
+    throw InputError(errc::gcode_nurbs_open, Place::at_line(std::max(more_.last_line, 1)), msg);
   }
   return {};
 }
@@ -1131,7 +1131,7 @@ namespace {
 // checked line by line by feed_line().
 std::optional<GcodeFinding> too_large(std::string_view text) {
   if (text.size() <= kMaxProgramBytes) return std::nullopt;
-  return GcodeFinding{1, "gcode.program-too-large",
+  return GcodeFinding{1, errc::gcode_program_too_large,
                       "the program is " + std::to_string(text.size() >> 20) + " MiB, more than the " +
                           std::to_string(kMaxProgramBytes >> 20) +
                           " MiB bezcam reads (docs/limits.md); split it into several programs"};
@@ -1171,7 +1171,7 @@ std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile
       in.feed_line(text.substr(pos, end - pos), no);
     } catch (const InputError& e) {
       findings.push_back({no, e.id(), e.message()});  // the line is skipped
-      if (e.id() == "gcode.program-too-long") {  // and so is the rest: one finding, not millions
+      if (e.id() == errc::gcode_program_too_long) {  // and so is the rest: one finding, not millions
         std::stable_sort(findings.begin(), findings.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
         return findings;
       }
@@ -1184,7 +1184,7 @@ std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile
     findings.push_back({std::max(no, 1), e.id(), e.message()});
   }
   if (!in.state().program_end)
-    findings.push_back({std::max(no, 1), "gcode.no-program-end",
+    findings.push_back({std::max(no, 1), errc::gcode_no_program_end,
                         "the program has no end (M02 or M30): the controller may wait or run on"});
   std::stable_sort(findings.begin(), findings.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
   return findings;

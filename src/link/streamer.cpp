@@ -95,11 +95,11 @@ class Sender {
 
   void check_identity() {
     if (st_.magic != kMagic)
-      throw IoError("link.protocol", to_.str(),
+      throw IoError(errc::link_protocol, to_.str(),
                     "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(st_.magic) +
                         ", expected 0000425A); check the address");
     if (st_.version != kProtocolVersion)
-      throw ControllerError("link.version", to_.str(),
+      throw ControllerError(errc::link_version, to_.str(),
                             "the controller speaks protocol version " + std::to_string(st_.version) +
                                 ", this sender version " + std::to_string(kProtocolVersion) + "; update one of them");
   }
@@ -140,7 +140,7 @@ class Sender {
     if (const std::string prefix = "line " + std::to_string(st_.alarm_line) + ": ";
         st_.alarm_line > 0 && text.rfind(prefix, 0) == 0)
       text.erase(0, prefix.size());
-    throw ControllerError("controller.alarm", where,
+    throw ControllerError(errc::controller_alarm, where,
                           std::string("the controller stopped with alarm ") + to_string(st_.alarm) + " (" +
                               std::to_string(static_cast<int>(st_.alarm)) + "): " +
                               (text.empty() ? "no message" : text) + "; " + position());
@@ -151,7 +151,7 @@ class Sender {
     st_ = read_status();
     if (st_.state == State::alarm) alarm_error();
     if (st_.session != session_) restarted();
-    throw ControllerError("link.refused", to_.str(),
+    throw ControllerError(errc::link_refused, to_.str(),
                           std::string("the controller refused ") + doing + " (Modbus exception " +
                               std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
                               describe(st_.last_reject) + "); " + position());
@@ -159,7 +159,7 @@ class Sender {
 
   [[noreturn]] void restarted() {
     throw ControllerError(
-        "link.restarted", to_.str(),
+        errc::link_restarted, to_.str(),
         "the controller no longer holds this transfer: session " + hex32(session_) + " was expected, it reports " +
             (st_.session == 0 ? std::string("no session") : "session " + hex32(st_.session)) + " in state " +
             to_string(st_.state) +
@@ -183,12 +183,12 @@ class Sender {
           continue;  // ask again
         }
         if (st_.last_reject == Reject::busy)
-          throw ControllerError("link.busy", to_.str(),
+          throw ControllerError(errc::link_busy, to_.str(),
                                 "the controller is busy with another sender's program (session " + hex32(st_.session) +
                                     ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
                                     std::to_string(st_.total_bytes) +
                                     " bytes received); try again when it is done, or abort it there");
-        throw ControllerError("link.refused", to_.str(),
+        throw ControllerError(errc::link_refused, to_.str(),
                               "the controller refused to open a transfer (Modbus exception " +
                                   std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
                                   describe(st_.last_reject) + ")");
@@ -202,7 +202,7 @@ class Sender {
           std::to_string(st_.buffer_capacity) + " bytes");
     max_chunk_ = std::min<std::uint16_t>(st_.max_chunk, kMaxChunkBytes);
     if (opt_.chunk_bytes > 0) max_chunk_ = std::min(max_chunk_, opt_.chunk_bytes);
-    if (max_chunk_ == 0) throw ControllerError("link.protocol", to_.str(), "the controller announces chunks of 0 bytes");
+    if (max_chunk_ == 0) throw ControllerError(errc::link_protocol, to_.str(), "the controller announces chunks of 0 bytes");
     mark_progress();
     report();
   }
@@ -223,7 +223,7 @@ class Sender {
       return;
     }
     if (Clock::now() - progress_time_ > opt_.stall_timeout)
-      throw ControllerError("link.stalled", to_.str(),
+      throw ControllerError(errc::link_stalled, to_.str(),
                             "the controller took no byte and executed no line for " +
                                 fmt_num(std::chrono::duration<double>(opt_.stall_timeout).count()) + " s (state " +
                                 to_string(st_.state) + "); " + position());
@@ -263,7 +263,7 @@ class Sender {
         // The acknowledgement must account for exactly this chunk; anything
         // else means the two sides disagree about the program.
         if (st_.ack_seq != seq + 1 || st_.ack_bytes != sent + n)
-          throw ControllerError("link.ack", to_.str(),
+          throw ControllerError(errc::link_ack, to_.str(),
                                 "chunk " + std::to_string(seq + 1) + " was acknowledged as sequence " +
                                     std::to_string(st_.ack_seq) + " at byte " + std::to_string(st_.ack_bytes) +
                                     ", expected byte " + std::to_string(sent + n) + "; the program may be corrupted");
@@ -316,7 +316,7 @@ class Sender {
         reconnect(e.message());
         if (st_.state == State::finishing || st_.state == State::done) break;  // it got through
         if (st_.ack_bytes != prog_.size())
-          throw ControllerError("link.ack", to_.str(), "after reconnecting before COMMIT the controller reports " +
+          throw ControllerError(errc::link_ack, to_.str(), "after reconnecting before COMMIT the controller reports " +
                                                            position() + "; the program may be corrupted");
       }
     }
@@ -352,7 +352,7 @@ class Sender {
     const auto deadline = Clock::now() + opt_.retry_time;
     for (int attempt = 1;; ++attempt) {
       if (failures_ >= opt_.retries || Clock::now() >= deadline)
-        throw IoError("link.lost", to_.str(),
+        throw IoError(errc::link_lost, to_.str(),
                       "the connection was lost and could not be restored (" + std::to_string(failures_) +
                           " attempts, last: " + why + "); " + std::to_string(acked_high_) + " of " +
                           std::to_string(prog_.size()) +
@@ -384,7 +384,7 @@ class Sender {
       refused(e, "RESUME");
     }
     if (st_.ack_bytes > sent_high_)
-      throw ControllerError("link.ack", to_.str(), "after reconnecting the controller reports " + position() +
+      throw ControllerError(errc::link_ack, to_.str(), "after reconnecting the controller reports " + position() +
                                                        ", more than was sent; the program may be corrupted");
   }
 
@@ -424,16 +424,16 @@ class Sender {
 }  // namespace
 
 StreamResult stream_program(std::string_view program, const Endpoint& to, const StreamOptions& opt) {
-  if (program.empty()) throw InputError("link.empty", "", "the program is empty; nothing to send");
+  if (program.empty()) throw InputError(errc::link_empty, Place{}, "the program is empty; nothing to send");
   if (program.size() > std::numeric_limits<std::uint32_t>::max())
-    throw InputError("link.too-large", "", "the program is larger than 4 GiB, the protocol's limit");
+    throw InputError(errc::link_too_large, Place{}, "the program is larger than 4 GiB, the protocol's limit");
   if (const auto nul = program.find('\0'); nul != std::string_view::npos) {
     const auto line = 1 + std::count(program.begin(), program.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
-    throw InputError("link.nul-byte", "line " + std::to_string(line),
+    throw InputError(errc::link_nul_byte, Place::at_line(line),
                      "the program holds a NUL byte (offset " + std::to_string(nul) + "); G-code is text");
   }
   if (opt.retries < 0 || opt.timeout.count() <= 0 || opt.stall_timeout.count() <= 0)
-    throw InputError("link.options", "", "timeouts must be positive and retries not negative");
+    throw InputError(errc::link_options, Place{}, "timeouts must be positive and retries not negative");
   return Sender(program, to, opt).run();
 }
 

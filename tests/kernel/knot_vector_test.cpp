@@ -21,7 +21,7 @@ InputError refusal(std::vector<double> knots, int degree, size_t n_points) {
     return e;
   }
   ADD_FAILURE() << "expected a refusal";
-  return InputError("", "", "");
+  return InputError(ErrorId(""), Place{}, "");
 }
 
 }  // namespace

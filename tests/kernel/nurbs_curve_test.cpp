@@ -224,7 +224,7 @@ TEST(NurbsCurve, ValidationNamesTheOffendingItem) {
       return e;
     }
     ADD_FAILURE() << "expected a refusal";
-    return InputError("", "", "");
+    return InputError(ErrorId(""), Place{}, "");
   };
   auto e = refusal([&] { NurbsCurve::make(2, pts, {0, 0, 0, 1, 1, 1}, {1, 0.5, -1}); });
   EXPECT_EQ(e.where(), "weights[2]");

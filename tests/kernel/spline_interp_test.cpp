@@ -209,7 +209,7 @@ TEST(SplineInterp, Refusals) {
       return e;
     }
     ADD_FAILURE() << "expected a refusal";
-    return InputError("", "", "");
+    return InputError(ErrorId(""), Place{}, "");
   };
   const std::vector<Vec3> rep{{0, 0}, {1, 2}, {1, 2}, {3, 0}};
   auto e = refusal([&] { natural_cubic_spline(rep, 2); });
