@@ -1,55 +1,102 @@
 #pragma once
 /// Typed errors that say where.
 ///
-/// Every refusal carries a stable id (for tests and scripts), the place it
-/// concerns (a JSON path such as `entities[3].knots[7]`, a G-code line such
-/// as `line 12`, or a Modbus register) and a sentence saying what was
-/// expected and what was found. The CLI maps the family to an exit status:
-/// InputError -> 2, IoError -> 3, ControllerError -> 4.
+/// Every refusal carries a stable id (a named constant of bezcam::errc in
+/// <bezcam/error_ids.hpp>, for tests and scripts), the place it concerns (a
+/// Place: a file, a JSON path such as `entities[3].knots[7]`, a G-code line,
+/// a register or setting, an option of the calling program) and a sentence
+/// saying what was expected and what was found. The family (input, io,
+/// controller) says what kind of failure it was; the library does not decide
+/// what a program does with it (the CLI maps families to exit statuses).
+#include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "bezcam/error_ids.hpp"
 
 namespace bezcam {
 
 enum class ErrorFamily { input, io, controller };
 
+/// Where an error applies. Every part is optional; to_string() composes the
+/// set parts, in the order option, file, JSON path, line, register, text, as
+/// `part: part: ...` (`job.json: entities[3].knots[7]`, `prog.nc: line 12`).
+struct Place {
+  std::optional<std::string> option;     ///< an option of the calling program, e.g. `--machine`
+  std::optional<std::string> file;       ///< a file (or an endpoint such as `HOST:PORT`)
+  std::optional<std::string> json_path;  ///< a JSON path inside the file, e.g. `entities[3].knots[7]`
+  std::optional<long long> line;         ///< a 1-based line number, printed as `line N`
+  std::optional<std::string> reg;        ///< a register or setting of a controller, e.g. `buffer`
+  /// An unstructured place, printed after the parts above (places that
+  /// were composed before they reached the Error).
+  std::string text;
+
+  /// The place as printed in messages (empty when nothing is known).
+  std::string to_string() const;
+  /// True when nothing is known.
+  bool empty() const { return to_string().empty(); }
+  /// The JSON path, or the unstructured text when no part is set (places
+  /// from layers that name a path relative to their caller's entity).
+  std::string relative_path() const;
+
+  static Place at_line(long long n) { Place p; p.line = n; return p; }
+  static Place at_json(std::string path) { Place p; p.json_path = std::move(path); return p; }
+  static Place at_option(std::string opt) { Place p; p.option = std::move(opt); return p; }
+  static Place at_file(std::string f) { Place p; p.file = std::move(f); return p; }
+  static Place at_register(std::string r) { Place p; p.reg = std::move(r); return p; }
+  /// `file` and a JSON path (`prefix.rest`, or either alone when the other is empty).
+  static Place in_json(std::string file, const std::string& prefix, const std::string& rest = {});
+};
+
 class Error : public std::runtime_error {
 public:
-  /// `id`: stable dotted identifier (`job.knots-order`); `where`: the place
-  /// (may be empty); `what`: the sentence.
-  Error(ErrorFamily family, std::string id, std::string where, std::string what);
+  /// `id`: the stable identifier (errc::job_knots_order); `where`: the
+  /// place (may be empty); `what`: the sentence.
+  Error(ErrorFamily family, ErrorId id, Place where, std::string what);
+  /// Compatibility: a place already composed as text.
+  Error(ErrorFamily family, ErrorId id, std::string where, std::string what);
 
   ErrorFamily family() const noexcept { return family_; }
+  /// The dotted id, e.g. `job.knots-order`.
   const std::string& id() const noexcept { return id_; }
+  /// The place as printed (Place::to_string()).
   const std::string& where() const noexcept { return where_; }
+  /// The place, structured.
+  const Place& place() const noexcept { return place_; }
   const std::string& message() const noexcept { return message_; }
-  /// Exit status of the CLI for this family (2, 3 or 4).
-  int exit_code() const noexcept;
 
 private:
   ErrorFamily family_;
-  std::string id_, where_, message_;
+  std::string id_;
+  Place place_;
+  std::string where_, message_;
 };
 
-/// Invalid input or usage: bad job file, bad G-code, bad profile. Exit 2.
+/// Invalid input or usage: bad job file, bad G-code, bad profile.
 class InputError : public Error {
 public:
-  InputError(std::string id, std::string where, std::string what)
-      : Error(ErrorFamily::input, std::move(id), std::move(where), std::move(what)) {}
+  InputError(ErrorId id, Place where, std::string what)
+      : Error(ErrorFamily::input, id, std::move(where), std::move(what)) {}
+  InputError(ErrorId id, std::string where, std::string what)
+      : Error(ErrorFamily::input, id, std::move(where), std::move(what)) {}
 };
 
-/// File or connection failure. Exit 3.
+/// File or connection failure.
 class IoError : public Error {
 public:
-  IoError(std::string id, std::string where, std::string what)
-      : Error(ErrorFamily::io, std::move(id), std::move(where), std::move(what)) {}
+  IoError(ErrorId id, Place where, std::string what)
+      : Error(ErrorFamily::io, id, std::move(where), std::move(what)) {}
+  IoError(ErrorId id, std::string where, std::string what)
+      : Error(ErrorFamily::io, id, std::move(where), std::move(what)) {}
 };
 
-/// The controller refused or lost the program. Exit 4.
+/// The controller refused or lost the program.
 class ControllerError : public Error {
 public:
-  ControllerError(std::string id, std::string where, std::string what)
-      : Error(ErrorFamily::controller, std::move(id), std::move(where), std::move(what)) {}
+  ControllerError(ErrorId id, Place where, std::string what)
+      : Error(ErrorFamily::controller, id, std::move(where), std::move(what)) {}
+  ControllerError(ErrorId id, std::string where, std::string what)
+      : Error(ErrorFamily::controller, id, std::move(where), std::move(what)) {}
 };
 
 /// Formats a number for messages: shortest text that reads back exactly.

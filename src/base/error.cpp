@@ -8,23 +8,51 @@ namespace {
 std::string compose(const std::string& where, const std::string& what) {
   return where.empty() ? what : where + ": " + what;
 }
+void add(std::string& out, const std::string& part) {
+  if (part.empty()) return;
+  if (!out.empty()) out += ": ";
+  out += part;
+}
 }  // namespace
 
-Error::Error(ErrorFamily family, std::string id, std::string where, std::string what)
-    : std::runtime_error(compose(where, what)),
+std::string Place::to_string() const {
+  std::string out;
+  if (option) add(out, *option);
+  if (file) add(out, *file);
+  if (json_path) add(out, *json_path);
+  if (line) add(out, "line " + std::to_string(*line));
+  if (reg) add(out, *reg);
+  add(out, text);
+  return out;
+}
+
+std::string Place::relative_path() const {
+  if (json_path) return *json_path;
+  if (!option && !file && !line && !reg) return text;
+  return {};
+}
+
+Place Place::in_json(std::string file, const std::string& prefix, const std::string& rest) {
+  Place p;
+  p.file = std::move(file);
+  p.json_path = prefix.empty() ? rest : rest.empty() ? prefix : prefix + "." + rest;
+  return p;
+}
+
+Error::Error(ErrorFamily family, ErrorId id, Place where, std::string what)
+    : std::runtime_error(compose(where.to_string(), what)),
       family_(family),
-      id_(std::move(id)),
-      where_(std::move(where)),
+      id_(id.str()),
+      place_(std::move(where)),
+      where_(place_.to_string()),
       message_(std::move(what)) {}
 
-int Error::exit_code() const noexcept {
-  switch (family_) {
-    case ErrorFamily::input: return 2;
-    case ErrorFamily::io: return 3;
-    case ErrorFamily::controller: return 4;
-  }
-  return 2;
-}
+Error::Error(ErrorFamily family, ErrorId id, std::string where, std::string what)
+    : Error(family, id, [&] {
+        Place p;
+        p.text = std::move(where);
+        return p;
+      }(), std::move(what)) {}
 
 std::string fmt_num(double v) {
   char buf[64];

@@ -19,7 +19,7 @@ std::string size_text(std::uintmax_t bytes) {
 // `size` 0: not known (a pipe), only that it is over the limit.
 [[noreturn]] void too_large(const std::filesystem::path& file, std::uintmax_t size, std::size_t max_bytes,
                             const std::string& what) {
-  throw InputError("limit.file-size", file.string(),
+  throw InputError(errc::limit_file_size, file.string(),
                    "the " + what + " is " + (size ? size_text(size) + ", more" : std::string("more")) +
                        " than bezcam reads (" + size_text(max_bytes) + ", docs/limits.md); split it into smaller files");
 }
@@ -35,7 +35,7 @@ std::string read_bounded(const std::filesystem::path& file, std::size_t max_byte
     if (!ec && size > max_bytes) too_large(file, size, max_bytes, what);
   }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError("io.read", file.string(), "cannot open the " + what + " for reading");
+  if (!in) throw IoError(errc::io_read, Place::at_file(file.string()), "cannot open the " + what + " for reading");
   std::string text;
   char buf[1 << 16];
   while (in) {
@@ -43,7 +43,7 @@ std::string read_bounded(const std::filesystem::path& file, std::size_t max_byte
     text.append(buf, static_cast<std::size_t>(in.gcount()));
     if (text.size() > max_bytes) too_large(file, 0, max_bytes, what);
   }
-  if (in.bad()) throw IoError("io.read", file.string(), "error while reading the " + what);
+  if (in.bad()) throw IoError(errc::io_read, Place::at_file(file.string()), "error while reading the " + what);
   return text;
 }
 

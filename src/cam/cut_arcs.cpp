@@ -58,7 +58,7 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
 
 void emit_arcs(CutContext& c, EntityReport& r) {
   if (!c.machine.arcs)
-    throw InputError("usage.output", "--output",
+    throw InputError(errc::usage_output, Place::at_option("--output"),
                      "machine profile \"" + c.machine.name +
                          "\" does not take arcs (\"arcs\": false), so --output arcs cannot be honoured; use "
                          "--output lines, or a profile that takes G02/G03");

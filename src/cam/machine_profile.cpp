@@ -19,7 +19,7 @@ using json = nlohmann::json;
 struct Reader {
   std::string source;
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw InputError("machine.invalid", source + ": " + path, what);
+    throw InputError(errc::machine_invalid, Place::in_json(source, path), what);
   }
   const json* opt(const json& o, const char* k) const {
     auto it = o.find(k);
@@ -53,7 +53,7 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    throw InputError("machine.syntax", source, std::string("the machine profile is not valid JSON (") + e.what() + ")");
+    throw InputError(errc::machine_syntax, source, std::string("the machine profile is not valid JSON (") + e.what() + ")");
   }
   if (!doc.is_object()) r.fail("(top level)", "expected a JSON object");
   MachineProfile m;
@@ -172,7 +172,7 @@ MachineProfile load_machine_profile(const std::string& name_or_file, const std::
   } else {
     for (char c : name_or_file)
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_')
-        throw InputError("machine.unknown", "", "\"" + name_or_file + "\" is not a valid profile name");
+        throw InputError(errc::machine_unknown, Place{}, "\"" + name_or_file + "\" is not a valid profile name");
     std::error_code ec;
     for (const auto& dir : dirs)
       if (std::filesystem::exists(dir / (name_or_file + ".json"), ec)) {
@@ -182,13 +182,13 @@ MachineProfile load_machine_profile(const std::string& name_or_file, const std::
     if (file.empty()) {
       std::string known;
       for (const auto& n : machine_profile_names(dirs)) known += (known.empty() ? "" : ", ") + n;
-      throw InputError("machine.unknown", "",
+      throw InputError(errc::machine_unknown, Place{},
                        "no machine profile named \"" + name_or_file + "\"; known profiles: " + known +
                            " (or give the path of a .json profile)");
     }
   }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError("io.read", file.string(), "cannot open the machine profile");
+  if (!in) throw IoError(errc::io_read, Place::at_file(file.string()), "cannot open the machine profile");
   std::ostringstream ss;
   ss << in.rdbuf();
   return parse_machine_profile(ss.str(), file.string());

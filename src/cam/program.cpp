@@ -15,7 +15,7 @@ OutputMode parse_output_mode(const std::string& s) {
   if (s == "lines") return OutputMode::lines;
   if (s == "arcs") return OutputMode::arcs;
   if (s == "nurbs") return OutputMode::nurbs;
-  throw InputError("usage.output", "--output", "expected lines, arcs or nurbs, found \"" + s + "\"");
+  throw InputError(errc::usage_output, Place::at_option("--output"), "expected lines, arcs or nurbs, found \"" + s + "\"");
 }
 
 const char* to_string(OutputMode m) {
@@ -36,7 +36,7 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
   const JobParams p = e.params.over(job.params.over(prof));
   auto need = [&](const std::optional<double>& v, const char* key) {
     if (!v)
-      throw InputError("job.missing", job.source + ": " + e.json_path() + "." + key,
+      throw InputError(errc::job_missing, Place::in_json(job.source, e.json_path() + "." + key),
                        std::string("no ") + key + " is set by the entity, the job or machine profile \"" + m.name +
                            "\"; add \"" + key + "\" to the file's \"job\" object");
     return *v;
@@ -45,7 +45,7 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
               need(p.cut_z, "cut_z"),     p.spindle_rpm.value_or(0),          p.tool_radius.value_or(0),
               p.tool.value_or(1)};
   if (c.cut_z >= c.safe_z)
-    throw InputError("job.range", job.source + ": " + e.json_path() + ".cut_z",
+    throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".cut_z"),
                      "expected cut_z below safe_z (" + fmt_num(c.safe_z) + "), found " + fmt_num(c.cut_z));
   return c;
 }
@@ -91,7 +91,10 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
     // The flattener knows neither the file nor the machine: say where the
     // tolerance came from and whose decimals it meets.
     // (Also the flattener's own segment limit, found while flattening.)
-    if (!e.id().starts_with("flatten.tolerance") && !(e.id() == "limit.segments" && e.where() == "tolerance")) throw;
+    const ErrorId id = e.id();
+    const bool tolerance = id == errc::flatten_tolerance || id == errc::flatten_tolerance_below_precision ||
+                           id == errc::flatten_tolerance_below_rounding;
+    if (!tolerance && !(id == errc::limit_segments && e.place().relative_path() == "tolerance")) throw;
     throw InputError(e.id(), opt.tolerance ? std::string("--tolerance") : job.source + ": tolerance",
                      e.message() + " (machine \"" + m.name + "\" prints " + std::to_string(m.decimals(job.units)) +
                          " decimals in " + to_string(job.units) + ")");
@@ -181,7 +184,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     if (g.dim == 3) {
       const Box3 b = g.bounds();
       if (b.hi.z > cp.safe_z)
-        throw InputError("job.above-safe-z", job.source + ": " + e.json_path(),
+        throw InputError(errc::job_above_safe_z, Place::in_json(job.source, e.json_path()),
                          "the curve rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " + fmt_num(cp.safe_z) +
                              "; rapid moves at safe_z would cross it: raise safe_z");
     }

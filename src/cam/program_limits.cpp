@@ -28,7 +28,7 @@ void check_entity_limits(const Job& job, const Entity& e, double tolerance, int 
   const double magnitude = entity_magnitude(e, tool_radius);
   const double least = kMinRelativeTolerance * magnitude;
   if (tolerance < least)
-    throw InputError("limit.tolerance-precision", tolerance_place,
+    throw InputError(errc::limit_tolerance_precision, tolerance_place,
                      "tolerance " + fmt_num(tolerance) + " is too small for " + e.label() + " (" + job.source + ": " +
                          e.json_path() + "), whose coordinates reach " + fmt_num(magnitude) +
                          ": double precision cannot honour less than " + fmt_num(kMinRelativeTolerance) +
@@ -42,7 +42,7 @@ void check_entity_limits(const Job& job, const Entity& e, double tolerance, int 
   if (!(budget > 0)) return;  // the flattener refuses that, naming the decimals
   const double n = estimate_segments(e.curve.pieces, budget);
   if (n > static_cast<double>(kMaxProgramLines))
-    throw InputError("limit.segments", job.source + ": " + e.json_path(),
+    throw InputError(errc::limit_segments, Place::in_json(job.source, e.json_path()),
                      e.label() + " needs about " + (std::isfinite(n) ? fmt_num(std::round(n)) : std::string("infinitely many")) +
                          " segments within tolerance " + fmt_num(tolerance) + ", more than the " +
                          std::to_string(kMaxProgramLines) +
@@ -64,7 +64,7 @@ void ProgramLength::after_entity(const Program& p, const Job& job, const Entity&
   lines_ += program_lines(p, moves_);
   moves_ = p.moves.size();
   if (lines_ > kMaxProgramLines)
-    throw InputError("limit.program-length", job.source + ": " + e.json_path(),
+    throw InputError(errc::limit_program_length, Place::in_json(job.source, e.json_path()),
                      "with " + e.label() + " the program reaches " + std::to_string(lines_) + " lines, more than the " +
                          std::to_string(kMaxProgramLines) +
                          " a program may hold (docs/limits.md); split the job or raise the tolerance");

@@ -85,7 +85,7 @@ class SurfaceEmitter {
       }
     } catch (const InputError& err) {
       // The geometry layers know no file: name the entity.
-      if (!err.where().empty()) throw;
+      if (!err.place().empty()) throw;
       throw InputError(err.id(), where(), err.message());
     }
     retract();
@@ -111,7 +111,7 @@ class SurfaceEmitter {
     // safe Z must clear the whole patch.
     const Box3 b = bounds(s_);
     if (b.hi.z > c_.params.safe_z)
-      throw InputError("job.above-safe-z", where(),
+      throw InputError(errc::job_above_safe_z, where(),
                        "the surface rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " +
                            fmt_num(c_.params.safe_z) + "; rapid moves at safe_z would cross it: raise safe_z");
     if (c_.params.tool_radius < 0) throw std::logic_error("negative tool radius");
@@ -209,7 +209,7 @@ class SurfaceEmitter {
                    : "the surface is concave there with a curvature radius of " +
                          fmt_num(std::round(g.curvature_radius * 1e4) / 1e4) + ", less than the ball-end radius " +
                          fmt_num(r_);
-    throw InputError("surface.gouge", where(),
+    throw InputError(errc::surface_gouge, where(),
                      "the tool would gouge the surface on " + what + " around " + fmt_uv(g.worst_u, g.worst_v) +
                          ": " + why + "; use a smaller tool_radius, or set \"gouge\": \"skip\" (in \"job\" or on the "
                          "entity) to leave such regions uncut");
@@ -255,7 +255,7 @@ class SurfaceEmitter {
   void cut_passes() {
     const ToolpathSpec& tp = e_.toolpath;
     if (!tp.stepover)
-      throw InputError("job.missing", where() + ".toolpath.stepover",
+      throw InputError(errc::job_missing, where() + ".toolpath.stepover",
                        "a \"" + tp.pattern + "\" toolpath needs \"stepover\": the largest distance allowed between "
                        "neighbouring passes, in file units");
     PassOptions o;

@@ -40,7 +40,7 @@ void validate_program(const Program& p, const MachineProfile& m) {
       const double lo = m.travel_mm[a][0] * k, hi = m.travel_mm[a][1] * k;
       const double v = b.lo[a] < lo ? b.lo[a] : (b.hi[a] > hi ? b.hi[a] : lo);
       if (b.lo[a] < lo || b.hi[a] > hi)
-        throw InputError("program.travel", where(mv),
+        throw InputError(errc::program_travel, where(mv),
                          std::string("the tool path reaches ") + names[a] + " = " + fmt_num(v) + " " + unit +
                              ", outside the travel of machine \"" + m.name + "\" (" + names[a] + " from " +
                              fmt_num(lo) + " to " + fmt_num(hi) + " " + unit +
@@ -55,7 +55,7 @@ void validate_program(const Program& p, const MachineProfile& m) {
     if (!mo) continue;
     const bool rapid = is_rapid(mv);
     if (!rapid && mo->feed > max_feed)
-      throw InputError("program.feed", where(mv),
+      throw InputError(errc::program_feed, where(mv),
                        "feed " + fmt_num(mo->feed) + " " + unit + "/min exceeds the maximum feed of machine \"" +
                            m.name + "\" (" + fmt_num(max_feed) + " " + unit + "/min); lower \"feed\" or \"plunge_feed\"");
     if (!rapid && !(mo->feed > 0))
@@ -66,7 +66,7 @@ void validate_program(const Program& p, const MachineProfile& m) {
       if (mo->axes & (1u << a)) to[a] = mo->to[a];
     if (const auto* arc = std::get_if<ArcMove>(&mv.what)) {
       if (!m.arcs)
-        throw InputError("program.arcs", where(mv), "machine \"" + m.name + "\" does not take arcs (\"arcs\": false)");
+        throw InputError(errc::program_arcs, where(mv), "machine \"" + m.name + "\" does not take arcs (\"arcs\": false)");
       // The emitters keep printed arcs within the controller's radius check.
       const double rs = std::hypot(pos.x - arc->center.x, pos.y - arc->center.y);
       const double re = std::hypot(to.x - arc->center.x, to.y - arc->center.y);
@@ -81,7 +81,7 @@ void validate_program(const Program& p, const MachineProfile& m) {
     check_box(mv, b, mo->axes | known);
     const bool moves_xy = (mo->axes & 3) && ((known & 3) != 3 || to.x != pos.x || to.y != pos.y);
     if (rapid && moves_xy && (to.z < p.safe_z || ((known & 4) && pos.z < p.safe_z)))
-      throw InputError("program.rapid-below-safe-z", where(mv),
+      throw InputError(errc::program_rapid_below_safe_z, where(mv),
                        "a rapid move would cross the part below safe Z (" + fmt_num(p.safe_z) + " " + unit + ")");
     pos = to;
     known |= mo->axes;

@@ -35,7 +35,7 @@ int run() {
   // Both files on stdout would be one unreadable stream; one file for both
   // would lose the program.
   if (!o.report.empty() && (o.report == o.out || (o.report == "-" && o.out == "-")))
-    throw InputError("usage.report", "--report",
+    throw InputError(errc::usage_report, Place::at_option("--report"),
                      "the report cannot go to the same place as the program (" + (o.out == "-" ? std::string("standard output") : o.out) +
                          "); give --report another file name, or write the program with -o FILE");
   const Job job = load_job(o.job);

@@ -32,7 +32,7 @@ CLI::App* add(CLI::App& app) {
 
 int run() {
   const MachineProfile m = load_profile_option(o.machine);
-  if (std::filesystem::is_directory(o.file)) throw IoError("io.read", o.file, "is a directory, not a G-code file");
+  if (std::filesystem::is_directory(o.file)) throw IoError(errc::io_read, Place::at_file(o.file), "is a directory, not a G-code file");
   const auto findings = lint_gcode(read_bounded(o.file, kMaxProgramBytes, "G-code file"), m);
   for (const auto& f : findings) std::cout << o.file << ":" << f.line << ": " << f.message << " [" << f.id << "]\n";
   if (!o.quiet)

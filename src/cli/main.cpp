@@ -30,16 +30,16 @@ bool stderr_is_tty() { return ::isatty(STDERR_FILENO) == 1; }
 void write_output_atomically(const std::string& path, const std::string& data) {
   if (path == "-" || path.empty()) {
     std::cout << data << std::flush;
-    if (!std::cout) throw IoError("io.write", "stdout", "cannot write the program to standard output");
+    if (!std::cout) throw IoError(errc::io_write, Place::at_file("stdout"), "cannot write the program to standard output");
     return;
   }
   namespace fs = std::filesystem;
   const fs::path target(path);
-  if (fs::is_directory(target)) throw IoError("io.write", path, "is a directory; give a file name for the output");
+  if (fs::is_directory(target)) throw IoError(errc::io_write, Place::at_file(path), "is a directory; give a file name for the output");
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::string tmpl = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
   const int fd = ::mkstemp(tmpl.data());
-  if (fd < 0) throw IoError("io.write", path, "cannot create a file in " + dir.string() + ": " + std::strerror(errno));
+  if (fd < 0) throw IoError(errc::io_write, Place::at_file(path), "cannot create a file in " + dir.string() + ": " + std::strerror(errno));
   size_t off = 0;
   while (off < data.size()) {
     const ssize_t n = ::write(fd, data.data() + off, data.size() - off);
@@ -47,23 +47,36 @@ void write_output_atomically(const std::string& path, const std::string& data) {
       const int err = errno;
       ::close(fd);
       ::unlink(tmpl.c_str());
-      throw IoError("io.write", path, std::string("write failed: ") + std::strerror(err));
+      throw IoError(errc::io_write, Place::at_file(path), std::string("write failed: ") + std::strerror(err));
     }
     off += static_cast<size_t>(n);
   }
   if (::fsync(fd) != 0 || ::close(fd) != 0) {
     ::unlink(tmpl.c_str());
-    throw IoError("io.write", path, std::string("write failed: ") + std::strerror(errno));
+    throw IoError(errc::io_write, Place::at_file(path), std::string("write failed: ") + std::strerror(errno));
   }
   ::chmod(tmpl.c_str(), 0644);
   if (::rename(tmpl.c_str(), path.c_str()) != 0) {
     const int err = errno;
     ::unlink(tmpl.c_str());
-    throw IoError("io.write", path, std::string("cannot replace the file: ") + std::strerror(err));
+    throw IoError(errc::io_write, Place::at_file(path), std::string("cannot replace the file: ") + std::strerror(err));
   }
 }
 
 }  // namespace bezcam::cli
+
+namespace {
+// The CLI's contract with scripts (docs/errors.md): the library says what
+// kind of failure it was, the program turns that into a status.
+int exit_status(bezcam::ErrorFamily family) {
+  switch (family) {
+    case bezcam::ErrorFamily::input: return 2;
+    case bezcam::ErrorFamily::io: return 3;
+    case bezcam::ErrorFamily::controller: return 4;
+  }
+  return 2;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace bezcam;
@@ -90,7 +103,7 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const Error& e) {
     std::cerr << "bezcam: error: " << e.what() << "\n  (error id: " << e.id() << ")\n";
-    return e.exit_code();
+    return exit_status(e.family());
   } catch (const std::bad_alloc&) {
     std::cerr << "bezcam: error: out of memory; the input is too large for this machine\n";
     return 3;

@@ -50,7 +50,7 @@ CLI::App* add(CLI::App& app) {
 }
 
 std::string read_text(const std::string& path, const char* what) {
-  if (std::filesystem::is_directory(path)) throw IoError("io.read", path, std::string("is a directory, not a ") + what);
+  if (std::filesystem::is_directory(path)) throw IoError(errc::io_read, Place::at_file(path), std::string("is a directory, not a ") + what);
   return read_bounded(path, kMaxProgramBytes, what);  // refused before it is read when too large (limits.hpp)
 }
 
@@ -58,7 +58,7 @@ std::string read_text(const std::string& path, const char* what) {
 // in bytes; a refusal names the file and the line.
 int run_program() {
   if (sub->count("--output") > 0)
-    throw InputError("usage.preview", "--output",
+    throw InputError(errc::usage_preview, Place::at_option("--output"),
                      "--output chooses the moves of a program built from the job; it does not apply to --program, "
                      "which is drawn as written (leave one of them out)");
   std::optional<Job> job;
@@ -84,7 +84,9 @@ int run_program() {
     }
     for (auto& b : reader.finish()) in.motion.push_back({std::move(b), -1});
   } catch (const InputError& e) {
-    throw InputError(e.id(), o.program + ": " + e.where(),
+    Place at = e.place();
+    at.file = o.program;
+    throw InputError(e.id(), std::move(at),
                      e.message() + "; the preview draws only programs the reader accepts (bezcam lint lists every "
                                    "finding)");
   }
@@ -92,7 +94,7 @@ int run_program() {
   in.units = reader.state().units;
   const char* u = to_string(in.units);
   if (job && job->units != in.units)
-    throw InputError("preview.units", o.program,
+    throw InputError(errc::preview_units, o.program,
                      std::string("the program is in ") + u + " (" + (in.units == Units::mm ? "G21" : "G20") +
                          ") but the job " + job->source + " is in " + to_string(job->units) +
                          "; compare a program with the job it was made from");
@@ -133,7 +135,7 @@ int run_program() {
 int run() {
   if (!o.program.empty()) return run_program();
   if (o.job.empty())
-    throw InputError("usage.preview", "JOB", "give a job file to draw, or a G-code program with --program FILE.nc");
+    throw InputError(errc::usage_preview, "JOB", "give a job file to draw, or a G-code program with --program FILE.nc");
   const Job job = load_job(o.job);
   const MachineProfile m = resolve_profile(job, o.conv.machine);
   const size_t n = job.entities.size();

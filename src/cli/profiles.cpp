@@ -35,8 +35,8 @@ MachineProfile load_profile_option(const std::string& machine) {
   try {
     return load_machine_profile(machine, profile_dirs());
   } catch (const InputError& e) {
-    if (e.id() != "machine.unknown") throw;
-    throw InputError(e.id(), "--machine", e.message());
+    if (e.id() != errc::machine_unknown) throw;
+    throw InputError(e.id(), Place::at_option("--machine"), e.message());
   }
 }
 
@@ -47,7 +47,7 @@ MachineProfile resolve_profile(const Job& job, const std::string& cli_machine) {
       return load_machine_profile(*job.machine, profile_dirs());
     } catch (const InputError& e) {
       // The name came from the file, not from the command line.
-      if (e.id() != "machine.unknown") throw;
+      if (e.id() != errc::machine_unknown) throw;
       throw InputError(e.id(), job.source + ": machine",
                        e.message() + "; fix the file's \"machine\" or override it with --machine");
     }

@@ -24,6 +24,23 @@
 namespace bezcam::cli {
 namespace {
 
+// The id of a run that the simulated controller stopped: `sim.` and the alarm's name.
+ErrorId alarm_error_id(link::Alarm a) {
+  switch (a) {
+    case link::Alarm::travel_limit: return errc::sim_travel_limit;
+    case link::Alarm::feed_limit: return errc::sim_feed_limit;
+    case link::Alarm::line_too_long: return errc::sim_line_too_long;
+    case link::Alarm::crc_mismatch: return errc::sim_crc_mismatch;
+    case link::Alarm::length_mismatch: return errc::sim_length_mismatch;
+    case link::Alarm::incomplete: return errc::sim_incomplete;
+    case link::Alarm::sender_lost: return errc::sim_sender_lost;
+    case link::Alarm::aborted: return errc::sim_aborted;
+    case link::Alarm::none:
+    case link::Alarm::gcode: break;
+  }
+  return errc::sim_gcode;
+}
+
 using namespace bezcam::link;
 using namespace bezcam::sim;
 
@@ -96,12 +113,12 @@ std::vector<std::uint64_t> parse_faults(const std::string& kind) {
     const auto colon = f.find(':');
     const std::string k = f.substr(0, colon);
     if (k != "drop-before" && k != "drop-after" && k != "corrupt")
-      throw InputError("sim.fault", f, "expected drop-before:N, drop-after:N or corrupt:N");
+      throw InputError(errc::sim_fault, f, "expected drop-before:N, drop-after:N or corrupt:N");
     std::uint64_t n = 0;
     try {
       n = std::stoull(colon == std::string::npos ? "" : f.substr(colon + 1));
     } catch (const std::exception&) {
-      throw InputError("sim.fault", f, "expected a chunk count after the colon, such as drop-after:5");
+      throw InputError(errc::sim_fault, f, "expected a chunk count after the colon, such as drop-after:5");
     }
     if (k == kind) out.push_back(n);
   }
@@ -152,7 +169,7 @@ class SignalWaiter {
 
 int run() {
   if (o.listen.empty() && o.program.empty())
-    throw InputError("sim.usage", "simulate", "give --listen HOST:PORT or --program FILE.nc");
+    throw InputError(errc::sim_usage, "simulate", "give --listen HOST:PORT or --program FILE.nc");
   ControllerConfig cfg;
   cfg.profile = load_profile_option(o.machine);
   cfg.buffer_bytes = o.buffer;
@@ -186,8 +203,8 @@ int run() {
       std::string text = ctl.alarm_text();
       const std::string prefix = "line " + std::to_string(st.alarm_line) + ": ";
       if (text.rfind(prefix, 0) == 0) text.erase(0, prefix.size());
-      throw InputError(std::string("sim.") + to_string(st.alarm),
-                       st.alarm_line ? "line " + std::to_string(st.alarm_line) : o.program,
+      throw InputError(alarm_error_id(st.alarm),
+                       st.alarm_line ? Place::at_line(st.alarm_line) : Place::at_file(o.program),
                        text + " (alarm " + to_string(st.alarm) + " of the simulated controller)");
     }
     if (!o.quiet)

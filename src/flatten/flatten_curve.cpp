@@ -268,7 +268,7 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
   // Stated limit (limits.hpp): a count that would exceed it is refused
   // before the work, or as soon as it is exceeded.
   auto too_many = [&](const std::string& found) {
-    return InputError("limit.segments", "tolerance",
+    return InputError(errc::limit_segments, Place::at_json("tolerance"),
                       "flattening within tolerance " + fmt_num(tol) + " needs " + found + " segments, more than the " +
                           std::to_string(opt.max_vertices) +
                           " a program may hold (docs/limits.md); raise the tolerance or split the curve");

@@ -20,7 +20,7 @@ const Vec3 kZ{0, 0, 1};
 
 [[noreturn]] void normal_undefined(const SurfaceCurve& c, double t) {
   const auto [u, v] = uv_at(c, t);
-  throw InputError("surface.normal-undefined", "",
+  throw InputError(errc::surface_normal_undefined, Place{},
                    "the surface normal vanishes near u = " + fmt_num(u) + ", v = " + fmt_num(v) +
                        " (a collapsed edge or a cusp), so a ball-end tool cannot follow it there; "
                        "use tool_radius 0 or a patch without degenerate points");

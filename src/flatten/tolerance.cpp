@@ -50,18 +50,18 @@ std::string advice_num(double v) {
 
 ToleranceBudget check_tolerance(double tol, int decimals, int dim, double scale) {
   if (!(tol > 0) || !std::isfinite(tol))
-    throw InputError("flatten.tolerance", "tolerance", "expected a finite tolerance > 0, found " + fmt_num(tol));
+    throw InputError(errc::flatten_tolerance, Place::at_json("tolerance"), "expected a finite tolerance > 0, found " + fmt_num(tol));
   ToleranceBudget b;
   b.rounding = max_rounding_displacement(decimals, dim);
   if (b.rounding >= 0.9 * tol)
-    throw InputError("flatten.tolerance-below-rounding", "tolerance",
+    throw InputError(errc::flatten_tolerance_below_rounding, Place::at_json("tolerance"),
                      "tolerance " + fmt_num(tol) + " cannot be honoured with " + std::to_string(decimals) +
                          " decimals: rounding alone moves a point by up to " + advice_num(b.rounding) +
                          "; use a tolerance above " + advice_num(b.rounding / 0.9) +
                          " or a profile with more decimals");
   b.margin = float_margin(tol, scale);
   if (b.margin >= 0.05 * tol)
-    throw InputError("flatten.tolerance-below-precision", "tolerance",
+    throw InputError(errc::flatten_tolerance_below_precision, Place::at_json("tolerance"),
                      "tolerance " + fmt_num(tol) + " is too small for coordinates of magnitude " + fmt_num(scale) +
                          " in double precision; use a tolerance above " + advice_num(b.margin * 20));
   b.budget = tol - b.margin;

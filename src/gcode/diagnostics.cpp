@@ -4,17 +4,17 @@
 
 namespace bezcam::gcode {
 
-void Diagnostics::fail(const std::string& id, const std::string& msg) const {
-  throw InputError("gcode." + id, "line " + std::to_string(line), msg);
+void Diagnostics::fail(ErrorId id, const std::string& msg) const {
+  throw InputError(id, Place::at_line(line), msg);
 }
 
-void Diagnostics::soft(const std::string& id, const std::string& msg, int at) const {
+void Diagnostics::soft(ErrorId id, const std::string& msg, int at) const {
   if (!findings) fail(id, msg);
-  findings->push_back({at ? at : line, "gcode." + id, msg});
+  findings->push_back({at ? at : line, id, msg});
 }
 
-void Diagnostics::note(const std::string& id, const std::string& msg, int at) const {
-  if (findings) findings->push_back({at ? at : line, "gcode." + id, msg});
+void Diagnostics::note(ErrorId id, const std::string& msg, int at) const {
+  if (findings) findings->push_back({at ? at : line, id, msg});
 }
 
 }  // namespace bezcam::gcode

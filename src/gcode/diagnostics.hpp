@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bezcam/error_ids.hpp"
 #include "bezcam/gcode/reader.hpp"
 
 namespace bezcam::gcode {
@@ -13,13 +14,13 @@ struct Diagnostics {
   int line = 0;                                   // 1-based line being read
   std::vector<GcodeFinding>* findings = nullptr;  // set under lint_gcode()
 
-  /// Refuses the line: throws InputError("gcode." + id, "line N", msg).
-  [[noreturn]] void fail(const std::string& id, const std::string& msg) const;
+  /// Refuses the line: throws InputError(id, "line N", msg).
+  [[noreturn]] void fail(ErrorId id, const std::string& msg) const;
   /// A problem the line can go on from: thrown by the reader, recorded by
   /// lint (at line `at` when nonzero).
-  void soft(const std::string& id, const std::string& msg, int at = 0) const;
+  void soft(ErrorId id, const std::string& msg, int at = 0) const;
   /// Lint only: what a demanding machinist flags but a controller would run.
-  void note(const std::string& id, const std::string& msg, int at = 0) const;
+  void note(ErrorId id, const std::string& msg, int at = 0) const;
   /// Whether lint_gcode() is reading (findings are recorded, not thrown).
   bool lint() const { return findings != nullptr; }
 };

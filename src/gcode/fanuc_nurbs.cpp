@@ -22,15 +22,15 @@ bool GcodeInterpreter::Impl::continue_block() {
                                 });
   if (!ln.has('K') || !only_block_words) {
     if (ln.has('K') && ln.g.empty() && ln.m.empty()) {
-      if (ln.has('P')) fail("nurbs-word", "P (the rank) is only given on the first block of a NURBS block, found " + txt('P'));
-      if (ln.has('F')) fail("nurbs-word", "F is only given on the first block of a NURBS block, found " + txt('F'));
+      if (ln.has('P')) fail(errc::gcode_nurbs_word, "P (the rank) is only given on the first block of a NURBS block, found " + txt('P'));
+      if (ln.has('F')) fail(errc::gcode_nurbs_word, "F is only given on the first block of a NURBS block, found " + txt('F'));
     }
     const std::string msg = "the NURBS block opened at line " + std::to_string(mo.open_line) +
                             " is incomplete: it has " + std::to_string(mo.ctrl.size()) + " control points and " +
                             std::to_string(mo.knot_only) + " of its " + std::to_string(mo.order) +
                             " knot-only blocks; until the last knot every line must be 'K- [X- Y- Z- R-]'";
-    if (!lint()) fail("nurbs-open", msg);
-    soft("nurbs-open", msg);
+    if (!lint()) fail(errc::gcode_nurbs_open, msg);
+    soft(errc::gcode_nurbs_open, msg);
     abandon_block();
     return false;  // lint reads the line on its own
   }
@@ -38,7 +38,7 @@ bool GcodeInterpreter::Impl::continue_block() {
   const bool knot_only = ln.words.size() == 1;
   if (!knot_only) {
     if (mo.knot_only > 0)
-      fail("knot-count", "a control point after the knot-only blocks that began at line " +
+      fail(errc::gcode_knot_count, "a control point after the knot-only blocks that began at line " +
                              std::to_string(mo.knot_only_line) + ": a NURBS block lists every control point first, "
                              "then exactly P (" + std::to_string(mo.order) + ") knot-only K blocks");
     Vec3 p = mo.ctrl.back();
@@ -64,7 +64,7 @@ void GcodeInterpreter::Impl::add_knot(const Word& k, bool knot_only) {
   while (prev > 0 && std::isnan(mo.knots[prev - 1])) --prev;
   bool reported = false;
   if (prev > 0 && v < mo.knots[prev - 1]) {
-    soft("knot-order", k.text + ": expected a knot >= " + fmt_num(mo.knots[prev - 1]) +
+    soft(errc::gcode_knot_order, k.text + ": expected a knot >= " + fmt_num(mo.knots[prev - 1]) +
                            " (knots must not decrease; the previous knot is on line " +
                            std::to_string(mo.knot_lines[prev - 1]) + "), found " + fmt_num(v));
     reported = true;
@@ -74,7 +74,7 @@ void GcodeInterpreter::Impl::add_knot(const Word& k, bool knot_only) {
   if (!reported && idx < static_cast<size_t>(rank)) {
     for (size_t j = 0; j < idx; ++j)
       if (!std::isnan(mo.knots[j]) && mo.knots[j] != v) {
-        soft("knot-clamped", k.text + " is knot " + std::to_string(idx + 1) + " of the block: the first P (" +
+        soft(errc::gcode_knot_clamped, k.text + " is knot " + std::to_string(idx + 1) + " of the block: the first P (" +
                                  std::to_string(rank) + ") knots must be equal (a clamped start: the curve starts "
                                  "at the current position), but the first is " + fmt_num(mo.knots[j]) +
                                  " (line " + std::to_string(mo.knot_lines[j]) + ")");
@@ -86,7 +86,7 @@ void GcodeInterpreter::Impl::add_knot(const Word& k, bool knot_only) {
   if (!reported && knot_only && mo.knot_only > 1) {
     const size_t first_end = mo.knots.size() - static_cast<size_t>(mo.knot_only - 1);
     if (mo.knots[first_end] != v) {
-      soft("knot-clamped", k.text + ": the last P (" + std::to_string(rank) + ") knots, the knot-only blocks, must "
+      soft(errc::gcode_knot_clamped, k.text + ": the last P (" + std::to_string(rank) + ") knots, the knot-only blocks, must "
                                "be equal (a clamped end: the curve ends at its last control point), but the first "
                                "of them is " + fmt_num(mo.knots[first_end]) + " (line " +
                                std::to_string(mo.knot_lines[first_end]) + ")");
@@ -98,7 +98,7 @@ void GcodeInterpreter::Impl::add_knot(const Word& k, bool knot_only) {
     size_t run = 1;
     for (size_t j = idx; j > 0 && mo.knots[j - 1] == v; --j) ++run;
     if (run == static_cast<size_t>(rank) + 1)
-      soft("knot-multiplicity", k.text + ": knot " + fmt_num(v) + " now appears " + std::to_string(run) +
+      soft(errc::gcode_knot_multiplicity, k.text + ": knot " + fmt_num(v) + " now appears " + std::to_string(run) +
                                     " times (from line " + std::to_string(mo.knot_lines[idx + 1 - run]) +
                                     "); no knot may repeat more than the rank P (" + std::to_string(rank) +
                                     ") times");
@@ -112,8 +112,8 @@ void GcodeInterpreter::Impl::complete_fanuc() {
     const std::string msg = "the NURBS block opened at line " + std::to_string(mo.open_line) + " has " +
                             std::to_string(mo.ctrl.size()) + " control points; a block of rank P" +
                             std::to_string(mo.order) + " needs at least " + std::to_string(mo.order);
-    if (!lint()) fail("knot-count", msg);
-    soft("knot-count", msg);  // lint: the block is dropped and reading goes on
+    if (!lint()) fail(errc::gcode_knot_count, msg);
+    soft(errc::gcode_knot_count, msg);  // lint: the block is dropped and reading goes on
     abandon_block();
     return;
   }
@@ -131,7 +131,7 @@ void GcodeInterpreter::Impl::fanuc_start(int code) {
   if (ln.has('P')) {
     const double P = val('P');
     if (P != std::floor(P) || P < 2 || P > max) {
-      soft("rank", "rank " + txt('P') + ": expected P from 2 to " + std::to_string(max) + " (order = degree + 1)" +
+      soft(errc::gcode_rank, "rank " + txt('P') + ": expected P from 2 to " + std::to_string(max) + " (order = degree + 1)" +
                        machine());
       rank = static_cast<int>(std::clamp(std::floor(P), 2.0, static_cast<double>(max)));
     } else {
@@ -147,14 +147,14 @@ void GcodeInterpreter::Impl::fanuc_start(int code) {
     if (st.known_axes & (1u << a)) {
       const double slack = 1e-12 * std::max(1.0, std::abs(st.pos[a]));
       if (std::abs(w->value - st.pos[a]) > slack)
-        soft("nurbs-start", w->text + ": the first control point of a NURBS block must be the current position (" +
+        soft(errc::gcode_nurbs_start, w->text + ": the first control point of a NURBS block must be the current position (" +
                                 axis_name(a) + " = " + fmt_num(st.pos[a]) + ")");
     }
     p0[a] = w->value;
   }
   if ((st.known_axes & 7) != 7 && lint() && !mo.noted_position) {
     // Axes neither known nor given: lint goes on with 0.
-    note("position-unknown", "the NURBS block starts from a position this program has not set (its first "
+    note(errc::gcode_position_unknown, "the NURBS block starts from a position this program has not set (its first "
                              "control point must be the current position): position the tool with G00 first");
     mo.noted_position = true;
   }
@@ -171,7 +171,7 @@ void GcodeInterpreter::Impl::fanuc_start(int code) {
   mo.knot_lines.clear();
   mo.knot_only = 0;
   if (!ln.has('K')) {
-    soft("knot-missing", "the first block of a NURBS block needs its knot K (K- X- Y- Z- R-)");
+    soft(errc::gcode_knot_missing, "the first block of a NURBS block needs its knot K (K- X- Y- Z- R-)");
     mo.knots.push_back(kNaN);
     mo.knot_lines.push_back(line);
   } else {

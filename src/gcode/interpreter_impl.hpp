@@ -72,9 +72,9 @@ struct GcodeInterpreter::Impl {
 
   // ---- errors: through gcode::Diagnostics (diagnostics.cpp)
   gcode::Diagnostics diag() const { return {line, self.findings_}; }
-  [[noreturn]] void fail(const std::string& id, const std::string& msg) const { diag().fail(id, msg); }
-  void soft(const std::string& id, const std::string& msg, int at = 0) const { diag().soft(id, msg, at); }
-  void note(const std::string& id, const std::string& msg, int at = 0) const { diag().note(id, msg, at); }
+  [[noreturn]] void fail(ErrorId id, const std::string& msg) const { diag().fail(id, msg); }
+  void soft(ErrorId id, const std::string& msg, int at = 0) const { diag().soft(id, msg, at); }
+  void note(ErrorId id, const std::string& msg, int at = 0) const { diag().note(id, msg, at); }
   bool lint() const { return self.findings_ != nullptr; }
 
   // ---- words and units

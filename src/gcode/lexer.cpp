@@ -15,16 +15,16 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' |
 void add(Line& ln, Word w, const Diagnostics& d) {
   const bool first_word = ln.words.empty() && ln.g.empty() && ln.m.empty() && !ln.n && !ln.program_number;
   if (w.letter == 'N') {
-    if (!first_word) d.fail("syntax", "the line number " + w.text + " must be the first word of the line");
+    if (!first_word) d.fail(errc::gcode_syntax, "the line number " + w.text + " must be the first word of the line");
     if (w.value < 0 || w.value != std::floor(w.value) || w.value > 1e9)
-      d.fail("syntax", "expected a whole line number after N, found " + w.text);
+      d.fail(errc::gcode_syntax, "expected a whole line number after N, found " + w.text);
     ln.n = static_cast<long>(w.value);
     return;
   }
-  if (ln.program_number) d.fail("syntax", "a program-number line (O...) may hold nothing but comments, found " + w.text);
+  if (ln.program_number) d.fail(errc::gcode_syntax, "a program-number line (O...) may hold nothing but comments, found " + w.text);
   if (w.letter == 'O') {
-    if (!first_word || ln.n) d.fail("unsupported", "O words (" + w.text + ") are only understood as a program number alone on its line");
-    if (w.value < 0 || w.value != std::floor(w.value)) d.fail("syntax", "expected a whole program number after O, found " + w.text);
+    if (!first_word || ln.n) d.fail(errc::gcode_unsupported, "O words (" + w.text + ") are only understood as a program number alone on its line");
+    if (w.value < 0 || w.value != std::floor(w.value)) d.fail(errc::gcode_syntax, "expected a whole program number after O, found " + w.text);
     ln.program_number = true;
     return;
   }
@@ -32,13 +32,13 @@ void add(Line& ln, Word w, const Diagnostics& d) {
     const double x10 = w.value * 10;
     const double r = std::nearbyint(x10);
     if (w.value < 0 || std::abs(x10 - r) > 1e-9 || r > 10000)
-      d.fail("unsupported", "G-code " + w.text + " is not supported by this reader");
+      d.fail(errc::gcode_unsupported, "G-code " + w.text + " is not supported by this reader");
     ln.g.push_back({static_cast<int>(r), w.text});
     return;
   }
   if (w.letter == 'M') {
     if (w.value < 0 || w.value != std::floor(w.value) || w.value > 1000)
-      d.fail("unsupported", "M-code " + w.text + " is not supported by this reader");
+      d.fail(errc::gcode_unsupported, "M-code " + w.text + " is not supported by this reader");
     ln.m.push_back({static_cast<int>(w.value), w.text});
     return;
   }
@@ -46,7 +46,7 @@ void add(Line& ln, Word w, const Diagnostics& d) {
     if (o.letter == w.letter) {
       // Controllers differ (LinuxCNC and Grbl refuse, others keep the
       // last): refuse. Lint goes on with the first one.
-      d.soft("repeated-word", std::string(1, w.letter) + " appears twice on the line (" + o.text + " and " + w.text +
+      d.soft(errc::gcode_repeated_word, std::string(1, w.letter) + " appears twice on the line (" + o.text + " and " + w.text +
                                 "); a block gives each address once");
       return;
     }
@@ -63,9 +63,9 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
   auto skip_comment = [&] {
     const size_t close = text.find(')', i + 1);
     if (close == std::string_view::npos)
-      d.fail("syntax", "a comment opened with '(' is not closed on this line: add ')'");
+      d.fail(errc::gcode_syntax, "a comment opened with '(' is not closed on this line: add ')'");
     if (text.substr(i + 1, close - i - 1).find('(') != std::string_view::npos)
-      d.fail("syntax", "a comment may not contain '(' (no nested comments)");
+      d.fail(errc::gcode_syntax, "a comment may not contain '(' (no nested comments)");
     i = close + 1;
   };
   while (i < n && is_space(text[i])) ++i;
@@ -76,18 +76,18 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
       if (is_space(text[i])) ++i;
       else if (text[i] == '(') skip_comment();
       else if (text[i] == ';') break;
-      else d.fail("syntax", "a '%' line may hold nothing but comments, found '" + std::string(1, text[i]) + "'");
+      else d.fail(errc::gcode_syntax, "a '%' line may hold nothing but comments, found '" + std::string(1, text[i]) + "'");
     }
     return ln;
   }
-  if (i < n && text[i] == '/') d.fail("unsupported", "block delete ('/' at the start of a line) is not supported: remove it or the line");
+  if (i < n && text[i] == '/') d.fail(errc::gcode_unsupported, "block delete ('/' at the start of a line) is not supported: remove it or the line");
   while (i < n) {
     const char c = text[i];
     if (is_space(c)) { ++i; continue; }
     if (c == '(') { skip_comment(); continue; }
     if (c == ';') break;
     if (!std::isalpha(static_cast<unsigned char>(c)))
-      d.fail("syntax", "unexpected character '" + std::string(1, c) + "': expected a word (a letter and a number)");
+      d.fail(errc::gcode_syntax, "unexpected character '" + std::string(1, c) + "': expected a word (a letter and a number)");
     const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     ++i;
     const size_t start = i;
@@ -103,7 +103,7 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
       size_t e = i;
       while (e < n && !is_space(text[e]) && text[e] != '(' && text[e] != ';') ++e;
       const std::string found(text.substr(start, std::max(e, i) - start));
-      d.fail("syntax", std::string("expected a number after '") + letter + "', found " +
+      d.fail(errc::gcode_syntax, std::string("expected a number after '") + letter + "', found " +
                          (found.empty() ? std::string("nothing") : "'" + found + "'"));
     }
     Word w;
@@ -114,7 +114,7 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
     // A number too large for a double must not read as 0 (from_chars
     // leaves the value alone then): that would be a different program.
     if (fc.ec != std::errc() || !std::isfinite(w.value))
-      d.fail("number", std::string("the number after '") + letter + "' is too large to read (" +
+      d.fail(errc::gcode_number, std::string("the number after '") + letter + "' is too large to read (" +
                          std::to_string(num.size()) + " digits): expected at most about 1e308");
     add(ln, std::move(w), d);
   }

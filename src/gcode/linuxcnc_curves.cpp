@@ -32,8 +32,8 @@ bool GcodeInterpreter::Impl::continue_g52() {
     std::string msg = "the G5.2 block opened at line " + std::to_string(mo.open_line) +
                       " is still open: only control points 'X- Y- P-' may follow until G5.3";
     if (ln.has('Z')) msg = "G5.2 blocks move in X and Y only: a Z word is not allowed (" + txt('Z') + ")";
-    if (!lint()) fail("nurbs-open", msg);
-    soft("nurbs-open", msg);
+    if (!lint()) fail(errc::gcode_nurbs_open, msg);
+    soft(errc::gcode_nurbs_open, msg);
     abandon_block();
     return false;
   }
@@ -43,10 +43,10 @@ bool GcodeInterpreter::Impl::continue_g52() {
 
 void GcodeInterpreter::Impl::g52_point() {
   if (ln.has('X') != ln.has('Y'))
-    fail("nurbs-point", std::string("a G5.2 control point needs both X and Y, found only ") + (ln.has('X') ? txt('X') : txt('Y')));
-  if (!ln.has('X')) fail("nurbs-point", "a G5.2 control point line needs X, Y and P (its weight)");
+    fail(errc::gcode_nurbs_point, std::string("a G5.2 control point needs both X and Y, found only ") + (ln.has('X') ? txt('X') : txt('Y')));
+  if (!ln.has('X')) fail(errc::gcode_nurbs_point, "a G5.2 control point line needs X, Y and P (its weight)");
   double w = 1;
-  if (!ln.has('P')) soft("weight", "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)");
+  if (!ln.has('P')) soft(errc::gcode_weight, "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)");
   else w = weight(*ln.get('P'));
   mo.ctrl.push_back({val('X'), val('Y'), st.pos.z});
   mo.weights.push_back(w);
@@ -56,13 +56,13 @@ void GcodeInterpreter::Impl::g5() {
   st.motion = 50;
   require_xy_known("G5");
   require_feed("G5");
-  if (ln.has('I') != ln.has('J')) fail("bezier", "G5 needs both I and J, or neither");
+  if (ln.has('I') != ln.has('J')) fail(errc::gcode_bezier, "G5 needs both I and J, or neither");
   if (!ln.has('P') || !ln.has('Q'))
-    fail("bezier", "G5 needs both P and Q (the second control point's offset from the end point)");
+    fail(errc::gcode_bezier, "G5 needs both P and Q (the second control point's offset from the end point)");
   Vec3 ij;
   if (ln.has('I')) ij = {val('I'), val('J'), 0};
   else if (mo.g5_chain) ij = mo.g5_next_ij;
-  else fail("bezier", "G5 without I and J continues the tangent of a G5 just before it, and there is none: give I and J");
+  else fail(errc::gcode_bezier, "G5 without I and J continues the tangent of a G5 just before it, and there is none: give I and J");
   const auto [to, axes] = target();
   const Vec3 from = st.pos;
   MotionBlock b = block(BlockKind::bezier, to);
@@ -78,7 +78,7 @@ void GcodeInterpreter::Impl::g51() {
   mo.g5_chain = false;
   require_xy_known("G5.1");
   require_feed("G5.1");
-  if (!ln.has('I') || !ln.has('J')) fail("bezier", "G5.1 needs both I and J (the middle control point's offset from the start)");
+  if (!ln.has('I') || !ln.has('J')) fail(errc::gcode_bezier, "G5.1 needs both I and J (the middle control point's offset from the start)");
   const auto [to, axes] = target();
   MotionBlock b = block(BlockKind::bezier, to);
   b.order = 3;
@@ -97,7 +97,7 @@ void GcodeInterpreter::Impl::curve_move(MotionBlock& b, unsigned axes) {
 
 void GcodeInterpreter::Impl::g52() {
   if (mo.open == 52)
-    fail("nurbs-open", "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
+    fail(errc::gcode_nurbs_open, "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
   require_xy_known("G5.2");
   require_feed("G5.2");
   mo.g5_chain = false;
@@ -105,14 +105,14 @@ void GcodeInterpreter::Impl::g52() {
   if (ln.has('L')) {
     const double L = val('L');
     if (L != std::floor(L) || L < 3)
-      soft("rank", "G5.2 order " + txt('L') + ": LinuxCNC ignores an order below 3 (it then uses 3); give L3 or more");
+      soft(errc::gcode_rank, "G5.2 order " + txt('L') + ": LinuxCNC ignores an order below 3 (it then uses 3); give L3 or more");
     // Any order above the largest is refused below; one past it keeps a
     // huge L from overflowing the int (found by fuzzing).
     else order = static_cast<int>(std::min(L, static_cast<double>(kMaxBezierDegree) + 2));
   }
   const int max = self.profile_ ? self.profile_->nurbs_max_rank : kMaxBezierDegree + 1;
   if (order > max) {
-    soft("rank", "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
+    soft(errc::gcode_rank, "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
   }
   mo.open = 52;
   mo.open_line = line;
@@ -125,7 +125,7 @@ void GcodeInterpreter::Impl::g52() {
     // LinuxCNC: the current position gets weight 1, the point its P.
     g52_point();
   } else if (!ln.has('P')) {
-    soft("weight", "the G5.2 line needs P, the weight of its first control point (the current position): "
+    soft(errc::gcode_weight, "the G5.2 line needs P, the weight of its first control point (the current position): "
                    "without it the weight differs between LinuxCNC versions");
   } else {
     mo.weights[0] = weight(*ln.get('P'));
@@ -135,14 +135,14 @@ void GcodeInterpreter::Impl::g52() {
 }
 
 void GcodeInterpreter::Impl::g53() {
-  if (mo.open != 52) fail("nurbs-start", "G5.3 ends a G5.2 block, and none is open");
-  if (!ln.words.empty()) fail("unexpected-word", "G5.3 takes no words, found " + ln.words.front().text);
+  if (mo.open != 52) fail(errc::gcode_nurbs_start, "G5.3 ends a G5.2 block, and none is open");
+  if (!ln.words.empty()) fail(errc::gcode_unexpected_word, "G5.3 takes no words, found " + ln.words.front().text);
   if (mo.ctrl.size() < static_cast<size_t>(mo.order)) {
     const std::string msg = "the G5.2 block opened at line " + std::to_string(mo.open_line) + " has " +
                             std::to_string(mo.ctrl.size()) + " control points; order L" + std::to_string(mo.order) +
                             " needs at least " + std::to_string(mo.order);
-    if (!lint()) fail("knot-count", msg);
-    soft("knot-count", msg);
+    if (!lint()) fail(errc::gcode_knot_count, msg);
+    soft(errc::gcode_knot_count, msg);
     abandon_block();
     return;
   }

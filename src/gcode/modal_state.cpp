@@ -51,25 +51,25 @@ void GcodeInterpreter::Impl::run_modal() {
   bool dwell = false;
   for (const auto& [c, t] : ln.g) {
     const GGroup grp = g_group(c);
-    if (grp == GGroup::unsupported) fail("unsupported", "G-code " + t + " is not supported by this reader");
+    if (grp == GGroup::unsupported) fail(errc::gcode_unsupported, "G-code " + t + " is not supported by this reader");
     if (grp != GGroup::non_modal) {
       std::string& seen = seen_g[static_cast<size_t>(grp)];
       if (!seen.empty())
-        fail("modal-group", seen + " and " + t + " are in the same modal group: give one");
+        fail(errc::gcode_modal_group, seen + " and " + t + " are in the same modal group: give one");
       seen = t;
     }
     switch (c) {
       case 180: case 190:
-        fail("plane", t + " selects the " + std::string(c == 180 ? "XZ" : "YZ") +
+        fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "XZ" : "YZ") +
                           " plane: this reader supports G17 (XY) only");
-      case 910: fail("incremental", "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates");
+      case 910: fail(errc::gcode_incremental, "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates");
       case 930: case 950:
-        fail("unsupported", t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
+        fail(errc::gcode_unsupported, t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
                                 " is not supported by this reader: use G94 (units per minute)");
       case 410: case 420:
-        fail("unsupported", t + " (cutter radius compensation) is not supported by this reader: the program must "
+        fail(errc::gcode_unsupported, t + " (cutter radius compensation) is not supported by this reader: the program must "
                                 "describe the tool centre");
-      case 430: fail("unsupported", "G43 (tool length compensation) is not supported by this reader");
+      case 430: fail(errc::gcode_unsupported, "G43 (tool length compensation) is not supported by this reader");
       case 40: dwell = true; break;
       default: break;
     }
@@ -81,14 +81,14 @@ void GcodeInterpreter::Impl::run_modal() {
   std::array<std::string, kModalGroups> seen_m{};
   for (const auto& [c, t] : ln.m) {
     const MGroup grp = m_group(c);
-    if (grp == MGroup::unsupported) fail("unsupported", "M-code " + t + " is not supported by this reader");
+    if (grp == MGroup::unsupported) fail(errc::gcode_unsupported, "M-code " + t + " is not supported by this reader");
     std::string& seen = seen_m[static_cast<size_t>(grp)];
     if (!seen.empty())
-      fail("modal-group", seen + " and " + t + " are in the same modal group: give one");
+      fail(errc::gcode_modal_group, seen + " and " + t + " are in the same modal group: give one");
     seen = t;
   }
   if (mo.open == 52 && motion != 53)
-    fail("nurbs-open", "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
+    fail(errc::gcode_nurbs_open, "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
 
   // Which motion the line's words belong to (-999: none; -1: G80).
   const bool has_axes = ln.has('X') || ln.has('Y') || ln.has('Z');
@@ -99,28 +99,28 @@ void GcodeInterpreter::Impl::run_modal() {
   else if (motion != -999) active = motion;
   else if (motion_words) active = st.motion >= 0 && st.motion <= 3 ? st.motion * 10 : st.motion;
   if (dwell && (has_axes || motion != -999))
-    fail("modal-group", "G04 (dwell) cannot share a line with a motion: put it on its own line");
+    fail(errc::gcode_modal_group, "G04 (dwell) cannot share a line with a motion: put it on its own line");
   check_letters(active, dwell, motion != -999);
 
   // Execution order (RS274/NGC): F, S, T, M06, spindle, coolant, dwell,
   // plane, units, distance mode, motion, program end.
   if (ln.has('F')) {
-    if (val('F') < 0) fail("feed", "expected a feed rate F >= 0, found " + txt('F'));
+    if (val('F') < 0) fail(errc::gcode_feed, "expected a feed rate F >= 0, found " + txt('F'));
     st.feed = val('F');
   }
   if (ln.has('S')) {
-    if (val('S') < 0) fail("spindle", "expected a spindle speed S >= 0, found " + txt('S'));
+    if (val('S') < 0) fail(errc::gcode_spindle, "expected a spindle speed S >= 0, found " + txt('S'));
     st.spindle_rpm = val('S');
   }
   if (ln.has('T')) {
     // (Bounded before the conversion: T1e20 as an int is undefined; found by fuzzing.)
     if (val('T') < 0 || val('T') != std::floor(val('T')) || val('T') > 1e9)
-      fail("tool", "expected a whole tool number T from 0 to 1000000000, found " + txt('T'));
+      fail(errc::gcode_tool, "expected a whole tool number T from 0 to 1000000000, found " + txt('T'));
     mo.selected_tool = static_cast<int>(val('T'));
   }
   for (const auto& [c, t] : ln.m) {
     if (c == 6) {
-      if (mo.selected_tool < 0) note("tool-unset", "M06 changes the tool, but no T word has selected one");
+      if (mo.selected_tool < 0) note(errc::gcode_tool_unset, "M06 changes the tool, but no T word has selected one");
       st.tool = std::max(mo.selected_tool, 0);
     }
     if (c == 3 || c == 4) {
@@ -130,7 +130,7 @@ void GcodeInterpreter::Impl::run_modal() {
     if (c == 5) st.spindle_on = false;
   }
   if (dwell) {
-    if (!ln.has('P') || val('P') < 0) fail("dwell", "G04 needs its duration P (seconds) >= 0");
+    if (!ln.has('P') || val('P') < 0) fail(errc::gcode_dwell, "G04 needs its duration P (seconds) >= 0");
   }
   for (const auto& [c, t] : ln.g) {
     if (c == 170) {
@@ -139,7 +139,7 @@ void GcodeInterpreter::Impl::run_modal() {
     } else if (c == 200 || c == 210) {
       const Units u = c == 200 ? Units::inch : Units::mm;
       if (mo.moved && u != st.units)
-        fail("units-change", t + " changes the units after the first move: positions would change meaning; set "
+        fail(errc::gcode_units_change, t + " changes the units after the first move: positions would change meaning; set "
                                  "the units once, before any move");
       st.units = u;
       st.units_set = true;
@@ -172,24 +172,24 @@ void GcodeInterpreter::Impl::check_letters(int active, bool dwell, bool explicit
   for (const Word& w : ln.words) {
     if (allowed.find(w.letter) != std::string::npos) continue;
     if (std::string_view("ABCUVW").find(w.letter) != std::string_view::npos)
-      fail("unsupported", "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
+      fail(errc::gcode_unsupported, "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
     if (w.letter == 'K' && (active == 20 || active == 30))
-      fail("arc", w.text + ": K is not a centre word in the G17 plane (some controllers refuse even K0): give I and J only");
+      fail(errc::gcode_arc, w.text + ": K is not a centre word in the G17 plane (some controllers refuse even K0): give I and J only");
     if (w.letter == 'Z' && (active == 50 || active == 51 || active == 52))
-      fail("bezier", wt(active) + " moves in X and Y only: a Z word (" + w.text + ") is not allowed");
+      fail(errc::gcode_bezier, wt(active) + " moves in X and Y only: a Z word (" + w.text + ") is not allowed");
     if ((active == 62 || active == 63) && !explicit_motion) {
       if (w.letter == 'K')
-        fail("nurbs-start", "K word outside a NURBS block (the last one ended at line " +
+        fail(errc::gcode_nurbs_start, "K word outside a NURBS block (the last one ended at line " +
                                 std::to_string(mo.nurbs_mode_line) + "): a block starts with " + g_text(active) +
                                 " P- K- X- Y- Z-");
-      fail("nurbs-mode", w.text + " in NURBS mode (" + g_text(active) + " since line " +
+      fail(errc::gcode_nurbs_mode, w.text + " in NURBS mode (" + g_text(active) + " since line " +
                              std::to_string(mo.nurbs_mode_line) + ") outside a block: start a new block with " +
                              g_text(active) + ", or leave the mode with G00 or G01");
     }
     if (std::string_view("XYZ").find(w.letter) != std::string_view::npos)
-      fail("no-motion", w.text + ": axis words without a motion mode (none is active): give G00 or G01");
-    if (w.letter == 'K') fail("nurbs-start", "K word outside a NURBS block: a block starts with G06.2 P- K- X- Y- Z-");
-    fail("unexpected-word", "word " + w.text + " has no meaning on this line" +
+      fail(errc::gcode_no_motion, w.text + ": axis words without a motion mode (none is active): give G00 or G01");
+    if (w.letter == 'K') fail(errc::gcode_nurbs_start, "K word outside a NURBS block: a block starts with G06.2 P- K- X- Y- Z-");
+    fail(errc::gcode_unexpected_word, "word " + w.text + " has no meaning on this line" +
                                 (active >= 0 ? " (" + wt(active) + ")" : std::string()) + ": remove it");
   }
 }

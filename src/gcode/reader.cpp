@@ -28,7 +28,7 @@ Box3 arc_box(const MotionBlock& b) { return xy_box(block_arc(b)); }
 
 std::optional<GcodeFinding> gcode::too_large(std::string_view text) {
   if (text.size() <= kMaxProgramBytes) return std::nullopt;
-  return GcodeFinding{1, "gcode.program-too-large",
+  return GcodeFinding{1, errc::gcode_program_too_large,
                       "the program is " + std::to_string(text.size() >> 20) + " MiB, more than the " +
                           std::to_string(kMaxProgramBytes >> 20) +
                           " MiB bezcam reads (docs/limits.md); split it into several programs"};
@@ -45,7 +45,7 @@ void GcodeInterpreter::Impl::run(std::string_view text) {
     return;
   }
   if (mo.end_line)
-    fail("after-end", "the program ended at line " + std::to_string(mo.end_line) +
+    fail(errc::gcode_after_end, "the program ended at line " + std::to_string(mo.end_line) +
                           " (M02/M30): nothing after it runs; remove this line or move the end");
   if (ln.n) check_n();
   if (mo.open) {
@@ -85,13 +85,13 @@ Vec3 GcodeInterpreter::Impl::start_for(const Vec3& to) const {
 
 void GcodeInterpreter::Impl::require_xy_known(const std::string& what) const {
   if ((st.known_axes & 3) != 3)
-    fail("position-unknown", what + " cannot start from an unknown position: no earlier move has set " +
+    fail(errc::gcode_position_unknown, what + " cannot start from an unknown position: no earlier move has set " +
                                  ((st.known_axes & 1) ? std::string("Y") : (st.known_axes & 2) ? "X" : "X and Y"));
 }
 
 void GcodeInterpreter::Impl::require_feed(const std::string& what) const {
   if (!(st.feed > 0))
-    soft("no-feed", what + " needs a feed rate, and no F word has set one (F is in " + unit() + "/min)");
+    soft(errc::gcode_no_feed, what + " needs a feed rate, and no F word has set one (F is in " + unit() + "/min)");
 }
 
 void GcodeInterpreter::Impl::check_travel(const Box3& b, unsigned axes) const {
@@ -102,7 +102,7 @@ void GcodeInterpreter::Impl::check_travel(const Box3& b, unsigned axes) const {
     const double lo = from_mm(m.travel_mm[a][0]), hi = from_mm(m.travel_mm[a][1]);
     if (b.lo[a] < lo || b.hi[a] > hi) {
       const double v = b.lo[a] < lo ? b.lo[a] : b.hi[a];
-      soft("travel", "the move reaches " + axis_name(a) + " = " + fmt_num(v) + " " + unit() +
+      soft(errc::gcode_travel, "the move reaches " + axis_name(a) + " = " + fmt_num(v) + " " + unit() +
                          ", outside the travel of machine \"" + m.name + "\" (" + axis_name(a) + " from " +
                          fmt_num(lo) + " to " + fmt_num(hi) + " " + unit() + ")");
     }
@@ -114,7 +114,7 @@ void GcodeInterpreter::Impl::check_feed_limit(double feed) {
   const double max = from_mm(self.profile_->max_feed_mm_min);
   if (feed > max && feed != mo.feed_reported) {
     mo.feed_reported = feed;  // lint: once per feed value, not on every move at it
-    soft("feed", "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" + machine() + ", " +
+    soft(errc::gcode_feed, "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" + machine() + ", " +
                      fmt_num(max) + " " + unit() + "/min");
   }
 }
@@ -139,7 +139,7 @@ void GcodeInterpreter::Impl::commit_move(const MotionBlock& b, unsigned axes) {
 
 
 double GcodeInterpreter::Impl::weight(const Word& r) const {
-  if (!(r.value > 0)) soft("weight", "weight " + r.text + ": expected a weight R > 0");
+  if (!(r.value > 0)) soft(errc::gcode_weight, "weight " + r.text + ": expected a weight R > 0");
   return r.value;
 }
 
@@ -221,14 +221,14 @@ void GcodeInterpreter::Impl::motion_line(int code, bool explicit_motion) {
 void GcodeInterpreter::Impl::check_dialect(int code) const {
   const auto& m = *self.profile_;
   if ((code == 20 || code == 30) && !m.arcs)
-    fail("dialect", "machine \"" + m.name + "\" does not take arcs (" + wt(code) + "): use G01");
+    fail(errc::gcode_dialect, "machine \"" + m.name + "\" does not take arcs (" + wt(code) + "): use G01");
   if (code >= 50 && code <= 53 && m.nurbs != NurbsDialect::linuxcnc)
-    fail("dialect", wt(code) + " is a LinuxCNC word; machine \"" + m.name + "\" does not take it");
+    fail(errc::gcode_dialect, wt(code) + " is a LinuxCNC word; machine \"" + m.name + "\" does not take it");
   if (is_fanuc(code)) {
     if (m.nurbs != NurbsDialect::fanuc)
-      fail("dialect", "machine \"" + m.name + "\" does not take Fanuc-style NURBS blocks (" + wt(code) + ")");
+      fail(errc::gcode_dialect, "machine \"" + m.name + "\" does not take Fanuc-style NURBS blocks (" + wt(code) + ")");
     if (code != start_code(m.nurbs_start_word))
-      fail("dialect", "machine \"" + m.name + "\" starts a NURBS block with " + m.nurbs_start_word + ", not " +
+      fail(errc::gcode_dialect, "machine \"" + m.name + "\" starts a NURBS block with " + m.nurbs_start_word + ", not " +
                           wt(code));
   }
 }
@@ -263,8 +263,8 @@ void GcodeInterpreter::Impl::arc(bool cw) {
   mo.g5_chain = false;
   const std::string g = cw ? "G02" : "G03";
   const bool ij = ln.has('I') || ln.has('J'), r = ln.has('R');
-  if (ij && r) fail("arc", g + ": give either I and J (the centre) or R (the radius), not both");
-  if (!ij && !r) fail("arc", g + " needs the centre offsets I and J (or a radius R)");
+  if (ij && r) fail(errc::gcode_arc, g + ": give either I and J (the centre) or R (the radius), not both");
+  if (!ij && !r) fail(errc::gcode_arc, g + " needs the centre offsets I and J (or a radius R)");
   require_xy_known(g);
   require_feed(g);
   const auto [to, axes] = target();
@@ -274,13 +274,13 @@ void GcodeInterpreter::Impl::arc(bool cw) {
     c.x += ln.has('I') ? val('I') : 0;
     c.y += ln.has('J') ? val('J') : 0;
   } else {
-    if (!(axes & 3)) fail("arc", g + " with R needs an end point X or Y (a full circle needs I and J)");
+    if (!(axes & 3)) fail(errc::gcode_arc, g + " with R needs an end point X or Y (a full circle needs I and J)");
     const double dx = to.x - from.x, dy = to.y - from.y, d = std::hypot(dx, dy);
     const double R = val('R');
-    if (d == 0) fail("arc", g + " with R: the end point equals the start point; give a full circle with I and J");
+    if (d == 0) fail(errc::gcode_arc, g + " with R: the end point equals the start point; give a full circle with I and J");
     const double tol = arc_tolerance();
     if (std::abs(R) < d / 2 - tol)
-      fail("arc", txt('R') + " is too small for the chord of " + fmt_num(d) + " " + unit() +
+      fail(errc::gcode_arc, txt('R') + " is too small for the chord of " + fmt_num(d) + " " + unit() +
                       " between start and end (the radius must be at least half of it)");
     const double h = std::sqrt(std::max(0.0, R * R - d * d / 4));
     // Centre left of the chord for a minor CCW arc or a major CW one.
@@ -289,11 +289,11 @@ void GcodeInterpreter::Impl::arc(bool cw) {
     c.y = (from.y + to.y) / 2 + side * h * dx / d;
   }
   const double r0 = std::hypot(from.x - c.x, from.y - c.y), r1 = std::hypot(to.x - c.x, to.y - c.y);
-  if (r0 == 0) fail("arc", g + ": the centre coincides with the start point (I and J are both 0)");
+  if (r0 == 0) fail(errc::gcode_arc, g + ": the centre coincides with the start point (I and J are both 0)");
   const double tol = arc_tolerance();
   const double slack = 1e-12 * std::max({1.0, max_abs(from), max_abs(to), max_abs(c)});
   if (std::abs(r0 - r1) > tol + slack)
-    soft("arc-radius", g + ": the centre (" + fmt_num(c.x) + ", " + fmt_num(c.y) + ") is " + fmt_num(r0) +
+    soft(errc::gcode_arc_radius, g + ": the centre (" + fmt_num(c.x) + ", " + fmt_num(c.y) + ") is " + fmt_num(r0) +
                            " from the start and " + fmt_num(r1) + " from the end; they differ by " +
                            fmt_num(std::abs(r0 - r1)) + " " + unit() + ", more than the arc tolerance" + machine() +
                            " (" + fmt_num(tol) + " " + unit() + "): the end point or the centre is wrong");
@@ -313,12 +313,12 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
   more_.last_line = line_no;  // bookkeeping for finish(), even if the line is refused
   // Stated limits (limits.hpp), checked before the line is looked at.
   if (static_cast<size_t>(line_no) > kMaxReadLines)
-    throw InputError("gcode.program-too-long", "line " + std::to_string(line_no),
+    throw InputError(errc::gcode_program_too_long, Place::at_line(line_no),
                      "the program has more than " + std::to_string(kMaxReadLines) +
                          " lines, the most bezcam reads (docs/limits.md); split it into several programs");
   while (!text.empty() && (text.back() == '\r' || text.back() == '\n')) text.remove_suffix(1);
   if (text.size() > kMaxLineBytes)
-    throw InputError("gcode.line-too-long", "line " + std::to_string(line_no),
+    throw InputError(errc::gcode_line_too_long, Place::at_line(line_no),
                      "the line has " + std::to_string(text.size()) + " characters, more than the " +
                          std::to_string(kMaxLineBytes) + " bezcam reads in one line (docs/limits.md)");
   // The line runs on copies of the state, committed only when it is
@@ -365,7 +365,7 @@ std::vector<MotionBlock> GcodeInterpreter::finish() {
                     " of its " + std::to_string(more_.order) + " knot-only K blocks"
               : "the program ends inside the G5.2 block opened at line " + std::to_string(more_.open_line) +
                     ": close it with G5.3";
-    throw InputError("gcode.nurbs-open", "line " + std::to_string(std::max(more_.last_line, 1)), msg);
+    throw InputError(errc::gcode_nurbs_open, Place::at_line(std::max(more_.last_line, 1)), msg);
   }
   return {};
 }

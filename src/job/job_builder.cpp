@@ -13,12 +13,12 @@ namespace {
 // The checks the JSON reader makes of a number that must be positive.
 double positive(double v, const std::string& source, const std::string& key) {
   if (!std::isfinite(v) || v <= 0)
-    throw InputError("job.not-positive", source + ": " + key, "expected a finite number > 0, found " + fmt_num(v));
+    throw InputError(errc::job_not_positive, Place::in_json(source, key), "expected a finite number > 0, found " + fmt_num(v));
   return v;
 }
 
 double finite(double v, const std::string& source, const std::string& key) {
-  if (!std::isfinite(v)) throw InputError("job.not-finite", source + ": " + key, "expected a finite number, found " + fmt_num(v));
+  if (!std::isfinite(v)) throw InputError(errc::job_not_finite, Place::in_json(source, key), "expected a finite number, found " + fmt_num(v));
   return v;
 }
 
@@ -27,15 +27,15 @@ void check_params(const JobParams& p, const std::string& source, const std::stri
   if (p.feed) positive(*p.feed, source, at + "feed");
   if (p.plunge_feed) positive(*p.plunge_feed, source, at + "plunge_feed");
   if (p.spindle_rpm && (!std::isfinite(*p.spindle_rpm) || *p.spindle_rpm < 0))
-    throw InputError("job.not-positive", source + ": " + at + "spindle_rpm",
+    throw InputError(errc::job_not_positive, Place::in_json(source, at + "spindle_rpm"),
                      "expected a finite number >= 0, found " + fmt_num(*p.spindle_rpm));
   if (p.safe_z) finite(*p.safe_z, source, at + "safe_z");
   if (p.cut_z) finite(*p.cut_z, source, at + "cut_z");
   if (p.tool_radius && (!std::isfinite(*p.tool_radius) || *p.tool_radius < 0))
-    throw InputError("job.not-positive", source + ": " + at + "tool_radius",
+    throw InputError(errc::job_not_positive, Place::in_json(source, at + "tool_radius"),
                      "expected a finite number >= 0, found " + fmt_num(*p.tool_radius));
   if (p.tool && *p.tool < 0)
-    throw InputError("job.not-positive", source + ": " + at + "tool", "expected a tool number >= 0, found " + std::to_string(*p.tool));
+    throw InputError(errc::job_not_positive, Place::in_json(source, at + "tool"), "expected a tool number >= 0, found " + std::to_string(*p.tool));
 }
 
 }  // namespace
@@ -66,7 +66,7 @@ JobBuilder& JobBuilder::params(const JobParams& p) {
 
 JobBuilder& JobBuilder::entity(std::string id, std::string type, CurveGeometry g, JobParams params) {
   if (job_.entities.size() >= kMaxEntities)
-    throw InputError("limit.entities", job_.source + ": entities",
+    throw InputError(errc::limit_entities, job_.source + ": entities",
                      "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md)");
   Entity e;
   e.id = std::move(id);
@@ -102,7 +102,7 @@ JobBuilder& JobBuilder::nurbs(std::string id, NurbsCurve curve, JobParams params
 
 JobBuilder& JobBuilder::path(std::string id, std::vector<Bezier> segments, bool closed, JobParams params) {
   if (segments.empty())
-    throw InputError("job.missing", job_.source + ": entities[" + std::to_string(job_.entities.size()) + "].segments",
+    throw InputError(errc::job_missing, job_.source + ": entities[" + std::to_string(job_.entities.size()) + "].segments",
                      "a path needs at least one segment");
   std::vector<CurveSegment> segs;
   int dim = 2;
@@ -116,19 +116,19 @@ JobBuilder& JobBuilder::path(std::string id, std::vector<Bezier> segments, bool 
     dim = std::max(dim, segments[i].dim);
     segs.push_back(std::move(s));
   }
-  const std::string at = job_.source + ": entities[" + std::to_string(job_.entities.size()) + "]";
+  const std::string at = "entities[" + std::to_string(job_.entities.size()) + "]";
   CurveGeometry g;
   try {
     g = make_path(std::move(segs), std::move(segments), closed, dim);
   } catch (const InputError& e) {
-    throw InputError(e.id(), e.where().empty() ? at : at + "." + e.where(), e.message());
+    throw InputError(e.id(), Place::in_json(job_.source, at, e.place().relative_path()), e.message());
   }
   return entity(std::move(id), "path", std::move(g), std::move(params));
 }
 
 Job JobBuilder::build() const {
   if (job_.entities.empty())
-    throw InputError("job.missing", job_.source + ": entities", "expected at least one entity");
+    throw InputError(errc::job_missing, job_.source + ": entities", "expected at least one entity");
   check_params(job_.params, job_.source, "job");
   for (const Entity& e : job_.entities) check_params(e.params, job_.source, e.json_path());
   return job_;

@@ -12,6 +12,50 @@ namespace bezcam {
 
 namespace detail {
 
+namespace {
+// The JSON path (`entities[0].points[1][0]`) of the value that starts at
+// byte `at` of `text`, which is well-formed JSON up to there: a scan that
+// follows the containers, the keys and the array indices.
+std::string json_path_at(std::string_view text, size_t at) {
+  struct Level {
+    bool array;
+    size_t index = 0;
+    std::string key;
+  };
+  std::vector<Level> levels;
+  bool key_next = false;
+  for (size_t i = 0; i < at && i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"') {
+      std::string s;
+      size_t j = i + 1;
+      for (; j < text.size() && text[j] != '"'; ++j) {
+        if (text[j] == '\\') ++j;
+        if (j < text.size()) s += text[j];
+      }
+      if (key_next && !levels.empty() && !levels.back().array) levels.back().key = std::move(s), key_next = false;
+      i = j;
+    } else if (c == '{') {
+      levels.push_back({false, 0, {}});
+      key_next = true;
+    } else if (c == '[') {
+      levels.push_back({true, 0, {}});
+    } else if ((c == '}' || c == ']') && !levels.empty()) {
+      levels.pop_back();
+    } else if (c == ',' && !levels.empty()) {
+      if (levels.back().array) ++levels.back().index;
+      else key_next = true;
+    }
+  }
+  std::string path;
+  for (const auto& l : levels) {
+    if (l.array) path += "[" + std::to_string(l.index) + "]";
+    else path += (path.empty() ? "" : ".") + l.key;
+  }
+  return path;
+}
+}  // namespace
+
 std::string describe(const json& v) {
   switch (v.type()) {
     case json::value_t::null: return "null";
@@ -33,10 +77,10 @@ std::string describe(const json& v) {
 }
 
 void JsonCtx::fail(const std::string& path, const std::string& id, const std::string& what) const {
-  throw InputError(id, source + ": " + path, what);
+  throw InputError(id, Place::in_json(source, path), what);
 }
 void JsonCtx::expected(const std::string& path, const std::string& what, const json& found) const {
-  fail(path, "job.type", "expected " + what + ", found " + describe(found));
+  fail(path, errc::job_type, "expected " + what + ", found " + describe(found));
 }
 void JsonCtx::warn(const std::string& path, const std::string& what) const {
   if (warnings) warnings->push_back(source + ": " + path + ": " + what);
@@ -51,26 +95,26 @@ void JsonCtx::check_keys(const json& obj, const std::string& path, std::initiali
 const json& JsonCtx::require(const json& obj, const std::string& path, const char* key) const {
   auto it = obj.find(key);
   if (it == obj.end())
-    fail(path.empty() ? key : path + "." + key, "job.missing",
+    fail(path.empty() ? key : path + "." + key, errc::job_missing,
          std::string("the required key \"") + key + "\" is missing; add it");
   return *it;
 }
 double JsonCtx::number(const json& v, const std::string& path) const {
   if (!v.is_number()) expected(path, "a number", v);
   const double d = v.get<double>();
-  if (!std::isfinite(d)) fail(path, "job.not-finite", "expected a finite number, found " + fmt_num(d));
+  if (!std::isfinite(d)) fail(path, errc::job_not_finite, "expected a finite number, found " + fmt_num(d));
   return d;
 }
 double JsonCtx::positive(const json& v, const std::string& path) const {
   const double d = number(v, path);
-  if (!(d > 0)) fail(path, "job.not-positive", "expected a number > 0, found " + fmt_num(d));
+  if (!(d > 0)) fail(path, errc::job_not_positive, "expected a number > 0, found " + fmt_num(d));
   return d;
 }
 int JsonCtx::integer(const json& v, const std::string& path) const {
   if (!v.is_number_integer() && !(v.is_number_float() && std::nearbyint(v.get<double>()) == v.get<double>()))
     expected(path, "an integer", v);
   const double d = v.get<double>();
-  if (std::abs(d) > 1e9) fail(path, "job.range", "expected an integer of at most 1e9, found " + fmt_num(d));
+  if (std::abs(d) > 1e9) fail(path, errc::job_range, "expected an integer of at most 1e9, found " + fmt_num(d));
   return static_cast<int>(d);
 }
 std::string JsonCtx::string(const json& v, const std::string& path) const {
@@ -93,7 +137,7 @@ Vec3 JsonCtx::point(const json& v, const std::string& path, int* dim) const {
   const int d = static_cast<int>(v.size());
   if (*dim == 0) *dim = d;
   if (d != *dim)
-    fail(path, "job.dimension",
+    fail(path, errc::job_dimension,
          "expected a " + std::to_string(*dim) + "D point like the entity's first point, found a " + std::to_string(d) +
              "D point");
   Vec3 p;
@@ -119,7 +163,7 @@ std::vector<double> JsonCtx::numbers(const json& v, const std::string& path) con
 void JsonCtx::count_points(std::size_t n, const std::string& path) const {
   entity_points += n;
   if (entity_points > kMaxEntityPoints)
-    fail(path, "limit.points",
+    fail(path, errc::limit_points,
          "expected at most " + std::to_string(kMaxEntityPoints) + " points in one entity (docs/limits.md), found " +
              (entity_points == n ? std::to_string(n) : std::to_string(entity_points) + " with these") +
              "; split the geometry into several entities");
@@ -127,7 +171,7 @@ void JsonCtx::count_points(std::size_t n, const std::string& path) const {
 void JsonCtx::count_bezier_points(std::size_t n, const std::string& path) const {
   job_points += n;
   if (job_points > kMaxJobPoints)
-    fail(path, "limit.points",
+    fail(path, errc::limit_points,
          "the job's curves and patches need " + std::to_string(job_points) +
              " control points in their exact Bézier form with this one, more than the limit of " +
              std::to_string(kMaxJobPoints) + " (docs/limits.md); split the job into several files");
@@ -153,7 +197,7 @@ CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::
     if (in_path) ctx.check_keys(obj, path, {"type", "degree", "points", "knots", "weights"});
     parse_bspline_segment(ctx, obj, path, dim, pieces, seg);
   } else {
-    ctx.fail(path + ".type", "job.segment-type",
+    ctx.fail(path + ".type", errc::job_segment_type,
              std::string("expected \"bezier\" or \"bspline\"") + (in_path ? " in a path" : "") + ", found " +
                  describe(obj["type"]));
   }
@@ -178,24 +222,24 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   num("spindle_rpm", p.spindle_rpm, false);
   num("tool_radius", p.tool_radius, false);
   if (p.spindle_rpm && *p.spindle_rpm < 0)
-    ctx.fail(path + ".spindle_rpm", "job.range", "expected a speed >= 0, found " + fmt_num(*p.spindle_rpm));
+    ctx.fail(path + ".spindle_rpm", errc::job_range, "expected a speed >= 0, found " + fmt_num(*p.spindle_rpm));
   if (p.tool_radius && *p.tool_radius < 0)
-    ctx.fail(path + ".tool_radius", "job.range", "expected a radius >= 0, found " + fmt_num(*p.tool_radius));
+    ctx.fail(path + ".tool_radius", errc::job_range, "expected a radius >= 0, found " + fmt_num(*p.tool_radius));
   if (auto it = obj.find("gouge"); it != obj.end()) {
     const std::string kp = path.empty() ? "gouge" : path + ".gouge";
     const std::string g = ctx.string(*it, kp);
     if (g == "refuse") p.gouge = GougePolicy::refuse;
     else if (g == "skip") p.gouge = GougePolicy::skip;
-    else ctx.fail(kp, "job.gouge", "expected \"refuse\" or \"skip\", found " + describe(*it));
+    else ctx.fail(kp, errc::job_gouge, "expected \"refuse\" or \"skip\", found " + describe(*it));
   }
   if (auto it = obj.find("tool"); it != obj.end()) {
     p.tool = ctx.integer(*it, path + ".tool");
-    if (*p.tool < 0) ctx.fail(path + ".tool", "job.range", "expected a tool number >= 0, found " + std::to_string(*p.tool));
+    if (*p.tool < 0) ctx.fail(path + ".tool", errc::job_range, "expected a tool number >= 0, found " + std::to_string(*p.tool));
   }
   if (!entity_level)
     ctx.check_keys(obj, path, {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius", "gouge"});
   if (p.safe_z && p.cut_z && *p.cut_z >= *p.safe_z)
-    ctx.fail(path + ".cut_z", "job.range",
+    ctx.fail(path + ".cut_z", errc::job_range,
              "expected cut_z below safe_z (" + fmt_num(*p.safe_z) + "), found " + fmt_num(*p.cut_z));
   return p;
 }
@@ -249,7 +293,7 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
     keys({"surface", "curve"});
     parse_curve_on_surface_entity(ctx, obj, path, e);
   } else {
-    ctx.fail(path + ".type", "job.entity-type",
+    ctx.fail(path + ".type", errc::job_entity_type,
              "expected one of \"bezier\", \"bspline\", \"path\", \"interpolate\", \"bezier_patch\", "
              "\"coons_patch\", \"curve_on_surface\", found " + describe(obj["type"]));
   }
@@ -278,7 +322,7 @@ Job parse_job(std::string_view text, const std::string& source) {
   job.source = source;
   detail::JsonCtx ctx{source, &job.warnings};
   if (text.size() > kMaxJobBytes)
-    throw InputError("limit.file-size", source,
+    throw InputError(errc::limit_file_size, source,
                      "the job file is " + std::to_string(text.size() >> 20) + " MiB, more than bezcam reads (" +
                          std::to_string(kMaxJobBytes >> 20) + " MiB, docs/limits.md); split it into smaller files");
   json doc;
@@ -302,7 +346,7 @@ Job parse_job(std::string_view text, const std::string& source) {
     else if (what.find("unexpected") != std::string::npos && what.find("literal") != std::string::npos &&
              (what.find("expected '}'") != std::string::npos || what.find("expected ']'") != std::string::npos))
       hint = "; is a comma missing before it?";
-    throw InputError("job.syntax", source + ": line " + std::to_string(line) + ", column " + std::to_string(col),
+    throw InputError(errc::job_syntax, source + ": line " + std::to_string(line) + ", column " + std::to_string(col),
                      "this is not valid JSON: " + what + hint);
   } catch (const json::out_of_range& e) {
     // The only range error while parsing: a number too large for a double
@@ -310,33 +354,35 @@ Job parse_job(std::string_view text, const std::string& source) {
     std::string what = e.what(), token;
     if (auto a = what.find('\''), b = what.rfind('\''); a != std::string::npos && b > a)
       token = what.substr(a + 1, b - a - 1);
-    std::string where = source;
+    Place where = Place::at_file(source);
     if (const size_t at = token.empty() ? std::string_view::npos : text.find(token); at != std::string_view::npos) {
       size_t line = 1, col = 1;
       for (size_t i = 0; i < at; ++i) {
         if (text[i] == '\n') ++line, col = 1;
         else ++col;
       }
-      where += ": line " + std::to_string(line) + ", column " + std::to_string(col);
+      // The document did not parse, so its path comes from the text.
+      if (std::string path = detail::json_path_at(text, at); !path.empty()) where.json_path = std::move(path);
+      where.text = "line " + std::to_string(line) + ", column " + std::to_string(col);
     }
-    throw InputError("job.not-finite", where,
+    throw InputError(errc::job_not_finite, std::move(where),
                      "expected a finite number, found " + (token.empty() ? std::string("a number") : token) +
                          ", which is too large for a double (about 1.8e308 at most)");
   }
   if (!doc.is_object()) ctx.expected("(top level)", "a JSON object", doc);
   ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities"});
   if (!doc.contains("bezcam"))
-    ctx.fail("bezcam", "job.missing",
+    ctx.fail("bezcam", errc::job_missing,
              "the file does not say its format version; add \"bezcam\": 1 at the top level (is this a bezcam job?)");
   const json& ver = ctx.require(doc, "", "bezcam");
   job.version = ctx.integer(ver, "bezcam");
   if (job.version != 1)
-    ctx.fail("bezcam", "job.version", "expected format version 1, found " + std::to_string(job.version));
+    ctx.fail("bezcam", errc::job_version, "expected format version 1, found " + std::to_string(job.version));
   if (auto it = doc.find("units"); it != doc.end()) {
     const std::string u = ctx.string(*it, "units");
     if (u == "mm") job.units = Units::mm;
     else if (u == "inch") job.units = Units::inch;
-    else ctx.fail("units", "job.units", "expected \"mm\" or \"inch\", found " + detail::describe(*it));
+    else ctx.fail("units", errc::job_units, "expected \"mm\" or \"inch\", found " + detail::describe(*it));
   }
   job.tolerance = 0.01 / mm_per_unit(job.units);
   if (auto it = doc.find("tolerance"); it != doc.end()) job.tolerance = ctx.positive(*it, "tolerance");
@@ -347,7 +393,7 @@ Job parse_job(std::string_view text, const std::string& source) {
   }
   const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
   if (ents.size() > kMaxEntities)
-    ctx.fail("entities", "limit.entities",
+    ctx.fail("entities", errc::limit_entities,
              "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md), found " +
                  std::to_string(ents.size()) + "; split the job into several files");
   for (size_t i = 0; i < ents.size(); ++i) job.entities.push_back(detail::parse_entity(ctx, ents[i], i));

@@ -50,8 +50,7 @@ struct JsonCtx {
     try {
       return f();
     } catch (const InputError& e) {
-      const std::string where = e.where().empty() ? path : path + "." + e.where();
-      throw InputError(e.id(), source + ": " + where, e.message());
+      throw InputError(e.id(), Place::in_json(source, path, e.place().relative_path()), e.message());
     }
   }
 };

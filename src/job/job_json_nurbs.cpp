@@ -40,13 +40,13 @@ void parse_interpolate_entity(const JsonCtx& ctx, const json& obj, const std::st
   if (obj.contains("method")) {
     method = ctx.string(obj["method"], path + ".method");
     if (method != "cubic-spline" && method != "lagrange")
-      ctx.fail(path + ".method", "job.method",
+      ctx.fail(path + ".method", errc::job_method,
                "expected \"cubic-spline\" or \"lagrange\", found " + describe(obj["method"]));
   }
   bool closed = false;
   if (obj.contains("closed")) closed = ctx.boolean(obj["closed"], path + ".closed");
   if (closed && method == "lagrange")
-    ctx.fail(path + ".closed", "job.method",
+    ctx.fail(path + ".closed", errc::job_method,
              "a closed curve through the points is a periodic spline: use method \"cubic-spline\" with closed, or "
              "leave closed out for \"lagrange\"");
 

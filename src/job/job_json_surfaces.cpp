@@ -16,7 +16,7 @@ std::vector<Vec3> points3(const JsonCtx& ctx, const json& v, const std::string& 
   int dim = 0;
   std::vector<Vec3> pts = ctx.points(v, path, &dim, min_size);
   if (dim != 3)
-    ctx.fail(path, "job.dimension",
+    ctx.fail(path, errc::job_dimension,
              "expected 3D points [x, y, z] (a patch lives in space), found " + std::to_string(dim) + "D points");
   return pts;
 }
@@ -31,13 +31,13 @@ ToolpathSpec parse_toolpath(const JsonCtx& ctx, const json& obj, const std::stri
   if (auto p = it->find("pattern"); p != it->end()) {
     t.pattern = ctx.string(*p, tp + ".pattern");
     if (t.pattern != "zigzag" && t.pattern != "raster" && t.pattern != "boundary")
-      ctx.fail(tp + ".pattern", "job.toolpath",
+      ctx.fail(tp + ".pattern", errc::job_toolpath,
                "expected \"zigzag\", \"raster\" or \"boundary\", found " + describe(*p));
   }
   if (auto d = it->find("direction"); d != it->end()) {
     const std::string s = ctx.string(*d, tp + ".direction");
     if (s != "u" && s != "v")
-      ctx.fail(tp + ".direction", "job.toolpath",
+      ctx.fail(tp + ".direction", errc::job_toolpath,
                "expected \"u\" or \"v\" (the parameter that varies along a pass), found " + describe(*d));
     t.direction = s[0];
   }
@@ -66,7 +66,7 @@ BoundaryCurve parse_boundary(const JsonCtx& ctx, const json& obj, const std::str
   std::vector<Bezier> pieces;
   const CurveSegment seg = parse_curve_object(ctx, obj, path, &dim, pieces, false);
   if (dim != 3)
-    ctx.fail(path + ".points", "job.dimension",
+    ctx.fail(path + ".points", errc::job_dimension,
              "expected 3D points [x, y, z] for a Coons boundary, found " + std::to_string(dim) + "D points");
   if (seg.kind == "bspline" && pieces.size() > 1) {
     // The Coons formula uses the curve's own parameter: its knot spans.
@@ -107,7 +107,7 @@ std::shared_ptr<const SurfaceGeometry> parse_coons_patch(const JsonCtx& ctx, con
     if (s == "linear") blend = CoonsBlend::linear;
     else if (s == "cubic") blend = CoonsBlend::cubic;
     else if (s == "quintic") blend = CoonsBlend::quintic;
-    else ctx.fail(path + ".blend", "job.blend", "expected \"linear\", \"cubic\" or \"quintic\", found " + describe(*it));
+    else ctx.fail(path + ".blend", errc::job_blend, "expected \"linear\", \"cubic\" or \"quintic\", found " + describe(*it));
   }
   return ctx.at(path, [&] {
     return SurfaceGeometry::make(CoonsPatch::make(std::move(c[0]), std::move(c[1]), std::move(c[2]), std::move(c[3]), blend));
@@ -125,7 +125,7 @@ void check_unit_square(const JsonCtx& ctx, CurveGeometry& g, const std::string& 
     for (size_t k = seg.first_piece; k < seg.first_piece + seg.piece_count; ++k)
       for (auto& p : g.pieces[k].points) {
         if (p.x < -slack || p.x > 1 + slack || p.y < -slack || p.y > 1 + slack)
-          ctx.fail(sp, "job.uv-range",
+          ctx.fail(sp, errc::job_uv_range,
                    "expected a curve in the patch's parameter square [0,1]^2 (u, v), found a control point (" +
                        fmt_num(p.x) + ", " + fmt_num(p.y) + ") of its Bézier form outside it");
         p = {std::clamp(p.x, 0.0, 1.0), std::clamp(p.y, 0.0, 1.0)};
@@ -157,7 +157,7 @@ void parse_curve_on_surface_entity(const JsonCtx& ctx, const json& obj, const st
       ctx.check_keys(s, sp, {"type", "id", "boundaries", "blend"});
       e.surface = parse_coons_patch(ctx, s, sp);
     } else {
-      ctx.fail(sp + ".type", "job.surface-type",
+      ctx.fail(sp + ".type", errc::job_surface_type,
                "expected \"bezier_patch\" or \"coons_patch\", found " + describe(s["type"]));
     }
   } else if (!s.is_string()) {
@@ -184,7 +184,7 @@ void parse_curve_on_surface_entity(const JsonCtx& ctx, const json& obj, const st
     e.uv_curve = make_single(seg, std::move(pieces), dim);
   }
   if (dim != 2)
-    ctx.fail(cp, "job.dimension",
+    ctx.fail(cp, errc::job_dimension,
              "expected a 2D curve of (u, v) parameters, found " + std::to_string(dim) + "D points");
   check_unit_square(ctx, e.uv_curve, cp);
 }
@@ -199,16 +199,16 @@ void resolve_surface_references(const JsonCtx& ctx, const json& entities, Job& j
     for (const Entity& o : job.entities) {
       if (o.id != name) continue;
       if (found)
-        ctx.fail(sp, "job.surface-ref",
+        ctx.fail(sp, errc::job_surface_ref,
                  "the id \"" + name + "\" names more than one entity; give the patch a unique id");
       found = &o;
     }
     if (!found)
-      ctx.fail(sp, "job.surface-ref",
+      ctx.fail(sp, errc::job_surface_ref,
                "expected the id of a bezier_patch or coons_patch entity, found \"" + name +
                    "\", which no entity has");
     if (!found->surface || found->type == "curve_on_surface")
-      ctx.fail(sp, "job.surface-ref",
+      ctx.fail(sp, errc::job_surface_ref,
                "expected the id of a bezier_patch or coons_patch entity, found \"" + name + "\", a " + found->type);
     e.surface = found->surface;
   }

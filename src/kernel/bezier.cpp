@@ -59,18 +59,18 @@ Bezier from_homogeneous(const std::vector<H>& hs, const Bezier& like) {
 
 void validate_control_points(std::span<const Vec3> pts, std::span<const double> w, int dim) {
   for (size_t i = 0; i < pts.size(); ++i) {
-    if (!finite(pts[i])) throw InputError("curve.not-finite", "points[" + std::to_string(i) + "]", "expected finite coordinates");
+    if (!finite(pts[i])) throw InputError(errc::curve_not_finite, Place::at_json("points[" + std::to_string(i) + "]"), "expected finite coordinates");
     if (dim == 2 && pts[i].z != 0)
-      throw InputError("curve.dimension", "points[" + std::to_string(i) + "]", "2D curve with a z coordinate");
+      throw InputError(errc::curve_dimension, Place::at_json("points[" + std::to_string(i) + "]"), "2D curve with a z coordinate");
   }
   if (w.empty()) return;
   if (w.size() != pts.size())
-    throw InputError("curve.weights-count", "weights",
+    throw InputError(errc::curve_weights_count, Place::at_json("weights"),
                      "expected one weight per control point (" + std::to_string(pts.size()) + "), found " +
                          std::to_string(w.size()));
   for (size_t i = 0; i < w.size(); ++i)
     if (!(w[i] > 0) || !std::isfinite(w[i]))
-      throw InputError("curve.weight", "weights[" + std::to_string(i) + "]",
+      throw InputError(errc::curve_weight, Place::at_json("weights[" + std::to_string(i) + "]"),
                        "expected a finite weight > 0, found " + fmt_num(w[i]));
 }
 
@@ -82,12 +82,12 @@ double control_magnitude(std::span<const Bezier> pieces) {
 }
 
 Bezier Bezier::make(std::vector<Vec3> pts, std::vector<double> w, int d) {
-  if (d != 2 && d != 3) throw InputError("curve.dimension", "", "expected dimension 2 or 3, found " + std::to_string(d));
+  if (d != 2 && d != 3) throw InputError(errc::curve_dimension, Place{}, "expected dimension 2 or 3, found " + std::to_string(d));
   if (pts.size() < 2)
-    throw InputError("curve.too-few-points", "points",
+    throw InputError(errc::curve_too_few_points, Place::at_json("points"),
                      "expected at least 2 control points, found " + std::to_string(pts.size()));
   if (static_cast<int>(pts.size()) - 1 > kMaxBezierDegree)
-    throw InputError("curve.degree-too-high", "points",
+    throw InputError(errc::curve_degree_too_high, Place::at_json("points"),
                      "expected at most " + std::to_string(kMaxBezierDegree + 1) + " control points (degree " +
                          std::to_string(kMaxBezierDegree) + "), found " + std::to_string(pts.size()));
   validate_control_points(pts, w, d);

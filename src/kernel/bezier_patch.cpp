@@ -75,23 +75,23 @@ Poly<Vec3> quotient_numerator(const Poly<Hom>& x, const Poly<Hom>& dx, bool rati
 BezierPatch BezierPatch::make(const std::vector<std::vector<Vec3>>& rows,
                               const std::vector<std::vector<double>>& weights) {
   if (rows.size() < 2)
-    throw InputError("patch.too-few-rows", "points",
+    throw InputError(errc::patch_too_few_rows, Place::at_json("points"),
                      "expected at least 2 rows of control points, found " + std::to_string(rows.size()));
   const size_t m1 = rows[0].size();
   if (m1 < 2)
-    throw InputError("patch.too-few-points", "points[0]",
+    throw InputError(errc::patch_too_few_points, Place::at_json("points[0]"),
                      "expected at least 2 control points per row, found " + std::to_string(m1));
   for (size_t i = 0; i < rows.size(); ++i) {
     if (rows[i].size() != m1)
-      throw InputError("patch.row-length", "points[" + std::to_string(i) + "]",
+      throw InputError(errc::patch_row_length, Place::at_json("points[" + std::to_string(i) + "]"),
                        "expected a row of " + std::to_string(m1) + " points like points[0], found " +
                            std::to_string(rows[i].size()) + "; every row of the net has the same length");
     for (size_t j = 0; j < m1; ++j)
-      if (!finite(rows[i][j])) throw InputError("patch.not-finite", "points" + ij(i, j), "expected finite coordinates");
+      if (!finite(rows[i][j])) throw InputError(errc::patch_not_finite, Place::at_json("points" + ij(i, j)), "expected finite coordinates");
   }
   const int nu = static_cast<int>(rows.size()) - 1, nv = static_cast<int>(m1) - 1;
   if (nu > kMaxBezierDegree || nv > kMaxBezierDegree)
-    throw InputError("patch.degree-too-high", "points",
+    throw InputError(errc::patch_degree_too_high, Place::at_json("points"),
                      "expected degrees of at most " + std::to_string(kMaxBezierDegree) + ", found " +
                          std::to_string(nu) + " x " + std::to_string(nv));
   BezierPatch s;
@@ -100,19 +100,19 @@ BezierPatch BezierPatch::make(const std::vector<std::vector<Vec3>>& rows,
   for (const auto& r : rows) s.points.insert(s.points.end(), r.begin(), r.end());
   if (!weights.empty()) {
     if (weights.size() != rows.size())
-      throw InputError("patch.weights-shape", "weights",
+      throw InputError(errc::patch_weights_shape, Place::at_json("weights"),
                        "expected one row of weights per row of points (" + std::to_string(rows.size()) +
                            "), found " + std::to_string(weights.size()));
     bool all_equal = true;
     for (size_t i = 0; i < weights.size(); ++i) {
       if (weights[i].size() != m1)
-        throw InputError("patch.weights-shape", "weights[" + std::to_string(i) + "]",
+        throw InputError(errc::patch_weights_shape, Place::at_json("weights[" + std::to_string(i) + "]"),
                          "expected " + std::to_string(m1) + " weights like the row of points, found " +
                              std::to_string(weights[i].size()));
       for (size_t j = 0; j < m1; ++j) {
         const double w = weights[i][j];
         if (!(w > 0) || !std::isfinite(w))
-          throw InputError("patch.weight", "weights" + ij(i, j), "expected a finite weight > 0, found " + fmt_num(w));
+          throw InputError(errc::patch_weight, Place::at_json("weights" + ij(i, j)), "expected a finite weight > 0, found " + fmt_num(w));
         all_equal = all_equal && w == weights[0][0];
         s.weights.push_back(w);
       }

@@ -70,16 +70,16 @@ double magnitude(const BoundaryCurve& c) {
 }  // namespace
 
 BoundaryCurve BoundaryCurve::make(std::vector<Bezier> pieces, std::vector<double> breaks) {
-  if (pieces.empty()) throw InputError("coons.boundary-empty", "", "expected a curve with at least one piece");
+  if (pieces.empty()) throw InputError(errc::coons_boundary_empty, Place{}, "expected a curve with at least one piece");
   if (breaks.size() != pieces.size() + 1 || breaks.front() != 0 || breaks.back() != 1)
-    throw InputError("coons.boundary-partition", "",
+    throw InputError(errc::coons_boundary_partition, Place{},
                      "internal: expected " + std::to_string(pieces.size() + 1) + " breaks from 0 to 1, found " +
                          std::to_string(breaks.size()));
   for (size_t k = 0; k + 1 < breaks.size(); ++k)
     if (!(breaks[k + 1] > breaks[k]))
-      throw InputError("coons.boundary-partition", "", "internal: breaks are not strictly increasing");
+      throw InputError(errc::coons_boundary_partition, Place{}, "internal: breaks are not strictly increasing");
   for (const auto& b : pieces)
-    if (b.dim != 3) throw InputError("coons.dimension", "", "expected a 3D curve (points [x, y, z]), found a 2D one");
+    if (b.dim != 3) throw InputError(errc::coons_dimension, Place{}, "expected a 3D curve (points [x, y, z]), found a 2D one");
   BoundaryCurve c;
   c.pieces = std::move(pieces);
   c.breaks = std::move(breaks);
@@ -128,7 +128,7 @@ CoonsPatch CoonsPatch::make(BoundaryCurve v0, BoundaryCurve v1, BoundaryCurve u0
       hint = "; its other end is there: reverse the points of " + std::string(ck.name);
     else if (dist(ref_other, got) <= tol)
       hint = "; the other end of " + std::string(ck.ref_name) + " is there: reverse the points of " + ck.ref_name;
-    throw InputError("coons.corner", std::string("boundaries.") + ck.name,
+    throw InputError(errc::coons_corner, Place::at_json(std::string("boundaries.") + ck.name),
                      std::string("expected ") + ck.name + " to " + (ck.at_end ? "end" : "start") + " at corner " +
                          ck.corner + " = " + pt(want) + ", where " + ck.ref_name + " " +
                          (ck.ref_end ? "ends" : "starts") + ", found " + pt(got) + ", " + fmt_num(gap) + " away" +
@@ -218,7 +218,7 @@ PatchGrid to_bezier_cells(const CoonsPatch& s) {
   // hold or to cut before building it (limits.hpp).
   const size_t cells = (g.ubreaks.size() - 1) * (g.vbreaks.size() - 1);
   if (cells > kMaxPatchCells)
-    throw InputError("limit.patch-cells", "boundaries",
+    throw InputError(errc::limit_patch_cells, Place::at_json("boundaries"),
                      "the boundaries' " + std::to_string(g.ubreaks.size() - 1) + " spans along u and " +
                          std::to_string(g.vbreaks.size() - 1) + " along v make " + std::to_string(cells) +
                          " exact Bézier cells, more than the limit of " + std::to_string(kMaxPatchCells) +

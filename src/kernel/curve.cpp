@@ -80,7 +80,7 @@ CurveGeometry make_path(std::vector<CurveSegment> segs, std::vector<Bezier> piec
     const Bezier& start = pieces[segs[i].first_piece];
     const Continuity c = joint_continuity(end, start, tol);
     if (c == Continuity::none)
-      throw InputError("path.joint", "segments[" + std::to_string(i) + "]",
+      throw InputError(errc::path_joint, Place::at_json("segments[" + std::to_string(i) + "]"),
                        "expected to start where segments[" + std::to_string(i - 1) + "] ends (" +
                            fmt_num(end.back().x) + ", " + fmt_num(end.back().y) +
                            (dim == 3 ? ", " + fmt_num(end.back().z) : std::string()) + "), found a start at (" +
@@ -96,7 +96,7 @@ CurveGeometry make_path(std::vector<CurveSegment> segs, std::vector<Bezier> piec
       auto pt = [&](const Vec3& p) {
         return "(" + fmt_num(p.x) + ", " + fmt_num(p.y) + (dim == 3 ? ", " + fmt_num(p.z) : std::string()) + ")";
       };
-      throw InputError("path.not-closed", "closed",
+      throw InputError(errc::path_not_closed, Place::at_json("closed"),
                        "the path is marked closed but its last segment ends at " + pt(a) + ", " +
                            fmt_num(dist(a, b)) + " away from the start of segments[0] at " + pt(b) +
                            "; make them meet, or set \"closed\": false");

@@ -13,28 +13,28 @@ std::string at(size_t i) { return "knots[" + std::to_string(i) + "]"; }
 }  // namespace
 
 void validate_knots(std::span<const double> knots, int degree, size_t n_points) {
-  if (degree < 1) throw InputError("curve.degree", "degree", "expected a degree >= 1, found " + std::to_string(degree));
+  if (degree < 1) throw InputError(errc::curve_degree, Place::at_json("degree"), "expected a degree >= 1, found " + std::to_string(degree));
   if (n_points < static_cast<size_t>(degree) + 1)
-    throw InputError("curve.too-few-points", "degree",
+    throw InputError(errc::curve_too_few_points, Place::at_json("degree"),
                      "a curve of degree " + std::to_string(degree) + " needs at least " + std::to_string(degree + 1) +
                          " control points, found " + std::to_string(n_points) +
                          "; lower the degree or add points");
   const size_t want = n_points + static_cast<size_t>(degree) + 1;
   if (knots.size() != want)
-    throw InputError("curve.knot-count", "knots",
+    throw InputError(errc::curve_knot_count, Place::at_json("knots"),
                      "expected " + std::to_string(want) + " knots (" + std::to_string(n_points) + " points + degree " +
                          std::to_string(degree) + " + 1), found " + std::to_string(knots.size()));
   for (size_t i = 0; i < knots.size(); ++i) {
-    if (!std::isfinite(knots[i])) throw InputError("curve.not-finite", at(i), "expected a finite knot, found " + fmt_num(knots[i]));
+    if (!std::isfinite(knots[i])) throw InputError(errc::curve_not_finite, Place::at_json(at(i)), "expected a finite knot, found " + fmt_num(knots[i]));
     if (i > 0 && knots[i] < knots[i - 1])
-      throw InputError("curve.knot-order", at(i),
+      throw InputError(errc::curve_knot_order, Place::at_json(at(i)),
                        "expected a knot >= " + fmt_num(knots[i - 1]) + " (knots must not decrease), found " +
                            fmt_num(knots[i]));
   }
   const size_t p = static_cast<size_t>(degree), m = knots.size() - 1;
   const double a = knots[p], b = knots[m - p];
   if (!(a < b))
-    throw InputError("curve.knot-domain", "knots",
+    throw InputError(errc::curve_knot_domain, Place::at_json("knots"),
                      "the curve's domain [knots[" + std::to_string(p) + "], knots[" + std::to_string(m - p) + "]] = [" +
                          fmt_num(a) + ", " + fmt_num(b) + "] is empty; the knots must increase somewhere in between");
   // Runs of equal knots: at most p + 1 anywhere, at most p strictly inside
@@ -46,7 +46,7 @@ void validate_knots(std::span<const double> knots, int degree, size_t n_points) 
     const bool inside = knots[i] > a && knots[i] < b;
     const size_t limit = inside ? p : p + 1;
     if (mult > limit)
-      throw InputError("curve.knot-multiplicity", at(i + limit),
+      throw InputError(errc::curve_knot_multiplicity, Place::at_json(at(i + limit)),
                        "knot " + fmt_num(knots[i]) + " appears " + std::to_string(mult) + " times; " +
                            (inside ? "inside the domain a knot may repeat at most degree (" + std::to_string(p) +
                                          ") times, or the curve would break apart there"

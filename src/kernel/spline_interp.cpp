@@ -29,7 +29,7 @@ Eigen::MatrixXd solve(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixX
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   lu.compute(A);
   if (lu.info() != Eigen::Success)
-    throw InputError("curve.ill-conditioned", "through", "the interpolation system is singular; check the points");
+    throw InputError(errc::curve_ill_conditioned, Place::at_json("through"), "the interpolation system is singular; check the points");
   return lu.solve(B);
 }
 
@@ -46,12 +46,12 @@ std::vector<double> chord_length_parameters(std::span<const Vec3> pts) {
   for (size_t k = 0; k < pts.size(); ++k) {
     const Vec3& p = pts[k];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw InputError("curve.not-finite", at(k), "expected finite coordinates");
+      throw InputError(errc::curve_not_finite, Place::at_json(at(k)), "expected finite coordinates");
     if (k == 0) continue;
     const double d = dist(p, pts[k - 1]);
     // A chord below 1e-12 of the coordinates is rounding noise, not a step.
     if (d <= 1e-12 * std::max({max_abs(p), max_abs(pts[k - 1]), 1e-300}))
-      throw InputError("curve.repeated-point", at(k),
+      throw InputError(errc::curve_repeated_point, Place::at_json(at(k)),
                        "expected a point different from through[" + std::to_string(k - 1) + "], found the same point " +
                            pt(p, pts[k].z != 0 || pts[k - 1].z != 0 ? 3 : 2) +
                            ": a repeated point gives a zero chord length, so no parameter can separate the two; "
@@ -63,7 +63,7 @@ std::vector<double> chord_length_parameters(std::span<const Vec3> pts) {
 
 NurbsCurve natural_cubic_spline(std::span<const Vec3> pts, int dim) {
   if (pts.size() < 2)
-    throw InputError("curve.too-few-points", "through",
+    throw InputError(errc::curve_too_few_points, Place::at_json("through"),
                      "expected at least 2 points to pass through, found " + std::to_string(pts.size()));
   const std::vector<double> t = chord_length_parameters(pts);
   const size_t n = pts.size() - 1;  // points Q_0..Q_n
@@ -105,13 +105,13 @@ NurbsCurve periodic_cubic_spline(std::span<const Vec3> input, int dim) {
   std::span<const Vec3> pts = input;
   if (pts.size() >= 2 && pts.front() == pts.back()) pts = pts.first(pts.size() - 1);
   if (pts.size() < 3)
-    throw InputError("curve.too-few-points", "through",
+    throw InputError(errc::curve_too_few_points, Place::at_json("through"),
                      "a closed spline needs at least 3 distinct points, found " + std::to_string(pts.size()));
   const std::vector<double> t0 = chord_length_parameters(pts);
   const size_t n = pts.size();
   const double closing = dist(pts.back(), pts.front());
   if (closing <= 1e-12 * scale_of(pts))  // unreachable after dropping an exact repeat, kept for near repeats
-    throw InputError("curve.repeated-point", at(input.size() - 1),
+    throw InputError(errc::curve_repeated_point, Place::at_json(at(input.size() - 1)),
                      "the last point repeats the first up to rounding: give it exactly equal, or drop it");
   // Parameters t_0..t_n with t_n = T (back at the first point), extended
   // periodically by three on each side.
@@ -146,10 +146,10 @@ NurbsCurve periodic_cubic_spline(std::span<const Vec3> input, int dim) {
 
 Bezier lagrange_polynomial(std::span<const Vec3> pts, int dim) {
   if (pts.size() < 2)
-    throw InputError("curve.too-few-points", "through",
+    throw InputError(errc::curve_too_few_points, Place::at_json("through"),
                      "expected at least 2 points to pass through, found " + std::to_string(pts.size()));
   if (pts.size() > static_cast<size_t>(kMaxBezierDegree) + 1)
-    throw InputError("curve.degree-too-high", "through",
+    throw InputError(errc::curve_degree_too_high, Place::at_json("through"),
                      "one polynomial through " + std::to_string(pts.size()) + " points would have degree " +
                          std::to_string(pts.size() - 1) + ", above the limit " + std::to_string(kMaxBezierDegree) +
                          "; use method \"cubic-spline\"");
@@ -167,7 +167,7 @@ Bezier lagrange_polynomial(std::span<const Vec3> pts, int dim) {
   P.back() = pts.back();
   for (const auto& p : P)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw InputError("curve.ill-conditioned", "through",
+      throw InputError(errc::curve_ill_conditioned, Place::at_json("through"),
                        "the polynomial through these points cannot be computed in double precision; use method "
                        "\"cubic-spline\"");
   Bezier b = Bezier::make(std::move(P), {}, dim);
@@ -177,7 +177,7 @@ Bezier lagrange_polynomial(std::span<const Vec3> pts, int dim) {
   for (int k = 0; k <= n; ++k)
     worst = std::max(worst, dist(evaluate(b, t[static_cast<size_t>(k)] / t.back()), pts[static_cast<size_t>(k)]));
   if (worst > 1e-9 * scale)
-    throw InputError("curve.ill-conditioned", "through",
+    throw InputError(errc::curve_ill_conditioned, Place::at_json("through"),
                      "one polynomial through " + std::to_string(n + 1) + " points misses them by " + fmt_num(worst) +
                          " in double precision (the system is too ill-conditioned); use method \"cubic-spline\"");
   return b;

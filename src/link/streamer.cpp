@@ -96,11 +96,11 @@ class Sender {
 
   void check_identity() {
     if (st_.magic != kMagic)
-      throw IoError("link.protocol", peer_,
+      throw IoError(errc::link_protocol, peer_,
                     "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(st_.magic) +
                         ", expected 0000425A); check the address");
     if (st_.version != kProtocolVersion)
-      throw ControllerError("link.version", peer_,
+      throw ControllerError(errc::link_version, peer_,
                             "the controller speaks protocol version " + std::to_string(st_.version) +
                                 ", this sender version " + std::to_string(kProtocolVersion) + "; update one of them");
   }
@@ -141,7 +141,7 @@ class Sender {
     if (const std::string prefix = "line " + std::to_string(st_.alarm_line) + ": ";
         st_.alarm_line > 0 && text.rfind(prefix, 0) == 0)
       text.erase(0, prefix.size());
-    throw ControllerError("controller.alarm", where,
+    throw ControllerError(errc::controller_alarm, where,
                           std::string("the controller stopped with alarm ") + to_string(st_.alarm) + " (" +
                               std::to_string(static_cast<int>(st_.alarm)) + "): " +
                               (text.empty() ? "no message" : text) + "; " + position());
@@ -152,7 +152,7 @@ class Sender {
     st_ = read_status();
     if (st_.state == State::alarm) alarm_error();
     if (st_.session != session_) restarted();
-    throw ControllerError("link.refused", peer_,
+    throw ControllerError(errc::link_refused, peer_,
                           std::string("the controller refused ") + doing + " (Modbus exception " +
                               std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
                               describe(st_.last_reject) + "); " + position());
@@ -160,7 +160,7 @@ class Sender {
 
   [[noreturn]] void restarted() {
     throw ControllerError(
-        "link.restarted", peer_,
+        errc::link_restarted, peer_,
         "the controller no longer holds this transfer: session " + hex32(session_) + " was expected, it reports " +
             (st_.session == 0 ? std::string("no session") : "session " + hex32(st_.session)) + " in state " +
             to_string(st_.state) +
@@ -184,12 +184,12 @@ class Sender {
           continue;  // ask again
         }
         if (st_.last_reject == Reject::busy)
-          throw ControllerError("link.busy", peer_,
+          throw ControllerError(errc::link_busy, peer_,
                                 "the controller is busy with another sender's program (session " + hex32(st_.session) +
                                     ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
                                     std::to_string(st_.total_bytes) +
                                     " bytes received); try again when it is done, or abort it there");
-        throw ControllerError("link.refused", peer_,
+        throw ControllerError(errc::link_refused, peer_,
                               "the controller refused to open a transfer (Modbus exception " +
                                   std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
                                   describe(st_.last_reject) + ")");
@@ -203,7 +203,7 @@ class Sender {
           std::to_string(st_.buffer_capacity) + " bytes");
     max_chunk_ = std::min<std::uint16_t>(st_.max_chunk, kMaxChunkBytes);
     if (opt_.chunk_bytes > 0) max_chunk_ = std::min(max_chunk_, opt_.chunk_bytes);
-    if (max_chunk_ == 0) throw ControllerError("link.protocol", peer_, "the controller announces chunks of 0 bytes");
+    if (max_chunk_ == 0) throw ControllerError(errc::link_protocol, peer_, "the controller announces chunks of 0 bytes");
     mark_progress();
     report();
   }
@@ -224,7 +224,7 @@ class Sender {
       return;
     }
     if (Clock::now() - progress_time_ > opt_.stall_timeout)
-      throw ControllerError("link.stalled", peer_,
+      throw ControllerError(errc::link_stalled, peer_,
                             "the controller took no byte and executed no line for " +
                                 fmt_num(std::chrono::duration<double>(opt_.stall_timeout).count()) + " s (state " +
                                 to_string(st_.state) + "); " + position());
@@ -264,7 +264,7 @@ class Sender {
         // The acknowledgement must account for exactly this chunk; anything
         // else means the two sides disagree about the program.
         if (st_.ack_seq != seq + 1 || st_.ack_bytes != sent + n)
-          throw ControllerError("link.ack", peer_,
+          throw ControllerError(errc::link_ack, peer_,
                                 "chunk " + std::to_string(seq + 1) + " was acknowledged as sequence " +
                                     std::to_string(st_.ack_seq) + " at byte " + std::to_string(st_.ack_bytes) +
                                     ", expected byte " + std::to_string(sent + n) + "; the program may be corrupted");
@@ -317,7 +317,7 @@ class Sender {
         reconnect(e.message());
         if (st_.state == State::finishing || st_.state == State::done) break;  // it got through
         if (st_.ack_bytes != prog_.size())
-          throw ControllerError("link.ack", peer_, "after reconnecting before COMMIT the controller reports " +
+          throw ControllerError(errc::link_ack, peer_, "after reconnecting before COMMIT the controller reports " +
                                                            position() + "; the program may be corrupted");
       }
     }
@@ -353,7 +353,7 @@ class Sender {
     const auto deadline = Clock::now() + opt_.retry_time;
     for (int attempt = 1;; ++attempt) {
       if (failures_ >= opt_.retries || Clock::now() >= deadline)
-        throw IoError("link.lost", peer_,
+        throw IoError(errc::link_lost, peer_,
                       "the connection was lost and could not be restored (" + std::to_string(failures_) +
                           " attempts, last: " + why + "); " + std::to_string(acked_high_) + " of " +
                           std::to_string(prog_.size()) +
@@ -385,7 +385,7 @@ class Sender {
       refused(e, "RESUME");
     }
     if (st_.ack_bytes > sent_high_)
-      throw ControllerError("link.ack", peer_, "after reconnecting the controller reports " + position() +
+      throw ControllerError(errc::link_ack, peer_, "after reconnecting the controller reports " + position() +
                                                        ", more than was sent; the program may be corrupted");
   }
 
@@ -431,16 +431,16 @@ StreamResult stream_program(std::string_view program, const Endpoint& to, const 
 
 StreamResult stream_program(std::string_view program, const TransportFactory& connect, const std::string& peer,
                             const StreamOptions& opt) {
-  if (program.empty()) throw InputError("link.empty", "", "the program is empty; nothing to send");
+  if (program.empty()) throw InputError(errc::link_empty, Place{}, "the program is empty; nothing to send");
   if (program.size() > std::numeric_limits<std::uint32_t>::max())
-    throw InputError("link.too-large", "", "the program is larger than 4 GiB, the protocol's limit");
+    throw InputError(errc::link_too_large, Place{}, "the program is larger than 4 GiB, the protocol's limit");
   if (const auto nul = program.find('\0'); nul != std::string_view::npos) {
     const auto line = 1 + std::count(program.begin(), program.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
-    throw InputError("link.nul-byte", "line " + std::to_string(line),
+    throw InputError(errc::link_nul_byte, Place::at_line(line),
                      "the program holds a NUL byte (offset " + std::to_string(nul) + "); G-code is text");
   }
   if (opt.retries < 0 || opt.timeout.count() <= 0 || opt.stall_timeout.count() <= 0)
-    throw InputError("link.options", "", "timeouts must be positive and retries not negative");
+    throw InputError(errc::link_options, Place{}, "timeouts must be positive and retries not negative");
   return Sender(program, connect, peer, opt).run();
 }
 

@@ -24,9 +24,9 @@ constexpr ConnId kLocal = std::numeric_limits<ConnId>::max();  // run_program's 
 // The interpreter's error ids say what kind of refusal it was; the alarm
 // code is the coarse, numbered version a PLC can switch on.
 Alarm alarm_for(const std::string& id, const std::string& message) {
-  if (id == "gcode.travel") return Alarm::travel_limit;
-  if (id == "gcode.feed" && message.find("maximum") != std::string::npos) return Alarm::feed_limit;
-  if (id == "gcode.nurbs-open") return Alarm::incomplete;
+  if (id == errc::gcode_travel) return Alarm::travel_limit;
+  if (id == errc::gcode_feed && message.find("maximum") != std::string::npos) return Alarm::feed_limit;
+  if (id == errc::gcode_nurbs_open) return Alarm::incomplete;
   return Alarm::gcode;
 }
 
@@ -51,11 +51,11 @@ struct SimController::Pending {
 
 SimController::SimController(ControllerConfig cfg) : cfg_(std::move(cfg)) {
   if (cfg_.buffer_bytes < kMinBuffer || cfg_.buffer_bytes > kMaxBuffer)
-    throw InputError("sim.config", "buffer", "the receive buffer must hold " + std::to_string(kMinBuffer) + " to " +
+    throw InputError(errc::sim_config, Place::at_register("buffer"), "the receive buffer must hold " + std::to_string(kMinBuffer) + " to " +
                                                  std::to_string(kMaxBuffer) + " bytes, found " +
                                                  std::to_string(cfg_.buffer_bytes));
   if (cfg_.session_timeout.count() <= 0)
-    throw InputError("sim.config", "session timeout", "must be positive, found " +
+    throw InputError(errc::sim_config, Place::at_register("session timeout"), "must be positive, found " +
                                                           std::to_string(cfg_.session_timeout.count()) + " ms");
   buf_.reserve(cfg_.buffer_bytes);
   exec_ = std::thread([this] { exec_loop(); });
@@ -300,13 +300,13 @@ Reject SimController::command_locked(ConnId c, std::span<const std::uint16_t> re
       owner_ = c;
       owner_seen_ = Clock::now();
       if (total != ack_bytes_) {
-        raise_alarm_locked(Alarm::length_mismatch, 0, "link.length-mismatch",
+        raise_alarm_locked(Alarm::length_mismatch, 0, errc::link_length_mismatch,
                            "the sender's program has " + std::to_string(total) + " bytes, the controller received " +
                                std::to_string(ack_bytes_));
         return Reject::in_alarm;
       }
       if (crc != crc_.value()) {
-        raise_alarm_locked(Alarm::crc_mismatch, 0, "link.crc-mismatch",
+        raise_alarm_locked(Alarm::crc_mismatch, 0, errc::link_crc_mismatch,
                            "CRC-32 of the received program is " + hex32(crc_.value()) + ", the sender's is " + hex32(crc));
         return Reject::in_alarm;
       }
@@ -321,7 +321,7 @@ Reject SimController::command_locked(ConnId c, std::span<const std::uint16_t> re
       if (session_ == 0 || arg(1) != session_) return Reject::bad_session;
       if (arg(0) != token_) return Reject::bad_token;
       if (active)
-        raise_alarm_locked(Alarm::aborted, line_no_, "link.aborted",
+        raise_alarm_locked(Alarm::aborted, line_no_, errc::link_aborted,
                            "the sender aborted the transfer after " + std::to_string(ack_bytes_) + " bytes");
       return Reject::none;
     }
@@ -450,14 +450,14 @@ FrameReply SimController::handle_frame(ConnId c, std::span<const std::uint8_t> a
 Status SimController::run_program(std::string_view program) {
   if (const auto nul = program.find('\0'); nul != std::string_view::npos) {
     const auto line = 1 + std::count(program.begin(), program.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
-    throw InputError("sim.nul-byte", "line " + std::to_string(line),
+    throw InputError(errc::sim_nul_byte, Place::at_line(line),
                      "the program holds a NUL byte (offset " + std::to_string(nul) + "); G-code is text");
   }
   if (program.size() > std::numeric_limits<std::uint32_t>::max())
-    throw InputError("sim.too-large", "", "the program is larger than 4 GiB, the protocol's limit");
+    throw InputError(errc::sim_too_large, Place{}, "the program is larger than 4 GiB, the protocol's limit");
   std::unique_lock lk(m_);
   if (state_ == State::receiving || state_ == State::finishing)
-    throw InputError("sim.busy", "", "a streamed transfer is in progress; wait until it is done");
+    throw InputError(errc::sim_busy, Place{}, "a streamed transfer is in progress; wait until it is done");
   constexpr std::uint32_t kToken = 0x4C4F434Cu;  // "LOCL"
   open_locked(kLocal, kToken, static_cast<std::uint32_t>(program.size()));
   std::uint32_t seq = 0;
@@ -527,7 +527,7 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
     id = e.id();
     failed.emplace(alarm_for(e.id(), e.message()), e.message());
   } catch (const std::exception& e) {
-    id = "sim.internal";
+    id = errc::sim_internal;
     failed.emplace(Alarm::gcode, std::string("internal error: ") + e.what());
   }
   if (failed) text += trace_alarm(static_cast<int>(no), to_string(failed->first), id, failed->second);
@@ -634,7 +634,7 @@ void SimController::exec_loop() {
       }
       // 5. A full buffer with no line end can never make progress.
       if (buffered_locked() >= cfg_.buffer_bytes) {
-        raise_alarm_locked(Alarm::line_too_long, line_no_ + 1, "sim.line-too-long",
+        raise_alarm_locked(Alarm::line_too_long, line_no_ + 1, errc::sim_line_too_long,
                            "the line is longer than the receive buffer (" + std::to_string(cfg_.buffer_bytes) +
                                " bytes)");
         continue;
@@ -645,7 +645,7 @@ void SimController::exec_loop() {
     if (state_ == State::receiving) {
       const auto deadline = owner_seen_ + cfg_.session_timeout;
       if (Clock::now() >= deadline) {
-        raise_alarm_locked(Alarm::sender_lost, line_no_, "link.sender-lost",
+        raise_alarm_locked(Alarm::sender_lost, line_no_, errc::link_sender_lost,
                            "the sender was silent for " + std::to_string(cfg_.session_timeout.count()) +
                                " ms; the program is incomplete");
         continue;

@@ -40,7 +40,7 @@ InputError refusal(std::string_view program, const MachineProfile* m = nullptr) 
     return e;
   }
   ADD_FAILURE() << "expected a refusal of:\n" << program;
-  return InputError("", "", "");
+  return InputError(ErrorId(""), Place{}, "");
 }
 
 const std::string kPre = "G21 G90 G17 F100\nG00 X0 Y0 Z0\n";  // two lines: errors below are on line 3

@@ -25,7 +25,7 @@ InputError refusal(const std::string& text) {
     return e;
   }
   ADD_FAILURE() << "expected a refusal of " << text;
-  return InputError("", "", "");
+  return InputError(ErrorId(""), Place{}, "");
 }
 
 const std::string kCircle =

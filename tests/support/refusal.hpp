@@ -17,7 +17,7 @@ InputError refusal_of(F&& f) {
     return e;
   }
   ADD_FAILURE() << "expected a refusal";
-  return InputError("", "", "");
+  return InputError(ErrorId(""), Place{}, "");
 }
 
 }  // namespace bezcam::test
