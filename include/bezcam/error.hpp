@@ -19,10 +19,18 @@ namespace bezcam {
 enum class ErrorFamily { input, io, controller };
 
 /// Where an error applies. Every part is optional; to_string() composes the
-/// set parts, in the order option, file, JSON path, line, register, text, as
-/// `part: part: ...` (`job.json: entities[3].knots[7]`, `prog.nc: line 12`).
+/// set parts, in the order option (or setting), file, JSON path, line,
+/// register, text, as `part: part: ...` (`job.json: entities[3].knots[7]`,
+/// `prog.nc: line 12`).
+///
+/// The library never names an option of a program: where a value came from
+/// the caller rather than a file it names the setting (`output`,
+/// `tolerance`, `deviation`), and a program that took the setting from an
+/// option (the CLI's `--output`) shows its own option instead (see
+/// with_option()).
 struct Place {
-  std::optional<std::string> option;     ///< an option of the calling program, e.g. `--machine`
+  std::optional<std::string> option;     ///< an option of the calling program, e.g. `--machine` (set by programs only)
+  std::optional<std::string> setting;    ///< a setting the caller passed to the library, e.g. `output`, `tolerance`
   std::optional<std::string> file;       ///< a file (or an endpoint such as `HOST:PORT`)
   std::optional<std::string> json_path;  ///< a JSON path inside the file, e.g. `entities[3].knots[7]`
   std::optional<long long> line;         ///< a 1-based line number, printed as `line N`
@@ -42,6 +50,7 @@ struct Place {
   static Place at_line(long long n) { Place p; p.line = n; return p; }
   static Place at_json(std::string path) { Place p; p.json_path = std::move(path); return p; }
   static Place at_option(std::string opt) { Place p; p.option = std::move(opt); return p; }
+  static Place at_setting(std::string name) { Place p; p.setting = std::move(name); return p; }
   static Place at_file(std::string f) { Place p; p.file = std::move(f); return p; }
   static Place at_register(std::string r) { Place p; p.reg = std::move(r); return p; }
   /// `file` and a JSON path (`prefix.rest`, or either alone when the other is empty).
@@ -64,6 +73,9 @@ public:
   /// The place, structured.
   const Place& place() const noexcept { return place_; }
   const std::string& message() const noexcept { return message_; }
+  /// The same error with the place's setting shown as the calling program's
+  /// option `opt` (e.g. setting `output` shown as `--output`).
+  Error with_option(std::string opt) const;
 
 private:
   ErrorFamily family_;

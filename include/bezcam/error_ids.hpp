@@ -20,6 +20,8 @@ public:
   constexpr explicit ErrorId(const char* dotted) : text_(dotted) {}
   constexpr explicit ErrorId(std::string_view dotted) : text_(dotted) {}
   /// An id carried in a string, e.g. `throw InputError(e.id(), place, what)`.
+  /// The ErrorId views `dotted` and must not outlive it: pass it straight to
+  /// an Error (which copies the text) or compare it, never store it.
   ErrorId(const std::string& dotted) : text_(dotted) {}  // NOLINT(google-explicit-constructor)
 
   /// The dotted text, e.g. `job.knots-order`.

@@ -18,6 +18,7 @@ void add(std::string& out, const std::string& part) {
 std::string Place::to_string() const {
   std::string out;
   if (option) add(out, *option);
+  else if (setting) add(out, *setting);
   if (file) add(out, *file);
   if (json_path) add(out, *json_path);
   if (line) add(out, "line " + std::to_string(*line));
@@ -28,7 +29,7 @@ std::string Place::to_string() const {
 
 std::string Place::relative_path() const {
   if (json_path) return *json_path;
-  if (!option && !file && !line && !reg) return text;
+  if (!option && !setting && !file && !line && !reg) return text;
   return {};
 }
 
@@ -53,6 +54,13 @@ Error::Error(ErrorFamily family, ErrorId id, std::string where, std::string what
         p.text = std::move(where);
         return p;
       }(), std::move(what)) {}
+
+Error Error::with_option(std::string opt) const {
+  Place p = place_;
+  p.option = std::move(opt);
+  p.setting.reset();
+  return Error(family_, ErrorId(id_), std::move(p), message_);
+}
 
 std::string fmt_num(double v) {
   char buf[64];

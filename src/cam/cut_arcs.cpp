@@ -58,10 +58,10 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
 
 void emit_arcs(CutContext& c, EntityReport& r) {
   if (!c.machine.arcs)
-    throw InputError(errc::usage_output, Place::at_option("--output"),
+    throw InputError(errc::usage_output, Place::at_setting("output"),
                      "machine profile \"" + c.machine.name +
-                         "\" does not take arcs (\"arcs\": false), so --output arcs cannot be honoured; use "
-                         "--output lines, or a profile that takes G02/G03");
+                         "\" does not take arcs (\"arcs\": false), so arcs output cannot be honoured; choose "
+                         "lines output, or a profile that takes G02/G03");
   const auto& pieces = c.entity.curve.pieces;
   std::vector<Vec3> path;
   r.blocks = 0;

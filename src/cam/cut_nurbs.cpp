@@ -16,7 +16,7 @@ namespace {
 
 // Says once per program that the machine has no NURBS words.
 void note_fallback(CutContext& c) {
-  const std::string n = "machine " + c.machine.name + " has no NURBS words: --output nurbs cuts with " +
+  const std::string n = "machine " + c.machine.name + " has no NURBS words: nurbs output cuts with " +
                         (c.machine.arcs ? "arcs (G02/G03) and G01 lines" : "G01 lines");
   auto& notes = c.program.notes;
   if (std::find(notes.begin(), notes.end(), n) != notes.end()) return;

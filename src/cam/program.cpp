@@ -15,7 +15,7 @@ OutputMode parse_output_mode(const std::string& s) {
   if (s == "lines") return OutputMode::lines;
   if (s == "arcs") return OutputMode::arcs;
   if (s == "nurbs") return OutputMode::nurbs;
-  throw InputError(errc::usage_output, Place::at_option("--output"), "expected lines, arcs or nurbs, found \"" + s + "\"");
+  throw InputError(errc::usage_output, Place::at_setting("output"), "expected lines, arcs or nurbs, found \"" + s + "\"");
 }
 
 const char* to_string(OutputMode m) {
@@ -95,7 +95,7 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
     const bool tolerance = id == errc::flatten_tolerance || id == errc::flatten_tolerance_below_precision ||
                            id == errc::flatten_tolerance_below_rounding;
     if (!tolerance && !(id == errc::limit_segments && e.place().relative_path() == "tolerance")) throw;
-    throw InputError(e.id(), opt.tolerance ? std::string("--tolerance") : job.source + ": tolerance",
+    throw InputError(e.id(), opt.tolerance ? Place::at_setting("tolerance") : Place::in_json(job.source, "tolerance"),
                      e.message() + " (machine \"" + m.name + "\" prints " + std::to_string(m.decimals(job.units)) +
                          " decimals in " + to_string(job.units) + ")");
   }
@@ -165,7 +165,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
     const CutParams cp = cut_params(job, e, m);
     check_entity_limits(job, e, p.tolerance, p.decimals, cp.tool_radius,
-                        opt.tolerance ? std::string("--tolerance") : job.source + ": tolerance");
+                        opt.tolerance ? Place::at_setting("tolerance") : Place::in_json(job.source, "tolerance"));
     const double safe = quantize(cp.safe_z, p.decimals);
     p.safe_z = p.entities.empty() ? safe : std::min(p.safe_z, safe);
     const auto& g = e.curve;

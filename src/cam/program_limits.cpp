@@ -24,7 +24,7 @@ double entity_magnitude(const Entity& e, double tool_radius) {
 }
 
 void check_entity_limits(const Job& job, const Entity& e, double tolerance, int decimals, double tool_radius,
-                         const std::string& tolerance_place) {
+                         const Place& tolerance_place) {
   const double magnitude = entity_magnitude(e, tool_radius);
   const double least = kMinRelativeTolerance * magnitude;
   if (tolerance < least)

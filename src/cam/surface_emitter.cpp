@@ -141,7 +141,7 @@ class SurfaceEmitter {
             std::to_string(s_.degree_v()) + (s_.rational() ? ", rational" : "") + ", " + what +
             (r_ > 0 ? ", ball-end tool radius " + fmt_num(r_) : ", tool tip on the surface"));
     if (c_.program.output == OutputMode::nurbs && rep_.blocks == 0)
-      c_.program.warnings.push_back(e_.label() + ": surface passes are cut with G01 lines in --output nurbs");
+      c_.program.warnings.push_back(e_.label() + ": surface passes are cut with G01 lines in nurbs output");
   }
   void retract() {
     if (st_.pos_known && st_.pos.z == safe_) return;

@@ -68,6 +68,18 @@ void write_output_atomically(const std::string& path, const std::string& data) {
 namespace {
 // The CLI's contract with scripts (docs/errors.md): the library says what
 // kind of failure it was, the program turns that into a status.
+// The library names the settings a caller passed (Place::setting); the
+// program shows them as the options they came from.
+bezcam::Error as_shown(const bezcam::Error& e) {
+  static const std::pair<const char*, const char*> flags[] = {
+      {"output", "--output"}, {"tolerance", "--tolerance"}, {"deviation", "--deviation"}};
+  const auto& place = e.place();
+  if (place.setting && !place.option)
+    for (const auto& [setting, flag] : flags)
+      if (*place.setting == setting) return e.with_option(flag);
+  return e;
+}
+
 int exit_status(bezcam::ErrorFamily family) {
   switch (family) {
     case bezcam::ErrorFamily::input: return 2;
@@ -101,7 +113,8 @@ int main(int argc, char** argv) {
     for (auto* c : cmds)
       if (c->app && c->app->parsed()) return c->run();
     return 2;
-  } catch (const Error& e) {
+  } catch (const Error& error) {
+    const Error e = as_shown(error);
     std::cerr << "bezcam: error: " << e.what() << "\n  (error id: " << e.id() << ")\n";
     return exit_status(e.family());
   } catch (const std::bad_alloc&) {

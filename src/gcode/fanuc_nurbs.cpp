@@ -14,7 +14,7 @@ namespace bezcam {
 using namespace gcode;
 
 bool GcodeInterpreter::Impl::continue_block() {
-  if (mo.open == 52) return continue_g52();
+  if (mo.open == ModalMotion::nurbs_g5_2) return continue_g52();
   // Fanuc: "K- [X- Y- Z- R-]" until the P-th knot-only block.
   const bool only_block_words = ln.g.empty() && ln.m.empty() &&
                                 std::all_of(ln.words.begin(), ln.words.end(), [](const Word& w) {
@@ -123,7 +123,7 @@ void GcodeInterpreter::Impl::complete_fanuc() {
 }
 
 void GcodeInterpreter::Impl::fanuc_start(int code) {
-  st.motion = code;
+  st.motion = static_cast<ModalMotion>(code);  // 62 or 63
   mo.g5_chain = false;
   mo.nurbs_mode_line = line;
   const int max = self.profile_ ? self.profile_->nurbs_max_rank : 4;
@@ -160,7 +160,7 @@ void GcodeInterpreter::Impl::fanuc_start(int code) {
   }
   double w = 1;
   if (ln.has('R')) w = weight(*ln.get('R'));
-  mo.open = code;
+  mo.open = static_cast<ModalMotion>(code);
   mo.open_line = line;
   mo.order = rank;
   mo.open_feed = st.feed;

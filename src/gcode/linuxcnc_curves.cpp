@@ -53,7 +53,7 @@ void GcodeInterpreter::Impl::g52_point() {
 }
 
 void GcodeInterpreter::Impl::g5() {
-  st.motion = 50;
+  st.motion = ModalMotion::cubic;
   require_xy_known("G5");
   require_feed("G5");
   if (ln.has('I') != ln.has('J')) fail(errc::gcode_bezier, "G5 needs both I and J, or neither");
@@ -74,7 +74,7 @@ void GcodeInterpreter::Impl::g5() {
 }
 
 void GcodeInterpreter::Impl::g51() {
-  st.motion = 51;
+  st.motion = ModalMotion::quadratic;
   mo.g5_chain = false;
   require_xy_known("G5.1");
   require_feed("G5.1");
@@ -96,7 +96,7 @@ void GcodeInterpreter::Impl::curve_move(MotionBlock& b, unsigned axes) {
 }
 
 void GcodeInterpreter::Impl::g52() {
-  if (mo.open == 52)
+  if (mo.open == ModalMotion::nurbs_g5_2)
     fail(errc::gcode_nurbs_open, "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
   require_xy_known("G5.2");
   require_feed("G5.2");
@@ -114,7 +114,7 @@ void GcodeInterpreter::Impl::g52() {
   if (order > max) {
     soft(errc::gcode_rank, "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
   }
-  mo.open = 52;
+  mo.open = ModalMotion::nurbs_g5_2;
   mo.open_line = line;
   mo.order = order;
   mo.open_feed = st.feed;
@@ -130,12 +130,12 @@ void GcodeInterpreter::Impl::g52() {
   } else {
     mo.weights[0] = weight(*ln.get('P'));
   }
-  st.motion = 52;
+  st.motion = ModalMotion::nurbs_g5_2;
   lint_motion(BlockKind::nurbs, st.pos, st.pos, 0);
 }
 
 void GcodeInterpreter::Impl::g53() {
-  if (mo.open != 52) fail(errc::gcode_nurbs_start, "G5.3 ends a G5.2 block, and none is open");
+  if (mo.open != ModalMotion::nurbs_g5_2) fail(errc::gcode_nurbs_start, "G5.3 ends a G5.2 block, and none is open");
   if (!ln.words.empty()) fail(errc::gcode_unexpected_word, "G5.3 takes no words, found " + ln.words.front().text);
   if (mo.ctrl.size() < static_cast<size_t>(mo.order)) {
     const std::string msg = "the G5.2 block opened at line " + std::to_string(mo.open_line) + " has " +
@@ -148,7 +148,7 @@ void GcodeInterpreter::Impl::g53() {
   }
   finish_nurbs_block(linuxcnc_knots(mo.ctrl.size(), mo.order));
   clear_block();
-  st.motion = -1;  // as LinuxCNC does after G5.3
+  st.motion = ModalMotion::none;  // as LinuxCNC does after G5.3
 }
 
 }  // namespace bezcam

@@ -87,7 +87,7 @@ void GcodeInterpreter::Impl::run_modal() {
       fail(errc::gcode_modal_group, seen + " and " + t + " are in the same modal group: give one");
     seen = t;
   }
-  if (mo.open == 52 && motion != 53)
+  if (mo.open == ModalMotion::nurbs_g5_2 && motion != 53)
     fail(errc::gcode_nurbs_open, "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
 
   // Which motion the line's words belong to (-999: none; -1: G80).
@@ -97,7 +97,7 @@ void GcodeInterpreter::Impl::run_modal() {
   int active = -999;
   if (motion == 800) active = -1;
   else if (motion != -999) active = motion;
-  else if (motion_words) active = st.motion >= 0 && st.motion <= 3 ? st.motion * 10 : st.motion;
+  else if (motion_words) active = static_cast<int>(st.motion);
   if (dwell && (has_axes || motion != -999))
     fail(errc::gcode_modal_group, "G04 (dwell) cannot share a line with a motion: put it on its own line");
   check_letters(active, dwell, motion != -999);

@@ -48,7 +48,7 @@ void GcodeInterpreter::Impl::run(std::string_view text) {
     fail(errc::gcode_after_end, "the program ended at line " + std::to_string(mo.end_line) +
                           " (M02/M30): nothing after it runs; remove this line or move the end");
   if (ln.n) check_n();
-  if (mo.open) {
+  if (mo.open != ModalMotion::none) {
     if (continue_block()) return;
   }
   run_modal();
@@ -182,7 +182,7 @@ void GcodeInterpreter::Impl::finish_curve_block(MotionBlock& b) {
 
 void GcodeInterpreter::Impl::clear_block() {
   save_lists();
-  mo.open = 0;
+  mo.open = ModalMotion::none;
   mo.ctrl.clear();
   mo.weights.clear();
   mo.knots.clear();
@@ -193,12 +193,12 @@ void GcodeInterpreter::Impl::clear_block() {
 
 void GcodeInterpreter::Impl::abandon_block() {
   clear_block();
-  st.motion = -1;
+  st.motion = ModalMotion::none;
 }
 
 void GcodeInterpreter::Impl::motion_line(int code, bool explicit_motion) {
   if (code == -1) {  // G80 or no motion words
-    st.motion = -1;
+    st.motion = ModalMotion::none;
     mo.g5_chain = false;
     return;
   }
@@ -240,7 +240,7 @@ int GcodeInterpreter::Impl::start_code(const std::string& word) {
 }
 
 void GcodeInterpreter::Impl::linear(bool rapid) {
-  st.motion = rapid ? 0 : 1;
+  st.motion = rapid ? ModalMotion::rapid : ModalMotion::feed;
   mo.g5_chain = false;
   const auto [to, axes] = target();
   if (!axes) return;
@@ -259,7 +259,7 @@ double GcodeInterpreter::Impl::arc_tolerance() const {
 }
 
 void GcodeInterpreter::Impl::arc(bool cw) {
-  st.motion = cw ? 2 : 3;
+  st.motion = cw ? ModalMotion::arc_cw : ModalMotion::arc_ccw;
   mo.g5_chain = false;
   const std::string g = cw ? "G02" : "G03";
   const bool ij = ln.has('I') || ln.has('J'), r = ln.has('R');
@@ -357,8 +357,8 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
 }
 
 std::vector<MotionBlock> GcodeInterpreter::finish() {
-  if (more_.open) {
-    const bool fanuc = more_.open != 52;
+  if (more_.open != ModalMotion::none) {
+    const bool fanuc = more_.open != ModalMotion::nurbs_g5_2;
     const std::string msg =
         fanuc ? "the program ends inside the NURBS block opened at line " + std::to_string(more_.open_line) + ": it has " +
                     std::to_string(more_.ctrl.size()) + " control points and " + std::to_string(more_.knot_only) +

@@ -369,7 +369,7 @@ constexpr const char* kRapidColour = "#d62728";
 
 std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const ToolMotion> motion, double tolerance,
                                              const EntityProgress& on_entity) {
-  if (!(tolerance > 0)) throw InputError(errc::preview_tolerance, Place::at_option("--deviation"), "needs a tolerance > 0 to measure against");
+  if (!(tolerance > 0)) throw InputError(errc::preview_tolerance, Place::at_setting("deviation"), "needs a tolerance > 0 to measure against");
   std::vector<BlockDeviation> out;
   const size_t total = job.entities.size();
   bool tagged = false;
@@ -655,7 +655,7 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   if (!has_entities && in.motion.empty())
     throw InputError(errc::preview_empty, Place{}, "nothing to draw: the job has no entities and there is no tool path");
   if (opt.deviation && (!job || !(in.tolerance > 0)))
-    throw InputError(errc::preview_deviation, Place::at_option("--deviation"),
+    throw InputError(errc::preview_deviation, Place::at_setting("deviation"),
                      "colouring by deviation needs the job's true curves and a tolerance; give the job file");
   const std::string unit = to_string(in.units);
   const double W = std::max(400.0, opt.width);

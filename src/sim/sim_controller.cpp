@@ -178,7 +178,11 @@ Status SimController::status_locked(ConnId c) const {
                                        (machine_.program_end ? flag::program_end : 0) |
                                        (owner_ != 0 ? flag::owner_attached : 0));
   s.tool = static_cast<std::uint16_t>(std::clamp(machine_.tool, 0, 65535));
-  s.motion = machine_.motion < 0 ? 0xFFFF : static_cast<std::uint16_t>(machine_.motion);
+  // Register 34 (docs/modbus-register-map.md): 0-3 for G00-G03, the G
+  // number x 10 for curve modes (G5.2 -> 52), 0xFFFF none.
+  const int code10 = static_cast<int>(machine_.motion);
+  s.motion = machine_.motion == ModalMotion::none ? std::uint16_t{0xFFFF}
+                                                   : static_cast<std::uint16_t>(code10 <= 30 ? code10 / 10 : code10);
   s.connections = static_cast<std::uint16_t>(std::min<std::size_t>(connections_, 65535));
   s.duplicates = duplicates_;
   s.rejects = rejects_;

@@ -75,7 +75,8 @@ TEST(Limits, ATolerancePrecisionCannotHonourIsRefusedNamingTheEntity) {
   opt.tolerance = 1e-9;
   r = convert_refusal(job("", R"({"type": "bezier", "points": [[0,0],[50000,10000],[100000,0]]})"), opt);
   EXPECT_EQ(r.id, "limit.tolerance-precision");
-  EXPECT_EQ(r.where, "--tolerance");
+  // The library names the setting the caller passed, never a CLI flag.
+  EXPECT_EQ(r.where, "tolerance");
 }
 
 TEST(Limits, ASegmentCountExplosionIsRefusedBeforeFlattening) {

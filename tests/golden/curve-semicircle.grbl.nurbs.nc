@@ -1,6 +1,6 @@
 (bezcam 0.1.0: curve-semicircle.json, machine grbl, output nurbs)
 (tolerance 0.005 mm; largest deviation measured 0.00488 mm, proven bound 0.004891 mm, rounding included)
-(machine grbl has no NURBS words: --output nurbs cuts with arcs [G02/G03] and G01 lines)
+(machine grbl has no NURBS words: nurbs output cuts with arcs [G02/G03] and G01 lines)
 G21 G90 G17
 (tool 1)
 S12000 M3

@@ -92,3 +92,26 @@ TEST(Layout, EveryFolderOfSrcHasItsHeaders) {
     EXPECT_TRUE(fs::is_directory(root / "include/bezcam" / f)) << "src/" << f << " has no include/bezcam/" << f;
   }
 }
+
+TEST(Layout, TheLibraryNamesNoOptionOfTheProgram) {
+  // The library names settings (Place::setting: "output", "tolerance"); the
+  // CLI shows them as its options. A "--flag" in a string literal of the
+  // library (anything but src/cli) would tie it to one program's options.
+  const fs::path root = BEZCAM_SOURCE_DIR;
+  const std::regex flag_re(R"re("[^"\n]*--[a-z][a-z-]*)re");
+  std::string all;
+  for (const char* top : {"include/bezcam", "src"}) {
+    for (const auto& e : fs::recursive_directory_iterator(root / top)) {
+      if (!e.is_regular_file()) continue;
+      const fs::path rel = fs::relative(e.path(), root / top);
+      if (rel.begin()->string() == "cli") continue;
+      std::ifstream in(e.path());
+      std::string line;
+      for (int n = 1; std::getline(in, line); ++n) {
+        const auto code = line.substr(0, line.find("//"));
+        if (std::regex_search(code, flag_re)) all += std::string(top) + "/" + rel.string() + ":" + std::to_string(n) + ": " + line + "\n";
+      }
+    }
+  }
+  EXPECT_TRUE(all.empty()) << all;
+}

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "support/files.hpp"
+
 extern char** environ;
 
 namespace testproc {
@@ -100,37 +102,8 @@ inline Result shell(const std::string& command) {
   return r;
 }
 
-/// A fresh empty directory under /tmp, removed by the destructor.
-class TempDir {
- public:
-  TempDir() {
-    char tmpl[] = "/tmp/bezcam-test-XXXXXX";
-    if (!::mkdtemp(tmpl)) throw std::runtime_error("mkdtemp failed");
-    path_ = tmpl;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-  /// Names of the files in the directory, sorted.
-  std::vector<std::string> files() const {
-    std::vector<std::string> v;
-    for (const auto& e : std::filesystem::directory_iterator(path_)) v.push_back(e.path().filename().string());
-    std::sort(v.begin(), v.end());
-    return v;
-  }
-
- private:
-  std::filesystem::path path_;
-};
-
-inline void write_file(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
+// Temporary folders and whole-file writes: the shared ones (files.hpp).
+using bezcam::test::TempDir;
+using bezcam::test::write_file;
 
 }  // namespace testproc

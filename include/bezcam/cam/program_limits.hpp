@@ -10,6 +10,7 @@
 #include <string>
 
 #include "bezcam/cam/program.hpp"
+#include "bezcam/error.hpp"
 
 namespace bezcam {
 
@@ -25,7 +26,7 @@ double entity_magnitude(const Entity& e, double tool_radius);
 ///    kMaxProgramLines segments at `tolerance` less the rounding to
 ///    `decimals`.
 void check_entity_limits(const Job& job, const Entity& e, double tolerance, int decimals, double tool_radius,
-                         const std::string& tolerance_place);
+                         const Place& tolerance_place);
 
 /// Lines the G-code writer prints for moves[first, end): one per move, and
 /// for an exact-curve block one per control point and per knot-only block.

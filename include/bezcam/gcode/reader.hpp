@@ -18,6 +18,21 @@
 namespace bezcam {
 
 /// Modal state of the interpreter.
+/// The modal motion (RS274/NGC group 1), named. The value is the G number
+/// times 10 (G06.2 -> 62), as the reader's code tables use.
+enum class ModalMotion : int {
+  none = -1,       ///< at the start, after G80 and after G5.3
+  rapid = 0,       ///< G00
+  feed = 10,       ///< G01
+  arc_cw = 20,     ///< G02
+  arc_ccw = 30,    ///< G03
+  cubic = 50,      ///< G5 (LinuxCNC cubic spline)
+  quadratic = 51,  ///< G5.1 (LinuxCNC quadratic spline)
+  nurbs_g5_2 = 52, ///< G5.2 (a LinuxCNC NURBS block is open)
+  nurbs_g06_2 = 62,///< G06.2 (Fanuc NURBS mode)
+  nurbs_g06_3 = 63,///< G06.3 (the seeds' wording of the Fanuc block)
+};
+
 struct MachineState {
   Vec3 pos;
   unsigned known_axes = 0;   ///< X 1, Y 2, Z 4: set once a word gave the axis
@@ -25,10 +40,7 @@ struct MachineState {
   bool units_set = false;
   bool absolute = true;
   int plane = 17;
-  /// Modal motion: 0, 1, 2, 3 (G00..G03), 50 (G5), 51 (G5.1), 52 (a G5.2
-  /// block is open), 62 / 63 (Fanuc NURBS mode, G06.2 / G06.3), -1 none
-  /// (at the start, after G80 and after G5.3).
-  int motion = -1;
+  ModalMotion motion = ModalMotion::none;
   double feed = 0;
   double spindle_rpm = 0;
   bool spindle_on = false;
@@ -89,7 +101,7 @@ class GcodeInterpreter {
   // Everything beyond MachineState that later lines depend on. A line is
   // interpreted on copies of state_ and more_, committed only when accepted.
   struct More {
-    int open = 0;          // open multi-line block: 0 none, 62/63 Fanuc, 52 G5.2
+    ModalMotion open = ModalMotion::none;  // open multi-line block: none, a Fanuc one, G5.2
     int open_line = 0;     // where it started
     int order = 0;         // its rank / order
     double open_feed = 0;  // the feed it runs at
