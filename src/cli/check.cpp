@@ -5,20 +5,28 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/gcode/number_format.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "command.hpp"
+#include "options.hpp"
 
 namespace bezcam::cli {
 namespace {
 
 struct Options {
   std::string job;
+  ConversionOptions conv;
 } o;
 
 CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("check", "Validate a job and print what it holds (entities, degrees, lengths, "
                                         "continuity at path joints); writes no G-code.");
   s->add_option("JOB", o.job, "job file (JSON)")->required();
+  add_conversion_options(s, o.conv, "the output mode convert would use: lines, arcs or nurbs");
+  s->footer("check runs every validation convert runs for the machine (the job's, --machine, else generic): "
+            "travel, feeds, safe Z, decimals against the tolerance, the proven and measured deviation; "
+            "only the program is not written.");
   return s;
 }
 
@@ -72,8 +80,29 @@ int run() {
       }
     }
   }
-  for (const auto& w : job.warnings) std::cerr << "bezcam: warning: " << w << "\n";
-  std::cout << "ok: " << job.entities.size() << " entit" << (job.entities.size() == 1 ? "y" : "ies") << " valid\n";
+  // Everything convert checks, short of writing: a job check accepts is a
+  // job convert accepts for the same machine and settings.
+  const MachineProfile m = resolve_profile(job, o.conv.machine);
+  ConvertOptions opt;
+  opt.output = parse_output_mode(o.conv.output);
+  if (o.conv.tolerance > 0) opt.tolerance = o.conv.tolerance;
+  std::vector<std::string> warnings;
+  const auto fmt_sig = [](double v) { return format_significant(v, 3); };
+  try {
+    const ConvertResult r = convert(job, m, opt);
+    warnings = r.program.warnings;
+    std::cout << "machine " << m.name << ", " << o.conv.output << ": " << r.program.entities.size() << " entit"
+              << (r.program.entities.size() == 1 ? "y" : "ies") << " cut, deviation measured "
+              << fmt_sig(r.program.max_measured) << ", proven below " << fmt_sig(r.program.max_bound) << " "
+              << u << " (tolerance " << fmt_sig(r.program.tolerance) << ")\n";
+  } catch (const Error&) {
+    // The job's own warnings count even when the machine refuses it.
+    for (const auto& w : job.warnings) std::cerr << "bezcam: warning: " << w << "\n";
+    throw;
+  }
+  for (const auto& w : warnings) std::cerr << "bezcam: warning: " << w << "\n";
+  std::cout << "ok: " << job.entities.size() << " entit" << (job.entities.size() == 1 ? "y" : "ies") << " valid for machine "
+            << m.name << "\n";
   return 0;
 }
 

@@ -23,10 +23,17 @@ struct RegisterCommand {
   explicit RegisterCommand(Command* c) { commands().push_back(c); }
 };
 
-/// Writes `data` to `path` atomically: a temporary file beside it, renamed
-/// into place only when complete, so a refused or failed run never leaves a
-/// partial or truncated file. "-" writes to stdout.
-void write_output_atomically(const std::string& path, const std::string& data);
+/// Writes `data` to `path` without ever destroying what is there:
+///  - a regular file (or a new one) atomically: a temporary file beside it,
+///    renamed into place only when complete, with the replaced file's mode
+///    and owner, so a refused or failed run never leaves a partial or
+///    truncated file;
+///  - a symbolic link is followed: its target is written, the link stays;
+///  - anything else (a serial port for DNC, a FIFO, /dev/null) is written
+///    through, every write checked, never replaced by a file;
+///  - "-" writes to stdout.
+/// A failed write is an IoError naming the path and the cause.
+void write_output(const std::string& path, const std::string& data);
 
 /// Whether stderr is a terminal (progress bars) and whether to be quiet.
 bool stderr_is_tty();

@@ -48,8 +48,8 @@ int run() {
   const ConvertResult r = convert(job, m, opt);
   progress.finish();
   const ProgramReport rep = make_report(r.program, m, r.gcode);
-  write_output_atomically(o.out, r.gcode);
-  if (!o.report.empty()) write_output_atomically(o.report, report_json(rep));
+  write_output(o.out, r.gcode);
+  if (!o.report.empty()) write_output(o.report, report_json(rep));
   if (!o.quiet) {
     // The job's warnings and the program's own (e.g. an output mode replaced).
     for (const auto& w : r.program.warnings) std::cerr << "bezcam: warning: " << w << "\n";

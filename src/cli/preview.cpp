@@ -125,7 +125,7 @@ int run_program() {
   popt.deviation = o.deviation;
   popt.width = o.width;
   const std::string svg = preview_svg(in, popt);
-  write_output_atomically(o.out, svg);
+  write_output(o.out, svg);
   if (!o.quiet)
     std::cerr << "bezcam: wrote " << o.out << ": " << in.motion.size() << " motion blocks from " << o.program
               << (o.deviation ? ", coloured by deviation" : "") << "\n";
@@ -193,7 +193,7 @@ int run() {
   popt.on_entity = [&](size_t done, size_t, const std::string& label) { measuring.set(done, label); };
   const std::string svg = preview_svg(in, popt);
   measuring.finish();
-  write_output_atomically(o.out, svg);
+  write_output(o.out, svg);
   if (!o.quiet) {
     for (const auto& w : p.warnings) std::cerr << "bezcam: warning: " << w << "\n";
     std::cerr << "bezcam: wrote " << o.out << ": " << n << (n == 1 ? " entity, " : " entities, ") << blocks

@@ -41,9 +41,12 @@ class Writer {
     const char* u = to_string(p_.units);
     line(comment(std::string("bezcam ") + kVersion + ": " + p_.job_name + ", machine " + m_.name +
                  ", output " + to_string(p_.output)));
-    line(comment("tolerance " + format_number(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
-                 measured_text(p_.max_measured, p_.tolerance, [](double v) { return format_number(v, 6); }) + " " +
-                 u + ", proven bound " + format_number(p_.max_bound, 6) + " " + u + ", rounding included"));
+    // Figures in comments in significant digits, never the coordinate
+    // formatter: 5e-07 inch is not "0." (issue "Safe on the shop floor").
+    const auto sig = [](double v) { return format_significant(v, 4); };
+    line(comment("tolerance " + format_significant(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
+                 measured_text(p_.max_measured, p_.tolerance, sig) + " " + u + ", proven bound " +
+                 sig(p_.max_bound) + " " + u + ", rounding included"));
     for (const auto& n : p_.notes) line(comment(n));
     line(std::string(p_.units == Units::mm ? "G21" : "G20") + " G90 G17");
     for (const Move& mv : p_.moves) move(mv);

@@ -22,6 +22,8 @@
 //     as its first finding.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -149,6 +151,43 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TestsBad, BadInput, ::testing::ValuesIn(bad_inputs()), test_name);
+
+// `check` runs every validation `convert` runs (issue "Safe on the shop
+// floor", bug 2): every job convert refuses, check refuses with the same
+// status and the same message, with the same --machine, --tolerance and
+// --output.
+class CheckLikeConvert : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CheckLikeConvert, RefusesWhatConvertRefuses) {
+  const std::string name = GetParam();
+  const Expectation x = read_expectation(name);
+  if (x.args.empty() || x.args[0] != "convert" || x.exit == 0) GTEST_SKIP() << "not a convert refusal";
+  if (std::find(x.args.begin(), x.args.end(), "--report") != x.args.end()) GTEST_SKIP() << "a usage refusal of convert's";
+  const std::string file = "tests/bad/" + name;
+  std::vector<std::string> args{"check", file};
+  for (size_t i = 1; i + 1 < x.args.size(); ++i)
+    if (x.args[i] == "--machine" || x.args[i] == "--tolerance" || x.args[i] == "--output") {
+      args.push_back(x.args[i]);
+      args.push_back(x.args[i + 1]);
+    }
+  const auto c = testproc::run(BEZCAM_EXE, args, {{"BEZCAM_PROGRESS", "off"}}, BEZCAM_SOURCE_DIR);
+  testproc::TempDir dir;
+  std::vector<std::string> conv{"convert", file, "-o", (dir / "out.nc").string()};
+  conv.insert(conv.end(), args.begin() + 2, args.end());
+  const auto v = testproc::run(BEZCAM_EXE, conv, {{"BEZCAM_PROGRESS", "off"}}, BEZCAM_SOURCE_DIR);
+  EXPECT_EQ(c.status, v.status) << "check:\n" << c.out << c.err << "convert:\n" << v.err;
+  EXPECT_EQ(c.err_first_line(), v.err_first_line());
+}
+
+INSTANTIATE_TEST_SUITE_P(TestsBad, CheckLikeConvert,
+                         ::testing::ValuesIn([] {
+                           std::vector<std::string> jobs;
+                           for (const auto& n : bad_inputs())
+                             if (n.ends_with(".json")) jobs.push_back(n);
+                           return jobs;
+                         }()),
+                         test_name);
+
 
 // The runner itself: the directory holds both kinds of input and every one
 // has its sidecar (a new file without one fails above, loudly).

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-bspline-wave.json, machine fanuc, output nurbs)
-N20 (tolerance 0.01 mm; largest deviation measured below 0.00001 mm, proven bound 0. mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 1.432e-14 mm, rounding included)
 N30 G21 G90 G17
 N40 T1 M06
 N50 S12000 M03

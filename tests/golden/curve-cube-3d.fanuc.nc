@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-cube-3d.json, machine fanuc, output lines)
-N20 (tolerance 0.001 mm; largest deviation measured 0.000925 mm, proven bound 0.000999 mm, rounding included)
+N20 (tolerance 0.001 mm; largest deviation measured 0.0009254 mm, proven bound 0.0009987 mm, rounding included)
 N30 G21 G90 G17
 N40 T1 M06
 N50 S12000 M03

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-cube-3d.json, machine generic, output lines)
-(tolerance 0.001 mm; largest deviation measured 0.000925 mm, proven bound 0.000999 mm, rounding included)
+(tolerance 0.001 mm; largest deviation measured 0.0009254 mm, proven bound 0.0009987 mm, rounding included)
 G21 G90 G17
 T1 M06
 S12000 M03

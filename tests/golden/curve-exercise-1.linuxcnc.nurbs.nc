@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-1.json, machine linuxcnc, output nurbs)
-(tolerance 0.01 mm; largest deviation measured below 0.00001 mm, proven bound 0. mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
 G21 G90 G17
 T1 M6
 S12000 M3

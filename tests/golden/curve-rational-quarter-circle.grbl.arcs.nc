@@ -1,5 +1,5 @@
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine grbl, output arcs)
-(tolerance 0.01 mm; largest deviation measured below 0.00001 mm, proven bound 0.000001 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 8.181e-07 mm, rounding included)
 G21 G90 G17
 (tool 1)
 S12000 M3

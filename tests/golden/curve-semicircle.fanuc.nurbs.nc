@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-semicircle.json, machine fanuc, output nurbs)
-N20 (tolerance 0.005 mm; largest deviation measured below 0.000005 mm, proven bound 0. mm, rounding included)
+N20 (tolerance 0.005 mm; largest deviation measured below 5e-06 mm, proven bound 2.22e-16 mm, rounding included)
 N30 G21 G90 G17
 N40 T1 M06
 N50 S12000 M03

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: job-inch-semicircle.json, machine fanuc, output lines)
-N20 (tolerance 0.0005 inch; largest deviation measured 0.000483 inch, proven bound 0.0005 inch, rounding included)
+N20 (tolerance 0.0005 inch; largest deviation measured 0.0004831 inch, proven bound 0.0005 inch, rounding included)
 N30 G20 G90 G17
 N40 T1 M06
 N50 S10000 M03

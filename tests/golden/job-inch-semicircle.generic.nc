@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: job-inch-semicircle.json, machine generic, output lines)
-(tolerance 0.0005 inch; largest deviation measured 0.000483 inch, proven bound 0.0005 inch, rounding included)
+(tolerance 0.0005 inch; largest deviation measured 0.0004831 inch, proven bound 0.0005 inch, rounding included)
 G20 G90 G17
 T1 M06
 S10000 M03

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: patch-bonnet-bicubic.json, machine fanuc, output lines)
-N20 (tolerance 0.05 mm; largest deviation measured 0.047018 mm, proven bound 0.04801 mm, rounding included)
+N20 (tolerance 0.05 mm; largest deviation measured 0.04702 mm, proven bound 0.04801 mm, rounding included)
 N30 G21 G90 G17
 N40 T1 M06
 N50 S18000 M03

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: patch-bonnet-bicubic.json, machine generic, output lines)
-(tolerance 0.05 mm; largest deviation measured 0.047018 mm, proven bound 0.04801 mm, rounding included)
+(tolerance 0.05 mm; largest deviation measured 0.04702 mm, proven bound 0.04801 mm, rounding included)
 G21 G90 G17
 T1 M06
 S18000 M03

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 (bezcam 0.1.0: path-closed-teardrop.json, machine fanuc-g063, output nurbs)
-(tolerance 0.01 mm; largest deviation measured below 0.00001 mm, proven bound 0. mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
 G21 G90 G17
 T2 M06
 S12000 M03
