@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bezcam/error_ids.hpp"
 
@@ -76,12 +77,17 @@ public:
   /// The same error with the place's setting shown as the calling program's
   /// option `opt` (e.g. setting `output` shown as `--output`).
   Error with_option(std::string opt) const;
+  /// Further independent refusals of the same input (two bad entities, a
+  /// misspelt key and a bad value): each is reported, not only the first.
+  const std::vector<Error>& more() const noexcept { return more_; }
+  void add_more(const Error& e) { more_.push_back(e); }
 
 private:
   ErrorFamily family_;
   std::string id_;
   Place place_;
   std::string where_, message_;
+  std::vector<Error> more_;
 };
 
 /// Invalid input or usage: bad job file, bad G-code, bad profile.

@@ -180,6 +180,8 @@ inline constexpr ErrorId job_dimension{"job.dimension"};
 inline constexpr ErrorId job_entity_type{"job.entity-type"};
 /// The gouge policy is not "refuse" or "skip".
 inline constexpr ErrorId job_gouge{"job.gouge"};
+/// An unknown key within a few edits of a known one: a likely typo, refused.
+inline constexpr ErrorId job_key_typo{"job.key-typo"};
 /// An interpolation method bezcam does not know, or closed with the wrong method.
 inline constexpr ErrorId job_method{"job.method"};
 /// A required key or parameter is missing.
@@ -188,6 +190,8 @@ inline constexpr ErrorId job_missing{"job.missing"};
 inline constexpr ErrorId job_not_finite{"job.not-finite"};
 /// A number that must be > 0 is not.
 inline constexpr ErrorId job_not_positive{"job.not-positive"};
+/// An unknown key, refused by the strict reading (--strict).
+inline constexpr ErrorId job_unknown_key{"job.unknown-key"};
 /// A number is outside its range.
 inline constexpr ErrorId job_range{"job.range"};
 /// A path segment type bezcam does not know.
@@ -262,6 +266,12 @@ inline constexpr ErrorId link_too_large{"link.too-large"};
 inline constexpr ErrorId link_version{"link.version"};
 /// A machine profile value is invalid.
 inline constexpr ErrorId machine_invalid{"machine.invalid"};
+/// An unknown key of a machine profile within a few edits of a known one: refused.
+inline constexpr ErrorId machine_key_typo{"machine.key-typo"};
+/// A machine profile's name is not its file's name.
+inline constexpr ErrorId machine_name{"machine.name"};
+/// A template of a machine profile names a placeholder it does not have (`{rmp}`).
+inline constexpr ErrorId machine_placeholder{"machine.placeholder"};
 /// A machine profile is not valid JSON.
 inline constexpr ErrorId machine_syntax{"machine.syntax"};
 /// No machine profile of that name or file.

@@ -59,7 +59,9 @@ Error Error::with_option(std::string opt) const {
   Place p = place_;
   p.option = std::move(opt);
   p.setting.reset();
-  return Error(family_, ErrorId(id_), std::move(p), message_);
+  Error e(family_, ErrorId(id_), std::move(p), message_);
+  e.more_ = more_;
+  return e;
 }
 
 std::string fmt_num(double v) {

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "bezcam/error.hpp"
+#include "bezcam/job/keys.hpp"
 
 
 namespace bezcam {
@@ -16,10 +17,72 @@ namespace {
 
 using json = nlohmann::json;
 
+// The keys a profile may hold, per object (docs/machines.md).
+const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_keys() {
+  static const std::vector<std::pair<std::string, std::vector<std::string_view>>> k = {
+      {"", {"name", "description", "header", "footer", "line_numbers", "decimals", "feed_decimals", "words",
+            "tool_change", "spindle_on", "spindle_off", "arcs", "arc_tolerance_mm", "nurbs", "travel_mm",
+            "max_feed_mm_min", "defaults"}},
+      {"line_numbers", {"enabled", "start", "step"}},
+      {"decimals", {"mm", "inch"}},
+      {"words", {"rapid", "feed", "cw", "ccw"}},
+      {"nurbs", {"dialect", "start_word", "max_rank", "knot_decimals", "weight_decimals", "fixed_decimals"}},
+      {"travel_mm", {"x", "y", "z"}},
+      {"defaults", {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool_radius", "tool"}},
+  };
+  return k;
+}
+
+// The placeholders each template may use (the writer replaces them).
+const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_placeholders() {
+  static const std::vector<std::pair<std::string, std::vector<std::string_view>>> p = {
+      {"header", {"safe_z"}},  {"footer", {"safe_z"}},     {"tool_change", {"tool"}},
+      {"spindle_on", {"rpm"}}, {"spindle_off", {}},
+  };
+  return p;
+}
+
 struct Reader {
   std::string source;
+  MachineProfile* m = nullptr;
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
     throw InputError(errc::machine_invalid, Place::in_json(source, path), what);
+  }
+  // Profiles follow the job's rules: a likely typo of a known key is
+  // refused naming the key it resembles; another unknown key is a warning.
+  void check_keys(const json& doc) const {
+    for (const auto& [object, keys] : known_keys()) {
+      const json* o = object.empty() ? &doc : opt(doc, object.c_str());
+      if (!o || !o->is_object()) continue;
+      for (auto it = o->begin(); it != o->end(); ++it) {
+        if (std::find(keys.begin(), keys.end(), it.key()) != keys.end()) continue;
+        const std::string at = object.empty() ? it.key() : object + "." + it.key();
+        if (const auto like = resembled_key(it.key(), keys))
+          throw InputError(errc::machine_key_typo, Place::in_json(source, at),
+                           "unknown key \"" + it.key() + "\": did you mean \"" + *like + "\"?");
+        m->warnings.push_back(source + ": " + at + ": unknown key, ignored");
+      }
+    }
+  }
+  // A template's placeholders: `{name}` from its list, nothing else.
+  void check_placeholders(const std::string& path, const std::string& text) const {
+    const auto& all = known_placeholders();
+    const auto it = std::find_if(all.begin(), all.end(), [&](const auto& e) { return path.starts_with(e.first); });
+    const std::vector<std::string_view> none;
+    const auto& allowed = it == all.end() ? none : it->second;
+    std::string list;
+    for (auto a : allowed) list += (list.empty() ? "{" : ", {") + std::string(a) + "}";
+    for (size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open + 1)) {
+      const size_t close = text.find('}', open);
+      if (close == std::string::npos) fail(path, "\"" + text + "\": a '{' with no '}' (placeholders are written {name})");
+      const std::string name = text.substr(open + 1, close - open - 1);
+      if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
+        std::string hint = list.empty() ? "this template takes no placeholder" : "this template takes " + list;
+        if (const auto like = resembled_key(name, allowed)) hint = "did you mean {" + *like + "}?";
+        throw InputError(errc::machine_placeholder, Place::in_json(source, path),
+                         "unknown placeholder {" + name + "} in \"" + text + "\" (it would be printed as it is); " + hint);
+      }
+    }
   }
   const json* opt(const json& o, const char* k) const {
     auto it = o.find(k);
@@ -57,6 +120,8 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   }
   if (!doc.is_object()) r.fail("(top level)", "expected a JSON object");
   MachineProfile m;
+  r.m = &m;
+  r.check_keys(doc);
   m.name = r.str(doc.value("name", json("")), "name");
   if (m.name.empty()) r.fail("name", "expected a non-empty profile name");
   if (auto v = r.opt(doc, "description")) m.description = r.str(*v, "description");
@@ -121,6 +186,11 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
     }
   }
   if (auto v = r.opt(doc, "max_feed_mm_min")) m.max_feed_mm_min = r.num(*v, "max_feed_mm_min");
+  for (size_t i = 0; i < m.header.size(); ++i) r.check_placeholders("header[" + std::to_string(i) + "]", m.header[i]);
+  for (size_t i = 0; i < m.footer.size(); ++i) r.check_placeholders("footer[" + std::to_string(i) + "]", m.footer[i]);
+  r.check_placeholders("tool_change", m.tool_change);
+  r.check_placeholders("spindle_on", m.spindle_on);
+  r.check_placeholders("spindle_off", m.spindle_off);
   if (auto v = r.opt(doc, "defaults")) {
     auto num = [&](const char* k, std::optional<double>& out) {
       if (auto s = r.opt(*v, k)) out = r.num(*s, std::string("defaults.") + k);
@@ -191,7 +261,14 @@ MachineProfile load_machine_profile(const std::string& name_or_file, const std::
   if (!in) throw IoError(errc::io_read, Place::at_file(file.string()), "cannot open the machine profile");
   std::ostringstream ss;
   ss << in.rdbuf();
-  return parse_machine_profile(ss.str(), file.string());
+  MachineProfile m = parse_machine_profile(ss.str(), file.string());
+  // The name is how jobs, programs and the controller refer to the
+  // profile: it must be the one the file is found by.
+  if (const std::string stem = file.stem().string(); m.name != stem)
+    throw InputError(errc::machine_name, Place::in_json(file.string(), "name"),
+                     "expected \"" + stem + "\" (the file's name, " + file.filename().string() + "), found \"" + m.name +
+                         "\"; a profile is known by its file name: rename one or the other");
+  return m;
 }
 
 }  // namespace bezcam

@@ -39,7 +39,7 @@ std::string pt(const Vec3& p, int dim) {
 }
 
 int run() {
-  const Job job = load_job(o.job);
+  const Job job = read_job(o.job, o.conv.strict);
   const char* u = to_string(job.units);
   std::cout << job.source << ": bezcam format " << job.version << ", units " << u << ", tolerance "
             << job.tolerance << " " << u << (job.machine ? ", machine " + *job.machine : std::string()) << "\n";
@@ -97,10 +97,10 @@ int run() {
               << u << " (tolerance " << fmt_sig(r.program.tolerance) << ")\n";
   } catch (const Error&) {
     // The job's own warnings count even when the machine refuses it.
-    for (const auto& w : job.warnings) std::cerr << "bezcam: warning: " << w << "\n";
+    print_warnings(job.warnings);
     throw;
   }
-  for (const auto& w : warnings) std::cerr << "bezcam: warning: " << w << "\n";
+  print_warnings(warnings);
   std::cout << "ok: " << job.entities.size() << " entit" << (job.entities.size() == 1 ? "y" : "ies") << " valid for machine "
             << m.name << "\n";
   return 0;

@@ -54,4 +54,11 @@ MachineProfile load_profile_option(const std::string& machine);
 /// "generic"; an unknown name from the file is refused naming its key.
 MachineProfile resolve_profile(const Job& job, const std::string& cli_machine);
 
+/// Reads a job file (`--strict`: every unknown key refused). When the job
+/// is refused, the warnings found before are printed first: a misspelt key
+/// is never hidden by another error.
+Job read_job(const std::string& path, bool strict);
+/// Prints warnings on stderr as `bezcam: warning: ...`.
+void print_warnings(const std::vector<std::string>& warnings);
+
 }  // namespace bezcam::cli

@@ -38,14 +38,28 @@ int run() {
     throw InputError(errc::usage_report, Place::at_option("--report"),
                      "the report cannot go to the same place as the program (" + (o.out == "-" ? std::string("standard output") : o.out) +
                          "); give --report another file name, or write the program with -o FILE");
-  const Job job = load_job(o.job);
-  const MachineProfile m = resolve_profile(job, o.conv.machine);
+  const Job job = read_job(o.job, o.conv.strict);
+  const MachineProfile m = [&] {
+    try {
+      return resolve_profile(job, o.conv.machine);
+    } catch (const Error&) {
+      if (!o.quiet) print_warnings(job.warnings);
+      throw;
+    }
+  }();
   ConvertOptions opt;
   opt.output = parse_output_mode(o.conv.output);
   if (o.conv.tolerance > 0) opt.tolerance = o.conv.tolerance;
   Progress progress("convert", "entities", job.entities.size(), progress_config(o.quiet));
   opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
-  const ConvertResult r = convert(job, m, opt);
+  ConvertResult r;
+  try {
+    r = convert(job, m, opt);
+  } catch (const Error&) {
+    progress.finish();
+    if (!o.quiet) print_warnings(job.warnings);  // a refusal never hides a warning
+    throw;
+  }
   progress.finish();
   const ProgramReport rep = make_report(r.program, m, r.gcode);
   write_output(o.out, r.gcode);

@@ -194,6 +194,12 @@ int main(int argc, char** argv) {
   } catch (const Error& error) {
     const Error e = as_shown(error);
     std::cerr << "bezcam: error: " << e.what() << "\n  (error id: " << e.id() << ")\n";
+    // Independent refusals of the same input, each with its place.
+    constexpr size_t kShown = 20;
+    for (size_t i = 0; i < e.more().size() && i < kShown; ++i)
+      std::cerr << "bezcam: error: " << e.more()[i].what() << "\n  (error id: " << e.more()[i].id() << ")\n";
+    if (e.more().size() > kShown)
+      std::cerr << "bezcam: error: ... and " << e.more().size() - kShown << " more refusals of the same input\n";
     return exit_status(e.family());
   } catch (const std::bad_alloc&) {
     std::cerr << "bezcam: error: out of memory; the input is too large for this machine\n";

@@ -11,6 +11,7 @@ struct ConversionOptions {
   std::string machine;           ///< --machine: a profile name or a .json file; empty: the job's, else generic
   double tolerance = 0;          ///< --tolerance: overrides the job's when > 0
   std::string output = "lines";  ///< --output: lines, arcs or nurbs
+  bool strict = false;           ///< --strict: refuse every unknown key of the job
 };
 
 /// Adds --machine, --tolerance and --output to `s`; `output_help` is the
@@ -21,6 +22,8 @@ inline void add_conversion_options(CLI::App* s, ConversionOptions& o, const std:
   s->add_option("--tolerance", o.tolerance, "chord tolerance in the job's units, overriding the job's")
       ->check(CLI::PositiveNumber);
   s->add_option("--output", o.output, output_help)->check(CLI::IsMember({"lines", "arcs", "nurbs"}));
+  s->add_flag("--strict", o.strict, "refuse every unknown key of the job (likely typos such as \"tolerence\" are "
+                                    "always refused; other unknown keys are otherwise warnings)");
 }
 
 }  // namespace bezcam::cli

@@ -1,10 +1,12 @@
 // Where the CLI finds machine profiles, and which one a command uses.
 #include <filesystem>
+#include <iostream>
 #include <system_error>
 
 #include "bezcam/cam/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "command.hpp"
 
 namespace bezcam::cli {
@@ -33,7 +35,9 @@ const std::vector<std::filesystem::path>& profile_dirs() {
 
 MachineProfile load_profile_option(const std::string& machine) {
   try {
-    return load_machine_profile(machine, profile_dirs());
+    MachineProfile m = load_machine_profile(machine, profile_dirs());
+    print_warnings(m.warnings);
+    return m;
   } catch (const InputError& e) {
     if (e.id() != errc::machine_unknown) throw;
     throw InputError(e.id(), Place::at_option("--machine"), e.message());
@@ -53,6 +57,27 @@ MachineProfile resolve_profile(const Job& job, const std::string& cli_machine) {
     }
   }
   return load_profile_option("generic");
+}
+
+}  // namespace bezcam::cli
+
+namespace bezcam::cli {
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const auto& w : warnings) std::cerr << "bezcam: warning: " << w << "\n";
+}
+
+Job read_job(const std::string& path, bool strict) {
+  std::vector<std::string> warnings;
+  JobReadOptions ro;
+  ro.strict = strict;
+  ro.warnings = &warnings;
+  try {
+    return load_job(path, ro);
+  } catch (const Error&) {
+    print_warnings(warnings);
+    throw;
+  }
 }
 
 }  // namespace bezcam::cli

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "bezcam/job/keys.hpp"
 #include "bezcam/limits.hpp"
 #include "job_json_detail.hpp"
 #include "bezcam/job/job_json.hpp"
@@ -86,10 +87,25 @@ void JsonCtx::warn(const std::string& path, const std::string& what) const {
   if (warnings) warnings->push_back(source + ": " + path + ": " + what);
 }
 void JsonCtx::check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> known) const {
+  check_keys(obj, path, std::vector<std::string_view>(known.begin(), known.end()));
+}
+void JsonCtx::check_keys(const json& obj, const std::string& path, const std::vector<std::string_view>& known) const {
   for (auto it = obj.begin(); it != obj.end(); ++it) {
-    bool ok = false;
-    for (const char* k : known) ok = ok || it.key() == k;
-    if (!ok) warn(path.empty() ? it.key() : path + "." + it.key(), "unknown key, ignored");
+    const std::string& key = it.key();
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    const std::string at = path.empty() ? key : path + "." + key;
+    auto refuse = [&](ErrorId id, const std::string& what) {
+      InputError e(id, Place::in_json(source, at), what);
+      if (!errors) throw e;
+      errors->push_back(e);
+    };
+    if (const auto like = resembled_key(key, known))
+      refuse(errc::job_key_typo, "unknown key \"" + key + "\": did you mean \"" + *like +
+                                     "\"? (a misspelt key is refused: it would otherwise take the default)");
+    else if (strict)
+      refuse(errc::job_unknown_key, "unknown key \"" + key + "\" (refused by the strict reading)");
+    else
+      warn(at, "unknown key, ignored");
   }
 }
 const json& JsonCtx::require(const json& obj, const std::string& path, const char* key) const {
@@ -256,13 +272,11 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   static const std::initializer_list<const char*> param_keys = {"feed", "plunge_feed", "safe_z", "cut_z",
                                                                 "spindle_rpm", "tool", "tool_radius", "gouge"};
   auto keys = [&](std::initializer_list<const char*> own) {
-    std::vector<const char*> all(own);
+    std::vector<std::string_view> all(own.begin(), own.end());
     all.insert(all.end(), param_keys.begin(), param_keys.end());
     all.push_back("id");
     all.push_back("type");
-    for (auto it = obj.begin(); it != obj.end(); ++it)
-      if (std::find_if(all.begin(), all.end(), [&](const char* k) { return it.key() == k; }) == all.end())
-        ctx.warn(path + "." + it.key(), "unknown key, ignored");
+    ctx.check_keys(obj, path, all);
   };
   int dim = 0;
   if (e.type == "bezier" || e.type == "bspline") {
@@ -316,11 +330,11 @@ JobParams JobParams::over(const JobParams& base) const {
   return r;
 }
 
-Job parse_job(std::string_view text, const std::string& source) {
+namespace {
+
+void parse_document(std::string_view text, const std::string& source, detail::JsonCtx& ctx, Job& job,
+                    std::vector<InputError>& errors) {
   using detail::json;
-  Job job;
-  job.source = source;
-  detail::JsonCtx ctx{source, &job.warnings};
   if (text.size() > kMaxJobBytes)
     throw InputError(errc::limit_file_size, source,
                      "the job file is " + std::to_string(text.size() >> 20) + " MiB, more than bezcam reads (" +
@@ -396,13 +410,40 @@ Job parse_job(std::string_view text, const std::string& source) {
     ctx.fail("entities", errc::limit_entities,
              "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md), found " +
                  std::to_string(ents.size()) + "; split the job into several files");
-  for (size_t i = 0; i < ents.size(); ++i) job.entities.push_back(detail::parse_entity(ctx, ents[i], i));
-  detail::resolve_surface_references(ctx, ents, job);  // curve_on_surface naming a patch by id
-  return job;
+  // Entities are independent: a refused one does not hide the next.
+  for (size_t i = 0; i < ents.size(); ++i) {
+    try {
+      job.entities.push_back(detail::parse_entity(ctx, ents[i], i));
+    } catch (const InputError& e) {
+      errors.push_back(e);
+    }
+  }
+  if (errors.empty()) detail::resolve_surface_references(ctx, ents, job);  // curve_on_surface naming a patch by id
 }
 
-Job load_job(const std::filesystem::path& file) {
-  return parse_job(read_bounded(file, kMaxJobBytes, "job file"), file.string());
+}  // namespace
+
+Job parse_job(std::string_view text, const std::string& source, const JobReadOptions& opt) {
+  Job job;
+  job.source = source;
+  std::vector<InputError> errors;
+  detail::JsonCtx ctx{source, &job.warnings};
+  ctx.errors = &errors;
+  ctx.strict = opt.strict;
+  try {
+    parse_document(text, source, ctx, job, errors);
+  } catch (const InputError& e) {
+    errors.push_back(e);  // a refusal that stops the reading: the last one
+  }
+  if (errors.empty()) return job;
+  if (opt.warnings) *opt.warnings = job.warnings;
+  InputError first = errors.front();
+  for (size_t i = 1; i < errors.size(); ++i) first.add_more(errors[i]);
+  throw first;
+}
+
+Job load_job(const std::filesystem::path& file, const JobReadOptions& opt) {
+  return parse_job(read_bounded(file, kMaxJobBytes, "job file"), file.string(), opt);
 }
 
 }  // namespace bezcam

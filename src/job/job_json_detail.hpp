@@ -16,6 +16,10 @@ using json = nlohmann::json;
 struct JsonCtx {
   std::string source;
   std::vector<std::string>* warnings = nullptr;
+  /// Refusals recorded without stopping the reading (unknown keys), so
+  /// that each is reported; parse_job throws them together.
+  std::vector<InputError>* errors = nullptr;
+  bool strict = false;
   // Limits (bezcam/limits.hpp): points written in the entity being read,
   // and points of the exact Bézier form of the whole job so far.
   mutable std::size_t entity_points = 0, job_points = 0;
@@ -23,8 +27,11 @@ struct JsonCtx {
   [[noreturn]] void fail(const std::string& path, const std::string& id, const std::string& what) const;
   [[noreturn]] void expected(const std::string& path, const std::string& what, const json& found) const;
   void warn(const std::string& path, const std::string& what) const;
-  /// Warns about keys of `obj` not in `known`.
+  /// Keys of `obj` not in `known`: a likely typo of a known key is refused
+  /// (recorded in `errors`), another unknown key a warning (refused when
+  /// strict).
   void check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> known) const;
+  void check_keys(const json& obj, const std::string& path, const std::vector<std::string_view>& known) const;
 
   const json& require(const json& obj, const std::string& path, const char* key) const;
   double number(const json& v, const std::string& path) const;

@@ -109,10 +109,24 @@ TEST(JobJsonSurfaces, CoonsRefusalsNameTheBoundary) {
   EXPECT_EQ(r.substr(0, 35), "t.json: entities[0].boundaries.u1: ") << r;
   EXPECT_NE(r.find("S(1,1) = (200, 150, 4), where v1 ends, found (200, 150, 9), 5 away"), std::string::npos) << r;
   std::string missing = kCoons;
-  missing.replace(missing.find("\"u0\""), 4, "\"uO\"");
+  missing.replace(missing.find("\"u0\""), 4, "\"first\"");
   const std::string m = refusal(job(missing));
   EXPECT_EQ(m.substr(0, 35), "t.json: entities[0].boundaries.u0: ") << m;
   EXPECT_NE(m.find("required key"), std::string::npos) << m;
+  // "uO" is a likely typo of "u0": refused as such first, and the missing
+  // key it hides is reported too.
+  std::string typo = kCoons;
+  typo.replace(typo.find("\"u0\""), 4, "\"uO\"");
+  try {
+    parse_job(job(typo), "t.json");
+    ADD_FAILURE() << "accepted a misspelt boundary";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "job.key-typo");
+    EXPECT_EQ(e.where(), "t.json: entities[0].boundaries.uO") << e.what();
+    EXPECT_NE(std::string(e.what()).find("did you mean \"u0\""), std::string::npos) << e.what();
+    ASSERT_EQ(e.more().size(), 1u);
+    EXPECT_EQ(e.more()[0].where(), "t.json: entities[0].boundaries.u0") << e.more()[0].what();
+  }
   std::string flat = kCoons;
   flat.replace(flat.find("[[0,0,0],[60,-15,12]"), 20, "[[0,0],[60,-15]");
   const std::string f = refusal(job(flat));

@@ -6,6 +6,9 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/job/keys.hpp"
+
+#include <tuple>
 
 using namespace bezcam;
 
@@ -77,10 +80,75 @@ TEST(JobJson, ErrorsNameThePathExpectedAndFound) {
 }
 
 TEST(JobJson, UnknownKeysWarnButDoNotFail) {
-  const Job j = parse_job(R"({"bezcam": 1, "colour": "red", "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "speed": 3}]})", "w.json");
+  const Job j = parse_job(R"({"bezcam": 1, "colour": "red", "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "author": 3}]})", "w.json");
   ASSERT_EQ(j.warnings.size(), 2u);
   EXPECT_EQ(j.warnings[0], "w.json: colour: unknown key, ignored");
-  EXPECT_EQ(j.warnings[1], "w.json: entities[0].speed: unknown key, ignored");
+  EXPECT_EQ(j.warnings[1], "w.json: entities[0].author: unknown key, ignored");
+}
+
+TEST(JobJson, LikelyTyposAreRefusedNamingTheKeyTheyResemble) {
+  // A misspelt key must never cut at the default (spec "Errors").
+  for (const auto& [text, where, like] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {R"({"bezcam": 1, "tolerence": 0.001, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "tolerence", "tolerance"},
+           {R"({"bezcam": 1, "Tolerance": 0.001, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "Tolerance", "tolerance"},
+           {R"({"bezcam": 1, "job": {"cutz": -1}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "job.cutz", "cut_z"},
+           {R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "plunge_fed": 3}]})", "entities[0].plunge_fed", "plunge_feed"},
+           {R"({"bezcam": 1, "entities": [{"type": "bspline", "degree": 1, "points": [[0,0],[1,1]], "knot": [0,0,1,1]}]})", "entities[0].knot", "knots"}}) {
+    try {
+      parse_job(text, "t.json");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.id(), "job.key-typo") << e.what();
+      EXPECT_EQ(e.where(), "t.json: " + where) << e.what();
+      EXPECT_NE(std::string(e.what()).find("did you mean \"" + like + "\""), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(JobJson, IndependentErrorsAreEachReported) {
+  // Two bad entities and a typo: three refusals, in the file's order, and
+  // the warnings found before reach the caller.
+  std::vector<std::string> warnings;
+  JobReadOptions ro;
+  ro.warnings = &warnings;
+  try {
+    parse_job(R"({"bezcam": 1, "colour": "red", "tolerence": 0.1, "entities": [
+        {"type": "bezier", "points": [[0,0]]},
+        {"type": "bezier", "points": [[0,0],[1,1]]},
+        {"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,1,1]}]})",
+              "t.json", ro);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "t.json: tolerence") << e.what();
+    ASSERT_EQ(e.more().size(), 2u) << e.what();
+    EXPECT_EQ(e.more()[0].where().rfind("t.json: entities[0]", 0), 0u) << e.more()[0].what();
+    EXPECT_EQ(e.more()[1].where().rfind("t.json: entities[2]", 0), 0u) << e.more()[1].what();
+  }
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "t.json: colour: unknown key, ignored");
+}
+
+TEST(JobJson, StrictRefusesEveryUnknownKey) {
+  JobReadOptions ro;
+  ro.strict = true;
+  try {
+    parse_job(R"({"bezcam": 1, "colour": "red", "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "t.json", ro);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "job.unknown-key");
+    EXPECT_EQ(e.where(), "t.json: colour");
+  }
+}
+
+TEST(Keys, EditDistanceAndResemblance) {
+  EXPECT_EQ(edit_distance("tolerence", "tolerance"), 1);
+  EXPECT_EQ(edit_distance("cutz", "cut_z"), 1);
+  EXPECT_EQ(edit_distance("ponits", "points"), 1);  // a swap of neighbours is one edit
+  EXPECT_EQ(edit_distance("", "abc"), 3);
+  const std::vector<std::string_view> known{"id", "type", "points", "feed"};
+  EXPECT_EQ(resembled_key("ponts", known), "points");
+  EXPECT_FALSE(resembled_key("xy", known));  // short keys: one edit at most
+  EXPECT_FALSE(resembled_key("colour", known));
 }
 
 TEST(JobJson, PathJointsAndContinuity) {

@@ -4,15 +4,28 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "bezcam/job/job.hpp"
 
 namespace bezcam {
 
+/// How a job file is read.
+struct JobReadOptions {
+  /// Refuse every unknown key (errc::job_unknown_key), not only likely
+  /// typos of known ones (errc::job_key_typo, always refused).
+  bool strict = false;
+  /// Receives the job's warnings also when the job is refused, so that a
+  /// program can print them beside the refusal.
+  std::vector<std::string>* warnings = nullptr;
+};
+
 /// Parses and validates a job. `source` names the file in messages.
-/// Throws InputError whose place is `SOURCE: json.path`.
-Job parse_job(std::string_view text, const std::string& source);
+/// Throws InputError whose place is `SOURCE: json.path`; independent
+/// refusals (two bad entities, a misspelt key and a bad value) come as
+/// one InputError with the others in Error::more().
+Job parse_job(std::string_view text, const std::string& source, const JobReadOptions& opt = {});
 /// Reads a file and parses it; IoError when it cannot be read.
-Job load_job(const std::filesystem::path& file);
+Job load_job(const std::filesystem::path& file, const JobReadOptions& opt = {});
 
 }  // namespace bezcam

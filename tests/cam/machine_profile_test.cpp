@@ -1,0 +1,83 @@
+// Machine profiles are validated like jobs (issue "Safe on the shop floor",
+// bug 7): a misspelt key is refused naming the key it resembles, an unknown
+// placeholder is refused rather than printed literally, and the name is the
+// file's name. Every shipped profile passes.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/error.hpp"
+#include "support/files.hpp"
+
+namespace {
+
+using bezcam::InputError;
+using bezcam::MachineProfile;
+using bezcam::parse_machine_profile;
+
+InputError refusal(const std::string& text) {
+  try {
+    parse_machine_profile(text, "p.json");
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "accepted " << text;
+  return InputError(bezcam::ErrorId(""), bezcam::Place{}, "");
+}
+
+}  // namespace
+
+TEST(MachineProfile, EveryShippedProfileIsValidAndWarnsOfNothing) {
+  for (const auto& e : std::filesystem::directory_iterator(std::string(BEZCAM_SOURCE_DIR) + "/machines")) {
+    if (e.path().extension() != ".json") continue;
+    const MachineProfile m = bezcam::load_machine_profile(e.path().string(), {});
+    EXPECT_EQ(m.name, e.path().stem().string());
+    EXPECT_TRUE(m.warnings.empty()) << e.path() << ": " << m.warnings.front();
+  }
+}
+
+TEST(MachineProfile, AMisspeltKeyIsRefusedNamingTheKeyItResembles) {
+  auto e = refusal(R"({"name": "p", "feed_decimal": 0})");
+  EXPECT_EQ(e.id(), "machine.key-typo");
+  EXPECT_EQ(e.where(), "p.json: feed_decimal");
+  EXPECT_NE(std::string(e.what()).find("did you mean \"feed_decimals\""), std::string::npos) << e.what();
+  e = refusal(R"({"name": "p", "nurbs": {"dialect": "fanuc", "max_rnak": 3}})");
+  EXPECT_EQ(e.where(), "p.json: nurbs.max_rnak");
+  EXPECT_NE(std::string(e.what()).find("\"max_rank\""), std::string::npos) << e.what();
+  e = refusal(R"({"name": "p", "defaults": {"saf_z": 5}})");
+  EXPECT_EQ(e.where(), "p.json: defaults.saf_z");
+}
+
+TEST(MachineProfile, AnotherUnknownKeyIsAWarning) {
+  const MachineProfile m = parse_machine_profile(R"({"name": "p", "vendor": "acme"})", "p.json");
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_EQ(m.warnings[0], "p.json: vendor: unknown key, ignored");
+}
+
+TEST(MachineProfile, AnUnknownPlaceholderIsRefused) {
+  auto e = refusal(R"({"name": "p", "spindle_on": "S{rmp} M03"})");
+  EXPECT_EQ(e.id(), "machine.placeholder");
+  EXPECT_EQ(e.where(), "p.json: spindle_on");
+  EXPECT_NE(std::string(e.what()).find("did you mean {rpm}?"), std::string::npos) << e.what();
+  e = refusal(R"({"name": "p", "footer": ["M05", "G00 Z{safe_z}", "T{tool}"]})");
+  EXPECT_EQ(e.where(), "p.json: footer[2]");
+  e = refusal(R"({"name": "p", "tool_change": "T{tool M06"})");
+  EXPECT_EQ(e.where(), "p.json: tool_change");
+  EXPECT_NO_THROW(parse_machine_profile(R"({"name": "p", "tool_change": "T{tool} M06", "spindle_on": "S{rpm} M03"})", "p.json"));
+}
+
+TEST(MachineProfile, TheNameIsTheFilesName) {
+  bezcam::test::TempDir d;
+  bezcam::test::write_file(d / "mill.json", R"({"name": "mill-2"})");
+  try {
+    bezcam::load_machine_profile((d / "mill.json").string(), {});
+    ADD_FAILURE() << "accepted a profile named mill-2 in mill.json";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "machine.name");
+    EXPECT_NE(std::string(e.what()).find("expected \"mill\""), std::string::npos) << e.what();
+  }
+  bezcam::test::write_file(d / "mill.json", R"({"name": "mill"})");
+  EXPECT_EQ(bezcam::load_machine_profile((d / "mill.json").string(), {}).name, "mill");
+}
