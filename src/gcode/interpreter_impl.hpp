@@ -107,6 +107,9 @@ struct GcodeInterpreter::Impl {
 
   // ---- motions (reader.cpp)
   void linear(bool rapid);
+  // G28: rapid through the line's X Y Z (if any) to the home position
+  // (machine zero; the simulated controller's offsets are zero).
+  void go_home();
   double arc_tolerance() const;
   void arc(bool cw);
 
@@ -124,7 +127,8 @@ struct GcodeInterpreter::Impl {
   // ---- modal groups and non-motion words (modal_state.cpp)
   void run_modal();
   // Every word must mean something on this line.
-  void check_letters(int active, bool dwell, bool explicit_motion);
+  // `extra`: letters the line's non-motion codes take (G04 P, G43 H, G28 XYZ).
+  void check_letters(int active, const std::string& extra, bool explicit_motion);
 
   // ---- Fanuc G06.2 / G06.3 blocks (fanuc_nurbs.cpp)
   // Lines inside an open multi-line block. Returns true when consumed.

@@ -17,7 +17,7 @@ GGroup g_group(int c) {
   switch (c) {
     case 0: case 10: case 20: case 30: case 50: case 51: case 52: case 53: case 62: case 63: case 800:
       return GGroup::motion;
-    case 40: return GGroup::non_modal;
+    case 40: case 280: case 530: return GGroup::non_modal;
     case 170: case 180: case 190: return GGroup::plane;
     case 900: case 910: return GGroup::distance;
     case 930: case 940: case 950: return GGroup::feed_mode;
@@ -48,7 +48,8 @@ void GcodeInterpreter::Impl::run_modal() {
   // One code per modal group.
   std::array<std::string, kModalGroups> seen_g{};
   int motion = -999;
-  bool dwell = false;
+  bool dwell = false, home = false, machine_coords = false, length_comp = false;
+  std::string non_modal;  // RS274/NGC: one code of group 0 per line
   for (const auto& [c, t] : ln.g) {
     const GGroup grp = g_group(c);
     if (grp == GGroup::unsupported) fail(errc::gcode_unsupported, "G-code " + t + " is not supported by this reader");
@@ -57,6 +58,10 @@ void GcodeInterpreter::Impl::run_modal() {
       if (!seen.empty())
         fail(errc::gcode_modal_group, seen + " and " + t + " are in the same modal group: give one");
       seen = t;
+    } else {
+      if (!non_modal.empty())
+        fail(errc::gcode_modal_group, non_modal + " and " + t + " are both non-modal codes (group 0): give one per line");
+      non_modal = t;
     }
     switch (c) {
       case 180: case 190:
@@ -69,8 +74,10 @@ void GcodeInterpreter::Impl::run_modal() {
       case 410: case 420:
         fail(errc::gcode_unsupported, t + " (cutter radius compensation) is not supported by this reader: the program must "
                                 "describe the tool centre");
-      case 430: fail(errc::gcode_unsupported, "G43 (tool length compensation) is not supported by this reader");
+      case 430: length_comp = true; break;
       case 40: dwell = true; break;
+      case 280: home = true; break;
+      case 530: machine_coords = true; break;
       default: break;
     }
     if (grp == GGroup::motion) {
@@ -90,9 +97,10 @@ void GcodeInterpreter::Impl::run_modal() {
   if (mo.open == ModalMotion::nurbs_g5_2 && motion != 53)
     fail(errc::gcode_nurbs_open, "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
 
-  // Which motion the line's words belong to (-999: none; -1: G80).
+  // Which motion the line's words belong to (-999: none; -1: G80). G28
+  // takes the line's axis words (its intermediate point).
   const bool has_axes = ln.has('X') || ln.has('Y') || ln.has('Z');
-  bool motion_words = has_axes;
+  bool motion_words = has_axes && !home;
   for (char c : std::string_view(dwell ? "IJKRQL" : "IJKRQLP")) motion_words = motion_words || ln.has(c);
   int active = -999;
   if (motion == 800) active = -1;
@@ -100,7 +108,15 @@ void GcodeInterpreter::Impl::run_modal() {
   else if (motion_words) active = static_cast<int>(st.motion);
   if (dwell && (has_axes || motion != -999))
     fail(errc::gcode_modal_group, "G04 (dwell) cannot share a line with a motion: put it on its own line");
-  check_letters(active, dwell, motion != -999);
+  if (home && motion != -999)
+    fail(errc::gcode_modal_group, "G28 uses the line's axis words for its intermediate point: put " + word + " on another line");
+  if (machine_coords && !(active == 0 || active == 10))
+    fail(errc::gcode_unsupported, "G53 (machine coordinates) applies to a G00 or G01 move on the same line; found " +
+                                      (active >= 0 ? wt(active) : std::string("no motion")));
+  std::string extra = dwell ? "P" : "";
+  if (home) extra += "XYZ";
+  if (length_comp) extra += "H";
+  check_letters(active, extra, motion != -999);
 
   // Execution order (RS274/NGC): F, S, T, M06, spindle, coolant, dwell,
   // plane, units, distance mode, motion, program end.
@@ -128,9 +144,13 @@ void GcodeInterpreter::Impl::run_modal() {
       mo.noted_spindle = false;
     }
     if (c == 5) st.spindle_on = false;
+    if (c == 7) st.coolant_mist = true;
+    if (c == 8) st.coolant_flood = true;
+    if (c == 9) st.coolant_mist = st.coolant_flood = false;
   }
   if (dwell) {
     if (!ln.has('P') || val('P') < 0) fail(errc::gcode_dwell, "G04 needs its duration P (seconds) >= 0");
+    st.dwell_seconds += val('P');
   }
   for (const auto& [c, t] : ln.g) {
     if (c == 170) {
@@ -146,8 +166,24 @@ void GcodeInterpreter::Impl::run_modal() {
     } else if (c == 900) {
       st.absolute = true;
       mo.distance_set = true;
+    } else if (c >= 540 && c <= 590 && c % 10 == 0) {
+      st.coord_system = c / 10;
+    } else if (c == 430) {
+      // H defaults to the tool in the spindle, as LinuxCNC does.
+      int h = st.tool;
+      if (ln.has('H')) {
+        if (val('H') < 0 || val('H') != std::floor(val('H')) || val('H') > 1e9)
+          fail(errc::gcode_tool, "expected a whole tool length offset number H from 0 to 1000000000, found " + txt('H'));
+        h = static_cast<int>(val('H'));
+      }
+      st.tool_length_comp = true;
+      st.tool_length_h = h;
+    } else if (c == 490) {
+      st.tool_length_comp = false;
+      st.tool_length_h = 0;
     }
   }
+  if (home) go_home();
   if (active != -999) motion_line(active, motion != -999);
   for (const auto& [c, t] : ln.m)
     if (c == 2 || c == 30) {
@@ -157,7 +193,7 @@ void GcodeInterpreter::Impl::run_modal() {
 }
 
 // Every word must mean something on this line.
-void GcodeInterpreter::Impl::check_letters(int active, bool dwell, bool explicit_motion) {
+void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra, bool explicit_motion) {
   std::string allowed = "FST";
   switch (active) {
     case 0: case 10: allowed += "XYZ"; break;
@@ -168,7 +204,7 @@ void GcodeInterpreter::Impl::check_letters(int active, bool dwell, bool explicit
     case 62: case 63: allowed += explicit_motion ? "XYZKRP" : ""; break;
     default: break;
   }
-  if (dwell) allowed += "P";
+  allowed += extra;
   for (const Word& w : ln.words) {
     if (allowed.find(w.letter) != std::string::npos) continue;
     if (std::string_view("ABCUVW").find(w.letter) != std::string_view::npos)

@@ -254,6 +254,31 @@ void GcodeInterpreter::Impl::linear(bool rapid) {
   commit_move(b, axes);
 }
 
+void GcodeInterpreter::Impl::go_home() {
+  mo.g5_chain = false;
+  const auto [via, axes] = target();
+  if (axes) {
+    MotionBlock b = block(BlockKind::rapid, via);
+    lint_motion(b.kind, b.from, via, axes);
+    Box3 box;
+    box.add(via);
+    check_travel(box, axes | st.known_axes);
+    commit_move(b, axes);
+  }
+  // With axis words only those axes go home; without, all of them.
+  const unsigned home_axes = axes ? axes : 7u;
+  Vec3 home = st.pos;
+  if (home_axes & 1) home.x = 0;
+  if (home_axes & 2) home.y = 0;
+  if (home_axes & 4) home.z = 0;
+  MotionBlock b = block(BlockKind::rapid, home);
+  lint_motion(b.kind, b.from, home, home_axes);
+  Box3 box;
+  box.add(home);
+  check_travel(box, home_axes | st.known_axes);
+  commit_move(b, home_axes);
+}
+
 double GcodeInterpreter::Impl::arc_tolerance() const {
   return from_mm(self.profile_ ? self.profile_->arc_tolerance_mm : kDefaultArcToleranceMm);
 }

@@ -90,7 +90,8 @@ std::string trace_block(const MotionBlock& b) {
 }
 
 // Only what a machinist would check between moves: units, distance mode,
-// tool, spindle, program end. Feed is on each move record instead.
+// tool, spindle, coolant, work offset, tool length compensation, dwells,
+// program end. Feed is on each move record instead.
 std::string trace_state(int line, const MachineState& a, const MachineState& b) {
   std::string s;
   const std::string at = "line " + std::to_string(line) + " ";
@@ -99,6 +100,13 @@ std::string trace_state(int line, const MachineState& a, const MachineState& b) 
   if (a.tool != b.tool) s += at + "tool " + std::to_string(b.tool) + "\n";
   if (a.spindle_on != b.spindle_on || (b.spindle_on && a.spindle_rpm != b.spindle_rpm))
     s += at + (b.spindle_on ? "spindle on " + trace_number(b.spindle_rpm) : std::string("spindle off")) + "\n";
+  if (a.coolant_mist != b.coolant_mist || a.coolant_flood != b.coolant_flood)
+    s += at + "coolant " +
+         (b.coolant_mist && b.coolant_flood ? "mist flood" : b.coolant_mist ? "mist" : b.coolant_flood ? "flood" : "off") + "\n";
+  if (a.coord_system != b.coord_system) s += at + "work offset G" + std::to_string(b.coord_system) + "\n";
+  if (a.tool_length_comp != b.tool_length_comp || a.tool_length_h != b.tool_length_h)
+    s += at + (b.tool_length_comp ? "tool length H" + std::to_string(b.tool_length_h) : std::string("tool length off")) + "\n";
+  if (b.dwell_seconds != a.dwell_seconds) s += at + "dwell " + trace_number(b.dwell_seconds - a.dwell_seconds) + "\n";
   if (a.program_end != b.program_end && b.program_end) s += at + "program end\n";
   return s;
 }

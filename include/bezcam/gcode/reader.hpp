@@ -46,6 +46,17 @@ struct MachineState {
   bool spindle_on = false;
   int tool = 0;
   bool program_end = false;  ///< M02 / M30 seen
+  /// Work coordinate system G54..G59 (54..59). The simulated controller's
+  /// work offsets are all zero: program and machine coordinates agree.
+  int coord_system = 54;
+  /// Tool length compensation G43 H- (on, with its H number) or G49 (off).
+  /// The offsets are zero in the simulated controller; the state is kept so
+  /// that the trace shows what the program asked.
+  bool tool_length_comp = false;
+  int tool_length_h = 0;
+  bool coolant_mist = false;   ///< M07 (M09 stops both)
+  bool coolant_flood = false;  ///< M08
+  double dwell_seconds = 0;    ///< G04 P- dwells so far, in seconds
 };
 
 /// Streaming interpreter: feed it lines in order.
@@ -57,8 +68,11 @@ struct MachineState {
 ///    in parentheses and after `;`, upper- or lower-case words;
 ///  - G00 G01 G02 G03 (G17 only, centre by I/J or radius by R; K refused),
 ///    G04 P dwell, G17, G20/G21 (not changed after the first move), G90,
-///    G94, G40, G49, G54-G59, G61/G61.1/G64, G80; refused with a reason:
-///    G18/G19, G91 (incremental), G93/G95, G41/G42, G43, anything else;
+///    G94, G40, G43 H- / G49 (tool length compensation, zero offsets),
+///    G54-G59 (zero work offsets), G28 (rapid through the optional X Y Z
+///    point to the home position, machine zero), G53 with G00/G01 (machine
+///    coordinates for that line), G61/G61.1/G64, G80; refused with a
+///    reason: G18/G19, G91 (incremental), G93/G95, G41/G42, anything else;
 ///  - M00 M01 M02 M30 M03 M04 M05 M06 M07 M08 M09, F, S, T;
 ///  - the Fanuc-style NURBS block: start word G06.2 or G06.3 (with a
 ///    profile: its start word only), `P` rank 2..4 (default 4; the
