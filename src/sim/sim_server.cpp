@@ -5,10 +5,14 @@
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
+#include <linux/sockios.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 
 #include "bezcam/error.hpp"
@@ -178,9 +182,38 @@ void serve_connection(SimController& ctl, ConnId id, int fd, const ServerConfig&
     set_timeout(ctx, modbus_set_byte_timeout, cfg.frame_timeout);
     set_timeout(ctx, modbus_set_response_timeout, cfg.frame_timeout);
     std::uint8_t req[MODBUS_TCP_MAX_ADU_LENGTH];
+    // The wait for a request is cut in slices no longer than the send
+    // timeout: between requests the connection is checked for replies the
+    // client does not take. A client that pipelines requests and never reads
+    // can fill both directions of the connection (its sends wait for our
+    // window, our replies for its window) while this thread waits for a
+    // request: then its queue of unsent replies stops moving, and it is
+    // dropped after the send timeout, as if a send had timed out.
+    const auto slice = std::max<long long>(1, std::min(cfg.idle_timeout, cfg.send_timeout).count());
+    auto last_request = std::chrono::steady_clock::now(), stuck_since = last_request;
+    int stuck_bytes = -1;
     while (!stop) {
+      pollfd p{fd, POLLIN, 0};
+      const int ready = ::poll(&p, 1, static_cast<int>(slice));
+      if (ready < 0 && errno == EINTR) continue;
+      if (ready < 0) break;
+      if (ready == 0) {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last_request >= cfg.idle_timeout) break;  // silent for too long
+        int unsent = 0;
+        if (::ioctl(fd, SIOCOUTQ, &unsent) != 0) unsent = 0;
+        if (unsent > 0 && unsent == stuck_bytes) {
+          if (now - stuck_since >= cfg.send_timeout) break;  // replies not taken
+        } else {
+          stuck_bytes = unsent;
+          stuck_since = now;
+        }
+        continue;
+      }
       const int rc = modbus_receive(ctx, req);
-      if (rc < 0) break;  // closed, idle or half a frame for too long, or garbage
+      if (rc < 0) break;  // closed, half a frame for too long, or garbage
+      last_request = std::chrono::steady_clock::now();
+      stuck_bytes = -1;
       if (rc == 0) continue;
       if (on_request) on_request();
       const FrameReply r = ctl.handle_frame(id, std::span<const std::uint8_t>(req, static_cast<std::size_t>(rc)));
