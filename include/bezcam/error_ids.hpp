@@ -182,6 +182,8 @@ inline constexpr ErrorId job_entity_type{"job.entity-type"};
 inline constexpr ErrorId job_gouge{"job.gouge"};
 /// An unknown key within a few edits of a known one: a likely typo, refused.
 inline constexpr ErrorId job_key_typo{"job.key-typo"};
+/// The coolant is not "flood", "mist" or "off".
+inline constexpr ErrorId job_coolant{"job.coolant"};
 /// An interpolation method bezcam does not know, or closed with the wrong method.
 inline constexpr ErrorId job_method{"job.method"};
 /// A required key or parameter is missing.

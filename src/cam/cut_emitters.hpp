@@ -34,7 +34,17 @@ struct MotionState {
   double& rpm;
   Vec3& pos;
   bool& pos_known;
+  Coolant& coolant;
 };
+
+/// Before an entity (program.cpp): what a machinist's post writes when the
+/// tool, spindle or coolant changes. A tool change stops the coolant and
+/// the spindle (after the first tool), retracts to `safe` if below it, then
+/// `T- M06` and the profile's tool length line, or, on a machine without a
+/// tool changer, `M00` naming the tool (with a warning); then the spindle
+/// (and the profile's dwell) and the coolant. Moves carry `entity`.
+void change_tool_and_spindle(Program& p, const MachineProfile& m, const CutParams& cp, double safe, MotionState& ms,
+                             int entity);
 /// Cuts a surface entity completely (surface_emitter.cpp): bezier_patch and
 /// coons_patch by their toolpath (zigzag, raster, boundary), curve_on_surface
 /// along its curve; tool and spindle, rapids at safe Z, plunges, cutting

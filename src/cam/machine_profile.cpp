@@ -21,14 +21,14 @@ using json = nlohmann::json;
 const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_keys() {
   static const std::vector<std::pair<std::string, std::vector<std::string_view>>> k = {
       {"", {"name", "description", "header", "footer", "line_numbers", "decimals", "feed_decimals", "words",
-            "tool_change", "spindle_on", "spindle_off", "arcs", "arc_tolerance_mm", "nurbs", "travel_mm",
-            "max_feed_mm_min", "defaults"}},
+            "tool_change", "spindle_on", "spindle_off", "preamble", "tool_length", "tool_changer", "spindle_dwell_s",
+            "arcs", "arc_tolerance_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults"}},
       {"line_numbers", {"enabled", "start", "step"}},
       {"decimals", {"mm", "inch"}},
       {"words", {"rapid", "feed", "cw", "ccw"}},
       {"nurbs", {"dialect", "start_word", "max_rank", "knot_decimals", "weight_decimals", "fixed_decimals"}},
       {"travel_mm", {"x", "y", "z"}},
-      {"defaults", {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool_radius", "tool"}},
+      {"defaults", {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool_radius", "tool", "coolant"}},
   };
   return k;
 }
@@ -37,7 +37,8 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
 const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_placeholders() {
   static const std::vector<std::pair<std::string, std::vector<std::string_view>>> p = {
       {"header", {"safe_z"}},  {"footer", {"safe_z"}},     {"tool_change", {"tool"}},
-      {"spindle_on", {"rpm"}}, {"spindle_off", {}},
+      {"spindle_on", {"rpm"}}, {"spindle_off", {}},     {"preamble", {}},
+      {"tool_length", {"tool"}},
   };
   return p;
 }
@@ -150,6 +151,16 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   if (auto v = r.opt(doc, "tool_change")) m.tool_change = r.str(*v, "tool_change");
   if (auto v = r.opt(doc, "spindle_on")) m.spindle_on = r.str(*v, "spindle_on");
   if (auto v = r.opt(doc, "spindle_off")) m.spindle_off = r.str(*v, "spindle_off");
+  if (auto v = r.opt(doc, "preamble")) m.preamble = r.lines(*v, "preamble");
+  if (auto v = r.opt(doc, "tool_length")) m.tool_length = r.str(*v, "tool_length");
+  if (auto v = r.opt(doc, "tool_changer")) {
+    if (!v->is_boolean()) r.fail("tool_changer", "expected true or false");
+    m.tool_changer = v->get<bool>();
+  }
+  if (auto v = r.opt(doc, "spindle_dwell_s")) {
+    m.spindle_dwell_s = r.num(*v, "spindle_dwell_s");
+    if (!(m.spindle_dwell_s >= 0 && m.spindle_dwell_s <= 60)) r.fail("spindle_dwell_s", "expected seconds from 0 to 60");
+  }
   if (auto v = r.opt(doc, "arcs")) {
     if (!v->is_boolean()) r.fail("arcs", "expected true or false");
     m.arcs = v->get<bool>();
@@ -191,6 +202,8 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   r.check_placeholders("tool_change", m.tool_change);
   r.check_placeholders("spindle_on", m.spindle_on);
   r.check_placeholders("spindle_off", m.spindle_off);
+  r.check_placeholders("tool_length", m.tool_length);
+  for (size_t i = 0; i < m.preamble.size(); ++i) r.check_placeholders("preamble[" + std::to_string(i) + "]", m.preamble[i]);
   if (auto v = r.opt(doc, "defaults")) {
     auto num = [&](const char* k, std::optional<double>& out) {
       if (auto s = r.opt(*v, k)) out = r.num(*s, std::string("defaults.") + k);
@@ -202,6 +215,13 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
     num("spindle_rpm", m.defaults.spindle_rpm);
     num("tool_radius", m.defaults.tool_radius);
     if (auto s = r.opt(*v, "tool")) m.defaults.tool = r.integer(*s, "defaults.tool");
+    if (auto s = r.opt(*v, "coolant")) {
+      const std::string c = r.str(*s, "defaults.coolant");
+      if (c == "off") m.defaults.coolant = Coolant::off;
+      else if (c == "mist") m.defaults.coolant = Coolant::mist;
+      else if (c == "flood") m.defaults.coolant = Coolant::flood;
+      else r.fail("defaults.coolant", "expected \"flood\", \"mist\" or \"off\", found \"" + c + "\"");
+    }
   }
   return m;
 }

@@ -1,5 +1,6 @@
 #include "bezcam/cam/program.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "bezcam/error.hpp"
@@ -43,7 +44,7 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
   };
   CutParams c{need(p.feed, "feed"),       need(p.plunge_feed, "plunge_feed"), need(p.safe_z, "safe_z"),
               need(p.cut_z, "cut_z"),     p.spindle_rpm.value_or(0),          p.tool_radius.value_or(0),
-              p.tool.value_or(1)};
+              p.tool.value_or(1),             p.coolant.value_or(Coolant::off)};
   if (c.cut_z >= c.safe_z)
     throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".cut_z"),
                      "expected cut_z below safe_z (" + fmt_num(c.safe_z) + "), found " + fmt_num(c.cut_z));
@@ -51,6 +52,49 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
 }
 
 namespace detail {
+
+void change_tool_and_spindle(Program& p, const MachineProfile& m, const CutParams& cp, double safe, MotionState& ms,
+                             int entity) {
+  auto push = [&](auto what) { p.moves.push_back(Move{what, entity}); };
+  if (cp.tool != ms.tool) {
+    const bool first = ms.tool < 0;
+    if (!first) {
+      // Nothing runs through a tool change: coolant and spindle first.
+      if (ms.coolant != Coolant::off) push(CoolantMove{Coolant::off});
+      if (ms.rpm > 0) push(SpindleMove{0});
+      ms.coolant = Coolant::off;
+    }
+    if (ms.pos_known && ms.pos.z < safe) {
+      RapidMove up;
+      up.to = {ms.pos.x, ms.pos.y, safe};
+      push(up);
+      ms.pos = up.to;
+    }
+    if (m.tool_changer) {
+      push(ToolChange{cp.tool});
+    } else if (first) {
+      push(Comment{"tool " + std::to_string(cp.tool) + ": load it before starting"});
+    } else {
+      // No changer: the program stops; the operator changes the tool and
+      // resumes. Cutting on with the old tool is what a comment would do.
+      push(ProgramStop{"change to tool " + std::to_string(cp.tool) + ", then resume"});
+      const std::string w = "machine " + m.name + " has no tool changer: the program stops (M0) for tool " +
+                            std::to_string(cp.tool) + "; change it by hand and resume";
+      if (std::find(p.warnings.begin(), p.warnings.end(), w) == p.warnings.end()) p.warnings.push_back(w);
+    }
+    ms.tool = cp.tool;
+    ms.rpm = -1;
+  }
+  if (cp.spindle_rpm != ms.rpm) {
+    push(SpindleMove{cp.spindle_rpm});
+    if (cp.spindle_rpm > 0 && m.spindle_dwell_s > 0) push(Dwell{m.spindle_dwell_s});
+    ms.rpm = cp.spindle_rpm;
+  }
+  if (cp.coolant != ms.coolant) {
+    push(CoolantMove{cp.coolant});
+    ms.coolant = cp.coolant;
+  }
+}
 
 Vec3 cut_point(const CutContext& c, const Vec3& p) {
   if (c.entity.curve.dim == 2) return {p.x, p.y, quantize(c.params.cut_z, c.decimals)};
@@ -103,27 +147,6 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 
 namespace {
 
-// Before a curve entity: a tool change when the tool differs (retracting
-// to `safe` first if below it), then the spindle when its speed differs.
-void change_tool_and_spindle(Program& p, const CutParams& cp, double safe, detail::MotionState& ms) {
-  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
-  if (cp.tool != ms.tool) {
-    if (ms.pos_known && ms.pos.z < safe) {
-      RapidMove up;
-      up.to = {ms.pos.x, ms.pos.y, safe};
-      push({up});
-      ms.pos = up.to;
-    }
-    push({ToolChange{cp.tool}});
-    ms.tool = cp.tool;
-    ms.rpm = -1;
-  }
-  if (cp.spindle_rpm != ms.rpm) {
-    push({SpindleMove{cp.spindle_rpm}});
-    ms.rpm = cp.spindle_rpm;
-  }
-}
-
 // Retract (straight up) if not at this entity's safe Z, rapid over the
 // start, plunge at the plunge feed. Leaves `ms.pos` where it was: the
 // caller takes the position from the cut that follows.
@@ -158,6 +181,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
 
   int cur_tool = -1;
   double cur_rpm = -1;
+  Coolant cur_coolant = Coolant::off;
   Vec3 pos;
   bool pos_known = false;
   ProgramLength length;  // stated limits (program_limits.hpp)
@@ -171,7 +195,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     const auto& g = e.curve;
     if (e.surface) {  // patches and curves on surfaces: surface_emitter.cpp
       detail::CutContext sc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
-      detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known};
+      detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known, cur_coolant};
       const EntityReport r = detail::emit_surface(sc, ms);
       p.max_measured = std::max(p.max_measured, r.measured);
       p.max_bound = std::max(p.max_bound, r.bound);
@@ -188,8 +212,8 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
                          "the curve rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " + fmt_num(cp.safe_z) +
                              "; rapid moves at safe_z would cross it: raise safe_z");
     }
-    detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known};
-    change_tool_and_spindle(p, cp, safe, ms);
+    detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known, cur_coolant};
+    detail::change_tool_and_spindle(p, m, cp, safe, ms, -1);
     push({Comment{"entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
                    (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")}});
 
@@ -220,6 +244,8 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     p.entities.push_back(r);
     length.after_entity(p, job, e);
   }
+  // The coolant stops with the cut; the profile's footer stops the spindle.
+  if (cur_coolant != Coolant::off) push({CoolantMove{Coolant::off}});
   if (opt.on_entity) opt.on_entity(job.entities.size(), job.entities.size(), "");
   return p;
 }

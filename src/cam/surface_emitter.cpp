@@ -126,17 +126,7 @@ class SurfaceEmitter {
     push({Comment{text}});
   }
   void begin_entity(const std::string& what) {
-    const CutParams& cp = c_.params;
-    if (cp.tool != st_.tool) {
-      if (st_.pos_known && st_.pos.z < safe_) retract();
-      push({ToolChange{cp.tool}});
-      st_.tool = cp.tool;
-      st_.rpm = -1;
-    }
-    if (cp.spindle_rpm != st_.rpm) {
-      push({SpindleMove{cp.spindle_rpm}});
-      st_.rpm = cp.spindle_rpm;
-    }
+    change_tool_and_spindle(c_.program, c_.machine, c_.params, safe_, st_, static_cast<int>(e_.index));
     comment("entity " + e_.label() + ": " + e_.type + ", degree " + std::to_string(s_.degree_u()) + " x " +
             std::to_string(s_.degree_v()) + (s_.rational() ? ", rational" : "") + ", " + what +
             (r_ > 0 ? ", ball-end tool radius " + fmt_num(r_) : ", tool tip on the surface"));

@@ -147,6 +147,7 @@ void GcodeInterpreter::Impl::run_modal() {
     if (c == 7) st.coolant_mist = true;
     if (c == 8) st.coolant_flood = true;
     if (c == 9) st.coolant_mist = st.coolant_flood = false;
+    if (c == 0 || c == 1) ++st.program_stops;
   }
   if (dwell) {
     if (!ln.has('P') || val('P') < 0) fail(errc::gcode_dwell, "G04 needs its duration P (seconds) >= 0");

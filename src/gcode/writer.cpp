@@ -49,6 +49,7 @@ class Writer {
                  sig(p_.max_bound) + " " + u + ", rounding included"));
     for (const auto& n : p_.notes) line(comment(n));
     line(std::string(p_.units == Units::mm ? "G21" : "G20") + " G90 G17");
+    for (const auto& l : m_.preamble) line(subst(l));
     for (const Move& mv : p_.moves) move(mv);
     for (const auto& f : m_.footer) {
       if (!f.empty() && f[0] == '%') raw(subst(f));
@@ -58,6 +59,12 @@ class Writer {
   }
 
  private:
+  // One style of words in one file: `G4`/`M8` where the profile writes
+  // `G0`, `G04`/`M08` where it writes `G00`.
+  std::string word(const char* short_form, const char* long_form) const {
+    return m_.word_rapid.size() == 2 ? short_form : long_form;
+  }
+
   std::string subst(const std::string& s) const {
     return replace_all(s, "{safe_z}", format_number(p_.safe_z, p_.decimals));
   }
@@ -108,8 +115,15 @@ class Writer {
       line(comment(c->text));
     } else if (const auto* t = std::get_if<ToolChange>(&mv.what)) {
       line(replace_all(m_.tool_change, "{tool}", std::to_string(t->tool)));
+      if (!m_.tool_length.empty()) line(replace_all(m_.tool_length, "{tool}", std::to_string(t->tool)));
     } else if (const auto* sp = std::get_if<SpindleMove>(&mv.what)) {
       line(sp->rpm > 0 ? replace_all(m_.spindle_on, "{rpm}", std::to_string(std::llround(sp->rpm))) : m_.spindle_off);
+    } else if (const auto* d = std::get_if<Dwell>(&mv.what)) {
+      line(word("G4", "G04") + " P" + format_number(d->seconds, 3));
+    } else if (const auto* cl = std::get_if<CoolantMove>(&mv.what)) {
+      line(cl->mode == Coolant::flood ? word("M8", "M08") : cl->mode == Coolant::mist ? word("M7", "M07") : word("M9", "M09"));
+    } else if (const auto* st = std::get_if<ProgramStop>(&mv.what)) {
+      line(word("M0", "M00") + " " + comment(st->message));
     } else if (const auto* a = std::get_if<ArcMove>(&mv.what)) {
       arc(*a);
     } else if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {

@@ -248,12 +248,20 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
     else if (g == "skip") p.gouge = GougePolicy::skip;
     else ctx.fail(kp, errc::job_gouge, "expected \"refuse\" or \"skip\", found " + describe(*it));
   }
+  if (auto it = obj.find("coolant"); it != obj.end()) {
+    const std::string kp = path.empty() ? "coolant" : path + ".coolant";
+    const std::string c = ctx.string(*it, kp);
+    if (c == "off") p.coolant = Coolant::off;
+    else if (c == "mist") p.coolant = Coolant::mist;
+    else if (c == "flood") p.coolant = Coolant::flood;
+    else ctx.fail(kp, errc::job_coolant, "expected \"flood\", \"mist\" or \"off\", found " + describe(*it));
+  }
   if (auto it = obj.find("tool"); it != obj.end()) {
     p.tool = ctx.integer(*it, path + ".tool");
     if (*p.tool < 0) ctx.fail(path + ".tool", errc::job_range, "expected a tool number >= 0, found " + std::to_string(*p.tool));
   }
   if (!entity_level)
-    ctx.check_keys(obj, path, {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius", "gouge"});
+    ctx.check_keys(obj, path, {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius", "gouge", "coolant"});
   if (p.safe_z && p.cut_z && *p.cut_z >= *p.safe_z)
     ctx.fail(path + ".cut_z", errc::job_range,
              "expected cut_z below safe_z (" + fmt_num(*p.safe_z) + "), found " + fmt_num(*p.cut_z));
@@ -270,7 +278,7 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   if (auto it = obj.find("id"); it != obj.end()) e.id = ctx.string(*it, path + ".id");
   e.params = parse_params(ctx, obj, path, true);
   static const std::initializer_list<const char*> param_keys = {"feed", "plunge_feed", "safe_z", "cut_z",
-                                                                "spindle_rpm", "tool", "tool_radius", "gouge"};
+                                                                "spindle_rpm", "tool", "tool_radius", "gouge", "coolant"};
   auto keys = [&](std::initializer_list<const char*> own) {
     std::vector<std::string_view> all(own.begin(), own.end());
     all.insert(all.end(), param_keys.begin(), param_keys.end());
@@ -327,7 +335,17 @@ JobParams JobParams::over(const JobParams& base) const {
   if (tool_radius) r.tool_radius = tool_radius;
   if (tool) r.tool = tool;
   if (gouge) r.gouge = gouge;
+  if (coolant) r.coolant = coolant;
   return r;
+}
+
+const char* to_string(Coolant c) {
+  switch (c) {
+    case Coolant::off: return "off";
+    case Coolant::mist: return "mist";
+    case Coolant::flood: return "flood";
+  }
+  return "off";
 }
 
 namespace {

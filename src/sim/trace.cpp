@@ -107,6 +107,7 @@ std::string trace_state(int line, const MachineState& a, const MachineState& b) 
   if (a.tool_length_comp != b.tool_length_comp || a.tool_length_h != b.tool_length_h)
     s += at + (b.tool_length_comp ? "tool length H" + std::to_string(b.tool_length_h) : std::string("tool length off")) + "\n";
   if (b.dwell_seconds != a.dwell_seconds) s += at + "dwell " + trace_number(b.dwell_seconds - a.dwell_seconds) + "\n";
+  if (b.program_stops != a.program_stops) s += at + "program stop (the operator resumes)\n";
   if (a.program_end != b.program_end && b.program_end) s += at + "program end\n";
   return s;
 }

@@ -1,5 +1,6 @@
 // Post layer basics: number format, profiles, validation before writing,
 // the writer's program structure (docs/cli.md "What every program looks like").
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -62,10 +63,15 @@ TEST(Program, StructureOfEveryProgram) {
   EXPECT_NE(lines[1].find("bezcam"), std::string::npos);
   EXPECT_NE(lines[2].find("tolerance 0.01 mm; largest deviation measured"), std::string::npos);
   EXPECT_EQ(lines[3], "G21 G90 G17");
-  EXPECT_EQ(lines[4], "T3 M06");
-  EXPECT_EQ(lines[5], "S9000 M03");
+  EXPECT_EQ(lines[4], "G40 G49 G80 G94");  // the profile's preamble: the safety line
+  EXPECT_EQ(lines[5], "T3 M06");
+  EXPECT_EQ(lines[6], "S9000 M03");
   EXPECT_EQ(lines.back(), "%");
   EXPECT_EQ(lines[lines.size() - 2], "M30");
+  // One retract at the end, then the spindle stops: not two retracts.
+  EXPECT_EQ(lines[lines.size() - 3], "M05");
+  EXPECT_EQ(lines[lines.size() - 4].rfind("G00 Z", 0), 0u) << lines[lines.size() - 4];
+  EXPECT_EQ(std::count_if(lines.end() - 6, lines.end(), [](const std::string& l) { return l.rfind("G00 Z", 0) == 0; }), 1);
   EXPECT_NE(r.gcode.find("(entity a: bezier, degree 2, 2D)"), std::string::npos);
   EXPECT_NE(r.gcode.find("(entity b: bezier, degree 2, 3D)"), std::string::npos);
   // Every G00 after the first XY move happens at safe Z; plunges at the plunge feed.

@@ -54,9 +54,17 @@ std::vector<Rs274Run> run_rs274(const std::string& exe, const std::vector<std::s
   const fs::path dir = fs::temp_directory_path() / ("bezcam-rs274-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const int lock = ::open((fs::temp_directory_path() / "bezcam-rs274.lock").c_str(), O_CREAT | O_RDWR, 0666);
+  // Tools whose length offsets are zero: programs use G43 H- after each
+  // tool change, and rs274's built-in table has lengths, which would move
+  // every canonical Z; with zero offsets the canonical point is the tool
+  // tip the program describes (as in bezcam's simulated controller).
+  {
+    std::ofstream tbl(dir / "tools.tbl");
+    for (int t = 1; t <= 99; ++t) tbl << "T" << t << " P" << t << " Z0 D6 ;zero length\n";
+  }
   for (size_t i = 0; i < programs.size(); ++i) {
     std::ofstream(dir / "program.ngc") << programs[i];
-    const std::string cmd = "cd '" + dir.string() + "' && '" + exe + "' -g program.ngc 2>&1";
+    const std::string cmd = "cd '" + dir.string() + "' && '" + exe + "' -t tools.tbl -g program.ngc 2>&1";
     if (lock >= 0) ::flock(lock, LOCK_EX);
     const testproc::Result r = testproc::shell(cmd);
     runs[i].output = r.out;

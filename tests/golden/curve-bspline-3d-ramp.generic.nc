@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-bspline-3d-ramp.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009796 mm, proven bound 0.009998 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T2 M06
 S15000 M03
 (entity ramp: bspline, degree 3, rational, 3D)
@@ -106,6 +107,5 @@ X-21.218 Y-18.759 Z-2.969
 X-20. Y-20. Z-3.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-bspline-unclamped.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009726 mm, proven bound 0.009954 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity uniform-cubic: bspline, degree 3, 2D)
@@ -102,6 +103,5 @@ X204.844 Y-6.546
 X206.667 Y-5.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

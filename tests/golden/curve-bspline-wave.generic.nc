@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-bspline-wave.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009809 mm, proven bound 0.009981 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity wave: bspline, degree 3, 2D)
@@ -145,6 +146,5 @@ X198.821 Y9.425
 X200. Y10.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

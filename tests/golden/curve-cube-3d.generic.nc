@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-cube-3d.json, machine generic, output lines)
 (tolerance 0.001 mm; largest deviation measured 0.0009254 mm, proven bound 0.0009987 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity cube-base-curve: bezier, degree 3, 3D)
@@ -47,6 +48,5 @@ Y0.999 Z0.96
 Y1. Z1.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

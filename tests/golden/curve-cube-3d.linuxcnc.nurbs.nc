@@ -2,7 +2,10 @@
 (bezcam 0.1.0: curve-cube-3d.json, machine linuxcnc, output nurbs)
 (tolerance 0.001 mm; largest deviation measured 0.0009781 mm, proven bound 0.0009993 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
+G54
 T1 M6
+G43 H1
 S12000 M3
 (entity cube-base-curve: bezier, degree 3, 3D)
 G0 Z5.
@@ -37,7 +40,6 @@ X0.9999 Y0.994 Z0.8701
 X1. Y0.9997 Z0.9697
 Y1. Z1.
 G0 Z5.
-M05
-G00 Z5.
+M5
 M30
 %

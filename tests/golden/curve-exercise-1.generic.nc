@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-exercise-1.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.0095 mm, proven bound 0.009975 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity seed-ex-1: bezier, degree 2, 2D)
@@ -18,6 +19,5 @@ X1.112 Y0.88
 X1. Y1.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

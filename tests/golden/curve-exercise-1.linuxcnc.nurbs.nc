@@ -2,7 +2,10 @@
 (bezcam 0.1.0: curve-exercise-1.json, machine linuxcnc, output nurbs)
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
+G54
 T1 M6
+G43 H1
 S12000 M3
 (entity seed-ex-1: bezier, degree 2, 2D)
 G0 Z5.
@@ -10,7 +13,6 @@ X0. Y0.
 G1 Z-0.5 F200.
 G5.1 X1. Y1. I2. J0. F600.
 G0 Z5.
-M05
-G00 Z5.
+M5
 M30
 %

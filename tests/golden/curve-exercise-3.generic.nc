@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-exercise-3.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009777 mm, proven bound 0.009933 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity seed-ex-3: bezier, degree 2, 2D)
@@ -15,6 +16,5 @@ X0.675 Y0.974
 X1. Y1.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-exercise-4.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009757 mm, proven bound 0.00998 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity seed-ex-4: bezier, degree 3, 2D)
@@ -20,6 +21,5 @@ X0.365 Y0.987
 X0. Y1.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

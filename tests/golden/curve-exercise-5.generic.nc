@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-exercise-5.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009761 mm, proven bound 0.009926 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity seed-ex-5: bezier, degree 3, 2D)
@@ -18,6 +19,5 @@ X0.396 Y1.632
 X0. Y2.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

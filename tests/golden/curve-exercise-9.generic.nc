@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-exercise-9.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009385 mm, proven bound 0.009975 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity seed-ex-9: bezier, degree 4, 2D)
@@ -21,6 +22,5 @@ X-0.186 Y0.797
 X0. Y1.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

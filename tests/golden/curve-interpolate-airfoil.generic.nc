@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-interpolate-airfoil.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.00981 mm, proven bound 0.009974 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S18000 M03
 (entity upper-surface: interpolate, degree 3, 2D)
@@ -60,6 +61,5 @@ X142.958 Y3.314
 X150. Y1.6
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

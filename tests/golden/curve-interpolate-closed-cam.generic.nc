@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-interpolate-closed-cam.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009735 mm, proven bound 0.009991 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity cam: interpolate, degree 3, 2D)
@@ -157,6 +158,5 @@ X39.96 Y-1.485
 X40. Y0.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

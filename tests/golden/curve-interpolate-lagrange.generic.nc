@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-interpolate-lagrange.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009896 mm, proven bound 0.009996 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity arch: interpolate, degree 4, 2D)
@@ -70,6 +71,5 @@ X99.527 Y0.799
 X100. Y0.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

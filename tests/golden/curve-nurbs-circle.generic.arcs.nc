@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-nurbs-circle.json, machine generic, output arcs)
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 2.449e-06 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity circle-d80: bspline, degree 2, rational, 2D)
@@ -14,6 +15,5 @@ G03 X60. Y10. I40. J0.
 G03 X100. Y50. I0. J40.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

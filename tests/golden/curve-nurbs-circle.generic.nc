@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-nurbs-circle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009776 mm, proven bound 0.009999 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity circle-d80: bspline, degree 2, rational, 2D)
@@ -158,6 +159,5 @@ X99.989 Y49.081
 X100. Y50.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

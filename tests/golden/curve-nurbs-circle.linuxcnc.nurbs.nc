@@ -2,7 +2,10 @@
 (bezcam 0.1.0: curve-nurbs-circle.json, machine linuxcnc, output nurbs)
 (tolerance 0.01 mm; largest deviation measured 6.679e-05 mm, proven bound 7.453e-05 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
+G54
 T1 M6
+G43 H1
 S12000 M3
 (entity circle-d80: bspline, degree 2, rational, 2D)
 G0 Z5.
@@ -25,7 +28,6 @@ X100. Y10. P0.7071
 X100. Y50. P1.
 G5.3
 G0 Z5.
-M05
-G00 Z5.
+M5
 M30
 %

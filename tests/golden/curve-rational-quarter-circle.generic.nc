@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009658 mm, proven bound 0.009987 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity quarter-circle-r10: bezier, degree 2, rational, 2D)
@@ -29,6 +30,5 @@ X0.206 Y9.998
 X0. Y10.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

@@ -1,8 +1,11 @@
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine grbl, output arcs)
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 8.181e-07 mm, rounding included)
 G21 G90 G17
-(tool 1)
+G40 G49 G80 G94
+G54
+(tool 1: load it before starting)
 S12000 M3
+G4 P2.
 (entity quarter-circle-r10: bezier, degree 2, rational, 2D)
 G0 Z5.
 X10. Y0.
@@ -10,5 +13,4 @@ G1 Z-1. F300.
 G3 X0. Y10. I-10. J0. F1000.
 G0 Z5.
 M5
-G0 Z5.
 M30

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output arcs)
 (tolerance 0.005 mm; largest deviation measured 0.00488 mm, proven bound 0.004891 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity semicircle-r3: bezier, degree 3, 2D)
@@ -15,6 +16,5 @@ G02 X2.995 Y0.19 I-2.031 J-2.064
 G01 X3. Y0.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

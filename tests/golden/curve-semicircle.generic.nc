@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output lines)
 (tolerance 0.005 mm; largest deviation measured 0.004863 mm, proven bound 0.004999 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity semicircle-r3: bezier, degree 3, 2D)
@@ -39,6 +40,5 @@ X2.984 Y0.354
 X3. Y0.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

@@ -2,8 +2,11 @@
 (tolerance 0.005 mm; largest deviation measured 0.00488 mm, proven bound 0.004891 mm, rounding included)
 (machine grbl has no NURBS words: nurbs output cuts with arcs [G02/G03] and G01 lines)
 G21 G90 G17
-(tool 1)
+G40 G49 G80 G94
+G54
+(tool 1: load it before starting)
 S12000 M3
+G4 P2.
 (entity semicircle-r3: bezier, degree 3, 2D)
 G0 Z5.
 X-3. Y0.
@@ -15,5 +18,4 @@ G2 X2.995 Y0.19 I-2.031 J-2.064
 G1 X3. Y0.
 G0 Z5.
 M5
-G0 Z5.
 M30

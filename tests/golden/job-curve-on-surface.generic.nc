@@ -2,6 +2,7 @@
 (bezcam 0.1.0: job-curve-on-surface.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009758 mm, proven bound 0.009999 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S16000 M03
 (entity wing: bezier_patch, degree 3 x 3, zigzag along u, stepover 6, 82 passes, ball-end tool radius 5)
@@ -2961,6 +2962,7 @@ X44.501 Z116.866
 X22.024 Z115.947
 X-0.222 Z114.984
 G00 Z150.
+M05
 T2 M06
 S16000 M03
 (entity wheel-arch: curve_on_surface, degree 3 x 3, curve traced on the surface, tool tip on the surface)
@@ -3146,6 +3148,5 @@ X599.042 Y3.618 Z18.193
 X599.062 Y0. Z16.75
 G00 Z150.
 M05
-G00 Z150.
 M30
 %

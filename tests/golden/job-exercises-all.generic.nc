@@ -2,6 +2,7 @@
 (bezcam 0.1.0: job-exercises-all.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009777 mm, proven bound 0.00998 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity seed-ex-1: bezier, degree 2, 2D)
@@ -129,6 +130,5 @@ X15.815 Y10.798
 X16. Y11.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

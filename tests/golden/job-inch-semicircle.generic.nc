@@ -2,6 +2,7 @@
 (bezcam 0.1.0: job-inch-semicircle.json, machine generic, output lines)
 (tolerance 0.0005 inch; largest deviation measured 0.0004831 inch, proven bound 0.0005 inch, rounding included)
 G20 G90 G17
+G40 G49 G80 G94
 T1 M06
 S10000 M03
 (entity semicircle-inch: bezier, degree 3, 2D)
@@ -102,6 +103,5 @@ X2.9987 Y0.1003
 X3. Y0.
 G00 Z0.25
 M05
-G00 Z0.25
 M30
 %

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: patch-bonnet-bicubic.json, machine generic, output lines)
 (tolerance 0.05 mm; largest deviation measured 0.04702 mm, proven bound 0.04801 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S18000 M03
 (entity bonnet: bezier_patch, degree 3 x 3, zigzag along u, stepover 8, 94 passes, ball-end tool radius 10)
@@ -2078,6 +2079,5 @@ X-386.288 Y351.371 Z25.635
 X-431.309 Y351.376 Z19.818
 G00 Z130.
 M05
-G00 Z130.
 M30
 %

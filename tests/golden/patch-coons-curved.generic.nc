@@ -2,6 +2,7 @@
 (bezcam 0.1.0: patch-coons-curved.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009014 mm, proven bound 0.00999 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T2 M06
 S16000 M03
 (entity coons-panel: coons_patch, degree 3 x 3, raster along v, stepover 2.5, 99 passes, ball-end tool radius 4)
@@ -4619,6 +4620,5 @@ X200.863 Y149.191 Z3.991
 X201.13 Y150.292 Z3.826
 G00 Z40.
 M05
-G00 Z40.
 M30
 %

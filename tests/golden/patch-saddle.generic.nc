@@ -2,6 +2,7 @@
 (bezcam 0.1.0: patch-saddle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.008946 mm, proven bound 0.00998 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T3 M06
 S15000 M03
 (entity saddle: bezier_patch, degree 2 x 2, zigzag along u, stepover 2, 68 passes, ball-end tool radius 3)
@@ -3002,6 +3003,5 @@ X4.041 Y121.234 Z-1.93
 X1.225 Y121.225 Z-0.551
 G00 Z25.
 M05
-G00 Z25.
 M30
 %

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: path-closed-teardrop.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009773 mm, proven bound 0.009985 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T2 M06
 S12000 M03
 (entity teardrop: path, degree 3, 2D)
@@ -94,6 +95,5 @@ X-0.108 Y0.217
 X0. Y0.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

@@ -2,7 +2,10 @@
 (bezcam 0.1.0: path-closed-teardrop.json, machine linuxcnc, output arcs)
 (tolerance 0.01 mm; largest deviation measured 0.009957 mm, proven bound 0.009962 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
+G54
 T2 M6
+G43 H2
 S12000 M3
 (entity teardrop: path, degree 3, 2D)
 G0 Z5.
@@ -22,7 +25,6 @@ G3 X-4.1122 Y14.8299 I21.8246 J-16.3971
 G3 X-1.6532 Y3.71 I34.8206 J1.8682
 G3 X0. Y0. I41.5876 J16.3089
 G0 Z5.
-M05
-G00 Z5.
+M5
 M30
 %

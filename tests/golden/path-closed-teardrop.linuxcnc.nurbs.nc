@@ -2,7 +2,10 @@
 (bezcam 0.1.0: path-closed-teardrop.json, machine linuxcnc, output nurbs)
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
+G54
 T2 M6
+G43 H2
 S12000 M3
 (entity teardrop: path, degree 3, 2D)
 G0 Z5.
@@ -12,7 +15,6 @@ G5 X30. Y30. I20. J10. P0. Q-10. F1000.
 G5 X10. Y40. I0. J10. P10. Q5.
 G5 X0. Y0. I-10. J-5. P-10. Q20.
 G0 Z5.
-M05
-G00 Z5.
+M5
 M30
 %

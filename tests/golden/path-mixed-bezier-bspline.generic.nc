@@ -2,6 +2,7 @@
 (bezcam 0.1.0: path-mixed-bezier-bspline.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009778 mm, proven bound 0.009996 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T1 M06
 S12000 M03
 (entity lead-in-spline-lead-out: path, degree 3, 2D)
@@ -110,6 +111,5 @@ X199.843 Y-0.155
 X200. Y0.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

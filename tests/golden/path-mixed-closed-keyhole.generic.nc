@@ -2,6 +2,7 @@
 (bezcam 0.1.0: path-mixed-closed-keyhole.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009728 mm, proven bound 0.009992 mm, rounding included)
 G21 G90 G17
+G40 G49 G80 G94
 T3 M06
 S16000 M03
 (entity keyhole: path, degree 2, rational, 2D)
@@ -82,6 +83,5 @@ X15.
 Y30.
 G00 Z5.
 M05
-G00 Z5.
 M30
 %

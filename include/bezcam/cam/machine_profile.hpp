@@ -29,6 +29,18 @@ struct MachineProfile {
   std::string tool_change = "T{tool} M06";  ///< {tool} is replaced
   std::string spindle_on = "S{rpm} M03";    ///< {rpm} is replaced
   std::string spindle_off = "M05";
+  /// Lines after the units line (`G21 G90 G17`): the safety line and the
+  /// work offset a machinist's post writes (`G40 G49 G80 G94`, `G54`).
+  std::vector<std::string> preamble;
+  /// After each tool change: tool length compensation (`G43 H{tool}`),
+  /// empty for none.
+  std::string tool_length;
+  /// False for a machine without an automatic tool changer (Grbl): a tool
+  /// change becomes spindle off, retract, `M0` naming the tool.
+  bool tool_changer = true;
+  /// Seconds to dwell (`G4 P-`) after the spindle starts, for a controller
+  /// that does not wait for the spindle's speed itself; 0 for none.
+  double spindle_dwell_s = 0;
   bool arcs = true;
   double arc_tolerance_mm = 0.002;  ///< allowed radius mismatch of a printed arc
   NurbsDialect nurbs = NurbsDialect::none;

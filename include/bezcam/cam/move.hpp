@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "bezcam/job/job.hpp"  // Coolant
 #include "bezcam/kernel/vec.hpp"
 
 namespace bezcam {
@@ -61,13 +62,28 @@ struct SpindleMove {
 struct Comment {
   std::string text;
 };
+/// G04: wait (the spindle reaching its speed).
+struct Dwell {
+  double seconds = 0;
+};
+/// M07 mist, M08 flood, M09 off.
+struct CoolantMove {
+  Coolant mode = Coolant::off;
+};
+/// M00: the program stops until the operator resumes it (a manual tool
+/// change on a machine without a changer), saying why.
+struct ProgramStop {
+  std::string message;
+};
 
 struct Move {
-  std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChange, SpindleMove, Comment> what;
+  std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChange, SpindleMove, Comment, Dwell, CoolantMove, ProgramStop>
+      what;
   int entity = -1;  ///< index of the job entity it cuts, -1 for none
 };
 
-/// The motion part of a move; null for tool changes, spindle and comments.
+/// The motion part of a move; null for tool changes, spindle, coolant,
+/// dwells, stops and comments.
 inline const Motion* motion_of(const Move& m) {
   return std::visit([](const auto& x) -> const Motion* {
     if constexpr (std::is_base_of_v<Motion, std::decay_t<decltype(x)>>) return &x;

@@ -64,6 +64,7 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 struct CutParams {
   double feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool_radius;
   int tool;
+  Coolant coolant = Coolant::off;
 };
 CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m);
 

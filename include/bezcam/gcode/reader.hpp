@@ -57,6 +57,7 @@ struct MachineState {
   bool coolant_mist = false;   ///< M07 (M09 stops both)
   bool coolant_flood = false;  ///< M08
   double dwell_seconds = 0;    ///< G04 P- dwells so far, in seconds
+  int program_stops = 0;       ///< M00 / M01 seen so far (the operator resumes)
 };
 
 /// Streaming interpreter: feed it lines in order.

@@ -20,12 +20,17 @@ namespace bezcam {
 /// refuse the job (exit 2, naming entity, u and v) or leave those regions uncut.
 enum class GougePolicy { refuse, skip };
 
+/// Coolant while cutting (key `coolant`): M07 mist, M08 flood, M09 off.
+enum class Coolant { off, mist, flood };
+const char* to_string(Coolant c);
+
 /// Cutting parameters (file units); unset values fall back to the entity's
 /// job, then to the machine profile.
 struct JobParams {
   std::optional<double> feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool_radius;
   std::optional<int> tool;
   std::optional<GougePolicy> gouge;  ///< surfaces with tool_radius > 0; default refuse
+  std::optional<Coolant> coolant;    ///< default off
   /// Values set here win; the rest come from `base`.
   JobParams over(const JobParams& base) const;
 };
