@@ -217,10 +217,8 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
     if (auto s = r.opt(*v, "tool")) m.defaults.tool = r.integer(*s, "defaults.tool");
     if (auto s = r.opt(*v, "coolant")) {
       const std::string c = r.str(*s, "defaults.coolant");
-      if (c == "off") m.defaults.coolant = Coolant::off;
-      else if (c == "mist") m.defaults.coolant = Coolant::mist;
-      else if (c == "flood") m.defaults.coolant = Coolant::flood;
-      else r.fail("defaults.coolant", "expected \"flood\", \"mist\" or \"off\", found \"" + c + "\"");
+      m.defaults.coolant = coolant_from(c);
+      if (!m.defaults.coolant) r.fail("defaults.coolant", "expected \"flood\", \"mist\" or \"off\", found \"" + c + "\"");
     }
   }
   return m;

@@ -250,11 +250,8 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   }
   if (auto it = obj.find("coolant"); it != obj.end()) {
     const std::string kp = path.empty() ? "coolant" : path + ".coolant";
-    const std::string c = ctx.string(*it, kp);
-    if (c == "off") p.coolant = Coolant::off;
-    else if (c == "mist") p.coolant = Coolant::mist;
-    else if (c == "flood") p.coolant = Coolant::flood;
-    else ctx.fail(kp, errc::job_coolant, "expected \"flood\", \"mist\" or \"off\", found " + describe(*it));
+    p.coolant = coolant_from(ctx.string(*it, kp));
+    if (!p.coolant) ctx.fail(kp, errc::job_coolant, "expected \"flood\", \"mist\" or \"off\", found " + describe(*it));
   }
   if (auto it = obj.find("tool"); it != obj.end()) {
     p.tool = ctx.integer(*it, path + ".tool");
@@ -337,6 +334,12 @@ JobParams JobParams::over(const JobParams& base) const {
   if (gouge) r.gouge = gouge;
   if (coolant) r.coolant = coolant;
   return r;
+}
+
+std::optional<Coolant> coolant_from(std::string_view text) {
+  for (Coolant c : {Coolant::off, Coolant::mist, Coolant::flood})
+    if (text == to_string(c)) return c;
+  return std::nullopt;
 }
 
 const char* to_string(Coolant c) {

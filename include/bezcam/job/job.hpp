@@ -23,6 +23,8 @@ enum class GougePolicy { refuse, skip };
 /// Coolant while cutting (key `coolant`): M07 mist, M08 flood, M09 off.
 enum class Coolant { off, mist, flood };
 const char* to_string(Coolant c);
+/// "flood", "mist" or "off"; nothing for any other text.
+std::optional<Coolant> coolant_from(std::string_view text);
 
 /// Cutting parameters (file units); unset values fall back to the entity's
 /// job, then to the machine profile.
