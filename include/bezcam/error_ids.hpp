@@ -230,6 +230,10 @@ inline constexpr ErrorId limit_segments{"limit.segments"};
 inline constexpr ErrorId limit_tolerance_precision{"limit.tolerance-precision"};
 /// Simulated controller: the sender aborted the transfer.
 inline constexpr ErrorId link_aborted{"link.aborted"};
+/// The sender was interrupted (Ctrl-C, SIGTERM) and aborted the transfer.
+inline constexpr ErrorId link_cancelled{"link.cancelled"};
+/// The program has lint findings for the profile the controller enforces: not sent.
+inline constexpr ErrorId link_preflight{"link.preflight"};
 /// The controller acknowledged other bytes than were sent.
 inline constexpr ErrorId link_ack{"link.ack"};
 /// The controller is busy with another sender's program.
@@ -360,6 +364,8 @@ inline constexpr ErrorId usage_output{"usage.output"};
 inline constexpr ErrorId usage_preview{"usage.preview"};
 /// The report would overwrite the program.
 inline constexpr ErrorId usage_report{"usage.report"};
+/// stream: a program file with --abort, or none without it.
+inline constexpr ErrorId usage_stream{"usage.stream"};
 
 }  // namespace bezcam::errc
 }  // namespace bezcam

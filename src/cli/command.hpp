@@ -43,6 +43,10 @@ bool stderr_is_tty();
 namespace bezcam {
 struct Job;
 struct MachineProfile;
+namespace link {
+struct ControllerReport;
+struct Endpoint;
+}  // namespace link
 }  // namespace bezcam
 
 namespace bezcam::cli {
@@ -58,6 +62,8 @@ MachineProfile resolve_profile(const Job& job, const std::string& cli_machine);
 /// is refused, the warnings found before are printed first: a misspelt key
 /// is never hidden by another error.
 Job read_job(const std::string& path, bool strict);
+/// Prints a controller's state on stdout (status, stream --abort).
+void print_controller(const link::ControllerReport& r, const link::Endpoint& to);
 /// Prints warnings on stderr as `bezcam: warning: ...`.
 void print_warnings(const std::vector<std::string>& warnings);
 

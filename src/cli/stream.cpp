@@ -12,6 +12,10 @@
 #include <iostream>
 #include <sstream>
 
+#include <csignal>
+
+#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/gcode/lint.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "command.hpp"
@@ -23,17 +27,21 @@ using namespace bezcam::link;
 
 struct Options {
   std::string file, to, progress = "auto";
-  double timeout = 2, retry_time = 20, stall_timeout = 60;
-  int retries = 5;
+  double timeout = 2, retry_time = 60, stall_timeout = 60;
+  int retries = 30;
   int chunk = 0;
-  bool quiet = false;
+  bool quiet = false, abort = false, no_preflight = false;
 } o;
 
 CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("stream", "Send a G-code program to a controller over Modbus TCP, with progress; "
                                          "succeeds only when the controller confirms the CRC-32 and has executed it.");
-  s->add_option("FILE", o.file, "G-code program")->required();
+  s->add_option("FILE", o.file, "G-code program (not with --abort)");
   s->add_option("--to", o.to, "controller address HOST:PORT")->required();
+  s->add_flag("--abort", o.abort, "stop the transfer the controller holds, whoever sent it (the operator's stop: "
+                                  "alarm \"aborted\", spindle off), and print its state");
+  s->add_flag("--no-preflight", o.no_preflight,
+              "send without first linting the program against the profile the controller enforces");
   s->add_option("--timeout", o.timeout, "seconds to wait for each reply before taking the connection as lost")
       ->check(CLI::PositiveNumber);
   s->add_option("--retries", o.retries, "reconnection attempts after a lost connection")->check(CLI::Range(0, 1000));
@@ -47,6 +55,13 @@ CLI::App* add(CLI::App& app) {
   s->add_option("--progress", o.progress, "auto (a bar on a terminal, plain lines otherwise), bar, lines or off")
       ->check(CLI::IsMember({"auto", "bar", "lines", "off"}));
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+  s->footer("Ctrl-C (or SIGTERM) stops the controller at once: the sender sends ABORT and says what was "
+            "acknowledged and executed (exit 130).\n"
+            "Before sending, the program is linted against the profile the controller enforces (its name is in "
+            "the controller's registers); findings refuse it (exit 2) unless --no-preflight.\n\n"
+            "Examples:\n"
+            "  bezcam stream part.nc --to 127.0.0.1:5020\n"
+            "  bezcam stream --abort --to 192.168.0.10:502");
   return s;
 }
 
@@ -143,9 +158,55 @@ std::chrono::milliseconds ms(double seconds) {
   return std::chrono::milliseconds(static_cast<long long>(seconds * 1000.0 + 0.5));
 }
 
+// Set by SIGINT / SIGTERM; the sender checks it between requests.
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted.store(true); }
+
+// The program against the profile the controller enforces: a program it
+// would refuse mid-cut is refused before OPEN.
+void preflight(const std::string& program, const Endpoint& to) {
+  const ControllerReport r = controller_status(to, ms(o.timeout));
+  if (r.machine.empty()) return;
+  MachineProfile m;
+  try {
+    m = load_profile_option(r.machine);
+  } catch (const Error&) {
+    if (!o.quiet)
+      std::cerr << "bezcam: warning: the controller enforces profile \"" << r.machine
+                << "\", which is not known here: the program was not linted before sending\n";
+    return;
+  }
+  const auto findings = lint_gcode(program, m);
+  if (findings.empty()) return;
+  std::string list;
+  for (size_t i = 0; i < findings.size() && i < 10; ++i)
+    list += "\n  " + o.file + ":" + std::to_string(findings[i].line) + ": " + findings[i].message + " [" + findings[i].id + "]";
+  if (findings.size() > 10) list += "\n  ... and " + std::to_string(findings.size() - 10) + " more";
+  throw InputError(errc::link_preflight, Place::at_file(o.file),
+                   std::to_string(findings.size()) + " finding" + (findings.size() == 1 ? "" : "s") +
+                       " for machine \"" + m.name + "\", the profile the controller at " + to.str() +
+                       " enforces; it would stop the program mid-cut. Nothing was sent (--no-preflight sends anyway):" +
+                       list);
+}
+
 int run() {
   const Endpoint to = parse_endpoint(o.to);
+  if (o.abort) {
+    if (!o.file.empty()) throw InputError(errc::usage_stream, Place::at_option("--abort"), "takes no program file");
+    const ControllerReport before = controller_status(to, ms(o.timeout));
+    const ControllerReport after = abort_controller(to, ms(o.timeout));
+    if (!o.quiet)
+      std::cerr << "bezcam: stream: "
+                << (before.status.state == State::receiving || before.status.state == State::finishing
+                        ? "stopped the transfer (session " + std::to_string(before.status.session) + ")"
+                        : std::string("no transfer was open: nothing to stop"))
+                << "\n";
+    print_controller(after, to);
+    return 0;
+  }
+  if (o.file.empty()) throw InputError(errc::usage_stream, Place::at_option("FILE"), "give the program to send (or --abort)");
   const std::string program = read_file(o.file);
+  if (!o.no_preflight) preflight(program, to);
   Display::Style style = Display::Style::lines;
   if (o.quiet || o.progress == "off") style = Display::Style::off;
   else if (o.progress == "bar" || (o.progress == "auto" && stderr_is_tty())) style = Display::Style::bar;
@@ -159,9 +220,20 @@ int run() {
   opt.chunk_bytes = static_cast<std::uint16_t>(o.chunk);
   opt.on_progress = [&](const StreamProgress& p) { display.update(p); };
   opt.on_event = [&](const std::string& e) { display.event(e); };
+  opt.cancel = &g_interrupted;
+  struct sigaction sa {};
+  sa.sa_handler = on_interrupt;  // no SA_RESTART: a blocked call returns
+  sigemptyset(&sa.sa_mask);
+  ::sigaction(SIGINT, &sa, nullptr);
+  ::sigaction(SIGTERM, &sa, nullptr);
   StreamResult r;
   try {
     r = stream_program(program, to, opt);
+  } catch (const Error& e) {
+    display.clear();
+    if (e.id() != errc::link_cancelled) throw;
+    std::cerr << "bezcam: stream: " << e.what() << "\n";
+    return 130;  // as a shell reports a program stopped by Ctrl-C
   } catch (...) {
     display.clear();
     throw;

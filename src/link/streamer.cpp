@@ -50,6 +50,7 @@ class Sender {
     client_ = connect_(opt_.timeout);
     st_ = read_status();
     check_identity();
+    check_cancel();
     open();
     send_all();
     commit();
@@ -230,6 +231,33 @@ class Sender {
                                 to_string(st_.state) + "); " + position());
   }
 
+  // Interrupted (Ctrl-C): stop the controller now with ABORT rather than
+  // leave it receiving, the spindle on, until its session timeout; then say
+  // what it had taken and done.
+  void check_cancel() {
+    if (!opt_.cancel || !opt_.cancel->load()) return;
+    std::string sent_abort = "no transfer was open yet";
+    if (session_ != 0) {
+      try {
+        if (!client_) client_ = connect_(opt_.timeout);
+        const auto cmd = encode_command(Command::abort, std::array<std::uint32_t, 2>{token_, session_});
+        st_ = write_read(reg::command, cmd);
+        sent_abort = "sent ABORT";
+      } catch (const std::exception& e) {
+        sent_abort = std::string("ABORT could not be sent (") + e.what() +
+                     "): the controller keeps the transfer until its session timeout, or an operator's "
+                     "stop (abort_controller())";
+      }
+      try {
+        st_ = read_status();
+      } catch (const std::exception&) {
+      }
+    }
+    throw ControllerError(errc::link_cancelled, peer_,
+                          "interrupted: " + sent_abort + "; " + position() + ", controller " + to_string(st_.state) +
+                              (st_.state == State::alarm ? std::string(" (") + to_string(st_.alarm) + ")" : ""));
+  }
+
   // Polling backs off from 1 ms to 20 ms: quick when the buffer is about
   // to free up, cheap when the machine is slow.
   void poll_wait() {
@@ -241,6 +269,7 @@ class Sender {
     std::uint64_t sent = st_.ack_bytes;
     std::uint32_t seq = st_.ack_seq;
     while (sent < prog_.size()) {
+      check_cancel();
       try {
         if (st_.state == State::alarm) alarm_error();
         if (st_.session != session_) restarted();
@@ -329,6 +358,7 @@ class Sender {
     poll_ms_ = 1;
     mark_progress();
     while (st_.state != State::done) {
+      check_cancel();
       if (st_.state == State::alarm) alarm_error();
       if (st_.session != session_) restarted();
       check_stall();
@@ -352,6 +382,7 @@ class Sender {
     event("connection lost (" + why + "); reconnecting");
     const auto deadline = Clock::now() + opt_.retry_time;
     for (int attempt = 1;; ++attempt) {
+      check_cancel();
       if (failures_ >= opt_.retries || Clock::now() >= deadline)
         throw IoError(errc::link_lost, peer_,
                       "the connection was lost and could not be restored (" + std::to_string(failures_) +
@@ -424,6 +455,56 @@ class Sender {
 };
 
 }  // namespace
+
+namespace {
+
+ControllerReport report_of(Transport& c) {
+  ControllerReport r;
+  std::array<std::uint16_t, reg::status_count> st{};
+  c.read_holding(0, st);
+  r.status = Status::decode(st);
+  if (r.status.magic != kMagic) return r;
+  std::array<std::uint16_t, reg::alarm_text_count> at{};
+  c.read_holding(reg::alarm_text, at);
+  r.alarm_text = unpack_text(at, 2 * reg::alarm_text_count, true);
+  std::array<std::uint16_t, reg::machine_name_count> mn{};
+  c.read_holding(reg::machine_name, mn);
+  r.machine = unpack_text(mn, 2 * reg::machine_name_count, true);
+  return r;
+}
+
+void require_bezcam(const ControllerReport& r, const Endpoint& to) {
+  if (r.status.magic != kMagic)
+    throw IoError(errc::link_protocol, to.str(),
+                  "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(r.status.magic) +
+                      ")");
+}
+
+}  // namespace
+
+ControllerReport controller_status(const Endpoint& to, std::chrono::milliseconds timeout) {
+  ModbusClient c(to, timeout);
+  ControllerReport r = report_of(c);
+  require_bezcam(r, to);
+  return r;
+}
+
+ControllerReport abort_controller(const Endpoint& to, std::chrono::milliseconds timeout) {
+  ModbusClient c(to, timeout);
+  ControllerReport r = report_of(c);
+  require_bezcam(r, to);
+  const State s = r.status.state;
+  if (s != State::receiving && s != State::finishing) return r;
+  // Token 0: the operator's stop, accepted for the open session whoever
+  // opened it (stopping is always safe; starting needs the token).
+  const auto cmd = encode_command(Command::abort, std::array<std::uint32_t, 2>{0, r.status.session});
+  try {
+    c.write_registers(reg::command, cmd);
+  } catch (const ModbusException& e) {
+    throw ControllerError(errc::link_refused, to.str(), std::string("the controller refused ABORT: ") + e.what());
+  }
+  return report_of(c);
+}
 
 StreamResult stream_program(std::string_view program, const Endpoint& to, const StreamOptions& opt) {
   return stream_program(program, modbus_transport(to), to.str(), opt);

@@ -32,6 +32,8 @@ Endpoint parse_endpoint(std::string_view text, bool allow_zero) {
     if (text.find(':') != colon) throw bad("write an IPv6 address in brackets");
     if (colon > 0) e.host = std::string(text.substr(0, colon));
     port_text = text.substr(colon + 1);
+  } else {
+    throw bad("the port is missing (\"" + shown + ":5020\", for instance)");
   }
   if (e.host.empty()) throw bad("the host is empty");
   unsigned long port = 0;

@@ -144,6 +144,9 @@ void SimController::open_locked(ConnId c, std::uint32_t token, std::uint32_t tot
 void SimController::raise_alarm_locked(Alarm a, long line, std::string id, std::string message) {
   if (state_ == State::alarm) return;  // the first alarm is the one that counts
   state_ = State::alarm;
+  // A controller in alarm stops the spindle and the coolant.
+  machine_.spindle_on = false;
+  machine_.coolant_mist = machine_.coolant_flood = false;
   alarm_ = a;
   alarm_line_ = static_cast<std::uint32_t>(std::max(0L, line));
   alarm_text_ = (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + message;
@@ -323,10 +326,14 @@ Reject SimController::command_locked(ConnId c, std::span<const std::uint16_t> re
     }
     case Command::abort: {
       if (session_ == 0 || arg(1) != session_) return Reject::bad_session;
-      if (arg(0) != token_) return Reject::bad_token;
+      // Token 0 is the operator's stop (bezcam stream --abort): anyone may
+      // stop the open transfer; only its sender may start or feed one.
+      const bool operator_stop = arg(0) == 0;
+      if (!operator_stop && arg(0) != token_) return Reject::bad_token;
       if (active)
         raise_alarm_locked(Alarm::aborted, line_no_, errc::link_aborted,
-                           "the sender aborted the transfer after " + std::to_string(ack_bytes_) + " bytes");
+                           (operator_stop ? "the operator stopped the transfer after " : "the sender aborted the transfer after ") +
+                               std::to_string(ack_bytes_) + " bytes");
       return Reject::none;
     }
     case Command::reset: {
@@ -541,6 +548,7 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
   if (!failed) ++lines_done_;  // a refused line changed nothing: it was not executed
   blocks_done_ += static_cast<long>(nblocks);
   machine_ = interp.state();
+  if (state_ == State::alarm || failed) machine_.spindle_on = machine_.coolant_mist = machine_.coolant_flood = false;
   if (failed && state_ != State::alarm) {
     // Traced above already, so no pending record.
     state_ = State::alarm;

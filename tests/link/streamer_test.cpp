@@ -135,13 +135,14 @@ TEST(StreamCommand, ExitCodesAndProgressLines) {
   EXPECT_EQ(local.status, 0) << local.err;
   EXPECT_EQ(test::slurp(dir / "listen.trace"), test::slurp(dir / "local.trace"));
 
-  // A malformed line: exit 4, the line named.
+  // A malformed line sent anyway (--no-preflight; the preflight would
+  // refuse it, stop_and_status_test.cpp): exit 4, the line named.
   auto lines = test::split_lines(program);
   lines[41] = "G01 X1. Q";
   std::string bad;
   for (const auto& l : lines) bad += l + "\n";
   test::write_file(dir / "bad.nc", bad);
-  r = test::run_bezcam({"stream", (dir / "bad.nc").string(), "--to", to, "-q"}, dir);
+  r = test::run_bezcam({"stream", (dir / "bad.nc").string(), "--to", to, "-q", "--no-preflight"}, dir);
   EXPECT_EQ(r.status, 4) << r.err;
   EXPECT_NE(r.err.find("bezcam: error: line 42: the controller stopped with alarm gcode (1)"), std::string::npos)
       << r.err;

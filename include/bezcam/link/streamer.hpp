@@ -4,6 +4,7 @@
 /// controller's buffer_free), sequence numbers, resume after a dropped
 /// connection from the controller's acknowledged position, detection of a
 /// restarted controller, CRC-32 confirmation of the whole program.
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -45,6 +46,12 @@ struct StreamOptions {
   std::function<void(const StreamProgress&)> on_progress;
   /// Called with a sentence on notable events (lost connection, resume).
   std::function<void(const std::string&)> on_event;
+  /// Set (by a signal handler: Ctrl-C, SIGTERM) to stop: the sender sends
+  /// ABORT, so the controller stops at once (alarm "aborted", spindle off)
+  /// rather than waiting for the session timeout, and throws
+  /// ControllerError errc::link_cancelled saying what was acknowledged and
+  /// executed. Checked between requests: within one request timeout.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct StreamResult {
@@ -72,5 +79,20 @@ StreamResult stream_program(std::string_view program, const Endpoint& to, const 
 /// above; IoError also when `connect` throws it.
 StreamResult stream_program(std::string_view program, const TransportFactory& connect, const std::string& peer,
                             const StreamOptions& opt = {});
+
+/// What a controller says about itself: its status registers, the alarm
+/// text and the profile it enforces.
+struct ControllerReport {
+  Status status;
+  std::string alarm_text, machine;
+};
+/// Reads the controller's status (IoError when it cannot be reached,
+/// link.protocol when it is not a bezcam controller).
+ControllerReport controller_status(const Endpoint& to, std::chrono::milliseconds timeout);
+/// The operator's stop: aborts whatever transfer the controller holds
+/// (ABORT with token 0 and the open session, docs/modbus-register-map.md),
+/// whoever sent it, and returns the state after. A controller with no open
+/// transfer is left as it is.
+ControllerReport abort_controller(const Endpoint& to, std::chrono::milliseconds timeout);
 
 }  // namespace bezcam::link
