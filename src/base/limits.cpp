@@ -2,6 +2,8 @@
 // before it is read, so that a huge or endless input never fills memory.
 #include "bezcam/limits.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <system_error>
 
@@ -30,12 +32,18 @@ std::string read_bounded(const std::filesystem::path& file, std::size_t max_byte
   // A regular file is measured first; a pipe or device is read up to one
   // byte past the limit.
   std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw IoError(errc::io_read, Place::at_file(file.string()), "is a directory; give the " + what);
   if (std::filesystem::is_regular_file(file, ec)) {
     const std::uintmax_t size = std::filesystem::file_size(file, ec);
     if (!ec && size > max_bytes) too_large(file, size, max_bytes, what);
   }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(errc::io_read, Place::at_file(file.string()), "cannot open the " + what + " for reading");
+  if (!in) {
+    const int err = errno;
+    throw IoError(errc::io_read, Place::at_file(file.string()),
+                  "cannot open the " + what + ": " + std::strerror(err ? err : ENOENT));
+  }
   std::string text;
   char buf[1 << 16];
   while (in) {

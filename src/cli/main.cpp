@@ -15,6 +15,7 @@
 #include <iostream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/job/keys.hpp"
 #include "bezcam/version.hpp"
 #include "command.hpp"
 
@@ -158,6 +159,21 @@ bezcam::Error as_shown(const bezcam::Error& e) {
   return e;
 }
 
+// For `--tol 0.1`: the option of the command the user most likely meant (a
+// unique prefix, or within a few edits), or "".
+std::string option_meant(const CLI::App& cmd, const std::string& given) {
+  const std::string name = given.substr(0, given.find('='));
+  std::vector<std::string> longs;
+  for (const CLI::Option* opt : cmd.get_options())
+    for (const auto& l : opt->get_lnames()) longs.push_back("--" + l);
+  std::vector<std::string> prefixed;
+  for (const auto& l : longs)
+    if (l.rfind(name, 0) == 0) prefixed.push_back(l);
+  if (prefixed.size() == 1) return prefixed.front();
+  std::vector<std::string_view> known(longs.begin(), longs.end());
+  return bezcam::resembled_key(name, known).value_or("");
+}
+
 int exit_status(bezcam::ErrorFamily family) {
   switch (family) {
     case bezcam::ErrorFamily::input: return 2;
@@ -174,6 +190,8 @@ int main(int argc, char** argv) {
                "streamed to controllers over Modbus TCP."};
   app.set_version_flag("--version", std::string("bezcam ") + kVersion);
   app.require_subcommand(1);
+  // --help shows every option's default (timeouts, buffer, retries...).
+  app.option_defaults()->always_capture_default(true);
   auto& cmds = cli::commands();
   std::sort(cmds.begin(), cmds.end(), [](auto* a, auto* b) { return a->name < b->name; });
   for (auto* c : cmds) c->app = c->add(app);
@@ -181,6 +199,19 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
+      for (auto* c : cmds) {
+        if (!c->app || !c->app->parsed()) continue;
+        for (const auto& extra : c->app->remaining()) {
+          if (extra.size() < 2 || extra[0] != '-') continue;
+          if (const std::string meant = option_meant(*c->app, extra); !meant.empty()) {
+            std::cerr << "bezcam: error: " << c->name << " has no option " << extra.substr(0, extra.find('='))
+                      << ": did you mean " << meant << "?\n  (bezcam " << c->name << " --help lists its options)\n";
+            return 2;
+          }
+        }
+      }
+    }
     // Usage errors read like every other refusal: one sentence, then how
     // to find the right form.
     std::cerr << "bezcam: error: " << e.what()

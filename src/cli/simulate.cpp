@@ -20,6 +20,7 @@
 #include "bezcam/sim/trace.hpp"
 #include "bezcam/link/transport.hpp"
 #include "command.hpp"
+#include "options.hpp"
 
 namespace bezcam::cli {
 namespace {
@@ -66,10 +67,10 @@ CLI::App* add(CLI::App& app) {
   s->add_option("--buffer", o.buffer, "receive buffer in bytes")->check(CLI::Range(kMinBuffer, kMaxBuffer));
   s->add_option("--max-connections", o.max_connections, "simultaneous Modbus connections")->check(CLI::Range(2, 64));
   s->add_option("--idle-timeout", o.idle_timeout, "close a connection silent this many seconds")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   s->add_option("--session-timeout", o.session_timeout,
                 "stop a transfer whose sender is silent this many seconds (alarm sender-lost)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   s->add_option("--exec-delay-ms", o.exec_delay_ms, "time spent per program line: a slow controller")
       ->check(CLI::NonNegativeNumber);
   s->add_option("--fault", o.faults,

@@ -5,6 +5,7 @@
 
 #include "bezcam/link/streamer.hpp"
 #include "command.hpp"
+#include "options.hpp"
 
 namespace bezcam::cli {
 namespace {
@@ -20,7 +21,7 @@ CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("status", "Print what a controller is doing: state, lines executed, alarm and its "
                                          "line, buffer, spindle, tool and the machine profile it enforces.");
   s->add_option("--to", o.to, "controller address HOST:PORT")->required();
-  s->add_option("--timeout", o.timeout, "seconds to wait for its reply")->check(CLI::PositiveNumber)->capture_default_str();
+  s->add_option("--timeout", o.timeout, "seconds to wait for its reply")->check(positive_number())->capture_default_str();
   s->footer("Examples:\n  bezcam status --to 127.0.0.1:5020\n  bezcam status --to 192.168.0.10:502 --timeout 5");
   return s;
 }

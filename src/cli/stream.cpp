@@ -19,6 +19,7 @@
 #include "bezcam/limits.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "command.hpp"
+#include "options.hpp"
 
 namespace bezcam::cli {
 namespace {
@@ -43,13 +44,13 @@ CLI::App* add(CLI::App& app) {
   s->add_flag("--no-preflight", o.no_preflight,
               "send without first linting the program against the profile the controller enforces");
   s->add_option("--timeout", o.timeout, "seconds to wait for each reply before taking the connection as lost")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   s->add_option("--retries", o.retries, "reconnection attempts after a lost connection")->check(CLI::Range(0, 1000));
   s->add_option("--retry-time", o.retry_time, "seconds spent at most reconnecting after one loss")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   s->add_option("--stall-timeout", o.stall_timeout,
                 "seconds the controller may take no byte and execute no line before giving up")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   s->add_option("--chunk", o.chunk, "payload bytes per request (default: the controller's maximum)")
       ->check(CLI::Range(1, static_cast<int>(kMaxChunkBytes)));
   s->add_option("--progress", o.progress, "auto (a bar on a terminal, plain lines otherwise), bar, lines or off")

@@ -148,3 +148,31 @@ TEST(Cli, ToleranceOverrideChangesTheProgram) {
   EXPECT_LT(std::count(coarse.out.begin(), coarse.out.end(), '\n'), std::count(fine.out.begin(), fine.out.end(), '\n'));
   EXPECT_EQ(run("convert -q " + kSrc + "/samples/curve-semicircle.json --tolerance -1").status, 2);
 }
+
+// Messages a machinist can act on (issue "Safe on the shop floor",
+// "Messages and help").
+TEST(Cli, MessagesSayWhatWasMeant) {
+  const std::string job = kSrc + "/samples/curve-semicircle.json";
+  Result r = run("convert " + job + " --tolerance -1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("--tolerance: expected a number > 0, found -1"), std::string::npos) << r.out;
+  EXPECT_LT(r.out.size(), 300u) << r.out;  // no range up to the largest double
+  r = run("convert " + job + " --tol 0.1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("convert has no option --tol: did you mean --tolerance?"), std::string::npos) << r.out;
+  r = run("stream x.nc --to 127.0.0.1:1 --retrys 3");
+  EXPECT_NE(r.out.find("did you mean --retries?"), std::string::npos) << r.out;
+  r = run("convert " + job + " --output out.nc");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("to name the program file, use -o out.nc"), std::string::npos) << r.out;
+  r = run("convert " + kSrc + "/samples");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_NE(r.out.find("is a directory"), std::string::npos) << r.out;
+  r = run("convert " + kSrc + "/no-such-job.json");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_NE(r.out.find("No such file or directory"), std::string::npos) << r.out;
+  // --help shows the defaults.
+  r = run("stream --help");
+  EXPECT_NE(r.out.find("=30"), std::string::npos) << r.out;  // --retries
+  EXPECT_NE(r.out.find("Examples:"), std::string::npos) << r.out;
+}
