@@ -20,11 +20,12 @@ using json = nlohmann::json;
 // The keys a profile may hold, per object (docs/machines.md).
 const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_keys() {
   static const std::vector<std::pair<std::string, std::vector<std::string_view>>> k = {
-      {"", {"name", "description", "header", "footer", "line_numbers", "decimals", "feed_decimals", "words",
+      {"", {"name", "description", "header", "footer", "line_numbers", "decimals", "max_decimals", "feed_decimals", "words",
             "tool_change", "spindle_on", "spindle_off", "preamble", "tool_length", "tool_changer", "spindle_dwell_s",
             "arcs", "arc_tolerance_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults"}},
       {"line_numbers", {"enabled", "start", "step"}},
       {"decimals", {"mm", "inch"}},
+      {"max_decimals", {"mm", "inch"}},
       {"words", {"rapid", "feed", "cw", "ccw"}},
       {"nurbs", {"dialect", "start_word", "max_rank", "knot_decimals", "weight_decimals", "fixed_decimals"}},
       {"travel_mm", {"x", "y", "z"}},
@@ -140,6 +141,17 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
     if (auto s = r.opt(*v, "inch")) m.decimals_inch = r.integer(*s, "decimals.inch");
     if (m.decimals_mm < 0 || m.decimals_mm > 9 || m.decimals_inch < 0 || m.decimals_inch > 9)
       r.fail("decimals", "expected decimals between 0 and 9");
+  }
+  if (auto v = r.opt(doc, "max_decimals")) {
+    if (!v->is_object()) r.fail("max_decimals", "expected an object {\"mm\": N, \"inch\": N}");
+    if (auto s = r.opt(*v, "mm")) m.max_decimals_mm = r.integer(*s, "max_decimals.mm");
+    if (auto s = r.opt(*v, "inch")) m.max_decimals_inch = r.integer(*s, "max_decimals.inch");
+    if (m.max_decimals_mm > 9 || m.max_decimals_inch > 9)
+      r.fail("max_decimals", "expected at most 9 decimals");
+    if ((m.max_decimals_mm >= 0 && m.max_decimals_mm < m.decimals_mm) ||
+        (m.max_decimals_inch >= 0 && m.max_decimals_inch < m.decimals_inch))
+      r.fail("max_decimals", "expected at least the profile's decimals (" + std::to_string(m.decimals_mm) + " mm, " +
+                                 std::to_string(m.decimals_inch) + " inch)");
   }
   if (auto v = r.opt(doc, "feed_decimals")) m.feed_decimals = r.integer(*v, "feed_decimals");
   if (auto v = r.opt(doc, "words")) {

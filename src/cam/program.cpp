@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
@@ -141,7 +142,11 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
     if (!tolerance && !(id == errc::limit_segments && e.place().relative_path() == "tolerance")) throw;
     throw InputError(e.id(), opt.tolerance ? Place::at_setting("tolerance") : Place::in_json(job.source, "tolerance"),
                      e.message() + " (machine \"" + m.name + "\" prints " + std::to_string(m.decimals(job.units)) +
-                         " decimals in " + to_string(job.units) + ")");
+                         " decimals in " + to_string(job.units) +
+                         (m.max_decimals(job.units) > m.decimals(job.units)
+                              ? ", at most " + std::to_string(m.max_decimals(job.units)) + " when the tolerance needs them"
+                              : std::string()) +
+                         ")");
   }
 }
 
@@ -176,6 +181,24 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
   p.output = opt.output;
   p.tolerance = opt.tolerance.value_or(job.tolerance);
   p.decimals = m.decimals(job.units);
+  // Decimals from the tolerance: where the profile's default would use up
+  // the tolerance in rounding alone (check_tolerance() refuses from 90 %),
+  // print as many more as the controller accepts to keep rounding under
+  // half of it. Beyond the controller's most, the refusal stands.
+  if (max_rounding_displacement(p.decimals, 3) >= 0.9 * p.tolerance) {
+    const int most = m.max_decimals(job.units);
+    int d = p.decimals;
+    while (d < most && max_rounding_displacement(d, 3) >= 0.5 * p.tolerance) ++d;
+    if (d != p.decimals)
+      p.notes.push_back("coordinates with " + std::to_string(d) + " decimals for tolerance " + [&] {
+                          char b[32];
+                          std::snprintf(b, sizeof b, "%g", p.tolerance);
+                          return std::string(b);
+                        }() +
+                        " " + to_string(job.units) + " (machine " + m.name + ": " + std::to_string(p.decimals) +
+                        " by default, at most " + std::to_string(most) + ")");
+    p.decimals = d;
+  }
   p.warnings = job.warnings;
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
 

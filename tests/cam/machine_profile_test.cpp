@@ -9,6 +9,8 @@
 
 #include "bezcam/cam/machine_profile.hpp"
 #include "bezcam/error.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "support/files.hpp"
 
 namespace {
@@ -80,4 +82,43 @@ TEST(MachineProfile, TheNameIsTheFilesName) {
   }
   bezcam::test::write_file(d / "mill.json", R"({"name": "mill"})");
   EXPECT_EQ(bezcam::load_machine_profile((d / "mill.json").string(), {}).name, "mill");
+}
+
+namespace {
+bezcam::ConvertResult convert_text(const std::string& job, const char* machine) {
+  return bezcam::convert(bezcam::parse_job(job, "t.json"), bezcam::load_machine_profile(machine), {});
+}
+}  // namespace
+
+TEST(MachineProfile, DecimalsComeFromTheTolerance) {
+  // 0.0005 mm: generic's 3 decimals would spend 0.00087 in rounding alone;
+  // 4 keep it under half the tolerance, and generic accepts up to 6.
+  const auto r = convert_text(R"({"bezcam": 1, "tolerance": 0.0005, "entities": [{"type": "bezier", "points": [[0,0],[10,20],[20,0]]}]})",
+                              "generic");
+  EXPECT_EQ(r.program.decimals, 4);
+  EXPECT_NE(r.gcode.find("(coordinates with 4 decimals for tolerance 0.0005 mm [machine generic: 3 by default, at most 6])"),
+            std::string::npos)
+      << r.gcode.substr(0, 400);
+  EXPECT_NE(r.gcode.find("X0.1953 Y0.3869"), std::string::npos);
+  EXPECT_LE(r.program.max_bound, 0.0005);
+  // A tolerance the default decimals hold keeps them (no golden changes).
+  const auto d = convert_text(R"({"bezcam": 1, "tolerance": 0.01, "entities": [{"type": "bezier", "points": [[0,0],[10,20],[20,0]]}]})",
+                              "generic");
+  EXPECT_EQ(d.program.decimals, 3);
+}
+
+TEST(MachineProfile, MaxDecimalsBelowTheDecimalsIsRefused) {
+  auto e = refusal(R"({"name": "p", "decimals": {"mm": 4}, "max_decimals": {"mm": 3}})");
+  EXPECT_EQ(e.where(), "p.json: max_decimals");
+}
+
+TEST(MachineProfile, GenericIsNotAMachineAndHasNoTravel) {
+  // A part 100 m from the origin is a valid job for generic.
+  const auto r = convert_text(R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[100000,0],[100010,20],[100020,0]]}]})",
+                              "generic");
+  EXPECT_NE(r.gcode.find("X100020."), std::string::npos);
+  // ... and refused by a machine.
+  EXPECT_THROW(convert_text(R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[100000,0],[100010,20],[100020,0]]}]})",
+                            "fanuc"),
+               InputError);
 }

@@ -1,7 +1,9 @@
 #pragma once
 /// A machine profile: everything that differs between controllers, as data
 /// (machines/NAME.json; docs/machines.md documents every key).
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -12,6 +14,9 @@
 #include "bezcam/kernel/units.hpp"
 
 namespace bezcam {
+
+/// The travel of a profile that states none.
+inline constexpr double kNoTravelLimit = std::numeric_limits<double>::infinity();
 
 struct MachineProfile {
   std::string name;
@@ -24,6 +29,10 @@ struct MachineProfile {
   bool line_numbers = false;
   int line_start = 10, line_step = 10;
   int decimals_mm = 3, decimals_inch = 4;
+  /// The most coordinate decimals the controller accepts (key
+  /// `max_decimals`): a tolerance the default decimals cannot hold gets as
+  /// many as it needs, up to these (default: the decimals themselves).
+  int max_decimals_mm = -1, max_decimals_inch = -1;
   int feed_decimals = 1;
   std::string word_rapid = "G00", word_feed = "G01", word_cw = "G02", word_ccw = "G03";
   std::string tool_change = "T{tool} M06";  ///< {tool} is replaced
@@ -51,12 +60,19 @@ struct MachineProfile {
   /// X55.507 Y52.139 Z0.000 R1.000`, the seeds' listing) instead of with
   /// trailing zeros trimmed (`K0. X55.507 ... R1.`).
   bool nurbs_fixed_decimals = false;
-  /// Travel in program coordinates, mm: {min, max} per axis.
-  std::array<std::array<double, 2>, 3> travel_mm{{{-1e4, 1e4}, {-1e4, 1e4}, {-1e4, 1e4}}};
+  /// Travel in program coordinates, mm: {min, max} per axis; none (the
+  /// whole line) unless the profile gives it: `generic` is not a machine.
+  std::array<std::array<double, 2>, 3> travel_mm{{{-kNoTravelLimit, kNoTravelLimit},
+                                                  {-kNoTravelLimit, kNoTravelLimit},
+                                                  {-kNoTravelLimit, kNoTravelLimit}}};
   double max_feed_mm_min = 1e5;
   JobParams defaults;  ///< feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool (mm)
 
   int decimals(Units u) const { return u == Units::mm ? decimals_mm : decimals_inch; }
+  int max_decimals(Units u) const {
+    const int m = u == Units::mm ? max_decimals_mm : max_decimals_inch;
+    return std::max(m, decimals(u));
+  }
 };
 
 /// Parses a profile document; `source` names it in messages.
