@@ -92,6 +92,8 @@ inline constexpr ErrorId gcode_dialect{"gcode.dialect"};
 inline constexpr ErrorId gcode_dwell{"gcode.dwell"};
 /// A feed rate F is negative or above the machine's maximum.
 inline constexpr ErrorId gcode_feed{"gcode.feed"};
+/// A feed rate above the machine's maximum (the controller's feed-limit alarm).
+inline constexpr ErrorId gcode_feed_limit{"gcode.feed-limit"};
 /// G91 incremental distances are not supported.
 inline constexpr ErrorId gcode_incremental{"gcode.incremental"};
 /// A NURBS block's first or last knots are not clamped.

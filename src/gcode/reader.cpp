@@ -114,7 +114,7 @@ void GcodeInterpreter::Impl::check_feed_limit(double feed) {
   const double max = from_mm(self.profile_->max_feed_mm_min);
   if (feed > max && feed != mo.feed_reported) {
     mo.feed_reported = feed;  // lint: once per feed value, not on every move at it
-    soft(errc::gcode_feed, "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" + machine() + ", " +
+    soft(errc::gcode_feed_limit, "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" + machine() + ", " +
                      fmt_num(max) + " " + unit() + "/min");
   }
 }

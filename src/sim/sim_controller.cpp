@@ -23,9 +23,10 @@ constexpr ConnId kLocal = std::numeric_limits<ConnId>::max();  // run_program's 
 
 // The interpreter's error ids say what kind of refusal it was; the alarm
 // code is the coarse, numbered version a PLC can switch on.
-Alarm alarm_for(const std::string& id, const std::string& message) {
+// The alarm code is a function of the error id alone.
+Alarm alarm_for(const std::string& id) {
   if (id == errc::gcode_travel) return Alarm::travel_limit;
-  if (id == errc::gcode_feed && message.find("maximum") != std::string::npos) return Alarm::feed_limit;
+  if (id == errc::gcode_feed_limit) return Alarm::feed_limit;
   if (id == errc::gcode_nurbs_open) return Alarm::incomplete;
   return Alarm::gcode;
 }
@@ -536,7 +537,7 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
     text += trace_state(static_cast<int>(no), before, interp.state());
   } catch (const Error& e) {
     id = e.id();
-    failed.emplace(alarm_for(e.id(), e.message()), e.message());
+    failed.emplace(alarm_for(e.id()), e.message());
   } catch (const std::exception& e) {
     id = errc::sim_internal;
     failed.emplace(Alarm::gcode, std::string("internal error: ") + e.what());

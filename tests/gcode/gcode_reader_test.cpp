@@ -416,7 +416,7 @@ TEST(GcodeReader, ProfileLimitsAndDialect) {
   EXPECT_EQ(e.id(), "gcode.travel");
   EXPECT_EQ(e.message(), "the move reaches X = 500 mm, outside the travel of machine \"grbl\" (X from -400 to 400 mm)");
   e = refusal("G21 G90 G17\nG0 X0 Y0 Z0\nG1 X1 F6000\n", &grbl);
-  EXPECT_EQ(e.id(), "gcode.feed");
+  EXPECT_EQ(e.id(), "gcode.feed-limit");
   EXPECT_EQ(e.message(), "feed F6000 (mm/min) exceeds the maximum feed of machine \"grbl\", 5000 mm/min");
   // An arc is checked by its full extent, not its ends: this one bulges to Y = 410.
   e = refusal("G21 G90 G17 F100\nG0 X-10 Y400 Z0\nG2 X10 Y400 I10 J0\n", &grbl);

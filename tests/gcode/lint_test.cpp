@@ -98,7 +98,7 @@ TEST(Lint, EveryProblemOnItsLineAndLintGoesOn) {
                            kTail;
   const auto fs = lint_gcode(prog, profile("grbl"));
   EXPECT_EQ(brief(fs), (std::vector<std::string>{"9:gcode.syntax", "10:gcode.arc-radius", "11:gcode.travel",
-                                                 "12:gcode.feed", "13:gcode.plane", "14:gcode.repeated-word",
+                                                 "12:gcode.feed-limit", "13:gcode.plane", "14:gcode.repeated-word",
                                                  "15:gcode.unsupported"}));
   EXPECT_EQ(fs[2].message, "the move reaches X = 500 mm, outside the travel of machine \"grbl\" (X from -400 to 400 mm)");
 }

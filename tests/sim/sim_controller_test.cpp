@@ -336,6 +336,20 @@ TEST(SimController, TravelLimitsOfTheProfileAreEnforced) {
   EXPECT_EQ(s.alarm_line, 4u);
 }
 
+TEST(SimController, AFeedAboveTheMachinesIsTheFeedLimitAlarm) {
+  // The alarm code comes from the error id (gcode.feed-limit), and a
+  // negative feed (gcode.feed) is a plain G-code alarm.
+  ControllerConfig cfg;
+  cfg.profile = load_machine_profile("unisurf");  // 2000 mm/min at most
+  SimController ctl(cfg);
+  Status s = ctl.run_program("G21 G90 G17\nG00 Z5.\nG00 X10. Y10.\nG01 X20. F3000.\nM30\n");
+  EXPECT_EQ(s.alarm, Alarm::feed_limit) << ctl.alarm_text();
+  EXPECT_EQ(s.alarm_line, 4u);
+  SimController neg(cfg);
+  s = neg.run_program("G21 G90 G17\nG00 Z5.\nG01 X20. F-3.\nM30\n");
+  EXPECT_EQ(s.alarm, Alarm::gcode) << neg.alarm_text();
+}
+
 TEST(SimController, ALineLongerThanTheBufferIsRefusedNotHung) {
   ControllerConfig cfg;
   cfg.profile = generic();
