@@ -117,7 +117,8 @@ public:
       : Error(ErrorFamily::controller, id, std::move(where), std::move(what)) {}
 };
 
-/// Formats a number for messages: shortest text that reads back exactly.
+/// Formats a number for messages: rounded to 10 significant digits (the
+/// last bits of arithmetic are not news), in the shortest text for that.
 std::string fmt_num(double v);
 
 }  // namespace bezcam

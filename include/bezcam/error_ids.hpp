@@ -186,6 +186,8 @@ inline constexpr ErrorId job_gouge{"job.gouge"};
 inline constexpr ErrorId job_key_typo{"job.key-typo"};
 /// The coolant is not "flood", "mist" or "off".
 inline constexpr ErrorId job_coolant{"job.coolant"};
+/// A `before` / `after` line holds a line break or an unknown placeholder.
+inline constexpr ErrorId job_template{"job.template"};
 /// An interpolation method bezcam does not know, or closed with the wrong method.
 inline constexpr ErrorId job_method{"job.method"};
 /// A required key or parameter is missing.
@@ -360,6 +362,8 @@ inline constexpr ErrorId surface_normal_undefined{"surface.normal-undefined"};
 inline constexpr ErrorId toolpath_stepover{"toolpath.stepover"};
 /// A surface needs more passes than the limit.
 inline constexpr ErrorId toolpath_too_many_passes{"toolpath.too-many-passes"};
+/// A program option (--return-to, --origin, --preamble, ...) that cannot be read.
+inline constexpr ErrorId usage_option{"usage.option"};
 /// An output mode the machine or command does not take.
 inline constexpr ErrorId usage_output{"usage.output"};
 /// Preview options that do not go together.

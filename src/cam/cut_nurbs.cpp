@@ -61,6 +61,8 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
     if (!b.note.empty() && notes.find(b.note) == std::string::npos) notes += (notes.empty() ? "" : "; ") + b.note;
   if (!notes.empty()) {
     c.program.moves.push_back({Comment{"not exact: " + notes}, entity});
+    // Every fallback is said on stderr, not only in the program.
+    c.program.warnings.push_back(c.entity.label() + ": not cut as exact blocks in nurbs output: " + notes);
   }
   r.blocks = 0;
   r.bound = 0;

@@ -22,6 +22,7 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
   static const std::vector<std::pair<std::string, std::vector<std::string_view>>> k = {
       {"", {"name", "description", "header", "footer", "line_numbers", "decimals", "max_decimals", "feed_decimals", "words",
             "tool_change", "spindle_on", "spindle_off", "preamble", "tool_length", "tool_changer", "spindle_dwell_s",
+            "comments", "modal", "program_number", "tool_change_position",
             "arcs", "arc_tolerance_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults"}},
       {"line_numbers", {"enabled", "start", "step"}},
       {"decimals", {"mm", "inch"}},
@@ -37,9 +38,9 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
 // The placeholders each template may use (the writer replaces them).
 const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_placeholders() {
   static const std::vector<std::pair<std::string, std::vector<std::string_view>>> p = {
-      {"header", {"safe_z"}},  {"footer", {"safe_z"}},     {"tool_change", {"tool"}},
+      {"header", {"safe_z", "program"}},  {"footer", {"safe_z", "program"}},     {"tool_change", {"tool"}},
       {"spindle_on", {"rpm"}}, {"spindle_off", {}},     {"preamble", {}},
-      {"tool_length", {"tool"}},
+      {"tool_length", {"tool"}}, {"tool_change_position", {}},
   };
   return p;
 }
@@ -168,6 +169,19 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   if (auto v = r.opt(doc, "tool_changer")) {
     if (!v->is_boolean()) r.fail("tool_changer", "expected true or false");
     m.tool_changer = v->get<bool>();
+  }
+  if (auto v = r.opt(doc, "tool_change_position")) m.tool_change_position = r.lines(*v, "tool_change_position");
+  for (size_t i = 0; i < m.tool_change_position.size(); ++i)
+    r.check_placeholders("tool_change_position[" + std::to_string(i) + "]", m.tool_change_position[i]);
+  for (const auto& [key, out] : {std::pair{"comments", &m.comments}, std::pair{"modal", &m.modal}})
+    if (auto v = r.opt(doc, key)) {
+      if (!v->is_boolean()) r.fail(key, "expected true or false");
+      *out = v->get<bool>();
+    }
+  if (auto v = r.opt(doc, "program_number")) {
+    if (!v->is_number_integer() || v->get<long>() < 1 || v->get<long>() > 99999999)
+      r.fail("program_number", "expected a program number from 1 to 99999999");
+    m.program_number = v->get<long>();
   }
   if (auto v = r.opt(doc, "spindle_dwell_s")) {
     m.spindle_dwell_s = r.num(*v, "spindle_dwell_s");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <charconv>
 #include <cstdio>
 
 #include "bezcam/error.hpp"
@@ -43,13 +44,51 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
                            "\"; add \"" + key + "\" to the file's \"job\" object");
     return *v;
   };
-  CutParams c{need(p.feed, "feed"),       need(p.plunge_feed, "plunge_feed"), need(p.safe_z, "safe_z"),
-              need(p.cut_z, "cut_z"),     p.spindle_rpm.value_or(0),          p.tool_radius.value_or(0),
-              p.tool.value_or(1),             p.coolant.value_or(Coolant::off)};
+  CutParams c{need(p.feed, "feed"),   need(p.plunge_feed, "plunge_feed"), need(p.safe_z, "safe_z"),
+              need(p.cut_z, "cut_z"), p.spindle_rpm.value_or(0),          p.tool_radius.value_or(0),
+              p.tool.value_or(1),     p.coolant.value_or(Coolant::off),   std::nullopt,
+              0,                      {},                                  {}};
+  c.clearance = p.clearance;
+  c.top_z = p.top_z.value_or(0);
+  if (p.before) c.before = *p.before;
+  if (p.after) c.after = *p.after;
+  if (c.clearance && c.top_z + *c.clearance <= c.cut_z && !e.surface)
+    throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
+                     "the clearance plane (top_z " + fmt_num(c.top_z) + " + clearance " + fmt_num(*c.clearance) +
+                         ") is not above cut_z = " + fmt_num(c.cut_z) + ": the tool would rapid into the cut; raise "
+                         "\"clearance\" or \"top_z\"");
   if (c.cut_z >= c.safe_z)
     throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".cut_z"),
                      "expected cut_z below safe_z (" + fmt_num(c.safe_z) + "), found " + fmt_num(c.cut_z));
   return c;
+}
+
+std::string expand_entity_template(const std::string& text, const Entity& e, const CutParams& c, int decimals) {
+  auto num = [&](double v) {
+    const double q = quantize(v, decimals);
+    char b[64];
+    return std::string(b, std::to_chars(b, b + sizeof b, q == 0 ? 0.0 : q).ptr);  // never "-0"
+  };
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const size_t close = text[i] == '{' ? text.find('}', i) : std::string::npos;
+    if (close == std::string::npos) {
+      out += text[i];
+      continue;
+    }
+    const std::string name = text.substr(i + 1, close - i - 1);
+    if (name == "entity") out += e.label();
+    else if (name == "tool") out += std::to_string(c.tool);
+    else if (name == "rpm") out += std::to_string(std::llround(c.spindle_rpm));
+    else if (name == "feed") out += fmt_num(std::round(c.feed * 10) / 10);
+    else if (name == "plunge_feed") out += fmt_num(std::round(c.plunge_feed * 10) / 10);
+    else if (name == "cut_z") out += num(c.cut_z);
+    else if (name == "safe_z") out += num(c.safe_z);
+    else if (name == "top_z") out += num(c.top_z);
+    else throw std::logic_error("unchecked placeholder {" + name + "}");
+    i = close;
+  }
+  return out;
 }
 
 namespace detail {
@@ -70,6 +109,10 @@ void change_tool_and_spindle(Program& p, const MachineProfile& m, const CutParam
       up.to = {ms.pos.x, ms.pos.y, safe};
       push(up);
       ms.pos = up.to;
+    }
+    if (!m.tool_change_position.empty() && (m.tool_changer || !first)) {
+      push(ToolChangePosition{});
+      ms.pos_known = false;  // somewhere up: the next approach sets Z first
     }
     if (m.tool_changer) {
       push(ToolChange{cp.tool});
@@ -153,9 +196,10 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 namespace {
 
 // Retract (straight up) if not at this entity's safe Z, rapid over the
-// start, plunge at the plunge feed. Leaves `ms.pos` where it was: the
-// caller takes the position from the cut that follows.
-void approach(Program& p, int entity, const Vec3& start, double safe, double plunge_feed,
+// start, rapid down to the clearance plane `clear` (when below safe), plunge
+// at the plunge feed. Leaves `ms.pos` where it was: the caller takes the
+// position from the cut that follows.
+void approach(Program& p, int entity, const Vec3& start, double safe, double clear, double plunge_feed,
               const detail::MotionState& ms) {
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
   if (!ms.pos_known || ms.pos.z != safe) {
@@ -167,10 +211,39 @@ void approach(Program& p, int entity, const Vec3& start, double safe, double plu
   RapidMove over;
   over.to = {start.x, start.y, safe};
   push({over, entity});
+  if (clear < safe) {
+    RapidMove down;
+    down.to = {start.x, start.y, clear};
+    push({down, entity});
+  }
   LineMove plunge;
   plunge.to = start;
   plunge.feed = plunge_feed;
   push({plunge, entity});
+}
+
+// Adds the offset (rounded to the program's decimals) to every X and Y,
+// and rounds again: a decimal plus a decimal is the decimal the
+// controller reads, so the measured deviation holds for the moved part.
+void move_part(Program& p, const Vec3& offset) {
+  const Vec3 d{quantize(offset.x, p.decimals), quantize(offset.y, p.decimals), 0};
+  if (d.x == 0 && d.y == 0) return;
+  p.offset = d;
+  auto shift = [&](Vec3& v) {
+    v.x = quantize(v.x + d.x, p.decimals);
+    v.y = quantize(v.y + d.y, p.decimals);
+  };
+  for (Move& mv : p.moves)
+    std::visit([&](auto& x) {
+      using T = std::decay_t<decltype(x)>;
+      if constexpr (std::is_base_of_v<Motion, T>) shift(x.to);
+      if constexpr (std::is_same_v<T, ArcMove>) shift(x.center);
+      if constexpr (std::is_same_v<T, CurveMove>)
+        for (auto& c : x.ctrl) shift(c);
+    }, mv.what);
+  const bool rounded = d.x != offset.x || d.y != offset.y;
+  p.notes.push_back("the part is moved by X" + fmt_num(d.x) + " Y" + fmt_num(d.y) +
+                    (rounded ? " (the offset rounded to " + std::to_string(p.decimals) + " decimals)" : ""));
 }
 
 Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
@@ -200,6 +273,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     p.decimals = d;
   }
   p.warnings = job.warnings;
+  p.program_number = opt.program_number ? opt.program_number : job.program_number;
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
 
   int cur_tool = -1;
@@ -220,6 +294,8 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
       detail::CutContext sc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
       detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known, cur_coolant};
       const EntityReport r = detail::emit_surface(sc, ms);
+      for (const auto& line : cp.after)
+        push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, static_cast<int>(e.index)});
       p.max_measured = std::max(p.max_measured, r.measured);
       p.max_bound = std::max(p.max_bound, r.bound);
       p.entities.push_back(r);
@@ -249,7 +325,18 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
     const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
     const int entity = static_cast<int>(e.index);
-    approach(p, entity, start, safe, cp.plunge_feed, ms);
+    r.tool = cp.tool;
+    double clear = safe;
+    if (cp.clearance) {
+      clear = std::min(safe, quantize(cp.top_z + *cp.clearance, p.decimals));
+      if (clear <= start.z)
+        throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
+                         "the clearance plane z = " + fmt_num(clear) + " is not above the curve's start (z = " +
+                             fmt_num(start.z) + "): the tool would rapid into the cut; raise \"clearance\" or \"top_z\"");
+      if (clear < safe) r.clear_z = clear;
+    }
+    for (const auto& line : cp.before) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});
+    approach(p, entity, start, safe, clear, cp.plunge_feed, ms);
 
     switch (opt.output) {
       case OutputMode::lines: detail::emit_lines(ctx, r); break;
@@ -262,6 +349,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     push({retract, entity});
     pos = retract.to;
     pos_known = true;
+    for (const auto& line : cp.after) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});
     p.max_measured = std::max(p.max_measured, r.measured);
     p.max_bound = std::max(p.max_bound, r.bound);
     p.entities.push_back(r);
@@ -269,6 +357,32 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
   }
   // The coolant stops with the cut; the profile's footer stops the spindle.
   if (cur_coolant != Coolant::off) push({CoolantMove{Coolant::off}});
+  move_part(p, opt.offset);
+  if (opt.return_to) {
+    const Vec3 to{quantize(opt.return_to->x, p.decimals), quantize(opt.return_to->y, p.decimals),
+                  quantize(opt.return_to->z, p.decimals)};
+    const double up = std::max(pos_known ? pos.z : p.safe_z, p.safe_z);
+    RapidMove lift;
+    lift.to = {to.x, to.y, up};
+    if (!pos_known) lift.axes = kAxisZ;
+    if (to.z > up) {  // going up first, then across
+      lift.to = {pos.x + p.offset.x, pos.y + p.offset.y, to.z};
+      lift.axes = kAxisZ;
+      push({lift});
+      RapidMove across;
+      across.to = to;
+      push({across});
+    } else {
+      RapidMove across;
+      across.to = {to.x, to.y, up};
+      push({across});
+      if (to.z < up) {
+        RapidMove down;
+        down.to = to;
+        push({down});
+      }
+    }
+  }
   if (opt.on_entity) opt.on_entity(job.entities.size(), job.entities.size(), "");
   return p;
 }

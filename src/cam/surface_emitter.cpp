@@ -75,6 +75,15 @@ class SurfaceEmitter {
 
   EntityReport run() {
     check_safe_z();
+    rep_.tool = c_.params.tool;
+    if (c_.params.clearance) {
+      // Passes link at the clearance above the surface's top (or the
+      // stock's, when higher), never lower.
+      clear_ = std::min(safe_, quantize(std::max(bounds(s_).hi.z, c_.params.top_z) + *c_.params.clearance, c_.decimals));
+      if (clear_ < safe_) rep_.clear_z = clear_;
+    } else {
+      clear_ = safe_;
+    }
     try {
       if (e_.type == "curve_on_surface") {
         cut_curve_on_surface();
@@ -98,7 +107,8 @@ class SurfaceEmitter {
   MotionState& st_;
   const Entity& e_;
   const SurfaceGeometry& s_;
-  double r_, safe_;
+  double r_, safe_, clear_ = 0;
+  bool started_ = false;  // the tool has cut this entity: links go at the clearance plane
   GougePolicy policy_;
   EntityReport rep_;
   size_t skipped_ = 0;
@@ -130,6 +140,8 @@ class SurfaceEmitter {
     comment("entity " + e_.label() + ": " + e_.type + ", degree " + std::to_string(s_.degree_u()) + " x " +
             std::to_string(s_.degree_v()) + (s_.rational() ? ", rational" : "") + ", " + what +
             (r_ > 0 ? ", ball-end tool radius " + fmt_num(r_) : ", tool tip on the surface"));
+    for (const auto& line : c_.params.before)
+      push({Verbatim{expand_entity_template(line, e_, c_.params, c_.decimals)}});
     if (c_.program.output == OutputMode::nurbs && rep_.blocks == 0)
       c_.program.warnings.push_back(e_.label() + ": surface passes are cut with G01 lines in nurbs output");
   }
@@ -144,10 +156,28 @@ class SurfaceEmitter {
   }
   void go_to(const Vec3& p) {  // retract, rapid over, plunge
     if (st_.pos_known && st_.pos == p) return;
-    retract();
-    RapidMove over;
-    over.to = {p.x, p.y, safe_};
-    push({over});
+    if (started_ && clear_ < safe_) {
+      // Between passes: up to the clearance plane only, across, down.
+      if (st_.pos.z < clear_) {
+        RapidMove up;
+        up.to = {st_.pos.x, st_.pos.y, clear_};
+        push({up});
+      }
+      RapidMove over;
+      over.to = {p.x, p.y, std::max(clear_, st_.pos.z)};
+      push({over});
+    } else {
+      retract();
+      RapidMove over;
+      over.to = {p.x, p.y, safe_};
+      push({over});
+      if (clear_ < safe_) {
+        RapidMove down;
+        down.to = {p.x, p.y, clear_};
+        push({down});
+      }
+    }
+    started_ = true;
     LineMove plunge;
     plunge.to = p;
     plunge.feed = c_.params.plunge_feed;

@@ -80,7 +80,12 @@ void validate_program(const Program& p, const MachineProfile& m) {
     }
     check_box(mv, b, mo->axes | known);
     const bool moves_xy = (mo->axes & 3) && ((known & 3) != 3 || to.x != pos.x || to.y != pos.y);
-    if (rapid && moves_xy && (to.z < p.safe_z || ((known & 4) && pos.z < p.safe_z)))
+    // An entity's clearance plane (surface passes linked above the
+    // surface's top) is as safe as safe Z for that entity's own rapids.
+    double floor = p.safe_z;
+    for (const auto& r : p.entities)
+      if (r.entity == mv.entity && mv.entity >= 0 && r.clear_z < floor) floor = r.clear_z;
+    if (rapid && moves_xy && (to.z < floor || ((known & 4) && pos.z < floor)))
       throw InputError(errc::program_rapid_below_safe_z, where(mv),
                        "a rapid move would cross the part below safe Z (" + fmt_num(p.safe_z) + " " + unit + ")");
     pos = to;

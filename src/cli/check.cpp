@@ -17,12 +17,14 @@ namespace {
 struct Options {
   std::string job;
   ConversionOptions conv;
+  PostOptions post;
 } o;
 
 CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("check", "Validate a job and print what it holds (entities, degrees, lengths, "
                                         "continuity at path joints); writes no G-code.");
   s->add_option("JOB", o.job, "job file (JSON)")->required();
+  add_post_options(s, o.post);
   add_conversion_options(s, o.conv, "the output mode convert would use: lines, arcs or nurbs");
   s->footer("check runs every validation convert runs for the machine (the job's, --machine, else generic): "
             "travel, feeds, safe Z, decimals against the tolerance, the proven and measured deviation; "
@@ -82,10 +84,11 @@ int run() {
   }
   // Everything convert checks, short of writing: a job check accepts is a
   // job convert accepts for the same machine and settings.
-  const MachineProfile m = resolve_profile(job, o.conv.machine);
+  MachineProfile m = resolve_profile(job, o.conv.machine);
   ConvertOptions opt;
   opt.output = parse_output_mode(o.conv.output);
   if (o.conv.tolerance > 0) opt.tolerance = o.conv.tolerance;
+  apply_post_options(o.post, job, m, opt);
   std::vector<std::string> warnings;
   const auto fmt_sig = [](double v) { return format_significant(v, 3); };
   try {

@@ -16,6 +16,7 @@ namespace {
 struct Options {
   std::string job, out = "-", report;
   ConversionOptions conv;
+  PostOptions post;
   bool quiet = false;
 } o;
 
@@ -23,6 +24,7 @@ CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("convert", "Write the G-code program for a job (stdout when no -o).");
   s->add_option("JOB", o.job, "job file (JSON, curve-file format version 1)")->required();
   s->add_option("-o,--output-file", o.out, "program file to write; written whole or not at all");
+  add_post_options(s, o.post);
   add_conversion_options(s, o.conv, "cutting moves: lines (G01), arcs (G02/G03) or nurbs (exact blocks)");
   s->add_option("--report", o.report, "also write a JSON report (per entity: kind, degree, length, blocks, "
                                       "deviation measured and proven; lengths and estimated time); written only "
@@ -39,7 +41,7 @@ int run() {
                      "the report cannot go to the same place as the program (" + (o.out == "-" ? std::string("standard output") : o.out) +
                          "); give --report another file name, or write the program with -o FILE");
   const Job job = read_job(o.job, o.conv.strict);
-  const MachineProfile m = [&] {
+  MachineProfile m = [&] {
     try {
       return resolve_profile(job, o.conv.machine);
     } catch (const Error&) {
@@ -50,6 +52,7 @@ int run() {
   ConvertOptions opt;
   opt.output = parse_output_mode(o.conv.output);
   if (o.conv.tolerance > 0) opt.tolerance = o.conv.tolerance;
+  apply_post_options(o.post, job, m, opt);
   Progress progress("convert", "entities", job.entities.size(), progress_config(o.quiet));
   opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
   ConvertResult r;

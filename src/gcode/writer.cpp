@@ -1,8 +1,12 @@
 #include "bezcam/gcode/writer.hpp"
 #include "bezcam/version.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+
+#include "bezcam/cam/motion.hpp"
 
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/limits.hpp"
@@ -37,17 +41,27 @@ class Writer {
   Writer(const Program& p, const MachineProfile& m) : p_(p), m_(m) {}
 
   std::string run() {
-    for (const auto& h : m_.header) raw(subst(h));
+    bool numbered = false;
+    for (const auto& h : m_.header) {
+      numbered = numbered || h.find("{program}") != std::string::npos;
+      raw(subst(h));
+    }
     const char* u = to_string(p_.units);
-    line(comment(std::string("bezcam ") + kVersion + ": " + p_.job_name + ", machine " + m_.name +
-                 ", output " + to_string(p_.output)));
+    note(std::string("bezcam ") + kVersion + ": " + p_.job_name + ", machine " + m_.name + ", output " +
+         to_string(p_.output));
+    // A number the header does not print (no O word on this controller).
+    if (p_.program_number && !numbered) note("program " + std::to_string(*p_.program_number));
     // Figures in comments in significant digits, never the coordinate
     // formatter: 5e-07 inch is not "0." (issue "Safe on the shop floor").
     const auto sig = [](double v) { return format_significant(v, 4); };
-    line(comment("tolerance " + format_significant(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
-                 measured_text(p_.max_measured, p_.tolerance, sig) + " " + u + ", proven bound " +
-                 sig(p_.max_bound) + " " + u + ", rounding included"));
-    for (const auto& n : p_.notes) line(comment(n));
+    note("tolerance " + format_significant(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
+         measured_text(p_.max_measured, p_.tolerance, sig) + " " + u + ", proven bound " + sig(p_.max_bound) + " " +
+         u + ", rounding included");
+    if (m_.comments) {
+      tools();
+      cycle_time();
+    }
+    for (const auto& n : p_.notes) note(n);
     line(std::string(p_.units == Units::mm ? "G21" : "G20") + " G90 G17");
     for (const auto& l : m_.preamble) line(subst(l));
     for (const Move& mv : p_.moves) move(mv);
@@ -66,7 +80,37 @@ class Writer {
   }
 
   std::string subst(const std::string& s) const {
-    return replace_all(s, "{safe_z}", format_number(p_.safe_z, p_.decimals));
+    char pn[24];
+    std::snprintf(pn, sizeof pn, "%04ld", p_.program_number.value_or(m_.program_number));
+    return replace_all(replace_all(s, "{safe_z}", format_number(p_.safe_z, p_.decimals)), "{program}", pn);
+  }
+  void note(const std::string& text) {
+    if (m_.comments) line(comment(text));
+  }
+  // The tools in the order they are loaded, each with the entities it cuts.
+  void tools() {
+    std::vector<std::pair<int, std::string>> list;
+    for (const EntityReport& e : p_.entities) {
+      auto it = std::find_if(list.begin(), list.end(), [&](const auto& t) { return t.first == e.tool; });
+      if (it == list.end()) list.push_back({e.tool, e.label});
+      else it->second += ", " + e.label;
+    }
+    if (list.empty() || (list.size() == 1 && list.front().first < 0)) return;
+    for (const auto& [tool, labels] : list) note("T" + std::to_string(tool) + ": " + labels);
+  }
+  // The same figure as the report's (motion_totals): feeds and rapids at
+  // their rates, so a lower bound of what the machine takes.
+  void cycle_time() {
+    const double rapid = m_.max_feed_mm_min / mm_per_unit(p_.units);
+    const auto motion = program_motion(p_);
+    const double s = motion_totals(motion, rapid).time_s();
+    char b[96];
+    const long whole = s > 0 ? std::max(1L, std::lround(s)) : 0L;
+    if (whole >= 3600) std::snprintf(b, sizeof b, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60, whole % 60);
+    else if (whole >= 60) std::snprintf(b, sizeof b, "%ld min %02ld s", whole / 60, whole % 60);
+    else std::snprintf(b, sizeof b, "%ld s", whole);
+    note(std::string("estimated cycle time ") + b + ": feeds as programmed, rapids at " +
+         format_significant(rapid, 6) + " " + to_string(p_.units) + "/min, no acceleration, tool changes not counted");
   }
   void raw(const std::string& s) { out_ += s + "\n"; }
   void line(const std::string& s) {
@@ -112,7 +156,13 @@ class Writer {
 
   void move(const Move& mv) {
     if (const auto* c = std::get_if<Comment>(&mv.what)) {
-      line(comment(c->text));
+      note(c->text);
+    } else if (const auto* v = std::get_if<Verbatim>(&mv.what)) {
+      line(v->text);
+    } else if (std::holds_alternative<ToolChangePosition>(mv.what)) {
+      for (const auto& l : m_.tool_change_position) line(l);
+      axis_[2].clear();  // Z is where the machine went: say it again next time
+      motion_.clear();
     } else if (const auto* t = std::get_if<ToolChange>(&mv.what)) {
       line(replace_all(m_.tool_change, "{tool}", std::to_string(t->tool)));
       if (!m_.tool_length.empty()) line(replace_all(m_.tool_length, "{tool}", std::to_string(t->tool)));
@@ -123,7 +173,7 @@ class Writer {
     } else if (const auto* cl = std::get_if<CoolantMove>(&mv.what)) {
       line(cl->mode == Coolant::flood ? word("M8", "M08") : cl->mode == Coolant::mist ? word("M7", "M07") : word("M9", "M09"));
     } else if (const auto* st = std::get_if<ProgramStop>(&mv.what)) {
-      line(word("M0", "M00") + " " + comment(st->message));
+      line(word("M0", "M00") + " " + comment(st->message));  // the operator's message, even without comments
     } else if (const auto* a = std::get_if<ArcMove>(&mv.what)) {
       arc(*a);
     } else if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {
@@ -196,8 +246,16 @@ class Writer {
     auto point = [&](size_t i) {
       const Vec3& p = mv.ctrl[i];
       const double w = mv.weights.empty() ? 1.0 : mv.weights[i];
-      return join({knot(mv.knots[i]), "X" + coord(p.x), "Y" + coord(p.y), "Z" + coord(p.z),
-                   "R" + (fx ? fixed(w, m_.weight_decimals) : format_number(w, m_.weight_decimals))});
+      std::string xyz[3] = {"X" + coord(p.x), "Y" + coord(p.y), "Z" + coord(p.z)};
+      std::string r = "R" + (fx ? fixed(w, m_.weight_decimals) : format_number(w, m_.weight_decimals));
+      if (m_.modal && i > 0) {
+        // Modal words: a coordinate equal to the previous point's, and a
+        // weight of 1 (the default when R is omitted), are left out.
+        for (int a = 0; a < 3; ++a)
+          if (coord(p[a]) == coord(mv.ctrl[i - 1][a])) xyz[a].clear();
+        if (format_number(w, m_.weight_decimals) == "1.") r.clear();
+      }
+      return join({knot(mv.knots[i]), xyz[0], xyz[1], xyz[2], r});
     };
     line(join({m_.nurbs_start_word, "P" + std::to_string(mv.order), point(0), feed(mv.feed)}));
     for (size_t i = 1; i < mv.ctrl.size(); ++i) line(point(i));

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bezcam/error.hpp"
+#include "bezcam/job/keys.hpp"
 #include "bezcam/limits.hpp"
 
 namespace bezcam {
@@ -34,6 +35,17 @@ void check_params(const JobParams& p, const std::string& source, const std::stri
   if (p.tool_radius && (!std::isfinite(*p.tool_radius) || *p.tool_radius < 0))
     throw InputError(errc::job_not_positive, Place::in_json(source, at + "tool_radius"),
                      "expected a finite number >= 0, found " + fmt_num(*p.tool_radius));
+  if (p.top_z) finite(*p.top_z, source, at + "top_z");
+  if (p.clearance && (!std::isfinite(*p.clearance) || *p.clearance < 0))
+    throw InputError(errc::job_range, Place::in_json(source, at + "clearance"),
+                     "expected a height >= 0 above top_z, found " + fmt_num(*p.clearance));
+  for (const auto* seq : {&p.before, &p.after}) {
+    if (!*seq) continue;
+    const std::string key = at + (seq == &p.before ? "before" : "after");
+    for (size_t i = 0; i < (*seq)->size(); ++i)
+      if (auto why = template_problem((**seq)[i], kEntityPlaceholders))
+        throw InputError(errc::job_template, Place::in_json(source, key + "[" + std::to_string(i) + "]"), *why);
+  }
   if (p.tool && *p.tool < 0)
     throw InputError(errc::job_not_positive, Place::in_json(source, at + "tool"), "expected a tool number >= 0, found " + std::to_string(*p.tool));
 }

@@ -1,5 +1,7 @@
 // The only kernel file family that knows JSON: reads a version-1 curve file
 // (docs/job-format.md) into a validated Job.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -223,6 +225,11 @@ CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::
 
 namespace {
 
+// The cutting parameters, at job and entity level (docs/job-format.md).
+constexpr std::array<std::string_view, 13> kParamKeys = {"feed",        "plunge_feed", "safe_z", "cut_z",  "spindle_rpm",
+                                                         "tool",        "tool_radius", "gouge",  "coolant", "clearance",
+                                                         "top_z",       "before",      "after"};
+
 JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& path, bool entity_level) {
   JobParams p;
   auto num = [&](const char* key, std::optional<double>& out, bool must_be_positive) {
@@ -257,8 +264,34 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
     p.tool = ctx.integer(*it, path + ".tool");
     if (*p.tool < 0) ctx.fail(path + ".tool", errc::job_range, "expected a tool number >= 0, found " + std::to_string(*p.tool));
   }
-  if (!entity_level)
-    ctx.check_keys(obj, path, {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius", "gouge", "coolant"});
+  num("clearance", p.clearance, false);
+  num("top_z", p.top_z, false);
+  if (p.clearance && *p.clearance < 0)
+    ctx.fail(path + ".clearance", errc::job_range, "expected a height >= 0 above top_z, found " + fmt_num(*p.clearance));
+  auto sequence = [&](const char* key, std::optional<std::vector<std::string>>& out) {
+    auto it = obj.find(key);
+    if (it == obj.end()) return;
+    const std::string kp = path.empty() ? key : path + "." + key;
+    std::vector<std::string> lines;
+    if (it->is_string()) {
+      lines.push_back(it->get<std::string>());
+    } else {
+      const json& a = ctx.array(*it, kp);
+      for (size_t i = 0; i < a.size(); ++i) lines.push_back(ctx.string(a[i], kp + "[" + std::to_string(i) + "]"));
+    }
+    for (size_t i = 0; i < lines.size(); ++i) {
+      const std::string at = it->is_string() ? kp : kp + "[" + std::to_string(i) + "]";
+      if (auto why = template_problem(lines[i], kEntityPlaceholders)) ctx.fail(at, errc::job_template, *why);
+    }
+    out = std::move(lines);
+  };
+  sequence("before", p.before);
+  sequence("after", p.after);
+  if (!entity_level) {
+    std::vector<std::string_view> keys(kParamKeys.begin(), kParamKeys.end());
+    if (path == "job") keys.push_back("program_number");
+    ctx.check_keys(obj, path, keys);
+  }
   if (p.safe_z && p.cut_z && *p.cut_z >= *p.safe_z)
     ctx.fail(path + ".cut_z", errc::job_range,
              "expected cut_z below safe_z (" + fmt_num(*p.safe_z) + "), found " + fmt_num(*p.cut_z));
@@ -274,11 +307,9 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   e.type = ctx.string(ctx.require(obj, path, "type"), path + ".type");
   if (auto it = obj.find("id"); it != obj.end()) e.id = ctx.string(*it, path + ".id");
   e.params = parse_params(ctx, obj, path, true);
-  static const std::initializer_list<const char*> param_keys = {"feed", "plunge_feed", "safe_z", "cut_z",
-                                                                "spindle_rpm", "tool", "tool_radius", "gouge", "coolant"};
   auto keys = [&](std::initializer_list<const char*> own) {
     std::vector<std::string_view> all(own.begin(), own.end());
-    all.insert(all.end(), param_keys.begin(), param_keys.end());
+    all.insert(all.end(), kParamKeys.begin(), kParamKeys.end());
     all.push_back("id");
     all.push_back("type");
     ctx.check_keys(obj, path, all);
@@ -333,6 +364,10 @@ JobParams JobParams::over(const JobParams& base) const {
   if (tool) r.tool = tool;
   if (gouge) r.gouge = gouge;
   if (coolant) r.coolant = coolant;
+  if (clearance) r.clearance = clearance;
+  if (top_z) r.top_z = top_z;
+  if (before) r.before = before;
+  if (after) r.after = after;
   return r;
 }
 
@@ -425,6 +460,12 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
   if (auto it = doc.find("job"); it != doc.end()) {
     if (!it->is_object()) ctx.expected("job", "an object", *it);
     job.params = detail::parse_params(ctx, *it, "job", false);
+    if (auto pn = it->find("program_number"); pn != it->end()) {
+      const long n = ctx.integer(*pn, "job.program_number");
+      if (n < 1 || n > 99999999)
+        ctx.fail("job.program_number", errc::job_range, "expected a program number from 1 to 99999999, found " + std::to_string(n));
+      job.program_number = n;
+    }
   }
   const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
   if (ents.size() > kMaxEntities)

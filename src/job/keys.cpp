@@ -40,4 +40,22 @@ std::optional<std::string> resembled_key(std::string_view key, std::span<const s
   return best;
 }
 
+std::optional<std::string> template_problem(std::string_view text, std::span<const std::string_view> known) {
+  if (text.find_first_of("\r\n") != std::string_view::npos)
+    return std::string("expected one line of G-code, found a line break; give the lines as an array");
+  for (size_t open = text.find('{'); open != std::string_view::npos; open = text.find('{', open + 1)) {
+    const size_t close = text.find('}', open);
+    if (close == std::string_view::npos)
+      return "\"" + std::string(text) + "\": a '{' with no '}' (placeholders are written {name})";
+    const std::string_view name = text.substr(open + 1, close - open - 1);
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+    std::string list;
+    for (auto k : known) list += (list.empty() ? "{" : ", {") + std::string(k) + "}";
+    const auto like = resembled_key(name, known);
+    return "unknown placeholder {" + std::string(name) + "} in \"" + std::string(text) +
+           "\" (it would be printed as it is); " + (like ? "did you mean {" + *like + "}?" : "the lines take " + list);
+  }
+  return std::nullopt;
+}
+
 }  // namespace bezcam

@@ -9,24 +9,6 @@
 
 namespace bezcam {
 
-MotionTotals motion_totals(std::span<const ToolMotion> motion, double rapid_rate, int entity) {
-  MotionTotals t;
-  for (const ToolMotion& m : motion) {
-    if (entity != kAllEntities && m.entity != entity) continue;
-    const double len = block_length(m.block);
-    if (is_feed(m.block)) {
-      t.feed_length += len;
-      ++t.feed_blocks;
-      if (m.block.feed > 0) t.feed_time_s += 60 * len / m.block.feed;
-    } else {
-      t.rapid_length += len;
-      ++t.rapid_blocks;
-    }
-  }
-  if (rapid_rate > 0) t.rapid_time_s = 60 * t.rapid_length / rapid_rate;
-  return t;
-}
-
 ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode) {
   ProgramReport r;
   r.job = p.job_name;

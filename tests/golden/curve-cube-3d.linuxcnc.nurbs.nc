@@ -1,9 +1,12 @@
 %
 (bezcam 0.1.0: curve-cube-3d.json, machine linuxcnc, output nurbs)
 (tolerance 0.001 mm; largest deviation measured 0.0009781 mm, proven bound 0.0009993 mm, rounding included)
+(T1: cube-base-curve)
+(estimated cycle time 3 s: feeds as programmed, rapids at 10000 mm/min, no acceleration, tool changes not counted)
 G21 G90 G17
 G40 G49 G80 G94
 G54
+G53 G0 Z0
 T1 M6
 G43 H1
 S12000 M3

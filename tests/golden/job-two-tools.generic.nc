@@ -1,6 +1,10 @@
 %
 (bezcam 0.1.0: job-two-tools.json, machine generic, output lines)
+(program 4711)
 (tolerance 0.01 mm; largest deviation measured 0.009812 mm, proven bound 0.009996 mm, rounding included)
+(T1: pocket-outline)
+(T2: engraving)
+(estimated cycle time 16 s: feeds as programmed, rapids at 20000 mm/min, no acceleration, tool changes not counted)
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06
@@ -9,6 +13,7 @@ M08
 (entity pocket-outline: path, degree 3, 2D)
 G00 Z5.
 X0. Y0.
+Z1.
 G01 Z-1. F250.
 X40. F900.
 X40.977 Y0.036
@@ -100,6 +105,7 @@ S18000 M03
 M07
 (entity engraving: bezier, degree 3, 2D)
 X5. Y12.5
+Z1.
 G01 Z-0.2 F250.
 X5.732 Y13.145 F400.
 X6.455 Y13.688

@@ -1,5 +1,9 @@
 (bezcam 0.1.0: job-two-tools.json, machine grbl, output lines)
+(program 4711)
 (tolerance 0.01 mm; largest deviation measured 0.009812 mm, proven bound 0.009996 mm, rounding included)
+(T1: pocket-outline)
+(T2: engraving)
+(estimated cycle time 16 s: feeds as programmed, rapids at 5000 mm/min, no acceleration, tool changes not counted)
 G21 G90 G17
 G40 G49 G80 G94
 G54
@@ -10,6 +14,7 @@ M8
 (entity pocket-outline: path, degree 3, 2D)
 G0 Z5.
 X0. Y0.
+Z1.
 G1 Z-1. F250.
 X40. F900.
 X40.977 Y0.036
@@ -102,6 +107,7 @@ G4 P2.
 M7
 (entity engraving: bezier, degree 3, 2D)
 X5. Y12.5
+Z1.
 G1 Z-0.2 F250.
 X5.732 Y13.145 F400.
 X6.455 Y13.688

@@ -1,9 +1,14 @@
 %
 (bezcam 0.1.0: job-two-tools.json, machine linuxcnc, output lines)
+(program 4711)
 (tolerance 0.01 mm; largest deviation measured 0.009907 mm, proven bound 0.009937 mm, rounding included)
+(T1: pocket-outline)
+(T2: engraving)
+(estimated cycle time 16 s: feeds as programmed, rapids at 10000 mm/min, no acceleration, tool changes not counted)
 G21 G90 G17
 G40 G49 G80 G94
 G54
+G53 G0 Z0
 T1 M6
 G43 H1
 S10000 M3
@@ -11,6 +16,7 @@ M8
 (entity pocket-outline: path, degree 3, 2D)
 G0 Z5.
 X0. Y0.
+Z1.
 G1 Z-1. F250.
 X40. F900.
 X41.0005 Y0.0382
@@ -97,12 +103,15 @@ X0. Y0.
 G0 Z5.
 M9
 M5
+G53 G0 Z0
 T2 M6
 G43 H2
 S18000 M3
 M7
 (entity engraving: bezier, degree 3, 2D)
+G0 Z5.
 X5. Y12.5
+Z1.
 G1 Z-0.2 F250.
 X5.7469 Y13.1575 F400.
 X6.487 Y13.7096

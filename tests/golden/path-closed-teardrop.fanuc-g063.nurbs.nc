@@ -2,7 +2,10 @@
 O1000 (BEZCAM)
 (bezcam 0.1.0: path-closed-teardrop.json, machine fanuc-g063, output nurbs)
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
+(T2: teardrop)
+(estimated cycle time 8 s: feeds as programmed, rapids at 15000 mm/min, no acceleration, tool changes not counted)
 G21 G90 G17
+G53 G00 Z0.
 T2 M06
 S12000 M03
 (entity teardrop: path, degree 3, 2D)

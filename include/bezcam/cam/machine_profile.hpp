@@ -47,9 +47,24 @@ struct MachineProfile {
   /// False for a machine without an automatic tool changer (Grbl): a tool
   /// change becomes spindle off, retract, `M0` naming the tool.
   bool tool_changer = true;
+  /// Lines before each tool change (and before the M00 of a manual one):
+  /// the move to the tool-change position (`G53 G00 Z0.`: machine Z zero,
+  /// the top of travel). After them the tool's position is unknown: the
+  /// next approach rapids Z to safe Z first.
+  std::vector<std::string> tool_change_position;
   /// Seconds to dwell (`G4 P-`) after the spindle starts, for a controller
   /// that does not wait for the spindle's speed itself; 0 for none.
   double spindle_dwell_s = 0;
+  /// Comments in the program (header, entities, notes); false for a
+  /// controller or a shop that wants none (`--no-comments`). M00's
+  /// message to the operator stays.
+  bool comments = true;
+  /// No repeated words inside exact-curve blocks: a Fanuc G06.2 point
+  /// omits Z and R equal to the previous point's (`--modal`).
+  bool modal = false;
+  /// The program number when the job gives none: {program} in the header
+  /// (Fanuc `O{program}`, printed with at least 4 digits).
+  long program_number = 1000;
   bool arcs = true;
   double arc_tolerance_mm = 0.002;  ///< allowed radius mismatch of a printed arc
   NurbsDialect nurbs = NurbsDialect::none;

@@ -50,6 +50,9 @@ struct CurveMove : Motion {
   std::vector<double> knots;    ///< nurbs: ctrl.size() + order values
   int order = 0;                ///< degree + 1
 };
+/// The profile's move to the tool-change position (`tool_change_position`
+/// lines), before a tool change.
+struct ToolChangePosition {};
 /// M06 with a T word.
 struct ToolChange {
   int tool = 0;
@@ -76,8 +79,16 @@ struct ProgramStop {
   std::string message;
 };
 
+/// A line printed as the job gives it: an entity's `before` / `after`
+/// sequence, placeholders already replaced. Not motion bezcam plans: the
+/// job's author answers for it (`bezcam lint` reads it like any line).
+struct Verbatim {
+  std::string text;
+};
+
 struct Move {
-  std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChange, SpindleMove, Comment, Dwell, CoolantMove, ProgramStop>
+  std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChangePosition, ToolChange, SpindleMove, Comment, Dwell, CoolantMove, ProgramStop,
+               Verbatim>
       what;
   int entity = -1;  ///< index of the job entity it cuts, -1 for none
 };

@@ -3,6 +3,8 @@
 /// and a profile, validated as a whole (validate.hpp), then printed by the
 /// G-code writer in the profile's dialect.
 #include <functional>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,12 @@ struct EntityReport {
   double measured = 0;     ///< largest deviation measured on the printed path
   double bound = 0;        ///< proven upper bound
   int entity = -1;         ///< index in the job's entities (Move::entity)
+  /// The height of the entity's clearance plane (its `clearance` above
+  /// `top_z`, or above the surface's top for patches) when it has one
+  /// below safe Z: the tool rapids down to it and moves across at it
+  /// between passes. NaN: none (safe Z).
+  double clear_z = std::numeric_limits<double>::quiet_NaN();
+  int tool = -1;           ///< the tool that cuts it
 };
 
 enum class OutputMode { lines, arcs, nurbs };
@@ -35,6 +43,15 @@ struct ConvertOptions {
   /// far, total entities, the entity's label), and once more with
   /// (total, total, "") at the end; for progress bars. May be empty.
   std::function<void(size_t done, size_t total, const std::string& label)> on_entity;
+  /// Moves the part: added to every X and Y (`--offset`, `--origin`),
+  /// rounded to the program's decimals so that the proven bound holds for
+  /// the moved part as it does for the drawn one.
+  Vec3 offset;
+  /// Where the tool goes at the end, after the final retract (`--return-to
+  /// X,Y,Z`): across at safe Z, then down to Z.
+  std::optional<Vec3> return_to;
+  /// Overrides the job's `program_number`.
+  std::optional<long> program_number;
 };
 
 struct Program {
@@ -47,6 +64,8 @@ struct Program {
   double max_bound = 0;     ///< largest proven bound (units)
   double safe_z = 0;        ///< lowest safe Z of the entities (rapids stay at or above it)
   int decimals = 3;
+  std::optional<long> program_number;  ///< the job's or the caller's
+  Vec3 offset;                         ///< by which the part was moved (ConvertOptions::offset, rounded)
   std::vector<Move> moves;
   std::vector<EntityReport> entities;
   std::vector<std::string> warnings;
@@ -65,7 +84,14 @@ struct CutParams {
   double feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool_radius;
   int tool;
   Coolant coolant = Coolant::off;
+  std::optional<double> clearance;  ///< above top_z; unset: plunge from safe Z
+  double top_z = 0;
+  std::vector<std::string> before, after;  ///< templates, as the job gives them
 };
+
+/// An entity's `before` / `after` line with its placeholders replaced
+/// (numbers rounded to `decimals`).
+std::string expand_entity_template(const std::string& text, const Entity& e, const CutParams& c, int decimals);
 CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m);
 
 }  // namespace bezcam

@@ -33,6 +33,16 @@ struct JobParams {
   std::optional<int> tool;
   std::optional<GougePolicy> gouge;  ///< surfaces with tool_radius > 0; default refuse
   std::optional<Coolant> coolant;    ///< default off
+  /// Clearance height: the tool rapids down to `clearance` above `top_z`
+  /// (the stock's top, default 0) and feeds only from there; surface
+  /// passes link at that height. Unset: plunge at the plunge feed from
+  /// safe Z, as before.
+  std::optional<double> clearance, top_z;
+  /// Per-entity start and end sequences (dxf2gcode's templates): lines
+  /// printed as given before the entity's approach and after its retract,
+  /// with {entity}, {tool}, {rpm}, {feed}, {plunge_feed}, {cut_z},
+  /// {safe_z} and {top_z} replaced (kEntityPlaceholders).
+  std::optional<std::vector<std::string>> before, after;
   /// Values set here win; the rest come from `base`.
   JobParams over(const JobParams& base) const;
 };
@@ -61,8 +71,15 @@ struct Entity {
   std::string json_path() const { return "entities[" + std::to_string(index) + "]"; }
 };
 
+/// The placeholders a `before` / `after` line may use.
+inline constexpr std::string_view kEntityPlaceholders[] = {"entity",  "tool",  "rpm",    "feed",
+                                                          "plunge_feed", "cut_z", "safe_z", "top_z"};
+
 struct Job {
   int version = 1;
+  /// The program number (key `program_number`, 1 to 99999999): Fanuc's
+  /// `O` number (the profile's {program}), a comment elsewhere.
+  std::optional<long> program_number;
   Units units = Units::mm;
   double tolerance = 0.01;
   std::optional<std::string> machine;

@@ -23,4 +23,9 @@ int typo_edits(std::string_view key);
 /// equals), or nothing when none is within typo_edits(key).
 std::optional<std::string> resembled_key(std::string_view key, std::span<const std::string_view> known);
 
+/// What is wrong with a line of G-code given as a template (a job's
+/// `before` / `after`): a line break, a '{' with no '}', or a placeholder
+/// not in `known` (naming the one it resembles); nothing when it is fine.
+std::optional<std::string> template_problem(std::string_view text, std::span<const std::string_view> known);
+
 }  // namespace bezcam

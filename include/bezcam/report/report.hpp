@@ -14,23 +14,7 @@
 
 namespace bezcam {
 
-/// Lengths and times of a set of motion blocks (program units).
-struct MotionTotals {
-  double feed_length = 0;     ///< blocks at a feed: cutting and plunging
-  double rapid_length = 0;    ///< rapid blocks
-  double feed_time_s = 0;     ///< sum of length / feed, in seconds
-  double rapid_time_s = 0;    ///< rapid_length / rapid rate, in seconds
-  size_t feed_blocks = 0, rapid_blocks = 0;
-  /// Estimated run time: feeds and rapids at their rates, with no
-  /// acceleration, dwell or tool-change time (so a lower bound).
-  double time_s() const { return feed_time_s + rapid_time_s; }
-};
-
-/// Sums the blocks of `motion` whose entity is `entity` (all blocks when
-/// `entity` is kAllEntities). `rapid_rate`: units/min assumed for rapids
-/// (> 0). Feeds of 0 (a reader that saw no F word) count no time.
-inline constexpr int kAllEntities = -2;
-MotionTotals motion_totals(std::span<const ToolMotion> motion, double rapid_rate, int entity = kAllEntities);
+// MotionTotals and motion_totals(): cam/motion.hpp.
 
 struct EntitySummary {
   EntityReport report;  ///< kind (type), degree, length, blocks, measured, bound
