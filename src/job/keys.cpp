@@ -53,7 +53,7 @@ std::optional<std::string> template_problem(std::string_view text, std::span<con
     for (auto k : known) list += (list.empty() ? "{" : ", {") + std::string(k) + "}";
     const auto like = resembled_key(name, known);
     return "unknown placeholder {" + std::string(name) + "} in \"" + std::string(text) +
-           "\" (it would be printed as it is); " + (like ? "did you mean {" + *like + "}?" : "the lines take " + list);
+           "\" (it would be printed as it is); " + (like ? "did you mean {" + *like + "}?" : list.empty() ? std::string("these lines take no placeholder") : "the lines take " + list);
   }
   return std::nullopt;
 }
