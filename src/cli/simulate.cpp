@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <ctime>
 #include <iostream>
 #include <sstream>
 
@@ -78,7 +79,7 @@ CLI::App* add(CLI::App& app) {
                 "write, before or after applying it; corrupt:N alters a digit of the N-th chunk once it is "
                 "accepted (repeatable)");
   s->add_option("--session-base", o.session_base, "first session id (tests and documentation; default random)");
-  s->add_flag("-q,--quiet", o.quiet, "print nothing but the listening line and errors");
+  s->add_flag("-q,--quiet", o.quiet, "print nothing but the listening line and errors (no log of connections, programs and alarms)");
   return s;
 }
 
@@ -184,6 +185,15 @@ int run() {
   if (!o.trace.empty()) {
     sink = std::make_shared<FileSink>(o.trace);
     cfg.trace = [sink](std::string_view t, bool restart) { (*sink)(t, restart); };
+  }
+  if (!o.listen.empty() && !o.quiet) {
+    // The operator's log: what happens to the controller, with the time.
+    cfg.on_event = [](const std::string& event) {
+      const std::time_t now = std::time(nullptr);
+      char t[16];
+      std::strftime(t, sizeof t, "%H:%M:%S", std::localtime(&now));
+      std::cerr << "bezcam simulate: " << t << " " << event << std::endl;
+    };
   }
   const std::string program = o.program.empty() ? std::string() : read_file(o.program);
   SignalWaiter signals;  // before any thread exists, so that all inherit the mask

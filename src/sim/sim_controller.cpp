@@ -78,6 +78,7 @@ ConnId SimController::connection_opened() {
   const ConnId id = next_conn_++;
   ++connections_;
   last_reject_[id] = Reject::none;
+  log_locked("connection " + std::to_string(id) + " opened (" + std::to_string(connections_) + " open)");
   return id;
 }
 
@@ -85,6 +86,10 @@ void SimController::connection_closed(ConnId c) {
   std::lock_guard lk(m_);
   if (connections_ > 0) --connections_;
   last_reject_.erase(c);
+  log_locked("connection " + std::to_string(c) + " closed" +
+             (owner_ == c && (state_ == State::receiving || state_ == State::finishing)
+                  ? " while it owned the transfer (it may resume)"
+                  : std::string()));
   // The transfer survives its owner's connection: the sender may come back
   // and RESUME until the session timeout runs out.
   if (owner_ == c) owner_ = 0;
@@ -137,6 +142,15 @@ void SimController::open_locked(ConnId c, std::uint32_t token, std::uint32_t tot
   line_no_ = lines_done_ = blocks_done_ = 0;
   machine_ = MachineState{};
   cv_.notify_all();
+  char sid[16];
+  std::snprintf(sid, sizeof sid, "%08x", session_);
+  log_locked(c == kLocal ? "program opened: " + std::to_string(total) + " bytes"
+                         : "program opened by connection " + std::to_string(c) + ": session " + sid + ", " +
+                               std::to_string(total) + " bytes");
+}
+
+void SimController::log_locked(const std::string& event) const {
+  if (cfg_.on_event) cfg_.on_event(event);
 }
 
 // For alarms raised by requests (COMMIT checks, ABORT) and by the lease: the
@@ -151,6 +165,7 @@ void SimController::raise_alarm_locked(Alarm a, long line, std::string id, std::
   alarm_ = a;
   alarm_line_ = static_cast<std::uint32_t>(std::max(0L, line));
   alarm_text_ = (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + message;
+  log_locked(std::string("alarm ") + to_string(a) + ": " + alarm_text_);
   final_traced_ = false;
   pending_alarm_ = std::make_unique<Pending>(Pending{epoch_, trace_alarm(static_cast<int>(line), to_string(a), id, message)});
   cv_.notify_all();
@@ -556,6 +571,7 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
     alarm_ = failed->first;
     alarm_line_ = static_cast<std::uint32_t>(no);
     alarm_text_ = "line " + std::to_string(no) + ": " + failed->second;
+    log_locked(std::string("alarm ") + to_string(alarm_) + ": " + alarm_text_);
     final_traced_ = true;
   }
   cv_.notify_all();
@@ -594,8 +610,10 @@ void SimController::finish_program(std::unique_lock<std::mutex>& lk, GcodeInterp
     alarm_ = Alarm::incomplete;
     alarm_line_ = static_cast<std::uint32_t>(lines);
     alarm_text_ = "line " + std::to_string(lines) + ": " + failed->second;
+    log_locked(std::string("alarm ") + to_string(alarm_) + ": " + alarm_text_);
   } else {
     state_ = State::done;  // only now: the trace on disk is complete
+    log_locked("program done: " + std::to_string(lines) + " lines, " + std::to_string(total_blocks) + " motion blocks");
   }
   final_traced_ = true;
   cv_.notify_all();

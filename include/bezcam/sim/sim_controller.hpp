@@ -73,6 +73,11 @@ struct ControllerConfig {
   std::vector<std::uint64_t> corrupt_chunk;
   /// Where the trace goes (may be empty).
   TraceSink trace;
+  /// The operator's log (`simulate --listen` prints it on stderr): one
+  /// line per event, connections opened and closed, programs opened,
+  /// completed and stopped by an alarm. Called with the controller's lock
+  /// held, from any thread: it must not call back into the controller.
+  std::function<void(const std::string& event)> on_event;
   /// Test hook: every program line as the executor takes it, in order.
   std::function<void(long line, std::string_view text)> on_line;
 };
@@ -129,6 +134,7 @@ class SimController {
 
  private:
   struct Pending;  // an alarm waiting for the executor to trace it
+  void log_locked(const std::string& event) const;
   Reject command_locked(ConnId c, std::span<const std::uint16_t> regs);
   Reject chunk_locked(ConnId c, std::span<const std::uint16_t> regs, bool corrupt);
   Reject apply_chunk_locked(ConnId c, std::uint32_t session, std::uint32_t seq, std::string_view payload,
