@@ -7,7 +7,11 @@
 // work), as a self-contained SVG file.
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
+#include <cmath>
 #include <iostream>
+
+#include "bezcam/kernel/surface.hpp"
 #include <optional>
 #include <sstream>
 
@@ -102,6 +106,34 @@ int run_program() {
   if (job)
     for (const auto& w : job->warnings) in.warnings.push_back("warning: " + w);
   in.tolerance = o.conv.tolerance > 0 ? o.conv.tolerance : (job ? job->tolerance : 0);
+  if (job) {
+    // A program far from its job (moved with --offset / --origin, or made
+    // for another job) would be drawn beside it and measured as wrong.
+    Box3 jb, pb;
+    for (const Entity& e : job->entities) {
+      if (e.surface) jb.add(bounds(*e.surface));
+      else if (!e.curve.pieces.empty()) jb.add(e.curve.bounds());
+    }
+    for (const auto& tm : in.motion)
+      if (is_feed(tm.block)) pb.add(tm.block.to);
+    if (!jb.empty() && !pb.empty()) {
+      const double gx = std::max({0.0, jb.lo.x - pb.hi.x, pb.lo.x - jb.hi.x});
+      const double gy = std::max({0.0, jb.lo.y - pb.hi.y, pb.lo.y - jb.hi.y});
+      const double gap = std::hypot(gx, gy);
+      const double size = std::max({jb.hi.x - jb.lo.x, jb.hi.y - jb.lo.y, in.tolerance});
+      if (gap > 0.05 * size) {
+        auto box = [&](const Box3& b) {
+          return "X " + format_significant(b.lo.x, 6) + " to " + format_significant(b.hi.x, 6) + ", Y " +
+                 format_significant(b.lo.y, 6) + " to " + format_significant(b.hi.y, 6);
+        };
+        const std::string w = "the program's cutting moves lie " + format_significant(gap, 4) + " " + u +
+                              " away from the job's geometry (job " + box(jb) + "; program " + box(pb) +
+                              "): was it moved (--offset, --origin) or made for another job?";
+        in.warnings.push_back("warning: " + w);
+        if (!o.quiet) std::cerr << "bezcam: warning: " << w << "\n";
+      }
+    }
+  }
   in.title = "bezcam preview: " + o.program + (job ? " against " + job->source : std::string());
   const double rapid_rate = m.max_feed_mm_min / mm_per_unit(in.units);
   const MotionTotals t = motion_totals(in.motion, rapid_rate);
@@ -155,6 +187,10 @@ int run() {
   in.motion = program_motion(p);
   in.units = p.units;
   in.tolerance = p.tolerance;
+  in.program_measured = p.max_measured;
+  in.entity_tool.assign(job.entities.size(), -1);
+  for (const auto& r : p.entities)
+    if (r.entity >= 0 && static_cast<size_t>(r.entity) < in.entity_tool.size()) in.entity_tool[r.entity] = r.tool;
   in.title = "bezcam preview: " + job.source;
   const char* u = to_string(p.units);
   in.notes.push_back("machine " + m.name + ", output " + to_string(p.output) + ", tolerance " +

@@ -251,13 +251,18 @@ std::string rgb(double r, double g, double b) {
   return buf;
 }
 
-// Deviation colour: green at 0, yellow at half the tolerance, red at the
-// tolerance; magenta above it (a broken promise must stand out).
+// Deviation colour, on a scale relative to the tolerance: within it a calm
+// sequential scale, dark blue at 0 through teal to green at the tolerance
+// (a program that uses 97 % of its tolerance keeps its promise and looks
+// like it); above it a saturated red that no colour of the scale comes
+// near, drawn wider and marked (a broken promise must stand out).
+constexpr const char* kOverColour = "#ff0000";
+bool over_tolerance(double d, double tol) { return d > tol * (1 + 1e-9); }
 std::string deviation_colour(double d, double tol) {
-  if (d > tol * (1 + 1e-9)) return "#c51b7d";
+  if (over_tolerance(d, tol)) return kOverColour;
   const double t = std::clamp(d / tol, 0.0, 1.0);
   struct C { double r, g, b; };
-  const C lo{26, 152, 80}, mid{240, 200, 40}, hi{215, 48, 39};
+  const C lo{49, 54, 149}, mid{33, 145, 140}, hi{94, 201, 98};
   const C& a = t < 0.5 ? lo : mid;
   const C& b = t < 0.5 ? mid : hi;
   const double u = t < 0.5 ? t * 2 : (t - 0.5) * 2;
@@ -467,11 +472,19 @@ void svg_toolpath(std::string& o, const View& v, const PreviewInput& in, const s
     }
     flush_run();
     // One path per block, coloured by its deviation, with a tooltip.
+    const bool over = over_tolerance(dev_of[i], in.tolerance);
     attrs += " data-deviation=\"" + fmt_num(dev_of[i]) + "\"";
+    if (over) attrs.replace(0, std::string("class=\"feed\"").size(), "class=\"feed over-tolerance\"");
+    const std::string pct = format_significant(100 * dev_of[i] / in.tolerance, 3) + " % of the tolerance";
     o += "<path " + attrs + " d=\"" + path_d(v, s) + "\" fill=\"none\" stroke=\"" +
-         deviation_colour(dev_of[i], in.tolerance) +
-         "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>deviation " +
-         format_significant(dev_of[i], 3) + " " + unit + "</title></path>\n";
+         deviation_colour(dev_of[i], in.tolerance) + "\" stroke-width=\"" + (over ? "6" : "3") +
+         "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>deviation " + format_significant(dev_of[i], 3) +
+         " " + unit + " (" + pct + (over ? ": ABOVE THE TOLERANCE" : "") + ")</title></path>\n";
+    if (over) {  // a ring around it, visible at any zoom
+      const P2 c = v.screen(s[s.size() / 2]);
+      o += "<circle class=\"over-tolerance-mark\" cx=\"" + n3(c.x) + "\" cy=\"" + n3(c.y) +
+           "\" r=\"9\" fill=\"none\" stroke=\"" + kOverColour + "\" stroke-width=\"2\"/>\n";
+    }
   }
   flush_run();
   if (!rapid_d.empty())
@@ -556,11 +569,73 @@ void svg_entity(std::string& o, const View& v, const PreviewInput& in, const Ent
     o += "<path class=\"direction-arrow\" d=\"" + arrow_d({sm.x + dm.x * 5, sm.y + dm.y * 5}, dm, 10, 4.5) +
          "\" fill=\"" + kCurveColour + "\"/>\n";
   }
-  // The label sits beside the start, on the side away from the path.
+  // The label sits beside the start, on the side away from the path: the
+  // id, the tool and the depth the tool path cuts it at.
+  std::string cut;
+  const int entity = static_cast<int>(e.index);
+  if (entity < static_cast<int>(in.entity_tool.size()) && in.entity_tool[e.index] >= 0)
+    cut = "T" + std::to_string(in.entity_tool[e.index]);
+  double zlo = HUGE_VAL, zhi = -HUGE_VAL;
+  for (size_t i = 0; i < in.motion.size(); ++i) {
+    const auto& b = in.motion[i].block;
+    if (in.motion[i].entity != entity || !is_feed(b) || is_plunge(in.motion, i)) continue;
+    zlo = std::min({zlo, b.from.z, b.to.z});
+    zhi = std::max({zhi, b.from.z, b.to.z});
+  }
+  if (zlo <= zhi)
+    cut += (cut.empty() ? "" : " ") + std::string("Z") + format_significant(zlo, 6) +
+           (zhi - zlo > 1e-9 ? " to " + format_significant(zhi, 6) : "");
   const double lx = s0.x - d0.y * 10 + (d0.y > 0 ? 0 : 2), ly = s0.y + d0.x * 10 + (d0.x > 0 ? 10 : -4);
+  const std::string anchor = d0.y > 0 ? " text-anchor=\"end\"" : "";
   o += "<text class=\"entity-label\" x=\"" + n3(lx) + "\" y=\"" + n3(ly) + "\" fill=\"" + kCurveColour +
-       "\" font-size=\"11\"" + (d0.y > 0 ? " text-anchor=\"end\"" : "") + ">" + esc(e.label()) + "</text>\n";
+       "\" font-size=\"11\"" + anchor + ">" + esc(e.label()) + "</text>\n";
+  // Under it: the tool and the depth the tool path cuts it at.
+  if (!cut.empty())
+    o += "<text class=\"entity-cut\" x=\"" + n3(lx) + "\" y=\"" + n3(ly + 12) + "\" fill=\"#555555\" font-size=\"10\"" +
+         anchor + ">" + esc(cut) + "</text>\n";
   o += "</g>\n";
+}
+
+// The top view's coordinates: ticks with their values along the bottom and
+// the left of the drawing, and the origin (0, 0) marked where it is in view
+// (said in a corner where it is not).
+void svg_axes(std::string& o, const View& v) {
+  if (v.iso) return;
+  const double w = v.maxx - v.minx, h = v.maxy - v.miny;
+  const double step = nice_below(std::max(w, h) / 4);
+  const double bottom = v.oy + h * v.s, left = v.ox;
+  o += "<g class=\"axis-ticks\" fill=\"#666666\" font-size=\"10\">\n";
+  std::string d;
+  for (double k = std::ceil(v.minx / step); k * step <= v.maxx + 1e-9 * step; ++k) {
+    const double x = v.ox + (k * step - v.minx) * v.s;
+    d += "M" + n3(x) + " " + n3(bottom + 8) + " L" + n3(x) + " " + n3(bottom + 13) + " ";
+    o += "<text x=\"" + n3(x) + "\" y=\"" + n3(bottom + 24) + "\" text-anchor=\"middle\">" +
+         format_significant(k * step == 0 ? 0.0 : k * step, 6) + "</text>\n";
+  }
+  for (double k = std::ceil(v.miny / step); k * step <= v.maxy + 1e-9 * step; ++k) {
+    const double y = v.oy + (v.maxy - k * step) * v.s;
+    d += "M" + n3(left - 13) + " " + n3(y) + " L" + n3(left - 8) + " " + n3(y) + " ";
+    o += "<text x=\"" + n3(left - 15) + "\" y=\"" + n3(y + 3) + "\" text-anchor=\"end\">" +
+         format_significant(k * step == 0 ? 0.0 : k * step, 6) + "</text>\n";
+  }
+  o += "<path d=\"" + d + "\" stroke=\"#666666\" stroke-width=\"1\" fill=\"none\"/>\n</g>\n";
+  const double slack = 0.02 * std::max(w, h);
+  if (v.minx - slack <= 0 && 0 <= v.maxx + slack && v.miny - slack <= 0 && 0 <= v.maxy + slack) {
+    const P2 c = v.screen(Vec3{0, 0, 0});
+    o += "<g class=\"origin\" stroke=\"#000000\" stroke-width=\"1.2\">"
+         "<circle cx=\"" + n3(c.x) + "\" cy=\"" + n3(c.y) + "\" r=\"5\" fill=\"none\"/>"
+         "<path d=\"M" + n3(c.x) + " " + n3(c.y) + " L" + n3(c.x + 24) + " " + n3(c.y) + " M" + n3(c.x) + " " +
+         n3(c.y) + " L" + n3(c.x) + " " + n3(c.y - 24) + "\"/>"
+         "<path d=\"" + arrow_d({c.x + 28, c.y}, {1, 0}, 7, 3) + " " + arrow_d({c.x, c.y - 28}, {0, -1}, 7, 3) +
+         "\" fill=\"#000000\" stroke=\"none\"/>"
+         "<text x=\"" + n3(c.x + 31) + "\" y=\"" + n3(c.y + 4) + "\" stroke=\"none\" font-size=\"10\">X</text>"
+         "<text x=\"" + n3(c.x - 3) + "\" y=\"" + n3(c.y - 32) + "\" stroke=\"none\" font-size=\"10\">Y</text>"
+         "<text x=\"" + n3(c.x - 8) + "\" y=\"" + n3(c.y + 16) + "\" stroke=\"none\" font-size=\"10\" "
+         "text-anchor=\"end\">0, 0</text></g>\n";
+  } else {
+    o += "<text class=\"origin-off-view\" x=\"" + n3(v.px + v.pw - 8) + "\" y=\"" + n3(v.py + 16) +
+         "\" text-anchor=\"end\" fill=\"#666666\">program zero (0, 0) lies outside this view</text>\n";
+  }
 }
 
 // The scale bar of one view, bottom left; an isometric view's axis triad.
@@ -616,7 +691,9 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
     bool unmeasured = false;
     for (size_t i = 0; i < in.motion.size(); ++i)
       unmeasured = unmeasured || (is_feed(in.motion[i].block) && !is_plunge(in.motion, i) && dev_of[i] < 0);
-    if (unmeasured) key("key-feed-unmeasured", line(kFeedColour, 3, ""), "feed, not measured (surface passes)");
+    if (unmeasured)
+      key("key-feed-unmeasured", line(kFeedColour, 3, ""),
+          in.program_measured >= 0 ? "surface passes (measured when built)" : "surface passes (not measured)");
   } else {
     key("key-feed", line(kFeedColour, 3, ""), "feed (cutting)");
   }
@@ -626,9 +703,22 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
       "start and direction");
   if (opt.deviation) {
     const double gy = ly + 30, gx = margin, gw = 240;
+    size_t measured = 0, over = 0;
+    for (double d : dev_of)
+      if (d >= 0) ++measured, over += over_tolerance(d, in.tolerance);
+    std::string largest;
+    if (measured > 0)
+      largest = "largest " + format_significant(dev_max, 3) + " " + unit + ", " +
+                format_significant(100 * dev_max / in.tolerance, 3) + " % of the tolerance";
+    else if (in.program_measured >= 0)
+      largest = "no curve block to measure here; the program's own check measured " +
+                format_significant(in.program_measured, 3) + " " + unit;
+    else
+      largest = "no curve block to measure";
     o += "<g class=\"deviation-scale\" data-max=\"" + fmt_num(in.tolerance) + "\">\n";
     o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(gy - 6) + "\">deviation of each cutting block from the true curve, " +
-         unit + " (largest " + format_significant(dev_max, 3) + " " + unit + ")</text>\n";
+         "relative to the tolerance " + format_significant(in.tolerance, 4) + " " + unit + " (" + esc(largest) +
+         ")</text>\n";
     o += "<rect x=\"" + n3(gx) + "\" y=\"" + n3(gy) + "\" width=\"" + n3(gw) +
          "\" height=\"12\" fill=\"url(#deviation-gradient)\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
     for (double f : {0.0, 0.5, 1.0}) {
@@ -636,18 +726,22 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
       o += "<path d=\"M" + n3(x) + " " + n3(gy + 12) + " L" + n3(x) + " " + n3(gy + 16) +
            "\" stroke=\"#000000\" stroke-width=\"1\"/>";
       o += "<text x=\"" + n3(x) + "\" y=\"" + n3(gy + 28) + "\" text-anchor=\"middle\" font-size=\"11\">" +
-           format_significant(f * in.tolerance, 4) + (f == 1.0 ? " (tolerance)" : "") + "</text>\n";
+           (f == 0 ? std::string("0") : f == 0.5 ? std::string("50 %") : "100 % = " + format_significant(in.tolerance, 4)) +
+           "</text>\n";
     }
-    const double sx = gx + gw + 70;
-    o += "<rect x=\"" + n3(sx) + "\" y=\"" + n3(gy) + "\" width=\"24\" height=\"12\" fill=\"" +
-         deviation_colour(2, 1) + "\"/><text x=\"" + n3(sx + 30) + "\" y=\"" + n3(gy + 10) +
-         "\">above the tolerance</text>\n";
+    const double sx = gx + gw + 90;
+    o += "<rect x=\"" + n3(sx) + "\" y=\"" + n3(gy - 2) + "\" width=\"24\" height=\"16\" fill=\"" + kOverColour +
+         "\"/><text class=\"over-tolerance-count\" x=\"" + n3(sx + 30) + "\" y=\"" + n3(gy + 10) + "\"" +
+         (over ? " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"" : "") + ">above the tolerance (ringed): " +
+         (over ? std::to_string(over) + " block" + (over == 1 ? "" : "s") : std::string("none")) + "</text>\n";
     o += "</g>\n";
   }
   o += "</g>\n";
 }
 
 }  // namespace
+
+std::string preview_deviation_colour(double d, double tol) { return deviation_colour(d, tol); }
 
 std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   const Job* job = in.job;
@@ -825,6 +919,7 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
       o += "</g>\n";
     }
 
+    svg_axes(o, v);
     svg_scale_bar(o, v, pad, unit);
     o += "</g>\n";
   }

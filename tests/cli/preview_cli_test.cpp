@@ -149,3 +149,45 @@ TEST(Progress, PreviewMeasuringIsASecondPhase) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(PreviewCommand, OriginTicksAndEachEntitysToolAndDepth) {
+  testproc::TempDir dir;
+  const fs::path svg = dir / "two.svg";
+  const auto r = bezcam({"preview", "samples/job-two-tools.json", "-o", svg.string(), "-q"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto root = testxml::parse(testproc::slurp(svg));
+  const auto* top = root.by_id("top-view");
+  ASSERT_NE(top, nullptr);
+  // The origin sits on the outline's start: marked, with its X and Y.
+  ASSERT_EQ(top->by_class("origin").size(), 1u);
+  // Ticks along both axes, 0 among them.
+  const auto ticks = top->by_class("axis-ticks");
+  ASSERT_EQ(ticks.size(), 1u);
+  std::vector<std::string> labels;
+  for (const auto* t : ticks[0]->by_name("text")) labels.push_back(t->text);
+  EXPECT_GE(labels.size(), 6u);
+  EXPECT_NE(std::find(labels.begin(), labels.end(), "0"), labels.end());
+  // Per entity its tool and depth.
+  std::vector<std::string> cuts;
+  for (const auto* t : top->by_class("entity-cut")) cuts.push_back(t->text);
+  EXPECT_EQ(cuts, (std::vector<std::string>{"T1 Z-1", "T2 Z-0.2"}));
+}
+
+TEST(PreviewCommand, AProgramFarFromItsJobIsSaid) {
+  testproc::TempDir dir;
+  const fs::path nc = dir / "moved.nc", svg = dir / "moved.svg";
+  ASSERT_EQ(bezcam({"convert", "samples/job-two-tools.json", "-o", nc.string(), "--offset", "300,0", "-q"}).status, 0);
+  const auto far = bezcam({"preview", "--program", nc.string(), "samples/job-two-tools.json", "-o", svg.string()});
+  ASSERT_EQ(far.status, 0) << far.err;
+  EXPECT_NE(far.err.find("warning: the program's cutting moves lie "), std::string::npos) << far.err;
+  EXPECT_NE(testproc::slurp(svg).find("warning: the program&apos;s cutting moves lie"), std::string::npos);
+  // The same program unmoved: no such warning.
+  ASSERT_EQ(bezcam({"convert", "samples/job-two-tools.json", "-o", nc.string(), "-q"}).status, 0);
+  const auto near = bezcam({"preview", "--program", nc.string(), "samples/job-two-tools.json", "-o", svg.string()});
+  ASSERT_EQ(near.status, 0) << near.err;
+  EXPECT_EQ(near.err.find("cutting moves lie"), std::string::npos) << near.err;
+}
+
+}  // namespace

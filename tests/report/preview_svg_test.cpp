@@ -236,7 +236,7 @@ TEST(PreviewSvg, DeviationColoursAgreeWithTheMeasuredDeviation) {
       EXPECT_GE(d, 0);
       EXPECT_LE(d, b.program.tolerance);
       mx = std::max(mx, d);
-      EXPECT_NE(f->attr("stroke"), "#c51b7d");  // within the tolerance: not the alarm colour
+      EXPECT_NE(f->attr("stroke"), "#ff0000");  // within the tolerance: not the alarm colour
     }
     // The largest block deviation is the program's measured deviation, to
     // the accuracy both claim (a fraction of a per cent of the tolerance).
@@ -275,7 +275,28 @@ TEST(PreviewSvg, DeviationOfAForeignProgramIsMeasuredAgainstTheNearestCurve) {
   PreviewOptions o;
   o.deviation = true;
   const std::string svg = preview_svg(in, o);
-  EXPECT_NE(svg.find("stroke=\"#c51b7d\""), std::string::npos);
+  EXPECT_NE(svg.find("class=\"feed over-tolerance\""), std::string::npos);
+  // Unmistakable: the alarm red, wider, ringed, and counted in the legend.
+  const Element root = testxml::parse(svg);
+  const auto over = root.by_class("over-tolerance");
+  ASSERT_FALSE(over.empty());
+  EXPECT_EQ(over[0]->attr("stroke"), "#ff0000");
+  EXPECT_EQ(over[0]->attr("stroke-width"), "6");
+  EXPECT_EQ(root.by_class("over-tolerance-mark").size(), over.size());
+  ASSERT_EQ(root.by_class("over-tolerance-count").size(), 1u);
+  EXPECT_NE(root.by_class("over-tolerance-count")[0]->text.find(std::to_string(over.size()) + " block"), std::string::npos);
+}
+
+TEST(PreviewSvg, ColoursAreRelativeToTheTolerance) {
+  // A program that uses 97 % of its tolerance keeps its promise: its
+  // colour is far from the alarm red (the scale runs blue to green).
+  for (double f : {0.0, 0.5, 0.97, 1.0}) {
+    const std::string c = preview_deviation_colour(f * 0.01, 0.01);
+    const int r = std::stoi(c.substr(1, 2), nullptr, 16), g = std::stoi(c.substr(3, 2), nullptr, 16);
+    EXPECT_LT(r, 128) << f << " " << c;
+    EXPECT_GT(g, 40) << f << " " << c;
+  }
+  EXPECT_EQ(preview_deviation_colour(0.0101, 0.01), "#ff0000");
 }
 
 TEST(PreviewSvg, TextIsEscaped) {

@@ -49,10 +49,24 @@ struct PreviewInput {
   /// Top of the deviation colour scale (units, > 0 when deviation is on):
   /// the tolerance the program promises.
   double tolerance = 0;
+  /// The program's own measured deviation (Program::max_measured) when the
+  /// preview draws a program it built: the legend gives it for what the
+  /// preview does not measure itself (surface passes). Negative: unknown.
+  double program_measured = -1;
+  /// The tool of each entity (index = entity, -1 unknown), for the labels.
+  std::vector<int> entity_tool;
   std::string title;                  ///< first header line
   std::vector<std::string> notes;     ///< further header lines
   std::vector<std::string> warnings;  ///< drawn in red under the header
 };
+
+/// The colour of a cutting block with deviation `d` under tolerance `tol`
+/// (`#rrggbb`): within the tolerance a sequential scale from dark blue (0)
+/// through teal to green (the tolerance), so a program using 97 % of its
+/// tolerance does not look alarming; above it the alarm red `#ff0000`,
+/// which the scale never approaches (such blocks are also drawn wider and
+/// ringed).
+std::string preview_deviation_colour(double d, double tol);
 
 /// A cutting block's deviation from the true geometry: the larger of the
 /// block's distance to the curve and the distance of the stretch of curve
