@@ -67,16 +67,15 @@ double box_size(const MotionBlock& b) {
 
 }  // namespace
 
-std::vector<ToolMotion> program_motion(const Program& p) {
-  std::vector<ToolMotion> out;
+std::vector<MotionBlock> program_motion(const Program& p) {
+  std::vector<MotionBlock> out;
   Vec3 pos;
   unsigned known = 0;
   for (const Move& mv : p.moves) {
     const Motion* mo = motion_of(mv);
     if (!mo) continue;  // no motion
-    ToolMotion tm;
-    tm.entity = mv.entity;
-    MotionBlock& b = tm.block;
+    MotionBlock b;
+    b.entity = mv.entity;
     b.kind = BlockKind::linear;
     if (is_rapid(mv)) b.kind = BlockKind::rapid;
     if (const auto* arc = std::get_if<ArcMove>(&mv.what)) {
@@ -99,7 +98,7 @@ std::vector<ToolMotion> program_motion(const Program& p) {
     b.from = from;
     b.to = to;
     b.feed = b.kind == BlockKind::rapid ? 0 : mo->feed;
-    out.push_back(std::move(tm));
+    out.push_back(std::move(b));
     pos = to;
     known |= mo->axes;
   }
@@ -232,15 +231,15 @@ std::vector<Bezier> block_to_bezier(const MotionBlock& b) {
   return {};
 }
 
-MotionTotals motion_totals(std::span<const ToolMotion> motion, double rapid_rate, int entity) {
+MotionTotals motion_totals(std::span<const MotionBlock> motion, double rapid_rate, int entity) {
   MotionTotals t;
-  for (const ToolMotion& m : motion) {
+  for (const MotionBlock& m : motion) {
     if (entity != kAllEntities && m.entity != entity) continue;
-    const double len = block_length(m.block);
-    if (is_feed(m.block)) {
+    const double len = block_length(m);
+    if (is_feed(m)) {
       t.feed_length += len;
       ++t.feed_blocks;
-      if (m.block.feed > 0) t.feed_time_s += 60 * len / m.block.feed;
+      if (m.feed > 0) t.feed_time_s += 60 * len / m.feed;
     } else {
       t.rapid_length += len;
       ++t.rapid_blocks;

@@ -82,11 +82,11 @@ int run_program() {
       size_t end = text.find('\n', pos);
       if (end == std::string::npos) end = text.size();
       for (auto& b : reader.feed_line(std::string_view(text).substr(pos, end - pos), ++line_no))
-        in.motion.push_back({std::move(b), -1});
+        in.motion.push_back(std::move(b));
       pos = end + 1;
       progress.set(std::min(pos, text.size()));
     }
-    for (auto& b : reader.finish()) in.motion.push_back({std::move(b), -1});
+    for (auto& b : reader.finish()) in.motion.push_back(std::move(b));
   } catch (const InputError& e) {
     Place at = e.place();
     at.file = o.program;
@@ -115,7 +115,7 @@ int run_program() {
       else if (!e.curve.pieces.empty()) jb.add(e.curve.bounds());
     }
     for (const auto& tm : in.motion)
-      if (is_feed(tm.block)) pb.add(tm.block.to);
+      if (is_feed(tm)) pb.add(tm.to);
     if (!jb.empty() && !pb.empty()) {
       const double gx = std::max({0.0, jb.lo.x - pb.hi.x, pb.lo.x - jb.hi.x});
       const double gy = std::max({0.0, jb.lo.y - pb.hi.y, pb.lo.y - jb.hi.y});

@@ -204,10 +204,10 @@ double measure_block(const DenseCurve& c, std::span<const Vec3> P, size_t& hint,
   return dev;
 }
 
-bool is_plunge(std::span<const ToolMotion> m, size_t i) {
-  const MotionBlock& b = m[i].block;
+bool is_plunge(std::span<const MotionBlock> m, size_t i) {
+  const MotionBlock& b = m[i];
   if (!is_feed(b) || b.from.x != b.to.x || b.from.y != b.to.y || !(b.to.z < b.from.z)) return false;
-  return i == 0 || m[i - 1].block.kind == BlockKind::rapid;
+  return i == 0 || m[i - 1].kind == BlockKind::rapid;
 }
 
 // ---------------------------------------------------------------------------
@@ -372,7 +372,7 @@ constexpr const char* kRapidColour = "#d62728";
 
 }  // namespace
 
-std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const ToolMotion> motion, double tolerance,
+std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const MotionBlock> motion, double tolerance,
                                              const EntityProgress& on_entity) {
   if (!(tolerance > 0)) throw InputError(errc::preview_tolerance, Place::at_setting("deviation"), "needs a tolerance > 0 to measure against");
   std::vector<BlockDeviation> out;
@@ -380,7 +380,7 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Too
   bool tagged = false;
   for (const auto& m : motion) tagged = tagged || m.entity >= 0;
   std::vector<std::vector<Vec3>> points(motion.size());
-  auto cutting = [&](size_t i) { return is_feed(motion[i].block) && !is_plunge(motion, i); };
+  auto cutting = [&](size_t i) { return is_feed(motion[i]) && !is_plunge(motion, i); };
 
   if (tagged) {
     // Each entity against its own blocks, in cutting order.
@@ -396,7 +396,7 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Too
       const DenseCurve c = dense_curve(e, sh, tolerance);
       size_t hint = 0;
       for (size_t i : it->second) {
-        const auto P = measuring_points(motion[i].block, tolerance, c.dim);
+        const auto P = measuring_points(motion[i], tolerance, c.dim);
         out.push_back({i, c.entity, measure_block(c, P, hint, tolerance)});
       }
     }
@@ -412,7 +412,7 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Too
     std::vector<size_t> hints(curves.size(), 0);
     for (size_t i = 0; i < motion.size() && !curves.empty(); ++i) {
       if (!cutting(i)) continue;
-      const auto& b = motion[i].block;
+      const auto& b = motion[i];
       size_t best = 0;
       double best_d = HUGE_VAL;
       const Vec3 mid = lerp(b.from, b.to, 0.5);
@@ -452,7 +452,7 @@ void svg_toolpath(std::string& o, const View& v, const PreviewInput& in, const s
     const auto& s = msamples[i];
     const P2 a = v.screen(s.front()), b = v.screen(s.back());
     const bool zero = s.size() == 2 && std::hypot(a.x - b.x, a.y - b.y) < 1e-6;
-    if (m.block.kind == BlockKind::rapid) {
+    if (m.kind == BlockKind::rapid) {
       if (!zero) rapid_d += (rapid_d.empty() ? "" : " ") + path_d(v, s);
       continue;
     }
@@ -546,7 +546,7 @@ void svg_entity(std::string& o, const View& v, const PreviewInput& in, const Ent
     have_start = have_mid = true;
   } else {
     for (size_t i = 0; i < in.motion.size() && !have_start; ++i) {
-      const auto& b = in.motion[i].block;
+      const auto& b = in.motion[i];
       if (in.motion[i].entity != static_cast<int>(e.index) || !is_feed(b) || is_plunge(in.motion, i) ||
           b.from == b.to)
         continue;
@@ -577,7 +577,7 @@ void svg_entity(std::string& o, const View& v, const PreviewInput& in, const Ent
     cut = "T" + std::to_string(in.entity_tool[e.index]);
   double zlo = HUGE_VAL, zhi = -HUGE_VAL;
   for (size_t i = 0; i < in.motion.size(); ++i) {
-    const auto& b = in.motion[i].block;
+    const auto& b = in.motion[i];
     if (in.motion[i].entity != entity || !is_feed(b) || is_plunge(in.motion, i)) continue;
     zlo = std::min({zlo, b.from.z, b.to.z});
     zhi = std::max({zhi, b.from.z, b.to.z});
@@ -690,7 +690,7 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
     key("key-feed", line(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
     bool unmeasured = false;
     for (size_t i = 0; i < in.motion.size(); ++i)
-      unmeasured = unmeasured || (is_feed(in.motion[i].block) && !is_plunge(in.motion, i) && dev_of[i] < 0);
+      unmeasured = unmeasured || (is_feed(in.motion[i]) && !is_plunge(in.motion, i) && dev_of[i] < 0);
     if (unmeasured)
       key("key-feed-unmeasured", line(kFeedColour, 3, ""),
           in.program_measured >= 0 ? "surface passes (measured when built)" : "surface passes (not measured)");
@@ -771,7 +771,7 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   bool three_d = false;
   for (const auto& sh : shapes) three_d = three_d || (!sh.chains.empty() && sh.dim == 3);
   for (size_t i = 0; i < in.motion.size() && !three_d; ++i) {
-    const auto& b = in.motion[i].block;
+    const auto& b = in.motion[i];
     if (!is_feed(b) || is_plunge(in.motion, i)) continue;
     three_d = b.from.z != b.to.z;
     for (const auto& c : b.ctrl) three_d = three_d || c.z != b.from.z;
@@ -796,12 +796,12 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
       for (const auto& p : sh.control_points) all.add(p);
   }
   for (const auto& m : in.motion) {
-    all.add(m.block.from);
-    all.add(m.block.to);
+    all.add(m.from);
+    all.add(m.to);
   }
   const double size0 = all.empty() ? 1.0 : std::max(norm(all.hi - all.lo), 1e-9);
   std::vector<std::vector<Vec3>> msamples(in.motion.size());
-  for (size_t i = 0; i < in.motion.size(); ++i) msamples[i] = sample_block(in.motion[i].block, size0 * 2e-4);
+  for (size_t i = 0; i < in.motion.size(); ++i) msamples[i] = sample_block(in.motion[i], size0 * 2e-4);
   for (auto& v : views) {
     for (const auto& sh : shapes) {
       for (const auto& ch : sh.chains)

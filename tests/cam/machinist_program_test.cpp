@@ -207,7 +207,7 @@ TEST(PostOptions, ReturnToEndsWhereAsked) {
   const ConvertResult r = convert(job_of("", kCurve), load_machine_profile("generic"), o);
   const auto motion = program_motion(r.program);
   ASSERT_FALSE(motion.empty());
-  EXPECT_EQ(motion.back().block.to, (Vec3{0, 200, 20}));
+  EXPECT_EQ(motion.back().to, (Vec3{0, 200, 20}));
   // Up first (20 is above safe Z), then across: never across below safe Z.
   const auto l = lines_of(r.gcode);
   const size_t across = index_of(l, "X0. Y200.");

@@ -42,18 +42,18 @@ TEST(ProgramMotion, FollowsModalAxesAndSkipsNonMotion) {
   const auto m = program_motion(p);
   ASSERT_EQ(m.size(), 4u);
   // Unknown axes count as already at the target: no invented travel.
-  EXPECT_EQ(m[0].block.from, (Vec3{0, 0, 5}));
-  EXPECT_EQ(block_length(m[0].block), 0.0);
-  EXPECT_EQ(m[1].block.from, (Vec3{10, 0, 5}));
-  EXPECT_EQ(m[1].block.to, (Vec3{10, 0, 5}));
-  EXPECT_EQ(m[2].block.from, (Vec3{10, 0, 5}));
-  EXPECT_EQ(m[2].block.to, (Vec3{10, 0, -1}));
-  EXPECT_EQ(m[2].block.feed, 100);
+  EXPECT_EQ(m[0].from, (Vec3{0, 0, 5}));
+  EXPECT_EQ(block_length(m[0]), 0.0);
+  EXPECT_EQ(m[1].from, (Vec3{10, 0, 5}));
+  EXPECT_EQ(m[1].to, (Vec3{10, 0, 5}));
+  EXPECT_EQ(m[2].from, (Vec3{10, 0, 5}));
+  EXPECT_EQ(m[2].to, (Vec3{10, 0, -1}));
+  EXPECT_EQ(m[2].feed, 100);
   EXPECT_EQ(m[2].entity, 0);
-  EXPECT_EQ(block_length(m[2].block), 6.0);
-  EXPECT_EQ(m[3].block.kind, BlockKind::arc_ccw);
-  EXPECT_NEAR(block_length(m[3].block), 10 * kPi / 2, 1e-12);
-  EXPECT_EQ(m[0].block.feed, 0);  // rapids carry no feed
+  EXPECT_EQ(block_length(m[2]), 6.0);
+  EXPECT_EQ(m[3].kind, BlockKind::arc_ccw);
+  EXPECT_NEAR(block_length(m[3]), 10 * kPi / 2, 1e-12);
+  EXPECT_EQ(m[0].feed, 0);  // rapids carry no feed
 }
 
 MotionBlock arc_block(BlockKind k, Vec3 from, Vec3 to, Vec3 c) {

@@ -261,7 +261,7 @@ TEST(PreviewSvg, DeviationOfAForeignProgramIsMeasuredAgainstTheNearestCurve) {
   // old deviation plus the shift, and where the curve runs across X (the
   // seeds' curves have vertical tangents) the cut is about 0.05 off. It is
   // drawn in the alarm colour.
-  for (auto& m : motion) m.block.from.x += 0.05, m.block.to.x += 0.05;
+  for (auto& m : motion) m.from.x += 0.05, m.to.x += 0.05;
   const auto moved = block_deviations(b.job, motion, b.program.tolerance);
   ASSERT_EQ(moved.size(), tagged.size());
   double mx = 0;

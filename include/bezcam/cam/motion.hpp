@@ -27,6 +27,9 @@ struct MotionBlock {
   int order = 0;           ///< nurbs: degree + 1; bezier: degree + 1
   std::vector<Vec3> ctrl;  ///< nurbs / bezier control points, ctrl[0] == from
   std::vector<double> weights, knots;  ///< nurbs (LinuxCNC G5.2: the interpreter's clamped uniform knots)
+  /// Index of the job entity the block cuts (program_motion()); -1 when
+  /// unknown (a program read from text) or none (a tool change's retract).
+  int entity = -1;
 };
 
 /// Point of a block at t in [0,1] (arcs by angle, NURBS over the knot domain).
@@ -50,18 +53,13 @@ Arc block_arc(const MotionBlock& b);
 double arc_sweep(const MotionBlock& b);
 
 
-/// One motion block and the entity it belongs to.
-struct ToolMotion {
-  MotionBlock block;
-  int entity = -1;  ///< index in the job's entities; -1 when unknown or none
-};
 
 /// The motion blocks of `p`, in order, in program coordinates (job units).
 /// Axis words are modal: a move that sets only some axes keeps the others.
 /// Axes no move has set yet (the first retract sets only Z) count as being
 /// already at the target, so a block never starts from an invented origin.
 /// Comments, tool changes and spindle moves produce no block.
-std::vector<ToolMotion> program_motion(const Program& p);
+std::vector<MotionBlock> program_motion(const Program& p);
 
 /// Length of a block in program units: exact for lines and arcs (helical
 /// arcs included); NURBS and Bézier blocks (and arcs whose ends sit at
@@ -94,7 +92,7 @@ struct MotionTotals {
 /// `entity` is kAllEntities). `rapid_rate`: units/min assumed for rapids
 /// (> 0). Feeds of 0 (a reader that saw no F word) count no time.
 inline constexpr int kAllEntities = -2;
-MotionTotals motion_totals(std::span<const ToolMotion> motion, double rapid_rate, int entity = kAllEntities);
+MotionTotals motion_totals(std::span<const MotionBlock> motion, double rapid_rate, int entity = kAllEntities);
 
 
 }  // namespace bezcam

@@ -44,7 +44,7 @@ struct PreviewInput {
   /// The true geometry; null when only a program is drawn.
   const Job* job = nullptr;
   /// The tool path (a built program's motion, or a G-code file's).
-  std::vector<ToolMotion> motion;
+  std::vector<MotionBlock> motion;
   Units units = Units::mm;
   /// Top of the deviation colour scale (units, > 0 when deviation is on):
   /// the tolerance the program promises.
@@ -87,7 +87,7 @@ struct BlockDeviation {
 /// 0.2 % of `tolerance`; the largest of them agrees with the program's
 /// measured deviation (deviation.hpp) to that accuracy. Blocks of entities
 /// without curves (surfaces) are left out.
-std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const ToolMotion> motion, double tolerance,
+std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const MotionBlock> motion, double tolerance,
                                              const EntityProgress& on_entity = {});
 
 /// The SVG document. Throws InputError when there is nothing to draw (no
