@@ -84,6 +84,7 @@ inline void add_post_options(CLI::App* s, PostOptions& o) {
   s->add_option("--precision", o.precision, "coordinate decimals, replacing the profile's (the proven bound "
                                             "includes their rounding)")
       ->check(CLI::Range(0, 9))
+      ->default_str("")
       ->group(g);
   s->add_flag("--no-comments", o.no_comments, "no comments in the program (an M00's message to the operator stays)")
       ->group(g);
@@ -99,6 +100,7 @@ inline void add_post_options(CLI::App* s, PostOptions& o) {
   s->add_option("--program-number", o.program_number, "program number (Fanuc O word; a comment elsewhere), "
                                                       "replacing the job's")
       ->check(CLI::Range(1L, 99999999L))
+      ->default_str("")
       ->group(g);
   s->get_option("--origin")->excludes(s->get_option("--offset"));
 }
