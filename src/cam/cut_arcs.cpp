@@ -66,13 +66,16 @@ void emit_arcs(CutContext& c, EntityReport& r) {
   std::vector<Vec3> path;
   r.blocks = 0;
   r.bound = append_arcs_or_lines(c, pieces, path, r.blocks);
-  if (c.measure) {
-    r.measured = measure_printed(pieces, path, c.tolerance, r.bound);
-    // The sampled path lies within kSampleShare of the drawn one.
-    if (r.measured > c.tolerance * (1 + kSampleShare))
-      throw std::logic_error("internal check failed: " + r.label + " deviates by " + fmt_num(r.measured) +
-                             " beyond the tolerance " + fmt_num(c.tolerance));
-  }
+  if (c.measure)
+    c.measure_with(r, [pieces = std::span<const Bezier>(pieces), path = std::move(path), tol = c.tolerance,
+                       bound = r.bound, label = r.label] {
+      const double m = measure_printed(pieces, path, tol, bound);
+      // The sampled path lies within kSampleShare of the drawn one.
+      if (m > tol * (1 + kSampleShare))
+        throw std::logic_error("internal check failed: " + label + " deviates by " + fmt_num(m) +
+                               " beyond the tolerance " + fmt_num(tol));
+      return m;
+    });
 }
 
 }  // namespace bezcam::detail

@@ -3,12 +3,26 @@
 // starts with the tool at the entity's first point at cutting depth and
 // appends the moves that cut the entity, filling the report's blocks,
 // measured deviation and bound.
+#include <functional>
 #include <span>
 #include <vector>
 
 #include "bezcam/cam/program.hpp"
 
 namespace bezcam::detail {
+
+/// The independent measurements of a program's curve entities, run after
+/// the whole program is built, on every core (they are most of the time a
+/// conversion takes, and independent of each other). Each task returns the
+/// reading for the report at `report` (index into Program::entities) and
+/// throws std::logic_error when the reading breaks the tolerance.
+struct Measurements {
+  struct Task {
+    size_t report;
+    std::function<double()> measure;
+  };
+  std::vector<Task> tasks;
+};
 
 struct CutContext {
   const Job& job;
@@ -19,6 +33,15 @@ struct CutContext {
   double tolerance;  // job units
   bool measure;
   Program& program;
+  /// Where a curve emitter leaves its measurement (null: measure at once);
+  /// `report` is the index its EntityReport will have.
+  Measurements* later = nullptr;
+  size_t report = 0;
+  /// Runs `f` now into `r.measured`, or leaves it for later.
+  void measure_with(EntityReport& r, std::function<double()> f) const {
+    if (later) later->tasks.push_back({report, std::move(f)});
+    else r.measured = f();
+  }
 };
 
 /// The point the tool cuts at for a curve point (2D curves at cut_z).

@@ -100,12 +100,15 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
       path.insert(path.end(), f.begin() + 1, f.end());
     }
   }
-  if (c.measure) {
-    r.measured = measure_printed(g.pieces, path, c.tolerance, r.bound);
-    if (r.measured > c.tolerance * (1 + 10 * kSampleShare))
-      throw std::logic_error("internal check failed: " + r.label + " deviates by " + fmt_num(r.measured) +
-                             " beyond the tolerance " + fmt_num(c.tolerance));
-  }
+  if (c.measure)
+    c.measure_with(r, [pieces = std::span<const Bezier>(g.pieces), path = std::move(path), tol = c.tolerance,
+                       bound = r.bound, label = r.label] {
+      const double got = measure_printed(pieces, path, tol, bound);
+      if (got > tol * (1 + 10 * kSampleShare))
+        throw std::logic_error("internal check failed: " + label + " deviates by " + fmt_num(got) +
+                               " beyond the tolerance " + fmt_num(tol));
+      return got;
+    });
 }
 
 }  // namespace bezcam::detail

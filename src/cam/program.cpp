@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <charconv>
+#include <atomic>
 #include <cstdio>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
@@ -158,12 +162,15 @@ void emit_lines(CutContext& c, EntityReport& r) {
     c.program.moves.push_back({l, static_cast<int>(c.entity.index)});
   }
   r.blocks = poly.size() - 1;
-  if (c.measure) {
-    r.measured = measure_deviation(pieces, poly, c.tolerance).max();
-    if (r.measured > c.tolerance)
-      throw std::logic_error("internal check failed: " + r.label + " deviates by " + fmt_num(r.measured) +
-                             " beyond the tolerance " + fmt_num(c.tolerance));
-  }
+  if (c.measure)
+    c.measure_with(r, [pieces = std::span<const Bezier>(pieces), poly = std::move(poly), tol = c.tolerance,
+                       label = r.label] {
+      const double m = measure_deviation(pieces, poly, tol).max();
+      if (m > tol)
+        throw std::logic_error("internal check failed: " + label + " deviates by " + fmt_num(m) +
+                               " beyond the tolerance " + fmt_num(tol));
+      return m;
+    });
 }
 
 }  // namespace detail
@@ -220,6 +227,38 @@ void approach(Program& p, int entity, const Vec3& start, double safe, double cle
   plunge.to = start;
   plunge.feed = plunge_feed;
   push({plunge, entity});
+}
+
+// Runs the deferred measurements on every core, fills the reports and the
+// program's largest reading; the first failure (an internal check) is
+// rethrown here.
+void run_measurements(Program& p, detail::Measurements& later) {
+  auto& tasks = later.tasks;
+  if (tasks.empty()) return;
+  std::vector<double> readings(tasks.size(), 0);
+  std::atomic<size_t> next{0};
+  std::mutex failed_m;
+  std::exception_ptr failed;
+  auto work = [&] {
+    for (size_t i; (i = next.fetch_add(1)) < tasks.size();) {
+      try {
+        readings[i] = tasks[i].measure();
+      } catch (...) {
+        std::lock_guard lk(failed_m);
+        if (!failed) failed = std::current_exception();
+      }
+    }
+  };
+  const size_t n = std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), tasks.size());
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < n; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (failed) std::rethrow_exception(failed);
+  for (size_t i = 0; i < tasks.size(); ++i) {
+    p.entities[tasks[i].report].measured = readings[i];
+    p.max_measured = std::max(p.max_measured, readings[i]);
+  }
 }
 
 // Adds the offset (rounded to the program's decimals) to every X and Y,
@@ -282,6 +321,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
   Vec3 pos;
   bool pos_known = false;
   ProgramLength length;  // stated limits (program_limits.hpp)
+  detail::Measurements later;
   for (const Entity& e : job.entities) {
     if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
     const CutParams cp = cut_params(job, e, m);
@@ -291,7 +331,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     p.safe_z = p.entities.empty() ? safe : std::min(p.safe_z, safe);
     const auto& g = e.curve;
     if (e.surface) {  // patches and curves on surfaces: surface_emitter.cpp
-      detail::CutContext sc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
+      detail::CutContext sc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, nullptr, 0};
       detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known, cur_coolant};
       const EntityReport r = detail::emit_surface(sc, ms);
       for (const auto& line : cp.after)
@@ -322,7 +362,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
     r.type = e.type;
     r.degree = g.max_degree();
     r.length = g.length();
-    detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p};
+    detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
     const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
     const int entity = static_cast<int>(e.index);
     r.tool = cp.tool;
@@ -357,6 +397,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
   }
   // The coolant stops with the cut; the profile's footer stops the spindle.
   if (cur_coolant != Coolant::off) push({CoolantMove{Coolant::off}});
+  run_measurements(p, later);
   move_part(p, opt.offset);
   if (opt.return_to) {
     const Vec3 to{quantize(opt.return_to->x, p.decimals), quantize(opt.return_to->y, p.decimals),

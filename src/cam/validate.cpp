@@ -1,6 +1,8 @@
 #include "bezcam/cam/validate.hpp"
 
 #include <cmath>
+#include <limits>
+#include <vector>
 #include <numbers>
 #include <stdexcept>
 
@@ -48,6 +50,13 @@ void validate_program(const Program& p, const MachineProfile& m) {
     }
   };
   const double max_feed = m.max_feed_mm_min * k;
+  // Each entity's clearance plane, by entity index (NaN: none).
+  std::vector<double> clear;
+  for (const auto& r : p.entities)
+    if (r.entity >= 0) {
+      if (clear.size() <= static_cast<size_t>(r.entity)) clear.resize(r.entity + 1, std::numeric_limits<double>::quiet_NaN());
+      clear[r.entity] = r.clear_z;
+    }
   Vec3 pos;
   unsigned known = 0;
   for (const Move& mv : p.moves) {
@@ -83,8 +92,8 @@ void validate_program(const Program& p, const MachineProfile& m) {
     // An entity's clearance plane (surface passes linked above the
     // surface's top) is as safe as safe Z for that entity's own rapids.
     double floor = p.safe_z;
-    for (const auto& r : p.entities)
-      if (r.entity == mv.entity && mv.entity >= 0 && r.clear_z < floor) floor = r.clear_z;
+    if (mv.entity >= 0 && static_cast<size_t>(mv.entity) < clear.size() && clear[mv.entity] < floor)
+      floor = clear[mv.entity];
     if (rapid && moves_xy && (to.z < floor || ((known & 4) && pos.z < floor)))
       throw InputError(errc::program_rapid_below_safe_z, where(mv),
                        "a rapid move would cross the part below safe Z (" + fmt_num(p.safe_z) + " " + unit + ")");
