@@ -1,0 +1,33 @@
+#include "bezcam/import/read_drawing.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "bezcam/error.hpp"
+#include "bezcam/import/dxf_reader.hpp"
+#include "bezcam/import/svg_reader.hpp"
+#include "bezcam/limits.hpp"
+
+namespace bezcam::import {
+namespace {
+std::string lower_ext(const std::filesystem::path& f) {
+  std::string e = f.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return e;
+}
+}  // namespace
+
+bool is_drawing(const std::filesystem::path& file) {
+  const std::string e = lower_ext(file);
+  return e == ".svg" || e == ".dxf";
+}
+
+Drawing read_drawing(const std::filesystem::path& file) {
+  const std::string text = read_bounded(file, kMaxJobBytes, "drawing");
+  const std::string source = file.string();
+  Drawing d = lower_ext(file) == ".dxf" ? read_dxf(text, source) : read_svg(text, source);
+  join_contours(d);
+  return d;
+}
+
+}  // namespace bezcam::import
