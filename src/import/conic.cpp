@@ -25,15 +25,35 @@ std::vector<Piece> ellipse_arc(const Vec3& center, const Vec3& u, const Vec3& v,
   const int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / quarter - 1e-12)));
   const double step = sweep / n;
   const double h = step / 2, w = std::cos(h);
-  const auto at = [&](double t) { return center + u * std::cos(t) + v * std::sin(t); };
+  // cos and sin, exact at multiples of 90 degrees (a DXF arc from 270 to 0
+  // degrees ends at (r, 0), not at (r, -2e-16)).
+  const auto cs = [quarter](double t) {
+    const double k = std::round(t / quarter);
+    if (std::abs(t - k * quarter) <= 1e-13 * std::max(1.0, std::abs(t))) {
+      const long q = ((static_cast<long>(k) % 4) + 4) % 4;
+      static const double c[4] = {1, 0, -1, 0}, sn[4] = {0, 1, 0, -1};
+      return std::pair{c[q], sn[q]};
+    }
+    return std::pair{std::cos(t), std::sin(t)};
+  };
+  const auto at = [&](double t) {
+    const auto [c, s] = cs(t);
+    return center + u * c + v * s;
+  };
   std::vector<Piece> out;
   out.reserve(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) {
-    const double a = t0 + step * i, m = a + h;
+    const double a = t0 + step * i;
     Piece p;
     // The middle control point is the tangents' intersection: p(m) pushed
     // out by 1 / cos(h); its weight cos(h) makes the piece the exact conic.
-    p.points = {at(a), center + (u * std::cos(m) + v * std::sin(m)) / w, at(t0 + step * (i + 1))};
+    // The tangents meet at the chord's midpoint pushed out by 1 / cos^2(h):
+    // from the ends' own cos and sin, so a quarter arc's corner is exact.
+    const double b = t0 + step * (i + 1);
+    const auto [ca, sa] = cs(a);
+    const auto [cb, sb] = cs(b);
+    const double cstep = cs(step).first;
+    p.points = {at(a), center + (u * (ca + cb) + v * (sa + sb)) / (1 + cstep), at(b)};
     p.weights = {1, w, 1};
     out.push_back(std::move(p));
   }

@@ -197,7 +197,7 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
     if (!d.layers.count(l)) {
       std::string known;
       for (const auto& [name, s] : d.layers) known += (known.empty() ? "" : ", ") + quoted(name);
-      throw InputError(errc::import_layer, Place::at_option("--layer"),
+      throw InputError(errc::import_layer, Place::at_setting("layers"),
                        d.source + " has no layer " + quoted(l) + "; its layers are " + (known.empty() ? "none" : known));
     }
   double scale = 1;
@@ -243,7 +243,7 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
   if (n == 0)
     throw InputError(errc::import_empty, Place::at_file(d.source),
                      keep.empty() ? std::string("expected geometry to cut, found none")
-                                  : "expected geometry to cut on the layers asked for (--layer), found none");
+                                  : "expected geometry to cut on the layers asked for, found none");
   o << "\n  ]\n}\n";
   return o.str();
 }
@@ -259,7 +259,11 @@ Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>*
     const std::string path = e.place().json_path.value_or("");
     for (const auto& [k, v] : opt.settings) {
       if (path == k || path == "job." + k || (path == "job" && e.message().find(quoted(k)) != std::string::npos))
-        throw InputError(e.id(), Place::at_option("--set " + k), e.message());
+      {
+        Place where = Place::at_setting("settings." + k);
+        where.file = d.source;
+        throw InputError(e.id(), where, e.message());
+      }
     }
     throw;
   }

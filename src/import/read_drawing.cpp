@@ -25,7 +25,8 @@ bool is_drawing(const std::filesystem::path& file) {
 Drawing read_drawing(const std::filesystem::path& file) {
   const std::string text = read_bounded(file, kMaxJobBytes, "drawing");
   const std::string source = file.string();
-  Drawing d = lower_ext(file) == ".dxf" ? read_dxf(text, source) : read_svg(text, source);
+  if (lower_ext(file) != ".dxf") return read_svg(text, source);  // each subpath its own entity
+  Drawing d = read_dxf(text, source);
   join_contours(d);
   return d;
 }

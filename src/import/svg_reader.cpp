@@ -257,7 +257,7 @@ struct Context {
     int& uses = s_->id_uses[base];
     c.id = ++uses == 1 ? base : base + "#" + std::to_string(uses);
     c.element = describe(node_);
-    s_->out->layers[""].read[kind] += 1;
+    if (subpaths_ == 1) s_->out->layers[""].read[kind] += 1;  // elements, not subpaths
     s_->out->contours.push_back(std::move(c));
   }
 };
@@ -313,6 +313,43 @@ struct ShapesPolicy {
   using collect_attributes = boost::mpl::set0<>;
   static const bool convert_only_rounded_rect_to_path = false;
 };
+
+// Drawings from Inkscape and browsers carry attributes and CSS properties
+// SVG 1.1 does not know (aria-label, font-variation-settings, line-height):
+// they say nothing about geometry and are ignored, as browsers do, and so
+// are unknown elements. Every other refusal of SVG++ stands (a value that
+// does not parse in an attribute bezcam reads).
+template <class Ctx>
+struct LenientErrors : svgpp::policy::error::raise_exception<Ctx> {
+  template <class XMLElement, class ElementName>
+  static bool unknown_element(const Ctx&, const XMLElement&, const ElementName&) {
+    return true;  // skipped with its children; the traversal goes on
+  }
+  template <class XMLElement>
+  static bool unexpected_element(const Ctx&, const XMLElement&) {
+    return true;
+  }
+  template <class XMLAttribute, class AttributeName>
+  static bool unknown_attribute(const Ctx&, const XMLAttribute&, const AttributeName&,
+                                BOOST_SCOPED_ENUM(svgpp::detail::namespace_id), tag::source::attribute) {
+    return true;
+  }
+  template <class XMLAttribute, class AttributeName>
+  static bool unknown_attribute(const Ctx&, const XMLAttribute&, const AttributeName&, tag::source::css) {
+    return true;
+  }
+};
+
+}  // namespace
+}  // namespace bezcam::import
+
+// SVG++ takes at most 8 policies as parameters of document_traversal; the
+// error policy is given by specialising its default for bezcam's context.
+template <>
+struct svgpp::policy::error::default_policy<bezcam::import::Context> : bezcam::import::LenientErrors<bezcam::import::Context> {};
+
+namespace bezcam::import {
+namespace {
 
 // Elements that draw but are not geometry bezcam cuts: counted as skipped.
 const std::set<std::string>& skipped_kinds() {
@@ -385,7 +422,23 @@ Drawing read_svg(std::string_view text, const std::string& source) {
       (attr_of(root, "width").empty() || attr_of(root, "height").empty()))
     throw InputError(errc::import_units, Place::at_file(source),
                      describe(root) + ": expected width and height or a viewBox (the page's size), found neither");
+  // The page's size sets every length's scale: a unit SVG does not know
+  // there is refused as unknown units, naming it.
+  for (const char* a : {"width", "height"}) {
+    const std::string v = attr_of(root, a);
+    if (v.empty()) continue;
+    char* end = nullptr;
+    std::strtod(v.c_str(), &end);
+    std::string unit(end);
+    while (!unit.empty() && unit.back() == ' ') unit.pop_back();
+    static const std::set<std::string> known = {"", "px", "in", "cm", "mm", "pt", "pc", "em", "ex", "%"};
+    if (end != v.c_str() && !known.count(unit))
+      throw InputError(errc::import_units, Place::at_file(source),
+                       describe(root) + ": " + a + ": expected a length in px, in, cm, mm, pt or pc (or none: 96 per inch), found \"" +
+                           v + "\"");
+  }
   Context ctx(s);
+  s.current = root;
   try {
     svgpp::document_traversal<svgpp::processed_elements<ProcessedElements>,
                               svgpp::processed_attributes<ProcessedAttributes>,

@@ -166,7 +166,8 @@ TEST_P(CheckLikeConvert, RefusesWhatConvertRefuses) {
   const std::string file = "tests/bad/" + name;
   std::vector<std::string> args{"check", file};
   for (size_t i = 1; i + 1 < x.args.size(); ++i)
-    if (x.args[i] == "--machine" || x.args[i] == "--tolerance" || x.args[i] == "--output") {
+    if (x.args[i] == "--machine" || x.args[i] == "--tolerance" || x.args[i] == "--output" || x.args[i] == "--set" ||
+        x.args[i] == "--layer") {
       args.push_back(x.args[i]);
       args.push_back(x.args[i + 1]);
     }
@@ -183,7 +184,7 @@ INSTANTIATE_TEST_SUITE_P(TestsBad, CheckLikeConvert,
                          ::testing::ValuesIn([] {
                            std::vector<std::string> jobs;
                            for (const auto& n : bad_inputs())
-                             if (n.ends_with(".json")) jobs.push_back(n);
+                             if (n.ends_with(".json") || n.ends_with(".svg") || n.ends_with(".dxf")) jobs.push_back(n);
                            return jobs;
                          }()),
                          test_name);
