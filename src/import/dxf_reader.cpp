@@ -5,6 +5,7 @@
 #include "bezcam/import/dxf_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -13,6 +14,8 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/import/conic.hpp"
+#include "bezcam/kernel/knot_vector.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -82,6 +85,11 @@ class Reader {
   }
   Vec3 vec(const Entity& e, int code, Vec3 dflt = {}) const {
     return {num(e, code, dflt.x), num(e, code + 10, dflt.y), num(e, code + 20, dflt.z)};
+  }
+  bool has(const Entity& e, int code) const {
+    for (const Group& g : e.groups)
+      if (g.code == code) return true;
+    return false;
   }
   // Every value of `code` in order (knots, weights), or the points of
   // `code` (x), code + 10 (y), code + 20 (z).
@@ -258,6 +266,73 @@ std::vector<Piece> bulge_segment(const Vec3& a, const Vec3& b, double bulge) {
   return ps;
 }
 
+// A spline given by fit points and both end tangents, as CAD programs
+// define it (and ezdxf's fit_points_to_cad_cv): the cubic B-spline through
+// the points by global interpolation with end derivatives (The NURBS Book,
+// 9.2.2), chord-length parameters on [0, 1], the inner parameters as its
+// inner knots, each end derivative the tangent's direction times the total
+// chord length. Empty when two consecutive points are equal.
+std::optional<Piece> fit_spline(const std::vector<Vec3>& q, Vec3 t0, Vec3 t1) {
+  const size_t n = q.size() - 1;
+  std::vector<double> t(n + 1, 0.0);
+  double total = 0;
+  for (size_t k = 1; k <= n; ++k) {
+    const double dk = dist(q[k], q[k - 1]);
+    if (!(dk > 0)) return std::nullopt;
+    total += dk;
+    t[k] = total;
+  }
+  for (double& v : t) v /= total;
+  t[n] = 1;
+  std::vector<double> u(4, 0.0);
+  for (size_t k = 1; k < n; ++k) u.push_back(t[k]);
+  u.insert(u.end(), 4, 1.0);
+  const Vec3 d0 = t0 / norm(t0) * total, d1 = t1 / norm(t1) * total;
+  // Rows: P0 = Q0; P1 - P0 = D0 u4 / 3; sum N_i(t_k) P_i = Q_k (k = 1..n-1);
+  // P_{n+2} - P_{n+1} = Dn (1 - u_{m-4}) / 3; P_{n+2} = Qn. Banded (|c - r| <= 3),
+  // totally positive: eliminated without pivoting.
+  const size_t rows = n + 3;
+  constexpr int w = 3;
+  std::vector<std::array<double, 2 * w + 1>> a(rows);
+  for (auto& r : a) r.fill(0);
+  std::vector<Vec3> b(rows);
+  const auto at = [&](size_t r, size_t c) -> double& { return a[r][static_cast<size_t>(static_cast<long>(c) - static_cast<long>(r) + w)]; };
+  at(0, 0) = 1, b[0] = q[0];
+  at(1, 0) = -1, at(1, 1) = 1, b[1] = d0 * (u[4] / 3);
+  for (size_t k = 1; k < n; ++k) {
+    const int span = find_span(u, 3, t[k]);
+    double nb[4];
+    basis_functions(u, 3, span, t[k], nb);
+    for (int j = 0; j < 4; ++j) {
+      const size_t c = static_cast<size_t>(span - 3 + j);
+      if (nb[j] != 0) at(k + 1, c) = nb[j];
+    }
+    b[k + 1] = q[k];
+  }
+  at(n + 1, n + 1) = -1, at(n + 1, n + 2) = 1, b[n + 1] = d1 * ((1 - u[u.size() - 5]) / 3);
+  at(n + 2, n + 2) = 1, b[n + 2] = q[n];
+  for (size_t i = 0; i < rows; ++i) {
+    for (size_t r = i + 1; r < std::min(rows, i + w + 1); ++r) {
+      const double f = at(r, i) / at(i, i);
+      if (f == 0) continue;
+      for (size_t c = i; c < std::min(rows, i + w + 1); ++c) at(r, c) -= f * at(i, c);
+      b[r] -= b[i] * f;
+    }
+  }
+  std::vector<Vec3> p(rows);
+  for (size_t i = rows; i-- > 0;) {
+    Vec3 v = b[i];
+    for (size_t c = i + 1; c < std::min(rows, i + w + 1); ++c) v -= p[c] * at(i, c);
+    p[i] = v / at(i, i);
+  }
+  Piece pc;
+  pc.bspline = true;
+  pc.degree = 3;
+  pc.points = std::move(p);
+  pc.knots = std::move(u);
+  return pc;
+}
+
 void Reader::emit(const Entity& e, const Affine& m, const std::string& layer_in, const std::string& prefix) {
   // Entities on layer 0 of a block take the INSERT's layer.
   const std::string layer = (!prefix.empty() && e.layer() == "0") ? layer_in : e.layer();
@@ -350,9 +425,24 @@ void Reader::emit(const Entity& e, const Affine& m, const std::string& layer_in,
       p.points = std::move(cps);
       p.knots = std::move(knots);
       p.weights = std::move(weights);
+      // Everything else the job reader would refuse (degree, weights,
+      // knot multiplicity, an empty domain) is refused here, naming the entity.
+      try {
+        (void)NurbsCurve::make(p.degree, p.points, p.knots, p.weights);
+      } catch (const Error& err) {
+        fail(errc::import_knots, e, nullptr, err.where() + ": " + err.message());
+      }
       c.pieces.push_back(std::move(p));
       c.closed = (flags & 1) != 0 && dist(c.pieces[0].start(), c.pieces[0].end()) <= 1e-9 * (1 + max_abs(c.pieces[0].start()));
+    } else if (std::vector<Vec3> fit = points(e, 11); fit.size() >= 2 && has(e, 12) && has(e, 13) &&
+                                                         norm(vec(e, 12)) > 0 && norm(vec(e, 13)) > 0) {
+      std::optional<Piece> p = fit_spline(fit, vec(e, 12), vec(e, 13));
+      if (!p) fail(errc::import_knots, e, nullptr, "expected fit points (group code 11) that differ from one to the next, found two equal in a row");
+      c.pieces.push_back(std::move(*p));
+      c.closed = (flags & 1) != 0 && dist(fit.front(), fit.back()) <= 1e-9 * (1 + max_abs(fit.front()));
     } else {
+      // Without both end tangents the CAD program's curve is not defined by
+      // the file: a natural cubic spline through the points (docs/import.md).
       c.is_interpolation = true;
       c.interpolation.through = points(e, 11);
       c.interpolation.closed = (flags & 1) != 0;

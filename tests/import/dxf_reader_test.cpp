@@ -83,7 +83,7 @@ TEST(DxfReader, EzdxfEntitiesPassThroughEzdxfsOwnPoints) {
   const auto& [file, ref] = ezdxf_part();
   ASSERT_GT(ref.size(), 150u);
   const Drawing d = read_drawing(file);
-  for (const char* layer : {"SPLINE", "ELLIPSE", "POLY", "INS", "INS2"}) EXPECT_TRUE(d.layers.count(layer)) << layer;
+  for (const char* layer : {"SPLINE", "FIT", "ELLIPSE", "POLY", "INS", "INS2"}) EXPECT_TRUE(d.layers.count(layer)) << layer;
   for (const RefPoint& r : ref) {
     double best = 1e300;
     for (const Contour& c : d.contours)
@@ -94,6 +94,11 @@ TEST(DxfReader, EzdxfEntitiesPassThroughEzdxfsOwnPoints) {
   // The bulged polyline is one closed contour; the spline stays a NURBS.
   for (const Contour& c : d.contours) {
     if (c.layer == "POLY") EXPECT_TRUE(c.closed);
+    if (c.layer == "FIT") {  // fit points and end tangents: the CAD program's exact B-spline
+      ASSERT_EQ(c.pieces.size(), 1u);
+      EXPECT_TRUE(c.pieces[0].bspline);
+      EXPECT_FALSE(c.is_interpolation);
+    }
     if (c.layer == "SPLINE") {
       ASSERT_EQ(c.pieces.size(), 1u);
       EXPECT_TRUE(c.pieces[0].bspline);

@@ -56,6 +56,11 @@ def sample(e, layer):
 # A rational clamped cubic spline.
 s = msp.add_rational_spline([(0, 0), (10, 20), (30, -5), (45, 15), (60, 0)], [1, 0.5, 2, 1, 0.8], degree=3,
                             dxfattribs={"layer": "SPLINE"})
+# A spline by fit points and end tangents (no control points in the file):
+# CAD programs' global interpolation, evaluated by ezdxf.
+f = msp.add_spline([(0, 60), (12, 75), (30, 62), (41, 80), (55, 66)], dxfattribs={"layer": "FIT"})
+f.dxf.start_tangent = (1, 2, 0)
+f.dxf.end_tangent = (1, -0.5, 0)
 # A partial, rotated ellipse.
 msp.add_ellipse((100, 50), major_axis=(20, 10), ratio=0.4, start_param=0.3, end_param=4.0, dxfattribs={"layer": "ELLIPSE"})
 # A closed polyline with bulges of both signs.
