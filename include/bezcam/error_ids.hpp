@@ -168,6 +168,28 @@ inline constexpr ErrorId gcode_units_change{"gcode.units-change"};
 inline constexpr ErrorId gcode_unsupported{"gcode.unsupported"};
 /// A NURBS weight is missing or not > 0.
 inline constexpr ErrorId gcode_weight{"gcode.weight"};
+/// A DXF block inserts itself (directly or through other blocks).
+inline constexpr ErrorId import_block_recursion{"import.block-recursion"};
+/// A DXF file is in binary form, which bezcam does not read.
+inline constexpr ErrorId import_dxf_binary{"import.dxf-binary"};
+/// A DXF file is truncated or its group codes and values are malformed.
+inline constexpr ErrorId import_dxf_syntax{"import.dxf-syntax"};
+/// A drawing holds no geometry bezcam can cut (after --layer).
+inline constexpr ErrorId import_empty{"import.empty"};
+/// A DXF spline's knots, weights or points do not make a spline (knots decrease, counts differ).
+inline constexpr ErrorId import_knots{"import.knots"};
+/// --layer names a layer the drawing does not have.
+inline constexpr ErrorId import_layer{"import.layer"};
+/// The file is not an SVG or DXF drawing (or not well-formed XML).
+inline constexpr ErrorId import_not_a_drawing{"import.not-a-drawing"};
+/// A coordinate of a drawing is not a finite number.
+inline constexpr ErrorId import_not_finite{"import.not-finite"};
+/// A --set option is not KEY=VALUE, or the job refuses its value.
+inline constexpr ErrorId import_setting{"import.setting"};
+/// An SVG attribute (path data, length, transform) cannot be read.
+inline constexpr ErrorId import_svg_syntax{"import.svg-syntax"};
+/// A drawing's units are unknown ($INSUNITS, SVG length units, no page size).
+inline constexpr ErrorId import_units{"import.units"};
 /// A file cannot be read.
 inline constexpr ErrorId io_read{"io.read"};
 /// A file or standard output cannot be written.

@@ -8,6 +8,7 @@
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/import/drawing.hpp"
 #include "command.hpp"
 #include "options.hpp"
 
@@ -40,8 +41,27 @@ std::string pt(const Vec3& p, int dim) {
   return s.str();
 }
 
+// What a drawing held, per layer: elements read (by kind) and skipped.
+void print_drawing(const import::Drawing& d) {
+  const auto list = [](const std::map<std::string, size_t>& m) {
+    std::string text;
+    for (const auto& [kind, n] : m) text += (text.empty() ? "" : ", ") + std::to_string(n) + " " + kind;
+    return text;
+  };
+  std::cout << d.source << ": " << (d.format == "svg" ? "SVG" : "DXF") << " drawing, " << d.contours.size() << " contour"
+            << (d.contours.size() == 1 ? "" : "s") << " after joining\n";
+  for (const auto& [name, l] : d.layers) {
+    std::cout << (d.format == "svg" ? std::string("  document") : "  layer \"" + name + "\"") << ": read "
+              << (l.read.empty() ? std::string("nothing") : list(l.read));
+    if (!l.skipped.empty()) std::cout << "; skipped " << list(l.skipped);
+    std::cout << "\n";
+  }
+}
+
 int run() {
-  const Job job = read_job(o.job, o.conv.strict);
+  import::Drawing drawing;
+  const Job job = read_job(o.job, o.conv, &drawing);
+  if (!drawing.format.empty()) print_drawing(drawing);
   const char* u = to_string(job.units);
   std::cout << job.source << ": bezcam format " << job.version << ", units " << u << ", tolerance "
             << job.tolerance << " " << u << (job.machine ? ", machine " + *job.machine : std::string()) << "\n";

@@ -62,6 +62,20 @@ MachineProfile resolve_profile(const Job& job, const std::string& cli_machine);
 /// is refused, the warnings found before are printed first: a misspelt key
 /// is never hidden by another error.
 Job read_job(const std::string& path, bool strict);
+struct ConversionOptions;
+}  // namespace bezcam::cli
+namespace bezcam::import {
+struct Drawing;
+struct ImportOptions;
+}  // namespace bezcam::import
+namespace bezcam::cli {
+/// Reads a job file, or a drawing (.svg, .dxf) as the job it stands for,
+/// with the options' --set settings and --layer layers (which apply to
+/// drawings only: a job file states its own settings).
+/// `drawing`, when given, receives the drawing read (check lists it).
+Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing = nullptr);
+/// The --set and --layer options as import options (KEY=VALUE checked).
+import::ImportOptions import_options(const ConversionOptions& o);
 /// Prints a controller's state on stdout (status, stream --abort).
 void print_controller(const link::ControllerReport& r, const link::Endpoint& to);
 /// Prints warnings on stderr as `bezcam: warning: ...`.

@@ -40,7 +40,7 @@ int run() {
     throw InputError(errc::usage_report, Place::at_option("--report"),
                      "the report cannot go to the same place as the program (" + (o.out == "-" ? std::string("standard output") : o.out) +
                          "); give --report another file name, or write the program with -o FILE");
-  const Job job = read_job(o.job, o.conv.strict);
+  const Job job = read_job(o.job, o.conv);
   MachineProfile m = [&] {
     try {
       return resolve_profile(job, o.conv.machine);

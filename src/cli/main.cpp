@@ -153,9 +153,13 @@ bezcam::Error as_shown(const bezcam::Error& e) {
   static const std::pair<const char*, const char*> flags[] = {
       {"output", "--output"}, {"tolerance", "--tolerance"}, {"deviation", "--deviation"}};
   const auto& place = e.place();
-  if (place.setting && !place.option)
+  if (place.setting && !place.option) {
     for (const auto& [setting, flag] : flags)
       if (*place.setting == setting) return e.with_option(flag);
+    // A drawing's import settings (import/drawing.hpp): --set KEY, --layer.
+    if (*place.setting == "layers") return e.with_option("--layer");
+    if (place.setting->rfind("settings.", 0) == 0) return e.with_option("--set " + place.setting->substr(9));
+  }
   return e;
 }
 

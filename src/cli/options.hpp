@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace bezcam::cli {
 
@@ -22,11 +23,16 @@ inline CLI::Validator positive_number() {
       "NUMBER > 0");
 }
 
+struct ConversionOptions;
+void add_drawing_options(CLI::App* s, ConversionOptions& o);
+
 struct ConversionOptions {
   std::string machine;           ///< --machine: a profile name or a .json file; empty: the job's, else generic
   double tolerance = 0;          ///< --tolerance: overrides the job's when > 0
   std::string output = "lines";  ///< --output: lines, arcs or nurbs
   bool strict = false;           ///< --strict: refuse every unknown key of the job
+  std::vector<std::string> sets;    ///< --set KEY=VALUE: job settings of a drawing (.svg, .dxf)
+  std::vector<std::string> layers;  ///< --layer NAME: the drawing's layers to cut (default all)
 };
 
 /// Adds --machine, --tolerance and --output to `s`; `output_help` is the
@@ -49,6 +55,18 @@ inline void add_conversion_options(CLI::App* s, ConversionOptions& o, const std:
       ->capture_default_str();
   s->add_flag("--strict", o.strict, "refuse every unknown key of the job (likely typos such as \"tolerence\" are "
                                     "always refused; other unknown keys are otherwise warnings)");
+  add_drawing_options(s, o);
+}
+
+/// --set and --layer: how a drawing (.svg, .dxf) given instead of a job is
+/// read (import).
+inline void add_drawing_options(CLI::App* s, ConversionOptions& o) {
+  s->add_option("--set", o.sets, "a job setting for a drawing (.svg, .dxf), KEY=VALUE, repeatable: tolerance, units, "
+                                 "feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool, coolant ... (checked as the "
+                                 "job file's keys)")
+      ->type_name("KEY=VALUE");
+  s->add_option("--layer", o.layers, "a layer of the drawing to cut, repeatable (default: every layer)")
+      ->type_name("NAME");
 }
 
 }  // namespace bezcam::cli

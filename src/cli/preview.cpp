@@ -66,7 +66,7 @@ int run_program() {
                      "--output chooses the moves of a program built from the job; it does not apply to --program, "
                      "which is drawn as written (leave one of them out)");
   std::optional<Job> job;
-  if (!o.job.empty()) job = read_job(o.job, o.conv.strict);
+  if (!o.job.empty()) job = read_job(o.job, o.conv);
   const std::string text = read_text(o.program, "G-code file");
   // The machine, when named, is checked by lint (its findings are shown,
   // not fatal: seeing the path helps to fix it) and gives the rapid rate.
@@ -168,7 +168,7 @@ int run() {
   if (!o.program.empty()) return run_program();
   if (o.job.empty())
     throw InputError(errc::usage_preview, "JOB", "give a job file to draw, or a G-code program with --program FILE.nc");
-  const Job job = read_job(o.job, o.conv.strict);
+  const Job job = read_job(o.job, o.conv);
   const MachineProfile m = resolve_profile(job, o.conv.machine);
   const size_t n = job.entities.size();
   const ProgressConfig pcfg = progress_config(o.quiet);

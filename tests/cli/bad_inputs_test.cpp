@@ -186,7 +186,7 @@ INSTANTIATE_TEST_SUITE_P(TestsBad, CheckLikeConvert,
                          ::testing::ValuesIn([] {
                            std::vector<std::string> jobs;
                            for (const auto& n : bad_inputs())
-                             if (n.ends_with(".json")) jobs.push_back(n);
+                             if (n.ends_with(".json") || n.ends_with(".svg") || n.ends_with(".dxf")) jobs.push_back(n);
                            return jobs;
                          }()),
                          test_name);

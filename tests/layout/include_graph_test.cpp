@@ -28,7 +28,8 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"report", {"base", "kernel", "flatten", "job", "cam", "gcode"}},
       {"link", {"base"}},
       {"sim", {"base", "kernel", "flatten", "job", "cam", "gcode", "link"}},
-      {"cli", {"base", "kernel", "flatten", "job", "cam", "gcode", "report", "link", "sim", "cli"}},
+      {"import", {"base", "kernel", "job"}},
+      {"cli", {"base", "kernel", "flatten", "job", "cam", "gcode", "report", "link", "sim", "import", "cli"}},
   };
   return g;
 }

@@ -1,0 +1,88 @@
+#pragma once
+/// A drawing read from an SVG or DXF file (bezcam::import): exact curves,
+/// grouped in contours, with what was read and skipped, before it becomes a
+/// job. Nothing here is flattened: lines, Béziers and conic arcs are Bézier
+/// pieces (conics rational), splines keep their knots and weights.
+#include <cstddef>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bezcam/job/job.hpp"
+#include "bezcam/kernel/vec.hpp"
+
+namespace bezcam::import {
+
+/// One exact curve of a contour: a Bézier (polynomial, or rational when
+/// `weights` is not empty) or a B-spline/NURBS (`degree`, `knots`).
+struct Piece {
+  bool bspline = false;
+  int degree = 0;               ///< bspline only (a Bézier's is points - 1)
+  std::vector<Vec3> points;     ///< control points, millimetres (or the job's units)
+  std::vector<double> weights;  ///< empty: polynomial
+  std::vector<double> knots;    ///< bspline only
+  Vec3 start() const { return points.front(); }
+  Vec3 end() const;             ///< the end point (a clamped B-spline's last point)
+};
+
+/// A curve through points (a DXF spline given by fit points only): the
+/// job's `interpolate` entity.
+struct Interpolation {
+  std::vector<Vec3> through;
+  bool closed = false;
+};
+
+/// One entity of the job to be: pieces end to end (a `path`), or an
+/// interpolation.
+struct Contour {
+  std::string id;       ///< from the drawing: SVG id (`logo`, `logo.2`), DXF layer and handle
+  std::string layer;    ///< SVG: empty; DXF: the layer's name
+  std::string element;  ///< where it came from, for messages (`<path id="logo"> line 4`, `handle 2A`)
+  std::vector<Piece> pieces;
+  bool closed = false;
+  bool is_interpolation = false;
+  Interpolation interpolation;
+};
+
+/// What one layer held: elements read, and elements skipped by kind (TEXT,
+/// HATCH, DIMENSION, image ...).
+struct LayerSummary {
+  std::map<std::string, std::size_t> read, skipped;
+};
+
+struct Drawing {
+  std::string source;     ///< the file name, for messages
+  std::string format;     ///< "svg" or "dxf"
+  std::vector<Contour> contours;
+  std::map<std::string, LayerSummary> layers;  ///< by layer name ("" for SVG)
+  /// Largest extent of the control points (mm), the scale of "meet".
+  double size() const;
+};
+
+/// How a drawing becomes a job: `--set KEY=VALUE` settings (top-level
+/// `tolerance`, `units`, `machine`; every other key goes to the `job`
+/// object and is validated as the job file's keys are) and the layers to
+/// keep (empty: all).
+struct ImportOptions {
+  std::vector<std::pair<std::string, std::string>> settings;
+  std::vector<std::string> layers;
+};
+
+/// Joins contours of the same layer that meet end to end within
+/// 1e-6 x size() into one (reversing a contour where that makes it meet),
+/// closing those that close. Contours already closed stay as they are.
+void join_contours(Drawing& d);
+
+/// The job file (docs/job-format.md) the drawing is read as: every number
+/// written to full double precision (shortest text that reads back
+/// exactly). Throws InputError when a layer named in `opt` is not in the
+/// drawing or nothing is left to cut.
+std::string job_json(const Drawing& d, const ImportOptions& opt = {});
+
+/// The job: job_json() read by the job reader, so that `import` then
+/// `convert` and `convert DRAWING` are the same job. A setting the reader
+/// refuses is named as `--set KEY`.
+Job to_job(const Drawing& d, const ImportOptions& opt = {}, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace bezcam::import

@@ -1,0 +1,20 @@
+#pragma once
+/// Reading a drawing file by its kind: `.svg` (svg_reader.hpp) or `.dxf`
+/// (dxf_reader.hpp), at most kMaxJobBytes (refused before it is read).
+#include <filesystem>
+#include <string>
+
+#include "bezcam/import/drawing.hpp"
+
+namespace bezcam::import {
+
+/// True when the file name ends in .svg or .dxf (any case).
+bool is_drawing(const std::filesystem::path& file);
+
+/// Reads the drawing; a DXF's contours that meet end to end are then
+/// joined (join_contours()); an SVG keeps each subpath as it is. Throws IoError when the file cannot be read,
+/// InputError (limit.file-size, errc::import_*) when it is too large or is
+/// not a drawing bezcam reads.
+Drawing read_drawing(const std::filesystem::path& file);
+
+}  // namespace bezcam::import

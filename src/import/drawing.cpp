@@ -1,0 +1,278 @@
+#include "bezcam/import/drawing.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "bezcam/error.hpp"
+#include "bezcam/import/conic.hpp"
+#include "bezcam/job/job_json.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
+
+namespace bezcam::import {
+namespace {
+
+bool clamped_end(const Piece& p) {
+  const size_t k = p.knots.size(), q = static_cast<size_t>(p.degree);
+  if (k < q + 2) return false;
+  for (size_t i = k - q - 1; i < k; ++i)
+    if (p.knots[i] != p.knots[k - 1]) return false;
+  return true;
+}
+bool clamped_start(const Piece& p) {
+  const size_t q = static_cast<size_t>(p.degree);
+  if (p.knots.size() < q + 2) return false;
+  for (size_t i = 0; i <= q; ++i)
+    if (p.knots[i] != p.knots[0]) return false;
+  return true;
+}
+
+Vec3 start_of(const Piece& p) {
+  if (!p.bspline || clamped_start(p)) return p.points.front();
+  return evaluate(NurbsCurve::make(p.degree, p.points, p.knots, p.weights), p.knots[static_cast<size_t>(p.degree)]);
+}
+
+Piece reversed(Piece p) {
+  std::reverse(p.points.begin(), p.points.end());
+  std::reverse(p.weights.begin(), p.weights.end());
+  if (p.bspline) {
+    const double a = p.knots.front(), b = p.knots.back();
+    std::reverse(p.knots.begin(), p.knots.end());
+    for (double& k : p.knots) k = a + b - k;
+  }
+  return p;
+}
+Contour reversed(Contour c) {
+  std::reverse(c.pieces.begin(), c.pieces.end());
+  for (Piece& p : c.pieces) p = reversed(std::move(p));
+  return c;
+}
+Vec3 c_start(const Contour& c) { return start_of(c.pieces.front()); }
+Vec3 c_end(const Contour& c) { return c.pieces.back().end(); }
+
+// Makes `next` start exactly where `prev` ends (they are within the join
+// distance): the end control point moves when it is the curve's end,
+// otherwise a bridging line of that length is added.
+void meet(std::vector<Piece>& pieces, size_t i) {
+  Piece& prev = pieces[i - 1];
+  Piece& next = pieces[i];
+  const Vec3 e = prev.end();
+  if (start_of(next) == e) return;
+  if (!next.bspline || clamped_start(next)) {
+    next.points.front() = e;
+    return;
+  }
+  Piece bridge;
+  bridge.points = {e, start_of(next)};
+  pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(i), bridge);
+}
+
+// ---- JSON text --------------------------------------------------------------
+
+// Every number at full double precision: the shortest text that reads
+// back as the same double (messages round, a job file must not).
+std::string exact(double v) {
+  char b[64];
+  return std::string(b, std::to_chars(b, b + sizeof b, v).ptr);
+}
+std::string num(double v, double scale) { return exact(v * scale); }
+std::string quoted(const std::string& s) {
+  std::string o = "\"";
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      o += '\\';
+      o += ch;
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      o += buf;
+    } else {
+      o += ch;
+    }
+  }
+  return o + "\"";
+}
+std::string point(const Vec3& p, double scale) { return "[" + num(p.x, scale) + ", " + num(p.y, scale) + "]"; }
+std::string points(const std::vector<Vec3>& ps, double scale) {
+  std::string o = "[";
+  for (size_t i = 0; i < ps.size(); ++i) o += (i ? ", " : "") + point(ps[i], scale);
+  return o + "]";
+}
+std::string numbers(const std::vector<double>& vs) {
+  std::string o = "[";
+  for (size_t i = 0; i < vs.size(); ++i) o += (i ? ", " : "") + exact(vs[i]);
+  return o + "]";
+}
+// A --set value: a JSON number or literal as it is, anything else a string.
+std::string value_json(const std::string& v) {
+  if (v == "true" || v == "false" || v == "null") return v;
+  double d = 0;
+  const auto r = std::from_chars(v.data(), v.data() + v.size(), d);
+  if (r.ec == std::errc() && r.ptr == v.data() + v.size() && std::isfinite(d)) return v;
+  return quoted(v);
+}
+bool top_level_key(const std::string& k) { return k == "tolerance" || k == "units" || k == "machine"; }
+
+}  // namespace
+
+Vec3 Piece::end() const {
+  if (!bspline || clamped_end(*this)) return points.back();
+  return evaluate(NurbsCurve::make(degree, points, knots, weights), knots[knots.size() - 1 - static_cast<size_t>(degree)]);
+}
+
+double Drawing::size() const {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  bool any = false;
+  for (const Contour& c : contours) {
+    const auto add = [&](const Vec3& p) {
+      any = true;
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    };
+    for (const Piece& p : c.pieces)
+      for (const Vec3& q : p.points) add(q);
+    for (const Vec3& q : c.interpolation.through) add(q);
+  }
+  if (!any) return 0;
+  return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+}
+
+void join_contours(Drawing& d) {
+  const double eps = 1e-6 * d.size();
+  const auto near = [&](const Vec3& a, const Vec3& b) { return dist(a, b) <= eps; };
+  std::vector<Contour> out;
+  std::vector<bool> used(d.contours.size(), false);
+  for (size_t i = 0; i < d.contours.size(); ++i) {
+    if (used[i]) continue;
+    used[i] = true;
+    Contour chain = d.contours[i];
+    if (chain.closed || chain.is_interpolation || chain.pieces.empty()) {
+      out.push_back(std::move(chain));
+      continue;
+    }
+    size_t joined = 0;
+    for (bool grew = true; grew;) {
+      grew = false;
+      if (near(c_end(chain), c_start(chain))) break;  // closes: take nothing more
+      for (size_t j = i + 1; j < d.contours.size(); ++j) {
+        const Contour& c = d.contours[j];
+        if (used[j] || c.closed || c.is_interpolation || c.pieces.empty() || c.layer != chain.layer) continue;
+        const Vec3 e = c_end(chain), s = c_start(chain);
+        if (near(e, c_start(c)) || near(e, c_end(c))) {
+          Contour next = near(e, c_start(c)) ? c : reversed(c);
+          for (Piece& p : next.pieces) chain.pieces.push_back(std::move(p));
+        } else if (near(s, c_end(c)) || near(s, c_start(c))) {
+          Contour prev = near(s, c_end(c)) ? c : reversed(c);
+          for (Piece& p : chain.pieces) prev.pieces.push_back(std::move(p));
+          chain.pieces = std::move(prev.pieces);
+        } else {
+          continue;
+        }
+        used[j] = true;
+        ++joined;
+        grew = true;
+      }
+    }
+    for (size_t k = 1; k < chain.pieces.size(); ++k) meet(chain.pieces, k);
+    if (chain.pieces.size() > 1 && near(c_end(chain), c_start(chain))) {
+      chain.closed = true;
+      // The end meets the start exactly: move the end point, or bridge.
+      Piece& last = chain.pieces.back();
+      const Vec3 s = c_start(chain);
+      if (!(last.end() == s)) {
+        if (!last.bspline || clamped_end(last)) {
+          last.points.back() = s;
+        } else {
+          chain.pieces.push_back(line_piece(last.end(), s));
+        }
+      }
+    }
+    if (joined) chain.id += "+" + std::to_string(joined);
+    out.push_back(std::move(chain));
+  }
+  d.contours = std::move(out);
+}
+
+std::string job_json(const Drawing& d, const ImportOptions& opt) {
+  // Layers asked for must exist.
+  std::set<std::string> keep(opt.layers.begin(), opt.layers.end());
+  for (const std::string& l : keep)
+    if (!d.layers.count(l)) {
+      std::string known;
+      for (const auto& [name, s] : d.layers) known += (known.empty() ? "" : ", ") + quoted(name);
+      throw InputError(errc::import_layer, Place::at_setting("layers"),
+                       d.source + " has no layer " + quoted(l) + "; its layers are " + (known.empty() ? "none" : known));
+    }
+  double scale = 1;
+  std::string top, job;
+  for (const auto& [k, v] : opt.settings) {
+    if (k == "units" && v == "inch") scale = 1 / 25.4;
+    std::string& dst = top_level_key(k) ? top : job;
+    dst += (dst.empty() ? "" : ",\n    ") + quoted(k) + ": " + value_json(v);
+  }
+  std::ostringstream o;
+  o << "{\n  \"bezcam\": 1,\n";
+  if (std::none_of(opt.settings.begin(), opt.settings.end(), [](const auto& kv) { return kv.first == "units"; }))
+    o << "  \"units\": \"mm\",\n";
+  if (!top.empty()) {
+    // top-level settings, one per line
+    std::string t = top;
+    for (size_t p = 0; (p = t.find(",\n    ", p)) != std::string::npos;) t.replace(p, 6, ",\n  "), p += 4;
+    o << "  " << t << ",\n";
+  }
+  if (!job.empty()) o << "  \"job\": {\n    " << job << "\n  },\n";
+  o << "  \"entities\": [";
+  size_t n = 0;
+  for (const Contour& c : d.contours) {
+    if (!keep.empty() && !keep.count(c.layer)) continue;
+    o << (n++ ? ",\n" : "\n") << "    { \"id\": " << quoted(c.id) << ", ";
+    if (c.is_interpolation) {
+      o << "\"type\": \"interpolate\", " << (c.interpolation.closed ? "\"closed\": true, " : "")
+        << "\"through\": " << points(c.interpolation.through, scale) << " }";
+      continue;
+    }
+    o << "\"type\": \"path\", " << (c.closed ? "\"closed\": true, " : "") << "\"segments\": [";
+    for (size_t i = 0; i < c.pieces.size(); ++i) {
+      const Piece& p = c.pieces[i];
+      o << (i ? ",\n" : "\n") << "        { \"type\": \"" << (p.bspline ? "bspline" : "bezier") << "\", ";
+      if (p.bspline) o << "\"degree\": " << p.degree << ", ";
+      o << "\"points\": " << points(p.points, scale);
+      if (!p.weights.empty()) o << ", \"weights\": " << numbers(p.weights);
+      if (p.bspline) o << ", \"knots\": " << numbers(p.knots);
+      o << " }";
+    }
+    o << " ] }";
+  }
+  if (n == 0)
+    throw InputError(errc::import_empty, Place::at_file(d.source),
+                     keep.empty() ? std::string("expected geometry to cut, found none")
+                                  : "expected geometry to cut on the layers asked for, found none");
+  o << "\n  ]\n}\n";
+  return o.str();
+}
+
+Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>* warnings) {
+  const std::string text = job_json(d, opt);
+  JobReadOptions ro;
+  ro.warnings = warnings;
+  try {
+    return parse_job(text, d.source, ro);
+  } catch (const InputError& e) {
+    // A refused setting is named by the option that gave it.
+    const std::string path = e.place().json_path.value_or("");
+    for (const auto& [k, v] : opt.settings) {
+      if (path == k || path == "job." + k || (path == "job" && e.message().find(quoted(k)) != std::string::npos))
+      {
+        Place where = Place::at_setting("settings." + k);
+        where.file = d.source;
+        throw InputError(e.id(), where, e.message());
+      }
+    }
+    throw;
+  }
+}
+
+}  // namespace bezcam::import

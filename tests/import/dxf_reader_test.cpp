@@ -1,0 +1,169 @@
+// DXF in, exactly, against files nobody here wrote: ezdxf (python3-ezdxf)
+// writes an R2010 drawing (rational SPLINE, partial ELLIPSE, bulged
+// LWPOLYLINE, INSERTs rotated, mirrored and scaled unevenly) and evaluates
+// points on each entity itself; the imported curves pass through them to
+// 1e-9 mm, and convert in every output mode stays within the tolerance.
+#include "bezcam/import/dxf_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <functional>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/error.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/import/read_drawing.hpp"
+#include "bezcam/kernel/bezier.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
+
+namespace bezcam::import {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RefPoint {
+  std::string layer;
+  Vec3 p;
+};
+
+// The drawing and ezdxf's reference points, made once per test binary.
+const std::pair<fs::path, std::vector<RefPoint>>& ezdxf_part() {
+  static const auto made = [] {
+    const fs::path dir = fs::temp_directory_path() / ("bezcam-dxf-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path dxf = dir / "part.dxf", ref = dir / "part.ref";
+    const std::string cmd = "/usr/bin/python3 " + std::string(BEZCAM_SOURCE_DIR) + "/tests/import/data/ezdxf_part.py " +
+                            dxf.string() + " " + ref.string();
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    std::vector<RefPoint> pts;
+    std::ifstream in(ref);
+    RefPoint r;
+    while (in >> r.layer >> r.p.x >> r.p.y) pts.push_back(r);
+    return std::make_pair(dxf, pts);
+  }();
+  return made;
+}
+
+// Distance from q to a piece: dense samples, then golden-section refinement.
+double distance(const Piece& pc, const Vec3& q) {
+  std::function<Vec3(double)> f;
+  double a = 0, b = 1;
+  if (pc.bspline) {
+    const NurbsCurve c = NurbsCurve::make(pc.degree, pc.points, pc.knots, pc.weights);
+    a = c.domain_start(), b = c.domain_end();
+    f = [c](double u) { return evaluate(c, u); };
+  } else {
+    const Bezier bz = Bezier::make(pc.points, pc.weights);
+    f = [bz](double t) { return evaluate(bz, t); };
+  }
+  const int n = 400;
+  int best = 0;
+  double bd = 1e300;
+  for (int i = 0; i <= n; ++i) {
+    const double d = dist(f(a + (b - a) * i / n), q);
+    if (d < bd) bd = d, best = i;
+  }
+  double lo = a + (b - a) * std::max(0, best - 1) / n, hi = a + (b - a) * std::min(n, best + 1) / n;
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  for (int it = 0; it < 200; ++it) {
+    const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    if (dist(f(m1), q) < dist(f(m2), q)) hi = m2;
+    else lo = m1;
+  }
+  return std::min(bd, dist(f((lo + hi) / 2), q));
+}
+
+TEST(DxfReader, EzdxfEntitiesPassThroughEzdxfsOwnPoints) {
+  const auto& [file, ref] = ezdxf_part();
+  ASSERT_GT(ref.size(), 150u);
+  const Drawing d = read_drawing(file);
+  for (const char* layer : {"SPLINE", "FIT", "ELLIPSE", "POLY", "INS", "INS2"}) EXPECT_TRUE(d.layers.count(layer)) << layer;
+  for (const RefPoint& r : ref) {
+    double best = 1e300;
+    for (const Contour& c : d.contours)
+      if (c.layer == r.layer)
+        for (const Piece& p : c.pieces) best = std::min(best, distance(p, r.p));
+    EXPECT_LT(best, 1e-9) << r.layer << " (" << r.p.x << ", " << r.p.y << ")";
+  }
+  // The bulged polyline is one closed contour; the spline stays a NURBS.
+  for (const Contour& c : d.contours) {
+    if (c.layer == "POLY") EXPECT_TRUE(c.closed);
+    if (c.layer == "FIT") {  // fit points and end tangents: the CAD program's exact B-spline
+      ASSERT_EQ(c.pieces.size(), 1u);
+      EXPECT_TRUE(c.pieces[0].bspline);
+      EXPECT_FALSE(c.is_interpolation);
+    }
+    if (c.layer == "SPLINE") {
+      ASSERT_EQ(c.pieces.size(), 1u);
+      EXPECT_TRUE(c.pieces[0].bspline);
+      EXPECT_EQ(c.pieces[0].weights.size(), 5u);
+    }
+  }
+}
+
+TEST(DxfReader, EveryOutputModeWithinTolerance) {
+  const Drawing d = read_drawing(ezdxf_part().first);
+  ImportOptions opt;
+  opt.settings = {{"tolerance", "0.005"}};
+  const Job job = to_job(d, opt);
+  for (const OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
+    ConvertOptions co;
+    co.output = mode;
+    const ConvertResult r = convert(job, load_machine_profile(mode == OutputMode::nurbs ? "fanuc" : "generic"), co);
+    EXPECT_LE(r.program.max_measured, 0.005);
+  }
+}
+
+TEST(DxfReader, LinesAndArcsMeetingEndToEndAreOneClosedContour) {
+  const std::string dxf =
+      "0\nSECTION\n2\nENTITIES\n"
+      "0\nLINE\n5\nA1\n8\nOUT\n10\n0\n20\n0\n11\n10\n21\n0\n"
+      "0\nARC\n5\nA2\n8\nOUT\n10\n10\n20\n5\n40\n5\n50\n270\n51\n90\n"
+      "0\nLINE\n5\nA3\n8\nOUT\n10\n0\n20\n10\n11\n10.0000000001\n21\n10\n"
+      "0\nLINE\n5\nA4\n8\nOUT\n10\n0\n20\n10\n11\n0\n21\n0\n"
+      "0\nTEXT\n5\nA5\n8\nOUT\n10\n0\n20\n0\n1\nhello\n"
+      "0\nENDSEC\n0\nEOF\n";
+  Drawing d = read_dxf(dxf, "j.dxf");
+  join_contours(d);
+  ASSERT_EQ(d.contours.size(), 1u);
+  EXPECT_TRUE(d.contours[0].closed);
+  EXPECT_EQ(d.layers["OUT"].skipped["TEXT"], 1u);
+  EXPECT_EQ(d.layers["OUT"].read["LINE"], 3u);
+  const Job job = to_job(d);
+  EXPECT_TRUE(job.entities.at(0).curve.closed);
+}
+
+TEST(DxfReader, Refusals) {
+  const auto id_of = [](const std::string& text) {
+    try {
+      read_dxf(text, "bad.dxf");
+    } catch (const Error& e) {
+      EXPECT_NE(e.where().find("bad.dxf"), std::string::npos) << e.what();
+      return e.id();
+    }
+    return std::string("none");
+  };
+  const std::string head = "0\nSECTION\n2\nENTITIES\n";
+  const std::string tail = "0\nENDSEC\n0\nEOF\n";
+  EXPECT_EQ(id_of("hello"), "import.not-a-drawing");
+  EXPECT_EQ(id_of(std::string("AutoCAD Binary DXF\r\n\x1a") + std::string(10, '\0')), "import.dxf-binary");
+  EXPECT_EQ(id_of(head + "0\nLINE\n10\n0\n20\n"), "import.dxf-syntax");  // truncated
+  EXPECT_EQ(id_of(head + "0\nTEXT\n1\nx\n" + tail), "import.empty");
+  EXPECT_EQ(id_of(head + "0\nLINE\n5\n1F\n10\nnan\n20\n0\n11\n1\n21\n1\n" + tail), "import.not-finite");
+  EXPECT_EQ(id_of("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n99\n0\nENDSEC\n" + head + "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n" + tail),
+            "import.units");
+  EXPECT_EQ(id_of("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nINSERT\n5\n2A\n2\nB\n10\n0\n20\n0\n0\nENDBLK\n0\nENDSEC\n" +
+                  head + "0\nINSERT\n5\n2B\n2\nB\n10\n0\n20\n0\n" + tail),
+            "import.block-recursion");
+  EXPECT_EQ(id_of(head + "0\nSPLINE\n5\n3C\n71\n1\n72\n4\n73\n2\n40\n0\n40\n1\n40\n0.5\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n" + tail),
+            "import.knots");
+}
+
+}  // namespace
+}  // namespace bezcam::import
