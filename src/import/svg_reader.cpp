@@ -242,7 +242,12 @@ struct Context {
     const Affine m = page.after(ctm_);
     Contour c;
     for (Piece& p : pieces_) {
-      for (Vec3& q : p.points) q = m.apply(q);
+      for (Vec3& q : p.points) {
+        q = m.apply(q);
+        if (!std::isfinite(q.x) || !std::isfinite(q.y))
+          s_->current = node_, s_->fail(errc::import_not_finite, "expected finite coordinates once transformed and scaled, found " +
+                                                fmt_num(q.x) + ", " + fmt_num(q.y));
+      }
       c.pieces.push_back(std::move(p));
     }
     pieces_.clear();
