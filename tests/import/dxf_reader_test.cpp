@@ -84,7 +84,7 @@ TEST(DxfReader, EzdxfEntitiesPassThroughEzdxfsOwnPoints) {
   const auto& [file, ref] = ezdxf_part();
   ASSERT_GT(ref.size(), 150u);
   const Drawing d = read_drawing(file);
-  for (const char* layer : {"SPLINE", "FIT", "ELLIPSE", "POLY", "INS", "INS2"}) EXPECT_TRUE(d.layers.count(layer)) << layer;
+  for (const char* layer : {"SPLINE", "FIT", "ELLIPSE", "POLY", "OCS", "POLY2D", "INS", "INS2"}) EXPECT_TRUE(d.layers.count(layer)) << layer;
   for (const RefPoint& r : ref) {
     double best = 1e300;
     for (const Contour& c : d.contours)
