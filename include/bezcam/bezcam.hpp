@@ -33,6 +33,13 @@
 #include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/job_json.hpp"
 
+// import/: SVG and DXF drawings read exactly, as jobs
+#include "bezcam/import/conic.hpp"
+#include "bezcam/import/drawing.hpp"
+#include "bezcam/import/dxf_reader.hpp"
+#include "bezcam/import/read_drawing.hpp"
+#include "bezcam/import/svg_reader.hpp"
+
 // cam/: the canonical program, profiles, passes, validation
 #include "bezcam/cam/gouge.hpp"
 #include "bezcam/cam/machine_profile.hpp"

@@ -14,6 +14,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/import/conic.hpp"
+#include "bezcam/limits.hpp"
 #include "bezcam/kernel/knot_vector.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 
@@ -85,6 +86,18 @@ class Reader {
   }
   Vec3 vec(const Entity& e, int code, Vec3 dflt = {}) const {
     return {num(e, code, dflt.x), num(e, code + 10, dflt.y), num(e, code + 20, dflt.z)};
+  }
+  // An integer group (flags, degree): a whole number in [lo, hi].
+  int integer(const Entity& e, int code, int dflt, int lo = 0, int hi = 1 << 30) const {
+    for (const Group& g : e.groups)
+      if (g.code == code) {
+        const double v = number(e, g);
+        if (v != std::floor(v) || v < lo || v > hi)
+          fail(errc::import_dxf_syntax, e, &g, "expected a whole number from " + std::to_string(lo) + " to " +
+                                                   std::to_string(hi) + ", found " + g.value);
+        return static_cast<int>(v);
+      }
+    return dflt;
   }
   bool has(const Entity& e, int code) const {
     for (const Group& g : e.groups)
@@ -165,6 +178,7 @@ void Reader::split(std::string_view text) {
     if (i + 1 >= lines.size())
       fail(errc::import_dxf_syntax, lines[i].second, "the file ends after group code " + std::to_string(code) + ", before its value (truncated?)");
     std::string_view v = lines[i + 1].first;
+    if (code == 999) continue;  // a comment (LibreCAD writes its name there)
     // Strings keep their spaces; numbers and names are trimmed.
     groups_.push_back({code, std::string(code == 1 ? v : trim(v)), lines[i].second});
   }
@@ -242,6 +256,27 @@ void Reader::add(Contour c, const Affine& m, const std::string& kind) {
   for (Piece& p : c.pieces)
     for (Vec3& q : p.points) q = m.apply(q) * unit_, q.z = 0;
   for (Vec3& q : c.interpolation.through) q = m.apply(q) * unit_, q.z = 0;
+  // A piece whose control points coincide (an INSERT scaled by 0, a
+  // polyline of one vertex) cuts nothing.
+  std::erase_if(c.pieces, [](const Piece& p) {
+    return std::all_of(p.points.begin(), p.points.end(), [&](const Vec3& q) { return q == p.points.front(); });
+  });
+  if (c.pieces.empty() && !c.is_interpolation) {
+    d_.layers[c.layer].skipped[kind + " of size 0"] += 1;
+    return;
+  }
+  for (const Piece& p : c.pieces)
+    for (const Vec3& q : p.points)
+      if (!std::isfinite(q.x) || !std::isfinite(q.y))
+        throw InputError(errc::import_not_finite, Place::at_file(source_),
+                         c.element + ": expected finite coordinates once placed (units, insert scales), found " +
+                             fmt_num(q.x) + ", " + fmt_num(q.y));
+  // Blocks inserting blocks many times multiply: stop long before memory.
+  if (d_.contours.size() >= 10 * kMaxEntities)
+    throw InputError(errc::limit_entities, Place::at_file(source_),
+                     c.element + ": the drawing expands to more than " + std::to_string(10 * kMaxEntities) +
+                         " curves (blocks inserted in blocks); bezcam reads at most " + std::to_string(kMaxEntities) +
+                         " entities");
   // Joints meet exactly.
   for (size_t i = 1; i < c.pieces.size(); ++i)
     if (!c.pieces[i].bspline) c.pieces[i].points.front() = c.pieces[i - 1].end();
@@ -339,12 +374,15 @@ void Reader::emit(const Entity& e, const Affine& m, const std::string& layer_in,
   Contour c;
   c.layer = layer;
   c.id = layer + ":" + prefix + (e.handle().empty() ? "line" + std::to_string(e.line) : e.handle());
-  c.element = e.type + " " + e.handle();
+  c.element = e.type + (e.handle().empty() ? " on line " + std::to_string(e.line) : " (handle " + e.handle() + ")");
   const double two_pi = 2 * std::numbers::pi, deg = std::numbers::pi / 180;
   const Vec3 extrusion = vec(e, 210, {0, 0, 1});
   if (e.type == "LINE") {
     c.pieces.push_back(line_piece(vec(e, 10), vec(e, 11)));
-    if (c.pieces[0].points[0].x == c.pieces[0].points[1].x && c.pieces[0].points[0].y == c.pieces[0].points[1].y) return;
+    if (c.pieces[0].points[0].x == c.pieces[0].points[1].x && c.pieces[0].points[0].y == c.pieces[0].points[1].y) {
+      d_.layers[layer].skipped["LINE of length 0"] += 1;
+      return;
+    }
     add(std::move(c), m, e.type);
   } else if (e.type == "CIRCLE" || e.type == "ARC") {
     const Vec3 ctr = vec(e, 10);
@@ -355,18 +393,23 @@ void Reader::emit(const Entity& e, const Affine& m, const std::string& layer_in,
       sweep = std::fmod(num(e, 51) * deg - t0, two_pi);
       if (sweep <= 0) sweep += two_pi;
     }
-    if (!(r > 0)) fail(errc::import_dxf_syntax, e, nullptr, "expected a radius > 0 (group code 40), found " + fmt_num(r));
+    if (!(r > 0)) {  // a point drawn as a circle cuts nothing (LibreCAD's library has such arcs)
+      if (r < 0) fail(errc::import_dxf_syntax, e, nullptr, "expected a radius >= 0 (group code 40), found " + fmt_num(r));
+      d_.layers[layer].skipped[e.type + " of radius 0"] += 1;
+      return;
+    }
     c.pieces = ellipse_arc({ctr.x, ctr.y, 0}, {r, 0, 0}, {0, r, 0}, t0, sweep);
     c.closed = e.type == "CIRCLE";
     add(std::move(c), m.after(ocs(extrusion, ctr.z)), e.type);
   } else if (e.type == "ELLIPSE") {
     const Vec3 ctr = vec(e, 10), major = vec(e, 11);
     const double ratio = num(e, 40, 1), t0 = num(e, 41, 0), t1 = num(e, 42, two_pi);
-    const Vec3 n = extrusion / norm(extrusion);
+    const Vec3 n = norm(extrusion) > 0 ? extrusion / norm(extrusion) : Vec3{0, 0, 1};
     const Vec3 minor = cross(n, major) * ratio;
     double sweep = t1 - t0;
-    while (sweep <= 0) sweep += two_pi;
-    if (sweep > two_pi) sweep = two_pi;
+    sweep = std::fmod(sweep, two_pi);
+    if (sweep <= 0) sweep += two_pi;
+    if (std::abs(t1 - t0) >= two_pi) sweep = two_pi;
     c.closed = std::abs(sweep - two_pi) < 1e-12;
     c.pieces = ellipse_arc(ctr, major, minor, t0, c.closed ? two_pi : sweep);
     add(std::move(c), m, e.type);
@@ -380,17 +423,17 @@ void Reader::emit(const Entity& e, const Affine& m, const std::string& layer_in,
         else if (g.code == 42 && !vs.empty()) bulges.back() = number(e, g);
       }
     } else {
-      if ((static_cast<int>(num(e, 70)) & (16 | 64)) != 0) {  // meshes are not curves
+      if ((integer(e, 70, 0) & (16 | 64)) != 0) {  // meshes are not curves
         d_.layers[layer].skipped["POLYLINE mesh"] += 1;
         return;
       }
       for (const Entity& v : e.vertices) {
-        if ((static_cast<int>(num(v, 70)) & 16) != 0) continue;  // a spline frame's control point
+        if ((integer(v, 70, 0) & 16) != 0) continue;  // a spline frame's control point
         vs.push_back(vec(v, 10));
         bulges.push_back(num(v, 42));
       }
     }
-    const bool closed = (static_cast<int>(num(e, 70)) & 1) != 0;
+    const bool closed = (integer(e, 70, 0) & 1) != 0;
     for (size_t i = 0; i + 1 < vs.size() + (closed ? 1 : 0); ++i)
       for (Piece& p : bulge_segment(vs[i], vs[(i + 1) % vs.size()], bulges[i])) c.pieces.push_back(std::move(p));
     if (c.pieces.empty()) return;
@@ -398,8 +441,8 @@ void Reader::emit(const Entity& e, const Affine& m, const std::string& layer_in,
     const double elevation = e.type == "LWPOLYLINE" ? num(e, 38) : vec(e, 10).z;
     add(std::move(c), m.after(ocs(extrusion, elevation)), e.type);
   } else if (e.type == "SPLINE") {
-    const int flags = static_cast<int>(num(e, 70));
-    const int degree = static_cast<int>(num(e, 71, 3));
+    const int flags = integer(e, 70, 0);
+    const int degree = integer(e, 71, 3, 1, kMaxBezierDegree);
     std::vector<Vec3> cps = points(e, 10);
     std::vector<double> knots = all(e, 40), weights = all(e, 41);
     if (!cps.empty()) {

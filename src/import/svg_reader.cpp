@@ -108,13 +108,13 @@ struct Context {
     check(x, y);
     cur_ = start_ = at(x, y, rel(c));
     open_ = true;
-    last_ctrl_ = {};
+    last_ctrl_kind_ = 0;  // S and T reflect only after C/S and Q/T
   }
   template <class C>
   void path_line_to(double x, double y, C c) {
     check(x, y);
     add(line_piece(cur_, at(x, y, rel(c))));
-    last_ctrl_ = {};
+    last_ctrl_kind_ = 0;  // S and T reflect only after C/S and Q/T
   }
   template <class C>
   void path_line_to_ortho(double v, bool horizontal, C c) {
@@ -122,7 +122,7 @@ struct Context {
     Vec3 p = cur_;
     (horizontal ? p.x : p.y) = rel(c) ? (horizontal ? cur_.x : cur_.y) + v : v;
     add(line_piece(cur_, p));
-    last_ctrl_ = {};
+    last_ctrl_kind_ = 0;  // S and T reflect only after C/S and Q/T
   }
   template <class C>
   void path_cubic_bezier_to(double x1, double y1, double x2, double y2, double x, double y, C c) {
@@ -242,7 +242,12 @@ struct Context {
     const Affine m = page.after(ctm_);
     Contour c;
     for (Piece& p : pieces_) {
-      for (Vec3& q : p.points) q = m.apply(q);
+      for (Vec3& q : p.points) {
+        q = m.apply(q);
+        if (!std::isfinite(q.x) || !std::isfinite(q.y))
+          s_->current = node_, s_->fail(errc::import_not_finite, "expected finite coordinates once transformed and scaled, found " +
+                                                fmt_num(q.x) + ", " + fmt_num(q.y));
+      }
       c.pieces.push_back(std::move(p));
     }
     pieces_.clear();

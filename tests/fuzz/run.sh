@@ -4,7 +4,7 @@
 #
 #   tests/fuzz/run.sh TARGET SECONDS [BUILD_DIR]
 #
-# TARGET: fuzz_job_reader | fuzz_gcode_reader | fuzz_modbus_frames (or job,
+# TARGET: fuzz_job_reader | fuzz_gcode_reader | fuzz_modbus_frames | fuzz_drawing_reader (or job,
 # gcode, modbus). BUILD_DIR as given to build.sh (default build-fuzz).
 # Seeds: job files from samples/ and tests/bad/; G-code from tests/golden/
 # and tests/bad/ and the samples converted for every dialect; Modbus frames
@@ -23,6 +23,7 @@ case "$target" in
   job) target=fuzz_job_reader ;;
   gcode) target=fuzz_gcode_reader ;;
   modbus) target=fuzz_modbus_frames ;;
+  drawing) target=fuzz_drawing_reader ;;
 esac
 exe="$build/$target"
 [ -x "$exe" ] || { echo "run.sh: $exe not found; build it with tests/fuzz/build.sh $build" >&2; exit 2; }
@@ -32,6 +33,9 @@ mkdir -p "$corpus" "$artifacts"
 if [ ! -d "$seeds" ]; then
   mkdir -p "$seeds"
   case "$target" in
+    fuzz_drawing_reader)
+      cp "$root"/samples/*.svg "$root"/samples/*.dxf "$seeds"/
+      for f in "$root"/tests/bad/drawing-*; do case "$f" in *.expect) ;; *) cp "$f" "$seeds/bad-$(basename "$f")" ;; esac; done ;;
     fuzz_job_reader)
       cp "$root"/samples/*.json "$seeds"/
       for f in "$root"/tests/bad/*.json; do cp "$f" "$seeds/bad-$(basename "$f")"; done ;;

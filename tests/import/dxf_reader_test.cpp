@@ -13,6 +13,7 @@
 #include <functional>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "bezcam/cam/machine_profile.hpp"
@@ -83,7 +84,7 @@ TEST(DxfReader, EzdxfEntitiesPassThroughEzdxfsOwnPoints) {
   const auto& [file, ref] = ezdxf_part();
   ASSERT_GT(ref.size(), 150u);
   const Drawing d = read_drawing(file);
-  for (const char* layer : {"SPLINE", "FIT", "ELLIPSE", "POLY", "INS", "INS2"}) EXPECT_TRUE(d.layers.count(layer)) << layer;
+  for (const char* layer : {"SPLINE", "FIT", "ELLIPSE", "POLY", "OCS", "POLY2D", "INS", "INS2"}) EXPECT_TRUE(d.layers.count(layer)) << layer;
   for (const RefPoint& r : ref) {
     double best = 1e300;
     for (const Contour& c : d.contours)
@@ -163,6 +164,101 @@ TEST(DxfReader, Refusals) {
             "import.block-recursion");
   EXPECT_EQ(id_of(head + "0\nSPLINE\n5\n3C\n71\n1\n72\n4\n73\n2\n40\n0\n40\n1\n40\n0.5\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n" + tail),
             "import.knots");
+  // Hostile numbers: a degree far out of range, an ellipse swept 1e300
+  // radians (no endless loop), an insert scaled by 0 (nothing to cut).
+  EXPECT_EQ(id_of(head + "0\nSPLINE\n5\n3D\n71\n1e300\n10\n0\n20\n0\n" + tail), "import.dxf-syntax");
+  EXPECT_EQ(id_of(head + "0\nELLIPSE\n10\n0\n20\n0\n11\n5\n21\n0\n40\n0.5\n41\n0\n42\n1e300\n210\n0\n220\n0\n230\n0\n" + tail),
+            "none");
+  EXPECT_EQ(id_of("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n0\nENDBLK\n0\nENDSEC\n" +
+                  head + "0\nINSERT\n5\n2B\n2\nB\n10\n0\n20\n0\n41\n0\n42\n0\n" + tail),
+            "import.empty");
+}
+
+// LibreCAD's part library (librecad-data, in .ci/packages): DXF files
+// written by dxflib and libdxfrw, read here and by ezdxf independently. Every
+// point ezdxf evaluates on a curve entity (inserts, polylines with bulges,
+// OCS included) lies on the imported geometry within 1e-9 of the drawing's
+// size, and each file converts in every output mode within the tolerance.
+TEST(DxfReader, LibreCadLibraryMatchesEzdxfsReading) {
+  std::vector<fs::path> all;
+  if (fs::exists("/usr/share/librecad/library"))
+    for (const auto& e : fs::recursive_directory_iterator("/usr/share/librecad/library"))
+      if (e.path().extension() == ".dxf") all.push_back(e.path());
+  if (all.empty()) GTEST_SKIP() << "librecad-data is not installed";
+  std::sort(all.begin(), all.end());
+  std::vector<fs::path> files;
+  for (size_t i = 0; i < all.size(); i += 40) files.push_back(all[i]);
+  const fs::path dir = fs::temp_directory_path() / ("bezcam-librecad-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  {
+    std::ofstream list(dir / "list.txt");
+    for (const auto& f : files) list << f.string() << "\n";
+  }
+  const std::string cmd = "/usr/bin/python3 " + std::string(BEZCAM_SOURCE_DIR) + "/tests/import/data/ezdxf_points.py " +
+                          (dir / "list.txt").string() + " " + dir.string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  // mm per drawing unit, $INSUNITS (the DXF reference's table).
+  const std::map<int, double> mm = {{0, 1}, {1, 25.4}, {2, 304.8}, {4, 1}, {5, 10}, {6, 1000}};
+  size_t compared = 0;
+  for (size_t i = 0; i < files.size(); ++i) {
+    SCOPED_TRACE(files[i].string());
+    std::ifstream in(dir / (std::to_string(i) + ".ref"));
+    std::string tag;
+    int units = 0;
+    in >> tag >> units;
+    ASSERT_TRUE(mm.count(units)) << units;
+    std::vector<Vec3> ref;
+    for (Vec3 p; in >> p.x >> p.y;) ref.push_back(p * mm.at(units));
+    // Compared before joining: joining moves ends that nearly meet (within
+    // 1e-6 of the size) onto each other, as it should.
+    Drawing d;
+    try {
+      std::ifstream f(files[i], std::ios::binary);
+      std::ostringstream text;
+      text << f.rdbuf();
+      d = read_dxf(text.str(), files[i].string());
+    } catch (const Error& e) {
+      EXPECT_TRUE(ref.empty()) << e.what();  // refused: only when ezdxf found no curve either
+      continue;
+    }
+    const double tol = 1e-9 * std::max(1.0, d.size());
+    struct Cand {
+      const Piece* p;
+      Vec3 lo, hi;
+    };
+    std::vector<Cand> cands;
+    for (const Contour& c : d.contours)
+      for (const Piece& p : c.pieces) {
+        Cand k{&p, p.points[0], p.points[0]};
+        for (const Vec3& q : p.points)
+          k.lo = {std::min(k.lo.x, q.x), std::min(k.lo.y, q.y)}, k.hi = {std::max(k.hi.x, q.x), std::max(k.hi.y, q.y)};
+        cands.push_back(k);
+      }
+    // At most about 150 points a file, spread over it (time).
+    const size_t step = std::max<size_t>(1, ref.size() / 150);
+    for (size_t j = 0; j < ref.size(); j += step) {
+      const Vec3& r = ref[j];
+      double best = 1e300;
+      for (const Cand& k : cands) {
+        const double dx = std::max({k.lo.x - r.x, 0.0, r.x - k.hi.x}), dy = std::max({k.lo.y - r.y, 0.0, r.y - k.hi.y});
+        if (std::hypot(dx, dy) > std::min(best, 1e-6 * std::max(1.0, d.size()))) continue;
+        best = std::min(best, distance(*k.p, r));
+        if (best <= tol) break;
+      }
+      EXPECT_LE(best, tol) << "(" << r.x << ", " << r.y << ")";
+      ++compared;
+    }
+    join_contours(d);
+    const Job job = to_job(d);
+    for (const OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
+      ConvertOptions co;
+      co.output = mode;
+      const ConvertResult r = convert(job, load_machine_profile(mode == OutputMode::nurbs ? "linuxcnc" : "generic"), co);
+      EXPECT_LE(r.program.max_measured, job.tolerance);
+    }
+  }
+  EXPECT_GT(compared, 500u);
+  RecordProperty("points", static_cast<int>(compared));
 }
 
 }  // namespace

@@ -141,6 +141,10 @@ TEST(SvgReader, RelativeCommandsShorthandsAndClose) {
   ASSERT_EQ(b.size(), 3u);
   expect_at(b[1].points[1], page(80, 60));  // T reflects (60, 40) about (70, 50)
   expect_at(b[1].points[2], page(90, 50));
+  // After a line, S has no control point to reflect: its first is the current point.
+  const Drawing l = read_svg(svg(R"~(<path d="M 0 0 C 10 0 20 10 20 20 L 30 30 S 40 40 50 50 M 0 50 Q 5 40 10 50 H 20 T 30 50"/>)~"), "l.svg");
+  expect_at(l.contours[0].pieces[2].points[1], page(30, 30));
+  expect_at(l.contours[1].pieces[2].points[1], page(20, 50));
 }
 
 TEST(SvgReader, ShapesRoundedRectCircleEllipseLinePolyline) {

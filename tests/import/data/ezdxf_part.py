@@ -34,20 +34,26 @@ def sample(e, layer):
         add(layer, c.vertices(c.params(25)))
     elif t == "SPLINE":
         add(layer, e.construction_tool().approximate(60))
+    elif t == "POLYLINE":
+        for v in e.virtual_entities():
+            sample(v, layer)
     elif t == "LWPOLYLINE":
+        ocs = e.ocs()
         pts = list(e.get_points("xyb"))
         n = len(pts)
         for i in range(n if e.closed else n - 1):
             x0, y0, b = pts[i]
             x1, y1, _ = pts[(i + 1) % n]
+            z = e.dxf.elevation
             if b == 0:
-                add(layer, [(x0 + (x1 - x0) * k / 5, y0 + (y1 - y0) * k / 5) for k in range(6)])
+                loc = [(x0 + (x1 - x0) * k / 5, y0 + (y1 - y0) * k / 5, z) for k in range(6)]
             else:
                 c, a0, a1, r = bulge_to_arc((x0, y0), (x1, y1), b)
                 if a1 < a0:
                     a1 += 2 * math.pi
-                add(layer, [(c[0] + r * math.cos(a0 + (a1 - a0) * k / 10), c[1] + r * math.sin(a0 + (a1 - a0) * k / 10))
-                            for k in range(11)])
+                loc = [(c[0] + r * math.cos(a0 + (a1 - a0) * k / 10), c[1] + r * math.sin(a0 + (a1 - a0) * k / 10), z)
+                       for k in range(11)]
+            add(layer, list(ocs.points_to_wcs(loc)))
     elif t == "INSERT":
         for v in e.virtual_entities():
             sample(v, layer)
@@ -66,6 +72,15 @@ msp.add_ellipse((100, 50), major_axis=(20, 10), ratio=0.4, start_param=0.3, end_
 # A closed polyline with bulges of both signs.
 msp.add_lwpolyline([(0, 100, 0.5), (30, 100, -1), (60, 100, 0), (60, 130, 0.3)], format="xyb", close=True,
                    dxfattribs={"layer": "POLY"})
+# Object coordinate systems: an arc and a bulged polyline drawn with
+# extrusion (0, 0, -1) (mirrored in x, as CAD shows them), an old-style 2D
+# POLYLINE with bulges.
+msp.add_arc((30, -40), 12, 10, 160, dxfattribs={"layer": "OCS", "extrusion": (0, 0, -1)})
+msp.add_lwpolyline([(60, -40, 0.4), (80, -40, 0), (80, -20, -0.7)], format="xyb",
+                   dxfattribs={"layer": "OCS", "extrusion": (0, 0, -1), "elevation": 2})
+p2 = msp.add_polyline2d([(100, -40), (120, -40), (120, -20)], dxfattribs={"layer": "POLY2D"})
+p2.vertices[0].dxf.bulge = 0.5
+p2.vertices[1].dxf.bulge = -0.25
 # A block (circle, arc, line) inserted rotated and mirrored, scaled unevenly.
 b = doc.blocks.new("B", base_point=(5, 5))
 b.add_circle((10, 10), 4)
