@@ -66,6 +66,64 @@ double golden_max(double a, double b, const auto& f) {
   return std::max(g.f1, g.f2);
 }
 
+// The point and the first derivative of `b` at t, from one de Casteljau
+// cascade (homogeneous, on the stack for the usual degrees): the last two
+// points of the cascade give both.
+void point_and_derivative(const Bezier& b, double t, Vec3& p, Vec3& d) {
+  const int n = b.degree();
+  struct H {
+    Vec3 p;
+    double w;
+  };
+  constexpr int kStack = 16;
+  H stack[kStack];
+  std::vector<H> heap;
+  if (n + 1 > kStack) heap.resize(n + 1);
+  H* q = n + 1 > kStack ? heap.data() : stack;
+  for (int i = 0; i <= n; ++i) q[i] = {b.points[i] * b.weight(i), b.weight(i)};
+  const double s = 1 - t;
+  for (int r = 1; r < n; ++r)
+    for (int i = 0; i <= n - r; ++i) q[i] = {q[i].p * s + q[i + 1].p * t, q[i].w * s + q[i + 1].w * t};
+  const H a{q[0].p * s + q[1].p * t, q[0].w * s + q[1].w * t};
+  p = a.p / a.w;
+  // C = A / w: C' = (A' - C w') / w, with A' = n (A1 - A0), w' = n (w1 - w0).
+  d = ((q[1].p - q[0].p) * double(n) - p * (double(n) * (q[1].w - q[0].w))) / a.w;
+}
+
+// Distance from x to the arc of `b` over [t0, t1], an arc between two
+// neighbouring dense samples (so within `resolution` of its chord, and
+// the distance along it has a single minimum): at an end, or where
+// (C(t) - x) . C'(t) changes sign, found by bracketed regula falsi
+// (Illinois), to a billionth of the interval.
+double nearest_on_arc(const Bezier& b, double t0, double t1, const Vec3& x) {
+  Vec3 p0, d0, p1, d1;
+  point_and_derivative(b, t0, p0, d0);
+  point_and_derivative(b, t1, p1, d1);
+  double g0 = dot(p0 - x, d0), g1 = dot(p1 - x, d1);
+  double best = std::min(dist(p0, x), dist(p1, x));
+  if (!(g0 < 0 && g1 > 0)) return best;  // no interior minimum
+  double a = t0, c = t1;
+  int side = 0;
+  for (int it = 0; it < 60 && c - a > 1e-9 * (t1 - t0); ++it) {
+    const double t = (a * g1 - c * g0) / (g1 - g0);
+    Vec3 p, dp;
+    point_and_derivative(b, t, p, dp);
+    best = std::min(best, dist(p, x));
+    const double g = dot(p - x, dp);
+    if (g == 0) break;
+    if (g < 0) {
+      a = t, g0 = g;
+      if (side == -1) g1 *= 0.5;
+      side = -1;
+    } else {
+      c = t, g1 = g;
+      if (side == 1) g0 *= 0.5;
+      side = 1;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3> polyline, double tolerance) {
@@ -188,7 +246,7 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
         if (D[j].piece == D[j + 1].piece && D[j + 1].t <= D[j].t) continue;
         const Bezier& b = pieces[D[j + 1].piece];
         const double t0 = D[j].piece == D[j + 1].piece ? D[j].t : 0.0;
-        d = std::min(d, -golden_max(t0, D[j + 1].t, [&](double t) { return -dist(evaluate(b, t), x); }));
+        d = std::min(d, nearest_on_arc(b, t0, D[j + 1].t, x));
       }
       return d;
     };
