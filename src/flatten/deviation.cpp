@@ -34,6 +34,71 @@ void sample_piece(const Bezier& b, size_t piece, double t0, double t1, double ep
   sample_piece(r, piece, tm, t1, eps, depth + 1, out);
 }
 
+// The same subdivision on the stack, for degrees below 16: the same
+// arithmetic as the kernel's split() (homogeneous cascade at 1/2, points
+// divided back by their weights, weights normalised to a first weight of
+// 1), so the same samples, without two allocations per split.
+struct SmallBezier {
+  int n = 0;
+  bool rational = false;
+  Vec3 p[16];
+  double w[16];
+};
+
+void sample_small(const SmallBezier& b, size_t piece, double t0, double t1, double eps, int depth,
+                  std::vector<Sample>& out) {
+  double flat = 0;
+  for (int i = 0; i <= b.n; ++i) flat = std::max(flat, dist_to_segment(b.p[i], b.p[0], b.p[b.n]));
+  if (flat <= eps || depth >= 40) {
+    out.push_back({b.p[b.n], piece, t1});
+    return;
+  }
+  const int n = b.n;
+  Vec3 qp[16];
+  double qw[16];
+  for (int i = 0; i <= n; ++i) {
+    const double w = b.rational ? b.w[i] : 1.0;
+    qp[i] = b.p[i] * w;
+    qw[i] = w;
+  }
+  Vec3 lp[16], rp[16];
+  double lw[16], rw[16];
+  lp[0] = qp[0], lw[0] = qw[0];
+  rp[n] = qp[n], rw[n] = qw[n];
+  const double t = 0.5, s = 1 - t;
+  for (int r = 1; r <= n; ++r) {
+    for (int i = 0; i <= n - r; ++i) {
+      qp[i] = qp[i] * s + qp[i + 1] * t;
+      qw[i] = qw[i] * s + qw[i + 1] * t;
+    }
+    lp[r] = qp[0], lw[r] = qw[0];
+    rp[n - r] = qp[n - r], rw[n - r] = qw[n - r];
+  }
+  SmallBezier L, R;
+  L.n = R.n = n;
+  L.rational = R.rational = b.rational;
+  for (int i = 0; i <= n; ++i) {
+    L.p[i] = lp[i] / lw[i];
+    R.p[i] = rp[i] / rw[i];
+    if (b.rational) L.w[i] = lw[i] / lw[0], R.w[i] = rw[i] / rw[0];
+  }
+  const double tm = 0.5 * (t0 + t1);
+  sample_small(L, piece, t0, tm, eps, depth + 1, out);
+  sample_small(R, piece, tm, t1, eps, depth + 1, out);
+}
+
+void sample_any(const Bezier& b, size_t piece, double eps, std::vector<Sample>& out) {
+  if (b.degree() + 1 > 16) return sample_piece(b, piece, 0, 1, eps, 0, out);
+  SmallBezier sb;
+  sb.n = b.degree();
+  sb.rational = b.rational();
+  for (int i = 0; i <= sb.n; ++i) {
+    sb.p[i] = b.points[i];
+    sb.w[i] = b.weight(i);
+  }
+  sample_small(sb, piece, 0, 1, eps, 0, out);
+}
+
 // Nearest distance from x to the polyline pts, searching a window around
 // *hint first and the whole polyline when the window's answer is large.
 double dist_to_polyline(const Vec3& x, std::span<const Vec3> pts, size_t& hint, size_t window, double large,
@@ -132,7 +197,7 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
   const double resolution = std::max(tolerance * kMeasureResolution, control_magnitude(pieces) * 1e-13);
   std::vector<Sample> D;
   D.push_back({pieces[0].front(), 0, 0});
-  for (size_t i = 0; i < pieces.size(); ++i) sample_piece(pieces[i], i, 0, 1, resolution, 0, D);
+  for (size_t i = 0; i < pieces.size(); ++i) sample_any(pieces[i], i, resolution, D);
   std::vector<Vec3> dpts(D.size());
   for (size_t i = 0; i < D.size(); ++i) dpts[i] = D[i].p;
 
