@@ -202,9 +202,12 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
   for (const std::string& l : keep)
     if (!d.layers.count(l)) {
       std::string known;
-      for (const auto& [name, s] : d.layers) known += (known.empty() ? "" : ", ") + quoted(name);
+      for (const auto& [name, s] : d.layers)
+        if (!name.empty()) known += (known.empty() ? "" : ", ") + quoted(name);
       throw InputError(errc::import_layer, Place::at_setting("layers"),
-                       d.source + " has no layer " + quoted(l) + "; its layers are " + (known.empty() ? "none" : known));
+                       d.source + " has no layer " + quoted(l) + "; " +
+                           (known.empty() ? "it has no named layers (everything is on one unnamed layer: leave --layer out)"
+                                          : "its layers are " + known));
     }
   double scale = 1;
   std::string top, job;
