@@ -68,6 +68,8 @@ inline constexpr ErrorId curve_not_finite{"curve.not-finite"};
 inline constexpr ErrorId curve_repeated_point{"curve.repeated-point"};
 /// A curve has fewer points than it needs.
 inline constexpr ErrorId curve_too_few_points{"curve.too-few-points"};
+/// A Hermite curve's tangents are not one per point.
+inline constexpr ErrorId curve_tangent_count{"curve.tangent-count"};
 /// A rational weight is not finite or not > 0.
 inline constexpr ErrorId curve_weight{"curve.weight"};
 /// The number of weights differs from the number of control points.

@@ -331,7 +331,7 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
     if (obj.contains("closed")) closed = ctx.boolean(obj["closed"], path + ".closed");
     e.curve = ctx.at(path, [&] { return make_path(std::move(ss), std::move(pieces), closed, dim); });
   } else if (e.type == "interpolate") {
-    keys({"through", "method", "closed"});
+    keys({"through", "method", "closed", "tangents", "end_tangents"});
     parse_interpolate_entity(ctx, obj, path, e);
   } else if (e.type == "bezier_patch") {  // surfaces: job_json_surfaces.cpp
     keys({"points", "weights", "toolpath"});

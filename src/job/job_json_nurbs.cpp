@@ -3,6 +3,7 @@
 // B-spline form is kept on the segment for exact NURBS output.
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 #include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/kernel/spline_interp.hpp"
@@ -39,9 +40,37 @@ void parse_interpolate_entity(const JsonCtx& ctx, const json& obj, const std::st
   std::string method = "cubic-spline";
   if (obj.contains("method")) {
     method = ctx.string(obj["method"], path + ".method");
-    if (method != "cubic-spline" && method != "lagrange")
+    if (method != "cubic-spline" && method != "lagrange" && method != "hermite")
       ctx.fail(path + ".method", errc::job_method,
-               "expected \"cubic-spline\" or \"lagrange\", found " + describe(obj["method"]));
+               "expected \"cubic-spline\", \"hermite\" or \"lagrange\", found " + describe(obj["method"]));
+  }
+  // Hermite: a tangent per point; cubic spline: optional end tangents.
+  std::vector<Vec3> tangents;
+  if (method == "hermite") {
+    int tdim = 0;
+    tangents = ctx.points(ctx.require(obj, path, "tangents"), path + ".tangents", &tdim, 0);
+    if (tdim != dim)
+      ctx.fail(path + ".tangents", errc::curve_dimension,
+               "expected " + std::to_string(dim) + "D tangents like the points, found " + std::to_string(tdim) + "D");
+    if (tangents.size() != through.size())
+      ctx.fail(path + ".tangents", errc::curve_tangent_count,
+               "expected one tangent per point of \"through\" (" + std::to_string(through.size()) + "), found " +
+                   std::to_string(tangents.size()));
+  } else if (obj.contains("tangents")) {
+    ctx.fail(path + ".tangents", errc::job_method, "\"tangents\" belong to method \"hermite\"; add \"method\": \"hermite\"");
+  }
+  std::optional<std::pair<Vec3, Vec3>> end_tangents;
+  if (obj.contains("end_tangents")) {
+    if (method != "cubic-spline" || (obj.contains("closed") && obj["closed"] == true))
+      ctx.fail(path + ".end_tangents", errc::job_method,
+               "\"end_tangents\" clamp an open \"cubic-spline\" (a Hermite curve takes \"tangents\", a closed spline "
+               "has no ends)");
+    int tdim = 0;
+    const auto ends = ctx.points(obj["end_tangents"], path + ".end_tangents", &tdim, 0);
+    if (ends.size() != 2 || tdim != dim)
+      ctx.fail(path + ".end_tangents", errc::curve_tangent_count,
+               "expected [T0, Tn]: two " + std::to_string(dim) + "D tangents, at the first and the last point");
+    end_tangents = std::pair{ends[0], ends[1]};
   }
   bool closed = false;
   if (obj.contains("closed")) closed = ctx.boolean(obj["closed"], path + ".closed");
@@ -68,8 +97,15 @@ void parse_interpolate_entity(const JsonCtx& ctx, const json& obj, const std::st
                          "stays close to the points");
     seg.degree = b.degree();
     pieces.push_back(std::move(b));
+  } else if (method == "hermite") {
+    pieces = ctx.at(path, [&] { return hermite_pieces(through, tangents, closed, dim); });
+    seg.degree = 3;  // Bézier pieces are the exact form (no NURBS kept)
   } else {
-    NurbsCurve c = ctx.at(path, [&] { return closed ? periodic_cubic_spline(through, dim) : natural_cubic_spline(through, dim); });
+    NurbsCurve c = ctx.at(path, [&] {
+      if (closed) return periodic_cubic_spline(through, dim);
+      if (end_tangents) return clamped_cubic_spline(through, end_tangents->first, end_tangents->second, dim);
+      return natural_cubic_spline(through, dim);
+    });
     pieces = to_bezier(c);
     seg.degree = 3;
     seg.nurbs = std::make_shared<const NurbsCurve>(std::move(c));

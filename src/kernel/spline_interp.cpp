@@ -61,7 +61,11 @@ std::vector<double> chord_length_parameters(std::span<const Vec3> pts) {
   return t;
 }
 
-NurbsCurve natural_cubic_spline(std::span<const Vec3> pts, int dim) {
+namespace {
+
+// The cubic spline through `pts` by global interpolation: natural end
+// conditions (C'' = 0) without `ends`, the given end derivatives with them.
+NurbsCurve cubic_spline(std::span<const Vec3> pts, int dim, const std::pair<Vec3, Vec3>* ends) {
   if (pts.size() < 2)
     throw InputError(errc::curve_too_few_points, Place::at_json("through"),
                      "expected at least 2 points to pass through, found " + std::to_string(pts.size()));
@@ -82,15 +86,26 @@ NurbsCurve natural_cubic_spline(std::span<const Vec3> pts, int dim) {
       if (d[deriv][j] != 0)
         trip.emplace_back(static_cast<int>(row), span - 3 + j, d[deriv][j] * weight);
   };
-  // Second-derivative rows are scaled by the squared end spans so that all
-  // rows have entries of order one (the parameters are lengths).
+  // Derivative rows are scaled by the end spans (squared for the second
+  // derivative) so that all rows have entries of order one (the
+  // parameters are lengths).
   const double h0 = t[1] - t[0], hn = t[n] - t[n - 1];
-  add_row(0, t.front(), 2, h0 * h0);
+  if (ends) {
+    add_row(0, t.front(), 1, h0);
+    B.row(0) << ends->first.x * h0, ends->first.y * h0, ends->first.z * h0;
+  } else {
+    add_row(0, t.front(), 2, h0 * h0);
+  }
   for (size_t k = 0; k <= n; ++k) {
     add_row(k + 1, t[k], 0, 1.0);
     B.row(static_cast<Eigen::Index>(k + 1)) << pts[k].x, pts[k].y, pts[k].z;
   }
-  add_row(N - 1, t.back(), 2, hn * hn);
+  if (ends) {
+    add_row(N - 1, t.back(), 1, hn);
+    B.row(static_cast<Eigen::Index>(N - 1)) << ends->second.x * hn, ends->second.y * hn, ends->second.z * hn;
+  } else {
+    add_row(N - 1, t.back(), 2, hn * hn);
+  }
   Eigen::SparseMatrix<double> A(static_cast<Eigen::Index>(N), static_cast<Eigen::Index>(N));
   A.setFromTriplets(trip.begin(), trip.end());
   const Eigen::MatrixXd X = solve(A, B);
@@ -99,6 +114,39 @@ NurbsCurve natural_cubic_spline(std::span<const Vec3> pts, int dim) {
   P.front() = pts.front();
   P.back() = pts.back();
   return NurbsCurve::make(3, std::move(P), std::move(U), {}, dim);
+}
+
+}  // namespace
+
+NurbsCurve natural_cubic_spline(std::span<const Vec3> pts, int dim) { return cubic_spline(pts, dim, nullptr); }
+
+NurbsCurve clamped_cubic_spline(std::span<const Vec3> pts, const Vec3& d0, const Vec3& dn, int dim) {
+  for (const Vec3* d : {&d0, &dn})
+    if (!std::isfinite(d->x) || !std::isfinite(d->y) || !std::isfinite(d->z))
+      throw InputError(errc::curve_not_finite, Place::at_json("end_tangents"), "expected finite end tangents");
+  const std::pair<Vec3, Vec3> ends{d0, dn};
+  return cubic_spline(pts, dim, &ends);
+}
+
+std::vector<Bezier> hermite_pieces(std::span<const Vec3> pts, std::span<const Vec3> tangents, bool closed, int dim) {
+  if (pts.size() < 2)
+    throw InputError(errc::curve_too_few_points, Place::at_json("through"),
+                     "expected at least 2 points to pass through, found " + std::to_string(pts.size()));
+  if (tangents.size() != pts.size())
+    throw InputError(errc::curve_tangent_count, Place::at_json("tangents"),
+                     "expected one tangent per point (" + std::to_string(pts.size()) + "), found " +
+                         std::to_string(tangents.size()));
+  for (size_t k = 0; k < tangents.size(); ++k)
+    if (!std::isfinite(tangents[k].x) || !std::isfinite(tangents[k].y) || !std::isfinite(tangents[k].z))
+      throw InputError(errc::curve_not_finite, Place::at_json("tangents[" + std::to_string(k) + "]"),
+                       "expected a finite tangent");
+  std::vector<Bezier> out;
+  const size_t n = pts.size();
+  for (size_t i = 0; i + 1 < n + (closed ? 1 : 0); ++i) {
+    const size_t j = (i + 1) % n;
+    out.push_back(Bezier::make({pts[i], pts[i] + tangents[i] / 3.0, pts[j] - tangents[j] / 3.0, pts[j]}, {}, dim));
+  }
+  return out;
 }
 
 NurbsCurve periodic_cubic_spline(std::span<const Vec3> input, int dim) {

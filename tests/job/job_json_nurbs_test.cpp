@@ -169,9 +169,10 @@ TEST(JobJsonNurbs, InterpolateErrors) {
             "t.json: entities[0].through[2]: expected a point different from through[1], found the same point (1, "
             "1): a repeated point gives a zero chord length, so no parameter can separate the two; remove the "
             "duplicate");
-  e = refusal(job_with(R"({"type": "interpolate", "method": "hermite", "through": [[0,0],[1,1]]})"));
+  e = refusal(job_with(R"({"type": "interpolate", "method": "akima", "through": [[0,0],[1,1]]})"));
   EXPECT_EQ(std::string(e.what()),
-            "t.json: entities[0].method: expected \"cubic-spline\" or \"lagrange\", found the string \"hermite\"");
+            "t.json: entities[0].method: expected \"cubic-spline\", \"hermite\" or \"lagrange\", found the string "
+            "\"akima\"");
   e = refusal(job_with(R"({"type": "interpolate", "method": "lagrange", "closed": true, "through": [[0,0],[1,1],[2,0]]})"));
   EXPECT_EQ(e.where(), "t.json: entities[0].closed");
   e = refusal(job_with(R"({"type": "interpolate", "through": [[0,0]]})"));

@@ -28,6 +28,23 @@ std::vector<double> chord_length_parameters(std::span<const Vec3> pts);
 /// t_{n-1}, t_n (x4). Throws InputError at `through` / `through[k]`.
 NurbsCurve natural_cubic_spline(std::span<const Vec3> pts, int dim);
 
+/// The clamped C2 cubic spline through >= 2 points with the end
+/// derivatives `d0` at the first point and `dn` at the last, derivatives
+/// with respect to the chord-length parameter (so a unit tangent runs at
+/// the speed of the chords): the same B-spline as natural_cubic_spline()
+/// with C'(t_0) = d0 and C'(t_n) = dn as end conditions. Throws InputError
+/// at `through` / `through[k]`.
+NurbsCurve clamped_cubic_spline(std::span<const Vec3> pts, const Vec3& d0, const Vec3& dn, int dim);
+
+/// The piecewise cubic Hermite curve through >= 2 points with the given
+/// derivatives (one per point; `closed` adds the piece from the last point
+/// back to the first): piece i runs over its own t in [0, 1] from pts[i]
+/// to pts[i+1] with derivatives tangents[i] and tangents[i+1] (the classic
+/// Hermite basis), so its Bézier control points are pts[i],
+/// pts[i] + tangents[i] / 3, pts[i+1] - tangents[i+1] / 3, pts[i+1]. C1.
+/// Throws InputError at `through[k]` for a non-finite point or tangent.
+std::vector<Bezier> hermite_pieces(std::span<const Vec3> pts, std::span<const Vec3> tangents, bool closed, int dim);
+
 /// The periodic C2 cubic spline through >= 3 distinct points and back to
 /// the first (the last point may repeat the first; it is then dropped), as
 /// an unclamped cubic B-spline on [0, T] (T: the closed polygon's length)
