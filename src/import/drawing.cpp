@@ -206,7 +206,7 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
         if (!name.empty()) known += (known.empty() ? "" : ", ") + quoted(name);
       throw InputError(errc::import_layer, Place::at_setting("layers"),
                        d.source + " has no layer " + quoted(l) + "; " +
-                           (known.empty() ? "it has no named layers (everything is on one unnamed layer: leave --layer out)"
+                           (known.empty() ? "it has no named layers (everything is on one unnamed layer: select none)"
                                           : "its layers are " + known));
     }
   double scale = 1;
