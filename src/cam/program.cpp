@@ -400,29 +400,18 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
   run_measurements(p, later);
   move_part(p, opt.offset);
   if (opt.return_to) {
-    const Vec3 to{quantize(opt.return_to->x, p.decimals), quantize(opt.return_to->y, p.decimals),
-                  quantize(opt.return_to->z, p.decimals)};
-    const double up = std::max(pos_known ? pos.z : p.safe_z, p.safe_z);
-    RapidMove lift;
-    lift.to = {to.x, to.y, up};
-    if (!pos_known) lift.axes = kAxisZ;
-    if (to.z > up) {  // going up first, then across
-      lift.to = {pos.x + p.offset.x, pos.y + p.offset.y, to.z};
-      lift.axes = kAxisZ;
-      push({lift});
-      RapidMove across;
-      across.to = to;
-      push({across});
-    } else {
-      RapidMove across;
-      across.to = {to.x, to.y, up};
-      push({across});
-      if (to.z < up) {
-        RapidMove down;
-        down.to = to;
-        push({down});
-      }
-    }
+    // Up (Z only) to the higher of safe Z and the target, across, then down.
+    const Vec3 to = quantize(*opt.return_to, p.decimals);
+    const double high = std::max({pos_known ? pos.z : p.safe_z, p.safe_z, to.z});
+    auto rapid = [&](const Vec3& where, unsigned axes) {
+      RapidMove r;
+      r.to = where;
+      r.axes = axes;
+      push({r});
+    };
+    if (!pos_known || pos.z != high) rapid({0, 0, high}, kAxisZ);
+    rapid({to.x, to.y, high}, kAxisX | kAxisY);
+    if (to.z < high) rapid(to, kAxisZ);
   }
   if (opt.on_entity) opt.on_entity(job.entities.size(), job.entities.size(), "");
   return p;

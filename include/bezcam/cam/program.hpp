@@ -69,8 +69,9 @@ struct Program {
   std::vector<Move> moves;
   std::vector<EntityReport> entities;
   std::vector<std::string> warnings;
-  /// Extra lines for the program's header comment (e.g. how an output mode
-  /// the machine lacks was replaced); each is also one of `warnings`.
+  /// Extra lines for the program's header comment: how an output mode the
+  /// machine lacks was replaced (also one of `warnings`), decimals raised
+  /// for the tolerance, the part moved by an offset.
   std::vector<std::string> notes;
 };
 
