@@ -15,6 +15,7 @@
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "support/refusal.hpp"
 
 namespace {
 
@@ -39,15 +40,7 @@ size_t index_of(const std::vector<std::string>& lines, const std::string& line) 
   return static_cast<size_t>(std::find(lines.begin(), lines.end(), line) - lines.begin());
 }
 
-InputError refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "accepted";
-  return InputError(ErrorId(""), Place{}, "");
-}
+using test::refusal_of;
 
 }  // namespace
 
@@ -68,11 +61,11 @@ TEST(Clearance, RapidsDownToTheClearancePlaneAndFeedsOnlyTheLastStretch) {
 
 TEST(Clearance, APlaneAtOrBelowTheCutIsRefused) {
   const Job j = job_of(R"(, "top_z": -2, "clearance": 0.5)", kCurve);
-  const InputError e = refusal([&] { convert(j, load_machine_profile("generic"), {}); });
+  const InputError e = refusal_of([&] { convert(j, load_machine_profile("generic"), {}); });
   EXPECT_EQ(e.id(), "job.range");
   EXPECT_EQ(e.where(), "t.json: entities[0].clearance");
   EXPECT_NE(std::string(e.what()).find("not above cut_z"), std::string::npos) << e.what();
-  EXPECT_EQ(refusal([] { job_of(R"(, "clearance": -1)", kCurve); }).id(), "job.range");
+  EXPECT_EQ(refusal_of([] { job_of(R"(, "clearance": -1)", kCurve); }).id(), "job.range");
 }
 
 TEST(Clearance, SurfacePassesLinkAtTheClearanceAboveTheSurfaceNotAtSafeZ) {
@@ -117,11 +110,11 @@ TEST(EntityLines, BeforeAndAfterArePrintedAroundTheEntityWithPlaceholdersReplace
 }
 
 TEST(EntityLines, AnUnknownPlaceholderOrALineBreakIsRefusedNamingTheLine) {
-  InputError e = refusal([] { job_of(R"J(, "before": ["M62 P1", "(T{tol})"])J", kCurve); });
+  InputError e = refusal_of([] { job_of(R"J(, "before": ["M62 P1", "(T{tol})"])J", kCurve); });
   EXPECT_EQ(e.id(), "job.template");
   EXPECT_EQ(e.where(), "t.json: job.before[1]");
   EXPECT_NE(std::string(e.what()).find("did you mean {tool}?"), std::string::npos) << e.what();
-  e = refusal([] { job_of(R"(, "after": "M5\nM30")", kCurve); });
+  e = refusal_of([] { job_of(R"(, "after": "M5\nM30")", kCurve); });
   EXPECT_EQ(e.id(), "job.template");
   EXPECT_NE(std::string(e.what()).find("line break"), std::string::npos) << e.what();
 }

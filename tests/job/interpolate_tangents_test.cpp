@@ -14,6 +14,7 @@
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/kernel/bezier.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
+#include "support/refusal.hpp"
 
 namespace {
 
@@ -24,13 +25,7 @@ Job job_of(const std::string& entity) {
 }
 
 InputError refusal(const std::string& entity) {
-  try {
-    job_of(entity);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "accepted " << entity;
-  return InputError(ErrorId(""), Place{}, "");
+  return test::refusal_of([&] { job_of(entity); });
 }
 
 void expect_near(const Vec3& a, const Vec3& b, double eps, const std::string& what) {
