@@ -26,7 +26,8 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
             "comments", "modal", "program_number", "tool_change_position",
             "arcs", "arc_tolerance_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults", "motion"}},
       {"motion", {"max_velocity_mm_min", "max_acceleration_mm_s2", "max_jerk_mm_s3", "period_s", "min_segment_periods",
-                  "block_rate_hz", "lookahead_blocks", "blend_tolerance_mm", "tool_change_s", "spindle_start_s"}},
+                  "block_rate_hz", "lookahead_blocks", "blend_tolerance_mm", "tool_change_s", "spindle_start_s",
+                  "planner"}},
       {"line_numbers", {"enabled", "start", "step"}},
       {"decimals", {"mm", "inch"}},
       {"max_decimals", {"mm", "inch"}},
@@ -159,6 +160,12 @@ MotionModel parse_motion(const Reader& r, const json& v) {
   mm.blend_tolerance_mm = ranged("blend_tolerance_mm", 0, 10, "from 0 (exact stop) to 10 mm");
   if (v.contains("tool_change_s")) mm.tool_change_s = ranged("tool_change_s", 0, 3600, "from 0 to 3600 s");
   if (v.contains("spindle_start_s")) mm.spindle_start_s = ranged("spindle_start_s", 0, 3600, "from 0 to 3600 s");
+  if (v.contains("planner")) {
+    const std::string p = r.str(v["planner"], "motion.planner");
+    if (p == "generic") mm.planner = MotionModel::Planner::generic;
+    else if (p == "linuxcnc") mm.planner = MotionModel::Planner::linuxcnc;
+    else r.fail("motion.planner", "expected \"generic\" or \"linuxcnc\", found \"" + p + "\"");
+  }
   return mm;
 }
 

@@ -50,6 +50,11 @@ constexpr double kGapPeriods = 4;
 constexpr double kTangentAngle = 1e-3;
 // Share of the acceleration a near-tangent kink may use within one period.
 constexpr double kKinkShare = 0.25;
+// LinuxCNC: a kink whose acceleration spike is below this share of the
+// limits is taken as tangent (at the cost of as much acceleration).
+constexpr double kKinkRatio = 0.1;
+// Blends at arcs are refused below this half-angle between the secants.
+constexpr double kMinBlendTheta = kPi / 12;
 
 struct Limits {
   Vec3 vmax;   // units/s per axis
@@ -190,6 +195,42 @@ struct Builder {
     return s;
   }
 
+  bool linuxcnc() const { return model.planner == MotionModel::Planner::linuxcnc; }
+
+  // The acceleration a curved move may use in all: the plane's.
+  double arc_accel(double a_plane) const { return a_plane; }
+
+  // Speed and tangential acceleration of a curved move of radius R asking
+  // speed v with acceleration a in all: the centripetal part v^2/R takes at
+  // most sqrt(3)/2 of a (the speed drops until it fits), the tangential
+  // part what is left of a, at least half of it.
+  void curved_limits(PlanSegment& s, double v, SpeedLimit why, double R, double a) const {
+    const double an_max = kNormalShare * a;
+    double tan_share = 1;
+    if (linuxcnc()) {
+      // LinuxCNC keeps half of the acceleration for the tangent on every
+      // arc (and on the arcs its interpreter makes of curves).
+      tan_share = kTangentialShare;
+      if (std::isfinite(R) && R > 0 && v * v / R > an_max) {
+        v = std::sqrt(an_max * R);
+        why = SpeedLimit::curvature;
+      }
+    } else if (std::isfinite(R) && R > 0) {
+      if (v * v / R > an_max) {
+        v = std::sqrt(an_max * R);
+        why = SpeedLimit::curvature;
+        tan_share = kTangentialShare;
+      } else {
+        const double q = v * v / (R * a);
+        tan_share = std::sqrt(std::max(0.0, 1 - q * q));
+      }
+    }
+    s.vmax = v;
+    s.limit = why;
+    s.accel = tan_share * a;
+    s.overall_accel = a;
+  }
+
   // Segments of one block, appended to segs; returns how many.
   void add_block(int bi) {
     const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
@@ -210,11 +251,12 @@ struct Builder {
       s.limit = why;
       s.accel = along(u, lim.amax);
       if (!std::isfinite(s.accel)) s.accel = lim.amax.x;
+      s.overall_accel = s.accel;
       segs.push_back(std::move(s));
       pb.programmed_feed = rapid ? v * 60 : b.feed;
     } else if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
       const Vec3 n{0, 0, 1};
-      const double vplane = in_plane(n, lim.vmax), aplane = in_plane(n, lim.amax);
+      const double vplane = in_plane(n, lim.vmax), aplane = arc_accel(in_plane(n, lim.amax));
       double v = b.feed / 60;
       SpeedLimit why = SpeedLimit::programmed;
       if (v > vplane) {
@@ -225,15 +267,6 @@ struct Builder {
       Vec3 r0 = b.from - b.center;
       r0.z = 0;
       const double R = norm(r0);
-      const double an_max = kNormalShare * aplane;
-      double tan_share = kTangentialShare;
-      if (R > 0 && v * v / R > an_max) {
-        v = std::sqrt(an_max * R);
-        why = SpeedLimit::curvature;
-      } else if (R > 0) {
-        const double q = v * v / (R * aplane);
-        tan_share = std::sqrt(std::max(0.0, 1 - q * q));
-      }
       PlanSegment s;
       s.block = bi;
       PlanSegment::Piece p;
@@ -244,9 +277,11 @@ struct Builder {
       p.t = {0, 1};
       s.pieces.push_back(std::move(p));
       s.length = pb.length;
-      s.vmax = v;
-      s.limit = why;
-      s.accel = tan_share * aplane;
+      curved_limits(s, v, why, R, aplane);
+      s.curved = true;
+      s.center = Vec3{b.center.x, b.center.y, b.to.z};
+      s.radius = R;
+      s.angle = arc_sweep(b);
       segs.push_back(std::move(s));
       pb.programmed_feed = b.feed;
     } else {
@@ -260,7 +295,7 @@ struct Builder {
       for (const Vec3& c : b.ctrl) planar = planar && std::abs(c.z - b.from.z) < 1e-12;
       (void)span;
       const double vax = planar ? in_plane(n, lim.vmax) : std::min({lim.vmax.x, lim.vmax.y, lim.vmax.z});
-      const double aax = planar ? in_plane(n, lim.amax) : std::min({lim.amax.x, lim.amax.y, lim.amax.z});
+      const double aax = arc_accel(planar ? in_plane(n, lim.amax) : std::min({lim.amax.x, lim.amax.y, lim.amax.z}));
       double vfeed = b.feed / 60;
       SpeedLimit base = SpeedLimit::programmed;
       if (vfeed > vax) {
@@ -289,21 +324,29 @@ struct Builder {
         p.length = len;
         s.length = len;
         s.pieces.push_back(std::move(p));
-        double v = vfeed;
-        s.limit = base;
-        const double an_max = kNormalShare * aax;
-        double tan_share = kTangentialShare;
-        if (v * v / rmin > an_max) {
-          v = std::sqrt(an_max * rmin);
-          s.limit = SpeedLimit::curvature;
-        } else if (std::isfinite(rmin)) {
-          const double q = v * v / (rmin * aax);
-          tan_share = std::sqrt(std::max(0.0, 1 - q * q));
-        } else {
-          tan_share = 1;
+        if (linuxcnc()) {
+          // LinuxCNC's interpreter follows the curve by arcs: each takes the
+          // mean curvature of its stretch (the turn over the length), not
+          // the tightest point's.
+          const size_t a0 = static_cast<size_t>(k * kSub), a1 = static_cast<size_t>((k + 1) * kSub);
+          const Vec3 t0 = unit(pts[a0 + 1] - pts[a0]), t1 = unit(pts[a1] - pts[a1 - 1]);
+          const double turn = std::acos(std::clamp(dot(t0, t1), -1.0, 1.0)) * kSub / (kSub - 1);
+          rmin = turn > 1e-12 ? len / turn : kInf;
         }
-        s.vmax = v;
-        s.accel = tan_share * aax;
+        const double v = vfeed;
+        s.limit = base;
+        curved_limits(s, v, s.limit, rmin, aax);
+        s.curved = true;
+        s.radius = rmin;
+        s.angle = std::isfinite(rmin) && rmin > 0 ? len / rmin : 0;
+        {
+          // The centre of the circle through the piece's last three points.
+          const size_t at = static_cast<size_t>((k + 1) * kSub);
+          const Vec3 a = pts[at - 2], m = pts[at - 1], c = pts[at];
+          const Vec3 ab = m - a, ac = c - a, nrm = cross(ab, ac);
+          const double d = 2 * dot(nrm, nrm);
+          if (d > 0) s.center = a + (cross(nrm, ab) * dot(ac, ac) + cross(ac, nrm) * dot(ab, ab)) * (1 / d);
+        }
         if (len > 0) segs.push_back(std::move(s));
       }
       pb.programmed_feed = b.feed;
@@ -330,11 +373,6 @@ struct Builder {
     const Vec3 u1 = unit(c - a), u2 = unit(e - c);
     const double cosang = std::clamp(dot(u1, u2), -1.0, 1.0);
     const double phi = std::acos(cosang);  // turning angle
-    if (phi < kTangentAngle) {
-      const double aa = std::min(prev.accel, next.accel);
-      const double kink = phi > 0 ? kNormalShare * kKinkShare * aa * period / phi : kInf;
-      return std::min({prev.vmax, next.vmax, kink});
-    }
     if (phi > kPi - 1e-6) return 0;  // reversal: stop
     const double theta = 0.5 * (kPi - phi);
     const Vec3 normal = unit(cross(u1, u2));
@@ -418,6 +456,89 @@ struct Builder {
   }
   double junction_pending_ = 0;
 
+  // Whether the two moves meet tangentially enough to pass without a
+  // blend, and at what speed. Generic: directions within kTangentAngle, at
+  // the speed a one-period kink allows. LinuxCNC: the acceleration spike
+  // of turning by the kink within one period, as a share of the axes'
+  // limits (twice as much at an arc), below kKinkRatio; the moves then
+  // lose that share of their acceleration. `kink_scale` receives the share.
+  bool tangent(PlanSegment& prev, PlanSegment& next, const Vec3& u1, const Vec3& u2, double phi, double& vj,
+               double& kink_scale) const {
+    const double vmax = std::min(prev.vmax, next.vmax);
+    if (!linuxcnc()) {
+      if (phi >= kTangentAngle) return false;
+      const double aa = std::min(prev.accel, next.accel);
+      const double kink = phi > 0 ? kNormalShare * kKinkShare * aa * period / phi : kInf;
+      vj = std::min(vmax, kink);
+      return true;
+    }
+    const double a_inst = vmax / period + next.overall_accel;
+    const Vec3 diff = (u2 - u1) * a_inst;
+    double spike = 0;
+    for (int i = 0; i < 3; ++i) spike = std::max(spike, std::abs(diff[i]) / lim.amax[i]);
+    if (prev.curved || next.curved) spike /= kTangentialShare;
+    kink_scale = spike;
+    if (spike >= kKinkRatio) return false;
+    vj = vmax;
+    prev.kink_reduce = std::max(prev.kink_reduce, spike);
+    next.kink_reduce = std::max(next.kink_reduce, spike);
+    return true;
+  }
+
+  // A corner where an arc or a curve meets another move: the speed of a
+  // blend arc within the tolerance between the secants of the arcs' ends
+  // (each arc lends at most a part of its sweep: 2/3 of the one before,
+  // 1/3 of the one after, and half of it for a line), the shape kept.
+  // -1 when no blend fits.
+  double curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk, const MotionBlock& b,
+                       const Vec3& u1, const Vec3& u2, double phi, double tol) {
+    const Vec3 P = pbk.to;
+    const double theta_tan = 0.5 * (kPi - phi);
+    double theta = theta_tan, L1, L2;
+    if (prev.curved && std::isfinite(prev.radius)) {
+      const bool convex = dot(P - prev.center, u2) < 0;
+      const double phi_max = std::min(prev.angle * 2 / 3, convex ? theta_tan : kPi / 2);
+      if (convex) theta = std::min(theta, theta_tan - phi_max / 4);
+      L1 = convex ? std::sin(phi_max / 4) * prev.radius : phi_max * prev.radius;
+    } else {
+      L1 = std::min(prev.length, kBlendFraction * block_length(pbk));
+    }
+    if (next.curved && std::isfinite(next.radius)) {
+      const bool convex = dot(P - next.center, u1) >= 0;
+      const double phi_max = std::min(next.angle / 3, convex ? theta_tan : kPi / 2);
+      if (convex) theta = std::min(theta, theta_tan - phi_max / 4);
+      L2 = convex ? std::sin(phi_max / 4) * next.radius : phi_max * next.radius;
+    } else {
+      L2 = kBlendFraction * next.length;
+    }
+    if (theta < kMinBlendTheta) return -1;
+    const double turn = kPi - 2 * theta;
+    if (turn <= 0) return std::min(prev.vmax, next.vmax);
+    Vec3 normal = cross(u1, u2);
+    normal = norm(normal) > 1e-9 ? unit(normal) : Vec3{0, 0, 1};
+    const double aplane = in_plane(normal, lim.amax), vplane = in_plane(normal, lim.vmax);
+    const double an = kNormalShare * aplane;
+    const double T = std::min({tol, kToleranceFraction * block_length(pbk), kToleranceFraction * block_length(b)});
+    if (!(T > 0)) return -1;
+    const double d_tol = std::cos(theta) * T / (1 - std::sin(theta));
+    const double d_geom = std::min({L1, L2, d_tol});
+    const double R_geom = std::tan(theta) * d_geom;
+    const double v_goal = std::min(std::max(prev.vmax, next.vmax), vplane);
+    const double v_plan = std::min(std::sqrt(an * R_geom), v_goal);
+    // The blend's own length caps it like any segment.
+    const double a_par = 0.5 * aplane;
+    const double s_blend = std::min(std::sqrt(2 * a_par * d_geom), v_plan) / a_par * v_plan;
+    const double R = std::max(v_plan * v_plan / an, std::min(s_blend / turn, R_geom));
+    double v = v_plan;
+    if (model.min_segment_periods > 0) v = std::min(v, R * turn / (model.min_segment_periods * period));
+    const double dev = R / std::sin(theta) - R;
+    if (dev > plan.max_path_deviation) {
+      plan.max_path_deviation = dev;
+      plan.max_deviation_line = pbk.line;
+    }
+    return std::min({v, prev.vmax, next.vmax});
+  }
+
   void cap_segment_time(PlanSegment& s) const {
     if (model.min_segment_periods <= 0 || s.length <= 0) return;
     const double cap = s.length / (model.min_segment_periods * period);
@@ -449,10 +570,13 @@ struct Builder {
       }
       (void)before;
       const MotionBlock& b = tl.blocks[bi];
+      // A block that does not move (its end is where it starts) takes no
+      // time and makes no corner: controllers drop it.
+      if (plan.blocks.back().length <= 1e-9) mine.clear();
       for (size_t k = 0; k < mine.size(); ++k) {
         PlanSegment s = std::move(mine[k]);
         if (segs.empty() || (k == 0 && (stop_before || pause_here))) {
-          if (!segs.empty()) exact_stop_end();
+          if (!segs.empty()) exact_stop_end(Stop::pause);
           cap_segment_time(s);
           junction.push_back(0);
           segs.push_back(std::move(s));
@@ -469,10 +593,17 @@ struct Builder {
         const MotionBlock& pbk = tl.blocks[static_cast<size_t>(prev.block)];
         const double tol = std::min(path_tolerance(bi), path_tolerance(static_cast<size_t>(prev.block)));
         double vj = 0;
-        if (prev.rapid != s.rapid || tol <= 0) {
-          vj = 0;
-        } else if (prev.pieces.back().shape == PlanSegment::Shape::line && s.pieces.front().shape == PlanSegment::Shape::line &&
-                   prev.pieces.size() == 1 && s.pieces.size() == 1) {
+        const Vec3 u1 = block_tangent(pbk, true), u2 = block_tangent(b, false);
+        const double phi = std::acos(std::clamp(dot(u1, u2), -1.0, 1.0));
+        const bool lines = prev.pieces.back().shape == PlanSegment::Shape::line &&
+                           s.pieces.front().shape == PlanSegment::Shape::line && prev.pieces.size() == 1 &&
+                           s.pieces.size() == 1;
+        double kink_scale = -1;  // LinuxCNC: the kink's share of the acceleration
+        if (tol <= 0 || phi > kPi - 2 * kPi / 180 || (prev.rapid != s.rapid && !linuxcnc())) {
+          vj = 0;  // exact stop: asked, a reversal, or a generic controller between rapid and feed
+        } else if (tangent(prev, s, u1, u2, phi, vj, kink_scale)) {
+          // vj set
+        } else if (lines) {
           junction_pending_ = junction.back();
           const double nominal_prev = dist(pbk.from, pbk.to), nominal_next = dist(b.from, b.to);
           const double r = blend_lines(s, tol, nominal_prev, nominal_next, pbk.line);
@@ -484,31 +615,19 @@ struct Builder {
           }
           vj = r;
         } else {
-          // A corner at an arc or curve: the speed of an equivalent blend
-          // within the tolerance, the shape kept.
-          const Vec3 u1 = block_tangent(pbk, true), u2 = block_tangent(b, false);
-          const double phi = std::acos(std::clamp(dot(u1, u2), -1.0, 1.0));
-          if (phi < kTangentAngle) {
-            const double aa = std::min(prev.accel, s.accel);
-            const double kink = phi > 0 ? kNormalShare * kKinkShare * aa * period / phi : kInf;
-            vj = std::min({prev.vmax, s.vmax, kink});
-          } else if (phi < kPi - 1e-6) {
-            const double theta = 0.5 * (kPi - phi);
-            const Vec3 normal = unit(cross(u1, u2));
-            const double aplane = in_plane(normal, lim.amax);
-            const double T = std::min({tol, kToleranceFraction * prev.length, kToleranceFraction * s.length});
-            const double d_tol = std::cos(theta) * T / (1 - std::sin(theta));
-            const double d = std::min({d_tol, kBlendFraction * prev.length, kBlendFraction * s.length});
-            const double R = std::tan(theta) * d;
-            vj = std::min({std::sqrt(kNormalShare * aplane * R), prev.vmax, s.vmax});
-            const double dev = R / std::sin(theta) - R;
-            if (dev > plan.max_path_deviation) {
-              plan.max_path_deviation = dev;
-              plan.max_deviation_line = pbk.line;
+          vj = curved_corner(prev, s, pbk, b, u1, u2, phi, tol);
+          if (vj < 0) {
+            // No blend fits (too sharp for the arcs' share): LinuxCNC takes
+            // the corner as a kink at a reduced speed; others stop.
+            vj = 0;
+            if (linuxcnc() && kink_scale > 0) {
+              vj = std::min(prev.vmax, s.vmax) * kKinkRatio / kink_scale;
+              prev.kink_reduce = std::max(prev.kink_reduce, kKinkRatio);
+              s.kink_reduce = std::max(s.kink_reduce, kKinkRatio);
             }
           }
         }
-        if (vj <= 0) exact_stop_end();
+        if (vj <= 0) exact_stop_end(tol <= 0 ? Stop::exact_mode : Stop::corner);
         cap_segment_time(s);
         junction.push_back(vj);
         segs.push_back(std::move(s));
@@ -516,17 +635,35 @@ struct Builder {
       stop_before = false;
       if (mine.empty() && pause_here) stop_before = true;
     }
-    if (!segs.empty()) exact_stop_end();
+    if (!segs.empty()) exact_stop_end(Stop::end);
     junction.push_back(0);  // the end
   }
 
-  // A segment that ends in an exact stop (nothing to adjust: the junction
-  // speed of 0 does it).
-  void exact_stop_end() {}
+  // Why the machine stops between two moves.
+  enum class Stop { end, pause, exact_mode, corner };
+
+  // A segment that ends in a stop. LinuxCNC plans a move whose end it could
+  // not blend (the program's end, a pause) with half its acceleration (and
+  // an arc that no next move finalized with half of that tangentially),
+  // and a move that stops in exact-stop mode (G61) with 0.9 of it (both
+  // measured on LinuxCNC 2.9; docs/motion.md). A sharp corner's stop keeps
+  // the whole acceleration.
+  void exact_stop_end(Stop why) {
+    if (!linuxcnc() || segs.empty()) return;
+    PlanSegment& s = segs.back();
+    const bool exact = path_tolerance(static_cast<size_t>(s.block)) <= 0;
+    double f = 1;
+    if (why == Stop::exact_mode || (exact && why != Stop::corner)) f = 0.9;
+    else if (why == Stop::end || why == Stop::pause) f = 0.5;
+    if (f == 1) return;
+    s.overall_accel *= f;
+    s.accel = s.curved ? kTangentialShare * s.overall_accel : std::min(s.accel * f, s.overall_accel);
+  }
 
   void speeds() {
     const size_t n = segs.size();
     const double j = lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0;
+    for (PlanSegment& sg : segs) sg.accel *= 1 - sg.kink_reduce;
     // junction has n + 1 entries: entering each segment, then the end.
     std::vector<double> v(junction);
     for (size_t i = 0; i < n; ++i) {
@@ -558,7 +695,9 @@ struct Builder {
         (void)blocks_in;
       }
       for (size_t i = 0; i < n; ++i) {
-        const size_t stop = end_of[i];
+        // Entering segment i, the controller is still executing segment
+        // i - 1: it sees the window that began there.
+        const size_t stop = end_of[i > 0 ? i - 1 : 0];
         if (stop >= n) continue;  // sees the program's end: the normal passes cover it
         // A window long enough to stop from the top speed does not limit.
         const double dist_needed = ramp_distance(0, segs[i].vmax, minimum_accel(i, stop), j);
@@ -659,7 +798,6 @@ struct Builder {
         why[b] = l;
       }
     }
-    double len_sum = 0, ratio_sum = 0;
     for (size_t b = 0; b < plan.blocks.size(); ++b) {
       PlannedBlock& pb = plan.blocks[b];
       const MotionBlock& mb = tl.blocks[b];
@@ -672,12 +810,19 @@ struct Builder {
       }
       pb.starved = pb.peak_feed < want * 0.99 && is_starvation(pb.limit);
       if (pb.starved) ++plan.starved_blocks;
-      if (mb.kind != BlockKind::rapid && want > 0 && pb.time_s > 0) {
-        len_sum += pb.length;
-        ratio_sum += pb.length * (pb.length / pb.time_s * 60) / want;
-      }
     }
-    plan.mean_feed_ratio = len_sum > 0 ? ratio_sum / len_sum : 1;
+    // Mean feed ratio over the cutting moves: the length cut over the
+    // length the programmed feeds would have cut in the same time (so each
+    // stretch of path counts by its length, blends with their block).
+    double cut = 0, at_feed = 0;
+    for (const PlanSegment& sg : segs) {
+      if (sg.rapid) continue;
+      const double want = tl.blocks[static_cast<size_t>(sg.block)].feed / 60;
+      if (!(want > 0)) continue;
+      cut += sg.length;
+      at_feed += sg.time() * want;
+    }
+    plan.mean_feed_ratio = at_feed > 0 ? cut / at_feed : 1;
   }
 };
 
@@ -746,6 +891,16 @@ MotionPlan plan_motion(const Timeline& tl, const MotionModel& model) {
   if (!(model.period_s > 0)) throw std::invalid_argument("motion model: period_s must be > 0");
   // Tool changes and spindle starts take the machine's time.
   Timeline timed = tl;
+  // Axes the program had not set yet start where the machine stands.
+  Vec3 pos = tl.start;
+  for (MotionBlock& mb : timed.blocks) {
+    if (mb.from_known != 7u) {
+      for (int k = 0; k < 3; ++k)
+        if (!(mb.from_known & (1u << k))) mb.from[k] = pos[k];
+      if (!mb.ctrl.empty()) mb.ctrl.front() = mb.from;
+    }
+    pos = mb.to;
+  }
   for (PlanPause& p : timed.pauses) {
     if (p.kind == PlanPause::Kind::tool_change) p.seconds = model.tool_change_s;
     if (p.kind == PlanPause::Kind::spindle_start) p.seconds = model.spindle_start_s;

@@ -444,6 +444,7 @@ double feed_scale_top(const MotionPlan& plan) {
 // joined in one path; starved blocks get a dashed red overlay.
 void svg_feed_path(std::string& o, const View& v, const PreviewInput& in, const std::string& unit) {
   const MotionPlan& plan = *in.plan;
+  std::string coloured;
   const double top = feed_scale_top(plan);
   constexpr int kSteps = 24;  // colour steps
   std::string cur_colour, cur_d;
@@ -451,7 +452,7 @@ void svg_feed_path(std::string& o, const View& v, const PreviewInput& in, const 
   P2 last{};
   auto flush = [&] {
     if (!cur_d.empty())
-      o += "<path class=\"feed feed-speed\" data-feed-step=\"" + std::to_string(cur_step) + "\" d=\"" + cur_d +
+      coloured += "<path class=\"feed feed-speed\" data-feed-step=\"" + std::to_string(cur_step) + "\" d=\"" + cur_d +
            "\" fill=\"none\" stroke=\"" + cur_colour +
            "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\"/>\n";
     cur_d.clear();
@@ -486,10 +487,14 @@ void svg_feed_path(std::string& o, const View& v, const PreviewInput& in, const 
     if (!seg_d.empty()) starved_d += (starved_d.empty() ? "" : " ") + seg_d;
   }
   flush();
+  // Starved stretches: a red halo under the coloured path, so that the
+  // speed stays readable on top of it.
   if (!starved_d.empty())
     o += "<path class=\"starved\" d=\"" + starved_d + "\" fill=\"none\" stroke=\"" + std::string(kOverColour) +
-         "\" stroke-width=\"1.2\" stroke-dasharray=\"3 3\"><title>starved: the controller could not feed these blocks "
-         "fast enough (block rate, minimum segment time or look-ahead)</title></path>\n";
+         "\" stroke-opacity=\"0.45\" stroke-width=\"9\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>starved: "
+         "the controller could not feed these blocks fast enough (block rate, minimum segment time or look-ahead)"
+         "</title></path>\n";
+  o += coloured;
   (void)unit;
 }
 
@@ -754,7 +759,9 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
   if (opt.control) key("key-control", line(kControlColour, 0.8, ""), "control polygon");
   if (in.plan) {
     key("key-feed", line(preview_feed_colour(1, 1), 3, ""), "feed, coloured by the speed reached");
-    key("key-starved", line(kOverColour, 1.2, "3 3"), "starved blocks");
+    key("key-starved", "<path d=\"M" + n3(lx) + " " + n3(ly) + " L" + n3(lx + 28) + " " + n3(ly) + "\" stroke=\"" +
+                           kOverColour + "\" stroke-opacity=\"0.45\" stroke-width=\"9\" fill=\"none\"/>",
+        "starved blocks (red halo)");
   } else if (opt.deviation) {
     key("key-feed", line(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
     bool unmeasured = false;
@@ -790,7 +797,7 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
     const double sx = gx + gw + 60;
     o += "<text class=\"starved-count\" x=\"" + n3(sx) + "\" y=\"" + n3(gy + 10) + "\"" +
          (plan.starved_blocks ? " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"" : "") +
-         ">starved blocks (dashed red): " +
+         ">starved blocks (red halo): " +
          (plan.starved_blocks ? std::to_string(plan.starved_blocks) + " of " + std::to_string(plan.blocks.size())
                               : std::string("none")) + "</text>\n";
     o += "</g>\n";

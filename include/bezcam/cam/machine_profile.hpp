@@ -35,6 +35,13 @@ struct MotionModel {
   /// corner (the controller's default path mode); 0: exact stop.
   double blend_tolerance_mm = 0;
   double tool_change_s = 0, spindle_start_s = 0;
+  /// Which planner the controller has (key `planner`): `generic` (a
+  /// look-ahead planner with blend arcs; the analytic cases hold exactly)
+  /// or `linuxcnc` (LinuxCNC 2.9's trajectory planner: half acceleration on
+  /// arcs and on moves whose end is not blended, tangent kinks, rapids
+  /// blended with feeds, blends at arcs between secants; docs/motion.md).
+  enum class Planner { generic, linuxcnc };
+  Planner planner = Planner::generic;
 };
 
 struct MachineProfile {

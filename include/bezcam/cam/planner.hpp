@@ -33,6 +33,11 @@ struct PlanPause {
 /// stop, infinity no tolerance) and the pauses between them.
 struct Timeline {
   Units units = Units::mm;
+  /// Where the machine stands when the program starts (program units): the
+  /// simulated controller homes at the origin. An axis a block's `from`
+  /// does not know (MotionBlock::from_known) starts from here, or from
+  /// where the previous block left it.
+  Vec3 start{0, 0, 0};
   std::vector<MotionBlock> blocks;
   std::vector<double> path_tolerance;  ///< one per block
   std::vector<PlanPause> pauses;       ///< in order of before_block
@@ -77,6 +82,15 @@ struct PlanSegment {
   bool rapid = false;
   double length = 0, vmax = 0, accel = 0;  ///< units/s, units/s^2 along the path
   SpeedLimit limit = SpeedLimit::programmed;
+  /// Curved segments (arcs, curve pieces, blends): radius and swept angle
+  /// of the circle that approximates them (corners use them).
+  bool curved = false;
+  Vec3 center;
+  double radius = 0, angle = 0;
+  /// Share of the acceleration lost to a near-tangent kink at either end.
+  double kink_reduce = 0;
+  /// The acceleration the move may use in all (accel is its tangential part).
+  double overall_accel = 0;
   double v0 = 0, v1 = 0, vpeak = 0;        ///< planned entry, exit, peak speed (units/s)
   double t_start = 0;                      ///< when it starts (s)
   double t_acc = 0, t_cruise = 0, t_dec = 0;  ///< phases (s)
