@@ -157,20 +157,18 @@ setp sampler.0.enable 0
 """
 
 
-def our_leftovers(sid):
-    """LinuxCNC processes still in the session we started."""
-    left = []
-    for pid in os.listdir("/proc"):
-        if not pid.isdigit():
-            continue
-        try:
-            with open("/proc/%s/stat" % pid) as f:
-                fields = f.read().rsplit(")", 1)[1].split()
-            if int(fields[3]) == sid:
-                left.append(int(pid))
-        except (OSError, IndexError, ValueError):
-            continue
-    return left
+def started_at(pid):
+    """Start time of a process in clock ticks since boot (None if gone)."""
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            return int(f.read().rsplit(")", 1)[1].split()[19])
+    except (OSError, IndexError, ValueError):
+        return None
+
+
+def boot_ticks_now():
+    with open("/proc/uptime") as f:
+        return int(float(f.read().split()[0]) * os.sysconf("SC_CLK_TCK"))
 
 
 def foreign_linuxcnc():
@@ -201,6 +199,7 @@ def start_and_wait(rundir, ini, program, mdi, timeout):
         env.update(RTAPI_UID=str(nobody.pw_uid),
                    RTAPI_FIFO_PATH=os.path.join(rtdir, "fifo"))
     log = open(os.path.join(rundir, "linuxcnc.log"), "w")
+    t_start = boot_ticks_now() - 1
     proc = subprocess.Popen(["linuxcnc", "-r", ini], cwd=rundir, env=env,
                             stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
                             start_new_session=True)
@@ -214,19 +213,21 @@ def start_and_wait(rundir, ini, program, mdi, timeout):
             except subprocess.TimeoutExpired:
                 os.killpg(proc.pid, signal.SIGKILL)
                 rc = proc.wait()
-        # rtapi_app leaves after the script: poll until nothing of ours remains
-        end = time.monotonic() + 20
-        while (our_leftovers(proc.pid) or os.path.exists(LCNC_LOCK)) \
-                and time.monotonic() < end:
+        # rtapi_app (its own session) leaves after the script: poll until no
+        # LinuxCNC process is left. None ran when this run began (checked under
+        # the lock), so those still there were started by it.
+        end = time.monotonic() + 30
+        while (foreign_linuxcnc() or os.path.exists(LCNC_LOCK)) and time.monotonic() < end:
             time.sleep(0.01)
-        left = our_leftovers(proc.pid)
+        left = [p for p in foreign_linuxcnc() if (started_at(p) or -1) >= t_start]
         if left:
             for pid in left:
                 try:
                     os.kill(pid, signal.SIGKILL)
                 except ProcessLookupError:
                     pass
-            raise RuntimeError("LinuxCNC left processes %s running (killed)" % left)
+            raise RuntimeError("LinuxCNC left processes %s running 30 s after its "
+                               "exit (killed)" % left)
         if os.path.exists(LCNC_LOCK):
             os.remove(LCNC_LOCK)
     finally:
