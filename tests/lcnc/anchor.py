@@ -27,6 +27,7 @@ import sys
 import tempfile
 import time
 
+sys.dont_write_bytecode = True  # nothing written into the source tree
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
@@ -100,6 +101,32 @@ def synthetic_programs(only):
             if f.endswith(".ngc") and (not only or re.search(only, f[:-4]))]
 
 
+def check_limits(res, motion):
+    """limits-g61 moves each axis alone, long enough to reach its top speed:
+    LinuxCNC must reach exactly the profile's axis velocities, and accelerate
+    within the axis limits, at the same share of each (LinuxCNC's planner
+    uses a fixed fraction of the limit, 0.9 in exact stop). Otherwise the
+    harness did not configure the machine from the profile."""
+    bad, share = [], {}
+    for axis in "xyz":
+        vmax = motion["max_velocity_mm_min"][axis] / 60.0
+        amax = float(motion["max_acceleration_mm_s2"][axis])
+        v = res["axis_peak_velocity_mm_s"][axis]
+        acc = res["axis_peak_acceleration_mm_s2"][axis]
+        share[axis] = acc / amax
+        if abs(v - vmax) > 0.002 * vmax:
+            bad.append("%s peak %.3f mm/s, the profile's limit %.3f" % (axis, v, vmax))
+        if not 0.45 * amax <= acc <= 1.01 * amax:
+            bad.append("%s peak acceleration %.1f mm/s2, the profile's limit %.1f"
+                       % (axis, acc, amax))
+    if max(share.values()) - min(share.values()) > 0.06:
+        bad.append("the axes use different shares of their acceleration limits: %s" % share)
+    if bad:
+        raise RuntimeError("limits-g61: the harness did not configure LinuxCNC's "
+                           "limits from the profile: " + "; ".join(bad))
+    return share
+
+
 def bezcam_cycle(bezcam, program, profile, tmp):
     report = os.path.join(tmp, os.path.basename(program) + ".report.json")
     r = subprocess.run([bezcam, "simulate", "--program", program, "--machine", profile,
@@ -158,6 +185,10 @@ def main(argv=None):
                 res = lcnc_run.run(path, motion, outdir)
                 row.update(lcnc=res["cycle_time_s"], feed=res["feed_time_s"],
                            rapid=res["rapid_time_s"], other=res["other_time_s"])
+                if name == "limits-g61":
+                    share = check_limits(res, motion)
+                    print("(limits-g61: axis velocities at the profile's limits, "
+                          "acceleration %.3f of each axis's limit)" % share["x"])
                 if outdir:
                     with open(path) as src, open(os.path.join(outdir, "program.ngc"), "w") as dst:
                         dst.write(src.read())
@@ -178,12 +209,19 @@ def main(argv=None):
 
     if a.results:
         os.makedirs(a.results, exist_ok=True)
-        with open(os.path.join(a.results, "summary.tsv"), "w") as f:
+        # rows of programs not run this time (--only) are kept
+        table = os.path.join(a.results, "summary.tsv")
+        lines = {}
+        if os.path.exists(table):
+            with open(table) as f:
+                lines = {ln.split("\t", 1)[0]: ln for ln in f.read().splitlines()[1:] if ln}
+        for r in rows:
+            if "lcnc" in r:
+                lines[r["program"]] = "%s\t%.3f\t%.3f\t%.3f\t%.3f" % (
+                    r["program"], r["lcnc"], r["feed"], r["rapid"], r["other"])
+        with open(table, "w") as f:
             f.write("program\tcycle_time_s\tfeed_time_s\trapid_time_s\tother_time_s\n")
-            for r in rows:
-                if "lcnc" in r:
-                    f.write("%s\t%.3f\t%.3f\t%.3f\t%.3f\n"
-                            % (r["program"], r["lcnc"], r["feed"], r["rapid"], r["other"]))
+            f.write("".join(lines[k] + "\n" for k in sorted(lines)))
     compared = [r for r in rows if "ratio" in r]
     off = [r for r in compared if abs(r["ratio"] - 1) > TOLERANCE]
     close = [r for r in compared if abs(r["ratio"] - 1) <= GOOD]

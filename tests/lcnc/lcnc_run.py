@@ -265,7 +265,15 @@ def analyse(rows, period):
             t = 0  # standing inside the cycle (a dwell, a queue drain)
         split["rapid" if t == TYPE_RAPID else "feed" if t in (TYPE_FEED, TYPE_ARC)
               else "other"] += 1
+    # per axis, from the commanded positions: peak speed and acceleration
+    peak_v, peak_a = {}, {}
+    for k, axis in enumerate("xyz", start=1):
+        p = [r[k] for r in rows[first:last + 2]]
+        peak_v[axis] = round(max(abs(p[i + 1] - p[i]) for i in range(len(p) - 1)) / period, 3)
+        peak_a[axis] = round(max(abs(p[i + 1] - 2 * p[i] + p[i - 1])
+                                 for i in range(1, len(p) - 1)) / period ** 2, 1)
     return {"cycle_time_s": round((last - first) * period, 6),
+            "axis_peak_velocity_mm_s": peak_v, "axis_peak_acceleration_mm_s2": peak_a,
             "feed_time_s": round(split["feed"] * period, 6),
             "rapid_time_s": round(split["rapid"] * period, 6),
             "other_time_s": round(split["other"] * period, 6),
@@ -313,6 +321,11 @@ def run(program, motion, outdir=None, timeout=300):
             raise RuntimeError("LinuxCNC run failed (script status %d): %s\n%s"
                                % (rc, "; ".join(drv.get("errors", ["no driver report"])),
                                   tail))
+        p_q = (drv.get("settings") or [None] * 5)[3:5]
+        if None in p_q or abs(p_q[0] - float(motion["blend_tolerance_mm"])) > 1e-9 \
+                or p_q[1] != 0:
+            raise RuntimeError("LinuxCNC's G64 P, Q before the run are %s, not %s"
+                               % (p_q, mdi[0]))
         rows = read_samples(os.path.join(rundir, "samples.raw"))
         if drv.get("overruns"):
             raise RuntimeError("sampler FIFO overran %d times" % drv["overruns"])

@@ -15,6 +15,9 @@ LinuxCNC (homed in place) and bezcam's simulator start: X0 Y0 Z0.
   square-F<f>      a 40 mm square of G1 (blended corners)
   square-g61-F<f>  the same square in G61 (exact stop, the program's mode wins)
   pocket-3d        rapids, a Z plunge, lines and arcs at several feeds
+  limits-g61       single-axis G0 moves in exact stop, each reaching its
+                   axis's top speed: anchor.py checks on it that LinuxCNC
+                   runs at the profile's limits (the harness configured them)
 """
 import math
 import os
@@ -93,7 +96,22 @@ def pocket():
     write("pocket-3d", out, "rapids, a Z plunge, lines and arcs, ramp in Z, several feeds")
 
 
+# axis, signed length of each G0 of limits-g61
+LIMIT_MOVES = [("x", 100.0), ("y", -40.0), ("z", -50.0), ("z", 50.0), ("y", 40.0),
+               ("x", -100.0)]
+
+
+def limits():
+    pos = {"x": 0.0, "y": 0.0, "z": 0.0}
+    out = ["G61"]
+    for axis, d in LIMIT_MOVES:
+        pos[axis] += d
+        out.append("G0 %s%s" % (axis.upper(), fmt(pos[axis])))
+    write("limits-g61", out, "single-axis rapids in exact stop: G61")
+
+
 if __name__ == "__main__":
+    limits()
     for f in (3000, 9000):
         chords(0.05, f)
     for f in (3000, 6000, 9000):
