@@ -187,8 +187,9 @@ def main(argv=None):
                            rapid=res["rapid_time_s"], other=res["other_time_s"])
                 if name == "limits-g61":
                     share = check_limits(res, motion)
-                    print("(limits-g61: axis velocities at the profile's limits, "
-                          "acceleration %.3f of each axis's limit)" % share["x"])
+                    row["note"] = ("LinuxCNC at the profile's axis speeds; peak acceleration "
+                                   "%s of the axis limits" % "/".join(
+                                       "%.2f" % share[k] for k in "xyz"))
                 if outdir:
                     with open(path) as src, open(os.path.join(outdir, "program.ngc"), "w") as dst:
                         dst.write(src.read())
@@ -205,7 +206,8 @@ def main(argv=None):
                 "%.3f" % row["ratio"] if "ratio" in row else "-",
                 "   " + row["error"] if "error" in row else
                 ("   OFF BY MORE THAN 5 %" if "ratio" in row and
-                 abs(row["ratio"] - 1) > TOLERANCE else "")), flush=True)
+                 abs(row["ratio"] - 1) > TOLERANCE else
+                 "   (%s)" % row["note"] if "note" in row else "")), flush=True)
 
     if a.results:
         os.makedirs(a.results, exist_ok=True)
