@@ -42,7 +42,6 @@ PROGRAMS_FROM_BEZCAM = [
     ("bz-semicircle-lines", "curve-semicircle.json", "lines", None),
     ("bz-semicircle-arcs", "curve-semicircle.json", "arcs", None),
     ("bz-semicircle-nurbs", "curve-semicircle.json", "nurbs", None),
-    ("bz-semicircle-lines-F6000", "curve-semicircle.json", "lines", 6000),
     ("bz-teardrop-lines-F4000", "path-closed-teardrop.json", "lines", 4000),
     ("bz-teardrop-arcs-F4000", "path-closed-teardrop.json", "arcs", 4000),
     ("bz-teardrop-nurbs-F4000", "path-closed-teardrop.json", "nurbs", 4000),
