@@ -368,6 +368,8 @@ inline constexpr ErrorId sim_length_mismatch{"sim.length-mismatch"};
 inline constexpr ErrorId sim_line_too_long{"sim.line-too-long"};
 /// The simulated controller's server cannot listen.
 inline constexpr ErrorId sim_listen{"sim.listen"};
+/// Simulate: the machine profile has no motion model to plan with.
+inline constexpr ErrorId sim_no_motion_model{"sim.no-motion-model"};
 /// The program run by the simulated controller holds a NUL byte.
 inline constexpr ErrorId sim_nul_byte{"sim.nul-byte"};
 /// Simulate: the simulated controller stopped with alarm sender-lost.

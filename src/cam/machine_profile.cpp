@@ -1,6 +1,7 @@
 #include "bezcam/cam/machine_profile.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -23,7 +24,9 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
       {"", {"name", "description", "header", "footer", "line_numbers", "decimals", "max_decimals", "feed_decimals", "words",
             "tool_change", "spindle_on", "spindle_off", "preamble", "tool_length", "tool_changer", "spindle_dwell_s",
             "comments", "modal", "program_number", "tool_change_position",
-            "arcs", "arc_tolerance_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults"}},
+            "arcs", "arc_tolerance_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults", "motion"}},
+      {"motion", {"max_velocity_mm_min", "max_acceleration_mm_s2", "max_jerk_mm_s3", "period_s", "min_segment_periods",
+                  "block_rate_hz", "lookahead_blocks", "blend_tolerance_mm", "tool_change_s", "spindle_start_s"}},
       {"line_numbers", {"enabled", "start", "step"}},
       {"decimals", {"mm", "inch"}},
       {"max_decimals", {"mm", "inch"}},
@@ -110,6 +113,54 @@ struct Reader {
     return out;
   }
 };
+
+// The `motion` object: every key but the jerk is required, each within
+// the range a real controller can have.
+MotionModel parse_motion(const Reader& r, const json& v) {
+  if (!v.is_object()) r.fail("motion", "expected an object of motion settings (docs/machines.md)");
+  MotionModel mm;
+  auto need = [&](const char* k) -> const json& {
+    auto it = v.find(k);
+    if (it == v.end()) r.fail(std::string("motion.") + k, "missing: the motion model needs it (docs/machines.md)");
+    return *it;
+  };
+  auto ranged = [&](const char* k, double lo, double hi, const char* what) {
+    const std::string p = std::string("motion.") + k;
+    const double x = r.num(need(k), p);
+    if (!(x >= lo && x <= hi)) r.fail(p, std::string("expected ") + what);
+    return x;
+  };
+  auto axes = [&](const char* k, double lo, double hi, const char* what) {
+    const std::string p = std::string("motion.") + k;
+    const json& o = need(k);
+    if (!o.is_object()) r.fail(p, "expected {\"x\": ..., \"y\": ..., \"z\": ...}");
+    std::array<double, 3> out{};
+    const char* names[3] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i) {
+      auto it = o.find(names[i]);
+      if (it == o.end()) r.fail(p + "." + names[i], "missing: give a value for every axis");
+      out[i] = r.num(*it, p + "." + names[i]);
+      if (!(out[i] > lo && out[i] <= hi)) r.fail(p + "." + names[i], std::string("expected ") + what);
+    }
+    for (auto it = o.begin(); it != o.end(); ++it)
+      if (it.key() != "x" && it.key() != "y" && it.key() != "z") r.fail(p + "." + it.key(), "unknown axis: expected x, y and z");
+    return out;
+  };
+  mm.max_velocity_mm_min = axes("max_velocity_mm_min", 0, 1e6, "a velocity above 0 and at most 1000000 mm/min");
+  mm.max_acceleration_mm_s2 = axes("max_acceleration_mm_s2", 0, 1e6, "an acceleration above 0 and at most 1000000 mm/s^2");
+  if (v.contains("max_jerk_mm_s3"))
+    mm.max_jerk_mm_s3 = axes("max_jerk_mm_s3", 0, 1e9, "a jerk above 0 and at most 1e9 mm/s^3");
+  mm.period_s = ranged("period_s", 1e-5, 0.1, "a period from 0.00001 to 0.1 s");
+  mm.min_segment_periods = ranged("min_segment_periods", 0, 100, "from 0 (no cap) to 100 periods");
+  mm.block_rate_hz = ranged("block_rate_hz", 0, 1e6, "from 0 (no cap) to 1000000 blocks per second");
+  const double look = ranged("lookahead_blocks", 1, 100000, "a whole number of blocks from 1 to 100000");
+  if (look != std::floor(look)) r.fail("motion.lookahead_blocks", "expected a whole number of blocks from 1 to 100000");
+  mm.lookahead_blocks = static_cast<int>(look);
+  mm.blend_tolerance_mm = ranged("blend_tolerance_mm", 0, 10, "from 0 (exact stop) to 10 mm");
+  if (v.contains("tool_change_s")) mm.tool_change_s = ranged("tool_change_s", 0, 3600, "from 0 to 3600 s");
+  if (v.contains("spindle_start_s")) mm.spindle_start_s = ranged("spindle_start_s", 0, 3600, "from 0 to 3600 s");
+  return mm;
+}
 
 }  // namespace
 
@@ -223,6 +274,7 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
     }
   }
   if (auto v = r.opt(doc, "max_feed_mm_min")) m.max_feed_mm_min = r.num(*v, "max_feed_mm_min");
+  if (auto v = r.opt(doc, "motion")) m.motion = parse_motion(r, *v);
   for (size_t i = 0; i < m.header.size(); ++i) r.check_placeholders("header[" + std::to_string(i) + "]", m.header[i]);
   for (size_t i = 0; i < m.footer.size(); ++i) r.check_placeholders("footer[" + std::to_string(i) + "]", m.footer[i]);
   r.check_placeholders("tool_change", m.tool_change);

@@ -17,7 +17,7 @@ struct Options {
   std::string job, out = "-", report;
   ConversionOptions conv;
   PostOptions post;
-  bool quiet = false;
+  bool quiet = false, compare = false;
 } o;
 
 CLI::App* add(CLI::App& app) {
@@ -29,6 +29,9 @@ CLI::App* add(CLI::App& app) {
   s->add_option("--report", o.report, "also write a JSON report (per entity: kind, degree, length, blocks, "
                                       "deviation measured and proven; lengths and estimated time); written only "
                                       "with the program");
+  s->add_flag("--compare-outputs", o.compare,
+              "also convert the job in the other output modes the machine takes (lines, arcs, nurbs) and compare "
+              "their cycle times on its motion model, in the summary and the report");
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   return s;
 }
@@ -64,7 +67,34 @@ int run() {
     throw;
   }
   progress.finish();
-  const ProgramReport rep = make_report(r.program, m, r.gcode);
+  ProgramReport rep = make_report(r.program, m, r.gcode);
+  if (o.compare) {
+    if (!m.motion)
+      throw InputError(errc::usage_option, Place::at_option("--compare-outputs"),
+                       "machine \"" + m.name + "\" has no motion model (key \"motion\", docs/machines.md) to compare cycle times with");
+    for (OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
+      if (mode == OutputMode::arcs && !m.arcs) continue;
+      if (mode == OutputMode::nurbs && m.nurbs == NurbsDialect::none) continue;
+      ProgramReport::Alternative a;
+      a.output = mode;
+      if (mode == opt.output && rep.planned) {
+        a.planned = *rep.planned;
+        a.gcode_bytes = r.gcode.size();
+        for (const auto& e : rep.entities) a.blocks += e.report.blocks;
+      } else {
+        ConvertOptions other = opt;
+        other.output = mode;
+        other.on_entity = nullptr;
+        const ConvertResult r2 = convert(job, m, other);
+        const ProgramReport rep2 = make_report(r2.program, m, r2.gcode);
+        if (!rep2.planned) continue;
+        a.planned = *rep2.planned;
+        a.gcode_bytes = r2.gcode.size();
+        for (const auto& e : rep2.entities) a.blocks += e.report.blocks;
+      }
+      rep.alternatives.push_back(a);
+    }
+  }
   write_output(o.out, r.gcode);
   if (!o.report.empty()) write_output(o.report, report_json(rep));
   if (!o.quiet) {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "bezcam/kernel/surface.hpp"
@@ -16,6 +17,8 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/gcode/timeline.hpp"
+#include "bezcam/report/motion_report.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
@@ -33,7 +36,7 @@ struct Options {
   std::string job, out, program;
   ConversionOptions conv;
   double width = 1200;
-  bool no_control = false, deviation = false, quiet = false;
+  bool no_control = false, deviation = false, feed = false, quiet = false;
 } o;
 CLI::App* sub = nullptr;
 
@@ -48,6 +51,10 @@ CLI::App* add(CLI::App& app) {
   s->add_flag("--no-control", o.no_control, "leave out control polygons and control points");
   s->add_flag("--deviation", o.deviation,
               "colour each cutting block by its measured deviation from the true curve (0 to the tolerance)");
+  auto* fd = s->add_flag("--feed", o.feed,
+                         "colour the cutting moves by the feed the machine reaches on its motion model (legend in "
+                         "units/min; starved blocks dashed red)");
+  fd->excludes(s->get_option("--deviation"));
   s->add_option("--width", o.width, "width of the drawing in pixels (default 1200)")->check(CLI::Range(400.0, 20000.0));
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   return s;
@@ -56,6 +63,24 @@ CLI::App* add(CLI::App& app) {
 std::string read_text(const std::string& path, const char* what) {
   if (std::filesystem::is_directory(path)) throw IoError(errc::io_read, Place::at_file(path), std::string("is a directory, not a ") + what);
   return read_bounded(path, kMaxProgramBytes, what);  // refused before it is read when too large (limits.hpp)
+}
+
+// --feed: the motion planned on the machine's model; the preview draws it
+// and says what it found. `in.plan` points into the returned plan once the
+// caller keeps it (set again by the caller's copy).
+MotionPlan feed_plan(const MachineProfile& m, const Timeline& tl, PreviewInput& in) {
+  if (!m.motion)
+    throw InputError(errc::usage_option, Place::at_option("--feed"),
+                     "machine \"" + m.name + "\" has no motion model (key \"motion\", docs/machines.md) to plan the feed with");
+  MotionPlan plan = plan_motion(tl, *m.motion);
+  in.machine = m.name;
+  char b[200];
+  std::snprintf(b, sizeof b, "; mean feed %.0f %% of programmed; %zu starved block%s", plan.mean_feed_ratio * 100,
+                plan.starved_blocks, plan.starved_blocks == 1 ? "" : "s");
+  in.notes.push_back("planned on the motion model of machine " + m.name + ": cycle " + format_seconds(plan.cycle_time_s) +
+                     " (cutting " + format_seconds(plan.cutting_time_s) + ", rapids " + format_seconds(plan.rapid_time_s) +
+                     ")" + b);
+  return plan;
 }
 
 // --program: the motion of a G-code file, read line by line with progress
@@ -152,6 +177,9 @@ int run_program() {
       std::cerr << "bezcam: warning: " << o.program << " has " << findings.size() << " lint finding"
                 << (findings.size() == 1 ? "" : "s") << " for machine " << m.name << " (bezcam lint lists them)\n";
   }
+  std::optional<MotionPlan> plan;
+  if (o.feed) plan = feed_plan(m, read_timeline(text), in);
+  if (plan) in.plan = &*plan;
   PreviewOptions popt;
   popt.control = !o.no_control;
   popt.deviation = o.deviation;
@@ -160,7 +188,7 @@ int run_program() {
   write_output(o.out, svg);
   if (!o.quiet)
     std::cerr << "bezcam: wrote " << o.out << ": " << in.motion.size() << " motion blocks from " << o.program
-              << (o.deviation ? ", coloured by deviation" : "") << "\n";
+              << (o.deviation ? ", coloured by deviation" : o.feed ? ", coloured by feed" : "") << "\n";
   return 0;
 }
 
@@ -218,6 +246,9 @@ int run() {
   }
   for (const auto& w : p.warnings) in.warnings.push_back("warning: " + w);  // the job's and the program's own
 
+  std::optional<MotionPlan> plan;
+  if (o.feed) plan = feed_plan(m, program_timeline(p), in);
+  if (plan) in.plan = &*plan;
   PreviewOptions popt;
   popt.control = !o.no_control;
   popt.deviation = o.deviation;
@@ -233,7 +264,8 @@ int run() {
   if (!o.quiet) {
     for (const auto& w : p.warnings) std::cerr << "bezcam: warning: " << w << "\n";
     std::cerr << "bezcam: wrote " << o.out << ": " << n << (n == 1 ? " entity, " : " entities, ") << blocks
-              << " cutting blocks for machine " << m.name << (o.deviation ? ", coloured by deviation" : "") << "\n";
+              << " cutting blocks for machine " << m.name
+              << (o.deviation ? ", coloured by deviation" : o.feed ? ", coloured by feed" : "") << "\n";
   }
   return 0;
 }

@@ -19,6 +19,8 @@
 #include "bezcam/sim/sim_controller.hpp"
 #include "bezcam/sim/sim_server.hpp"
 #include "bezcam/sim/trace.hpp"
+#include "bezcam/gcode/timeline.hpp"
+#include "bezcam/report/motion_report.hpp"
 #include "bezcam/link/transport.hpp"
 #include "command.hpp"
 #include "options.hpp"
@@ -47,7 +49,7 @@ using namespace bezcam::link;
 using namespace bezcam::sim;
 
 struct Options {
-  std::string listen, program, machine = "generic", trace;
+  std::string listen, program, machine = "generic", trace, report, motion;
   std::size_t buffer = 4096;
   int max_connections = 8;
   double idle_timeout = 30, session_timeout = 30, exec_delay_ms = 0;
@@ -63,7 +65,13 @@ CLI::App* add(CLI::App& app) {
   auto* p = s->add_option("--program", o.program, "G-code file to execute directly, no network");
   l->excludes(p);
   p->excludes(l);
-  s->add_option("--machine", o.machine, "machine profile: travel limits and maximum feed (default generic)");
+  s->add_option("--machine", o.machine, "machine profile: travel limits, maximum feed and motion model (default generic)");
+  auto* rep = s->add_option("--report", o.report,
+                            "with --program: plan the motion on the machine's motion model and write its report "
+                            "(cycle time, achieved feed, starved blocks, path deviation, per block) as JSON");
+  auto* mot = s->add_option("--motion", o.motion, "with --program: write the planned motion, one row per period: t x y z feed (TSV)");
+  rep->needs(p);
+  mot->needs(p);
   s->add_option("--trace", o.trace, "write the trace here (\"-\" for stdout); restarted for each program");
   s->add_option("--buffer", o.buffer, "receive buffer in bytes")->check(CLI::Range(kMinBuffer, kMaxBuffer));
   s->add_option("--max-connections", o.max_connections, "simultaneous Modbus connections")->check(CLI::Range(2, 64));
@@ -169,6 +177,15 @@ class SignalWaiter {
   std::atomic<int> signal_{0};
 };
 
+// The planned motion of a program the controller executed (so the program
+// is known to be valid): its report and samples.
+void plan_and_write(const MachineProfile& profile, const std::string& program) {
+  const MotionPlan plan = plan_motion(read_timeline(program, &profile), *profile.motion);
+  if (!o.report.empty()) write_output(o.report, motion_report_json(plan, o.program, profile.name));
+  if (!o.motion.empty()) write_output(o.motion, motion_samples_tsv(plan));
+  if (!o.quiet) std::cerr << motion_summary_text(plan, o.program + " on " + profile.name);
+}
+
 int run() {
   if (o.listen.empty() && o.program.empty())
     throw InputError(errc::sim_usage, "simulate", "give --listen HOST:PORT or --program FILE.nc");
@@ -195,6 +212,13 @@ int run() {
       std::cerr << "bezcam simulate: " << t << " " << event << std::endl;
     };
   }
+  const MachineProfile profile = cfg.profile;
+  if ((!o.report.empty() || !o.motion.empty()) && !profile.motion)
+    throw InputError(errc::sim_no_motion_model, Place::at_option("--machine"),
+                     "machine \"" + profile.name + "\" has no motion model (key \"motion\", docs/machines.md): "
+                     "add one to plan its motion");
+  if (!o.report.empty() && o.report == o.motion)
+    throw InputError(errc::usage_report, Place::at_option("--report"), "the report and the motion samples cannot go to the same file");
   const std::string program = o.program.empty() ? std::string() : read_file(o.program);
   SignalWaiter signals;  // before any thread exists, so that all inherit the mask
   SimController ctl(std::move(cfg));
@@ -221,6 +245,7 @@ int run() {
     if (!o.quiet)
       std::cerr << "bezcam: simulate: " << o.program << ": " << st.lines_executed << " lines, " << st.blocks_executed
                 << " motion blocks executed on machine " << o.machine << "\n";
+    if (!o.report.empty() || !o.motion.empty()) plan_and_write(profile, program);
     return 0;
   }
 

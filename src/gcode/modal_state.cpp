@@ -48,7 +48,7 @@ void GcodeInterpreter::Impl::run_modal() {
   // One code per modal group.
   std::array<std::string, kModalGroups> seen_g{};
   int motion = -999;
-  bool dwell = false, home = false, machine_coords = false, length_comp = false;
+  bool dwell = false, home = false, machine_coords = false, length_comp = false, blend = false;
   std::string non_modal;  // RS274/NGC: one code of group 0 per line
   for (const auto& [c, t] : ln.g) {
     const GGroup grp = g_group(c);
@@ -76,6 +76,7 @@ void GcodeInterpreter::Impl::run_modal() {
                                 "describe the tool centre");
       case 430: length_comp = true; break;
       case 40: dwell = true; break;
+      case 640: blend = true; break;
       case 280: home = true; break;
       case 530: machine_coords = true; break;
       default: break;
@@ -101,7 +102,8 @@ void GcodeInterpreter::Impl::run_modal() {
   // takes the line's axis words (its intermediate point).
   const bool has_axes = ln.has('X') || ln.has('Y') || ln.has('Z');
   bool motion_words = has_axes && !home;
-  for (char c : std::string_view(dwell ? "IJKRQL" : "IJKRQLP")) motion_words = motion_words || ln.has(c);
+  // G04's P is its duration, G64's P and Q its tolerances: not motion words.
+  for (char c : std::string_view(dwell ? "IJKRQL" : blend ? "IJKRL" : "IJKRQLP")) motion_words = motion_words || ln.has(c);
   int active = -999;
   if (motion == 800) active = -1;
   else if (motion != -999) active = motion;
@@ -113,7 +115,7 @@ void GcodeInterpreter::Impl::run_modal() {
   if (machine_coords && !(active == 0 || active == 10))
     fail(errc::gcode_unsupported, "G53 (machine coordinates) applies to a G00 or G01 move on the same line; found " +
                                       (active >= 0 ? wt(active) : std::string("no motion")));
-  std::string extra = dwell ? "P" : "";
+  std::string extra = dwell ? "P" : blend ? "PQ" : "";
   if (home) extra += "XYZ";
   if (length_comp) extra += "H";
   check_letters(active, extra, motion != -999);
@@ -154,7 +156,16 @@ void GcodeInterpreter::Impl::run_modal() {
     st.dwell_seconds += val('P');
   }
   for (const auto& [c, t] : ln.g) {
-    if (c == 170) {
+    if (c == 610 || c == 611) {
+      st.path_tolerance = 0;
+    } else if (c == 640) {
+      // G64 P- (LinuxCNC): corners blended within P; without P, as fast as
+      // the planner can (no tolerance). Q (naive-CAM merging) is accepted
+      // and not modelled.
+      if (ln.has('P') && !(val('P') >= 0)) fail(errc::gcode_number, "G64 needs a path tolerance P >= 0, found " + txt('P'));
+      if (ln.has('Q') && !(val('Q') >= 0)) fail(errc::gcode_number, "G64's Q (merge tolerance) must be >= 0, found " + txt('Q'));
+      st.path_tolerance = ln.has('P') && val('P') > 0 ? val('P') : std::numeric_limits<double>::infinity();
+    } else if (c == 170) {
       st.plane = 17;
       mo.plane_set = true;
     } else if (c == 200 || c == 210) {

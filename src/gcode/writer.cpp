@@ -1,4 +1,6 @@
 #include "bezcam/gcode/writer.hpp"
+
+#include "bezcam/cam/planner.hpp"
 #include "bezcam/version.hpp"
 
 #include <algorithm>
@@ -98,19 +100,29 @@ class Writer {
     if (list.empty() || (list.size() == 1 && list.front().first < 0)) return;
     for (const auto& [tool, labels] : list) note("T" + std::to_string(tool) + ": " + labels);
   }
-  // The same figure as the report's (motion_totals): feeds and rapids at
-  // their rates, so a lower bound of what the machine takes.
+  // The cycle time the report gives: the program planned on the machine's
+  // motion model when the profile has one (cam/planner.hpp), else feeds and
+  // rapids at their rates.
   void cycle_time() {
+    auto when = [](double s) {
+      char b[96];
+      const long whole = s > 0 ? std::max(1L, std::lround(s)) : 0L;
+      if (whole >= 3600) std::snprintf(b, sizeof b, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60, whole % 60);
+      else if (whole >= 60) std::snprintf(b, sizeof b, "%ld min %02ld s", whole / 60, whole % 60);
+      else std::snprintf(b, sizeof b, "%ld s", whole);
+      return std::string(b);
+    };
+    if (m_.motion) {
+      const MotionPlan plan = plan_motion(program_timeline(p_), *m_.motion);
+      note("estimated cycle time " + when(plan.cycle_time_s) + " on the motion model of machine " + m_.name +
+           " (acceleration, corners, tool changes)");
+      return;
+    }
     const double rapid = m_.max_feed_mm_min / mm_per_unit(p_.units);
     const auto motion = program_motion(p_);
     const double s = motion_totals(motion, rapid).time_s();
-    char b[96];
-    const long whole = s > 0 ? std::max(1L, std::lround(s)) : 0L;
-    if (whole >= 3600) std::snprintf(b, sizeof b, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60, whole % 60);
-    else if (whole >= 60) std::snprintf(b, sizeof b, "%ld min %02ld s", whole / 60, whole % 60);
-    else std::snprintf(b, sizeof b, "%ld s", whole);
-    note(std::string("estimated cycle time ") + b + ": feeds as programmed, rapids at " +
-         format_significant(rapid, 6) + " " + to_string(p_.units) + "/min, no acceleration, tool changes not counted");
+    note("estimated cycle time " + when(s) + ": feeds as programmed, rapids at " + format_significant(rapid, 6) + " " +
+         to_string(p_.units) + "/min, no acceleration, tool changes not counted");
   }
   void raw(const std::string& s) { out_ += s + "\n"; }
   void line(const std::string& s) {

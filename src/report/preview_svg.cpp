@@ -1,4 +1,5 @@
 #include "bezcam/report/preview_svg.hpp"
+#include "bezcam/report/motion_report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -430,6 +431,68 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
 
 namespace {
 
+// Top of the feed scale: the highest programmed cutting feed.
+double feed_scale_top(const MotionPlan& plan) {
+  double top = 0;
+  for (const PlannedBlock& b : plan.blocks)
+    if (b.kind != BlockKind::rapid) top = std::max(top, b.programmed_feed);
+  return top > 0 ? top : 1;
+}
+
+// The cutting moves as executed, coloured by the speed reached: each
+// segment of the plan cut into short stretches, neighbours of one colour
+// joined in one path; starved blocks get a dashed red overlay.
+void svg_feed_path(std::string& o, const View& v, const PreviewInput& in, const std::string& unit) {
+  const MotionPlan& plan = *in.plan;
+  const double top = feed_scale_top(plan);
+  constexpr int kSteps = 24;  // colour steps
+  std::string cur_colour, cur_d;
+  int cur_step = -1;
+  P2 last{};
+  auto flush = [&] {
+    if (!cur_d.empty())
+      o += "<path class=\"feed feed-speed\" data-feed-step=\"" + std::to_string(cur_step) + "\" d=\"" + cur_d +
+           "\" fill=\"none\" stroke=\"" + cur_colour +
+           "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\"/>\n";
+    cur_d.clear();
+  };
+  std::string starved_d;
+  for (const PlanSegment& sg : plan.segments) {
+    if (sg.rapid || sg.length <= 0) continue;
+    const bool starved = sg.block >= 0 && plan.blocks[static_cast<size_t>(sg.block)].starved;
+    // Stretches: up to 8 per segment, each at least a pixel or two long.
+    const double px = sg.length * v.s;
+    const int n = std::clamp(static_cast<int>(px / 3), 1, 8);
+    std::string seg_d;
+    for (int k = 0; k < n; ++k) {
+      const double s0 = sg.length * k / n, s1 = sg.length * (k + 1) / n, sm = 0.5 * (s0 + s1);
+      // Speed at distance sm: the trapezoid's, by distance.
+      const double a = sg.accel;
+      double sp = std::min({sg.vpeak, std::sqrt(sg.v0 * sg.v0 + 2 * a * sm), std::sqrt(sg.v1 * sg.v1 + 2 * a * (sg.length - sm))});
+      const int step = std::clamp(static_cast<int>(std::lround(sp * 60 / top * kSteps)), 0, kSteps);
+      const P2 p0 = v.screen(sg.point_at(s0, plan.motion)), p1 = v.screen(sg.point_at(s1, plan.motion));
+      if (step != cur_step || cur_d.empty() || std::hypot(p0.x - last.x, p0.y - last.y) > 1e-6) {
+        if (step != cur_step || cur_d.empty()) {
+          flush();
+          cur_step = step;
+          cur_colour = preview_feed_colour(double(step) / kSteps * top, top);
+        }
+        cur_d += (cur_d.empty() ? "M" : " M") + n3(p0.x) + " " + n3(p0.y);
+      }
+      cur_d += " L" + n3(p1.x) + " " + n3(p1.y);
+      last = p1;
+      if (starved) seg_d += (seg_d.empty() ? "M" + n3(p0.x) + " " + n3(p0.y) : std::string()) + " L" + n3(p1.x) + " " + n3(p1.y);
+    }
+    if (!seg_d.empty()) starved_d += (starved_d.empty() ? "" : " ") + seg_d;
+  }
+  flush();
+  if (!starved_d.empty())
+    o += "<path class=\"starved\" d=\"" + starved_d + "\" fill=\"none\" stroke=\"" + std::string(kOverColour) +
+         "\" stroke-width=\"1.2\" stroke-dasharray=\"3 3\"><title>starved: the controller could not feed these blocks "
+         "fast enough (block rate, minimum segment time or look-ahead)</title></path>\n";
+  (void)unit;
+}
+
 // The tool path of one view, under the curves: the path is wide and light,
 // the true curve thin and dark on top, so both stay visible where they agree.
 // `msamples` are the blocks' points, `dev_of` their deviations (-1: not measured).
@@ -447,9 +510,12 @@ void svg_toolpath(std::string& o, const View& v, const PreviewInput& in, const s
            "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\" stroke-opacity=\"0.75\"/>\n";
     run_d.clear();
   };
+  const bool by_feed = in.plan != nullptr;
+  if (by_feed) svg_feed_path(o, v, in, unit);
   for (size_t i = 0; i < in.motion.size(); ++i) {
     const auto& m = in.motion[i];
     const auto& s = msamples[i];
+    if (by_feed && m.kind != BlockKind::rapid) continue;
     const P2 a = v.screen(s.front()), b = v.screen(s.back());
     const bool zero = s.size() == 2 && std::hypot(a.x - b.x, a.y - b.y) < 1e-6;
     if (m.kind == BlockKind::rapid) {
@@ -686,7 +752,10 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
   };
   key("key-curve", line(kCurveColour, 1.2, ""), "true curve (surfaces: iso lines)");
   if (opt.control) key("key-control", line(kControlColour, 0.8, ""), "control polygon");
-  if (opt.deviation) {
+  if (in.plan) {
+    key("key-feed", line(preview_feed_colour(1, 1), 3, ""), "feed, coloured by the speed reached");
+    key("key-starved", line(kOverColour, 1.2, "3 3"), "starved blocks");
+  } else if (opt.deviation) {
     key("key-feed", line(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
     bool unmeasured = false;
     for (size_t i = 0; i < in.motion.size(); ++i)
@@ -701,7 +770,31 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
   key("key-start", "<circle cx=\"" + n3(lx + 6) + "\" cy=\"" + n3(ly) + "\" r=\"3.5\" fill=\"" + kCurveColour +
                        "\"/><path d=\"" + arrow_d({lx + 26, ly}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>",
       "start and direction");
-  if (opt.deviation) {
+  if (in.plan) {
+    const MotionPlan& plan = *in.plan;
+    const double top = feed_scale_top(plan);
+    const double gy = ly + 30, gx = margin, gw = 320;
+    o += "<g class=\"feed-scale\" data-max=\"" + fmt_num(top) + "\">\n";
+    o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(gy - 6) + "\">feed reached on machine " + esc(in.machine) + ", " + unit +
+         "/min (cycle " + esc(format_seconds(plan.cycle_time_s)) + ", mean " +
+         format_significant(100 * plan.mean_feed_ratio, 3) + " % of the programmed feed)</text>\n";
+    o += "<rect x=\"" + n3(gx) + "\" y=\"" + n3(gy) + "\" width=\"" + n3(gw) +
+         "\" height=\"12\" fill=\"url(#feed-gradient)\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
+    for (double f : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+      const double x = gx + f * gw;
+      o += "<path d=\"M" + n3(x) + " " + n3(gy + 12) + " L" + n3(x) + " " + n3(gy + 16) +
+           "\" stroke=\"#000000\" stroke-width=\"1\"/>";
+      o += "<text x=\"" + n3(x) + "\" y=\"" + n3(gy + 28) + "\" text-anchor=\"middle\" font-size=\"11\">" +
+           format_significant(f * top, 4) + "</text>\n";
+    }
+    const double sx = gx + gw + 60;
+    o += "<text class=\"starved-count\" x=\"" + n3(sx) + "\" y=\"" + n3(gy + 10) + "\"" +
+         (plan.starved_blocks ? " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"" : "") +
+         ">starved blocks (dashed red): " +
+         (plan.starved_blocks ? std::to_string(plan.starved_blocks) + " of " + std::to_string(plan.blocks.size())
+                              : std::string("none")) + "</text>\n";
+    o += "</g>\n";
+  } else if (opt.deviation) {
     const double gy = ly + 30, gx = margin, gw = 240;
     size_t measured = 0, over = 0;
     for (double d : dev_of)
@@ -743,11 +836,27 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
 
 std::string preview_deviation_colour(double d, double tol) { return deviation_colour(d, tol); }
 
+std::string preview_feed_colour(double f, double top) {
+  // Five stops of a perceptually even scale (viridis' ends and middle).
+  static const double stops[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  const double x = std::clamp(top > 0 ? f / top : 0.0, 0.0, 1.0) * 4;
+  const int i = std::min(3, static_cast<int>(x));
+  const double t = x - i;
+  char b[8];
+  int c[3];
+  for (int k = 0; k < 3; ++k) c[k] = static_cast<int>(std::lround(stops[i][k] + t * (stops[i + 1][k] - stops[i][k])));
+  std::snprintf(b, sizeof b, "#%02x%02x%02x", c[0], c[1], c[2]);
+  return b;
+}
+
 std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   const Job* job = in.job;
   const bool has_entities = job && !job->entities.empty();
   if (!has_entities && in.motion.empty())
     throw InputError(errc::preview_empty, Place{}, "nothing to draw: the job has no entities and there is no tool path");
+  if (opt.deviation && in.plan)
+    throw InputError(errc::preview_deviation, Place::at_setting("deviation"),
+                     "a preview is coloured by deviation or by feed, not both: choose one");
   if (opt.deviation && (!job || !(in.tolerance > 0)))
     throw InputError(errc::preview_deviation, Place::at_setting("deviation"),
                      "colouring by deviation needs the job's true curves and a tolerance; give the job file");
@@ -844,7 +953,7 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
     v.oy = v.py + pad + (ph - 2 * pad - bar_room - (v.maxy - v.miny) * v.s) / 2;
   }
   const double legend_y = header_h + ph + 14;
-  const double legend_h = opt.deviation ? 92 : 46;
+  const double legend_h = opt.deviation || in.plan ? 92 : 46;
   const double H = legend_y + legend_h + 10;
 
   // The true curves, sampled finely: a fifth of a pixel, and never coarser
@@ -873,6 +982,12 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   o += "<title>" + esc(in.title.empty() ? "bezcam preview" : in.title) + "</title>\n";
   o += "<desc>Drawn by bezcam: true curves from their exact Bézier pieces, control polygons, the tool path (feeds "
        "solid, rapids dashed). Units: " + unit + ".</desc>\n";
+  if (in.plan) {
+    o += "<defs><linearGradient id=\"feed-gradient\" x1=\"0\" x2=\"1\" y1=\"0\" y2=\"0\">";
+    for (double f : {0.0, 0.25, 0.5, 0.75, 1.0})
+      o += "<stop offset=\"" + fmt_num(f) + "\" stop-color=\"" + preview_feed_colour(f, 1) + "\"/>";
+    o += "</linearGradient></defs>\n";
+  }
   if (opt.deviation)
     o += "<defs><linearGradient id=\"deviation-gradient\" x1=\"0\" x2=\"1\" y1=\"0\" y2=\"0\">"
          "<stop offset=\"0\" stop-color=\"" + deviation_colour(0, 1) + "\"/><stop offset=\"0.5\" stop-color=\"" +

@@ -6,6 +6,8 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
+#include "bezcam/gcode/timeline.hpp"
+#include "bezcam/report/motion_report.hpp"
 
 namespace bezcam {
 
@@ -40,13 +42,52 @@ ProgramReport make_report(const Program& p, const MachineProfile& m, std::string
     r.entities.push_back({e, e.entity >= 0 && static_cast<size_t>(e.entity) < by_entity.size()
                                  ? motion_totals(by_entity[e.entity], r.rapid_rate)
                                  : motion_totals({}, r.rapid_rate)});
+  if (m.motion) {
+    // The printed program, read back as the controller reads it; without
+    // text, the program's moves.
+    const Timeline tl = gcode.empty() ? program_timeline(p) : read_timeline(gcode, &m);
+    r.planned = planned_summary(plan_motion(tl, *m.motion));
+  }
   r.gcode_bytes = gcode.size();
   for (char c : gcode) r.gcode_lines += c == '\n';
   if (!gcode.empty() && gcode.back() != '\n') ++r.gcode_lines;
   return r;
 }
 
+ProgramReport::Planned planned_summary(const MotionPlan& plan) {
+  ProgramReport::Planned q;
+  q.cycle_time_s = plan.cycle_time_s;
+  q.cutting_time_s = plan.cutting_time_s;
+  q.rapid_time_s = plan.rapid_time_s;
+  q.pause_time_s = plan.pause_time_s;
+  q.programmed_feed_time_s = plan.programmed_feed_time_s;
+  q.mean_feed_ratio = plan.mean_feed_ratio;
+  q.max_path_deviation = plan.max_path_deviation;
+  q.starved_blocks = plan.starved_blocks;
+  q.clamped_blocks = plan.clamped_blocks;
+  return q;
+}
+
 namespace {
+
+double rounded(double v, double q) {
+  const double r = std::round(v / q) / std::round(1 / q);
+  return r == 0 ? 0.0 : r;
+}
+
+nlohmann::ordered_json planned_json(const ProgramReport::Planned& q) {
+  nlohmann::ordered_json j;
+  j["cycle_time_s"] = rounded(q.cycle_time_s, 1e-6);
+  j["cutting_time_s"] = rounded(q.cutting_time_s, 1e-6);
+  j["rapid_time_s"] = rounded(q.rapid_time_s, 1e-6);
+  j["pause_time_s"] = rounded(q.pause_time_s, 1e-6);
+  j["programmed_feed_time_s"] = rounded(q.programmed_feed_time_s, 1e-6);
+  j["mean_feed_ratio"] = rounded(q.mean_feed_ratio, 1e-6);
+  j["starved_blocks"] = q.starved_blocks;
+  j["clamped_blocks"] = q.clamped_blocks;
+  j["max_path_deviation"] = rounded(q.max_path_deviation, 1e-9);
+  return j;
+}
 
 nlohmann::ordered_json totals_json(const MotionTotals& t) {
   nlohmann::ordered_json j;
@@ -96,6 +137,23 @@ std::string report_json(const ProgramReport& r) {
     prog["gcode_lines"] = r.gcode_lines;
     prog["gcode_bytes"] = r.gcode_bytes;
   }
+  if (r.planned) {
+    // The estimate that counts: the machine's motion model (docs/motion.md).
+    auto& pl = prog["planned"] = planned_json(*r.planned);
+    pl["basis"] = "the motion model of machine \"" + r.machine +
+                  "\": acceleration, corners blended within its tolerance, block rate, tool changes and dwells";
+  }
+  if (!r.alternatives.empty()) {
+    auto& alt = j["compare_outputs"] = nlohmann::ordered_json::array();
+    for (const auto& a : r.alternatives) {
+      nlohmann::ordered_json x;
+      x["output"] = to_string(a.output);
+      x["cutting_blocks"] = a.blocks;
+      x["gcode_bytes"] = a.gcode_bytes;
+      x["planned"] = planned_json(a.planned);
+      alt.push_back(std::move(x));
+    }
+  }
   j["warnings"] = r.warnings;
   return j.dump(2) + "\n";
 }
@@ -127,8 +185,29 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
   else if (t < 3600) std::snprintf(tbuf, sizeof tbuf, "%d min %02d s", int(t / 60), int(std::fmod(t, 60)));
   else std::snprintf(tbuf, sizeof tbuf, "%d h %02d min", int(t / 3600), int(std::fmod(t, 3600) / 60));
   s += "  program: " + format_significant(r.total.feed_length, 6) + u + " at feed, " +
-       format_significant(r.total.rapid_length, 6) + u + " rapid; about " + tbuf + " (rapids at " +
-       format_significant(r.rapid_rate, 6) + u + "/min, no acceleration)\n";
+       format_significant(r.total.rapid_length, 6) + u + " rapid";
+  if (r.planned) {
+    const auto& q = *r.planned;
+    char b[160];
+    std::snprintf(b, sizeof b, "; mean feed %.0f %% of programmed, %zu starved block%s", q.mean_feed_ratio * 100,
+                  q.starved_blocks, q.starved_blocks == 1 ? "" : "s");
+    s += "; cycle " + format_seconds(q.cycle_time_s) + " on machine " + r.machine + "'s motion model (" +
+         format_seconds(q.programmed_feed_time_s) + " at the programmed feeds with no acceleration)" + b + "\n";
+  } else {
+    s += std::string("; about ") + tbuf + " (rapids at " + format_significant(r.rapid_rate, 6) + u +
+         "/min, no acceleration: machine " + r.machine + " has no motion model)\n";
+  }
+  if (!r.alternatives.empty()) {
+    s += "  the same job in each output mode on machine " + r.machine + ":\n";
+    s += "    output  blocks   cycle        mean feed  starved\n";
+    for (const auto& a : r.alternatives) {
+      char b[200];
+      std::snprintf(b, sizeof b, "    %-6s  %6zu   %-11s  %5.0f %%    %zu%s\n", to_string(a.output), a.blocks,
+                    format_seconds(a.planned.cycle_time_s).c_str(), a.planned.mean_feed_ratio * 100,
+                    a.planned.starved_blocks, a.output == r.output ? "   (this program)" : "");
+      s += b;
+    }
+  }
   return s;
 }
 

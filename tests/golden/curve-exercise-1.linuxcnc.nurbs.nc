@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-exercise-1.json, machine linuxcnc, output nurbs)
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
 (T1: seed-ex-1)
-(estimated cycle time 2 s: feeds as programmed, rapids at 10000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 2 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 G54

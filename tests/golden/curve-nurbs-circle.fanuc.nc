@@ -3,7 +3,7 @@ O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-nurbs-circle.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009776 mm, proven bound 0.009999 mm, rounding included)
 N30 (T1: circle-d80)
-N40 (estimated cycle time 16 s: feeds as programmed, rapids at 15000 mm/min, no acceleration, tool changes not counted)
+N40 (estimated cycle time 22 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
 N60 G40 G49 G80 G94
 N70 G54

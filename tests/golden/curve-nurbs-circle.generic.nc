@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-nurbs-circle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009776 mm, proven bound 0.009999 mm, rounding included)
 (T1: circle-d80)
-(estimated cycle time 16 s: feeds as programmed, rapids at 20000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 24 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output lines)
 (tolerance 0.005 mm; largest deviation measured 0.004863 mm, proven bound 0.004999 mm, rounding included)
 (T1: semicircle-r3)
-(estimated cycle time 2 s: feeds as programmed, rapids at 20000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

@@ -4,7 +4,7 @@ N10 (bezcam 0.1.0: job-two-tools.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009812 mm, proven bound 0.009996 mm, rounding included)
 N30 (T1: pocket-outline)
 N40 (T2: engraving)
-N50 (estimated cycle time 16 s: feeds as programmed, rapids at 15000 mm/min, no acceleration, tool changes not counted)
+N50 (estimated cycle time 27 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N60 G21 G90 G17
 N70 G40 G49 G80 G94
 N80 G54

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: patch-saddle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.008946 mm, proven bound 0.00998 mm, rounding included)
 (T3: saddle)
-(estimated cycle time 5 min 43 s: feeds as programmed, rapids at 20000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 5 min 53 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T3 M06

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: path-closed-teardrop.json, machine linuxcnc, output arcs)
 (tolerance 0.01 mm; largest deviation measured 0.009957 mm, proven bound 0.009962 mm, rounding included)
 (T2: teardrop)
-(estimated cycle time 8 s: feeds as programmed, rapids at 10000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 8 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 G54

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: path-mixed-bezier-bspline.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009778 mm, proven bound 0.009996 mm, rounding included)
 (T1: lead-in-spline-lead-out)
-(estimated cycle time 14 s: feeds as programmed, rapids at 20000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 21 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

@@ -18,6 +18,25 @@ namespace bezcam {
 /// The travel of a profile that states none.
 inline constexpr double kNoTravelLimit = std::numeric_limits<double>::infinity();
 
+/// How the controller moves (key `motion`, docs/machines.md): the limits
+/// and timing its trajectory planner works with. The simulated controller
+/// and the cycle-time estimate plan with them (cam/planner.hpp).
+struct MotionModel {
+  std::array<double, 3> max_velocity_mm_min{};   ///< per axis x, y, z
+  std::array<double, 3> max_acceleration_mm_s2{};
+  /// Per axis; absent for an acceleration-limited (trapezoidal) planner.
+  std::optional<std::array<double, 3>> max_jerk_mm_s3;
+  double period_s = 0.001;          ///< trajectory period
+  /// A block of length L runs at most at L / (this x period_s); 0: no cap.
+  double min_segment_periods = 0;
+  double block_rate_hz = 0;         ///< most blocks started per second; 0: no cap
+  int lookahead_blocks = 50;        ///< blocks the planner sees ahead
+  /// Largest distance the executed path may leave the programmed one at a
+  /// corner (the controller's default path mode); 0: exact stop.
+  double blend_tolerance_mm = 0;
+  double tool_change_s = 0, spindle_start_s = 0;
+};
+
 struct MachineProfile {
   std::string name;
   std::string description;
@@ -81,6 +100,10 @@ struct MachineProfile {
                                                   {-kNoTravelLimit, kNoTravelLimit},
                                                   {-kNoTravelLimit, kNoTravelLimit}}};
   double max_feed_mm_min = 1e5;
+  /// The motion model (key `motion`); every shipped profile has one. A
+  /// user's profile without it can still convert and be checked, but has
+  /// no planned cycle time.
+  std::optional<MotionModel> motion;
   JobParams defaults;  ///< feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool (mm)
 
   int decimals(Units u) const { return u == Units::mm ? decimals_mm : decimals_inch; }

@@ -5,6 +5,7 @@
 /// NURBS. Used by `bezcam lint`, by the round-trip tests, by the simulated
 /// controller and by the preview. Parse, validate, then execute (Grbl's
 /// structure): a line is checked completely before it changes the state.
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -57,6 +58,10 @@ struct MachineState {
   bool coolant_mist = false;   ///< M07 (M09 stops both)
   bool coolant_flood = false;  ///< M08
   double dwell_seconds = 0;    ///< G04 P- dwells so far, in seconds
+  /// Path mode: -1 until the program sets one (the controller's default
+  /// applies), 0 for exact stop (G61, G61.1), the tolerance P of G64 P-,
+  /// infinity for G64 without P (corners as fast as the planner can).
+  double path_tolerance = -1;
   int program_stops = 0;       ///< M00 / M01 seen so far (the operator resumes)
 };
 

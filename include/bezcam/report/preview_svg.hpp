@@ -24,6 +24,7 @@
 
 #include "bezcam/job/job.hpp"
 #include "bezcam/cam/motion.hpp"
+#include "bezcam/cam/planner.hpp"
 
 namespace bezcam {
 
@@ -45,6 +46,10 @@ struct PreviewInput {
   const Job* job = nullptr;
   /// The tool path (a built program's motion, or a G-code file's).
   std::vector<MotionBlock> motion;
+  /// The motion planned on the machine's model (preview by feed); its
+  /// blocks are `motion`'s, in order. Null when not coloured by feed.
+  const MotionPlan* plan = nullptr;
+  std::string machine;  ///< the profile the plan is for (the legend names it)
   Units units = Units::mm;
   /// Top of the deviation colour scale (units, > 0 when deviation is on):
   /// the tolerance the program promises.
@@ -67,6 +72,11 @@ struct PreviewInput {
 /// which the scale never approaches (such blocks are also drawn wider and
 /// ringed).
 std::string preview_deviation_colour(double d, double tol);
+
+/// The colour of an achieved feed `f` on a scale up to `top` (`#rrggbb`):
+/// a sequential scale from dark purple (standing still) through blue and
+/// green to yellow (the top feed), legible for colour-blind readers.
+std::string preview_feed_colour(double f, double top);
 
 /// A cutting block's deviation from the true geometry: the larger of the
 /// block's distance to the curve and the distance of the stretch of curve

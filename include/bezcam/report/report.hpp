@@ -4,12 +4,14 @@
 /// and for the whole program the path lengths at feed and at rapid and the
 /// estimated run time. Written by `bezcam convert --report FILE.json` and,
 /// in short human form, to stderr.
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "bezcam/cam/motion.hpp"
+#include "bezcam/cam/planner.hpp"
 #include "bezcam/gcode/number_format.hpp"
 
 namespace bezcam {
@@ -39,6 +41,22 @@ struct ProgramReport {
   std::vector<EntitySummary> entities;
   MotionTotals total;
   size_t gcode_lines = 0, gcode_bytes = 0;  ///< of the printed program (0 when not given)
+  /// The program planned on the machine's motion model (docs/motion.md),
+  /// when the profile has one: the estimated cycle time and what limits it.
+  struct Planned {
+    double cycle_time_s = 0, cutting_time_s = 0, rapid_time_s = 0, pause_time_s = 0;
+    double programmed_feed_time_s = 0, mean_feed_ratio = 1, max_path_deviation = 0;
+    size_t starved_blocks = 0, clamped_blocks = 0;
+  };
+  std::optional<Planned> planned;
+  /// The same job in the other output modes the machine takes
+  /// (ConvertOptions / `compare_outputs`): output, cutting blocks, plan.
+  struct Alternative {
+    OutputMode output = OutputMode::lines;
+    size_t blocks = 0, gcode_bytes = 0;
+    Planned planned;
+  };
+  std::vector<Alternative> alternatives;
   std::vector<std::string> warnings;
 };
 
@@ -46,6 +64,9 @@ struct ProgramReport {
 /// profile's maximum feed, in the program's units). `gcode`: the printed
 /// text, for its line and byte counts (may be empty).
 ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode = {});
+
+/// The figures of a plan that a report keeps.
+ProgramReport::Planned planned_summary(const MotionPlan& plan);
 
 /// The report as a JSON document (`"bezcam_report": 1`; lengths in program
 /// units, times in seconds, deviations in units), ending with a newline.

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: logo.svg, machine generic, output arcs)
 (tolerance 0.01 mm; largest deviation measured 0.009938 mm, proven bound 0.009974 mm, rounding included)
 (T1: frame, b, b.2, z, wave, eye, dot)
-(estimated cycle time 26 s: feeds as programmed, rapids at 20000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 36 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

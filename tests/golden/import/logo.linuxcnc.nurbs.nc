@@ -2,7 +2,7 @@
 (bezcam 0.1.0: logo.svg, machine linuxcnc, output nurbs)
 (tolerance 0.01 mm; largest deviation measured 4.781e-05 mm, proven bound 4.928e-05 mm, rounding included)
 (T1: frame, b, b.2, z, wave, eye, dot)
-(estimated cycle time 27 s: feeds as programmed, rapids at 10000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 29 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 G54

@@ -3,7 +3,7 @@ O1000 (BEZCAM)
 N10 (bezcam 0.1.0: part.dxf, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009565 mm, proven bound 0.009999 mm, rounding included)
 N30 (T1: OUTLINE:2F+7, HOLES:37, HOLES:38, HOLES:39, HOLES:3A, HOLES:3B)
-N40 (estimated cycle time 27 s: feeds as programmed, rapids at 15000 mm/min, no acceleration, tool changes not counted)
+N40 (estimated cycle time 34 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
 N60 G40 G49 G80 G94
 N70 G54

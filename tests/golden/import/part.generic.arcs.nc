@@ -2,7 +2,7 @@
 (bezcam 0.1.0: part.dxf, machine generic, output arcs)
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 8.181e-07 mm, rounding included)
 (T1: OUTLINE:2F+7, HOLES:37, HOLES:38, HOLES:39, HOLES:3A, HOLES:3B)
-(estimated cycle time 31 s: feeds as programmed, rapids at 20000 mm/min, no acceleration, tool changes not counted)
+(estimated cycle time 40 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

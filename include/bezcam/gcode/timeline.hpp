@@ -1,0 +1,23 @@
+#pragma once
+/// A G-code program as the trajectory planner sees it (cam/planner.hpp):
+/// its motion blocks, the path mode in force at each (G61, G64 P-) and the
+/// pauses between them (tool changes, spindle starts, dwells, program
+/// stops), read with the one G-code reader.
+#include <string_view>
+
+#include "bezcam/cam/planner.hpp"
+#include "bezcam/gcode/reader.hpp"
+
+namespace bezcam {
+
+/// Reads the whole program (throws InputError "gcode.*" at "line N" as
+/// read_gcode() does).
+Timeline read_timeline(std::string_view text, const MachineProfile* profile = nullptr);
+
+/// The same, one line at a time: what the simulated controller feeds as it
+/// executes. `after` is the state once `line_no` was interpreted, `before`
+/// the state before it.
+void add_to_timeline(Timeline& tl, const std::vector<MotionBlock>& blocks, const MachineState& before,
+                     const MachineState& after, int line_no);
+
+}  // namespace bezcam

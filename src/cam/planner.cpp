@@ -1,0 +1,820 @@
+// The trajectory planner (cam/planner.hpp, docs/motion.md).
+//
+// 1. Segments. Every block becomes one or more segments with a length, a
+//    top speed and a tangential acceleration: lines with the axes' limits
+//    projected on their direction; arcs with the centripetal acceleration
+//    v^2/R taking part of the acceleration (at most sqrt(3)/2 of it, the
+//    rest tangential); curve blocks cut into pieces along the true curve,
+//    each with the speed its tightest curvature allows.
+// 2. Corners. Between two lines that meet at an angle, a circular blend arc
+//    that stays within the path tolerance of the corner, trims at most
+//    half of each line and runs at the speed its radius allows; what is
+//    left of a line between two blends, if shorter than a few periods at
+//    the blend's speed, is absorbed into the blend. Corners that touch an
+//    arc or a curve keep their shape and are taken at the speed of an
+//    equivalent blend. Exact stop where the tolerance is 0, at pauses,
+//    and where rapid and feed meet.
+// 3. Caps. A segment of length L runs at most at L / (min_segment_periods x
+//    period) and a block at most at L_block x block_rate: the controller
+//    needs that long to take each one (data starvation).
+// 4. Speeds. A windowed backward pass (the controller sees only
+//    lookahead_blocks ahead and must be able to stop at the window's end),
+//    a backward pass and a forward pass give every junction's speed; each
+//    segment is then a trapezoid (an S-curve's durations when a jerk is
+//    given), which gives its time.
+#include "bezcam/cam/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace bezcam {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+// Share of the acceleration a curved move gives to its normal part (the
+// tangential part keeps 1/2 of it): sqrt(1 - 0.5^2).
+constexpr double kNormalShare = 0.8660254037844386;
+constexpr double kTangentialShare = 0.5;
+// A blend may take at most this fraction of each neighbouring line.
+constexpr double kBlendFraction = 0.5;
+// The path tolerance of a blend is at most this fraction of a line.
+constexpr double kToleranceFraction = 0.25;
+// A remnant of a line between two blends shorter than this many periods at
+// the blend's speed is absorbed into the blend.
+constexpr double kGapPeriods = 4;
+// Directions closer than this (radians) meet tangentially: no corner.
+constexpr double kTangentAngle = 1e-3;
+// Share of the acceleration a near-tangent kink may use within one period.
+constexpr double kKinkShare = 0.25;
+
+struct Limits {
+  Vec3 vmax;   // units/s per axis
+  Vec3 amax;   // units/s^2
+  Vec3 jmax;   // units/s^3 (0: none)
+  bool jerk = false;
+};
+
+// The most a move along unit `u` may reach when each axis is bounded by `b`.
+double along(const Vec3& u, const Vec3& b) {
+  double m = kInf;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(u[i]) > 1e-12) m = std::min(m, b[i] / std::abs(u[i]));
+  return m;
+}
+// The most any direction of the plane with unit normal `n` may reach: the
+// radius of the circle inscribed in the box's section by the plane.
+double in_plane(const Vec3& n, const Vec3& b) {
+  double m = kInf;
+  for (int i = 0; i < 3; ++i) {
+    const double proj = std::sqrt(std::max(0.0, 1 - n[i] * n[i]));
+    if (proj > 1e-9) m = std::min(m, b[i] / proj);
+  }
+  return m;
+}
+
+Vec3 unit(const Vec3& v) {
+  const double n = norm(v);
+  return n > 0 ? v * (1 / n) : Vec3{};
+}
+
+// Tangent of a block at its start (end = false) or end, by a short chord
+// for curves (their derivative is not at hand for every form).
+Vec3 block_tangent(const MotionBlock& b, bool end) {
+  switch (b.kind) {
+    case BlockKind::rapid:
+    case BlockKind::linear: return unit(b.to - b.from);
+    case BlockKind::arc_cw:
+    case BlockKind::arc_ccw: {
+      const Vec3 p = end ? b.to : b.from;
+      Vec3 r = p - b.center;
+      r.z = 0;
+      Vec3 t = b.kind == BlockKind::arc_ccw ? Vec3{-r.y, r.x, 0} : Vec3{r.y, -r.x, 0};
+      t = unit(t);
+      const double L = block_length(b);
+      const double sweep = arc_sweep(b);
+      const double rr = norm(r);
+      if (L > 0 && rr > 0) t = unit(t * (rr * sweep) + Vec3{0, 0, b.to.z - b.from.z});
+      return t;
+    }
+    default: {
+      const double h = 1e-6;
+      return end ? unit(evaluate_block(b, 1) - evaluate_block(b, 1 - h)) : unit(evaluate_block(b, h) - evaluate_block(b, 0));
+    }
+  }
+}
+
+// Radius of the circle through three points (infinity when collinear).
+double circumradius(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double A = dist(b, c), B = dist(a, c), C = dist(a, b);
+  const double area2 = norm(cross(b - a, c - a));  // twice the area
+  if (area2 <= 1e-15 * std::max({A * B, B * C, A * C, 1e-300})) return kInf;
+  return A * B * C / (2 * area2);
+}
+
+// A speed change from v0 to v1 (either way) at acceleration a, jerk j
+// (0: none): its duration (a symmetric S-curve with jerk; its distance is
+// then the mean speed times the duration, as for a linear ramp).
+double ramp_time(double v0, double v1, double a, double j) {
+  const double dv = std::abs(v1 - v0);
+  if (dv <= 0) return 0;
+  if (j <= 0) return dv / a;
+  if (dv >= a * a / j) return dv / a + a / j;
+  return 2 * std::sqrt(dv / j);
+}
+double ramp_distance(double v0, double v1, double a, double j) { return 0.5 * (v0 + v1) * ramp_time(v0, v1, a, j); }
+
+// The highest speed reachable from v0 within distance L (the inverse of
+// ramp_distance in v1, by bisection with jerk, closed form without).
+double reachable(double v0, double L, double a, double j, double cap) {
+  if (j <= 0) return std::min(cap, std::sqrt(v0 * v0 + 2 * a * L));
+  if (ramp_distance(v0, cap, a, j) <= L) return cap;
+  double lo = v0, hi = cap;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (ramp_distance(v0, mid, a, j) <= L ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+struct Builder {
+  Builder(const Timeline& t, const MotionModel& m) : tl(t), model(m), period(m.period_s), scale(mm_per_unit(t.units)) {}
+  const Timeline& tl;
+  const MotionModel& model;
+  Limits lim{};
+  double period;
+  double scale;  // mm per program unit
+  std::vector<PlanSegment> segs;
+  std::vector<double> junction;   // junction[i]: largest speed entering segs[i] (0: stop)
+  std::vector<double> deviation;  // per junction, program units
+  std::vector<int> blend_line;
+  MotionPlan plan;
+
+  double path_tolerance(size_t block) const {
+    double t = tl.path_tolerance.size() > block ? tl.path_tolerance[block] : -1;
+    if (t < 0) t = model.blend_tolerance_mm / scale;
+    return t;
+  }
+
+  // The feed a block asks, units/s, and whether the axes cap it.
+  void block_speed(const MotionBlock& b, const Vec3& dir, double& v, SpeedLimit& why, bool& clamped) const {
+    const double axes = along(dir, lim.vmax);
+    if (b.kind == BlockKind::rapid) {
+      v = axes;
+      why = SpeedLimit::programmed;
+      return;
+    }
+    v = b.feed / 60;
+    why = SpeedLimit::programmed;
+    if (v > axes * (1 + 1e-9)) {
+      v = axes;
+      why = SpeedLimit::axes;
+      clamped = true;
+    }
+  }
+
+  PlanSegment line_segment(int bi, const Vec3& a, const Vec3& b, bool rapid) {
+    PlanSegment s;
+    s.block = bi;
+    s.rapid = rapid;
+    PlanSegment::Piece p;
+    p.shape = PlanSegment::Shape::line;
+    p.a = a;
+    p.b = b;
+    p.length = dist(a, b);
+    s.pieces.push_back(p);
+    s.length = p.length;
+    return s;
+  }
+
+  // Segments of one block, appended to segs; returns how many.
+  void add_block(int bi) {
+    const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
+    PlannedBlock pb;
+    pb.line = b.line;
+    pb.first_line = b.first_line ? b.first_line : b.line;
+    pb.kind = b.kind;
+    pb.length = block_length(b);
+    const bool rapid = b.kind == BlockKind::rapid;
+    const size_t first = segs.size();
+    if (b.kind == BlockKind::rapid || b.kind == BlockKind::linear) {
+      const Vec3 u = unit(b.to - b.from);
+      double v;
+      SpeedLimit why;
+      block_speed(b, u, v, why, pb.clamped);
+      PlanSegment s = line_segment(bi, b.from, b.to, rapid);
+      s.vmax = v;
+      s.limit = why;
+      s.accel = along(u, lim.amax);
+      if (!std::isfinite(s.accel)) s.accel = lim.amax.x;
+      segs.push_back(std::move(s));
+      pb.programmed_feed = rapid ? v * 60 : b.feed;
+    } else if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
+      const Vec3 n{0, 0, 1};
+      const double vplane = in_plane(n, lim.vmax), aplane = in_plane(n, lim.amax);
+      double v = b.feed / 60;
+      SpeedLimit why = SpeedLimit::programmed;
+      if (v > vplane) {
+        v = vplane;
+        why = SpeedLimit::axes;
+        pb.clamped = true;
+      }
+      Vec3 r0 = b.from - b.center;
+      r0.z = 0;
+      const double R = norm(r0);
+      const double an_max = kNormalShare * aplane;
+      double tan_share = kTangentialShare;
+      if (R > 0 && v * v / R > an_max) {
+        v = std::sqrt(an_max * R);
+        why = SpeedLimit::curvature;
+      } else if (R > 0) {
+        const double q = v * v / (R * aplane);
+        tan_share = std::sqrt(std::max(0.0, 1 - q * q));
+      }
+      PlanSegment s;
+      s.block = bi;
+      PlanSegment::Piece p;
+      p.shape = PlanSegment::Shape::block;
+      p.block = bi;
+      p.length = pb.length;
+      p.s = {0, pb.length};
+      p.t = {0, 1};
+      s.pieces.push_back(std::move(p));
+      s.length = pb.length;
+      s.vmax = v;
+      s.limit = why;
+      s.accel = tan_share * aplane;
+      segs.push_back(std::move(s));
+      pb.programmed_feed = b.feed;
+    } else {
+      // A curve block on the true curve: pieces of the parameter range,
+      // each with the speed its tightest curvature allows.
+      const int pieces = std::clamp(static_cast<int>(4 * std::max<size_t>(b.ctrl.size(), 2)), 8, 256);
+      constexpr int kSub = 12;
+      const Vec3 n{0, 0, 1};
+      Vec3 span = b.to - b.from;
+      bool planar = true;
+      for (const Vec3& c : b.ctrl) planar = planar && std::abs(c.z - b.from.z) < 1e-12;
+      (void)span;
+      const double vax = planar ? in_plane(n, lim.vmax) : std::min({lim.vmax.x, lim.vmax.y, lim.vmax.z});
+      const double aax = planar ? in_plane(n, lim.amax) : std::min({lim.amax.x, lim.amax.y, lim.amax.z});
+      double vfeed = b.feed / 60;
+      SpeedLimit base = SpeedLimit::programmed;
+      if (vfeed > vax) {
+        vfeed = vax;
+        base = SpeedLimit::axes;
+        pb.clamped = true;
+      }
+      std::vector<Vec3> pts(static_cast<size_t>(pieces * kSub + 1));
+      for (int i = 0; i <= pieces * kSub; ++i) pts[static_cast<size_t>(i)] = evaluate_block(b, static_cast<double>(i) / (pieces * kSub));
+      for (int k = 0; k < pieces; ++k) {
+        PlanSegment s;
+        s.block = bi;
+        PlanSegment::Piece p;
+        p.shape = PlanSegment::Shape::block;
+        p.block = bi;
+        p.s.push_back(0);
+        p.t.push_back(static_cast<double>(k * kSub) / (pieces * kSub));
+        double len = 0, rmin = kInf;
+        for (int i = 1; i <= kSub; ++i) {
+          const size_t at = static_cast<size_t>(k * kSub + i);
+          len += dist(pts[at - 1], pts[at]);
+          p.s.push_back(len);
+          p.t.push_back(static_cast<double>(at) / (pieces * kSub));
+          if (at + 1 < pts.size()) rmin = std::min(rmin, circumradius(pts[at - 1], pts[at], pts[at + 1]));
+        }
+        p.length = len;
+        s.length = len;
+        s.pieces.push_back(std::move(p));
+        double v = vfeed;
+        s.limit = base;
+        const double an_max = kNormalShare * aax;
+        double tan_share = kTangentialShare;
+        if (v * v / rmin > an_max) {
+          v = std::sqrt(an_max * rmin);
+          s.limit = SpeedLimit::curvature;
+        } else if (std::isfinite(rmin)) {
+          const double q = v * v / (rmin * aax);
+          tan_share = std::sqrt(std::max(0.0, 1 - q * q));
+        } else {
+          tan_share = 1;
+        }
+        s.vmax = v;
+        s.accel = tan_share * aax;
+        if (len > 0) segs.push_back(std::move(s));
+      }
+      pb.programmed_feed = b.feed;
+    }
+    // The block rate: the block takes at least 1 / block_rate.
+    if (model.block_rate_hz > 0 && pb.length > 0) {
+      const double cap = pb.length * model.block_rate_hz;
+      for (size_t i = first; i < segs.size(); ++i)
+        if (cap < segs[i].vmax) {
+          segs[i].vmax = cap;
+          segs[i].limit = SpeedLimit::block_rate;
+        }
+    }
+    plan.blocks.push_back(pb);
+  }
+
+  // Blends the corner between the last segment of segs (a line) and `next`
+  // (a line), both in the same mode. Returns the speed limit at the join
+  // when the corner is not blended by an arc (then the lines keep their
+  // shape), or -1 when a blend arc was inserted.
+  double blend_lines(PlanSegment& next, double tol, double nominal_prev, double nominal_next, int line) {
+    PlanSegment& prev = segs.back();
+    const Vec3 a = prev.pieces.back().a, c = prev.pieces.back().b, e = next.pieces.front().b;
+    const Vec3 u1 = unit(c - a), u2 = unit(e - c);
+    const double cosang = std::clamp(dot(u1, u2), -1.0, 1.0);
+    const double phi = std::acos(cosang);  // turning angle
+    if (phi < kTangentAngle) {
+      const double aa = std::min(prev.accel, next.accel);
+      const double kink = phi > 0 ? kNormalShare * kKinkShare * aa * period / phi : kInf;
+      return std::min({prev.vmax, next.vmax, kink});
+    }
+    if (phi > kPi - 1e-6) return 0;  // reversal: stop
+    const double theta = 0.5 * (kPi - phi);
+    const Vec3 normal = unit(cross(u1, u2));
+    const double aplane = in_plane(normal, lim.amax), vplane = in_plane(normal, lim.vmax);
+    const double an = kNormalShare * aplane;
+    const double T = std::min({tol, kToleranceFraction * nominal_prev, kToleranceFraction * nominal_next});
+    if (!(T > 0)) return 0;
+    const double d_tol = std::cos(theta) * T / (1 - std::sin(theta));
+    const double L1 = std::min(prev.pieces.back().length, kBlendFraction * nominal_prev);
+    const double L2 = kBlendFraction * next.length;
+    const double d_geom = std::min({L1, L2, d_tol});
+    const double R_geom = std::tan(theta) * d_geom;
+    const double v_goal = std::min(std::max(prev.vmax, next.vmax), vplane);
+    const double v_plan = std::min(std::sqrt(an * R_geom), v_goal);
+    // How much of the lines the blend takes: no more than a parabolic
+    // blend at half the acceleration would need to reach v_plan.
+    const double a_par = 0.5 * aplane;
+    const double v_tri = std::sqrt(2 * a_par * d_geom);
+    const double s_blend = std::min(v_tri, v_plan) / a_par * v_plan;
+    const double R_blend = std::min(s_blend / phi, R_geom);
+    const double R = std::max(v_plan * v_plan / an, R_blend);
+    const double d = std::min(R / std::tan(theta), d_geom);
+    if (R <= 1e-12 || R * phi < 1e-9) return 0;
+    // Trim the lines.
+    PlanSegment::Piece& pl = prev.pieces.back();
+    pl.b = c - u1 * d;
+    pl.length = std::max(0.0, pl.length - d);
+    prev.length = 0;
+    for (const auto& q : prev.pieces) prev.length += q.length;
+    cap_segment_time(prev);
+    PlanSegment::Piece& nl = next.pieces.front();
+    nl.a = c + u2 * d;
+    nl.length = std::max(0.0, nl.length - d);
+    next.length = nl.length;
+    // The blend arc.
+    PlanSegment blend;
+    blend.block = prev.block;
+    blend.rapid = prev.rapid;
+    PlanSegment::Piece arc;
+    arc.shape = PlanSegment::Shape::arc;
+    const Vec3 inward = unit(u2 - u1);
+    arc.center = pl.b + unit(inward - u1 * dot(inward, u1)) * R;
+    arc.u = unit(pl.b - arc.center);
+    arc.w = u1;
+    arc.radius = R;
+    arc.angle = phi;
+    arc.length = R * phi;
+    blend.pieces.push_back(arc);
+    blend.length = arc.length;
+    blend.vmax = v_plan;
+    blend.limit = v_plan < v_goal ? SpeedLimit::corner : (prev.vmax >= next.vmax ? prev.limit : next.limit);
+    blend.accel = kTangentialShare * aplane;
+    if (model.min_segment_periods > 0) {
+      const double cap = blend.length / (model.min_segment_periods * period);
+      if (cap < blend.vmax) {
+        blend.vmax = cap;
+        blend.limit = SpeedLimit::segment_time;
+      }
+    }
+    const double dev = R / std::sin(theta) - R;
+    if (dev > plan.max_path_deviation) {
+      plan.max_path_deviation = dev;
+      plan.max_deviation_line = line;
+    }
+    // A remnant of the previous line too short to run on its own is
+    // absorbed into the blend (the blend then starts where the remnant did).
+    if (prev.pieces.size() == 1 && prev.length < kGapPeriods * period * blend.vmax && segs.size() >= 1) {
+      PlanSegment::Piece remnant = prev.pieces.back();
+      blend.pieces.insert(blend.pieces.begin(), remnant);
+      blend.length += remnant.length;
+      blend.block = prev.block;
+      segs.pop_back();
+      junction.pop_back();  // the blend takes the remnant's entry
+      segs.push_back(std::move(blend));
+      junction.push_back(junction_pending_);
+    } else {
+      segs.push_back(std::move(blend));
+      junction.push_back(std::min(segs[segs.size() - 2].vmax, segs.back().vmax));
+    }
+    return -1;
+  }
+  double junction_pending_ = 0;
+
+  void cap_segment_time(PlanSegment& s) const {
+    if (model.min_segment_periods <= 0 || s.length <= 0) return;
+    const double cap = s.length / (model.min_segment_periods * period);
+    if (cap < s.vmax) {
+      s.vmax = cap;
+      s.limit = SpeedLimit::segment_time;
+    }
+  }
+
+  void build() {
+    size_t pause = 0;
+    std::vector<PlanSegment> pending;
+    bool stop_before = true;  // the machine is at rest
+    for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
+      bool pause_here = false;
+      while (pause < tl.pauses.size() && tl.pauses[pause].before_block <= bi) {
+        pause_here = true;
+        ++pause;
+      }
+      const size_t before = segs.size();
+      std::vector<PlanSegment> mine;
+      {
+        // Build this block's segments aside, then join them.
+        std::vector<PlanSegment> saved;
+        saved.swap(segs);
+        add_block(static_cast<int>(bi));
+        mine.swap(segs);
+        segs.swap(saved);
+      }
+      (void)before;
+      const MotionBlock& b = tl.blocks[bi];
+      for (size_t k = 0; k < mine.size(); ++k) {
+        PlanSegment s = std::move(mine[k]);
+        if (segs.empty() || (k == 0 && (stop_before || pause_here))) {
+          if (!segs.empty()) exact_stop_end();
+          cap_segment_time(s);
+          junction.push_back(0);
+          segs.push_back(std::move(s));
+          continue;
+        }
+        if (k > 0) {  // inside a block: tangent pieces
+          cap_segment_time(s);
+          junction.push_back(std::min(segs.back().vmax, s.vmax));
+          segs.push_back(std::move(s));
+          continue;
+        }
+        // A corner between blocks.
+        PlanSegment& prev = segs.back();
+        const MotionBlock& pbk = tl.blocks[static_cast<size_t>(prev.block)];
+        const double tol = std::min(path_tolerance(bi), path_tolerance(static_cast<size_t>(prev.block)));
+        double vj = 0;
+        if (prev.rapid != s.rapid || tol <= 0) {
+          vj = 0;
+        } else if (prev.pieces.back().shape == PlanSegment::Shape::line && s.pieces.front().shape == PlanSegment::Shape::line &&
+                   prev.pieces.size() == 1 && s.pieces.size() == 1) {
+          junction_pending_ = junction.back();
+          const double nominal_prev = dist(pbk.from, pbk.to), nominal_next = dist(b.from, b.to);
+          const double r = blend_lines(s, tol, nominal_prev, nominal_next, pbk.line);
+          if (r < 0) {
+            cap_segment_time(s);
+            junction.push_back(std::min(segs.back().vmax, s.vmax));
+            segs.push_back(std::move(s));
+            continue;
+          }
+          vj = r;
+        } else {
+          // A corner at an arc or curve: the speed of an equivalent blend
+          // within the tolerance, the shape kept.
+          const Vec3 u1 = block_tangent(pbk, true), u2 = block_tangent(b, false);
+          const double phi = std::acos(std::clamp(dot(u1, u2), -1.0, 1.0));
+          if (phi < kTangentAngle) {
+            const double aa = std::min(prev.accel, s.accel);
+            const double kink = phi > 0 ? kNormalShare * kKinkShare * aa * period / phi : kInf;
+            vj = std::min({prev.vmax, s.vmax, kink});
+          } else if (phi < kPi - 1e-6) {
+            const double theta = 0.5 * (kPi - phi);
+            const Vec3 normal = unit(cross(u1, u2));
+            const double aplane = in_plane(normal, lim.amax);
+            const double T = std::min({tol, kToleranceFraction * prev.length, kToleranceFraction * s.length});
+            const double d_tol = std::cos(theta) * T / (1 - std::sin(theta));
+            const double d = std::min({d_tol, kBlendFraction * prev.length, kBlendFraction * s.length});
+            const double R = std::tan(theta) * d;
+            vj = std::min({std::sqrt(kNormalShare * aplane * R), prev.vmax, s.vmax});
+            const double dev = R / std::sin(theta) - R;
+            if (dev > plan.max_path_deviation) {
+              plan.max_path_deviation = dev;
+              plan.max_deviation_line = pbk.line;
+            }
+          }
+        }
+        if (vj <= 0) exact_stop_end();
+        cap_segment_time(s);
+        junction.push_back(vj);
+        segs.push_back(std::move(s));
+      }
+      stop_before = false;
+      if (mine.empty() && pause_here) stop_before = true;
+    }
+    if (!segs.empty()) exact_stop_end();
+    junction.push_back(0);  // the end
+  }
+
+  // A segment that ends in an exact stop (nothing to adjust: the junction
+  // speed of 0 does it).
+  void exact_stop_end() {}
+
+  void speeds() {
+    const size_t n = segs.size();
+    const double j = lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0;
+    // junction has n + 1 entries: entering each segment, then the end.
+    std::vector<double> v(junction);
+    for (size_t i = 0; i < n; ++i) {
+      v[i] = std::min(v[i], segs[i].vmax);
+      if (i > 0) v[i] = std::min(v[i], segs[i - 1].vmax);
+    }
+    // Look-ahead: at each segment the controller must be able to stop
+    // within the segments it sees (counted in blocks).
+    const int window = std::max(1, model.lookahead_blocks);
+    std::vector<double> look(n + 1, kInf);
+    {
+      // Only where the window is short compared with a stop.
+      std::vector<double> prefix(n + 1, 0);
+      for (size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + segs[i].length;
+      std::vector<size_t> end_of(n);
+      // Window end: the segment after `window` distinct blocks.
+      size_t e = 0;
+      int blocks_in = 0;
+      int last_block = -2;
+      std::vector<int> bcount(n + 1, 0);
+      for (size_t i = 0; i < n; ++i) {
+        bcount[i + 1] = bcount[i] + (segs[i].block != last_block ? 1 : 0);
+        last_block = segs[i].block;
+      }
+      for (size_t i = 0; i < n; ++i) {
+        if (e < i) e = i;
+        while (e < n && bcount[e + 1] - bcount[i] <= window) ++e;
+        end_of[i] = e;  // segments [i, e) are seen
+        (void)blocks_in;
+      }
+      for (size_t i = 0; i < n; ++i) {
+        const size_t stop = end_of[i];
+        if (stop >= n) continue;  // sees the program's end: the normal passes cover it
+        // A window long enough to stop from the top speed does not limit.
+        const double dist_needed = ramp_distance(0, segs[i].vmax, minimum_accel(i, stop), j);
+        if (prefix[stop] - prefix[i] >= dist_needed * 1.0001) continue;
+        double w = 0;
+        for (size_t k = stop; k-- > i;) w = std::min(reachable(w, segs[k].length, segs[k].accel, j, segs[k].vmax), v[k]);
+        look[i] = w;
+      }
+    }
+    for (size_t i = 0; i < n; ++i) {
+      if (look[i] < v[i]) {
+        v[i] = look[i];
+        lookahead_limited_.resize(n, false);
+        lookahead_limited_[i] = true;
+      }
+    }
+    // Backward then forward.
+    for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], segs[i].length, segs[i].accel, j, segs[i].vmax));
+    for (size_t i = 0; i < n; ++i)
+      v[i + 1] = std::min(v[i + 1], reachable(v[i], segs[i].length, segs[i].accel, j, segs[i].vmax));
+    // Trapezoids.
+    for (size_t i = 0; i < n; ++i) {
+      PlanSegment& s = segs[i];
+      s.v0 = v[i];
+      s.v1 = v[i + 1];
+      const double a = s.accel;
+      double lo = std::max(s.v0, s.v1), hi = s.vmax;
+      auto fits = [&](double vp) { return ramp_distance(s.v0, vp, a, j) + ramp_distance(vp, s.v1, a, j) <= s.length * (1 + 1e-12); };
+      double vp = hi;
+      if (!fits(hi)) {
+        if (j <= 0) {
+          vp = std::sqrt(std::max(0.0, (2 * a * s.length + s.v0 * s.v0 + s.v1 * s.v1) / 2));
+          vp = std::clamp(vp, lo, hi);
+        } else {
+          for (int it = 0; it < 60; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (fits(mid) ? lo : hi) = mid;
+          }
+          vp = lo;
+        }
+      }
+      s.vpeak = vp;
+      s.t_acc = ramp_time(s.v0, vp, a, j);
+      s.t_dec = ramp_time(vp, s.v1, a, j);
+      const double rest = s.length - ramp_distance(s.v0, vp, a, j) - ramp_distance(vp, s.v1, a, j);
+      s.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
+      if (vp <= 0 && s.length > 0) s.t_cruise = kInf;  // cannot happen with positive limits
+    }
+  }
+  std::vector<bool> lookahead_limited_;
+
+  double minimum_accel(size_t from, size_t to) const {
+    double a = kInf;
+    for (size_t k = from; k < to; ++k) a = std::min(a, segs[k].accel);
+    return a;
+  }
+
+  void totals() {
+    double t = 0;
+    size_t pause = 0;
+    // Pauses sit before the first segment of their block.
+    std::vector<size_t> first_seg(tl.blocks.size() + 1, segs.size());
+    for (size_t i = segs.size(); i-- > 0;) first_seg[static_cast<size_t>(segs[i].block)] = i;
+    for (size_t b = tl.blocks.size(); b-- > 0;) first_seg[b] = std::min(first_seg[b], first_seg[b + 1]);
+    plan.pause_start_s.assign(tl.pauses.size(), 0);
+    for (size_t i = 0; i <= segs.size(); ++i) {
+      while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, tl.blocks.size())] <= i) {
+        plan.pause_start_s[pause] = t;
+        t += tl.pauses[pause].seconds;
+        plan.pause_time_s += tl.pauses[pause].seconds;
+        ++pause;
+      }
+      if (i == segs.size()) break;
+      PlanSegment& s = segs[i];
+      s.t_start = t;
+      t += s.time();
+      (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += s.time();
+      PlannedBlock& pb = plan.blocks[static_cast<size_t>(s.block)];
+      pb.time_s += s.time();
+      pb.peak_feed = std::max(pb.peak_feed, s.vpeak * 60);
+    }
+    while (pause < tl.pauses.size()) {
+      plan.pause_start_s[pause] = t;
+      t += tl.pauses[pause].seconds;
+      plan.pause_time_s += tl.pauses[pause].seconds;
+      ++pause;
+    }
+    plan.cycle_time_s = t;
+    // Per block: what held it below its programmed feed.
+    std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
+    std::vector<double> top(plan.blocks.size(), 0);
+    for (size_t i = 0; i < segs.size(); ++i) {
+      const size_t b = static_cast<size_t>(segs[i].block);
+      SpeedLimit l = segs[i].limit;
+      if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
+      if (segs[i].vmax >= top[b]) {
+        top[b] = segs[i].vmax;
+        why[b] = l;
+      }
+    }
+    double len_sum = 0, ratio_sum = 0;
+    for (size_t b = 0; b < plan.blocks.size(); ++b) {
+      PlannedBlock& pb = plan.blocks[b];
+      const MotionBlock& mb = tl.blocks[b];
+      const double want = mb.kind == BlockKind::rapid ? pb.programmed_feed : mb.feed;
+      if (want > 0) plan.programmed_feed_time_s += pb.length / want * 60;
+      if (pb.clamped) ++plan.clamped_blocks;
+      if (pb.peak_feed < want * (1 - 1e-6)) {
+        pb.limit = why[b];
+        if (pb.limit == SpeedLimit::programmed) pb.limit = SpeedLimit::acceleration;
+      }
+      pb.starved = pb.peak_feed < want * 0.99 && is_starvation(pb.limit);
+      if (pb.starved) ++plan.starved_blocks;
+      if (mb.kind != BlockKind::rapid && want > 0 && pb.time_s > 0) {
+        len_sum += pb.length;
+        ratio_sum += pb.length * (pb.length / pb.time_s * 60) / want;
+      }
+    }
+    plan.mean_feed_ratio = len_sum > 0 ? ratio_sum / len_sum : 1;
+  }
+};
+
+}  // namespace
+
+const char* to_string(SpeedLimit l) {
+  switch (l) {
+    case SpeedLimit::programmed: return "programmed";
+    case SpeedLimit::axes: return "axes";
+    case SpeedLimit::curvature: return "curvature";
+    case SpeedLimit::corner: return "corner";
+    case SpeedLimit::segment_time: return "segment-time";
+    case SpeedLimit::block_rate: return "block-rate";
+    case SpeedLimit::lookahead: return "lookahead";
+    case SpeedLimit::acceleration: return "acceleration";
+  }
+  return "?";
+}
+
+double PlanSegment::distance_at(double tau) const {
+  if (tau <= 0) return 0;
+  if (tau < t_acc) {
+    const double a = t_acc > 0 ? (vpeak - v0) / t_acc : 0;
+    return v0 * tau + 0.5 * a * tau * tau;
+  }
+  const double d_acc = 0.5 * (v0 + vpeak) * t_acc;
+  tau -= t_acc;
+  if (tau < t_cruise) return d_acc + vpeak * tau;
+  const double d_cr = vpeak * t_cruise;
+  tau -= t_cruise;
+  if (tau < t_dec) {
+    const double a = t_dec > 0 ? (v1 - vpeak) / t_dec : 0;
+    return d_acc + d_cr + vpeak * tau + 0.5 * a * tau * tau;
+  }
+  return length;
+}
+
+Vec3 PlanSegment::point_at(double s, const std::vector<MotionBlock>& blocks) const {
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const Piece& p = pieces[k];
+    if (s > p.length && k + 1 < pieces.size()) {
+      s -= p.length;
+      continue;
+    }
+    s = std::clamp(s, 0.0, p.length);
+    switch (p.shape) {
+      case Shape::line: return p.length > 0 ? p.a + (p.b - p.a) * (s / p.length) : p.a;
+      case Shape::arc: {
+        const double ang = p.radius > 0 ? s / p.radius : 0;
+        return p.center + p.u * (p.radius * std::cos(ang)) + p.w * (p.radius * std::sin(ang));
+      }
+      case Shape::block: {
+        const MotionBlock& b = blocks[static_cast<size_t>(p.block)];
+        const auto it = std::upper_bound(p.s.begin(), p.s.end(), s);
+        size_t i = static_cast<size_t>(std::clamp<long>(it - p.s.begin(), 1, static_cast<long>(p.s.size()) - 1));
+        const double ds = p.s[i] - p.s[i - 1];
+        const double f = ds > 0 ? (s - p.s[i - 1]) / ds : 0;
+        return evaluate_block(b, p.t[i - 1] + f * (p.t[i] - p.t[i - 1]));
+      }
+    }
+  }
+  return {};
+}
+
+MotionPlan plan_motion(const Timeline& tl, const MotionModel& model) {
+  if (!(model.period_s > 0)) throw std::invalid_argument("motion model: period_s must be > 0");
+  // Tool changes and spindle starts take the machine's time.
+  Timeline timed = tl;
+  for (PlanPause& p : timed.pauses) {
+    if (p.kind == PlanPause::Kind::tool_change) p.seconds = model.tool_change_s;
+    if (p.kind == PlanPause::Kind::spindle_start) p.seconds = model.spindle_start_s;
+  }
+  Builder b(timed, model);
+  for (int i = 0; i < 3; ++i) {
+    b.lim.vmax[i] = model.max_velocity_mm_min[static_cast<size_t>(i)] / 60 / b.scale;
+    b.lim.amax[i] = model.max_acceleration_mm_s2[static_cast<size_t>(i)] / b.scale;
+    if (model.max_jerk_mm_s3) b.lim.jmax[i] = (*model.max_jerk_mm_s3)[static_cast<size_t>(i)] / b.scale;
+  }
+  b.lim.jerk = model.max_jerk_mm_s3.has_value();
+  b.plan.units = tl.units;
+  b.plan.period_s = model.period_s;
+  b.build();
+  b.speeds();
+  b.totals();
+  b.plan.segments = std::move(b.segs);
+  b.plan.pauses = timed.pauses;
+  b.plan.motion = tl.blocks;
+  return std::move(b.plan);
+}
+
+void sample_plan(const MotionPlan& plan, const std::function<void(double, const Vec3&, double)>& out) {
+  const double T = plan.period_s;
+  const auto steps = static_cast<long long>(std::ceil(plan.cycle_time_s / T - 1e-9));
+  size_t seg = 0;
+  Vec3 last = plan.segments.empty() ? Vec3{} : plan.segments.front().point_at(0, plan.motion);
+  for (long long k = 0; k <= steps; ++k) {
+    const double t = std::min(static_cast<double>(k) * T, plan.cycle_time_s);
+    while (seg < plan.segments.size() && plan.segments[seg].t_start + plan.segments[seg].time() < t) ++seg;
+    double feed = 0;
+    if (seg < plan.segments.size() && t >= plan.segments[seg].t_start) {
+      const PlanSegment& s = plan.segments[seg];
+      const double tau = t - s.t_start;
+      last = s.point_at(s.distance_at(tau), plan.motion);
+      // Speed at tau.
+      if (tau < s.t_acc) feed = s.v0 + (s.vpeak - s.v0) * (s.t_acc > 0 ? tau / s.t_acc : 1);
+      else if (tau < s.t_acc + s.t_cruise) feed = s.vpeak;
+      else feed = s.vpeak + (s.v1 - s.vpeak) * (s.t_dec > 0 ? (tau - s.t_acc - s.t_cruise) / s.t_dec : 1);
+      feed *= 60;
+    } else if (seg > 0 && seg <= plan.segments.size()) {
+      const PlanSegment& s = plan.segments[seg - 1];
+      last = s.point_at(s.length, plan.motion);
+    }
+    out(t, last, feed);
+  }
+}
+
+Timeline program_timeline(const Program& p) {
+  Timeline tl;
+  tl.units = p.units;
+  tl.blocks = program_motion(p);
+  tl.path_tolerance.assign(tl.blocks.size(), -1);
+  size_t motions = 0;
+  for (const Move& mv : p.moves) {
+    if (motion_of(mv)) {
+      ++motions;
+      continue;
+    }
+    if (const auto* d = std::get_if<Dwell>(&mv.what))
+      tl.pauses.push_back({PlanPause::Kind::dwell, d->seconds, 0, motions});
+    else if (std::get_if<ToolChange>(&mv.what))
+      tl.pauses.push_back({PlanPause::Kind::tool_change, 0, 0, motions});
+    else if (const auto* s = std::get_if<SpindleMove>(&mv.what); s && s->rpm > 0)
+      tl.pauses.push_back({PlanPause::Kind::spindle_start, 0, 0, motions});
+    else if (std::get_if<ProgramStop>(&mv.what))
+      tl.pauses.push_back({PlanPause::Kind::program_stop, 0, 0, motions});
+  }
+  return tl;
+}
+
+}  // namespace bezcam
