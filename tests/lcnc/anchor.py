@@ -74,6 +74,8 @@ def with_feed(job, feed, tmp):
 
 
 def bezcam_programs(bezcam, profile, tmp, only):
+    with open(profile) as f:
+        preamble = json.load(f).get("preamble", [])
     progs = []
     for name, sample, mode, feed in PROGRAMS_FROM_BEZCAM:
         if only and not re.search(only, name):
@@ -82,7 +84,11 @@ def bezcam_programs(bezcam, profile, tmp, only):
         if feed is not None:
             job = with_feed(job, feed, tmp)
         out = os.path.join(tmp, name + ".ngc")
+        # bezcam's simulator starts at an unknown position and times no move out of
+        # it; LinuxCNC starts at X0 Y0 Z0: the profile's preamble plus G0 X0 Y0 Z0
+        # starts both there
         r = subprocess.run([bezcam, "convert", job, "--machine", profile, "--output", mode,
+                            "--preamble", "\\n".join(preamble + ["G0 X0 Y0 Z0"]),
                             "-o", out, "-q"], capture_output=True, text=True)
         if r.returncode != 0:
             raise RuntimeError("bezcam convert %s --output %s failed: %s"

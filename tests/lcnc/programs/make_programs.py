@@ -4,8 +4,9 @@
     /usr/bin/python3 tests/lcnc/programs/make_programs.py
 
 The files are kept in the repository; this script documents how they were
-made and rewrites them identically. Every program starts where both
-LinuxCNC (homed in place) and bezcam's simulator start: X0 Y0 Z0.
+made and rewrites them identically. Every program starts with G0 X0 Y0 Z0:
+LinuxCNC is there already (homed in place), and bezcam's simulator, which
+starts at an unknown position and times no move out of it, starts there too.
 
   chords-<c>-F<f>  a circle R20 (centre -20,0, through the origin) as G1
                    chords of c mm, at feed f mm/min
@@ -37,6 +38,7 @@ def write(name, lines, comment):
     with open(os.path.join(HERE, name + ".ngc"), "w") as f:
         f.write("(%s)\n" % comment)
         f.write("G21 G90 G17 G94\n")
+        f.write("G0 X0 Y0 Z0\n")
         f.write("\n".join(lines) + "\n")
         f.write("M2\n")
 
