@@ -224,10 +224,13 @@ def main(argv=None):
                 lines = {ln.split("\t", 1)[0]: ln for ln in f.read().splitlines()[1:] if ln}
         for r in rows:
             if "lcnc" in r:
-                lines[r["program"]] = "%s\t%.3f\t%.3f\t%.3f\t%.3f" % (
-                    r["program"], r["lcnc"], r["feed"], r["rapid"], r["other"])
+                lines[r["program"]] = "%s\t%.3f\t%.3f\t%.3f\t%.3f\t%s\t%s" % (
+                    r["program"], r["lcnc"], r["feed"], r["rapid"], r["other"],
+                    "%.3f" % r["bezcam"] if "bezcam" in r else "-",
+                    "%.3f" % r["ratio"] if "ratio" in r else "-")
         with open(table, "w") as f:
-            f.write("program\tcycle_time_s\tfeed_time_s\trapid_time_s\tother_time_s\n")
+            f.write("program\tcycle_time_s\tfeed_time_s\trapid_time_s\tother_time_s"
+                    "\tbezcam_cycle_time_s\tratio\n")
             f.write("".join(lines[k] + "\n" for k in sorted(lines)))
     compared = [r for r in rows if "ratio" in r]
     off = [r for r in compared if abs(r["ratio"] - 1) > TOLERANCE]
