@@ -143,6 +143,7 @@ def bezcam_cycle(bezcam, program, profile, tmp):
 
 
 def main(argv=None):
+    lcnc_run.interrupt_on_sigterm()
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--bezcam", default=os.path.join(ROOT, "build", "bezcam"))
     ap.add_argument("--profile", default=os.path.join(ROOT, "machines", "linuxcnc.json"),
@@ -246,4 +247,8 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except KeyboardInterrupt:
+        print("anchor: interrupted; LinuxCNC stopped")
+        sys.exit(130)

@@ -206,13 +206,18 @@ def start_and_wait(rundir, ini, program, mdi, timeout):
     try:
         try:
             rc = proc.wait(timeout=timeout + 90)
-        except subprocess.TimeoutExpired:
+        except (subprocess.TimeoutExpired, KeyboardInterrupt) as ex:
+            # too long, or we are interrupted: stop LinuxCNC before leaving
             proc.send_signal(signal.SIGTERM)  # the script's trap runs LinuxCNC's Cleanup
             try:
                 rc = proc.wait(timeout=30)
             except subprocess.TimeoutExpired:
                 os.killpg(proc.pid, signal.SIGKILL)
                 rc = proc.wait()
+            if isinstance(ex, KeyboardInterrupt):
+                raise
+    finally:
+        log.close()
         # rtapi_app (its own session) leaves after the script: poll until no
         # LinuxCNC process is left. None ran when this run began (checked under
         # the lock), so those still there were started by it.
@@ -220,20 +225,18 @@ def start_and_wait(rundir, ini, program, mdi, timeout):
         while (foreign_linuxcnc() or os.path.exists(LCNC_LOCK)) and time.monotonic() < end:
             time.sleep(0.01)
         left = [p for p in foreign_linuxcnc() if (started_at(p) or -1) >= t_start]
-        if left:
-            for pid in left:
-                try:
-                    os.kill(pid, signal.SIGKILL)
-                except ProcessLookupError:
-                    pass
-            raise RuntimeError("LinuxCNC left processes %s running 30 s after its "
-                               "exit (killed)" % left)
-        if os.path.exists(LCNC_LOCK):
+        for pid in left:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        if os.path.exists(LCNC_LOCK) and not foreign_linuxcnc():
             os.remove(LCNC_LOCK)
-    finally:
-        log.close()
         if rtdir:
             shutil.rmtree(rtdir, ignore_errors=True)
+    if left:
+        raise RuntimeError("LinuxCNC left processes %s running 30 s after its exit "
+                           "(killed)" % left)
     return rc
 
 
@@ -357,7 +360,15 @@ def run(program, motion, outdir=None, timeout=300):
             shutil.rmtree(rundir, ignore_errors=True)
 
 
+def interrupt_on_sigterm():
+    """SIGTERM (ctest, a CI runner) ends a run like Ctrl-C: LinuxCNC is stopped first."""
+    def handler(signum, frame):
+        raise KeyboardInterrupt("signal %d" % signum)
+    signal.signal(signal.SIGTERM, handler)
+
+
 def main(argv=None):
+    interrupt_on_sigterm()
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("program")
     ap.add_argument("--profile", required=True, help="machine profile JSON with 'motion'")
@@ -377,6 +388,9 @@ def main(argv=None):
     except RuntimeError as ex:
         print("lcnc_run: %s" % ex, file=sys.stderr)
         return 1
+    except KeyboardInterrupt:
+        print("lcnc_run: interrupted; LinuxCNC stopped", file=sys.stderr)
+        return 130
     print(json.dumps(res, indent=1))
     return 0
 
