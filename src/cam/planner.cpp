@@ -25,6 +25,7 @@
 #include "bezcam/cam/planner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -131,6 +132,19 @@ double ramp_time(double v0, double v1, double a, double j) {
   return 2 * std::sqrt(dv / j);
 }
 double ramp_distance(double v0, double v1, double a, double j) { return 0.5 * (v0 + v1) * ramp_time(v0, v1, a, j); }
+
+// The same with the jerk's build-up at the ramp's start (`in`) and its
+// wind-down at the end (`out`) each counted only where the acceleration
+// really starts or ends: a ramp that continues over several segments
+// builds up its acceleration once.
+double ramp_time(double v0, double v1, double a, double j, bool in, bool out) {
+  if (j <= 0 || (in && out)) return ramp_time(v0, v1, a, j);
+  const double dv = std::abs(v1 - v0);
+  if (dv <= 0) return 0;
+  if (!in && !out) return dv / a;
+  // One end only: half of the jerk phases, limited as for a short ramp.
+  return std::max(dv / a + 0.5 * a / j * std::min(1.0, dv * j / (a * a)), 0.5 * ramp_time(v0, v1, a, j));
+}
 
 // The highest speed reachable from v0 within distance L (the inverse of
 // ramp_distance in v1, by bisection with jerk, closed form without).
@@ -700,10 +714,10 @@ struct Builder {
         const size_t stop = end_of[i > 0 ? i - 1 : 0];
         if (stop >= n) continue;  // sees the program's end: the normal passes cover it
         // A window long enough to stop from the top speed does not limit.
-        const double dist_needed = ramp_distance(0, segs[i].vmax, minimum_accel(i, stop), j);
+        const double dist_needed = ramp_distance(0, segs[i].vmax, minimum_accel(i, stop), 0);
         if (prefix[stop] - prefix[i] >= dist_needed * 1.0001) continue;
         double w = 0;
-        for (size_t k = stop; k-- > i;) w = std::min(reachable(w, segs[k].length, segs[k].accel, j, segs[k].vmax), v[k]);
+        for (size_t k = stop; k-- > i;) w = std::min(reachable(w, segs[k].length, segs[k].accel, 0, segs[k].vmax), v[k]);
         look[i] = w;
       }
     }
@@ -714,38 +728,57 @@ struct Builder {
         lookahead_limited_[i] = true;
       }
     }
-    // Backward then forward.
-    for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], segs[i].length, segs[i].accel, j, segs[i].vmax));
+    // Backward then forward (speeds by the acceleration; the jerk's share
+    // of a ramp is counted below, once per ramp).
+    for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], segs[i].length, segs[i].accel, 0, segs[i].vmax));
     for (size_t i = 0; i < n; ++i)
-      v[i + 1] = std::min(v[i + 1], reachable(v[i], segs[i].length, segs[i].accel, j, segs[i].vmax));
-    // Trapezoids.
-    for (size_t i = 0; i < n; ++i) {
-      PlanSegment& s = segs[i];
-      s.v0 = v[i];
-      s.v1 = v[i + 1];
-      const double a = s.accel;
-      double lo = std::max(s.v0, s.v1), hi = s.vmax;
-      auto fits = [&](double vp) { return ramp_distance(s.v0, vp, a, j) + ramp_distance(vp, s.v1, a, j) <= s.length * (1 + 1e-12); };
-      double vp = hi;
-      if (!fits(hi)) {
-        if (j <= 0) {
-          vp = std::sqrt(std::max(0.0, (2 * a * s.length + s.v0 * s.v0 + s.v1 * s.v1) / 2));
-          vp = std::clamp(vp, lo, hi);
-        } else {
-          for (int it = 0; it < 60; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (fits(mid) ? lo : hi) = mid;
-          }
-          vp = lo;
-        }
+      v[i + 1] = std::min(v[i + 1], reachable(v[i], segs[i].length, segs[i].accel, 0, segs[i].vmax));
+    // Trapezoids, then (with a jerk limit) S-curves: a ramp's build-up and
+    // wind-down where the acceleration starts and ends, not at every joint.
+    for (size_t i = 0; i < n; ++i) profile_one(segs[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
+    if (j > 0) {
+      std::vector<char> acc_in(n, 1), acc_out(n, 1), dec_in(n, 1), dec_out(n, 1);
+      auto ends_acc = [&](const PlanSegment& q) { return q.t_acc > 0 && q.t_cruise <= 0 && q.t_dec <= 0; };
+      auto starts_acc = [&](const PlanSegment& q) { return q.t_acc > 0; };
+      auto ends_dec = [&](const PlanSegment& q) { return q.t_dec > 0; };
+      auto starts_dec = [&](const PlanSegment& q) { return q.t_dec > 0 && q.t_acc <= 0 && q.t_cruise <= 0; };
+      for (size_t i = 0; i + 1 < n; ++i) {
+        if (ends_acc(segs[i]) && starts_acc(segs[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
+        if (ends_dec(segs[i]) && starts_dec(segs[i + 1])) dec_out[i] = dec_in[i + 1] = 0;
       }
-      s.vpeak = vp;
-      s.t_acc = ramp_time(s.v0, vp, a, j);
-      s.t_dec = ramp_time(vp, s.v1, a, j);
-      const double rest = s.length - ramp_distance(s.v0, vp, a, j) - ramp_distance(vp, s.v1, a, j);
-      s.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
-      if (vp <= 0 && s.length > 0) s.t_cruise = kInf;  // cannot happen with positive limits
+      for (size_t i = 0; i < n; ++i) {
+        std::array<char, 4> f{acc_in[i], acc_out[i], dec_in[i], dec_out[i]};
+        profile_one(segs[i], v[i], v[i + 1], j, f);
+      }
     }
+  }
+
+  // One segment from v0 to v1: the highest peak that fits its length.
+  static void profile_one(PlanSegment& s, double v0, double v1, double j, std::array<char, 4> f) {
+    s.v0 = v0;
+    s.v1 = v1;
+    const double a = s.accel;
+    auto up = [&](double vp) { return ramp_time(s.v0, vp, a, j, f[0], f[1]); };
+    auto down = [&](double vp) { return ramp_time(vp, s.v1, a, j, f[2], f[3]); };
+    auto used = [&](double vp) { return 0.5 * (s.v0 + vp) * up(vp) + 0.5 * (vp + s.v1) * down(vp); };
+    double lo = std::max(s.v0, s.v1), hi = s.vmax;
+    double vp = hi;
+    if (used(hi) > s.length * (1 + 1e-12)) {
+      if (j <= 0) {
+        vp = std::clamp(std::sqrt(std::max(0.0, (2 * a * s.length + s.v0 * s.v0 + s.v1 * s.v1) / 2)), lo, hi);
+      } else {
+        for (int it = 0; it < 60; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          (used(mid) <= s.length ? lo : hi) = mid;
+        }
+        vp = lo;
+      }
+    }
+    s.vpeak = vp;
+    s.t_acc = up(vp);
+    s.t_dec = down(vp);
+    const double rest = s.length - used(vp);
+    s.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
   }
   std::vector<bool> lookahead_limited_;
 
@@ -801,6 +834,10 @@ struct Builder {
     for (size_t b = 0; b < plan.blocks.size(); ++b) {
       PlannedBlock& pb = plan.blocks[b];
       const MotionBlock& mb = tl.blocks[b];
+      if (pb.length <= 1e-9) {
+        pb.programmed_feed = mb.kind == BlockKind::rapid ? 0 : mb.feed;
+        continue;  // no move: no time, no limit
+      }
       const double want = mb.kind == BlockKind::rapid ? pb.programmed_feed : mb.feed;
       if (want > 0) plan.programmed_feed_time_s += pb.length / want * 60;
       if (pb.clamped) ++plan.clamped_blocks;
