@@ -22,6 +22,7 @@
 #include "bezcam/link/transport.hpp"
 #include "command.hpp"
 #include "options.hpp"
+#include "resume_option.hpp"
 
 namespace bezcam::cli {
 namespace {
@@ -55,6 +56,7 @@ struct Options {
   std::uint32_t session_base = 0;
   bool quiet = false;
 } o;
+ResumeOption resume;  // --from-line (resume_option.hpp)
 
 CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("simulate", "Run the simulated controller: a Modbus TCP server that accepts programs "
@@ -63,6 +65,8 @@ CLI::App* add(CLI::App& app) {
   auto* p = s->add_option("--program", o.program, "G-code file to execute directly, no network");
   l->excludes(p);
   p->excludes(l);
+  resume.add(s);
+  l->excludes("--from-line");
   s->add_option("--machine", o.machine, "machine profile: travel limits and maximum feed (default generic)");
   s->add_option("--trace", o.trace, "write the trace here (\"-\" for stdout); restarted for each program");
   s->add_option("--buffer", o.buffer, "receive buffer in bytes")->check(CLI::Range(kMinBuffer, kMaxBuffer));
@@ -195,7 +199,8 @@ int run() {
       std::cerr << "bezcam simulate: " << t << " " << event << std::endl;
     };
   }
-  const std::string program = o.program.empty() ? std::string() : read_file(o.program);
+  const std::string program =
+      o.program.empty() ? std::string() : resume.apply(read_file(o.program), o.program, &cfg.profile, o.quiet, "simulate");
   SignalWaiter signals;  // before any thread exists, so that all inherit the mask
   SimController ctl(std::move(cfg));
 
@@ -215,7 +220,7 @@ int run() {
       const std::string prefix = "line " + std::to_string(st.alarm_line) + ": ";
       if (text.rfind(prefix, 0) == 0) text.erase(0, prefix.size());
       throw InputError(alarm_error_id(st.alarm),
-                       st.alarm_line ? Place::at_line(st.alarm_line) : Place::at_file(o.program),
+                       st.alarm_line ? resume.place_of(st.alarm_line) : Place::at_file(o.program),
                        text + " (alarm " + to_string(st.alarm) + " of the simulated controller)");
     }
     if (!o.quiet)

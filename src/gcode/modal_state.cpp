@@ -141,6 +141,7 @@ void GcodeInterpreter::Impl::run_modal() {
     }
     if (c == 3 || c == 4) {
       st.spindle_on = true;
+      st.spindle_ccw = c == 4;
       mo.noted_spindle = false;
     }
     if (c == 5) st.spindle_on = false;
@@ -167,6 +168,8 @@ void GcodeInterpreter::Impl::run_modal() {
     } else if (c == 900) {
       st.absolute = true;
       mo.distance_set = true;
+    } else if (c == 610 || c == 611 || c == 640) {
+      st.path_mode = c == 611 ? 611 : c / 10;  // 61, 611 or 64
     } else if (c >= 540 && c <= 590 && c % 10 == 0) {
       st.coord_system = c / 10;
     } else if (c == 430) {
