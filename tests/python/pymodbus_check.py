@@ -79,7 +79,7 @@ def read_status(client, fc=3):
 PROGRAM = (
     "%\nG21 G90 G17\nT1 M06\nS10000 M03\nG00 Z5.\nX0. Y0.\nG01 Z-1. F300.\n"
     + "".join("X%d.%03d Y%d.%03d F1000.\n" % (i % 37, (i * 37) % 1000, (i * 7) % 23, (i * 11) % 1000) for i in range(1, 60))
-    + "G02 X10. Y0. I5. J0.\nG00 Z5.\nX12.5 Y-3.25\nM05\nM30\n%\n"
+    + "G01 X0. Y0.\nG02 X10. Y0. I5. J0.\nG00 Z5.\nX12.5 Y-3.25\nM05\nM30\n%\n"
 ).encode()
 
 
