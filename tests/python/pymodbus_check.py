@@ -140,7 +140,9 @@ def run(client, prog_file, trace_file):
     # The motion planner's starvation registers: read when the document lists
     # them, by the names it gives them; a controller that documents them
     # must report them as whole numbers, zero before any program ran.
-    starvation = [n for n in ("starved_ms", "stalls", "stall_count", "starvations") if n in reg]
+    # (starved_ms and a count of stalls: any status register whose name
+    # starts with "starv" or "stall".)
+    starvation = sorted(n for n in reg if n.startswith(("starv", "stall")))
     for name in starvation:
         check(get(st, name) == 0, "%s is 0 before any program" % name)
     # ---------------------------------------------------------------------------
