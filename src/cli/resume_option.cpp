@@ -1,3 +1,4 @@
+// --from-line for simulate and stream: the options, the plan, the messages.
 #include "resume_option.hpp"
 
 #include <iostream>
@@ -8,25 +9,22 @@
 namespace bezcam::cli {
 
 void ResumeOption::add(CLI::App* cmd) {
-  cmd->add_option("--from-line", from_line_,
+  auto* from = cmd->add_option("--from-line", from_line_,
                   "resume the program at this line (1-based): from the nearest line at or before it where a cut may "
                   "begin, after a preamble that restores the modal state there, retracts, moves over and plunges")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--safe-z", safe_z_, "with --from-line: the height (mm) the preamble retracts to (default: the "
-                                       "profile's safe_z)");
+                                       "profile's safe_z)")
+      ->needs(from);
   cmd->add_option("--plunge-feed", plunge_feed_,
                   "with --from-line: the feed (mm/min) the preamble plunges at (default: the profile's plunge_feed)")
-      ->check(positive_number());
+      ->check(positive_number())
+      ->needs(from);
 }
 
 std::string ResumeOption::apply(std::string program, const std::string& file, const MachineProfile* profile,
                                 bool quiet, const std::string& who) {
-  if (!active()) {
-    if (safe_z_ || plunge_feed_)
-      throw InputError(errc::resume_setting, Place::at_option(safe_z_ ? "--safe-z" : "--plunge-feed"),
-                       "applies to a resume only: give --from-line N as well");
-    return program;
-  }
+  if (!active()) return program;  // --safe-z and --plunge-feed need --from-line (add())
   file_ = file;
   try {
     plan_ = plan_resume(program, profile, from_line_, ResumeSettings{safe_z_, plunge_feed_});

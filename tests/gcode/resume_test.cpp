@@ -95,9 +95,8 @@ void expect_same_block(const MotionBlock& w, const MotionBlock& g, long offset) 
 
 // Plans the resume at `asked`, expects it to start at `start`, and checks
 // the preamble's state and the tail's motion against the full run.
-ResumePlan check_resume(const std::string& file, const std::string& machine, int asked, int start) {
+ResumePlan check_resume_text(const std::string& text, const std::string& machine, int asked, int start) {
   const MachineProfile m = load_machine_profile(machine);
-  const std::string text = slurp(file);
   const ResumePlan plan = plan_resume(text, &m, asked);
   EXPECT_EQ(plan.asked_line, asked);
   EXPECT_EQ(plan.start_line, start) << plan.reason;
@@ -138,6 +137,10 @@ ResumePlan check_resume(const std::string& file, const std::string& machine, int
     }
   }
   return plan;
+}
+
+ResumePlan check_resume(const std::string& file, const std::string& machine, int asked, int start) {
+  return check_resume_text(slurp(file), machine, asked, start);
 }
 
 }  // namespace
@@ -327,4 +330,30 @@ TEST(Resume, EveryLineOfTheSamplesResumesToTheSameTail) {
       check_resume(file, machine, n, p.start_line);
     }
   }
+}
+
+TEST(Resume, ThePreambleRestoresEveryModalGroupTheReaderTracks) {
+  // Work offset G55, exact stop G61.1, spindle counter-clockwise, both
+  // coolants, tool 3 in the spindle and tool 4 selected, no tool length
+  // offset, a rapid left modal.
+  const std::string prog =
+      "G20 G90 G17\nG55 G61.1\nT3 M06\nT4\nS8000 M04\nM07\nM08\nG00 Z0.5\nX1. Y1.\nG01 Z-0.05 F12.\n"
+      "X2. F30.\nG00 Z0.5\nX3.\nY2.\nM05\nM09\nM30\n";
+  const ResumePlan p = check_resume_text(prog, "generic", 14, 14);
+  EXPECT_EQ(p.state.coord_system, 55);
+  EXPECT_EQ(p.state.path_mode, 611);
+  EXPECT_TRUE(p.state.spindle_on);
+  EXPECT_TRUE(p.state.spindle_ccw);
+  EXPECT_TRUE(p.state.coolant_mist && p.state.coolant_flood);
+  EXPECT_EQ(p.state.motion, ModalMotion::rapid);
+  EXPECT_EQ(p.preamble.substr(p.preamble.find('\n') + 1),
+            "G17 G90 G94 G40 G20 G55 G61.1\nT3 M06\nT4\nS8000 M04\nM07\nM08\nG00 Z0.5\nG00 X3 Y1\nF30\n");
+  // Below the safe height (0.19685 in): retract, over, plunge at 300 mm/min
+  // in inches, the feed back, G00 again.
+  const ResumePlan q = check_resume_text(prog, "generic", 11, 11);
+  EXPECT_EQ(q.preamble.substr(q.preamble.find("G00 Z")),
+            "G00 Z" + std::string("0.1968503937007874") + "\nG00 X1 Y1\nG01 Z-0.05 F11.811023622047244\nF12\n");
+  // Before any move: no motion in the preamble, nothing to retract.
+  const ResumePlan r = check_resume_text(prog, "generic", 6, 6);
+  EXPECT_EQ(r.preamble.find("G00"), std::string::npos) << r.preamble;
 }
