@@ -8,11 +8,11 @@
 // program, 2 bad file or options, 3 connection failure, 4 the controller
 // refused or lost the program.
 #include <chrono>
-#include <cstdlib>
-#include <optional>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <csignal>
@@ -66,10 +66,10 @@ CLI::App* add(CLI::App& app) {
   s->footer("Ctrl-C (or SIGTERM) stops the controller at once: the sender sends ABORT and says what was "
             "acknowledged and executed (exit 130).\n"
             "Before sending, the program is linted against the profile the controller enforces (its name is in "
-            "the controller's registers); findings refuse it (exit 2) unless --no-preflight.\n\n"
-            "Examples:\n"
+            "the controller's registers); findings refuse it (exit 2) unless --no-preflight.\n"
             "With --from-line N the program is resumed part-way (docs/resume.md): from the nearest line at or "
             "before N where a cut may begin, after a preamble built for the profile the controller enforces.\n\n"
+            "Examples:\n"
             "  bezcam stream part.nc --to 127.0.0.1:5020\n"
             "  bezcam stream part.nc --to 127.0.0.1:5020 --from-line 120\n"
             "  bezcam stream --abort --to 192.168.0.10:502");
