@@ -173,6 +173,13 @@ std::chrono::milliseconds ms(double seconds) {
 std::atomic<bool> g_interrupted{false};
 extern "C" void on_interrupt(int) { g_interrupted.store(true); }
 
+// Where a finding is: FILE:LINE, the file's own line for a resumed program
+// (a preamble line is named as such).
+std::string finding_place(long line) {
+  const Place p = resume.place_of(line);
+  return p.line ? o.file + ":" + std::to_string(*p.line) : p.to_string();
+}
+
 // The program against the profile the controller enforces: a program it
 // would refuse mid-cut is refused before OPEN.
 void preflight(const std::string& program, const Endpoint& to) {
@@ -191,8 +198,7 @@ void preflight(const std::string& program, const Endpoint& to) {
   if (findings.empty()) return;
   std::string list;
   for (size_t i = 0; i < findings.size() && i < 10; ++i)
-    list += "\n  " + resume.place_of(findings[i].line).to_string() + ": " + findings[i].message + " [" +
-            findings[i].id + "]";
+    list += "\n  " + finding_place(findings[i].line) + ": " + findings[i].message + " [" + findings[i].id + "]";
   if (findings.size() > 10) list += "\n  ... and " + std::to_string(findings.size() - 10) + " more";
   throw InputError(errc::link_preflight, Place::at_file(o.file),
                    std::to_string(findings.size()) + " finding" + (findings.size() == 1 ? "" : "s") +

@@ -226,6 +226,10 @@ TEST(ResumeOverTheLink, AnAlarmInTheTailNamesTheLineOfTheFile) {
     // before sending, so the preflight is off.
     std::ofstream(f) << "G21 G90 G17\nT1 M06\nS1000 M03\nG00 Z5.\nX0. Y0.\nG01 Z-1. F100.\nX10.\nX3000.\nM30\n";
   }
+  // The preflight lints the resumed program and names the file's line.
+  const auto pf = test::run_bezcam({"stream", f, "--to", to, "--progress", "off", "--from-line", "7"}, dir);
+  EXPECT_EQ(pf.status, 2) << pf.err;
+  EXPECT_NE(pf.err.find("\n  " + f + ":8: the move reaches X = 3000 mm"), std::string::npos) << pf.err;
   const auto r = test::run_bezcam({"stream", f, "--to", to, "--progress", "off", "--no-preflight", "--from-line", "7"}, dir);
   EXPECT_EQ(r.status, 4) << r.err;
   EXPECT_NE(r.err.find("bezcam: error: " + f + ": line 8: "), std::string::npos) << r.err;
