@@ -211,15 +211,14 @@ ResumePlan plan_resume(std::string_view program, const MachineProfile* profile, 
                            e.message() + " [" + e.id() + "]");
     }
     const bool code = !(ln.percent || ln.program_number || ln.empty());
-    if (l == line) {
-      if (!code)
-        throw InputError(errc::resume_no_code, Place::at_line(line),
-                         "cannot resume at a line that holds no block (a blank, comment, % or program-number line): "
-                         "give the line of a block");
-      if (const int end = in.continuation().end_line)
-        throw InputError(errc::resume_after_end, Place::at_line(line),
-                         "cannot resume there: the program ended at line " + std::to_string(end) + " (M02/M30)");
-    }
+    if (l == line && !code)
+      throw InputError(errc::resume_no_code, Place::at_line(line),
+                       "cannot resume at a line that holds no block (a blank, comment, % or program-number line): "
+                       "give the line of a block");
+    // Past M02/M30 nothing runs: not line N, nor a block between the end and N.
+    if (const int end = in.continuation().end_line; end && code)
+      throw InputError(errc::resume_after_end, Place::at_line(line),
+                       "cannot resume there: the program ended at line " + std::to_string(end) + " (M02/M30)");
     if (code) {
       std::string b = barrier(in.state(), in.continuation(), ln);
       if (b.empty()) snap = {l, in.state(), in.continuation()};

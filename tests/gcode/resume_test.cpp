@@ -270,6 +270,11 @@ TEST(Resume, BadLinesAreRefusedNamingTheLine) {
   e = test::refusal_of([&] { plan_resume(after, &m, 4); });
   EXPECT_EQ(e.id(), "resume.after-end");
   EXPECT_EQ(e.where(), "line 4");
+  // ... also with blocks between the end and the line.
+  e = test::refusal_of([&] { plan_resume(after + "G00 X2.\n", &m, 5); });
+  EXPECT_EQ(e.id(), "resume.after-end");
+  EXPECT_EQ(e.where(), "line 5");
+  EXPECT_NE(e.message().find("ended at line 3"), std::string::npos) << e.message();
   // A G91 program: the state before line 4 cannot be known; the refusal
   // names the G91 line and the line asked.
   const std::string g91 = "G21 G90\nG91\nG00 X1.\nG00 X2.\nM30\n";
