@@ -344,6 +344,16 @@ inline constexpr ErrorId program_feed{"program.feed"};
 inline constexpr ErrorId program_rapid_below_safe_z{"program.rapid-below-safe-z"};
 /// The tool path leaves the machine's travel.
 inline constexpr ErrorId program_travel{"program.travel"};
+/// Resume from a line: the modal state before the line cannot be known (the reader refuses an earlier line).
+inline constexpr ErrorId resume_state_unknown{"resume.state-unknown"};
+/// Resume from a line: the line comes after the program's end (M02/M30).
+inline constexpr ErrorId resume_after_end{"resume.after-end"};
+/// Resume from a line: the line holds no block (blank, comment, % or O-number line).
+inline constexpr ErrorId resume_no_code{"resume.no-code"};
+/// Resume from a line: the line is not in the program (beyond its end).
+inline constexpr ErrorId resume_no_line{"resume.no-line"};
+/// Resume from a line: the safe height or plunge feed is missing, not valid, or refused by the profile.
+inline constexpr ErrorId resume_setting{"resume.setting"};
 /// Simulate: the simulated controller stopped with alarm aborted.
 inline constexpr ErrorId sim_aborted{"sim.aborted"};
 /// The simulated controller is receiving a streamed transfer.

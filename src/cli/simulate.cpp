@@ -24,6 +24,7 @@
 #include "bezcam/link/transport.hpp"
 #include "command.hpp"
 #include "options.hpp"
+#include "resume_option.hpp"
 
 namespace bezcam::cli {
 namespace {
@@ -57,6 +58,7 @@ struct Options {
   std::uint32_t session_base = 0;
   bool quiet = false;
 } o;
+ResumeOption resume;  // --from-line (resume_option.hpp)
 
 CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("simulate", "Run the simulated controller: a Modbus TCP server that accepts programs "
@@ -65,6 +67,8 @@ CLI::App* add(CLI::App& app) {
   auto* p = s->add_option("--program", o.program, "G-code file to execute directly, no network");
   l->excludes(p);
   p->excludes(l);
+  resume.add(s);
+  l->excludes("--from-line");
   s->add_option("--machine", o.machine, "machine profile: travel limits, maximum feed and motion model (default generic)");
   auto* rep = s->add_option("--report", o.report,
                             "with --program: plan the motion on the machine's motion model and write its report "
@@ -219,7 +223,8 @@ int run() {
                      "add one to plan its motion");
   if (!o.report.empty() && o.report == o.motion)
     throw InputError(errc::usage_report, Place::at_option("--report"), "the report and the motion samples cannot go to the same file");
-  const std::string program = o.program.empty() ? std::string() : read_file(o.program);
+  const std::string program =
+      o.program.empty() ? std::string() : resume.apply(read_file(o.program), o.program, &cfg.profile, o.quiet, "simulate");
   SignalWaiter signals;  // before any thread exists, so that all inherit the mask
   SimController ctl(std::move(cfg));
 
@@ -239,7 +244,7 @@ int run() {
       const std::string prefix = "line " + std::to_string(st.alarm_line) + ": ";
       if (text.rfind(prefix, 0) == 0) text.erase(0, prefix.size());
       throw InputError(alarm_error_id(st.alarm),
-                       st.alarm_line ? Place::at_line(st.alarm_line) : Place::at_file(o.program),
+                       st.alarm_line ? resume.place_of(st.alarm_line) : Place::at_file(o.program),
                        text + " (alarm " + to_string(st.alarm) + " of the simulated controller)");
     }
     if (!o.quiet)

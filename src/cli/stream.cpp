@@ -1,5 +1,6 @@
 // bezcam stream FILE.nc --to HOST:PORT [--timeout S] [--retries N] [--retry-time S]
 //                [--stall-timeout S] [--chunk BYTES] [--progress auto|bar|lines|off] [-q]
+//                [--from-line N [--safe-z MM] [--plunge-feed MM/MIN]]
 //
 // Sends a program to a controller over Modbus TCP (streamer.hpp), with a
 // progress bar on a terminal and plain progress lines otherwise. Exit
@@ -8,8 +9,10 @@
 // refused or lost the program.
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <csignal>
@@ -20,6 +23,7 @@
 #include "bezcam/link/streamer.hpp"
 #include "command.hpp"
 #include "options.hpp"
+#include "resume_option.hpp"
 
 namespace bezcam::cli {
 namespace {
@@ -33,6 +37,7 @@ struct Options {
   int chunk = 0;
   bool quiet = false, abort = false, no_preflight = false;
 } o;
+ResumeOption resume;  // --from-line (resume_option.hpp)
 
 CLI::App* add(CLI::App& app) {
   auto* s = app.add_subcommand("stream", "Send a G-code program to a controller over Modbus TCP, with progress; "
@@ -56,12 +61,17 @@ CLI::App* add(CLI::App& app) {
   s->add_option("--progress", o.progress, "auto (a bar on a terminal, plain lines otherwise), bar, lines or off")
       ->check(CLI::IsMember({"auto", "bar", "lines", "off"}));
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+  resume.add(s);
+  s->get_option("--abort")->excludes("--from-line");
   s->footer("Ctrl-C (or SIGTERM) stops the controller at once: the sender sends ABORT and says what was "
             "acknowledged and executed (exit 130).\n"
             "Before sending, the program is linted against the profile the controller enforces (its name is in "
-            "the controller's registers); findings refuse it (exit 2) unless --no-preflight.\n\n"
+            "the controller's registers); findings refuse it (exit 2) unless --no-preflight.\n"
+            "With --from-line N the program is resumed part-way (docs/resume.md): from the nearest line at or "
+            "before N where a cut may begin, after a preamble built for the profile the controller enforces.\n\n"
             "Examples:\n"
             "  bezcam stream part.nc --to 127.0.0.1:5020\n"
+            "  bezcam stream part.nc --to 127.0.0.1:5020 --from-line 120\n"
             "  bezcam stream --abort --to 192.168.0.10:502");
   return s;
 }
@@ -163,6 +173,13 @@ std::chrono::milliseconds ms(double seconds) {
 std::atomic<bool> g_interrupted{false};
 extern "C" void on_interrupt(int) { g_interrupted.store(true); }
 
+// Where a finding is: FILE:LINE, the file's own line for a resumed program
+// (a preamble line is named as such).
+std::string finding_place(long line) {
+  const Place p = resume.place_of(line);
+  return p.line ? o.file + ":" + std::to_string(*p.line) : p.to_string();
+}
+
 // The program against the profile the controller enforces: a program it
 // would refuse mid-cut is refused before OPEN.
 void preflight(const std::string& program, const Endpoint& to) {
@@ -181,13 +198,38 @@ void preflight(const std::string& program, const Endpoint& to) {
   if (findings.empty()) return;
   std::string list;
   for (size_t i = 0; i < findings.size() && i < 10; ++i)
-    list += "\n  " + o.file + ":" + std::to_string(findings[i].line) + ": " + findings[i].message + " [" + findings[i].id + "]";
+    list += "\n  " + finding_place(findings[i].line) + ": " + findings[i].message + " [" + findings[i].id + "]";
   if (findings.size() > 10) list += "\n  ... and " + std::to_string(findings.size() - 10) + " more";
   throw InputError(errc::link_preflight, Place::at_file(o.file),
                    std::to_string(findings.size()) + " finding" + (findings.size() == 1 ? "" : "s") +
                        " for machine \"" + m.name + "\", the profile the controller at " + to.str() +
                        " enforces; it would stop the program mid-cut. Nothing was sent (--no-preflight sends anyway):" +
                        list);
+}
+
+// --from-line: the resume is planned for the profile the controller
+// enforces (its dialect, travel and feed limits, safe Z and plunge feed).
+std::string resume_for_controller(std::string program, const Endpoint& to) {
+  const ControllerReport r = controller_status(to, ms(o.timeout));
+  std::optional<MachineProfile> m;
+  try {
+    if (!r.machine.empty()) m = load_profile_option(r.machine);
+  } catch (const Error&) {
+  }
+  if (!m && !o.quiet)
+    std::cerr << "bezcam: warning: the controller enforces profile \"" << r.machine
+              << "\", which is not known here: the resume is planned without its limits (give --safe-z and "
+                 "--plunge-feed)\n";
+  return resume.apply(std::move(program), o.file, m ? &*m : nullptr, o.quiet, "stream");
+}
+
+// A resumed program's alarm names the line of the file, not of the program sent.
+[[noreturn]] void throw_in_file_lines(const Error& e) {
+  if (resume.plan() && e.id() == errc::controller_alarm && e.where().rfind("line ", 0) == 0) {
+    const long line = std::atol(e.where().c_str() + 5);
+    if (line > 0) throw ControllerError(e.id(), resume.place_of(line), e.message());
+  }
+  throw;  // called inside the handler: the error as caught
 }
 
 int run() {
@@ -206,7 +248,8 @@ int run() {
     return 0;
   }
   if (o.file.empty()) throw InputError(errc::usage_stream, Place::at_option("FILE"), "give the program to send (or --abort)");
-  const std::string program = read_file(o.file);
+  std::string program = read_file(o.file);
+  if (resume.active()) program = resume_for_controller(std::move(program), to);
   if (!o.no_preflight) preflight(program, to);
   Display::Style style = Display::Style::lines;
   if (o.quiet || o.progress == "off") style = Display::Style::off;
@@ -232,7 +275,7 @@ int run() {
     r = stream_program(program, to, opt);
   } catch (const Error& e) {
     display.clear();
-    if (e.id() != errc::link_cancelled) throw;
+    if (e.id() != errc::link_cancelled) throw_in_file_lines(e);
     std::cerr << "bezcam: stream: " << e.what() << "\n";
     return 130;  // as a shell reports a program stopped by Ctrl-C
   } catch (...) {
@@ -246,7 +289,11 @@ int run() {
                   human_bytes(r.seconds > 0 ? static_cast<double>(r.bytes) / r.seconds : 0).c_str());
     char crc[16];
     std::snprintf(crc, sizeof crc, "%08X", r.crc);
-    std::cerr << "bezcam: stream: sent " << o.file << " (" << r.bytes << " bytes, " << r.lines << " lines, "
+    std::cerr << "bezcam: stream: sent " << o.file
+              << (resume.plan() ? " from line " + std::to_string(resume.plan()->start_line) + " with a " +
+                                      std::to_string(resume.plan()->preamble_lines) + "-line preamble"
+                                : std::string())
+              << " (" << r.bytes << " bytes, " << r.lines << " lines, "
               << r.chunks << " chunks) to " << to.str() << " in " << rate << "; the controller confirmed CRC-32 "
               << crc << " and executed " << r.lines_executed << " lines (" << r.blocks_executed << " motion blocks)"
               << (r.reconnects ? "; " + std::to_string(r.reconnects) + " reconnections" : std::string()) << "\n";

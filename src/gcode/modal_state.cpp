@@ -143,6 +143,7 @@ void GcodeInterpreter::Impl::run_modal() {
     }
     if (c == 3 || c == 4) {
       st.spindle_on = true;
+      st.spindle_ccw = c == 4;
       mo.noted_spindle = false;
     }
     if (c == 5) st.spindle_on = false;
@@ -158,7 +159,9 @@ void GcodeInterpreter::Impl::run_modal() {
   for (const auto& [c, t] : ln.g) {
     if (c == 610 || c == 611) {
       st.path_tolerance = 0;
+      st.path_mode = c == 611 ? 611 : 61;
     } else if (c == 640) {
+      st.path_mode = 64;
       // G64 P- (LinuxCNC): corners blended within P; without P, as fast as
       // the planner can (no tolerance). Q (naive-CAM merging) is accepted
       // and not modelled.

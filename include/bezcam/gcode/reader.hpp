@@ -45,6 +45,7 @@ struct MachineState {
   double feed = 0;
   double spindle_rpm = 0;
   bool spindle_on = false;
+  bool spindle_ccw = false;  ///< the spindle was last started with M04 (M03: false)
   int tool = 0;
   bool program_end = false;  ///< M02 / M30 seen
   /// Work coordinate system G54..G59 (54..59). The simulated controller's
@@ -57,6 +58,9 @@ struct MachineState {
   int tool_length_h = 0;
   bool coolant_mist = false;   ///< M07 (M09 stops both)
   bool coolant_flood = false;  ///< M08
+  /// Path control mode (group 13): 64 G64, 61 G61, 611 G61.1; 0 until a
+  /// line sets it (the controller's default then applies).
+  int path_mode = 0;
   double dwell_seconds = 0;    ///< G04 P- dwells so far, in seconds
   /// Path mode: -1 until the program sets one (the controller's default
   /// applies), 0 for exact stop (G61, G61.1), the tolerance P of G64 P-,
@@ -113,6 +117,20 @@ class GcodeInterpreter {
   std::vector<MotionBlock> finish();
 
   const MachineState& state() const { return state_; }
+
+  /// What the next line depends on besides state(): the multi-line block
+  /// it may be inside and the words earlier lines left for it. Used to
+  /// resume a program part-way (bezcam/gcode/resume.hpp).
+  struct Continuation {
+    ModalMotion open_block = ModalMotion::none;  ///< the open multi-line block (G06.2/G06.3, G5.2), none when none is
+    int open_line = 0;       ///< the line that opened it
+    bool g5_chain = false;   ///< the last motion was a G5: a G5 without I and J takes its tangent
+    int selected_tool = -1;  ///< the last T word (-1: none); M06 puts it in the spindle
+    int end_line = 0;        ///< the M02 / M30 line, 0 before it
+  };
+  Continuation continuation() const {
+    return {more_.open, more_.open_line, more_.g5_chain, more_.selected_tool, more_.end_line};
+  }
 
  private:
   struct Impl;  // the interpretation of one line (src/gcode/interpreter_impl.hpp)
