@@ -590,9 +590,13 @@ struct Builder {
       for (size_t k = 0; k < mine.size(); ++k) {
         PlanSegment s = std::move(mine[k]);
         if (segs.empty() || (k == 0 && (stop_before || pause_here))) {
+          // The first move may start moving (a window of a longer program
+          // planned at machine pace: Timeline::start_speed); after a pause
+          // the machine is at rest.
+          const bool first = segs.empty() && !pause_here;
           if (!segs.empty()) exact_stop_end(Stop::pause);
           cap_segment_time(s);
-          junction.push_back(0);
+          junction.push_back(first ? tl.start_speed : 0);
           segs.push_back(std::move(s));
           continue;
         }

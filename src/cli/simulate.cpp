@@ -54,6 +54,7 @@ struct Options {
   std::size_t buffer = 4096;
   int max_connections = 8;
   double idle_timeout = 30, session_timeout = 30, exec_delay_ms = 0;
+  std::string time_scale = "1";
   std::vector<std::string> faults;
   std::uint32_t session_base = 0;
   bool quiet = false;
@@ -84,6 +85,10 @@ CLI::App* add(CLI::App& app) {
   s->add_option("--session-timeout", o.session_timeout,
                 "stop a transfer whose sender is silent this many seconds (alarm sender-lost)")
       ->check(positive_number());
+  s->add_option("--time-scale", o.time_scale,
+                "with --listen: execute at machine pace on the profile's motion model, at this multiple of real time "
+                "(0.01 to 100000; default 1, real time), or 'max': as fast as the CPU allows")
+      ->needs(l);
   s->add_option("--exec-delay-ms", o.exec_delay_ms, "time spent per program line: a slow controller")
       ->check(CLI::NonNegativeNumber);
   s->add_option("--fault", o.faults,
@@ -198,6 +203,26 @@ int run() {
   cfg.buffer_bytes = o.buffer;
   cfg.session_timeout = std::chrono::milliseconds(static_cast<long long>(o.session_timeout * 1000));
   cfg.exec_delay = std::chrono::microseconds(static_cast<long long>(o.exec_delay_ms * 1000));
+  if (!o.listen.empty()) {
+    if (o.time_scale != "max") {
+      double k = 0;
+      try {
+        std::size_t used = 0;
+        k = std::stod(o.time_scale, &used);
+        if (used != o.time_scale.size()) k = -1;
+      } catch (const std::exception&) {
+        k = -1;
+      }
+      if (!(k >= 0.01 && k <= 100000))
+        throw InputError(errc::usage_option, Place::at_option("--time-scale"),
+                         "expected a multiple of real time from 0.01 to 100000, or max; found \"" + o.time_scale + "\"");
+      if (!cfg.profile.motion)
+        throw InputError(errc::sim_no_motion_model, Place::at_option("--machine"),
+                         "machine \"" + cfg.profile.name + "\" has no motion model (key \"motion\", docs/machines.md) to "
+                         "execute at machine pace; add one, or give --time-scale max");
+      cfg.time_scale = k;
+    }
+  }
   cfg.first_session = o.session_base;
   cfg.drop_before_chunk = parse_faults("drop-before");
   cfg.drop_after_chunk = parse_faults("drop-after");
@@ -264,8 +289,11 @@ int run() {
   signals.start([&server] { server.stop(); });
   // The readiness line: tests and scripts wait for it (never a sleep).
   std::cout << "bezcam simulate: listening on " << Endpoint{ep.host, server.port()}.str() << " (machine "
-            << o.machine << ", buffer " << o.buffer << " bytes, at most " << o.max_connections << " connections)"
-            << std::endl;
+            << o.machine << ", buffer " << o.buffer << " bytes, at most " << o.max_connections << " connections, "
+            << (o.time_scale == "max" ? std::string("as fast as possible")
+                                      : o.time_scale == "1" ? std::string("real time")
+                                                            : o.time_scale + " x real time")
+            << ")" << std::endl;
   server.run();
   signals.finish();
   ctl.stop();  // the line in progress completes; the trace is flushed

@@ -47,7 +47,8 @@ void print_controller(const ControllerReport& r, const Endpoint& to) {
   std::cout << "\n  machine " << (r.machine.empty() ? "(unnamed)" : r.machine) << ", " << s.lines_executed
             << " lines executed, " << s.ack_bytes << " bytes acknowledged, buffer " << s.buffer_free << " of "
             << s.buffer_capacity << " bytes free, spindle " << ((s.flags & flag::spindle_on) ? "on" : "off")
-            << ", tool " << s.tool << ", " << s.connections << " connection" << (s.connections == 1 ? "" : "s") << "\n";
+            << ", tool " << s.tool << ", " << s.connections << " connection" << (s.connections == 1 ? "" : "s")
+            << ", starved " << s.starved_ms << " ms (" << s.stalls << (s.stalls == 1 ? " stall)" : " stalls)") << "\n";
 }
 
 }  // namespace bezcam::cli

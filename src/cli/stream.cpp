@@ -296,7 +296,10 @@ int run() {
               << " (" << r.bytes << " bytes, " << r.lines << " lines, "
               << r.chunks << " chunks) to " << to.str() << " in " << rate << "; the controller confirmed CRC-32 "
               << crc << " and executed " << r.lines_executed << " lines (" << r.blocks_executed << " motion blocks)"
-              << (r.reconnects ? "; " + std::to_string(r.reconnects) + " reconnections" : std::string()) << "\n";
+              << (r.reconnects ? "; " + std::to_string(r.reconnects) + " reconnections" : std::string())
+              << "; starved " << r.starved_ms << " ms"
+              << (r.stalls ? " (" + std::to_string(r.stalls) + (r.stalls == 1 ? " stall)" : " stalls)") : std::string())
+              << "\n";
   }
   return 0;
 }

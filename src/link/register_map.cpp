@@ -139,6 +139,8 @@ std::array<std::uint16_t, reg::status_count> Status::encode() const {
   put_u32(&r[reg::duplicates], duplicates);
   put_u32(&r[reg::rejects], rejects);
   put_u32(&r[reg::total_bytes], total_bytes);
+  put_u32(&r[reg::starved_ms], starved_ms);
+  put_u32(&r[reg::stalls], stalls);
   return r;
 }
 
@@ -170,6 +172,8 @@ Status Status::decode(std::span<const std::uint16_t> r) {
   s.duplicates = get_u32(&r[reg::duplicates]);
   s.rejects = get_u32(&r[reg::rejects]);
   s.total_bytes = get_u32(&r[reg::total_bytes]);
+  s.starved_ms = get_u32(&r[reg::starved_ms]);
+  s.stalls = get_u32(&r[reg::stalls]);
   return s;
 }
 

@@ -63,6 +63,8 @@ class Sender {
     r.chunks = chunks_;
     r.lines_executed = st_.lines_executed;
     r.blocks_executed = st_.blocks_executed;
+    r.starved_ms = st_.starved_ms;
+    r.stalls = st_.stalls;
     r.reconnects = reconnects_;
     r.seconds = seconds();
     return r;

@@ -206,6 +206,8 @@ Status SimController::status_locked(ConnId c) const {
   s.duplicates = duplicates_;
   s.rejects = rejects_;
   s.total_bytes = total_;
+  s.starved_ms = starved_ms_;
+  s.stalls = stalls_;
   return s;
 }
 
@@ -548,6 +550,7 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
   try {
     const auto blocks = interp.feed_line(line, static_cast<int>(no));
     nblocks = blocks.size();
+    if (pace_) pace_->add(blocks, before, interp.state(), static_cast<int>(no));
     for (const auto& b : blocks) text += trace_block(b);
     text += trace_state(static_cast<int>(no), before, interp.state());
   } catch (const Error& e) {
@@ -619,6 +622,10 @@ void SimController::finish_program(std::unique_lock<std::mutex>& lk, GcodeInterp
   cv_.notify_all();
 }
 
+double SimController::pace_now() const {
+  return std::chrono::duration<double>(Clock::now() - pace_origin_).count() * cfg_.time_scale;
+}
+
 void SimController::exec_loop() {
   std::unique_lock lk(m_);
   std::uint64_t cur_epoch = 0;
@@ -644,27 +651,70 @@ void SimController::exec_loop() {
     if (epoch_ != cur_epoch) {
       cur_epoch = epoch_;
       interp = std::make_unique<GcodeInterpreter>(&cfg_.profile);
+      pace_.reset();
+      if (cfg_.time_scale > 0 && cfg_.profile.motion) pace_ = std::make_unique<MachinePace>(*cfg_.profile.motion);
+      pace_started_ = pace_stalled_ = false;
+      starved_ms_ = stalls_ = 0;
       lk.unlock();
       emit_trace(trace_header(cfg_.profile.name), true);
       lk.lock();
       continue;
     }
     const bool running = state_ == State::receiving || state_ == State::finishing;
+    std::optional<Clock::time_point> machine_wake;  // machine pace: when the machine needs work
     if (running && interp) {
       // 3. Drip feed: execute every complete line as soon as it is in the
-      // buffer; after COMMIT the last line needs no newline.
+      // buffer; after COMMIT the last line needs no newline. At machine
+      // pace, only while the look-ahead window has room.
       const auto nl = buf_.find('\n', head_);
-      if (nl != std::string::npos || (state_ == State::finishing && buffered_locked() > 0)) {
+      const bool line_ready = nl != std::string::npos || (state_ == State::finishing && buffered_locked() > 0);
+      if (line_ready && (!pace_ || !pace_->window_full())) {
+        if (pace_) {
+          if (!pace_started_) pace_started_ = true, pace_origin_ = Clock::now();
+          if (pace_stalled_) {
+            // The machine stood still from stall_from_ until now.
+            const double now = pace_now();
+            const double ms = std::max(0.0, now - stall_from_) * 1000;
+            starved_ms_ += static_cast<std::uint32_t>(std::lround(ms));
+            ++stalls_;
+            pace_->idle_until(now);
+            pace_stalled_ = false;
+            log_locked("machine starved " + std::to_string(std::lround(ms)) + " ms before line " +
+                       std::to_string(line_no_ + 1) + ": the buffer ran dry");
+          }
+        }
         execute_line(lk, *interp, cur_epoch, nl);
         continue;
       }
-      // 4. End of program: every byte confirmed and executed.
-      if (state_ == State::finishing) {
-        finish_program(lk, *interp, cur_epoch);
-        continue;
+      if (pace_ && pace_started_) {
+        // 3b. The machine moves through what it was given; when it needs
+        // more, the planner commits from the window (all of it when no more
+        // program is in reach); when there is nothing, it stands: a stall.
+        const double now = pace_now();
+        if (pace_->committed_until() <= now) {
+          if (pace_->pending() > 0) {
+            pace_->commit(!line_ready);
+            continue;
+          }
+          if (state_ == State::receiving && !pace_stalled_) {
+            pace_stalled_ = true;
+            stall_from_ = pace_->committed_until();
+          }
+        } else {
+          machine_wake = pace_origin_ + std::chrono::duration_cast<Clock::duration>(
+                                            std::chrono::duration<double>(pace_->committed_until() / cfg_.time_scale));
+        }
+      }
+      // 4. End of program: every byte confirmed and executed (and, at
+      // machine pace, the machine at rest at its end).
+      if (state_ == State::finishing && !line_ready && (!machine_wake || !pace_)) {
+        if (!pace_ || pace_->pending() == 0) {
+          finish_program(lk, *interp, cur_epoch);
+          continue;
+        }
       }
       // 5. A full buffer with no line end can never make progress.
-      if (buffered_locked() >= cfg_.buffer_bytes) {
+      if (!line_ready && buffered_locked() >= cfg_.buffer_bytes) {
         raise_alarm_locked(Alarm::line_too_long, line_no_ + 1, errc::sim_line_too_long,
                            "the line is longer than the receive buffer (" + std::to_string(cfg_.buffer_bytes) +
                                " bytes)");
@@ -681,7 +731,9 @@ void SimController::exec_loop() {
                                " ms; the program is incomplete");
         continue;
       }
-      cv_.wait_until(lk, deadline);
+      cv_.wait_until(lk, machine_wake ? std::min(deadline, *machine_wake) : deadline);
+    } else if (machine_wake) {
+      cv_.wait_until(lk, *machine_wake);
     } else {
       cv_.wait(lk);
     }

@@ -90,7 +90,7 @@ def main():
         f.write(PROGRAM)
     trace_file = os.path.join(tmp, "streamed.trace")
     server = subprocess.Popen(
-        [BEZCAM, "simulate", "--listen", "127.0.0.1:0", "--machine", "generic", "--buffer", "512",
+        [BEZCAM, "simulate", "--listen", "127.0.0.1:0", "--time-scale", "max", "--machine", "generic", "--buffer", "512",
          "--trace", trace_file, "-q"],
         stdout=subprocess.PIPE, text=True)
     try:

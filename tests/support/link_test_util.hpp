@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 // Helpers for the link tests: child processes (the real bezcam executable)
 // with readiness read from their stdout, never a sleep; in-process servers
 // on ports the system chooses; programs and traces.
@@ -166,6 +167,11 @@ class SimProcess {
     static int counter = 0;
     std::vector<std::string> argv{BEZCAM_EXE, "simulate", "--listen", "127.0.0.1:" + std::to_string(port)};
     argv.insert(argv.end(), extra.begin(), extra.end());
+    // As fast as the CPU allows unless the test asks for machine pace.
+    if (std::find(extra.begin(), extra.end(), "--time-scale") == extra.end()) {
+      argv.push_back("--time-scale");
+      argv.push_back("max");
+    }
     child_ = std::make_unique<Child>(argv, dir / ("sim-stderr-" + std::to_string(++counter) + ".txt"));
     const auto line = child_->read_line();
     if (!line) throw std::runtime_error("the simulator did not become ready: " + child_->stderr_text());

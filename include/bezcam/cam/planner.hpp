@@ -38,6 +38,10 @@ struct Timeline {
   /// does not know (MotionBlock::from_known) starts from here, or from
   /// where the previous block left it.
   Vec3 start{0, 0, 0};
+  /// Speed along the path at the start (units/s): 0 from rest; a window
+  /// of a program planned piece by piece starts at the speed the piece
+  /// before left it (sim/machine_pace.hpp). Capped by the first move's.
+  double start_speed = 0;
   std::vector<MotionBlock> blocks;
   std::vector<double> path_tolerance;  ///< one per block
   std::vector<PlanPause> pauses;       ///< in order of before_block

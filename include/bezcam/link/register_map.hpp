@@ -55,7 +55,9 @@ inline constexpr std::uint16_t connections = 35;      ///< open Modbus connectio
 inline constexpr std::uint16_t duplicates = 36;       ///< u32: retransmitted chunks acknowledged again
 inline constexpr std::uint16_t rejects = 38;          ///< u32: requests refused (all connections)
 inline constexpr std::uint16_t total_bytes = 40;      ///< u32: size announced by OPEN, 0 unknown
-inline constexpr std::uint16_t status_count = 48;     ///< 40..47 reserved (read 0)
+inline constexpr std::uint16_t starved_ms = 42;       ///< u32: machine time stood waiting for program data (ms)
+inline constexpr std::uint16_t stalls = 44;           ///< u32: times the machine ran dry mid-program
+inline constexpr std::uint16_t status_count = 48;     ///< 46..47 reserved (read 0)
 // --- Text, read-only, same FC 03 / FC 04 rule.
 inline constexpr std::uint16_t alarm_text = 64;       ///< 128 bytes: the alarm's message, NUL padded
 inline constexpr std::uint16_t alarm_text_count = 64;
@@ -170,6 +172,10 @@ struct Status {
   std::uint32_t feed_tenths = 0, spindle_rpm = 0;
   std::uint16_t flags = 0, tool = 0, motion = 0xFFFF, connections = 0;
   std::uint32_t duplicates = 0, rejects = 0, total_bytes = 0;
+  /// Machine-pace execution (docs/motion.md): machine time (ms) the
+  /// program stood still because the buffer ran dry before its end, and
+  /// how many times that happened. 0 when executing as fast as possible.
+  std::uint32_t starved_ms = 0, stalls = 0;
 
   /// Encodes into reg::status_count registers.
   std::array<std::uint16_t, reg::status_count> encode() const;

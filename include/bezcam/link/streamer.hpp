@@ -58,6 +58,9 @@ struct StreamResult {
   std::uint32_t session = 0, crc = 0;
   std::uint64_t bytes = 0, lines = 0, chunks = 0;
   std::uint32_t lines_executed = 0, blocks_executed = 0;
+  /// The controller's count of machine time stood waiting for data (ms)
+  /// and of those stalls (status registers starved_ms, stalls).
+  std::uint32_t starved_ms = 0, stalls = 0;
   int reconnects = 0;
   double seconds = 0;
 };

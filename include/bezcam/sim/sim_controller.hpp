@@ -30,6 +30,7 @@
 #include "bezcam/link/register_map.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/sim/machine_pace.hpp"
 
 namespace bezcam::sim {
 
@@ -58,6 +59,14 @@ struct ControllerConfig {
   std::chrono::milliseconds session_timeout{30000};
   /// Time the executor spends per program line: a slow controller.
   std::chrono::microseconds exec_delay{0};
+  /// Machine pace (docs/motion.md): > 0 executes with the profile's
+  /// motion model at this multiple of real time (1: real time), the
+  /// program draining from the buffer only as the machine moves through
+  /// it, and counts the stalls when the buffer runs dry mid-program
+  /// (status registers starved_ms and stalls, the operator's log). 0 (the
+  /// default, and `--time-scale max`): as fast as the CPU allows. Needs a
+  /// profile with a motion model.
+  double time_scale = 0;
   /// Session id of the first transfer, the next ones counting up; 0 draws
   /// them at random (the default: a restarted controller must not reuse
   /// the id of the transfer it lost). Fixed values are for tests and docs.
@@ -186,6 +195,13 @@ class SimController {
   bool final_traced_ = false;
   long line_no_ = 0, lines_done_ = 0, blocks_done_ = 0;
   MachineState machine_;
+  // Machine pace (executor thread; the figures guarded by m_).
+  std::unique_ptr<MachinePace> pace_;
+  std::chrono::steady_clock::time_point pace_origin_{};
+  bool pace_started_ = false, pace_stalled_ = false;
+  double stall_from_ = 0;  // machine time the machine ran dry
+  std::uint32_t starved_ms_ = 0, stalls_ = 0;
+  double pace_now() const;  // machine time now
 
   std::thread exec_;
 };
