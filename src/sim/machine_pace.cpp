@@ -7,7 +7,9 @@
 namespace bezcam::sim {
 
 MachinePace::MachinePace(const MotionModel& model)
-    : model_(model), window_(static_cast<std::size_t>(std::max(2, model.lookahead_blocks))) {}
+    : model_(model),
+      look_(static_cast<std::size_t>(std::max(1, model.lookahead_blocks))),
+      window_(2 * look_) {}
 
 void MachinePace::add(const std::vector<MotionBlock>& blocks, const MachineState& before, const MachineState& after,
                       int line) {
@@ -22,7 +24,9 @@ void MachinePace::commit(bool dry) {
   tl.start_speed = speed_;
   const std::size_t n = pending_.blocks.size();
   if (n == 0) dry = true;  // only pauses: they are taken now
-  const std::size_t take = dry ? n : std::max<std::size_t>(1, n > window_ / 2 ? n - window_ / 2 : 1);
+  // Commit all but the look-ahead's worth: the planner limits each committed
+  // block by what it sees ahead, and all of that is in the window.
+  const std::size_t take = dry ? n : std::max<std::size_t>(1, n > look_ ? n - look_ : 1);
   const MotionPlan plan = plan_motion(tl, model_);
   // Time to the first block left (pauses before it included), and the
   // speed there.

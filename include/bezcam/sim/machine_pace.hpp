@@ -3,8 +3,10 @@
 /// the simulated controller's executor interprets lines ahead into a
 /// look-ahead window, and the machine takes blocks from it only as fast as
 /// the motion model (cam/planner.hpp) moves through them. Receding horizon:
-/// when the machine needs work, the window is planned from the speed the
-/// machine has and its first half is committed; the rest waits for the
+/// when the machine needs work, the window (twice the look-ahead) is
+/// planned from the speed the machine has and all but the last look-ahead's
+/// worth of blocks are committed (each limited by what the planner sees
+/// ahead of it, as in the whole program's plan); the rest waits for the
 /// blocks behind it. When no more program is in reach the whole
 /// window is committed with a stop at its end, and if the machine then
 /// stands waiting for data, that is a stall (starvation).
@@ -45,7 +47,8 @@ class MachinePace {
 
  private:
   const MotionModel& model_;
-  std::size_t window_;
+  std::size_t look_;    // the controller's look-ahead, blocks
+  std::size_t window_;  // blocks interpreted ahead: twice the look-ahead
   Timeline pending_;
   Vec3 start_{0, 0, 0};  // where the machine left the last committed block
   double speed_ = 0;     // and at what speed
