@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -159,6 +160,44 @@ double reachable(double v0, double L, double a, double j, double cap) {
   return lo;
 }
 
+// Points of a curve block at block parameters t in [0, 1], fast: NURBS
+// blocks are cut into their Bézier pieces once (one per knot span), so that
+// each point costs a Bézier evaluation.
+class CurvePoints {
+ public:
+  explicit CurvePoints(const MotionBlock& b) : b_(b) {
+    if (b.kind != BlockKind::nurbs) return;
+    try {
+      pieces_ = block_to_bezier(b);
+    } catch (const std::exception&) {
+      pieces_.clear();
+    }
+    const int p = b.order - 1;
+    if (p < 1 || b.knots.size() < b.ctrl.size() + static_cast<size_t>(b.order)) return;
+    const double d0 = b.knots[static_cast<size_t>(p)], d1 = b.knots[b.knots.size() - 1 - static_cast<size_t>(p)];
+    breaks_.push_back(d0);
+    for (size_t i = static_cast<size_t>(p) + 1; i + static_cast<size_t>(p) < b.knots.size(); ++i)
+      if (b.knots[i] > breaks_.back() && b.knots[i] < d1) breaks_.push_back(b.knots[i]);
+    breaks_.push_back(d1);
+    if (breaks_.size() != pieces_.size() + 1) pieces_.clear();  // not one piece per span: evaluate directly
+  }
+  Vec3 at(double t) const {
+    if (pieces_.empty()) return evaluate_block(b_, t);
+    if (t <= 0) return b_.from;
+    if (t >= 1) return b_.to;
+    const double u = breaks_.front() + t * (breaks_.back() - breaks_.front());
+    const auto it = std::upper_bound(breaks_.begin(), breaks_.end(), u);
+    const size_t j = static_cast<size_t>(std::clamp<long>(it - breaks_.begin() - 1, 0, static_cast<long>(pieces_.size()) - 1));
+    const double w = breaks_[j + 1] - breaks_[j];
+    return evaluate(pieces_[j], w > 0 ? (u - breaks_[j]) / w : 0);
+  }
+
+ private:
+  const MotionBlock& b_;
+  std::vector<Bezier> pieces_;
+  std::vector<double> breaks_;
+};
+
 struct Builder {
   Builder(const Timeline& t, const MotionModel& m) : tl(t), model(m), period(m.period_s), scale(mm_per_unit(t.units)) {}
   const Timeline& tl;
@@ -252,7 +291,9 @@ struct Builder {
     pb.line = b.line;
     pb.first_line = b.first_line ? b.first_line : b.line;
     pb.kind = b.kind;
-    pb.length = block_length(b);
+    // Lines and arcs exactly; curves by the planner's own samples below.
+    const bool curved_block = b.kind == BlockKind::nurbs || b.kind == BlockKind::bezier;
+    pb.length = curved_block ? 0 : block_length(b);
     const bool rapid = b.kind == BlockKind::rapid;
     const size_t first = segs.size();
     if (b.kind == BlockKind::rapid || b.kind == BlockKind::linear) {
@@ -318,7 +359,8 @@ struct Builder {
         pb.clamped = true;
       }
       std::vector<Vec3> pts(static_cast<size_t>(pieces * kSub + 1));
-      for (int i = 0; i <= pieces * kSub; ++i) pts[static_cast<size_t>(i)] = evaluate_block(b, static_cast<double>(i) / (pieces * kSub));
+      const CurvePoints curve(b);
+      for (int i = 0; i <= pieces * kSub; ++i) pts[static_cast<size_t>(i)] = curve.at(static_cast<double>(i) / (pieces * kSub));
       for (int k = 0; k < pieces; ++k) {
         PlanSegment s;
         s.block = bi;
@@ -327,12 +369,14 @@ struct Builder {
         p.block = bi;
         p.s.push_back(0);
         p.t.push_back(static_cast<double>(k * kSub) / (pieces * kSub));
+        p.pts.push_back(pts[static_cast<size_t>(k * kSub)]);
         double len = 0, rmin = kInf;
         for (int i = 1; i <= kSub; ++i) {
           const size_t at = static_cast<size_t>(k * kSub + i);
           len += dist(pts[at - 1], pts[at]);
           p.s.push_back(len);
           p.t.push_back(static_cast<double>(at) / (pieces * kSub));
+          p.pts.push_back(pts[at]);
           if (at + 1 < pts.size()) rmin = std::min(rmin, circumradius(pts[at - 1], pts[at], pts[at + 1]));
         }
         p.length = len;
@@ -361,6 +405,7 @@ struct Builder {
           const double d = 2 * dot(nrm, nrm);
           if (d > 0) s.center = a + (cross(nrm, ab) * dot(ac, ac) + cross(ac, nrm) * dot(ab, ab)) * (1 / d);
         }
+        pb.length += len;
         if (len > 0) segs.push_back(std::move(s));
       }
       pb.programmed_feed = b.feed;
@@ -504,7 +549,7 @@ struct Builder {
   // (each arc lends at most a part of its sweep: 2/3 of the one before,
   // 1/3 of the one after, and half of it for a line), the shape kept.
   // -1 when no blend fits.
-  double curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk, const MotionBlock& b,
+  double curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk, const MotionBlock&,
                        const Vec3& u1, const Vec3& u2, double phi, double tol) {
     const Vec3 P = pbk.to;
     const double theta_tan = 0.5 * (kPi - phi);
@@ -515,7 +560,7 @@ struct Builder {
       if (convex) theta = std::min(theta, theta_tan - phi_max / 4);
       L1 = convex ? std::sin(phi_max / 4) * prev.radius : phi_max * prev.radius;
     } else {
-      L1 = std::min(prev.length, kBlendFraction * block_length(pbk));
+      L1 = std::min(prev.length, kBlendFraction * plan.blocks[static_cast<size_t>(prev.block)].length);
     }
     if (next.curved && std::isfinite(next.radius)) {
       const bool convex = dot(P - next.center, u1) >= 0;
@@ -532,7 +577,8 @@ struct Builder {
     normal = norm(normal) > 1e-9 ? unit(normal) : Vec3{0, 0, 1};
     const double aplane = in_plane(normal, lim.amax), vplane = in_plane(normal, lim.vmax);
     const double an = kNormalShare * aplane;
-    const double T = std::min({tol, kToleranceFraction * block_length(pbk), kToleranceFraction * block_length(b)});
+    const double T = std::min({tol, kToleranceFraction * plan.blocks[static_cast<size_t>(prev.block)].length,
+                               kToleranceFraction * plan.blocks[static_cast<size_t>(next.block)].length});
     if (!(T > 0)) return -1;
     const double d_tol = std::cos(theta) * T / (1 - std::sin(theta));
     const double d_geom = std::min({L1, L2, d_tol});
@@ -712,13 +758,23 @@ struct Builder {
         end_of[i] = e;  // segments [i, e) are seen
         (void)blocks_in;
       }
+      // The least acceleration over each window, by a sliding minimum (both
+      // ends only move forward).
+      std::deque<size_t> mins;
+      size_t pushed = 0;
       for (size_t i = 0; i < n; ++i) {
         // Entering segment i, the controller is still executing segment
         // i - 1: it sees the window that began there.
         const size_t stop = end_of[i > 0 ? i - 1 : 0];
         if (stop >= n) continue;  // sees the program's end: the normal passes cover it
+        for (; pushed < stop; ++pushed) {
+          while (!mins.empty() && segs[mins.back()].accel >= segs[pushed].accel) mins.pop_back();
+          mins.push_back(pushed);
+        }
+        while (!mins.empty() && mins.front() < i) mins.pop_front();
+        const double a_min = mins.empty() ? segs[i].accel : segs[mins.front()].accel;
         // A window long enough to stop from the top speed does not limit.
-        const double dist_needed = ramp_distance(0, segs[i].vmax, minimum_accel(i, stop), 0);
+        const double dist_needed = ramp_distance(0, segs[i].vmax, a_min, 0);
         if (prefix[stop] - prefix[i] >= dist_needed * 1.0001) continue;
         double w = 0;
         for (size_t k = stop; k-- > i;) w = std::min(reachable(w, segs[k].length, segs[k].accel, 0, segs[k].vmax), v[k]);
@@ -785,12 +841,6 @@ struct Builder {
     s.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
   }
   std::vector<bool> lookahead_limited_;
-
-  double minimum_accel(size_t from, size_t to) const {
-    double a = kInf;
-    for (size_t k = from; k < to; ++k) a = std::min(a, segs[k].accel);
-    return a;
-  }
 
   void totals() {
     double t = 0;
@@ -921,6 +971,9 @@ Vec3 PlanSegment::point_at(double s, const std::vector<MotionBlock>& blocks) con
         size_t i = static_cast<size_t>(std::clamp<long>(it - p.s.begin(), 1, static_cast<long>(p.s.size()) - 1));
         const double ds = p.s[i] - p.s[i - 1];
         const double f = ds > 0 ? (s - p.s[i - 1]) / ds : 0;
+        // Curves: between the points the planner sampled (a few hundred
+        // per block); arcs exactly.
+        if (p.pts.size() == p.s.size()) return p.pts[i - 1] + (p.pts[i] - p.pts[i - 1]) * f;
         return evaluate_block(b, p.t[i - 1] + f * (p.t[i] - p.t[i - 1]));
       }
     }

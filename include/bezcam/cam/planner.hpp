@@ -80,6 +80,7 @@ struct PlanSegment {
     double radius = 0, angle = 0;   ///< arc
     int block = -1;                 ///< block: index in Timeline::blocks
     std::vector<double> s, t;       ///< block: arc length -> block parameter table
+    std::vector<Vec3> pts;          ///< curves: the points at those parameters
   };
   std::vector<Piece> pieces;
   int block = -1;        ///< the block it belongs to (blends: the block before the corner)
