@@ -207,8 +207,6 @@ struct Builder {
   double scale;  // mm per program unit
   std::vector<PlanSegment> segs;
   std::vector<double> junction;   // junction[i]: largest speed entering segs[i] (0: stop)
-  std::vector<double> deviation;  // per junction, program units
-  std::vector<int> blend_line;
   MotionPlan plan;
 
   double path_tolerance(size_t block) const {
@@ -345,10 +343,8 @@ struct Builder {
       const int pieces = std::clamp(static_cast<int>(4 * std::max<size_t>(b.ctrl.size(), 2)), 8, 256);
       constexpr int kSub = 12;
       const Vec3 n{0, 0, 1};
-      Vec3 span = b.to - b.from;
       bool planar = true;
       for (const Vec3& c : b.ctrl) planar = planar && std::abs(c.z - b.from.z) < 1e-12;
-      (void)span;
       const double vax = planar ? in_plane(n, lim.vmax) : std::min({lim.vmax.x, lim.vmax.y, lim.vmax.z});
       const double aax = arc_accel(planar ? in_plane(n, lim.amax) : std::min({lim.amax.x, lim.amax.y, lim.amax.z}));
       double vfeed = b.feed / 60;
@@ -610,7 +606,6 @@ struct Builder {
 
   void build() {
     size_t pause = 0;
-    std::vector<PlanSegment> pending;
     bool stop_before = true;  // the machine is at rest
     for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
       bool pause_here = false;
@@ -618,7 +613,6 @@ struct Builder {
         pause_here = true;
         ++pause;
       }
-      const size_t before = segs.size();
       std::vector<PlanSegment> mine;
       {
         // Build this block's segments aside, then join them.
@@ -628,7 +622,6 @@ struct Builder {
         mine.swap(segs);
         segs.swap(saved);
       }
-      (void)before;
       const MotionBlock& b = tl.blocks[bi];
       // A block that does not move (its end is where it starts) takes no
       // time and makes no corner: controllers drop it.
@@ -745,7 +738,6 @@ struct Builder {
       std::vector<size_t> end_of(n);
       // Window end: the segment after `window` distinct blocks.
       size_t e = 0;
-      int blocks_in = 0;
       int last_block = -2;
       std::vector<int> bcount(n + 1, 0);
       for (size_t i = 0; i < n; ++i) {
@@ -756,7 +748,6 @@ struct Builder {
         if (e < i) e = i;
         while (e < n && bcount[e + 1] - bcount[i] <= window) ++e;
         end_of[i] = e;  // segments [i, e) are seen
-        (void)blocks_in;
       }
       // The least acceleration over each window, by a sliding minimum (both
       // ends only move forward).
