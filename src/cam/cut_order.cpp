@@ -1,0 +1,883 @@
+// The cut-order planner (cam/cut_order.hpp, docs/cut-order.md).
+//
+// Nesting: closed contours are indexed by their bounding boxes (sorted by
+// the left edge); a candidate pair survives only when the inner box lies in
+// the outer box, and only then are the inner's vertices located in the
+// outer polygon, which is binned in horizontal bands so that one location
+// reads the few edges of one band.
+//
+// Order: the contours between two fixed (not movable) ones form a segment,
+// planned from the end of the previous fixed contour (or home) to the start
+// of the next (or nowhere). In a segment, the precedence "inner before
+// outer" is a DAG (find_nesting never makes a cycle). Two tours are built,
+// nearest neighbour under the precedence and the written order made valid
+// (stable topological sort), both improved by local search (start choice,
+// Or-opt, 2-opt over K nearest neighbours, each move checked against the
+// precedence), and the shorter one is kept.
+#include "bezcam/cam/cut_order.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <queue>
+#include <stdexcept>
+#include <string>
+
+namespace bezcam {
+namespace {
+
+double dxy(const Vec3& a, const Vec3& b) {
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+double dist_to_seg_xy(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const double abx = b.x - a.x, aby = b.y - a.y;
+  const double len2 = abx * abx + aby * aby;
+  double s = 0;
+  if (len2 > 0) s = std::clamp(((p.x - a.x) * abx + (p.y - a.y) * aby) / len2, 0.0, 1.0);
+  const double dx = a.x + abx * s - p.x, dy = a.y + aby * s - p.y;
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+struct Box2 {
+  double lx = HUGE_VAL, ly = HUGE_VAL, hx = -HUGE_VAL, hy = -HUGE_VAL;
+  void add(const Vec3& p) {
+    lx = std::min(lx, p.x);
+    ly = std::min(ly, p.y);
+    hx = std::max(hx, p.x);
+    hy = std::max(hy, p.y);
+  }
+  bool contains(const Box2& in, double eps) const {
+    return in.lx >= lx - eps && in.ly >= ly - eps && in.hx <= hx + eps && in.hy <= hy + eps;
+  }
+  /// Distance from p to the box (0 inside).
+  double gap(const Vec3& p) const {
+    const double dx = std::max({lx - p.x, 0.0, p.x - hx});
+    const double dy = std::max({ly - p.y, 0.0, p.y - hy});
+    return std::sqrt(dx * dx + dy * dy);
+  }
+  double gap(const Box2& o) const {
+    const double dx = std::max({lx - o.hx, 0.0, o.lx - hx});
+    const double dy = std::max({ly - o.hy, 0.0, o.ly - hy});
+    return std::sqrt(dx * dx + dy * dy);
+  }
+  Vec3 center() const { return {(lx + hx) / 2, (ly + hy) / 2}; }
+};
+
+/// Start candidates of a contour: the distinct vertices of a closed one
+/// (the repeated last vertex left out), all vertices of an open one.
+size_t vertex_count(const OrderContour& c) {
+  const size_t n = c.outline.size();
+  if (c.closed && n >= 2 && c.outline.front().x == c.outline.back().x && c.outline.front().y == c.outline.back().y)
+    return n - 1;
+  return n;
+}
+
+double ring_area(const OrderContour& c, size_t n) {
+  double a = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const Vec3& p = c.outline[k];
+    const Vec3& q = c.outline[(k + 1) % n];
+    a += p.x * q.y - q.x * p.y;
+  }
+  return std::abs(a) / 2;
+}
+
+enum class Where { outside, on, inside };
+
+/// A closed polygon for point location with a tolerance, its edges binned
+/// in horizontal bands.
+class Ring {
+ public:
+  Ring(const std::vector<Vec3>& pts, size_t n, const Box2& box, double tol) : pts_(&pts), n_(n), box_(box), tol_(tol) {
+    nb_ = std::clamp<size_t>(n / 2, 1, 8192);
+    const double h = box.hy - box.ly;
+    if (!(h > 0)) nb_ = 1;
+    inv_h_ = nb_ > 1 ? static_cast<double>(nb_) / h : 0;
+    std::vector<uint32_t> count(nb_ + 1, 0);
+    auto range = [&](size_t k) {
+      const Vec3& a = pts[k];
+      const Vec3& b = pts[(k + 1) % n];
+      return std::pair{bin(std::min(a.y, b.y) - tol), bin(std::max(a.y, b.y) + tol)};
+    };
+    for (size_t k = 0; k < n; ++k) {
+      const auto [b0, b1] = range(k);
+      for (size_t b = b0; b <= b1; ++b) ++count[b + 1];
+    }
+    for (size_t b = 0; b < nb_; ++b) count[b + 1] += count[b];
+    start_ = count;
+    edges_.resize(count[nb_]);
+    for (size_t k = 0; k < n; ++k) {
+      const auto [b0, b1] = range(k);
+      for (size_t b = b0; b <= b1; ++b) edges_[count[b]++] = static_cast<uint32_t>(k);
+    }
+  }
+
+  Where locate(const Vec3& p) const {
+    if (p.x < box_.lx - tol_ || p.x > box_.hx + tol_ || p.y < box_.ly - tol_ || p.y > box_.hy + tol_)
+      return Where::outside;
+    const size_t b = bin(p.y);
+    bool in = false;
+    const auto& pts = *pts_;
+    for (uint32_t i = start_[b]; i < start_[b + 1]; ++i) {
+      const size_t k = edges_[i];
+      const Vec3& a = pts[k];
+      const Vec3& c = pts[(k + 1) % n_];
+      if (dist_to_seg_xy(p, a, c) <= tol_) return Where::on;
+      if ((a.y > p.y) != (c.y > p.y)) {
+        const double x = a.x + (p.y - a.y) * (c.x - a.x) / (c.y - a.y);
+        if (p.x < x) in = !in;
+      }
+    }
+    return in ? Where::inside : Where::outside;
+  }
+
+ private:
+  size_t bin(double y) const {
+    if (nb_ == 1) return 0;
+    const double t = std::floor((y - box_.ly) * inv_h_);
+    if (!(t > 0)) return 0;
+    if (t >= static_cast<double>(nb_ - 1)) return nb_ - 1;
+    return static_cast<size_t>(t);
+  }
+
+  const std::vector<Vec3>* pts_;
+  size_t n_;
+  Box2 box_;
+  double tol_;
+  size_t nb_ = 1;
+  double inv_h_ = 0;
+  std::vector<uint32_t> start_, edges_;
+};
+
+double tolerance_of(std::span<const OrderContour> cs, const CutOrderOptions& o) {
+  if (o.touch_tolerance > 0) return o.touch_tolerance;
+  double m = 1;
+  for (const auto& c : cs)
+    for (const auto& p : c.outline) m = std::max({m, std::abs(p.x), std::abs(p.y)});
+  return 1e-9 * m;
+}
+
+void check_input(std::span<const OrderContour> cs) {
+  for (size_t i = 0; i < cs.size(); ++i) {
+    if (cs[i].outline.empty()) throw std::invalid_argument("cut order: contour " + std::to_string(i) + " has no vertex");
+    for (const auto& p : cs[i].outline)
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw std::invalid_argument("cut order: contour " + std::to_string(i) + " has a non-finite coordinate");
+  }
+}
+
+std::vector<std::pair<size_t, size_t>> nesting_of(std::span<const OrderContour> cs, double tol) {
+  const size_t n = cs.size();
+  std::vector<Box2> box(n);
+  std::vector<size_t> nv(n);
+  std::vector<double> area(n, 0);
+  for (size_t i = 0; i < n; ++i) {
+    for (const auto& p : cs[i].outline) box[i].add(p);
+    nv[i] = vertex_count(cs[i]);
+    if (cs[i].closed) area[i] = ring_area(cs[i], nv[i]);
+  }
+  // The closed contours that can enclose, by the left edge of their box.
+  std::vector<size_t> outers;
+  for (size_t i = 0; i < n; ++i)
+    if (cs[i].closed && nv[i] >= 3 && area[i] > 0) outers.push_back(i);
+  std::sort(outers.begin(), outers.end(), [&](size_t a, size_t b) {
+    return box[a].lx != box[b].lx ? box[a].lx < box[b].lx : a < b;
+  });
+  std::vector<std::optional<Ring>> ring(n);
+  std::vector<std::pair<size_t, size_t>> out;
+  for (size_t a = 0; a < n; ++a) {
+    const auto end = std::upper_bound(outers.begin(), outers.end(), box[a].lx + tol,
+                                      [&](double x, size_t b) { return x < box[b].lx; });
+    for (auto it = outers.begin(); it != end; ++it) {
+      const size_t b = *it;
+      if (b == a || !box[b].contains(box[a], tol)) continue;
+      if (cs[a].closed && !(area[a] < area[b] || (area[a] == area[b] && a < b))) continue;
+      if (!ring[b]) ring[b].emplace(cs[b].outline, nv[b], box[b], tol);
+      const Ring& r = *ring[b];
+      const auto& pa = cs[a].outline;
+      // Vertices first; when all lie on the boundary, segment midpoints.
+      bool outside = false, inside = false;
+      for (size_t k = 0; k < nv[a] && !outside; ++k) {
+        const Where w = r.locate(pa[k]);
+        outside = w == Where::outside;
+        inside = inside || w == Where::inside;
+      }
+      if (outside) continue;
+      if (!inside) {
+        const size_t segs = cs[a].closed ? nv[a] : nv[a] - (nv[a] > 0 ? 1 : 0);
+        for (size_t k = 0; k < segs && !outside && !inside; ++k) {
+          const Where w = r.locate((pa[k] + pa[(k + 1) % nv[a]]) * 0.5);
+          outside = w == Where::outside;
+          inside = w == Where::inside;
+        }
+        if (outside) continue;
+      }
+      out.emplace_back(a, b);  // inside, or wholly on the boundary
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// ---- planning a segment -------------------------------------------------
+
+struct Tour {
+  std::vector<uint32_t> seq;  // local nodes, with the home sentinel first and the tail sentinel last
+  std::vector<size_t> start;  // per local node
+  std::vector<char> rev;      // per local node
+};
+
+class Segment {
+ public:
+  Segment(std::span<const OrderContour> cs, std::vector<size_t> ids, Vec3 from, std::optional<Vec3> to,
+          const std::vector<std::pair<size_t, size_t>>& local_nesting, double eps)
+      : cs_(cs), ids_(std::move(ids)), m_(ids_.size()), home_(static_cast<uint32_t>(m_)),
+        tail_(static_cast<uint32_t>(m_ + 1)), from_(from), to_(to), eps_(eps) {
+    preds_.resize(m_);
+    succs_.resize(m_);
+    for (const auto& [in, out] : local_nesting) {
+      preds_[out].push_back(static_cast<uint32_t>(in));
+      succs_[in].push_back(static_cast<uint32_t>(out));
+    }
+    box_.resize(m_);
+    nv_.resize(m_);
+    for (size_t u = 0; u < m_; ++u) {
+      for (const auto& p : c(u).outline) box_[u].add(p);
+      nv_[u] = vertex_count(c(u));
+    }
+    build_neighbours();
+  }
+
+  size_t size() const { return m_; }
+
+  /// Nearest neighbour under the precedence.
+  Tour nearest() const {
+    Tour t = fresh();
+    std::vector<size_t> waiting(m_);
+    std::vector<uint32_t> avail;
+    for (size_t u = 0; u < m_; ++u) {
+      waiting[u] = preds_[u].size();
+      if (waiting[u] == 0) avail.push_back(static_cast<uint32_t>(u));
+    }
+    Vec3 p = from_;
+    std::vector<double> lb;
+    while (!avail.empty()) {
+      lb.resize(avail.size());
+      double ub = HUGE_VAL;
+      for (size_t i = 0; i < avail.size(); ++i) {
+        const uint32_t u = avail[i];
+        lb[i] = box_[u].gap(p);
+        ub = std::min(ub, dxy(p, c(u).outline.front()));
+      }
+      size_t best_i = 0, best_start = 0;
+      bool best_rev = false;
+      double best = HUGE_VAL;
+      for (size_t i = 0; i < avail.size(); ++i) {
+        if (lb[i] > ub || lb[i] > best) continue;
+        const uint32_t u = avail[i];
+        const auto& o = c(u).outline;
+        double d = HUGE_VAL;
+        size_t s = 0;
+        bool r = false;
+        if (c(u).closed) {
+          for (size_t k = 0; k < nv_[u]; ++k) {
+            const double dk = dxy(p, o[k]);
+            if (dk < d) d = dk, s = k;
+          }
+        } else {
+          d = dxy(p, o.front());
+          if (c(u).reversible && dxy(p, o.back()) < d) d = dxy(p, o.back()), s = o.size() - 1, r = true;
+        }
+        if (d < best || (d == best && u < avail[best_i])) best = d, best_i = i, best_start = s, best_rev = r;
+      }
+      const uint32_t u = avail[best_i];
+      t.seq.insert(t.seq.end() - 1, u);
+      t.start[u] = best_start;
+      t.rev[u] = best_rev;
+      p = exit(t, u);
+      avail[best_i] = avail.back();
+      avail.pop_back();
+      for (uint32_t o : succs_[u])
+        if (--waiting[o] == 0) avail.push_back(o);
+    }
+    return t;
+  }
+
+  /// The written order made valid: stable topological sort (the lowest
+  /// index whose inner contours are all cut comes next), written starts.
+  Tour written() const {
+    Tour t = fresh();
+    std::vector<size_t> waiting(m_);
+    std::priority_queue<uint32_t, std::vector<uint32_t>, std::greater<>> ready;
+    for (size_t u = 0; u < m_; ++u) {
+      waiting[u] = preds_[u].size();
+      if (waiting[u] == 0) ready.push(static_cast<uint32_t>(u));
+    }
+    while (!ready.empty()) {
+      const uint32_t u = ready.top();
+      ready.pop();
+      t.seq.insert(t.seq.end() - 1, u);
+      for (uint32_t o : succs_[u])
+        if (--waiting[o] == 0) ready.push(o);
+    }
+    return t;
+  }
+
+  double cost(const Tour& t) const {
+    double s = 0;
+    for (size_t i = 0; i + 1 < t.seq.size(); ++i) s += link(t, t.seq[i], t.seq[i + 1]);
+    return s;
+  }
+
+  /// Local search until no move shortens the tour.
+  void improve(Tour& t) const {
+    std::vector<size_t> pos(m_ + 2);
+    for (int round = 0; round < 200; ++round) {
+      bool any = starts(t);
+      any = or_opt(t, pos) || any;
+      any = two_opt(t, pos) || any;
+      if (!any) break;
+    }
+    starts(t);
+  }
+
+  /// The shortest tour, by depth-first search over the orders that keep
+  /// the precedence (branch and bound), each extended by a dynamic programme
+  /// over the choices of start and direction. Empty when over the budget.
+  std::optional<Tour> exact(size_t limit) const {
+    if (m_ == 0 || m_ > limit) return std::nullopt;
+    std::vector<std::vector<Choice>> ch(m_);
+    size_t widest = 1;
+    for (uint32_t u = 0; u < m_; ++u) {
+      choices(u, ch[u]);
+      widest = std::max(widest, ch[u].size());
+    }
+    double work = static_cast<double>(widest * widest) * 2.72;
+    for (size_t k = 2; k <= m_; ++k) work *= static_cast<double>(k);
+    if (work > 2e7) return std::nullopt;
+
+    std::vector<std::vector<double>> acc(m_ + 1);
+    std::vector<std::vector<uint32_t>> back(m_ + 1);
+    std::vector<uint32_t> order(m_ + 1, home_), best_order;
+    std::vector<std::vector<uint32_t>> best_back;
+    std::vector<size_t> waiting(m_);
+    std::vector<char> used(m_, 0);
+    for (size_t u = 0; u < m_; ++u) waiting[u] = preds_[u].size();
+    const std::vector<Choice> home_choice = {{from_, from_, 0, 0}};
+    acc[0] = {0.0};
+    double best = HUGE_VAL;
+    size_t best_last = 0;
+    const Tour probe = fresh();
+    std::function<void(size_t)> dfs = [&](size_t depth) {
+      const auto& pc = depth == 0 ? home_choice : ch[order[depth]];
+      if (depth == m_) {
+        for (size_t q = 0; q < pc.size(); ++q) {
+          const double d = acc[depth][q] + to(probe, pc[q].out, tail_);
+          if (d < best) best = d, best_last = q, best_order = order, best_back = back;
+        }
+        return;
+      }
+      for (uint32_t u = 0; u < m_; ++u) {
+        if (used[u] || waiting[u] != 0) continue;
+        const auto& cc = ch[u];
+        auto& a = acc[depth + 1];
+        auto& b = back[depth + 1];
+        a.assign(cc.size(), HUGE_VAL);
+        b.assign(cc.size(), 0);
+        double lo = HUGE_VAL;
+        for (size_t k = 0; k < cc.size(); ++k) {
+          for (size_t q = 0; q < pc.size(); ++q) {
+            const double d = acc[depth][q] + dxy(pc[q].out, cc[k].in);
+            if (d < a[k]) a[k] = d, b[k] = static_cast<uint32_t>(q);
+          }
+          lo = std::min(lo, a[k]);
+        }
+        if (lo >= best) continue;
+        used[u] = 1;
+        order[depth + 1] = u;
+        for (uint32_t o : succs_[u]) --waiting[o];
+        dfs(depth + 1);
+        for (uint32_t o : succs_[u]) ++waiting[o];
+        used[u] = 0;
+      }
+    };
+    dfs(0);
+    Tour t = fresh();
+    size_t k = best_last;
+    for (size_t d = m_; d >= 1; --d) {
+      const uint32_t u = best_order[d];
+      t.seq.insert(t.seq.begin() + 1, u);
+      t.start[u] = ch[u][k].start;
+      t.rev[u] = ch[u][k].rev;
+      k = best_back[d][k];
+    }
+    return t;
+  }
+
+  std::vector<OrderStep> steps(const Tour& t) const {
+    std::vector<OrderStep> out;
+    for (size_t i = 1; i + 1 < t.seq.size(); ++i) {
+      const uint32_t u = t.seq[i];
+      out.push_back({ids_[u], t.start[u], t.rev[u] != 0});
+    }
+    return out;
+  }
+
+ private:
+  const OrderContour& c(size_t u) const { return cs_[ids_[u]]; }
+
+  Tour fresh() const {
+    Tour t;
+    t.seq = {home_, tail_};
+    t.start.assign(m_, 0);
+    t.rev.assign(m_, 0);
+    return t;
+  }
+
+  Vec3 entry(const Tour& t, uint32_t u) const {
+    if (u == tail_) return to_.value_or(Vec3{});
+    const auto& o = c(u).outline;
+    if (c(u).closed) return o[t.start[u]];
+    return t.rev[u] ? o.back() : o.front();
+  }
+  Vec3 exit(const Tour& t, uint32_t u) const {
+    if (u == home_) return from_;
+    const auto& o = c(u).outline;
+    if (c(u).closed) return o[t.start[u]];
+    return t.rev[u] ? o.front() : o.back();
+  }
+  /// Rapid from point p to the entry of v (nothing to a missing tail).
+  double to(const Tour& t, const Vec3& p, uint32_t v) const {
+    if (v == tail_ && !to_) return 0;
+    return dxy(p, entry(t, v));
+  }
+  double link(const Tour& t, uint32_t u, uint32_t v) const { return to(t, exit(t, u), v); }
+  /// A reversible open contour flips when a stretch holding it is reversed
+  /// (so the links inside keep their length); others keep their direction.
+  bool flips(uint32_t u) const { return !c(u).closed && c(u).reversible; }
+  Vec3 entry_r(const Tour& t, uint32_t u) const { return flips(u) ? exit(t, u) : entry(t, u); }
+  Vec3 exit_r(const Tour& t, uint32_t u) const { return flips(u) ? entry(t, u) : exit(t, u); }
+  void flip(Tour& t, uint32_t u) const {
+    if (!flips(u)) return;
+    t.rev[u] = !t.rev[u];
+    t.start[u] = t.rev[u] ? c(u).outline.size() - 1 : 0;
+  }
+  /// The choices of u as (entry, exit, start vertex, reversed).
+  struct Choice {
+    Vec3 in, out;
+    size_t start;
+    char rev;
+  };
+  void choices(uint32_t u, std::vector<Choice>& out) const {
+    out.clear();
+    const auto& o = c(u).outline;
+    if (c(u).closed) {
+      for (size_t k = 0; k < nv_[u]; ++k) out.push_back({o[k], o[k], k, 0});
+    } else {
+      out.push_back({o.front(), o.back(), 0, 0});
+      if (c(u).reversible) out.push_back({o.back(), o.front(), o.size() - 1, 1});
+    }
+  }
+
+  /// K nearest contours by box gap (then box centre distance, then index).
+  void build_neighbours() {
+    constexpr size_t K = 10;
+    nbrs_.assign(m_, {});
+    if (m_ < 2) return;
+    std::vector<Vec3> ctr(m_);
+    for (size_t u = 0; u < m_; ++u) ctr[u] = box_[u].center();
+    struct Cand {
+      double gap, cd;
+      uint32_t v;
+      bool operator<(const Cand& o) const { return gap != o.gap ? gap < o.gap : cd != o.cd ? cd < o.cd : v < o.v; }
+    };
+    std::vector<Cand> best;
+    for (size_t u = 0; u < m_; ++u) {
+      best.clear();
+      for (size_t v = 0; v < m_; ++v) {
+        if (v == u) continue;
+        const Cand cand{box_[u].gap(box_[v]), dxy(ctr[u], ctr[v]), static_cast<uint32_t>(v)};
+        if (best.size() == K && !(cand < best.back())) continue;
+        best.insert(std::upper_bound(best.begin(), best.end(), cand), cand);
+        if (best.size() > K) best.pop_back();
+      }
+      for (const auto& b : best) nbrs_[u].push_back(b.v);
+    }
+  }
+
+  /// Best start (closed) or direction (reversible open) of u between the
+  /// exit point p and the node v; returns the cost p -> u -> v.
+  double best_place(const Tour& t, uint32_t u, const Vec3& p, uint32_t v, size_t& start, char& rev) const {
+    const auto& o = c(u).outline;
+    double best = HUGE_VAL;
+    if (c(u).closed) {
+      const bool free_end = v == tail_ && !to_;  // nothing after u
+      const Vec3 q = free_end ? Vec3{} : entry(t, v);
+      for (size_t k = 0; k < nv_[u]; ++k) {
+        const double lo = dxy(p, o[k]);
+        if (lo >= best) continue;
+        const double d = lo + (free_end ? 0 : dxy(o[k], q));
+        if (d < best) best = d, start = k, rev = 0;
+      }
+      return best;
+    }
+    best = dxy(p, o.front()) + to(t, o.back(), v);
+    start = 0, rev = 0;
+    if (c(u).reversible) {
+      const double d = dxy(p, o.back()) + to(t, o.front(), v);
+      if (d < best) best = d, start = o.size() - 1, rev = 1;
+    }
+    return best;
+  }
+
+  /// Re-chooses starts and directions for the tour's order: exactly, by a
+  /// dynamic programme over the chain of choices, when that is affordable
+  /// (sum of products of neighbouring choice counts), else by sweeps of
+  /// coordinate descent. True when the tour got shorter.
+  bool starts(Tour& t) const {
+    double work = 0;
+    for (size_t i = 1; i + 1 < t.seq.size(); ++i) {
+      const uint32_t u = t.seq[i], v = t.seq[i + 1];
+      work += static_cast<double>(count(u)) * static_cast<double>(v == tail_ ? 1 : count(v));
+    }
+    if (work <= 2e7) return starts_exact(t);
+    bool any = false;
+    for (int sweep = 0; sweep < 50; ++sweep) {
+      bool changed = false;
+      for (size_t i = 1; i + 1 < t.seq.size(); ++i) {
+        const uint32_t u = t.seq[i];
+        if (!c(u).closed && !c(u).reversible) continue;
+        const Vec3 p = exit(t, t.seq[i - 1]);
+        const uint32_t v = t.seq[i + 1];
+        const double now = dxy(p, entry(t, u)) + link(t, u, v);
+        size_t s = 0;
+        char r = 0;
+        const double d = best_place(t, u, p, v, s, r);
+        if (d < now - eps_) t.start[u] = s, t.rev[u] = r, changed = true;
+      }
+      if (!changed) break;
+      any = true;
+    }
+    return any;
+  }
+
+  size_t count(uint32_t u) const { return c(u).closed ? nv_[u] : (c(u).reversible ? 2 : 1); }
+
+  bool starts_exact(Tour& t) const {
+    if (m_ == 0) return false;
+    const double before = cost(t);
+    std::vector<std::vector<double>> acc(m_ + 1);
+    std::vector<std::vector<uint32_t>> back(m_ + 1);
+    std::vector<Choice> prev = {{from_, from_, 0, 0}}, cur;
+    std::vector<double> prev_acc = {0.0};
+    std::vector<std::vector<Choice>> all(m_ + 1);
+    for (size_t i = 1; i <= m_; ++i) {
+      choices(t.seq[i], cur);
+      acc[i].assign(cur.size(), HUGE_VAL);
+      back[i].assign(cur.size(), 0);
+      for (size_t k = 0; k < cur.size(); ++k)
+        for (size_t q = 0; q < prev.size(); ++q) {
+          const double d = prev_acc[q] + dxy(prev[q].out, cur[k].in);
+          if (d < acc[i][k]) acc[i][k] = d, back[i][k] = static_cast<uint32_t>(q);
+        }
+      all[i] = cur;
+      prev.swap(cur);
+      prev_acc = acc[i];
+    }
+    size_t k = 0;
+    double best = HUGE_VAL;
+    for (size_t q = 0; q < prev.size(); ++q) {
+      const double d = prev_acc[q] + to(t, prev[q].out, tail_);
+      if (d < best) best = d, k = q;
+    }
+    if (!(best < before - eps_)) return false;
+    for (size_t i = m_; i >= 1; --i) {
+      const uint32_t u = t.seq[i];
+      t.start[u] = all[i][k].start;
+      t.rev[u] = all[i][k].rev;
+      k = back[i][k];
+    }
+    return true;
+  }
+
+  void positions(const Tour& t, std::vector<size_t>& pos) const {
+    for (size_t i = 0; i < t.seq.size(); ++i) pos[t.seq[i]] = i;
+  }
+
+  /// Moving seq[i..i+L-1] to just after position j keeps the precedence.
+  bool may_move(const Tour& t, const std::vector<size_t>& pos, size_t i, size_t L, size_t j) const {
+    for (size_t k = i; k < i + L; ++k) {
+      const uint32_t s = t.seq[k];
+      if (j >= i + L) {  // forward over [i+L, j]: none of s's outers there
+        for (uint32_t o : succs_[s])
+          if (pos[o] >= i + L && pos[o] <= j) return false;
+      } else {  // backward over [j+1, i-1]: none of s's inners there
+        for (uint32_t q : preds_[s])
+          if (pos[q] > j && pos[q] < i) return false;
+      }
+    }
+    return true;
+  }
+
+  /// Or-opt: a run of 1 to 3 contours moved next to a neighbour of its ends
+  /// (a single contour with its start or direction re-chosen there).
+  bool or_opt(Tour& t, std::vector<size_t>& pos) const {
+    bool any = false;
+    positions(t, pos);
+    for (size_t L = 1; L <= 3 && L <= m_; ++L) {
+      for (uint32_t u0 = 0; u0 < m_; ++u0) {
+        const size_t i = pos[u0];
+        if (i + L > m_ + 1) continue;  // run would reach the tail
+        const uint32_t f = t.seq[i], l = t.seq[i + L - 1];
+        const uint32_t p = t.seq[i - 1], n = t.seq[i + L];
+        const double gain = link(t, p, f) + link(t, l, n) - link(t, p, n);
+        // candidate insertion points j (after seq[j])
+        cands_.clear();
+        cands_.push_back(0);
+        cands_.push_back(m_);
+        for (uint32_t c2 : nbrs_[f]) cands_.push_back(pos[c2] - 1);
+        for (uint32_t c2 : nbrs_[l]) cands_.push_back(pos[c2]);
+        std::sort(cands_.begin(), cands_.end());
+        cands_.erase(std::unique(cands_.begin(), cands_.end()), cands_.end());
+        double best = -eps_;
+        size_t best_j = 0, bs = 0;
+        char br = 0;
+        bool found = false, best_flip = false;
+        // the run reversed (reversible members flipped): its inside changes by
+        double inside = 0;
+        bool may_flip = L > 1;
+        for (size_t k = i; k + 1 < i + L; ++k) {
+          inside += dxy(exit_r(t, t.seq[k + 1]), entry_r(t, t.seq[k])) - link(t, t.seq[k], t.seq[k + 1]);
+          for (uint32_t o : succs_[t.seq[k]])
+            if (pos[o] > k && pos[o] < i + L) may_flip = false;
+        }
+        for (size_t j : cands_) {
+          if (j + 1 >= i && j <= i + L - 1) continue;  // same place or inside the run
+          if (j > m_) continue;
+          const uint32_t a = t.seq[j], b = t.seq[j + 1];
+          double add;
+          size_t s = t.start[f];
+          char r = t.rev[f];
+          if (L == 1 && (c(f).closed || c(f).reversible)) {
+            // the boxes bound the detour from below: skip a hopeless place cheaply
+            const Vec3 pa = exit(t, a);
+            const double lo = box_[f].gap(pa) + (b == tail_ && !to_ ? 0 : box_[f].gap(entry(t, b)));
+            if (lo - link(t, a, b) - gain >= best) continue;
+            add = best_place(t, f, pa, b, s, r);
+          } else {
+            add = link(t, a, f) + link(t, l, b);
+          }
+          const double delta = add - link(t, a, b) - gain;
+          if (delta < best && may_move(t, pos, i, L, j))
+            best = delta, best_j = j, bs = s, br = r, found = true, best_flip = false;
+          if (may_flip) {
+            const double dr = dxy(exit(t, a), entry_r(t, l)) + to(t, exit_r(t, f), b) + inside - link(t, a, b) - gain;
+            if (dr < best && may_move(t, pos, i, L, j))
+              best = dr, best_j = j, found = true, best_flip = true;
+          }
+        }
+        if (!found) continue;
+        std::vector<uint32_t> run(t.seq.begin() + static_cast<std::ptrdiff_t>(i),
+                                  t.seq.begin() + static_cast<std::ptrdiff_t>(i + L));
+        t.seq.erase(t.seq.begin() + static_cast<std::ptrdiff_t>(i), t.seq.begin() + static_cast<std::ptrdiff_t>(i + L));
+        const size_t at = best_j < i ? best_j + 1 : best_j + 1 - L;
+        if (best_flip) {
+          std::reverse(run.begin(), run.end());
+          for (uint32_t u : run) flip(t, u);
+        }
+        t.seq.insert(t.seq.begin() + static_cast<std::ptrdiff_t>(at), run.begin(), run.end());
+        if (L == 1) t.start[f] = bs, t.rev[f] = br;
+        positions(t, pos);
+        any = true;
+      }
+    }
+    return any;
+  }
+
+  /// Reversing seq[l..r] keeps the precedence.
+  bool may_reverse(const Tour& t, const std::vector<size_t>& pos, size_t l, size_t r) const {
+    for (size_t k = l; k <= r; ++k)
+      for (uint32_t o : succs_[t.seq[k]])
+        if (pos[o] >= l && pos[o] <= r) return false;
+    return true;
+  }
+
+  /// 2-opt: reverse the visiting order of a stretch so that a contour is
+  /// joined to one of its neighbours (reversible open contours in it flip,
+  /// others keep their direction; the links inside are counted by prefix sums).
+  bool two_opt(Tour& t, std::vector<size_t>& pos) const {
+    bool any = false;
+    const size_t len = t.seq.size();
+    std::vector<double> fw(len, 0), bw(len, 0);  // prefix sums over links (k, k+1) inside [1, m]
+    auto prefix = [&] {
+      for (size_t k = 1; k < len; ++k) {
+        const bool inner = k >= 2 && k <= m_;  // both ends real contours
+        fw[k] = fw[k - 1] + (inner ? link(t, t.seq[k - 1], t.seq[k]) : 0);
+        bw[k] = bw[k - 1] + (inner ? dxy(exit_r(t, t.seq[k]), entry_r(t, t.seq[k - 1])) : 0);
+      }
+    };
+    // fw[r] - fw[l]: the links seq[q] -> seq[q+1] for l <= q < r (1 <= l <= r <= m); bw the reverse
+    positions(t, pos);
+    prefix();
+    auto inside = [&](size_t l, size_t r) { return (bw[r] - bw[l]) - (fw[r] - fw[l]); };
+    for (uint32_t a = 0; a < m_; ++a) {
+      double best = -eps_;
+      size_t bl = 0, br = 0;
+      for (uint32_t cc : nbrs_[a]) {
+        const size_t i = pos[a], j = pos[cc];
+        size_t l, r;
+        double delta;
+        if (j > i + 1) {  // a -> cc: reverse [i+1, j]
+          l = i + 1, r = j;
+          const uint32_t b = t.seq[l], n = t.seq[r + 1];
+          delta = dxy(exit(t, a), entry_r(t, cc)) + to(t, exit_r(t, b), n) - link(t, a, b) - link(t, cc, n) +
+                  inside(l, r);
+        } else if (j + 1 < i) {  // cc -> a: reverse [j, i-1]
+          l = j, r = i - 1;
+          const uint32_t p = t.seq[l - 1], e = t.seq[r];
+          delta = dxy(exit(t, p), entry_r(t, e)) + dxy(exit_r(t, cc), entry(t, a)) - link(t, p, cc) - link(t, e, a) +
+                  inside(l, r);
+        } else {
+          continue;
+        }
+        if (delta < best && may_reverse(t, pos, l, r)) best = delta, bl = l, br = r;
+      }
+      if (br == 0) continue;
+      std::reverse(t.seq.begin() + static_cast<std::ptrdiff_t>(bl), t.seq.begin() + static_cast<std::ptrdiff_t>(br + 1));
+      for (size_t k = bl; k <= br; ++k) flip(t, t.seq[k]);
+      positions(t, pos);
+      prefix();
+      any = true;
+    }
+    return any;
+  }
+
+  std::span<const OrderContour> cs_;
+  std::vector<size_t> ids_;
+  size_t m_;
+  uint32_t home_, tail_;
+  Vec3 from_;
+  std::optional<Vec3> to_;
+  double eps_;
+  std::vector<std::vector<uint32_t>> preds_, succs_, nbrs_;
+  std::vector<Box2> box_;
+  std::vector<size_t> nv_;
+  mutable std::vector<size_t> cands_;
+};
+
+Vec3 step_entry(std::span<const OrderContour> cs, const OrderStep& s) { return cs[s.contour].outline[s.start_vertex]; }
+Vec3 step_exit(std::span<const OrderContour> cs, const OrderStep& s) {
+  const auto& c = cs[s.contour];
+  if (c.closed) return c.outline[s.start_vertex];
+  return s.reversed ? c.outline.front() : c.outline.back();
+}
+
+double rapid_of(std::span<const OrderContour> cs, const std::vector<OrderStep>& steps, Vec3 home) {
+  double r = 0;
+  Vec3 p = home;
+  for (const auto& s : steps) {
+    r += dxy(p, step_entry(cs, s));
+    p = step_exit(cs, s);
+  }
+  return r;
+}
+
+}  // namespace
+
+std::vector<std::pair<size_t, size_t>> find_nesting(std::span<const OrderContour> contours,
+                                                    const CutOrderOptions& options) {
+  check_input(contours);
+  return nesting_of(contours, tolerance_of(contours, options));
+}
+
+CutOrder plan_cut_order(std::span<const OrderContour> contours, Vec3 home, const CutOrderOptions& options) {
+  check_input(contours);
+  const size_t n = contours.size();
+  const double tol = tolerance_of(contours, options);
+  CutOrder out;
+  out.nesting = nesting_of(contours, tol);
+
+  std::vector<OrderStep> written;
+  for (size_t i = 0; i < n; ++i) written.push_back({i, 0, false});
+  out.rapid_as_written = rapid_of(contours, written, home);
+
+  // Segments: runs of movable contours between fixed ones.
+  std::vector<size_t> seg_of(n, SIZE_MAX), local(n, 0);
+  std::vector<std::vector<size_t>> segs(1);
+  std::vector<size_t> fixed_after;  // fixed contour that closes segment k (SIZE_MAX: none)
+  for (size_t i = 0; i < n; ++i) {
+    if (contours[i].movable) {
+      seg_of[i] = segs.size() - 1;
+      local[i] = segs.back().size();
+      segs.back().push_back(i);
+    } else {
+      fixed_after.push_back(i);
+      segs.emplace_back();
+    }
+  }
+  fixed_after.push_back(SIZE_MAX);
+  std::vector<std::vector<std::pair<size_t, size_t>>> seg_nest(segs.size());
+  for (const auto& [in, o] : out.nesting)
+    if (seg_of[in] != SIZE_MAX && seg_of[in] == seg_of[o]) seg_nest[seg_of[in]].emplace_back(local[in], local[o]);
+
+  // Moves must gain more than rounding: 1e-10 of the largest coordinate.
+  double scale = std::max({1.0, std::abs(home.x), std::abs(home.y)});
+  for (const auto& c : contours)
+    for (const auto& p : c.outline) scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
+  const double eps = 1e-10 * scale;
+  std::vector<OrderStep> planned, baseline;
+  Vec3 from = home;
+  for (size_t k = 0; k < segs.size(); ++k) {
+    std::optional<Vec3> to;
+    const size_t fx = fixed_after[k];
+    const OrderStep fixed_step{fx, 0, false};
+    if (fx != SIZE_MAX) to = step_entry(contours, fixed_step);
+    if (!segs[k].empty()) {
+      const Segment seg(contours, segs[k], from, to, seg_nest[k], eps);
+      const Tour base = seg.written();
+      for (const auto& s : seg.steps(base)) baseline.push_back(s);
+      Tour best;
+      if (auto ex = seg.exact(options.exact_up_to)) {
+        best = std::move(*ex);
+      } else {
+        Tour a = base;
+        seg.improve(a);
+        Tour b = seg.nearest();
+        seg.improve(b);
+        best = seg.cost(b) < seg.cost(a) ? std::move(b) : std::move(a);
+      }
+      for (const auto& s : seg.steps(best)) planned.push_back(s);
+    }
+    if (fx != SIZE_MAX) {
+      planned.push_back(fixed_step);
+      baseline.push_back(fixed_step);
+      from = step_exit(contours, fixed_step);
+    }
+  }
+
+  out.rapid_baseline = rapid_of(contours, baseline, home);
+  out.rapid_planned = rapid_of(contours, planned, home);
+  if (out.rapid_planned < out.rapid_baseline - eps) {  // a gain of rounding only keeps the written order
+    out.steps = std::move(planned);
+  } else {
+    out.steps = std::move(baseline);
+    out.rapid_planned = out.rapid_baseline;
+  }
+  bool same = true;
+  for (size_t i = 0; i < n && same; ++i)
+    same = out.steps[i].contour == i && out.steps[i].start_vertex == 0 && !out.steps[i].reversed;
+  out.kept_as_written = same;
+
+  std::vector<size_t> at(n);
+  for (size_t i = 0; i < n; ++i) at[out.steps[i].contour] = i;
+  for (const auto& [in, o] : out.nesting)
+    if (at[in] > at[o]) ++out.unmet_nesting;
+  return out;
+}
+
+}  // namespace bezcam
