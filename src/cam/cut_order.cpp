@@ -485,26 +485,79 @@ class Segment {
   }
 
   /// K nearest contours by box gap (then box centre distance, then index).
+  /// (A uniform grid of box centres is searched ring by ring, stopping once
+  /// no unseen box can be nearer than the K-th found; boxes much larger than
+  /// a cell are compared with every contour instead. Same result as
+  /// comparing all pairs.)
   void build_neighbours() {
     constexpr size_t K = 10;
     nbrs_.assign(m_, {});
     if (m_ < 2) return;
     std::vector<Vec3> ctr(m_);
-    for (size_t u = 0; u < m_; ++u) ctr[u] = box_[u].center();
+    std::vector<double> ext(m_);  // half the larger side of the box
+    Box2 all;
+    for (size_t u = 0; u < m_; ++u) {
+      ctr[u] = box_[u].center();
+      ext[u] = std::max(box_[u].hx - box_[u].lx, box_[u].hy - box_[u].ly) / 2;
+      all.add(ctr[u]);
+    }
+    const double span = std::max({all.hx - all.lx, all.hy - all.ly, 1e-300});
+    const double side = std::max(1.0, std::floor(std::sqrt(static_cast<double>(m_) / 2)));
+    const double h = span / side;
+    const size_t nx = static_cast<size_t>((all.hx - all.lx) / h) + 1, ny = static_cast<size_t>((all.hy - all.ly) / h) + 1;
+    auto cell_x = [&](const Vec3& p) { return std::min(nx - 1, static_cast<size_t>((p.x - all.lx) / h)); };
+    auto cell_y = [&](const Vec3& p) { return std::min(ny - 1, static_cast<size_t>((p.y - all.ly) / h)); };
+    std::vector<uint32_t> big, first(nx * ny + 1, 0), items;
+    double ext_small = 0;
+    for (size_t u = 0; u < m_; ++u) {
+      if (ext[u] > 4 * h) {
+        big.push_back(static_cast<uint32_t>(u));
+      } else {
+        ext_small = std::max(ext_small, ext[u]);
+        ++first[cell_y(ctr[u]) * nx + cell_x(ctr[u]) + 1];
+      }
+    }
+    for (size_t k = 0; k < nx * ny; ++k) first[k + 1] += first[k];
+    items.resize(first[nx * ny]);
+    {
+      std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+      for (size_t u = 0; u < m_; ++u)
+        if (ext[u] <= 4 * h) items[fill[cell_y(ctr[u]) * nx + cell_x(ctr[u])]++] = static_cast<uint32_t>(u);
+    }
     struct Cand {
       double gap, cd;
       uint32_t v;
       bool operator<(const Cand& o) const { return gap != o.gap ? gap < o.gap : cd != o.cd ? cd < o.cd : v < o.v; }
     };
     std::vector<Cand> best;
+    auto consider = [&](size_t u, size_t v) {
+      if (v == u) return;
+      const Cand cand{box_[u].gap(box_[v]), dxy(ctr[u], ctr[v]), static_cast<uint32_t>(v)};
+      if (best.size() == K && !(cand < best.back())) return;
+      best.insert(std::upper_bound(best.begin(), best.end(), cand), cand);
+      if (best.size() > K) best.pop_back();
+    };
     for (size_t u = 0; u < m_; ++u) {
       best.clear();
-      for (size_t v = 0; v < m_; ++v) {
-        if (v == u) continue;
-        const Cand cand{box_[u].gap(box_[v]), dxy(ctr[u], ctr[v]), static_cast<uint32_t>(v)};
-        if (best.size() == K && !(cand < best.back())) continue;
-        best.insert(std::upper_bound(best.begin(), best.end(), cand), cand);
-        if (best.size() > K) best.pop_back();
+      if (ext[u] > 4 * h) {
+        for (size_t v = 0; v < m_; ++v) consider(u, v);
+      } else {
+        for (uint32_t v : big) consider(u, v);
+        const long cx = static_cast<long>(cell_x(ctr[u])), cy = static_cast<long>(cell_y(ctr[u]));
+        const long rmax = static_cast<long>(std::max(nx, ny));
+        for (long r = 0; r <= rmax; ++r) {
+          // every unseen small box has its centre at least (r - 1) h away along x or y
+          if (best.size() == K && (static_cast<double>(r) - 1) * h - ext[u] - ext_small > best.back().gap) break;
+          for (long y = cy - r; y <= cy + r; ++y) {
+            if (y < 0 || y >= static_cast<long>(ny)) continue;
+            const bool edge_row = y == cy - r || y == cy + r;
+            for (long x = cx - r; x <= cx + r; x += (edge_row || r == 0) ? 1 : 2 * r) {
+              if (x < 0 || x >= static_cast<long>(nx)) continue;
+              const size_t k = static_cast<size_t>(y) * nx + static_cast<size_t>(x);
+              for (uint32_t i = first[k]; i < first[k + 1]; ++i) consider(u, items[i]);
+            }
+          }
+        }
       }
       for (const auto& b : best) nbrs_[u].push_back(b.v);
     }
@@ -692,7 +745,7 @@ class Segment {
         }
         t.seq.insert(t.seq.begin() + static_cast<std::ptrdiff_t>(at), run.begin(), run.end());
         if (L == 1) t.start[f] = bs, t.rev[f] = br;
-        positions(t, pos);
+        for (size_t k = std::min(i, at), hi = std::max(i, at) + L; k < hi; ++k) pos[t.seq[k]] = k;
         any = true;
       }
     }
@@ -709,22 +762,32 @@ class Segment {
 
   /// 2-opt: reverse the visiting order of a stretch so that a contour is
   /// joined to one of its neighbours (reversible open contours in it flip,
-  /// others keep their direction; the links inside are counted by prefix sums).
+  /// others keep their direction; the links inside are summed by a Fenwick tree).
   bool two_opt(Tour& t, std::vector<size_t>& pos) const {
     bool any = false;
+    // change[k] (2 <= k <= m): the link seq[k-1] -> seq[k] reversed (and
+    // flipped) minus as it is; zero unless an open contour that cannot
+    // reverse is at either end. Summed over a stretch by a Fenwick tree.
     const size_t len = t.seq.size();
-    std::vector<double> fw(len, 0), bw(len, 0);  // prefix sums over links (k, k+1) inside [1, m]
-    auto prefix = [&] {
-      for (size_t k = 1; k < len; ++k) {
-        const bool inner = k >= 2 && k <= m_;  // both ends real contours
-        fw[k] = fw[k - 1] + (inner ? link(t, t.seq[k - 1], t.seq[k]) : 0);
-        bw[k] = bw[k - 1] + (inner ? dxy(exit_r(t, t.seq[k]), entry_r(t, t.seq[k - 1])) : 0);
-      }
+    std::vector<double> change(len, 0), tree(len + 1, 0);
+    auto add = [&](size_t k, double v) {
+      for (size_t x = k + 1; x <= len; x += x & (~x + 1)) tree[x] += v;
     };
-    // fw[r] - fw[l]: the links seq[q] -> seq[q+1] for l <= q < r (1 <= l <= r <= m); bw the reverse
+    auto below = [&](size_t k) {  // sum of change[0 .. k)
+      double r = 0;
+      for (size_t x = k; x > 0; x -= x & (~x + 1)) r += tree[x];
+      return r;
+    };
+    auto value = [&](size_t k) {
+      return dxy(exit_r(t, t.seq[k]), entry_r(t, t.seq[k - 1])) - link(t, t.seq[k - 1], t.seq[k]);
+    };
+    for (size_t k = 2; k <= m_; ++k) {
+      change[k] = value(k);
+      if (change[k] != 0) add(k, change[k]);
+    }
+    // the links inside [l, r] reversed minus as they are
+    auto inside = [&](size_t l, size_t r) { return below(r + 1) - below(l + 1); };
     positions(t, pos);
-    prefix();
-    auto inside = [&](size_t l, size_t r) { return (bw[r] - bw[l]) - (fw[r] - fw[l]); };
     for (uint32_t a = 0; a < m_; ++a) {
       double best = -eps_;
       size_t bl = 0, br = 0;
@@ -749,9 +812,14 @@ class Segment {
       }
       if (br == 0) continue;
       std::reverse(t.seq.begin() + static_cast<std::ptrdiff_t>(bl), t.seq.begin() + static_cast<std::ptrdiff_t>(br + 1));
-      for (size_t k = bl; k <= br; ++k) flip(t, t.seq[k]);
-      positions(t, pos);
-      prefix();
+      for (size_t k = bl; k <= br; ++k) {
+        flip(t, t.seq[k]);
+        pos[t.seq[k]] = k;
+      }
+      for (size_t k = std::max<size_t>(bl, 2); k <= std::min(br + 1, m_); ++k) {
+        const double v = value(k);
+        if (v != change[k]) add(k, v - change[k]), change[k] = v;
+      }
       any = true;
     }
     return any;
