@@ -168,6 +168,12 @@ void check_input(std::span<const OrderContour> cs) {
     for (const auto& p : cs[i].outline)
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
         throw std::invalid_argument("cut order: contour " + std::to_string(i) + " has a non-finite coordinate");
+    if (!cs[i].starts.empty() && !cs[i].closed)
+      throw std::invalid_argument("cut order: contour " + std::to_string(i) + " is open but lists start vertices");
+    for (size_t k : cs[i].starts)
+      if (k >= vertex_count(cs[i]))
+        throw std::invalid_argument("cut order: contour " + std::to_string(i) + " lists start vertex " +
+                                    std::to_string(k) + ", past its last distinct vertex");
   }
 }
 
@@ -285,7 +291,8 @@ class Segment {
         size_t s = 0;
         bool r = false;
         if (c(u).closed) {
-          for (size_t k = 0; k < nv_[u]; ++k) {
+          for (size_t q = 0; q < count(u); ++q) {
+            const size_t k = vertex(u, q);
             const double dk = dxy(p, o[k]);
             if (dk < d) d = dk, s = k;
           }
@@ -477,7 +484,7 @@ class Segment {
     out.clear();
     const auto& o = c(u).outline;
     if (c(u).closed) {
-      for (size_t k = 0; k < nv_[u]; ++k) out.push_back({o[k], o[k], k, 0});
+      for (size_t i = 0; i < count(u); ++i) out.push_back({o[vertex(u, i)], o[vertex(u, i)], vertex(u, i), 0});
     } else {
       out.push_back({o.front(), o.back(), 0, 0});
       if (c(u).reversible) out.push_back({o.back(), o.front(), o.size() - 1, 1});
@@ -571,7 +578,8 @@ class Segment {
     if (c(u).closed) {
       const bool free_end = v == tail_ && !to_;  // nothing after u
       const Vec3 q = free_end ? Vec3{} : entry(t, v);
-      for (size_t k = 0; k < nv_[u]; ++k) {
+      for (size_t i = 0; i < count(u); ++i) {
+        const size_t k = vertex(u, i);
         const double lo = dxy(p, o[k]);
         if (lo >= best) continue;
         const double d = lo + (free_end ? 0 : dxy(o[k], q));
@@ -619,7 +627,14 @@ class Segment {
     return any;
   }
 
-  size_t count(uint32_t u) const { return c(u).closed ? nv_[u] : (c(u).reversible ? 2 : 1); }
+  /// Start choices: the allowed start vertices of a closed contour, the
+  /// directions of an open one.
+  size_t count(uint32_t u) const {
+    if (!c(u).closed) return c(u).reversible ? 2 : 1;
+    return c(u).starts.empty() ? nv_[u] : c(u).starts.size();
+  }
+  /// The i-th allowed start vertex of closed u.
+  size_t vertex(uint32_t u, size_t i) const { return c(u).starts.empty() ? i : c(u).starts[i]; }
 
   bool starts_exact(Tour& t) const {
     if (m_ == 0) return false;

@@ -201,6 +201,21 @@ TEST(CutOrder, StartVerticesAndDirectionsAreChosen) {
   EXPECT_EQ(p.steps[0].start_vertex, 2u);
   EXPECT_NEAR(p.rapid_planned, std::hypot(2, 3), 1e-12);
   EXPECT_NEAR(p.rapid_as_written, std::hypot(12, 13), 1e-12);
+  // Only vertices 1 (10, 0) and 3 (0, 10) allowed: 3 is nearer (13, 12) than 1.
+  one[0].starts = {1, 3};
+  p = plan_cut_order(one, {12, 13});
+  EXPECT_EQ(p.steps[0].start_vertex, 3u);
+  EXPECT_NEAR(p.rapid_planned, std::hypot(12, 3), 1e-12);
+  // With a second square the allowed starts still decide (heuristic and exact).
+  one.push_back(rect(20, 0, 30, 10));
+  one[1].starts = {0};
+  for (size_t exact : {0, 8}) {
+    p = plan_cut_order(one, {12, 13}, {.exact_up_to = exact});
+    check_plan(one, p, {12, 13});
+    EXPECT_TRUE(p.steps[0].start_vertex == 1 || p.steps[0].start_vertex == 3);
+    EXPECT_EQ(p.steps[1].start_vertex, 0u);
+    if (p.steps[0].contour == 1) EXPECT_EQ(p.steps[0].start_vertex, 0u);
+  }
 
   // Two circles: the second starts at the vertex nearest the first's start.
   std::vector<OrderContour> two = {polygon(0, 0, 10, 36), polygon(30, 0, 10, 36)};
@@ -354,6 +369,12 @@ TEST(CutOrder, BadInputIsRefused) {
   cs[1] = open_line({{0, 0}, {NAN, 1}});
   EXPECT_THROW(plan_cut_order(cs, {0, 0}), std::invalid_argument);
   EXPECT_TRUE(plan_cut_order(std::vector<OrderContour>{}, {0, 0}).steps.empty());
+  cs[1] = rect(2, 2, 3, 3);
+  cs[1].starts = {4};  // the repeated last vertex: past the four distinct ones
+  EXPECT_THROW(plan_cut_order(cs, {0, 0}), std::invalid_argument);
+  cs[1] = open_line({{0, 0}, {1, 1}});
+  cs[1].starts = {0};
+  EXPECT_THROW(plan_cut_order(cs, {0, 0}), std::invalid_argument);
 }
 
 // ---- quality ------------------------------------------------------------

@@ -23,6 +23,10 @@ struct OrderContour {
   /// Closed: may start at any of its vertices (same direction), and may
   /// enclose other contours (nesting applies).
   bool closed = false;
+  /// Closed only: the outline vertices where it may start (for example the
+  /// joints between its curve pieces, so that no piece is split); empty:
+  /// every distinct vertex. Indices below the distinct vertex count.
+  std::vector<size_t> starts;
   /// Open only: may be cut from its end to its start.
   bool reversible = false;
   /// false: keeps its place in the written order, with its written start
@@ -94,7 +98,8 @@ std::vector<std::pair<size_t, size_t>> find_nesting(std::span<const OrderContour
 /// contours and directions of reversible open ones re-chosen. The written
 /// order (made valid) is improved the same way, and the shorter plan wins;
 /// it is returned unchanged when nothing beats it. Throws
-/// std::invalid_argument on an empty outline or a non-finite coordinate.
+/// std::invalid_argument on an empty outline, a non-finite coordinate, or
+/// `starts` on an open contour or past the distinct vertices.
 CutOrder plan_cut_order(std::span<const OrderContour> contours, Vec3 home, const CutOrderOptions& options = {});
 
 }  // namespace bezcam
