@@ -206,23 +206,15 @@ std::vector<std::pair<size_t, size_t>> nesting_of(std::span<const OrderContour> 
       if (!ring[b]) ring[b].emplace(cs[b].outline, nv[b], box[b], tol);
       const Ring& r = *ring[b];
       const auto& pa = cs[a].outline;
-      // Vertices first; when all lie on the boundary, segment midpoints.
-      bool outside = false, inside = false;
-      for (size_t k = 0; k < nv[a] && !outside; ++k) {
-        const Where w = r.locate(pa[k]);
-        outside = w == Where::outside;
-        inside = inside || w == Where::inside;
-      }
+      // No vertex outside, then no segment midpoint outside (a segment that
+      // leaves B: B concave, or A crossing it between vertices). All of A
+      // on B's boundary counts as inside.
+      bool outside = false;
+      for (size_t k = 0; k < nv[a] && !outside; ++k) outside = r.locate(pa[k]) == Where::outside;
+      const size_t segs = cs[a].closed ? nv[a] : nv[a] - 1;
+      for (size_t k = 0; k < segs && !outside; ++k)
+        outside = r.locate((pa[k] + pa[(k + 1) % nv[a]]) * 0.5) == Where::outside;
       if (outside) continue;
-      if (!inside) {
-        const size_t segs = cs[a].closed ? nv[a] : nv[a] - (nv[a] > 0 ? 1 : 0);
-        for (size_t k = 0; k < segs && !outside && !inside; ++k) {
-          const Where w = r.locate((pa[k] + pa[(k + 1) % nv[a]]) * 0.5);
-          outside = w == Where::outside;
-          inside = w == Where::inside;
-        }
-        if (outside) continue;
-      }
       out.emplace_back(a, b);  // inside, or wholly on the boundary
     }
   }

@@ -185,6 +185,14 @@ TEST(CutOrder, TouchingAndIdenticalContours) {
   const auto at = check_plan(twins, plan, {20, 20});
   EXPECT_LT(at[tn[0].first], at[tn[0].second]);
 
+  // A U whose arms hold the two ends of a bar: the bar's vertices are all
+  // inside the U, its long edges cross the gap between the arms: not inside.
+  OrderContour u;
+  u.closed = true;
+  u.outline = {{0, 0}, {30, 0}, {30, 30}, {20, 30}, {20, 10}, {10, 10}, {10, 30}, {0, 30}, {0, 0}};
+  std::vector<OrderContour> bar = {u, rect(2, 20, 28, 22), rect(2, 2, 28, 8)};
+  EXPECT_EQ(find_nesting(bar), (std::vector<std::pair<size_t, size_t>>{{2, 0}}));
+
   // A tolerance lets flattened outlines touch: the hole's vertex 0.004 outside.
   std::vector<OrderContour> near = {rect(0, 0, 100, 100), rect(-0.004, 40, 20, 60)};
   EXPECT_TRUE(find_nesting(near).empty());

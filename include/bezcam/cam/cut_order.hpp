@@ -81,10 +81,9 @@ struct CutOrderOptions {
 
 /// The nestings of `contours`: (inner, outer) pairs, sorted, where `outer`
 /// is closed (at least 3 distinct vertices, non-zero area) and every vertex
-/// of `inner` (closed or open) is inside `outer` or on its boundary (within
-/// the tolerance), with at least one vertex, or else one segment midpoint,
-/// strictly inside; a contour lying wholly on another's boundary counts as
-/// inside it. A closed inner must also be smaller: (area, index) below the
+/// and every segment midpoint of `inner` (closed or open) is inside `outer`
+/// or on its boundary (within the tolerance); a contour lying wholly on
+/// another's boundary counts as inside it. A closed inner must also be smaller: (area, index) below the
 /// outer's, so that identical contours nest by index (the lower inside) and
 /// the relation never has a cycle. Bounding boxes reject most pairs.
 std::vector<std::pair<size_t, size_t>> find_nesting(std::span<const OrderContour> contours,
