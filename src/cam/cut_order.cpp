@@ -2,25 +2,27 @@
 //
 // Nesting: closed contours are indexed by their bounding boxes (sorted by
 // the left edge); a candidate pair survives only when the inner box lies in
-// the outer box, and only then are the inner's vertices located in the
-// outer polygon, which is binned in horizontal bands so that one location
-// reads the few edges of one band.
+// the outer box, and only then are the inner's vertices and segment
+// midpoints located in the outer polygon, which is binned in horizontal
+// bands so that one location reads the few edges of one band.
 //
 // Order: the contours between two fixed (not movable) ones form a segment,
 // planned from the end of the previous fixed contour (or home) to the start
 // of the next (or nowhere). In a segment, the precedence "inner before
-// outer" is a DAG (find_nesting never makes a cycle). Two tours are built,
-// nearest neighbour under the precedence and the written order made valid
-// (stable topological sort), both improved by local search (start choice,
+// outer" is a DAG (find_nesting never makes a cycle). A small segment is
+// solved exactly (branch and bound over the valid orders, a dynamic
+// programme over the starts). Otherwise two tours are built, nearest
+// neighbour under the precedence and the written order made valid (stable
+// topological sort), both improved by local search (exact start choice,
 // Or-opt, 2-opt over K nearest neighbours, each move checked against the
-// precedence), and the shorter one is kept.
+// precedence), and the shorter one is kept. The written order made valid
+// wins unless the plan is shorter by more than rounding.
 #include "bezcam/cam/cut_order.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <optional>
 #include <queue>
 #include <stdexcept>
