@@ -23,15 +23,15 @@ struct OrderContour {
   /// Closed: may start at any of its vertices (same direction), and may
   /// enclose other contours (nesting applies).
   bool closed = false;
-  /// Closed only: the outline vertices where it may start (for example the
-  /// joints between its curve pieces, so that no piece is split); empty:
-  /// every distinct vertex. Indices below the distinct vertex count.
-  std::vector<size_t> starts;
   /// Open only: may be cut from its end to its start.
   bool reversible = false;
   /// false: keeps its place in the written order, with its written start
   /// and direction (a barrier: no other contour moves across it).
   bool movable = true;
+  /// Closed only: the outline vertices where it may start (for example the
+  /// joints between its curve pieces, so that no piece is split); empty:
+  /// every distinct vertex. Indices below the distinct vertex count.
+  std::vector<size_t> starts;
 };
 
 /// One cut of the plan.
