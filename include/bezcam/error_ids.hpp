@@ -200,6 +200,9 @@ inline constexpr ErrorId io_write{"io.write"};
 inline constexpr ErrorId job_above_safe_z{"job.above-safe-z"};
 /// A Coons patch blend is not linear, cubic or quintic.
 inline constexpr ErrorId job_blend{"job.blend"};
+/// Part cutting: a side, tool, depth, lead, tab, direction, compensation or
+/// order setting that cannot be honoured for this entity.
+inline constexpr ErrorId job_cut{"job.cut"};
 /// A point has a different dimension than its entity's first point.
 inline constexpr ErrorId job_dimension{"job.dimension"};
 /// An entity type bezcam does not know.

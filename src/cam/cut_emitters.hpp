@@ -3,6 +3,7 @@
 // starts with the tool at the entity's first point at cutting depth and
 // appends the moves that cut the entity, filling the report's blocks,
 // measured deviation and bound.
+#include <deque>
 #include <functional>
 #include <span>
 #include <vector>
@@ -37,6 +38,9 @@ struct CutContext {
   /// `report` is the index its EntityReport will have.
   Measurements* later = nullptr;
   size_t report = 0;
+  /// Geometry made while building (offsets, leads) that the deferred
+  /// measurements read: kept alive until they have run.
+  std::deque<Entity>* owned = nullptr;
   /// Runs `f` now into `r.measured`, or leaves it for later.
   void measure_with(EntityReport& r, std::function<double()> f) const {
     if (later) later->tasks.push_back({report, std::move(f)});
@@ -68,6 +72,21 @@ struct MotionState {
 /// (and the profile's dwell) and the coolant. Moves carry `entity`.
 void change_tool_and_spindle(Program& p, const MachineProfile& m, const CutParams& cp, double safe, MotionState& ms,
                              int entity);
+/// Retract (straight up) if not at `safe`, rapid over `start`, rapid down to
+/// the clearance plane `clear` (when below safe), plunge to `start` at the
+/// plunge feed. Leaves `ms.pos` as it was: the caller takes the position
+/// from the cut that follows.
+void approach(Program& p, int entity, const Vec3& start, double safe, double clear, double plunge_feed,
+              const MotionState& ms);
+
+/// Cuts a curve entity as a part (program.hpp CutParams::part_cut()):
+/// the tool-centre path at the tool's radius on its side (offset.hpp), in
+/// the direction asked, in depth passes with leads and tabs, in the output
+/// mode's blocks, and measures the printed path against the part
+/// independently (offset_measure.hpp). Starts after the tool change and the
+/// entity's `before` lines; ends retracted at safe Z (`ms.pos`). Fills `r`.
+void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear);
+
 /// Cuts a surface entity completely (surface_emitter.cpp): bezier_patch and
 /// coons_patch by their toolpath (zigzag, raster, boundary), curve_on_surface
 /// along its curve; tool and spindle, rapids at safe Z, plunges, cutting

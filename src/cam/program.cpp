@@ -5,6 +5,7 @@
 #include <charconv>
 #include <atomic>
 #include <cstdio>
+#include <deque>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -14,6 +15,7 @@
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/cam/program_limits.hpp"
+#include "bezcam/cam/cut_order.hpp"
 #include "cut_emitters.hpp"
 
 namespace bezcam {
@@ -48,14 +50,28 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
                            "\"; add \"" + key + "\" to the file's \"job\" object");
     return *v;
   };
-  CutParams c{need(p.feed, "feed"),   need(p.plunge_feed, "plunge_feed"), need(p.safe_z, "safe_z"),
-              need(p.cut_z, "cut_z"), p.spindle_rpm.value_or(0),          p.tool_radius.value_or(0),
-              p.tool.value_or(1),     p.coolant.value_or(Coolant::off),   std::nullopt,
-              0,                      {},                                  {}};
+  CutParams c;
+  c.feed = need(p.feed, "feed");
+  c.plunge_feed = need(p.plunge_feed, "plunge_feed");
+  c.safe_z = need(p.safe_z, "safe_z");
+  c.cut_z = need(p.cut_z, "cut_z");
+  c.spindle_rpm = p.spindle_rpm.value_or(0);
+  c.tool_radius = p.tool_radius.value_or(0);
+  c.tool = p.tool.value_or(1);
+  c.coolant = p.coolant.value_or(Coolant::off);
   c.clearance = p.clearance;
   c.top_z = p.top_z.value_or(0);
   if (p.before) c.before = *p.before;
   if (p.after) c.after = *p.after;
+  c.side = p.side.value_or(CutSide::on);
+  c.tool_diameter = p.tool_diameter;
+  c.step_down = p.step_down;
+  c.stock_to_leave = p.stock_to_leave.value_or(0);
+  c.direction = p.direction.value_or(CutDirection::as_drawn);
+  c.lead = p.lead;
+  c.tabs = p.tabs;
+  c.controller_compensation = p.controller_compensation.value_or(false);
+  c.tolerance_side = p.tolerance_side.value_or(ToleranceSide::both);
   if (c.clearance && c.top_z + *c.clearance <= c.cut_z && !e.surface)
     throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
                      "the clearance plane (top_z " + fmt_num(c.top_z) + " + clearance " + fmt_num(*c.clearance) +
@@ -173,6 +189,33 @@ void emit_lines(CutContext& c, EntityReport& r) {
     });
 }
 
+// Retract (straight up) if not at this entity's safe Z, rapid over the
+// start, rapid down to the clearance plane `clear` (when below safe), plunge
+// at the plunge feed. Leaves `ms.pos` where it was: the caller takes the
+// position from the cut that follows.
+void approach(Program& p, int entity, const Vec3& start, double safe, double clear, double plunge_feed,
+              const detail::MotionState& ms) {
+  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
+  if (!ms.pos_known || ms.pos.z != safe) {
+    RapidMove up;
+    up.to = {ms.pos_known ? ms.pos.x : 0, ms.pos_known ? ms.pos.y : 0, safe};
+    if (!ms.pos_known) up.axes = kAxisZ;  // position unknown: move Z only
+    push({up, entity});
+  }
+  RapidMove over;
+  over.to = {start.x, start.y, safe};
+  push({over, entity});
+  if (clear < safe) {
+    RapidMove down;
+    down.to = {start.x, start.y, clear};
+    push({down, entity});
+  }
+  LineMove plunge;
+  plunge.to = start;
+  plunge.feed = plunge_feed;
+  push({plunge, entity});
+}
+
 }  // namespace detail
 
 namespace {
@@ -202,33 +245,6 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 
 namespace {
 
-// Retract (straight up) if not at this entity's safe Z, rapid over the
-// start, rapid down to the clearance plane `clear` (when below safe), plunge
-// at the plunge feed. Leaves `ms.pos` where it was: the caller takes the
-// position from the cut that follows.
-void approach(Program& p, int entity, const Vec3& start, double safe, double clear, double plunge_feed,
-              const detail::MotionState& ms) {
-  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
-  if (!ms.pos_known || ms.pos.z != safe) {
-    RapidMove up;
-    up.to = {ms.pos_known ? ms.pos.x : 0, ms.pos_known ? ms.pos.y : 0, safe};
-    if (!ms.pos_known) up.axes = kAxisZ;  // position unknown: move Z only
-    push({up, entity});
-  }
-  RapidMove over;
-  over.to = {start.x, start.y, safe};
-  push({over, entity});
-  if (clear < safe) {
-    RapidMove down;
-    down.to = {start.x, start.y, clear};
-    push({down, entity});
-  }
-  LineMove plunge;
-  plunge.to = start;
-  plunge.feed = plunge_feed;
-  push({plunge, entity});
-}
-
 // Runs the deferred measurements on every core, fills the reports and the
 // program's largest reading; the first failure (an internal check) is
 // rethrown here.
@@ -256,7 +272,9 @@ void run_measurements(Program& p, detail::Measurements& later) {
   for (auto& t : pool) t.join();
   if (failed) std::rethrow_exception(failed);
   for (size_t i = 0; i < tasks.size(); ++i) {
-    p.entities[tasks[i].report].measured = readings[i];
+    // An entity cut in several runs (part cutting) has several readings.
+    auto& m = p.entities[tasks[i].report].measured;
+    m = std::max(m, readings[i]);
     p.max_measured = std::max(p.max_measured, readings[i]);
   }
 }
@@ -285,8 +303,79 @@ void move_part(Program& p, const Vec3& offset) {
                     (rounded ? " (the offset rounded to " + std::to_string(p.decimals) + " decimals)" : ""));
 }
 
-Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
+// `order: "shortest"` (cut_order.hpp): the job with its entities in the
+// planned order, closed curves started at the planned joint (their pieces
+// rotated), open ones reversed where that is allowed; the rapid lengths go
+// to the program's notes.
+Job ordered(const Job& job, const MachineProfile& m, Program& p) {
+  std::vector<OrderContour> cs;
+  for (const Entity& e : job.entities) {
+    OrderContour c;
+    if (e.surface || e.curve.pieces.empty()) {
+      const Box3 b = e.surface ? bounds(*e.surface) : Box3{};
+      c.outline = {b.empty() ? Vec3{} : b.lo, b.empty() ? Vec3{} : b.hi};
+      c.movable = false;
+    } else {
+      const auto& pieces = e.curve.pieces;
+      const double scale = std::max(1.0, control_magnitude(pieces));
+      c.closed = e.curve.closed || dist(pieces.front().front(), pieces.back().back()) <= 1e-9 * scale;
+      for (const Bezier& b : pieces) {
+        if (c.closed) c.starts.push_back(c.outline.size());
+        for (double t : {0.0, 0.25, 0.5, 0.75}) c.outline.push_back(t == 0 ? b.front() : evaluate(b, t));
+      }
+      c.outline.push_back(c.closed ? pieces.front().front() : pieces.back().back());
+      const CutParams cp = cut_params(job, e, m);
+      // Reversing an open curve changes its left and right: only a curve
+      // cut on the line, as drawn, with the tolerance on both sides.
+      c.reversible = !c.closed && cp.side == CutSide::on && cp.direction == CutDirection::as_drawn &&
+                     cp.tolerance_side == ToleranceSide::both;
+    }
+    cs.push_back(std::move(c));
+  }
+  const CutOrder plan = plan_cut_order(cs, Vec3{});
+  Job out = job;
+  out.entities.clear();
+  for (const OrderStep& st : plan.steps) {
+    Entity e = job.entities[st.contour];
+    auto& pieces = e.curve.pieces;
+    const size_t k = st.start_vertex / 4;  // outline vertices: four per piece
+    if (cs[st.contour].closed && k > 0 && k < pieces.size()) {
+      std::rotate(pieces.begin(), pieces.begin() + static_cast<long>(k), pieces.end());
+      CurveSegment seg;
+      seg.kind = e.curve.kind;
+      seg.degree = e.curve.max_degree();
+      seg.rational = e.curve.rational();
+      const bool closed = e.curve.closed;
+      e.curve = make_single(seg, std::move(pieces), e.curve.dim);
+      e.curve.closed = closed;
+    } else if (st.reversed) {
+      std::reverse(pieces.begin(), pieces.end());
+      for (auto& b : pieces) {
+        std::reverse(b.points.begin(), b.points.end());
+        std::reverse(b.weights.begin(), b.weights.end());
+      }
+      CurveSegment seg;
+      seg.kind = e.curve.kind;
+      seg.degree = e.curve.max_degree();
+      seg.rational = e.curve.rational();
+      e.curve = make_single(seg, std::move(pieces), e.curve.dim);
+    }
+    out.entities.push_back(std::move(e));
+  }
+  const std::string u = to_string(job.units);
+  auto mm = [](double v) { return fmt_num(std::round(v * 10) / 10); };
+  p.notes.push_back("order shortest: " + std::to_string(plan.nesting.size()) + " nested contour" +
+                    (plan.nesting.size() == 1 ? "" : "s") + " cut before what encloses them; rapids " + mm(plan.rapid_planned) +
+                    " " + u + " in XY instead of " + mm(plan.rapid_as_written) + " " + u + " as written (" +
+                    mm(plan.rapid_as_written - plan.rapid_planned) + " " + u + " saved)");
+  p.order_summary = p.notes.back();
+  return out;
+}
+
+Program build_program_unchecked(const Job& original_job, const MachineProfile& m, const ConvertOptions& opt) {
   Program p;
+  const Job ordered_job = original_job.order_shortest ? ordered(original_job, m, p) : Job{};
+  const Job& job = original_job.order_shortest ? ordered_job : original_job;
   p.job_name = std::filesystem::path(job.source).filename().string();
   p.machine = m.name;
   p.units = job.units;
@@ -321,6 +410,7 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
   Vec3 pos;
   bool pos_known = false;
   ProgramLength length;  // stated limits (program_limits.hpp)
+  std::deque<Entity> owned;  // part cutting's geometry, read by `later`
   detail::Measurements later;
   for (const Entity& e : job.entities) {
     if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
@@ -376,19 +466,23 @@ Program build_program_unchecked(const Job& job, const MachineProfile& m, const C
       if (clear < safe) r.clear_z = clear;
     }
     for (const auto& line : cp.before) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});
-    approach(p, entity, start, safe, clear, cp.plunge_feed, ms);
-
-    switch (opt.output) {
-      case OutputMode::lines: detail::emit_lines(ctx, r); break;
-      case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
-      case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
+    if (cp.part_cut()) {
+      ctx.owned = &owned;
+      detail::emit_part(ctx, ms, r, safe, clear);  // ends retracted, pos set
+    } else {
+      detail::approach(p, entity, start, safe, clear, cp.plunge_feed, ms);
+      switch (opt.output) {
+        case OutputMode::lines: detail::emit_lines(ctx, r); break;
+        case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
+        case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
+      }
+      pos = motion_of(p.moves.back())->to;  // the cut ends with a motion
+      RapidMove retract;
+      retract.to = {pos.x, pos.y, safe};
+      push({retract, entity});
+      pos = retract.to;
+      pos_known = true;
     }
-    pos = motion_of(p.moves.back())->to;  // the cut ends with a motion
-    RapidMove retract;
-    retract.to = {pos.x, pos.y, safe};
-    push({retract, entity});
-    pos = retract.to;
-    pos_known = true;
     for (const auto& line : cp.after) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});
     p.max_measured = std::max(p.max_measured, r.measured);
     p.max_bound = std::max(p.max_bound, r.bound);

@@ -100,6 +100,7 @@ int run() {
   if (!o.quiet) {
     // The job's warnings and the program's own (e.g. an output mode replaced).
     for (const auto& w : r.program.warnings) std::cerr << "bezcam: warning: " << w << "\n";
+    if (!r.program.order_summary.empty()) std::cerr << "bezcam: " << r.program.order_summary << "\n";
     std::cerr << report_text(rep);
     if (o.out != "-") std::cerr << "bezcam: wrote " << o.out << (o.report.empty() || o.report == "-" ? "" : " and " + o.report) << "\n";
   }

@@ -226,9 +226,27 @@ CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::
 namespace {
 
 // The cutting parameters, at job and entity level (docs/job-format.md).
-constexpr std::array<std::string_view, 13> kParamKeys = {"feed",        "plunge_feed", "safe_z", "cut_z",  "spindle_rpm",
-                                                         "tool",        "tool_radius", "gouge",  "coolant", "clearance",
-                                                         "top_z",       "before",      "after"};
+constexpr std::array<std::string_view, 23> kParamKeys = {
+    "feed",          "plunge_feed",    "safe_z",    "cut_z",     "spindle_rpm", "tool",         "tool_radius", "gouge",
+    "coolant",       "clearance",      "top_z",     "before",    "after",       "side",         "tool_diameter",
+    "stock_to_leave", "step_down",     "direction", "lead",      "tabs",        "compensation", "tolerance_side",
+    "order"};
+
+// One of `names` (the enum's values in order), or a refusal listing them.
+template <class E, size_t N>
+std::optional<E> choice(const JsonCtx& ctx, const json& obj, const std::string& path, const char* key,
+                        const std::array<const char*, N>& names) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return std::nullopt;
+  const std::string kp = path.empty() ? key : path + "." + key;
+  const std::string v = ctx.string(*it, kp);
+  std::string list;
+  for (size_t i = 0; i < N; ++i) {
+    if (v == names[i]) return static_cast<E>(i);
+    list += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + "\"" + names[i] + "\"";
+  }
+  ctx.fail(kp, errc::job_cut, "expected " + list + ", found " + describe(*it));
+}
 
 JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& path, bool entity_level) {
   JobParams p;
@@ -287,8 +305,39 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   };
   sequence("before", p.before);
   sequence("after", p.after);
+  // Part cutting (docs/job-format.md, "Cutting a part, not only a curve").
+  p.side = choice<CutSide>(ctx, obj, path, "side", std::array{"on", "left", "right", "inside", "outside"});
+  p.direction = choice<CutDirection>(ctx, obj, path, "direction", std::array{"as-drawn", "climb", "conventional"});
+  p.tolerance_side = choice<ToleranceSide>(ctx, obj, path, "tolerance_side", std::array{"both", "left", "right", "waste"});
+  if (auto c = choice<int>(ctx, obj, path, "compensation", std::array{"cam", "controller"})) p.controller_compensation = *c == 1;
+  num("tool_diameter", p.tool_diameter, true);
+  num("stock_to_leave", p.stock_to_leave, false);
+  num("step_down", p.step_down, true);
+  auto sub = [&](const char* key) { return path.empty() ? std::string(key) : path + "." + key; };
+  if (auto it = obj.find("lead"); it != obj.end()) {
+    const std::string kp = sub("lead");
+    if (!it->is_object()) ctx.expected(kp, "an object {\"radius\": R, \"length\": L}", *it);
+    ctx.check_keys(*it, kp, {"radius", "length"});
+    Lead l;
+    l.radius = ctx.positive(ctx.require(*it, kp, "radius"), kp + ".radius");
+    l.length = it->contains("length") ? ctx.number((*it)["length"], kp + ".length") : 0;
+    if (l.length < 0) ctx.fail(kp + ".length", errc::job_cut, "expected a length >= 0, found " + fmt_num(l.length));
+    p.lead = l;
+  }
+  if (auto it = obj.find("tabs"); it != obj.end()) {
+    const std::string kp = sub("tabs");
+    if (!it->is_object()) ctx.expected(kp, "an object {\"count\": N, \"width\": W, \"height\": H}", *it);
+    ctx.check_keys(*it, kp, {"count", "width", "height"});
+    Tabs t;
+    t.count = static_cast<int>(ctx.integer(ctx.require(*it, kp, "count"), kp + ".count"));
+    if (t.count < 1) ctx.fail(kp + ".count", errc::job_cut, "expected at least 1 tab, found " + std::to_string(t.count));
+    t.width = ctx.positive(ctx.require(*it, kp, "width"), kp + ".width");
+    t.height = ctx.positive(ctx.require(*it, kp, "height"), kp + ".height");
+    p.tabs = t;
+  }
   if (!entity_level) {
     std::vector<std::string_view> keys(kParamKeys.begin(), kParamKeys.end());
+    if (path != "job") keys.pop_back();  // `order` is the job's
     if (path == "job") keys.push_back("program_number");
     ctx.check_keys(obj, path, keys);
   }
@@ -368,6 +417,15 @@ JobParams JobParams::over(const JobParams& base) const {
   if (top_z) r.top_z = top_z;
   if (before) r.before = before;
   if (after) r.after = after;
+  if (side) r.side = side;
+  if (tool_diameter) r.tool_diameter = tool_diameter;
+  if (stock_to_leave) r.stock_to_leave = stock_to_leave;
+  if (step_down) r.step_down = step_down;
+  if (direction) r.direction = direction;
+  if (lead) r.lead = lead;
+  if (tabs) r.tabs = tabs;
+  if (controller_compensation) r.controller_compensation = controller_compensation;
+  if (tolerance_side) r.tolerance_side = tolerance_side;
   return r;
 }
 
@@ -440,7 +498,7 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
                          ", which is too large for a double (about 1.8e308 at most)");
   }
   if (!doc.is_object()) ctx.expected("(top level)", "a JSON object", doc);
-  ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities"});
+  ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities", "order"});
   if (!doc.contains("bezcam"))
     ctx.fail("bezcam", errc::job_missing,
              "the file does not say its format version; add \"bezcam\": 1 at the top level (is this a bezcam job?)");
@@ -466,6 +524,15 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
         ctx.fail("job.program_number", errc::job_range, "expected a program number from 1 to 99999999, found " + std::to_string(n));
       job.program_number = n;
     }
+  }
+  for (const std::string where : {"order", "job.order"}) {
+    const json* o = where == "order" ? (doc.contains("order") ? &doc["order"] : nullptr)
+                                     : (doc.contains("job") && doc["job"].contains("order") ? &doc["job"]["order"] : nullptr);
+    if (!o) continue;
+    const std::string v = ctx.string(*o, where);
+    if (v != "shortest" && v != "as-written")
+      ctx.fail(where, errc::job_cut, "expected \"as-written\" or \"shortest\", found " + detail::describe(*o));
+    job.order_shortest = v == "shortest";
   }
   const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
   if (ents.size() > kMaxEntities)

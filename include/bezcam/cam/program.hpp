@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bezcam/cam/move.hpp"
+#include "bezcam/flatten/offset.hpp"
 #include "bezcam/job/job.hpp"
 #include "bezcam/cam/machine_profile.hpp"
 
@@ -29,6 +30,11 @@ struct EntityReport {
   /// between passes. NaN: none (safe Z).
   double clear_z = std::numeric_limits<double>::quiet_NaN();
   int tool = -1;           ///< the tool that cuts it
+  /// Part cutting: the tool centre's distance from the curve (tool radius +
+  /// stock to leave; 0 on the curve), and the stretches of the curve the
+  /// tool cannot reach (material left).
+  double offset = 0;
+  std::vector<MaterialLeft> left;
 };
 
 enum class OutputMode { lines, arcs, nurbs };
@@ -73,6 +79,8 @@ struct Program {
   /// machine lacks was replaced (also one of `warnings`), decimals raised
   /// for the tolerance, the part moved by an offset.
   std::vector<std::string> notes;
+  /// `order: "shortest"`: what the order saved (also one of `notes`).
+  std::string order_summary;
 };
 
 /// Builds the canonical program: header state, per entity a retract, rapid,
@@ -82,12 +90,26 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 /// The effective cutting parameters of an entity (entity > job > profile),
 /// in job units; InputError naming the missing key when one is unset.
 struct CutParams {
-  double feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool_radius;
-  int tool;
+  double feed = 0, plunge_feed = 0, safe_z = 0, cut_z = 0, spindle_rpm = 0, tool_radius = 0;
+  int tool = 1;
   Coolant coolant = Coolant::off;
   std::optional<double> clearance;  ///< above top_z; unset: plunge from safe Z
   double top_z = 0;
   std::vector<std::string> before, after;  ///< templates, as the job gives them
+  /// Part cutting (job.hpp): unset optionals mean "not asked for".
+  CutSide side = CutSide::on;
+  std::optional<double> tool_diameter, step_down;
+  double stock_to_leave = 0;
+  CutDirection direction = CutDirection::as_drawn;
+  std::optional<Lead> lead;
+  std::optional<Tabs> tabs;
+  bool controller_compensation = false;
+  ToleranceSide tolerance_side = ToleranceSide::both;
+  /// Whether the entity is cut as a part (any of the above asked for).
+  bool part_cut() const {
+    return side != CutSide::on || step_down || lead || tabs || controller_compensation ||
+           tolerance_side != ToleranceSide::both || direction != CutDirection::as_drawn;
+  }
 };
 
 /// An entity's `before` / `after` line with its placeholders replaced

@@ -26,6 +26,26 @@ const char* to_string(Coolant c);
 /// "flood", "mist" or "off"; nothing for any other text.
 std::optional<Coolant> coolant_from(std::string_view text);
 
+/// Cutting a part, not only a curve (docs/job-format.md, "Cutting a part"):
+/// which side of the curve the tool is on.
+enum class CutSide { on, left, right, inside, outside };
+/// Direction of travel: as drawn, climb (the part on the tool's right,
+/// spindle M03) or conventional.
+enum class CutDirection { as_drawn, climb, conventional };
+/// Where the path may deviate from its true curve.
+enum class ToleranceSide { both, left, right, waste };
+/// Tangent lead-in and lead-out: a line of `length` and a quarter arc of
+/// `radius`, on the waste side.
+struct Lead {
+  double radius = 0, length = 0;
+};
+/// Holding tabs: `count` spans of `width`, evenly spaced along the curve,
+/// where passes below cut_z + height rise to it.
+struct Tabs {
+  int count = 0;
+  double width = 0, height = 0;
+};
+
 /// Cutting parameters (file units); unset values fall back to the entity's
 /// job, then to the machine profile.
 struct JobParams {
@@ -43,6 +63,14 @@ struct JobParams {
   /// with {entity}, {tool}, {rpm}, {feed}, {plunge_feed}, {cut_z},
   /// {safe_z} and {top_z} replaced (kEntityPlaceholders).
   std::optional<std::vector<std::string>> before, after;
+  /// Part cutting (curve entities).
+  std::optional<CutSide> side;
+  std::optional<double> tool_diameter, stock_to_leave, step_down;
+  std::optional<CutDirection> direction;
+  std::optional<Lead> lead;
+  std::optional<Tabs> tabs;
+  std::optional<bool> controller_compensation;  ///< `compensation`: "controller" (true) or "cam"
+  std::optional<ToleranceSide> tolerance_side;
   /// Values set here win; the rest come from `base`.
   JobParams over(const JobParams& base) const;
 };
@@ -85,6 +113,9 @@ struct Job {
   std::optional<std::string> machine;
   JobParams params;
   std::vector<Entity> entities;
+  /// `order`: "shortest" (true): nested contours first, then the order and
+  /// start points that shorten the rapids; "as-written" (false, default).
+  bool order_shortest = false;
   std::vector<std::string> warnings;  ///< unknown keys and other non-fatal findings
   std::string source;                 ///< file name, for messages
 };

@@ -1,0 +1,170 @@
+// Independent measurement of an offset path (offset_measure.hpp). Shares
+// nothing with offset.cpp: its own sampling of the curve, its own grid.
+#include "bezcam/flatten/offset_measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bezcam {
+
+double OffsetReading::deviation(double r) const {
+  return std::max({std::abs(min_distance - r), std::abs(max_distance - r), coverage});
+}
+
+namespace {
+
+struct CurveSample {
+  Vec3 p, normal;  // unit left normal
+};
+
+// Samples on the curve, consecutive chords within `res` of it: a piece is
+// cut in halves until the chord's midpoint and quarter points agree with the
+// curve within res / 4 (and the span is short against the piece).
+void sample_curve(const Bezier& b, double res, std::vector<CurveSample>& out) {
+  auto at = [&](double t) {
+    const Vec3 p = evaluate(b, t), d = derivative(b, t);
+    const double l = std::hypot(d.x, d.y);
+    return CurveSample{{p.x, p.y, 0}, l > 0 ? Vec3{-d.y / l, d.x / l, 0} : Vec3{}};
+  };
+  struct Span {
+    double t0, t1;
+    int depth;
+  };
+  std::vector<Span> stack{{0, 1, 0}};
+  std::vector<std::pair<double, CurveSample>> got{{0.0, at(0)}};
+  while (!stack.empty()) {
+    const Span s = stack.back();
+    stack.pop_back();
+    const Vec3 a = evaluate(b, s.t0), c = evaluate(b, s.t1);
+    bool flat = s.depth >= 4;
+    for (double f : {0.25, 0.5, 0.75}) {
+      if (!flat) break;
+      const Vec3 m = evaluate(b, s.t0 + f * (s.t1 - s.t0));
+      const Vec3 q = lerp(a, c, f);
+      if (std::hypot(m.x - q.x, m.y - q.y) > res / 4) flat = false;
+    }
+    if (flat || s.depth >= 40) {
+      got.push_back({s.t1, at(s.t1)});
+      continue;
+    }
+    const double tm = 0.5 * (s.t0 + s.t1);
+    stack.push_back({tm, s.t1, s.depth + 1});
+    stack.push_back({s.t0, tm, s.depth + 1});
+  }
+  std::sort(got.begin(), got.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& g : got) out.push_back(g.second);
+}
+
+// Segments in order, in chunks with boxes: the nearest distance from a
+// point, pruning chunks whose box is farther than the best so far (seeded by
+// the segments near the previous answer: consecutive queries are close).
+struct Index {
+  static constexpr size_t kChunk = 32;
+  std::vector<std::pair<Vec3, Vec3>> segs;
+  std::vector<Box3> boxes, groups;  // per chunk, per kChunk chunks
+  size_t hint = 0;
+  explicit Index(std::vector<std::pair<Vec3, Vec3>> s) : segs(std::move(s)) {
+    for (size_t k = 0; k < segs.size(); k += kChunk) {
+      Box3 b;
+      for (size_t i = k; i < std::min(segs.size(), k + kChunk); ++i) {
+        b.add(segs[i].first);
+        b.add(segs[i].second);
+      }
+      boxes.push_back(b);
+    }
+    for (size_t k = 0; k < boxes.size(); k += kChunk) {
+      Box3 b;
+      for (size_t i = k; i < std::min(boxes.size(), k + kChunk); ++i) b.add(boxes[i]);
+      groups.push_back(b);
+    }
+  }
+  // Squared distances: no square root in the inner loop.
+  static double seg_d2(const Vec3& p, const Vec3& a, const Vec3& b) {
+    const double dx = b.x - a.x, dy = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
+    const double l2 = dx * dx + dy * dy;
+    const double t = l2 > 0 ? std::clamp((px * dx + py * dy) / l2, 0.0, 1.0) : 0.0;
+    const double ex = px - t * dx, ey = py - t * dy;
+    return ex * ex + ey * ey;
+  }
+  static double box_d2(const Vec3& p, const Box3& b) {
+    const double dx = std::max({b.lo.x - p.x, 0.0, p.x - b.hi.x});
+    const double dy = std::max({b.lo.y - p.y, 0.0, p.y - b.hi.y});
+    return dx * dx + dy * dy;
+  }
+  double nearest(const Vec3& p) {
+    if (segs.empty()) return HUGE_VAL;
+    double best = HUGE_VAL;
+    size_t at = hint;
+    const size_t lo = hint > 4 ? hint - 4 : 0, hi = std::min(segs.size(), hint + 5);
+    for (size_t i = lo; i < hi; ++i) {
+      const double d = seg_d2(p, segs[i].first, segs[i].second);
+      if (d < best) best = d, at = i;
+    }
+    for (size_t g = 0; g < groups.size(); ++g) {
+      if (box_d2(p, groups[g]) >= best) continue;
+      for (size_t c = g * kChunk; c < std::min(boxes.size(), (g + 1) * kChunk); ++c) {
+        if (box_d2(p, boxes[c]) >= best) continue;
+        for (size_t i = c * kChunk; i < std::min(segs.size(), (c + 1) * kChunk); ++i) {
+          const double d = seg_d2(p, segs[i].first, segs[i].second);
+          if (d < best) best = d, at = i;
+        }
+      }
+    }
+    hint = at;
+    return std::sqrt(best);
+  }
+};
+
+}  // namespace
+
+OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const Vec3> path, double r,
+                             int side, double tolerance, double resolution, bool distances) {
+  OffsetReading out;
+  std::vector<std::vector<CurveSample>> samples(curves.size());
+  std::vector<std::pair<Vec3, Vec3>> segs;
+  for (size_t c = 0; c < curves.size(); ++c) {
+    for (const Bezier& b : curves[c]) {
+      const size_t first = samples[c].size();
+      sample_curve(b, resolution, samples[c]);
+      for (size_t i = first + 1; i < samples[c].size(); ++i) segs.push_back({samples[c][i - 1].p, samples[c][i].p});
+    }
+  }
+  Index curve(std::move(segs));
+  // Path points, with steps of at most `resolution` between them.
+  double lo = HUGE_VAL, hi = 0;
+  std::vector<std::pair<Vec3, Vec3>> psegs;
+  for (size_t i = 0; i < path.size(); ++i) {
+    const Vec3 p{path[i].x, path[i].y, 0};
+    if (i > 0) psegs.push_back({Vec3{path[i - 1].x, path[i - 1].y, 0}, p});
+    if (!distances) continue;
+    const Vec3 q = i > 0 ? Vec3{path[i - 1].x, path[i - 1].y, 0} : p;
+    // The distance to the curve moves by at most the distance travelled,
+    // so from a reading d the next one that could beat the extremes so far
+    // is min(hi - d, d - lo) away; steps of at least 2 resolution read every
+    // point's distance within resolution.
+    const double len = std::hypot(p.x - q.x, p.y - q.y);
+    for (double at = i > 0 ? std::min(2 * resolution, len) : 0;;) {
+      const double d = curve.nearest(len > 0 ? lerp(q, p, at / len) : p);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+      if (at >= len) break;
+      at = std::min(len, at + std::max(2 * resolution, std::min(hi - d, d - lo)));
+    }
+  }
+  out.min_distance = distances ? lo : r;
+  out.max_distance = distances ? hi : r;
+  if (side != 0 && !curves.empty() && !psegs.empty()) {
+    Index pg(std::move(psegs));
+    for (const CurveSample& s : samples[0]) {
+      if (s.normal.x == 0 && s.normal.y == 0) continue;
+      const Vec3 q = s.p + s.normal * (side * r);
+      // Folded away (nearer than r to some other stretch of the part): the
+      // true offset has no point here.
+      if (curve.nearest(q) < r - tolerance) continue;
+      out.coverage = std::max(out.coverage, pg.nearest(q));
+    }
+  }
+  return out;
+}
+
+}  // namespace bezcam

@@ -1,0 +1,141 @@
+// The proven offset (offset.hpp), checked by the independent measurement
+// (offset_measure.hpp), never by the code that built it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "bezcam/flatten/offset.hpp"
+#include "bezcam/flatten/offset_measure.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+
+namespace bezcam {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::vector<Bezier> circle(double cx, double cy, double R, bool ccw = true) {
+  std::vector<Bezier> out;
+  const double w = std::cos(kPi / 4);
+  for (int k = 0; k < 4; ++k) {
+    const double s = (ccw ? 1 : -1) * k * kPi / 2, e = (ccw ? 1 : -1) * (k + 1) * kPi / 2, m = (s + e) / 2;
+    out.push_back(Bezier::make({{cx + R * std::cos(s), cy + R * std::sin(s)},
+                                {cx + R / w * std::cos(m), cy + R / w * std::sin(m)},
+                                {cx + R * std::cos(e), cy + R * std::sin(e)}},
+                               {1, w, 1}));
+  }
+  out.back().points.back() = out.front().points.front();
+  return out;
+}
+
+std::vector<Bezier> polygon(std::vector<Vec3> pts) {
+  std::vector<Bezier> out;
+  for (size_t i = 0; i < pts.size(); ++i) out.push_back(Bezier::make({pts[i], pts[(i + 1) % pts.size()]}));
+  return out;
+}
+
+// Dense polyline of the offset chains (the drawn path, no rounding).
+std::vector<Vec3> dense(const OffsetResult& r, size_t chain = 0) {
+  return flatten(bezier_pieces(r.chains.at(chain)), {1e-6, -1}).points;
+}
+
+OffsetReading measure(const std::vector<Bezier>& part, const OffsetResult& res, double r, int side, double tol) {
+  const std::vector<std::vector<Bezier>> curves{part};
+  const auto path = dense(res);
+  return measure_offset(curves, path, r, side, tol, tol * 1e-2);
+}
+
+TEST(Offset, CircleOutsideAndInsideAreConcentricCircles) {
+  const auto part = circle(10, 5, 20);
+  for (int side : {1, -1}) {  // ccw circle: left is inside
+    const auto res = offset_curve(part, true, {3, side, 0.005});
+    ASSERT_EQ(res.chains.size(), 1u);
+    EXPECT_TRUE(res.closed[0]);
+    const auto m = measure(part, res, 3, side, 0.01);
+    EXPECT_LE(m.deviation(3), 0.005 + 1e-4) << side;
+    EXPECT_LE(res.bound, 0.0051);
+    EXPECT_TRUE(res.left.empty());
+  }
+}
+
+TEST(Offset, SquareOutsideRollsRoundTheCornersInsideLeavesThem) {
+  const auto part = polygon({{0, 0}, {40, 0}, {40, 30}, {0, 30}});  // ccw
+  const auto out = offset_curve(part, true, {5, -1, 0.005});
+  ASSERT_EQ(out.chains.size(), 1u);
+  size_t arcs = 0;
+  for (const auto& s : out.chains[0]) arcs += s.arc;
+  EXPECT_EQ(arcs, 4u);  // one roll per corner
+  EXPECT_LE(measure(part, out, 5, -1, 0.01).deviation(5), 0.006);
+  EXPECT_TRUE(out.left.empty());
+
+  const auto in = offset_curve(part, true, {5, 1, 0.005});
+  ASSERT_EQ(in.chains.size(), 1u);
+  EXPECT_EQ(in.chains[0].size(), 4u);  // a smaller rectangle
+  EXPECT_LE(measure(part, in, 5, 1, 0.01).deviation(5), 0.006);
+  EXPECT_EQ(in.left.size(), 4u);  // material in every inner corner
+}
+
+TEST(Offset, OpenCubicBothSidesWithinTheFit) {
+  const std::vector<Bezier> part{Bezier::make({{0, 0}, {30, 40}, {60, -40}, {90, 0}})};
+  for (int side : {1, -1}) {
+    const auto res = offset_curve(part, false, {2, side, 0.004});
+    ASSERT_EQ(res.chains.size(), 1u);
+    EXPECT_FALSE(res.closed[0]);
+    const auto m = measure(part, res, 2, side, 0.01);
+    EXPECT_LE(m.deviation(2), 0.0045) << side << " min " << m.min_distance << " max " << m.max_distance
+                                      << " cov " << m.coverage;
+  }
+}
+
+TEST(Offset, NotchTighterThanTheToolIsTrimmedAndSaid) {
+  // A 40 x 30 block with a 4 mm wide slot 10 deep in its top edge (ccw).
+  const auto part = polygon({{0, 0}, {40, 0}, {40, 30}, {22, 30}, {22, 20}, {18, 20}, {18, 30}, {0, 30}});
+  // Outside with r = 3: the slot (4 wide) is narrower than the tool (6).
+  const auto res = offset_curve(part, true, {3, -1, 0.005});
+  ASSERT_EQ(res.chains.size(), 1u);
+  const auto m = measure(part, res, 3, -1, 0.01);
+  EXPECT_GE(m.min_distance, 3 - 0.006);
+  EXPECT_LE(m.max_distance, 3 + 0.006);
+  double left = 0;
+  for (const auto& l : res.left) left += l.length;
+  EXPECT_GE(left, 20);  // the slot's walls and floor are not reached
+  // The path never crosses itself.
+  const auto path = dense(res);
+  for (size_t i = 0; i + 1 < path.size(); ++i)
+    for (size_t j = i + 2; j + 1 < path.size(); ++j) {
+      if (i == 0 && j + 2 == path.size()) continue;
+      const Vec3 a = path[i], b = path[i + 1], c = path[j], d = path[j + 1];
+      const double d1 = cross(b - a, c - a).z, d2 = cross(b - a, d - a).z;
+      const double d3 = cross(d - c, a - c).z, d4 = cross(d - c, b - c).z;
+      ASSERT_FALSE(d1 * d2 < 0 && d3 * d4 < 0) << i << " " << j;
+    }
+}
+
+TEST(Offset, ToolLargerThanTheHoleLeavesNothing) {
+  const auto part = circle(0, 0, 2);
+  const auto res = offset_curve(part, true, {3, 1, 0.005});
+  EXPECT_TRUE(res.chains.empty());
+}
+
+TEST(Offset, OrientationFromTheArea) {
+  EXPECT_GT(signed_area(circle(0, 0, 10)), 0);
+  EXPECT_LT(signed_area(circle(0, 0, 10, false)), 0);
+  EXPECT_NEAR(signed_area(polygon({{0, 0}, {40, 0}, {40, 30}, {0, 30}})), 1200, 1e-9);
+}
+
+TEST(Offset, TheMeasurementCatchesAWrongOffset) {
+  const auto part = circle(0, 0, 20);
+  auto res = offset_curve(part, true, {3, -1, 0.005});
+  // Move one stretch of the path 0.05 outwards: the reading must show it.
+  auto path = dense(res);
+  for (size_t i = path.size() / 3; i < path.size() / 3 + 20; ++i) path[i] = path[i] * (23.05 / 23);
+  const std::vector<std::vector<Bezier>> curves{part};
+  EXPECT_GE(measure_offset(curves, path, 3, -1, 0.01, 1e-4).deviation(3), 0.049);
+  // A missing stretch shows as coverage.
+  auto cut = dense(res);
+  cut.resize(cut.size() / 2);
+  EXPECT_GE(measure_offset(curves, cut, 3, -1, 0.01, 1e-4).coverage, 0.04);
+}
+
+}  // namespace
+}  // namespace bezcam
