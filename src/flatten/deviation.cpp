@@ -169,6 +169,67 @@ double descend(const Vec3& x, std::span<const Vec3> pts, size_t& hint, double la
   return dd;
 }
 
+// Nearest distance from x near *hint: a descent to the nearest segment
+// along the chain from *hint (however closely the points crowd), then a
+// window of w segments either side of the one found.
+double near_distance(const Vec3& x, std::span<const Vec3> pts, size_t& hint, size_t w, double large,
+                     size_t* seg_out = nullptr) {
+  descend(x, pts, hint, large);
+  return dist_to_polyline(x, pts, hint, w, large, seg_out);
+}
+
+// The exact nearest segment of a chain of points, searched by runs of
+// consecutive segments: each run has a box, and a run whose box is not
+// nearer than the best segment found so far is not read. No window: the
+// reading is the true distance to the chain, wherever the chain comes
+// back near itself (a curve doubling back along its chord, a loop).
+class ChainIndex {
+ public:
+  void build(std::span<const Vec3> pts) {
+    pts_ = pts;
+    const size_t nseg = pts.size() > 1 ? pts.size() - 1 : 0;
+    run_ = std::max<size_t>(8, static_cast<size_t>(std::sqrt(double(nseg))));
+    boxes_.clear();
+    for (size_t a = 0; a < nseg; a += run_) {
+      Box3 b;
+      for (size_t i = a; i <= std::min(a + run_, nseg); ++i) b.add(pts[i]);
+      boxes_.push_back(b);
+    }
+  }
+  // Distance from x to the chain; *seg receives the nearest segment. The
+  // run of *seg is read first (the caller's guess).
+  double nearest(const Vec3& x, size_t& seg) const {
+    const size_t nseg = pts_.size() > 1 ? pts_.size() - 1 : 0;
+    if (nseg == 0) return dist(x, pts_[0]);
+    double best = std::numeric_limits<double>::infinity();
+    size_t arg = 0;
+    auto read_run = [&](size_t r) {
+      const size_t a = r * run_, b = std::min(a + run_, nseg);
+      const auto [d, i] = scan2(x, pts_, a, b);
+      if (d < best) best = d, arg = i;
+    };
+    const size_t first = std::min(seg, nseg - 1) / run_;
+    read_run(first);
+    for (size_t r = 0; r < boxes_.size(); ++r)
+      if (r != first && box_dist2(x, boxes_[r]) < best) read_run(r);
+    seg = arg;
+    return std::sqrt(best);
+  }
+
+ private:
+  static double box_dist2(const Vec3& x, const Box3& b) {
+    double d = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double e = std::max({b.lo[k] - x[k], 0.0, x[k] - b.hi[k]});
+      d += e * e;
+    }
+    return d;
+  }
+  std::span<const Vec3> pts_;
+  std::vector<Box3> boxes_;
+  size_t run_ = 8;
+};
+
 // A reading of a distance at one sample: the sample (index k, or segment k
 // at fraction s), its reading d and the nearest segment found.
 struct Cand {
@@ -179,12 +240,12 @@ struct Cand {
   int steps;    // samples on its segment (the refinement spans the gap to the next)
 };
 
-// The eight largest windowed readings of the samples in `cand`, largest
-// first, from their quick readings (upper bounds of the windowed ones, see
+// The eight largest exact readings of the samples in `cand`, largest
+// first, from their quick readings (upper bounds of the exact ones, see
 // descend()): candidates are read again with `reread` (which updates d and
 // near) in decreasing order of their quick reading, until no quick reading
-// can beat the eighth largest windowed one: the same eight as reading
-// every sample with the window, at a fraction of the cost. `cand` is
+// can beat the eighth largest exact one: the same eight as reading every
+// sample exactly, at a fraction of the cost. `cand` is
 // consumed; the result is left in `top`.
 template <class Reread>
 void largest_readings(std::vector<Cand>& cand, std::vector<Cand>& top, Reread&& reread) {
@@ -214,10 +275,11 @@ void largest_readings(std::vector<Cand>& cand, std::vector<Cand>& top, Reread&& 
 }
 
 // The largest interior value seen by golden-section steps on [a, b], to a
-// billionth of the interval (a distance read there is off by the square of
-// that times the curve's speed: far below floating-point noise).
+// millionth of the interval (a distance read there is off by about the
+// square of that times the curve's second derivative: for the interval
+// between two dense samples, far below floating-point noise).
 double golden_max(double a, double b, const auto& f) {
-  const auto g = flatten_detail::golden_section(a, b, f, 60, std::max(1e-15, 1e-9 * (b - a)), true);
+  const auto g = flatten_detail::golden_section(a, b, f, 60, std::max(1e-15, 1e-6 * (b - a)), true);
   return std::max(g.f1, g.f2);
 }
 
@@ -351,6 +413,7 @@ struct Scratch {
   std::vector<Piece> pieces;
   std::vector<char> uniform;
   std::vector<Cand> cand, top;
+  ChainIndex index;
   static constexpr size_t kKeep = size_t{1} << 20;
   void trim() {
     auto fit = [](auto& v) {
@@ -385,18 +448,14 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
   dpts.resize(D.size());
   for (size_t i = 0; i < D.size(); ++i) dpts[i] = D[i].p;
 
+  // Quick readings and refinements search near the nearest segment found
+  // before (the two sequences advance together along the curve); a reading
+  // above `large` is replaced by a search of everything.
   const double large = tolerance;
-  // Windows: the two sequences advance together along the curve.
-  const size_t wP = 8 + 2 * polyline.size() / D.size();
-  // (Two polyline segments' worth of dense samples either side: consecutive
-  // samples are 1/64 of a segment apart, but the dense samples crowd where
-  // the curve bends; one segment's worth over-read on random curves. Any
-  // window can only over-read a distance, never under-read it.)
-  const size_t wD = 8 + 2 * D.size() / polyline.size();
   auto& cand = scratch.cand;
   auto& top = scratch.top;
   // Curve -> polyline, at the on-curve samples (a quick reading each, the
-  // largest read again in a window), then refined between them.
+  // largest read again exactly), then refined between them.
   {
     cand.clear();
     size_t hint = 0;
@@ -404,7 +463,8 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
       const double d = descend(D[i].p, polyline, hint, large);
       cand.push_back({d, i, 0, hint, 0});
     }
-    largest_readings(cand, top, [&](Cand& c) { c.d = dist_to_polyline(D[c.k].p, polyline, c.near, wP, large); });
+    scratch.index.build(polyline);
+    largest_readings(cand, top, [&](Cand& c) { c.d = scratch.index.nearest(D[c.k].p, c.near); });
     for (const Cand& c : top) {
       dev.curve_to_path = std::max(dev.curve_to_path, c.d);
       const size_t i = c.k;
@@ -413,11 +473,12 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
         if (j + 1 >= D.size()) continue;
         const Piece& b = P[D[j + 1].piece];
         const double t0 = D[j].piece == D[j + 1].piece ? D[j].t : 0.0;
-        // Around the sample's nearest segment, not the whole polyline: the
-        // refinement cost no longer grows with the program's length.
+        // Around the sample's nearest segment (found in the wide window),
+        // not the whole polyline: the refinement cost does not grow with
+        // the program's length.
         size_t h = c.near;
         const double m = golden_max(t0, D[j + 1].t, [&](double t) {
-          return dist_to_polyline(b.at(t), polyline, h, wP, large);
+          return near_distance(b.at(t), polyline, h, 2, large);
         });
         dev.curve_to_path = std::max(dev.curve_to_path, m);
       }
@@ -434,7 +495,7 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
       return k + 1 < polyline.size() ? lerp(polyline[k], polyline[k + 1], s) : polyline[k];
     };
     // A quick reading first (the nearest dense segment moves along with the
-    // sample), then the largest read again in a window: see largest_readings().
+    // sample), then the largest read again exactly: see largest_readings().
     for (size_t k = 0; k < polyline.size(); ++k) {
       const int steps = k + 1 < polyline.size() ? kSteps : 1;
       for (int i = 0; i < steps; ++i) {
@@ -443,15 +504,17 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
         cand.push_back({d, k, s, hint, steps});
       }
     }
-    largest_readings(cand, top, [&](Cand& c) { c.d = dist_to_polyline(point_at(c.k, c.s), dpts, c.near, wD, large); });
-    // Exact distance from x to the true curve near its nearest dense sample.
-    // Searched around the candidate's nearest dense segment (a whole-chain
-    // scan per evaluation made long programs quadratic).
-    // (The candidate's nearest dense segment is known: a sample 1/64 of a
-    // segment away has its nearest within a few dense segments of it.)
-    auto to_curve = [&](const Vec3& x, size_t near) {
-      size_t seg = 0, h = near;
-      double d = dist_to_polyline(x, dpts, h, 8, large, &seg);
+    scratch.index.build(dpts);
+    largest_readings(cand, top, [&](Cand& c) { c.d = scratch.index.nearest(point_at(c.k, c.s), c.near); });
+    // Exact distance from x to the true curve near its nearest dense
+    // segment: found by descent from the candidate's (exact) nearest one,
+    // which the refinement's points stay close to. (A whole-chain scan per
+    // evaluation made long programs quadratic.) Near a part of the curve
+    // that comes back close, the descent may stop at the other part: the
+    // reading is then high, never low.
+    auto to_curve = [&](const Vec3& x, size_t& h) {
+      size_t seg = 0;
+      double d = near_distance(x, dpts, h, 2, large, &seg);
       const size_t lo = seg > 0 ? seg - 1 : 0, hi = std::min(seg + 2, D.size() - 1);
       for (size_t j = lo; j < hi; ++j) {
         if (D[j].piece == D[j + 1].piece && D[j + 1].t <= D[j].t) continue;
@@ -466,13 +529,14 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
       return d;
     };
     for (const Cand& cd : top) {
+      size_t h = cd.near;  // moves with the refinement's points
       if (cd.k + 1 >= polyline.size()) {
-        dev.path_to_curve = std::max(dev.path_to_curve, to_curve(polyline[cd.k], cd.near));
+        dev.path_to_curve = std::max(dev.path_to_curve, to_curve(polyline[cd.k], h));
         continue;
       }
       const double a = std::max(0.0, cd.s - 1.0 / cd.steps), b = std::min(1.0, cd.s + 1.0 / cd.steps);
       dev.path_to_curve =
-          std::max(dev.path_to_curve, golden_max(a, b, [&](double s) { return to_curve(point_at(cd.k, s), cd.near); }));
+          std::max(dev.path_to_curve, golden_max(a, b, [&](double s) { return to_curve(point_at(cd.k, s), h); }));
     }
   }
   return dev;
