@@ -230,6 +230,17 @@ class ChainIndex {
   size_t run_ = 8;
 };
 
+// A quick reading near *hint (near_distance()) checked against what the
+// distance can be: a distance to a set moves no faster than the point, so
+// at x it is at most `known` (the exact distance at x0) plus |x - x0|. A
+// quick reading above that stopped at the wrong part of a chain that comes
+// back near x: x is then read exactly with `index`.
+double checked_distance(const Vec3& x, std::span<const Vec3> pts, const ChainIndex& index, size_t& hint, double large,
+                        const Vec3& x0, double known) {
+  const double d = near_distance(x, pts, hint, 2, large);
+  return d > known + dist(x, x0) + 1e-9 * large ? index.nearest(x, hint) : d;
+}
+
 // A reading of a distance at one sample: the sample (index k, or segment k
 // at fraction s), its reading d and the nearest segment found.
 struct Cand {
@@ -274,13 +285,18 @@ void largest_readings(std::vector<Cand>& cand, std::vector<Cand>& top, Reread&& 
   std::sort(top.begin(), top.end(), by_d);
 }
 
-// The largest interior value seen by golden-section steps on [a, b], to a
-// millionth of the interval (a distance read there is off by about the
-// square of that times the curve's second derivative: for the interval
-// between two dense samples, far below floating-point noise).
-double golden_max(double a, double b, const auto& f) {
-  const auto g = flatten_detail::golden_section(a, b, f, 60, std::max(1e-15, 1e-6 * (b - a)), true);
-  return std::max(g.f1, g.f2);
+// The largest interior value seen by golden-section steps on [a, b], to
+// 1e-5 of the interval (a distance read there is off by about the square
+// of that times the second derivative along it: on the short intervals
+// refined here, below 1e-12 of a millimetre).
+// Returns the point of that value: the refinements read it again exactly.
+struct GoldenMax {
+  double value, at;
+};
+GoldenMax golden_max(double a, double b, const auto& f) {
+  const auto g = flatten_detail::golden_section(a, b, f, 60, std::max(1e-15, 1e-5 * (b - a)), true);
+  const double k = 0.3819660112501051;  // golden_section's interior points
+  return g.f1 >= g.f2 ? GoldenMax{g.f1, g.a + k * (g.b - g.a)} : GoldenMax{g.f2, g.b - k * (g.b - g.a)};
 }
 
 // A piece with, when it is polynomial of degree <= 3, its power form
@@ -473,14 +489,17 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
         if (j + 1 >= D.size()) continue;
         const Piece& b = P[D[j + 1].piece];
         const double t0 = D[j].piece == D[j + 1].piece ? D[j].t : 0.0;
-        // Around the sample's nearest segment (found in the wide window),
-        // not the whole polyline: the refinement cost does not grow with
-        // the program's length.
+        // Around the sample's nearest segment (found exactly), not the
+        // whole polyline: the refinement cost does not grow with the
+        // program's length.
+        // The search's quick readings may read high where the path comes
+        // back near itself: its best point is read again exactly, and that
+        // reading is the one kept.
         size_t h = c.near;
-        const double m = golden_max(t0, D[j + 1].t, [&](double t) {
-          return near_distance(b.at(t), polyline, h, 2, large);
+        const GoldenMax m = golden_max(t0, D[j + 1].t, [&](double t) {
+          return checked_distance(b.at(t), polyline, scratch.index, h, large, D[c.k].p, c.d);
         });
-        dev.curve_to_path = std::max(dev.curve_to_path, m);
+        dev.curve_to_path = std::max(dev.curve_to_path, scratch.index.nearest(b.at(m.at), h));
       }
     }
   }
@@ -508,13 +527,16 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
     largest_readings(cand, top, [&](Cand& c) { c.d = scratch.index.nearest(point_at(c.k, c.s), c.near); });
     // Exact distance from x to the true curve near its nearest dense
     // segment: found by descent from the candidate's (exact) nearest one,
-    // which the refinement's points stay close to. (A whole-chain scan per
-    // evaluation made long programs quadratic.) Near a part of the curve
-    // that comes back close, the descent may stop at the other part: the
-    // reading is then high, never low.
-    auto to_curve = [&](const Vec3& x, size_t& h) {
+    // which the refinement's points stay close to, and searched exactly
+    // when the descent's reading is more than the distance can be there (a
+    // part of the curve coming back close). A whole-chain scan per
+    // evaluation made long programs quadratic.
+    // With `exact`, the nearest dense segment is searched exactly.
+    auto to_curve = [&](const Vec3& x, size_t& h, const Cand& c, bool exact) {
       size_t seg = 0;
-      double d = near_distance(x, dpts, h, 2, large, &seg);
+      double d = exact ? scratch.index.nearest(x, h)
+                       : checked_distance(x, dpts, scratch.index, h, large, point_at(c.k, c.s), c.d);
+      seg = h;
       const size_t lo = seg > 0 ? seg - 1 : 0, hi = std::min(seg + 2, D.size() - 1);
       for (size_t j = lo; j < hi; ++j) {
         if (D[j].piece == D[j + 1].piece && D[j + 1].t <= D[j].t) continue;
@@ -528,15 +550,15 @@ Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3
       }
       return d;
     };
+    // Kept: exact readings at the candidate and at the search's best point
+    // (its quick readings guide it, and may read high).
     for (const Cand& cd : top) {
       size_t h = cd.near;  // moves with the refinement's points
-      if (cd.k + 1 >= polyline.size()) {
-        dev.path_to_curve = std::max(dev.path_to_curve, to_curve(polyline[cd.k], h));
-        continue;
-      }
+      dev.path_to_curve = std::max(dev.path_to_curve, to_curve(point_at(cd.k, cd.s), h, cd, true));
+      if (cd.k + 1 >= polyline.size()) continue;
       const double a = std::max(0.0, cd.s - 1.0 / cd.steps), b = std::min(1.0, cd.s + 1.0 / cd.steps);
-      dev.path_to_curve =
-          std::max(dev.path_to_curve, golden_max(a, b, [&](double s) { return to_curve(point_at(cd.k, s), h); }));
+      const GoldenMax m = golden_max(a, b, [&](double s) { return to_curve(point_at(cd.k, s), h, cd, false); });
+      dev.path_to_curve = std::max(dev.path_to_curve, to_curve(point_at(cd.k, m.at), h, cd, true));
     }
   }
   return dev;

@@ -13,8 +13,7 @@
 /// could be nearer), and the worst candidates refined on the true curve by
 /// golden-section search. The flattener's chords and bound are not used.
 /// The result is accurate to about `resolution` (and usually to
-/// floating-point precision); a refinement may read high near a part of
-/// the curve that comes back close, never low.
+/// floating-point precision).
 #include <span>
 
 #include "bezcam/kernel/bezier.hpp"
