@@ -1,5 +1,6 @@
 #include "bezcam/gcode/number_format.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -9,14 +10,17 @@
 
 namespace bezcam {
 
+char* format_number_to(char* buf, double v, int decimals) {
+  char* end = std::to_chars(buf, buf + kNumberChars - 1, v, std::chars_format::fixed, decimals < 0 ? 6 : decimals).ptr;
+  if (std::find(buf, end, '.') == end) *end++ = '.';
+  while (end[-1] == '0') --end;
+  if (end - buf == 3 && buf[0] == '-' && buf[1] == '0' && buf[2] == '.') return std::copy_n("0.", 2, buf);
+  return end;
+}
+
 std::string format_number(double v, int decimals) {
-  char buf[400];
-  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals < 0 ? 6 : decimals);
-  std::string s(buf, r.ptr);
-  if (s.find('.') == std::string::npos) s += '.';
-  while (s.back() == '0') s.pop_back();
-  if (s == "-0.") s = "0.";
-  return s;
+  char buf[kNumberChars];
+  return std::string(buf, format_number_to(buf, v, decimals));
 }
 
 std::string format_significant(double v, int digits) {

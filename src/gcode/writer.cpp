@@ -4,6 +4,7 @@
 #include "bezcam/version.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -40,7 +41,9 @@ std::string comment(const std::string& text) {
 
 class Writer {
  public:
-  Writer(const Program& p, const MachineProfile& m) : p_(p), m_(m) {}
+  // With a sink, the text goes to it in pieces of about kChunk bytes as it
+  // is written; without, run() returns it whole.
+  Writer(const Program& p, const MachineProfile& m, const GcodeSink* sink = nullptr) : p_(p), m_(m), sink_(sink) {}
 
   std::string run() {
     bool numbered = false;
@@ -71,7 +74,11 @@ class Writer {
       if (!f.empty() && f[0] == '%') raw(subst(f));
       else line(subst(f));
     }
-    return out_;
+    if (sink_) {
+      (*sink_)(out_);
+      out_.clear();
+    }
+    return std::move(out_);
   }
 
  private:
@@ -124,40 +131,67 @@ class Writer {
     note("estimated cycle time " + when(s) + ": feeds as programmed, rapids at " + format_significant(rapid, 6) + " " +
          to_string(p_.units) + "/min, no acceleration, tool changes not counted");
   }
-  void raw(const std::string& s) { out_ += s + "\n"; }
-  void line(const std::string& s) {
+  void raw(std::string_view s) {
+    out_ += s;
+    out_ += '\n';
+    flush();
+  }
+  void line(std::string_view s) {
     if (m_.line_numbers) {
-      out_ += "N" + std::to_string(n_) + " ";
+      char b[16];
+      out_ += 'N';
+      out_.append(b, std::to_chars(b, b + sizeof b, n_).ptr);
+      out_ += ' ';
       n_ += m_.line_step;
     }
-    out_ += s + "\n";
+    raw(s);
+  }
+  // Hands the text written so far to the sink once it is a chunk.
+  void flush() {
+    if (sink_ && out_.size() >= kChunk) {
+      (*sink_)(out_);
+      out_.clear();
+    }
   }
   std::string num(double v) const { return format_number(v, p_.decimals); }
 
-  // Axis words whose printed value changes; updates the modal state.
-  std::string axes(const Vec3& to, unsigned mask) {
-    std::string s;
+  // Appends a word to s: a space first unless s is empty.
+  static void word_to(std::string& s, char letter, std::string_view v) {
+    if (!s.empty()) s += ' ';
+    if (letter) s += letter;
+    s += v;
+  }
+  // Appends the axis words whose printed value changes; updates the modal
+  // state. Numbers are printed into a buffer on the stack, not a string each.
+  void axes_to(std::string& s, const Vec3& to, unsigned mask) {
     static const char names[3] = {'X', 'Y', 'Z'};
     for (int a = 0; a < 3; ++a) {
       if (!(mask & (1u << a))) continue;
-      const std::string v = num(to[a]);
+      char b[kNumberChars];
+      const std::string_view v(b, static_cast<size_t>(format_number_to(b, to[a], p_.decimals) - b));
       if (v != axis_[a]) {
-        s += std::string(s.empty() ? "" : " ") + names[a] + v;
-        axis_[a] = v;
+        word_to(s, names[a], v);
+        axis_[a].assign(v);
       }
     }
+  }
+  std::string axes(const Vec3& to, unsigned mask) {
+    std::string s;
+    axes_to(s, to, mask);
     return s;
   }
-  std::string motion(const std::string& word) {
-    if (word == motion_) return "";
-    motion_ = word;
-    return word;
+  // Appends the feed word when its printed value changes.
+  void feed_to(std::string& s, double f) {
+    char b[kNumberChars];
+    const std::string_view v(b, static_cast<size_t>(format_number_to(b, f, m_.feed_decimals) - b));
+    if (v == feed_) return;
+    feed_.assign(v);
+    word_to(s, 'F', v);
   }
   std::string feed(double f) {
-    const std::string v = format_number(f, m_.feed_decimals);
-    if (v == feed_) return "";
-    feed_ = v;
-    return "F" + v;
+    std::string s;
+    feed_to(s, f);
+    return s;
   }
   static std::string join(std::initializer_list<std::string> parts) {
     std::string s;
@@ -196,13 +230,21 @@ class Writer {
   }
 
   // G00 / G01: only the axes that change (modal), no line at all when none does.
+  // (The line is put together in a string kept from line to line.)
   void straight(const Motion& mv, bool rapid) {
-    const std::string a = axes(mv.to, mv.axes);
+    std::string& s = line_;
+    s.clear();
+    axes_to(s, mv.to, mv.axes);
     for (int k = 0; k < 3; ++k)
       if (mv.axes & (1u << k)) pos_[k] = mv.to[k];
-    if (a.empty()) return;  // no motion once printed: nothing to say
-    const std::string g = motion(rapid ? m_.word_rapid : m_.word_feed);
-    line(join({g, a, rapid ? "" : feed(mv.feed)}));
+    if (s.empty()) return;  // no motion once printed: nothing to say
+    const std::string& g = rapid ? m_.word_rapid : m_.word_feed;
+    if (g != motion_) {
+      motion_ = g;
+      if (!g.empty()) s.insert(0, g + ' ');
+    }
+    if (!rapid) feed_to(s, mv.feed);
+    line(s);
   }
 
   void curve(const CurveMove& mv) {
@@ -302,9 +344,11 @@ class Writer {
     arrived({to.x, to.y, pos_.z});
   }
 
+  static constexpr size_t kChunk = size_t{1} << 16;
   const Program& p_;
   const MachineProfile& m_;
-  std::string out_;
+  const GcodeSink* sink_;
+  std::string out_, line_;
   int n_ = m_.line_start;
   std::string axis_[3], motion_, feed_;
   Vec3 pos_;  // current position as printed
@@ -313,5 +357,7 @@ class Writer {
 }  // namespace
 
 std::string write_gcode(const Program& p, const MachineProfile& m) { return Writer(p, m).run(); }
+
+void write_gcode(const Program& p, const MachineProfile& m, const GcodeSink& sink) { Writer(p, m, &sink).run(); }
 
 }  // namespace bezcam

@@ -209,6 +209,89 @@ TEST(Flatten, TheMeasurementIsNotVacuous) {
   EXPECT_NEAR(measure_deviation(std::span<const Bezier>(&b, 1), chord, 0.01).curve_to_path, 3, 1e-9);
 }
 
+namespace {
+
+// A brute-force reading of the two-sided distance: every segment against
+// 20,000 points of the curve, and 400 points of every segment against
+// them. Slow, plain and independent of measure_deviation()'s windows and
+// refinements; accurate to about the spacing's square times the curvature.
+Deviation brute_deviation(const Bezier& b, const std::vector<Vec3>& poly) {
+  std::vector<Vec3> c(20001);
+  for (size_t i = 0; i < c.size(); ++i) c[i] = evaluate(b, double(i) / (c.size() - 1));
+  Deviation d;
+  for (const Vec3& x : c) {
+    double m = HUGE_VAL;
+    for (size_t k = 0; k + 1 < poly.size(); ++k) m = std::min(m, dist_to_segment(x, poly[k], poly[k + 1]));
+    d.curve_to_path = std::max(d.curve_to_path, m);
+  }
+  for (size_t k = 0; k + 1 < poly.size(); ++k)
+    for (int i = 0; i <= 400; ++i) {
+      const Vec3 x = lerp(poly[k], poly[k + 1], i / 400.0);
+      double m = HUGE_VAL;
+      for (size_t j = 0; j + 1 < c.size(); ++j) m = std::min(m, dist_to_segment(x, c[j], c[j + 1]));
+      d.path_to_curve = std::max(d.path_to_curve, m);
+    }
+  return d;
+}
+
+// Curves of the kinds the corpus names hard: a loop, a cusp, an inflection
+// pair, a curve that doubles back along its chord, a long one.
+std::vector<Bezier> hard_curves() {
+  return {bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),         // loop
+          bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),            // cusp-like
+          bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),          // two inflections
+          bz({{0, 0}, {80, 0}, {-20, 0.5}, {60, 0}}),          // doubles back along its chord
+          bz({{0, 0}, {300, 700}, {700, -300}, {1000, 0}})};  // long
+}
+
+}  // namespace
+
+TEST(Flatten, TheMeasurementAgreesWithBruteForce) {
+  // The windows and the refinement read what a plain search over every
+  // segment reads (to the brute force's own coarseness).
+  for (const Bezier& b : hard_curves()) {
+    const FlattenResult r = flatten(b, {0.01, 3});
+    const Deviation fast = measure_deviation(std::span<const Bezier>(&b, 1), r.points, 0.01);
+    const Deviation slow = brute_deviation(b, r.points);
+    EXPECT_NEAR(fast.curve_to_path, slow.curve_to_path, 2e-4) << b.points[1].x;
+    EXPECT_NEAR(fast.path_to_curve, slow.path_to_curve, 2e-4) << b.points[1].x;
+    EXPECT_GE(fast.max() + 1e-9, slow.max()) << "the measurement reads less than the brute force";
+  }
+}
+
+TEST(Flatten, TheMeasurementCatchesAMovedVertex) {
+  // Every interior vertex in turn moved by twice the tolerance across the
+  // path: the measurement must read over the tolerance each time.
+  const double tol = 0.01;
+  for (const Bezier& b : hard_curves()) {
+    const FlattenResult r = flatten(b, {tol, 3});
+    ASSERT_GE(r.points.size(), 3u);
+    for (size_t k = 1; k + 1 < r.points.size(); ++k) {
+      std::vector<Vec3> moved = r.points;
+      const Vec3 along = norm(moved[k + 1] - moved[k - 1]) > 0 ? moved[k + 1] - moved[k - 1] : Vec3{1, 0};
+      const Vec3 across = Vec3{-along.y, along.x} * (2 * tol / norm(along));
+      moved[k] += across;
+      const double d = measure_deviation(std::span<const Bezier>(&b, 1), moved, tol).max();
+      EXPECT_GT(d, 1.5 * tol) << "vertex " << k << " of " << r.points.size() << " moved by " << 2 * tol;
+    }
+  }
+}
+
+TEST(Flatten, TheMeasurementCatchesADroppedVertex) {
+  // A vertex left out: the chord across the gap leaves the curve by about
+  // four times the tolerance (twice the span, so four times the sagitta).
+  const double tol = 0.01;
+  for (const Bezier& b : hard_curves()) {
+    const FlattenResult r = flatten(b, {tol, 3});
+    for (size_t k = 1; k + 1 < r.points.size(); k += 7) {
+      std::vector<Vec3> dropped = r.points;
+      dropped.erase(dropped.begin() + static_cast<long>(k));
+      const Deviation d = measure_deviation(std::span<const Bezier>(&b, 1), dropped, tol);
+      EXPECT_GT(d.curve_to_path, tol) << "vertex " << k << " dropped";
+    }
+  }
+}
+
 TEST(Flatten, NearTheGreedyMinimumOnTheSharedCorpus) {
   std::ifstream in(std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json");
   if (!in) GTEST_SKIP() << "shared corpus not found at " << BEZCAM_SHARED_DIR;

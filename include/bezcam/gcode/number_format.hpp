@@ -8,6 +8,13 @@ namespace bezcam {
 
 std::string format_number(double v, int decimals);
 
+/// Room format_number_to() needs: every double in fixed notation with up to
+/// 17 decimals (309 digits before the point at most).
+inline constexpr int kNumberChars = 400;
+/// format_number() into `buf` (kNumberChars long), no allocation; returns
+/// the end of the text written.
+char* format_number_to(char* buf, double v, int decimals);
+
 /// `v` with `digits` significant digits, trailing zeros trimmed ("0.00987").
 std::string format_significant(double v, int digits);
 

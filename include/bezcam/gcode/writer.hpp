@@ -1,7 +1,9 @@
 #pragma once
 /// Canonical moves to G-code text in the profile's dialect: words, decimals,
 /// line numbers, header and footer all come from the profile.
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include "bezcam/cam/program.hpp"
 
@@ -11,5 +13,10 @@ namespace bezcam {
 /// decimals for the program's units; axis words and feeds are modal (only
 /// printed when their printed value changes), as are motion words.
 std::string write_gcode(const Program& p, const MachineProfile& m);
+
+/// Receives the program's text in order, in pieces of about 64 KiB.
+using GcodeSink = std::function<void(std::string_view)>;
+/// The same text, streamed: never held whole in memory.
+void write_gcode(const Program& p, const MachineProfile& m, const GcodeSink& sink);
 
 }  // namespace bezcam

@@ -1,0 +1,137 @@
+// Whole-job throughput on the shared corpus (shared/bench/cubics-10k.json)
+// as one job: 10,000 cubic Béziers, generic profile, lines, 0.01 mm, the
+// independent measurement on (what `bezcam convert` does). Prints curves/s
+// of each stage and of the whole process, and the peak memory.
+//
+//   build/job_throughput [--quick] [CORPUS.json]
+//
+// --quick: the first 1,000 curves. Figures only: nothing is asserted
+// (CI runs it on machines of any speed).
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bezcam/bezcam.hpp"
+#include "bezcam/flatten/deviation.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/report/report.hpp"
+
+namespace {
+
+using clk = std::chrono::steady_clock;
+
+double since(clk::time_point t0) { return std::chrono::duration<double>(clk::now() - t0).count(); }
+
+// The corpus as the text of one job file.
+std::string job_text(const nlohmann::json& doc, size_t most) {
+  std::string text = "{\"bezcam\": 1, \"units\": \"mm\", \"tolerance\": 0.01, \"machine\": \"generic\", \"entities\": [";
+  char buf[96];
+  const auto& curves = doc["curves"];
+  for (size_t i = 0; i < curves.size() && i < most; ++i) {
+    text += i ? ",\n" : "\n";
+    text += "{\"type\": \"bezier\", \"points\": [";
+    for (size_t k = 0; k < curves[i].size(); ++k) {
+      std::snprintf(buf, sizeof buf, "%s[%.17g, %.17g]", k ? ", " : "", curves[i][k][0].get<double>(),
+                    curves[i][k][1].get<double>());
+      text += buf;
+    }
+    text += "]}";
+  }
+  text += "]}\n";
+  return text;
+}
+
+void row(const char* stage, size_t curves, double s, const char* note = "") {
+  std::printf("| %s | %.3f | %.0f | %s |\n", stage, s, s > 0 ? curves / s : 0.0, note);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string corpus = std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json";
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else corpus = argv[i];
+  }
+  std::ifstream in(corpus);
+  if (!in) {
+    std::printf("job_throughput: corpus %s not found: benchmark skipped\n", corpus.c_str());
+    return 0;
+  }
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  const std::string text = job_text(doc, quick ? 1000 : SIZE_MAX);
+  const bezcam::MachineProfile m =
+      bezcam::load_machine_profile(std::string(BEZCAM_SOURCE_DIR) + "/machines/generic.json", {});
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "bezcam_job_throughput.nc";
+
+  // Stages, each on its own.
+  auto t = clk::now();
+  const bezcam::Job job = bezcam::parse_job(text, "corpus.json");
+  const double parse_s = since(t);
+  const size_t n = job.entities.size();
+
+  bezcam::ConvertOptions unmeasured;
+  unmeasured.measure = false;
+  t = clk::now();
+  const bezcam::Program flat = bezcam::build_program(job, m, unmeasured);
+  const double flatten_s = since(t);
+
+  // The measurement, one thread, on the polylines the program cuts.
+  std::vector<std::vector<bezcam::Vec3>> polys(n);
+  for (size_t i = 0; i < n; ++i)
+    bezcam::flatten_pieces(job.entities[i].curve.pieces, {job.tolerance, m.decimals(job.units)},
+                           [&](const bezcam::FlatVertex& v) { polys[i].push_back(v.point); });
+  double worst = 0;
+  t = clk::now();
+  for (size_t i = 0; i < n; ++i)
+    worst = std::max(worst, bezcam::measure_deviation(job.entities[i].curve.pieces, polys[i], job.tolerance).max());
+  const double measure_s = since(t);
+
+  t = clk::now();
+  const std::string gcode = bezcam::write_gcode(flat, m);
+  {
+    std::ofstream f(out, std::ios::binary);
+    f.write(gcode.data(), static_cast<std::streamsize>(gcode.size()));
+  }
+  const double write_s = since(t);
+  const size_t lines = static_cast<size_t>(std::count(gcode.begin(), gcode.end(), '\n'));
+
+  // The whole process as `bezcam convert JOB -o OUT` runs it: read, build,
+  // measure (every core), validate, write, report (planned cycle time).
+  t = clk::now();
+  {
+    const bezcam::Job j = bezcam::parse_job(text, "corpus.json");
+    const bezcam::ConvertResult r = bezcam::convert(j, m, {});
+    const bezcam::ProgramReport rep = bezcam::make_report(r.program, m, r.gcode);
+    std::ofstream f(out, std::ios::binary);
+    f.write(r.gcode.data(), static_cast<std::streamsize>(r.gcode.size()));
+    if (rep.entities.size() != n) std::printf("unexpected report\n");
+  }
+  const double whole_s = since(t);
+  std::filesystem::remove(out);
+
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  std::printf("corpus: %s, %zu curves%s; generic, lines, 0.01 mm; %u hardware threads\n\n", corpus.c_str(), n,
+              quick ? " (quick: the first 1,000)" : "", std::thread::hardware_concurrency());
+  std::printf("| stage | s | curves/s | |\n|---|---:|---:|---|\n");
+  row("parse (job JSON text to Job)", n, parse_s);
+  row("flatten (build_program, measurement off)", n, flatten_s);
+  row("measure (measure_deviation, one thread)", n, measure_s, "");
+  row("write (G-code text, to a file)", n, write_s);
+  row("whole process (read, build, measure on every core, validate, write, report)", n, whole_s,
+      n >= 10000 ? "target: < 1 s for 10,000" : "");
+  std::printf("\n%zu program lines, %zu bytes; largest deviation measured %.6f mm; peak memory %ld MB\n", lines,
+              gcode.size(), worst, ru.ru_maxrss / 1024);
+  return 0;
+}
