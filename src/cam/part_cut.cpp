@@ -146,8 +146,21 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   const Job& job = c.job;
   Program& p = c.program;
   const int entity = static_cast<int>(ent.index);
+  // The refusal names the key where it was set: the entity's, else the job's.
   auto fail = [&](const std::string& key, const std::string& why) -> void {
-    throw InputError(errc::job_cut, Place::in_json(job.source, ent.json_path() + "." + key), why);
+    const std::string top = key.substr(0, key.find('.'));
+    const JobParams& own = ent.params;
+    const bool here = (top == "side" && own.side) || (top == "tool_diameter" && own.tool_diameter) ||
+                      (top == "stock_to_leave" && own.stock_to_leave) || (top == "step_down" && own.step_down) ||
+                      (top == "tabs" && own.tabs) || (top == "compensation" && own.controller_compensation) ||
+                      (top == "tolerance_side" && own.tolerance_side) || (top == "lead" && own.lead);
+    const bool in_job = !here && ((top == "side" && job.params.side) || (top == "tool_diameter" && job.params.tool_diameter) ||
+                                  (top == "stock_to_leave" && job.params.stock_to_leave) ||
+                                  (top == "step_down" && job.params.step_down) || (top == "tabs" && job.params.tabs) ||
+                                  (top == "compensation" && job.params.controller_compensation) ||
+                                  (top == "tolerance_side" && job.params.tolerance_side));
+    throw InputError(errc::job_cut, Place::in_json(job.source, (in_job ? std::string("job") : ent.json_path()) + "." + key),
+                     (in_job ? "for entity " + ent.label() + ": " : std::string()) + why);
   };
   const auto& g = ent.curve;
   if (g.dim != 2)
@@ -238,9 +251,10 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   } else {
     const OffsetResult o = offset_curve(part, closed, {offset_by, side, fit});
     if (o.chains.empty())
-      fail("tool_diameter", "the tool (offset " + fmt_num(offset_by) + ") does not fit: no point is " + fmt_num(offset_by) +
-                                " from the whole curve on its " + (side > 0 ? "left" : "right") +
-                                " side; use a smaller tool or cut the other side");
+      fail("tool_diameter", "a tool of diameter " + fmt_num(cp.tool_diameter.value_or(0)) + " does not fit: no point is " +
+                                fmt_num(offset_by) + " from the whole curve on the side asked (" +
+                                (cp.side == CutSide::inside ? "inside" : cp.side == CutSide::outside ? "outside" : side > 0 ? "left" : "right") +
+                                "); use a smaller tool");
     fit_bound = o.bound;
     for (size_t k = 0; k < o.chains.size(); ++k) {
       chains.push_back(bezier_pieces(o.chains[k]));

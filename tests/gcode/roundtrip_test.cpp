@@ -4,7 +4,8 @@
 // evaluate_block(), and the two-sided deviation of that read-back path from
 // the source geometry measured independently (flatten/deviation.hpp): within
 // the tolerance. Nothing of the emitters is used to read or evaluate.
-// (Surface samples are cut by their own emitter and checked elsewhere.)
+// (Surface samples are cut by their own emitter and checked elsewhere;
+// part samples, cut beside their curves, in part_roundtrip_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,6 +20,7 @@
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "support/cutting_runs.hpp"
 
 namespace bezcam {
 namespace {
@@ -33,6 +35,8 @@ std::vector<std::pair<fs::path, Job>> curve_samples() {
   std::vector<std::pair<fs::path, Job>> out;
   for (const auto& e : fs::directory_iterator(BEZCAM_SOURCE_DIR "/samples")) {
     if (e.path().extension() != ".json") continue;
+    // Part samples cut beside their curves: part_roundtrip_test.cpp.
+    if (e.path().filename().string().rfind("part-", 0) == 0) continue;
     Job job = load_job(e.path());
     bool curves = !job.entities.empty();
     for (const auto& en : job.entities) curves = curves && !en.surface && !en.curve.pieces.empty();
@@ -42,22 +46,7 @@ std::vector<std::pair<fs::path, Job>> curve_samples() {
   return out;
 }
 
-// The cutting runs of a program read back: a run starts with the plunge (a
-// feed move after a rapid) and holds the feed moves up to the next rapid.
-std::vector<std::vector<MotionBlock>> cutting_runs(const std::vector<MotionBlock>& blocks) {
-  std::vector<std::vector<MotionBlock>> runs;
-  bool in_run = false;
-  for (const auto& b : blocks) {
-    if (b.kind == BlockKind::rapid) {
-      in_run = false;
-      continue;
-    }
-    if (!in_run) runs.emplace_back();
-    in_run = true;
-    runs.back().push_back(b);
-  }
-  return runs;
-}
+using test::cutting_runs;
 
 // Dense points of a block by the reader's evaluation: halved until the
 // chord midpoint is within `eps` of the block's own midpoint (at least 16
