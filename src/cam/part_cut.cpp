@@ -431,6 +431,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   r.bound = fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol);
   *final_bound = r.bound;
   r.offset = radius;
+  r.tool_width = cp.tool_diameter.value_or(0);
 }
 
 }  // namespace bezcam::detail

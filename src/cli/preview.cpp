@@ -219,6 +219,7 @@ int run() {
   in.entity_tool.assign(job.entities.size(), -1);
   for (const auto& r : p.entities)
     if (r.entity >= 0 && static_cast<size_t>(r.entity) < in.entity_tool.size()) in.entity_tool[r.entity] = r.tool;
+  add_part_cutting(in, p, job.entities.size());  // tool widths, material left
   in.title = "bezcam preview: " + job.source;
   const char* u = to_string(p.units);
   in.notes.push_back("machine " + m.name + ", output " + to_string(p.output) + ", tolerance " +

@@ -422,15 +422,20 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
     if (!res.left.empty() && dist(res.left.back().to, f) <= 1e3 * eps) {
       res.left.back().to = t;
       res.left.back().length += l;
+      res.left.back().points.push_back(mid);
+      res.left.back().points.push_back(t);
       left_probes.back().push_back(mid);
     } else {
-      res.left.push_back({f, t, l, 0});
+      res.left.push_back({f, t, l, 0, {f, mid, t}});
       left_probes.push_back({f, mid, t});
     }
   }
   if (closed && res.left.size() > 1 && dist(res.left.back().to, res.left.front().from) <= 1e3 * eps) {
     res.left.front().from = res.left.back().from;
     res.left.front().length += res.left.back().length;
+    auto pts = res.left.back().points;
+    pts.insert(pts.end(), res.left.front().points.begin() + 1, res.left.front().points.end());
+    res.left.front().points = std::move(pts);
     res.left.pop_back();
     left_probes.front().insert(left_probes.front().end(), left_probes.back().begin(), left_probes.back().end());
     left_probes.pop_back();

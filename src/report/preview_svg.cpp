@@ -515,6 +515,54 @@ void svg_toolpath(std::string& o, const View& v, const PreviewInput& in, const s
            "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\" stroke-opacity=\"0.75\"/>\n";
     run_d.clear();
   };
+  // Part cutting: the tool's swept width along each entity's deepest pass
+  // (its lowest feed moves), under everything else; marks where a pass
+  // rises onto a holding tab.
+  if (!v.iso) {
+    std::map<int, double> deepest;
+    for (const auto& m : in.motion)
+      if (m.kind != BlockKind::rapid && m.entity >= 0 && static_cast<size_t>(m.entity) < in.entity_tool_radius.size() &&
+          in.entity_tool_radius[static_cast<size_t>(m.entity)] > 0) {
+        auto [it, fresh] = deepest.emplace(m.entity, m.to.z);
+        if (!fresh) it->second = std::min(it->second, m.to.z);
+      }
+    for (const auto& [entity, z] : deepest) {
+      std::string d, marks;
+      for (size_t i = 0; i < in.motion.size(); ++i) {
+        const auto& m = in.motion[i];
+        if (m.entity != entity || m.kind == BlockKind::rapid) continue;
+        const auto& s = msamples[i];
+        const bool vertical = s.size() == 2 && s.front().x == s.back().x && s.front().y == s.back().y;
+        if (vertical) {
+          // Rising from the deepest pass but not to a retract: onto a tab.
+          if (m.from.z == z && m.to.z > z && i + 1 < in.motion.size() && in.motion[i + 1].kind != BlockKind::rapid) {
+            const P2 q = v.screen(m.to);
+            marks += "<rect class=\"tab\" x=\"" + n3(q.x - 4) + "\" y=\"" + n3(q.y - 4) +
+                     "\" width=\"8\" height=\"8\" fill=\"#ff9f1c\" stroke=\"#7a4a00\"><title>holding tab: the pass rises to z " +
+                     fmt_num(m.to.z) + "</title></rect>\n";
+          }
+          continue;
+        }
+        if (m.from.z != z && m.to.z != z) continue;
+        d += (d.empty() ? "" : " ") + path_d(v, s);
+      }
+      const double w = 2 * in.entity_tool_radius[static_cast<size_t>(entity)] * v.s;
+      if (!d.empty())
+        o += "<path class=\"swept\" data-entity=\"" + std::to_string(entity) + "\" d=\"" + d +
+             "\" fill=\"none\" stroke=\"#9ecae1\" stroke-opacity=\"0.45\" stroke-width=\"" + n3(w) +
+             "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>the tool's width on its deepest pass (diameter " +
+             fmt_num(2 * in.entity_tool_radius[static_cast<size_t>(entity)]) + " " + unit + ")</title></path>\n";
+      o += marks;
+    }
+    for (size_t e = 0; e < in.entity_left.size(); ++e)
+      for (const MaterialLeft& l : in.entity_left[e]) {
+        const std::vector<Vec3> pts = l.points.empty() ? std::vector<Vec3>{l.from, l.to} : l.points;
+        o += "<path class=\"material-left\" data-entity=\"" + std::to_string(e) + "\" d=\"" + path_d(v, pts) +
+             "\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"7\" stroke-opacity=\"0.8\" stroke-linecap=\"round\"><title>material left: the tool cannot reach " +
+             fmt_num(std::round(l.length * 1000) / 1000) + " " + unit + " of the curve here (" +
+             fmt_num(std::round(l.depth * 1000) / 1000) + " " + unit + " deep)</title></path>\n";
+      }
+  }
   const bool by_feed = in.plan != nullptr;
   if (by_feed) svg_feed_path(o, v, in, unit);
   for (size_t i = 0; i < in.motion.size(); ++i) {
@@ -1049,6 +1097,16 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   svg_legend(o, in, opt, dev_of, dev_max, margin, legend_y);
   o += "</svg>\n";
   return o;
+}
+
+void add_part_cutting(PreviewInput& in, const Program& p, size_t entities) {
+  in.entity_tool_radius.assign(entities, 0);
+  in.entity_left.assign(entities, {});
+  for (const auto& r : p.entities)
+    if (r.entity >= 0 && static_cast<size_t>(r.entity) < entities) {
+      in.entity_tool_radius[static_cast<size_t>(r.entity)] = r.tool_width / 2;
+      in.entity_left[static_cast<size_t>(r.entity)] = r.left;
+    }
 }
 
 }  // namespace bezcam

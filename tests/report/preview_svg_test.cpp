@@ -349,5 +349,28 @@ TEST(PreviewSvg, RefusesWhatItCannotDraw) {
   EXPECT_FALSE(root.by_class("feed").empty());
 }
 
+TEST(PreviewSvg, PartCuttingShowsTheToolsWidthTabsAndMaterialLeft) {
+  // The flange: tabs on its outline; the cam sample: a notch the tool cannot enter.
+  const Built f = build(slurp(BEZCAM_SOURCE_DIR "/samples/part-flange.json"));
+  PreviewInput in = input_for(f);
+  add_part_cutting(in, f.program, f.job.entities.size());
+  const std::string svg = preview_svg(in, PreviewOptions{});
+  size_t swept = 0, tabs = 0;
+  for (size_t at = svg.find("class=\"swept\""); at != std::string::npos; at = svg.find("class=\"swept\"", at + 1)) ++swept;
+  for (size_t at = svg.find("class=\"tab\""); at != std::string::npos; at = svg.find("class=\"tab\"", at + 1)) ++tabs;
+  EXPECT_EQ(swept, f.job.entities.size());  // every entity is cut with a tool of known width
+  EXPECT_EQ(tabs, 4u);                      // the outline's four tabs, on its deepest pass
+  EXPECT_EQ(svg.find("material-left"), std::string::npos);
+
+  const Built c = build(slurp(BEZCAM_SOURCE_DIR "/samples/part-cam-notch.json"));
+  PreviewInput ic = input_for(c);
+  add_part_cutting(ic, c.program, c.job.entities.size());
+  const std::string cs = preview_svg(ic, PreviewOptions{});
+  const size_t left = cs.find("class=\"material-left\"");
+  ASSERT_NE(left, std::string::npos);
+  EXPECT_NE(cs.find("data-entity=\"1\"", left), std::string::npos);  // on the notched disc
+  EXPECT_NO_THROW(testxml::parse(cs));
+}
+
 }  // namespace
 }  // namespace bezcam

@@ -34,6 +34,7 @@ struct EntityReport {
   /// stock to leave; 0 on the curve), and the stretches of the curve the
   /// tool cannot reach (material left).
   double offset = 0;
+  double tool_width = 0;  ///< part cutting: the tool's diameter (0: none given)
   std::vector<MaterialLeft> left;
 };
 

@@ -74,6 +74,7 @@ struct MaterialLeft {
   /// from the path less r, at sampled points): what a finishing tool
   /// would still have to take.
   double depth = 0;
+  std::vector<Vec3> points;  ///< along the stretch (from, inner points, to), for drawing
 };
 
 struct OffsetResult {

@@ -16,8 +16,14 @@
 /// index, data-id = id) holding `curve`, `control-polygon`,
 /// `control-point`, `start-point`, `direction-arrow`, `entity-label`; the
 /// tool path group `toolpath` holding `feed` and `rapid` paths (feeds carry
-/// data-deviation in deviation mode); `scale-bar`; `legend`.
+/// data-deviation in deviation mode); part cutting adds `swept` (the tool's
+/// width along an entity's deepest pass), `tab` marks (where a pass rises
+/// over a holding tab) and `material-left` (curve the tool cannot reach);
+/// `scale-bar`; `legend`.
 #include <functional>
+
+#include "bezcam/cam/program.hpp"
+#include "bezcam/flatten/offset.hpp"
 #include <span>
 #include <string>
 #include <vector>
@@ -60,6 +66,11 @@ struct PreviewInput {
   double program_measured = -1;
   /// The tool of each entity (index = entity, -1 unknown), for the labels.
   std::vector<int> entity_tool;
+  /// Part cutting (index = entity; empty: none): the tool's radius, whose
+  /// swept width is drawn under the entity's deepest pass, and the
+  /// stretches of the curve the tool cannot reach (material left).
+  std::vector<double> entity_tool_radius;
+  std::vector<std::vector<MaterialLeft>> entity_left;
   std::string title;                  ///< first header line
   std::vector<std::string> notes;     ///< further header lines
   std::vector<std::string> warnings;  ///< drawn in red under the header
@@ -104,5 +115,9 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
 /// entities and no motion) or when deviation colouring is asked for without
 /// a job or a tolerance.
 std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt);
+
+/// Fills the part-cutting fields of `in` (tool widths, material left) from
+/// a built program's reports; `entities`: the job's entity count.
+void add_part_cutting(PreviewInput& in, const Program& p, size_t entities);
 
 }  // namespace bezcam

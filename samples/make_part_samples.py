@@ -1,0 +1,116 @@
+import json, math
+def circle(cx, cy, R, ccw=True):
+    segs = []
+    w = math.cos(math.pi/4)
+    sgn = 1 if ccw else -1
+    for k in range(4):
+        s = sgn*k*math.pi/2; e = sgn*(k+1)*math.pi/2; m = (s+e)/2
+        P = lambda a, r=R: [round(cx + r*math.cos(a), 12), round(cy + r*math.sin(a), 12)]
+        segs.append({"type": "bezier", "points": [P(s), P(m, R/w), P(e)], "weights": [1, w, 1]})
+    segs[-1]["points"][-1] = segs[0]["points"][0]
+    return {"type": "path", "closed": True, "segments": segs}
+def arc(cx, cy, R, a0, a1):
+    # a0 -> a1 (radians), split into <= 90 degree rational quadratics
+    n = max(1, math.ceil(abs(a1-a0)/(math.pi/2) - 1e-9)); th = (a1-a0)/n; out=[]
+    for k in range(n):
+        s=a0+k*th; e=s+th; m=(s+e)/2; w=math.cos(th/2)
+        P=lambda a, r=R: [round(cx+r*math.cos(a),12), round(cy+r*math.sin(a),12)]
+        out.append({"type":"bezier","points":[P(s),P(m,R/w),P(e)],"weights":[1,w,1]})
+    return out
+def line(a,b): return {"type":"bezier","points":[a,b]}
+def join(segs):
+    # make ends exactly equal
+    for i in range(1,len(segs)): segs[i]["points"][0] = segs[i-1]["points"][-1]
+    return segs
+
+# Flange: an outline of four lobes (arcs R 12 round the bolt holes) joined by
+# concave arcs R 20, four bolt holes of 8 mm, a centre bore of 30 mm.
+def flange():
+    segs=[]
+    Rb=35  # bolt circle radius
+    lobe=12
+    # lobes at 45, 135, 225, 315 degrees; between them a concave fillet
+    pts=[]
+    ents=[]
+    for k in range(4):
+        a=math.radians(45+90*k)
+        cx,cy=Rb*math.cos(a),Rb*math.sin(a)
+        segs+=arc(cx,cy,lobe,a-math.radians(75),a+math.radians(75))
+        # concave arc to the next lobe, centre further out on the bisector
+        b=a+math.radians(45)
+        nxt=a+math.radians(90)
+        p_end=[cx+lobe*math.cos(a+math.radians(75)), cy+lobe*math.sin(a+math.radians(75))]
+        q=[Rb*math.cos(nxt)+lobe*math.cos(nxt-math.radians(75)), Rb*math.sin(nxt)+lobe*math.sin(nxt-math.radians(75))]
+        # concave: a cubic bezier bending inwards
+        mid_in=[ (p_end[0]+q[0])/2*0.80, (p_end[1]+q[1])/2*0.80 ]
+        t1=[-math.sin(a+math.radians(75)), math.cos(a+math.radians(75))]
+        t2=[-math.sin(nxt-math.radians(75)), math.cos(nxt-math.radians(75))]
+        L=8
+        segs.append({"type":"bezier","points":[p_end,[p_end[0]+L*t1[0],p_end[1]+L*t1[1]],[q[0]-L*t2[0],q[1]-L*t2[1]],q]})
+    join(segs)
+    segs[-1]["points"][-1]=segs[0]["points"][0]
+    outline={"id":"outline","type":"path","closed":True,"segments":segs,"side":"outside",
+             "tabs":{"count":4,"width":4,"height":1.5}}
+    for k in range(4):
+        a=math.radians(45+90*k)
+        h=circle(Rb*math.cos(a),Rb*math.sin(a),4)
+        h.update({"id":"bolt-%d"%(k+1),"side":"inside","tool_diameter":3,"lead":{"radius":1.2,"length":0}})
+        ents.append(h)
+    bore=circle(0,0,15); bore.update({"id":"bore","side":"inside"})
+    ents.append(bore)
+    ents.append(outline)
+    return {"bezcam":1,"units":"mm","tolerance":0.01,"order":"shortest",
+            "job":{"feed":800,"plunge_feed":200,"safe_z":5,"top_z":0,"cut_z":-6,"step_down":2,"spindle_rpm":18000,
+                   "tool":1,"tool_diameter":6,"direction":"climb","lead":{"radius":4,"length":2},
+                   "tolerance_side":"waste"},
+            "entities":ents}
+
+# A cam profile (closed interpolating curve) with a notch narrower than the
+# tool: the tool cannot follow it; the warning says where material is left.
+def cam():
+    pts=[]
+    for k in range(24):
+        a=2*math.pi*k/24
+        r=30+8*math.cos(a)+3*math.cos(2*a)
+        pts.append([round(r*math.cos(a),4), round(r*math.sin(a),4)])
+    body={"type":"interpolate","through":pts,"closed":True}
+    # The notch: a path replacing the profile near angle 90 degrees is
+    # simpler as a separate path: a closed outline made of lines and the
+    # cam's arc is complex, so the notch is a path of its own.
+    segs=[]
+    R=40
+    a0,a1=math.radians(93),math.radians(447)
+    segs+=arc(110,0,R,a0,a1)  # most of a circle, ccw, beside the cam
+    p=segs[-1]["points"][-1]
+    # notch about 4 mm wide (the tool is 8), 8 deep, at 90 degrees
+    e=[110+R*math.cos(a0),R*math.sin(a0)]
+    inward=lambda q,d:[110+(q[0]-110)*(R-d)/R,q[1]*(R-d)/R]
+    segs.append(line(p, inward(p,8)))
+    segs.append(line(inward(p,8), inward(e,8)))
+    segs.append(line(inward(e,8), e))
+    join(segs)
+    segs[-1]["points"][-1]=segs[0]["points"][0]
+    notch={"id":"notched-disc","type":"path","closed":True,"segments":segs,"side":"outside"}
+    body.update({"id":"cam-profile","side":"outside"})
+    return {"bezcam":1,"units":"mm","tolerance":0.01,
+            "job":{"feed":1000,"plunge_feed":250,"safe_z":5,"top_z":0,"cut_z":-3,"step_down":1.5,"spindle_rpm":16000,
+                   "tool":1,"tool_diameter":8,"lead":{"radius":5,"length":3}},
+            "entities":[body,notch]}
+
+# Lettering cut on the line (engraving): "S" and "C" as cubic paths, side on,
+# the deviation only to the left of travel.
+def lettering():
+    S={"id":"S","type":"path","segments":join([
+        {"type":"bezier","points":[[18,18],[14,22],[2,22],[2,15],]},
+        {"type":"bezier","points":[[2,15],[2,9],[18,11],[18,5]]},
+        {"type":"bezier","points":[[18,5],[18,-2],[4,-2],[1,3]]}])}
+    C={"id":"C","type":"path","segments":join([
+        {"type":"bezier","points":[[40,18],[36,23],[24,22],[24,10]]},
+        {"type":"bezier","points":[[24,10],[24,-2],[36,-3],[40,2]]}])}
+    return {"bezcam":1,"units":"mm","tolerance":0.01,
+            "job":{"feed":600,"plunge_feed":100,"safe_z":3,"top_z":0,"cut_z":-0.4,"spindle_rpm":20000,"tool":3,
+                   "side":"on","tolerance_side":"left"},
+            "entities":[S,C]}
+
+for name,f in [("part-flange",flange),("part-cam-notch",cam),("part-lettering",lettering)]:
+    open("samples/%s.json"%name,"w").write(json.dumps(f(),indent=1)+"\n")
