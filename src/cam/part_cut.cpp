@@ -12,6 +12,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/arc_fit.hpp"
+#include "bezcam/flatten/exact_blocks.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/offset.hpp"
 #include "bezcam/flatten/offset_measure.hpp"
@@ -319,7 +320,13 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
     switch (p.output) {
       case OutputMode::lines: emit_lines(sub, part_r); break;
       case OutputMode::arcs: emit_arcs(sub, part_r); break;
-      case OutputMode::nurbs: emit_nurbs(sub, part_r); break;
+      case OutputMode::nurbs:
+        // An offset is lines and arcs: LinuxCNC's exact form of an arc is
+        // G02/G03 (one line, where G5.2 takes four); Fanuc's G06.2 takes a
+        // whole run of arcs as one rational block.
+        if (c.machine.nurbs == NurbsDialect::linuxcnc && c.machine.arcs) emit_arcs(sub, part_r);
+        else emit_nurbs(sub, part_r);
+        break;
     }
     r.blocks += part_r.blocks;
     r.measured = std::max(r.measured, part_r.measured);

@@ -373,6 +373,14 @@ constexpr const char* kRapidColour = "#d62728";
 
 }  // namespace
 
+// A part cut beside its curve (`side` other than "on"): its path is meant to
+// be a tool's radius away, so it is not coloured by its distance from the
+// curve (the program measured it against its offset: offset_measure.hpp).
+bool beside_its_curve(const Job& job, const Entity& e) {
+  const auto side = e.params.side ? e.params.side : job.params.side;
+  return side && *side != CutSide::on;
+}
+
 std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const MotionBlock> motion, double tolerance,
                                              const EntityProgress& on_entity) {
   if (!(tolerance > 0)) throw InputError(errc::preview_tolerance, Place::at_setting("deviation"), "needs a tolerance > 0 to measure against");
@@ -393,7 +401,7 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
       auto it = by_entity.find(static_cast<int>(e.index));
       if (it == by_entity.end()) continue;
       const Shape sh = entity_shape(e);
-      if (sh.measure.empty()) continue;
+      if (sh.measure.empty() || beside_its_curve(job, e)) continue;
       const DenseCurve c = dense_curve(e, sh, tolerance);
       size_t hint = 0;
       for (size_t i : it->second) {
@@ -408,7 +416,7 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
     for (const Entity& e : job.entities) {
       if (on_entity) on_entity(e.index, total, e.label());
       const Shape sh = entity_shape(e);
-      if (!sh.measure.empty()) curves.push_back(dense_curve(e, sh, tolerance));
+      if (!sh.measure.empty() && !beside_its_curve(job, e)) curves.push_back(dense_curve(e, sh, tolerance));
     }
     std::vector<size_t> hints(curves.size(), 0);
     for (size_t i = 0; i < motion.size() && !curves.empty(); ++i) {
@@ -817,11 +825,22 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
       unmeasured = unmeasured || (is_feed(in.motion[i]) && !is_plunge(in.motion, i) && dev_of[i] < 0);
     if (unmeasured)
       key("key-feed-unmeasured", line(kFeedColour, 3, ""),
-          in.program_measured >= 0 ? "surface passes (measured when built)" : "surface passes (not measured)");
+          in.program_measured >= 0 ? "surfaces, parts: measured when built" : "surfaces, parts: not measured");
   } else {
     key("key-feed", line(kFeedColour, 3, ""), "feed (cutting)");
   }
   key("key-rapid", line(kRapidColour, 1, "6 4"), "rapid");
+  // Part cutting, when the drawing has it.
+  bool swept = false, left = false;
+  for (double r : in.entity_tool_radius) swept = swept || r > 0;
+  for (const auto& l : in.entity_left) left = left || !l.empty();
+  // (Only as many as the row holds; every mark has its own tooltip.)
+  auto fits = [&](const std::string& label) { return lx + 44 + 6.8 * double(label.size()) <= opt.width - margin; };
+  if (swept && fits("tool's width")) key("key-swept", line("#9ecae1", 9, ""), "tool's width");
+  if (swept && o.find("class=\"tab\"") != std::string::npos && fits("holding tab"))
+    key("key-tab", "<rect x=\"" + n3(lx + 10) + "\" y=\"" + n3(ly - 4) + "\" width=\"8\" height=\"8\" fill=\"#ff9f1c\" stroke=\"#7a4a00\"/>",
+        "holding tab");
+  if (left && fits("material left")) key("key-material-left", line("#d62728", 7, ""), "material left");
   key("key-start", "<circle cx=\"" + n3(lx + 6) + "\" cy=\"" + n3(ly) + "\" r=\"3.5\" fill=\"" + kCurveColour +
                        "\"/><path d=\"" + arrow_d({lx + 26, ly}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>",
       "start and direction");
