@@ -258,7 +258,22 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
                                 "); use a smaller tool");
     fit_bound = o.bound;
     for (size_t k = 0; k < o.chains.size(); ++k) {
-      chains.push_back(bezier_pieces(o.chains[k]));
+      std::vector<ArcSeg> chain = o.chains[k];
+      // A closed path with leads starts in the middle of its longest
+      // stretch: the lead (a quarter arc back along the path) needs room,
+      // which a corner of a pocket does not give.
+      if (cp.lead && o.closed[k]) {
+        size_t longest = 0;
+        for (size_t i = 1; i < chain.size(); ++i)
+          if (chain[i].length() > chain[longest].length()) longest = i;
+        std::vector<ArcSeg> turned{chain[longest].sub(0.5, 1)};
+        for (size_t i = 1; i < chain.size(); ++i) turned.push_back(chain[(longest + i) % chain.size()]);
+        turned.push_back(chain[longest].sub(0, 0.5));
+        turned.back().a = turned[turned.size() - 2].b;
+        turned.back().b = turned.front().a;
+        chain = std::move(turned);
+      }
+      chains.push_back(bezier_pieces(chain));
       chain_closed.push_back(o.closed[k]);
     }
     // Material the tool cannot reach, said with where.
