@@ -385,6 +385,20 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
     if (cp.lead) {
       in = lead_in(s, ts, waste, *cp.lead);
       out = lead_out(e, te, waste, *cp.lead);
+      // A lead that reaches into the part (a pocket too small for it, a
+      // part too near) would cut it: said, with how near it comes.
+      if (side != 0) {
+        for (const auto* lead : {&in, &out}) {
+          const auto pts = flatten(*lead, {0.01 * tol, -1}).points;
+          const std::vector<std::vector<Bezier>> curves{part};
+          const double near = measure_offset(curves, pts, radius, 0, tol, 0.05 * tol).min_distance;
+          if (near < radius - tol)
+            p.warnings.push_back(ent.label() + ": the lead-" + (lead == &in ? "in" : "out") +
+                                 (near < 1e-3 ? std::string(" crosses the curve") : " comes within " + fmt_num(std::round(near * 1000) / 1000) + " of the curve") +
+                                 ", nearer than the tool's radius " + fmt_num(radius) +
+                                 ": it cuts into the part; make the lead shorter or its radius smaller");
+        }
+      }
     }
     const auto runs = cuts.empty() ? std::vector<std::vector<Bezier>>{chain} : split_at_lengths(chain, cuts);
     for (size_t d = 0; d < depths.size(); ++d) {

@@ -89,6 +89,15 @@ TEST(PartCut, LeadsStartOnTheWasteSideAndJoinTangentially) {
   EXPECT_GE(dist_to_rect(s, 0, 0, 40, 30), 3 + 2 - 1e-3);
 }
 
+TEST(PartCut, ALeadTooBigForThePocketIsSaid) {
+  const Program p = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":8,"length":5})", rect(0, 0, 20, 15));
+  bool said = false;
+  for (const auto& w : p.warnings) said = said || w.find("lead-in crosses the curve") != std::string::npos;
+  EXPECT_TRUE(said);
+  const Program q = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":2,"length":1})", rect(0, 0, 40, 30));
+  for (const auto& w : q.warnings) EXPECT_EQ(w.find("lead"), std::string::npos) << w;
+}
+
 TEST(PartCut, TabsRaiseOnlyThePassesBelowThem) {
   const Program p = build(R"("side":"outside","tool_diameter":6,"top_z":0,"cut_z":-6,"step_down":2,)"
                           R"("tabs":{"count":3,"width":4,"height":1.5})",
