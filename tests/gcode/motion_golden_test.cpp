@@ -9,12 +9,15 @@
 // and review `git diff tests/golden/motion`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "bezcam/cam/planner.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/job/job_json.hpp"
@@ -70,6 +73,21 @@ std::string summary_rows(const char* machine) {
       const ConvertResult r = convert(job, m, o);
       if (r.program.output != mode) continue;  // replaced (surfaces stay in lines)
       const MotionPlan plan = plan_motion(read_timeline(r.gcode, &m), *m.motion);
+      // The header's cycle time (the program's moves planned) is the text's:
+      // the first approach from home included (MotionBlock::from_known).
+      // Not yet where the profile's tool change position lines (G53 ...)
+      // move the machine between tools: the program's moves do not have
+      // that retract.
+      bool retracts = false, moved = false;
+      for (const Move& mv : r.program.moves) {
+        moved = moved || motion_of(mv) != nullptr;
+        retracts = retracts || (moved && std::holds_alternative<ToolChangePosition>(mv.what) && !m.tool_change_position.empty());
+      }
+      const MotionPlan header = plan_motion(program_timeline(r.program), *m.motion);
+      if (!retracts)
+        EXPECT_LE(std::abs(header.cycle_time_s - plan.cycle_time_s), 1e-9 * std::max(1.0, plan.cycle_time_s))
+            << s.stem() << " " << to_string(mode) << " on " << machine << ": header " << header.cycle_time_s
+            << " s, read back " << plan.cycle_time_s << " s";
       size_t blocks = 0;
       for (const auto& e : r.program.entities) blocks += e.blocks;
       char b[400];
