@@ -96,6 +96,9 @@ std::vector<MotionBlock> program_motion(const Program& p) {
     for (int a = 0; a < 3; ++a)
       if (!(known & (1u << a))) from[a] = to[a];
     b.from = from;
+    // The axes not set yet start where the machine stands (the planner
+    // takes them from Timeline::start), as the reader marks them.
+    b.from_known = known & 7u;
     b.to = to;
     b.feed = b.kind == BlockKind::rapid ? 0 : mo->feed;
     out.push_back(std::move(b));

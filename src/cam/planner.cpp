@@ -199,9 +199,11 @@ class CurvePoints {
 };
 
 struct Builder {
-  Builder(const Timeline& t, const MotionModel& m) : tl(t), model(m), period(m.period_s), scale(mm_per_unit(t.units)) {}
+  Builder(const Timeline& t, const MotionModel& m, bool summary_only)
+      : tl(t), model(m), summary(summary_only), period(m.period_s), scale(mm_per_unit(t.units)) {}
   const Timeline& tl;
   const MotionModel& model;
+  bool summary;  // PlanDetail::summary: no curve tables (only sampling reads them)
   Limits lim{};
   double period;
   double scale;  // mm per program unit
@@ -363,16 +365,20 @@ struct Builder {
         PlanSegment::Piece p;
         p.shape = PlanSegment::Shape::block;
         p.block = bi;
-        p.s.push_back(0);
-        p.t.push_back(static_cast<double>(k * kSub) / (pieces * kSub));
-        p.pts.push_back(pts[static_cast<size_t>(k * kSub)]);
+        if (!summary) {
+          p.s.push_back(0);
+          p.t.push_back(static_cast<double>(k * kSub) / (pieces * kSub));
+          p.pts.push_back(pts[static_cast<size_t>(k * kSub)]);
+        }
         double len = 0, rmin = kInf;
         for (int i = 1; i <= kSub; ++i) {
           const size_t at = static_cast<size_t>(k * kSub + i);
           len += dist(pts[at - 1], pts[at]);
-          p.s.push_back(len);
-          p.t.push_back(static_cast<double>(at) / (pieces * kSub));
-          p.pts.push_back(pts[at]);
+          if (!summary) {
+            p.s.push_back(len);
+            p.t.push_back(static_cast<double>(at) / (pieces * kSub));
+            p.pts.push_back(pts[at]);
+          }
           if (at + 1 < pts.size()) rmin = std::min(rmin, circumradius(pts[at - 1], pts[at], pts[at + 1]));
         }
         p.length = len;
@@ -972,7 +978,7 @@ Vec3 PlanSegment::point_at(double s, const std::vector<MotionBlock>& blocks) con
   return {};
 }
 
-MotionPlan plan_motion(const Timeline& tl, const MotionModel& model) {
+MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail detail) {
   if (!(model.period_s > 0)) throw std::invalid_argument("motion model: period_s must be > 0");
   // Tool changes and spindle starts take the machine's time.
   Timeline timed = tl;
@@ -990,7 +996,8 @@ MotionPlan plan_motion(const Timeline& tl, const MotionModel& model) {
     if (p.kind == PlanPause::Kind::tool_change) p.seconds = model.tool_change_s;
     if (p.kind == PlanPause::Kind::spindle_start) p.seconds = model.spindle_start_s;
   }
-  Builder b(timed, model);
+  const bool summary = detail == PlanDetail::summary;
+  Builder b(timed, model, summary);
   for (int i = 0; i < 3; ++i) {
     b.lim.vmax[i] = model.max_velocity_mm_min[static_cast<size_t>(i)] / 60 / b.scale;
     b.lim.amax[i] = model.max_acceleration_mm_s2[static_cast<size_t>(i)] / b.scale;
@@ -1002,6 +1009,12 @@ MotionPlan plan_motion(const Timeline& tl, const MotionModel& model) {
   b.build();
   b.speeds();
   b.totals();
+  if (summary) {
+    b.plan.blocks.clear();
+    b.plan.blocks.shrink_to_fit();
+    b.plan.pause_start_s.clear();
+    return std::move(b.plan);
+  }
   b.plan.segments = std::move(b.segs);
   b.plan.pauses = timed.pauses;
   b.plan.motion = tl.blocks;

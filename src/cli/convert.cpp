@@ -67,7 +67,7 @@ int run() {
     throw;
   }
   progress.finish();
-  ProgramReport rep = make_report(r.program, m, r.gcode);
+  ProgramReport rep = make_report(r.program, m, r.gcode, r.plan ? &*r.plan : nullptr);
   if (o.compare) {
     if (!m.motion)
       throw InputError(errc::usage_option, Place::at_option("--compare-outputs"),
@@ -86,7 +86,7 @@ int run() {
         other.output = mode;
         other.on_entity = nullptr;
         const ConvertResult r2 = convert(job, m, other);
-        const ProgramReport rep2 = make_report(r2.program, m, r2.gcode);
+        const ProgramReport rep2 = make_report(r2.program, m, r2.gcode, r2.plan ? &*r2.plan : nullptr);
         if (!rep2.planned) continue;
         a.planned = *rep2.planned;
         a.gcode_bytes = r2.gcode.size();

@@ -3,11 +3,35 @@
 
 namespace bezcam {
 
+namespace {
+
+// Whether the profile's tool change position lines (e.g. G53 G00 Z0.) run
+// after the program has moved: a motion the program's moves do not hold.
+bool retracts_between_tools(const Program& p, const MachineProfile& m) {
+  if (m.tool_change_position.empty()) return false;
+  bool moved = false;
+  for (const Move& mv : p.moves) {
+    if (moved && std::holds_alternative<ToolChangePosition>(mv.what)) return true;
+    moved = moved || motion_of(mv) != nullptr;
+  }
+  return false;
+}
+
+}  // namespace
+
 ConvertResult convert(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
   ConvertResult r;
   r.program = build_program(job, m, opt);
   validate_program(r.program, m);  // before one character is written
-  r.gcode = write_gcode(r.program, m);
+  // One plan for the header and the report, from the program's moves: the
+  // printed program's motion (coordinates are rounded to the printed
+  // decimals when the program is built; MotionGolden checks every sample's
+  // plan against its text read back and planned). Not where the profile's
+  // tool change position lines move the machine between tools: those
+  // moves are in the text only, and the report plans the text read back.
+  if (m.motion && !retracts_between_tools(r.program, m))
+    r.plan = plan_motion(program_timeline(r.program), *m.motion, PlanDetail::summary);
+  r.gcode = write_gcode(r.program, m, r.plan ? &*r.plan : nullptr);
   return r;
 }
 

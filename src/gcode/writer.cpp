@@ -43,7 +43,8 @@ class Writer {
  public:
   // With a sink, the text goes to it in pieces of about kChunk bytes as it
   // is written; without, run() returns it whole.
-  Writer(const Program& p, const MachineProfile& m, const GcodeSink* sink = nullptr) : p_(p), m_(m), sink_(sink) {}
+  Writer(const Program& p, const MachineProfile& m, const GcodeSink* sink = nullptr, const MotionPlan* plan = nullptr)
+      : p_(p), m_(m), sink_(sink), plan_(plan) {}
 
   std::string run() {
     bool numbered = false;
@@ -120,8 +121,9 @@ class Writer {
       return std::string(b);
     };
     if (m_.motion) {
-      const MotionPlan plan = plan_motion(program_timeline(p_), *m_.motion);
-      note("estimated cycle time " + when(plan.cycle_time_s) + " on the motion model of machine " + m_.name +
+      const double cycle = plan_ ? plan_->cycle_time_s
+                                 : plan_motion(program_timeline(p_), *m_.motion, PlanDetail::summary).cycle_time_s;
+      note("estimated cycle time " + when(cycle) + " on the motion model of machine " + m_.name +
            " (acceleration, corners, tool changes)");
       return;
     }
@@ -348,6 +350,7 @@ class Writer {
   const Program& p_;
   const MachineProfile& m_;
   const GcodeSink* sink_;
+  const MotionPlan* plan_;
   std::string out_, line_;
   int n_ = m_.line_start;
   std::string axis_[3], motion_, feed_;
@@ -357,6 +360,10 @@ class Writer {
 }  // namespace
 
 std::string write_gcode(const Program& p, const MachineProfile& m) { return Writer(p, m).run(); }
+
+std::string write_gcode(const Program& p, const MachineProfile& m, const MotionPlan* plan) {
+  return Writer(p, m, nullptr, plan).run();
+}
 
 void write_gcode(const Program& p, const MachineProfile& m, const GcodeSink& sink) { Writer(p, m, &sink).run(); }
 

@@ -11,7 +11,7 @@
 
 namespace bezcam {
 
-ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode) {
+ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode, const MotionPlan* plan) {
   ProgramReport r;
   r.job = p.job_name;
   r.machine = p.machine;
@@ -42,7 +42,9 @@ ProgramReport make_report(const Program& p, const MachineProfile& m, std::string
     r.entities.push_back({e, e.entity >= 0 && static_cast<size_t>(e.entity) < by_entity.size()
                                  ? motion_totals(by_entity[e.entity], r.rapid_rate)
                                  : motion_totals({}, r.rapid_rate)});
-  if (m.motion) {
+  if (m.motion && plan) {
+    r.planned = planned_summary(*plan);  // the program's one plan (convert())
+  } else if (m.motion) {
     // The printed program, read back as the controller reads it; without
     // text, the program's moves.
     const Timeline tl = gcode.empty() ? program_timeline(p) : read_timeline(gcode, &m);

@@ -9,12 +9,15 @@
 // and review `git diff tests/golden/motion`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "bezcam/cam/planner.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/job/job_json.hpp"
@@ -70,6 +73,38 @@ std::string summary_rows(const char* machine) {
       const ConvertResult r = convert(job, m, o);
       if (r.program.output != mode) continue;  // replaced (surfaces stay in lines)
       const MotionPlan plan = plan_motion(read_timeline(r.gcode, &m), *m.motion);
+      // convert() plans once, from the program's moves, for the header and
+      // the report: the same figures as the text read back and planned.
+      if (r.plan) {
+        const MotionPlan& once = *r.plan;
+        auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); };
+        const std::string where = s.stem().string() + " " + to_string(mode) + " on " + machine;
+        EXPECT_TRUE(near(once.cycle_time_s, plan.cycle_time_s)) << where << ": " << once.cycle_time_s << " vs " << plan.cycle_time_s;
+        EXPECT_TRUE(near(once.cutting_time_s, plan.cutting_time_s)) << where;
+        EXPECT_TRUE(near(once.rapid_time_s, plan.rapid_time_s)) << where;
+        EXPECT_TRUE(near(once.pause_time_s, plan.pause_time_s)) << where;
+        EXPECT_TRUE(near(once.programmed_feed_time_s, plan.programmed_feed_time_s)) << where;
+        EXPECT_TRUE(near(once.mean_feed_ratio, plan.mean_feed_ratio)) << where;
+        EXPECT_TRUE(near(once.max_path_deviation, plan.max_path_deviation)) << where;
+        EXPECT_EQ(once.starved_blocks, plan.starved_blocks) << where;
+        EXPECT_EQ(once.clamped_blocks, plan.clamped_blocks) << where;
+        EXPECT_TRUE(once.segments.empty() && once.motion.empty()) << where;  // summary only
+      }
+      // The header's cycle time (the program's moves planned) is the text's:
+      // the first approach from home included (MotionBlock::from_known).
+      // Not yet where the profile's tool change position lines (G53 ...)
+      // move the machine between tools: the program's moves do not have
+      // that retract.
+      bool retracts = false, moved = false;
+      for (const Move& mv : r.program.moves) {
+        moved = moved || motion_of(mv) != nullptr;
+        retracts = retracts || (moved && std::holds_alternative<ToolChangePosition>(mv.what) && !m.tool_change_position.empty());
+      }
+      const MotionPlan header = plan_motion(program_timeline(r.program), *m.motion);
+      if (!retracts)
+        EXPECT_LE(std::abs(header.cycle_time_s - plan.cycle_time_s), 1e-9 * std::max(1.0, plan.cycle_time_s))
+            << s.stem() << " " << to_string(mode) << " on " << machine << ": header " << header.cycle_time_s
+            << " s, read back " << plan.cycle_time_s << " s";
       size_t blocks = 0;
       for (const auto& e : r.program.entities) blocks += e.blocks;
       char b[400];

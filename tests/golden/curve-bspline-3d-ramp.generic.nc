@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-bspline-3d-ramp.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009796 mm, proven bound 0.009998 mm, rounding included)
 (T2: ramp)
-(estimated cycle time 22 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 23 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T2 M06

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-bspline-unclamped.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009726 mm, proven bound 0.009954 mm, rounding included)
 (T1: uniform-cubic)
-(estimated cycle time 21 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 22 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

@@ -3,7 +3,7 @@ O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-cube-3d.json, machine fanuc, output lines)
 N20 (tolerance 0.001 mm; largest deviation measured 0.0009254 mm, proven bound 0.0009987 mm, rounding included)
 N30 (T1: cube-base-curve)
-N40 (estimated cycle time 8 s on the motion model of machine fanuc [acceleration, corners, tool changes])
+N40 (estimated cycle time 9 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
 N60 G40 G49 G80 G94
 N70 G54

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-cube-3d.json, machine generic, output lines)
 (tolerance 0.001 mm; largest deviation measured 0.0009254 mm, proven bound 0.0009987 mm, rounding included)
 (T1: cube-base-curve)
-(estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 11 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

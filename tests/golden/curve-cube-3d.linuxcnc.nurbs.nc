@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-cube-3d.json, machine linuxcnc, output nurbs)
 (tolerance 0.001 mm; largest deviation measured 0.0009781 mm, proven bound 0.0009993 mm, rounding included)
 (T1: cube-base-curve)
-(estimated cycle time 3 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
+(estimated cycle time 4 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 G54

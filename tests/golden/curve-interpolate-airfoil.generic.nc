@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-interpolate-airfoil.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.00981 mm, proven bound 0.009974 mm, rounding included)
 (T1: upper-surface)
-(estimated cycle time 16 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 17 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

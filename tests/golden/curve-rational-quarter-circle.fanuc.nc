@@ -3,7 +3,7 @@ O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009658 mm, proven bound 0.009987 mm, rounding included)
 N30 (T1: quarter-circle-r10)
-N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
+N40 (estimated cycle time 8 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
 N60 G40 G49 G80 G94
 N70 G54

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009658 mm, proven bound 0.009987 mm, rounding included)
 (T1: quarter-circle-r10)
-(estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

@@ -1,7 +1,7 @@
 (bezcam 0.1.0: curve-semicircle.json, machine grbl, output nurbs)
 (tolerance 0.005 mm; largest deviation measured 0.00488 mm, proven bound 0.004891 mm, rounding included)
 (T1: semicircle-r3)
-(estimated cycle time 5 s on the motion model of machine grbl [acceleration, corners, tool changes])
+(estimated cycle time 6 s on the motion model of machine grbl [acceleration, corners, tool changes])
 (machine grbl has no NURBS words: nurbs output cuts with arcs [G02/G03] and G01 lines)
 G21 G90 G17
 G40 G49 G80 G94

@@ -4,7 +4,7 @@ N10 (bezcam 0.1.0: job-curve-on-surface.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009758 mm, proven bound 0.009999 mm, rounding included)
 N30 (T1: wing)
 N40 (T2: wheel-arch)
-N50 (estimated cycle time 38 min 33 s on the motion model of machine fanuc [acceleration, corners, tool changes])
+N50 (estimated cycle time 38 min 34 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N60 G21 G90 G17
 N70 G40 G49 G80 G94
 N80 G54

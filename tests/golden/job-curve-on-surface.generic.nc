@@ -3,7 +3,7 @@
 (tolerance 0.01 mm; largest deviation measured 0.009758 mm, proven bound 0.009999 mm, rounding included)
 (T1: wing)
 (T2: wheel-arch)
-(estimated cycle time 38 min 35 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 38 min 37 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

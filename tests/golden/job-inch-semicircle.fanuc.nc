@@ -3,7 +3,7 @@ O1000 (BEZCAM)
 N10 (bezcam 0.1.0: job-inch-semicircle.json, machine fanuc, output lines)
 N20 (tolerance 0.0005 inch; largest deviation measured 0.0004831 inch, proven bound 0.0005 inch, rounding included)
 N30 (T1: semicircle-inch)
-N40 (estimated cycle time 21 s on the motion model of machine fanuc [acceleration, corners, tool changes])
+N40 (estimated cycle time 22 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G20 G90 G17
 N60 G40 G49 G80 G94
 N70 G54

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: job-inch-semicircle.json, machine generic, output lines)
 (tolerance 0.0005 inch; largest deviation measured 0.0004831 inch, proven bound 0.0005 inch, rounding included)
 (T1: semicircle-inch)
-(estimated cycle time 23 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 24 s on the motion model of machine generic [acceleration, corners, tool changes])
 G20 G90 G17
 G40 G49 G80 G94
 T1 M06

@@ -3,7 +3,7 @@
 (tolerance 0.01 mm; largest deviation measured 0.009812 mm, proven bound 0.009996 mm, rounding included)
 (T1: pocket-outline)
 (T2: engraving)
-(estimated cycle time 22 s on the motion model of machine grbl [acceleration, corners, tool changes])
+(estimated cycle time 23 s on the motion model of machine grbl [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 G54

@@ -2,7 +2,7 @@
 (bezcam 0.1.0: part-flange.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009883 mm, proven bound 0.009999 mm, rounding included)
 (T1: bolt-1, bolt-4, bore, bolt-3, bolt-2, outline)
-(estimated cycle time 2 min 57 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 2 min 58 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 5 nested contours cut before what encloses them; rapids 176.7 mm in XY instead of 242.3 mm as written [65.6 mm saved])
 G21 G90 G17
 G40 G49 G80 G94

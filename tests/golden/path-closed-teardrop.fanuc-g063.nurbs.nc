@@ -3,7 +3,7 @@ O1000 (BEZCAM)
 (bezcam 0.1.0: path-closed-teardrop.json, machine fanuc-g063, output nurbs)
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
 (T2: teardrop)
-(estimated cycle time 13 s on the motion model of machine fanuc-g063 [acceleration, corners, tool changes])
+(estimated cycle time 14 s on the motion model of machine fanuc-g063 [acceleration, corners, tool changes])
 G21 G90 G17
 G53 G00 Z0.
 T2 M06

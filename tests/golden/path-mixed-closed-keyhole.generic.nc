@@ -2,7 +2,7 @@
 (bezcam 0.1.0: path-mixed-closed-keyhole.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009728 mm, proven bound 0.009992 mm, rounding included)
 (T3: keyhole)
-(estimated cycle time 17 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 18 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T3 M06

@@ -122,10 +122,19 @@ struct MotionPlan {
   std::vector<double> pause_start_s;  ///< when each pause starts
 };
 
+/// How much of a plan to keep. `full`: segments with their curve tables,
+/// per-block figures, pauses and the blocks (simulate, preview, sampling).
+/// `summary`: the scalar figures only (cycle, cutting, rapid, pause and
+/// programmed-feed times, mean feed ratio, starved and clamped blocks,
+/// path deviation), the same as a full plan's; the vectors are left empty
+/// and the curve tables (arc length -> parameter, points) are never built,
+/// so a long program's plan takes a fraction of the memory.
+enum class PlanDetail { full, summary };
+
 /// Plans `tl` on a machine with `model`. Limits are in mm and converted to
 /// the program's units. Throws std::invalid_argument only for a model out
 /// of range (profiles are validated when read).
-MotionPlan plan_motion(const Timeline& tl, const MotionModel& model);
+MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail detail = PlanDetail::full);
 
 /// One sample per `plan.period_s` from t = 0 to the cycle's end (included):
 /// time, position and speed (units/min).

@@ -1,8 +1,10 @@
 #pragma once
 /// The whole post-processing step: job + profile -> validated program ->
 /// text. What `bezcam convert` runs.
+#include <optional>
 #include <string>
 
+#include "bezcam/cam/planner.hpp"
 #include "bezcam/gcode/writer.hpp"
 #include "bezcam/cam/validate.hpp"
 
@@ -11,6 +13,10 @@ namespace bezcam {
 struct ConvertResult {
   Program program;
   std::string gcode;
+  /// The program planned once on the machine's motion model (summary
+  /// only; empty without a model): the header's cycle time and the
+  /// report's planned figures are both this plan's.
+  std::optional<MotionPlan> plan;
 };
 
 /// Throws InputError (bad job, limits) before producing any text.

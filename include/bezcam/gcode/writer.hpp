@@ -14,6 +14,12 @@ namespace bezcam {
 /// printed when their printed value changes), as are motion words.
 std::string write_gcode(const Program& p, const MachineProfile& m);
 
+struct MotionPlan;
+/// The same, with the program's plan on the machine's motion model already
+/// made (plan_motion(program_timeline(p), *m.motion), any PlanDetail): the
+/// header's cycle time is its, not a second plan's. Null: as above.
+std::string write_gcode(const Program& p, const MachineProfile& m, const MotionPlan* plan);
+
 /// Receives the program's text in order, in pieces of about 64 KiB.
 using GcodeSink = std::function<void(std::string_view)>;
 /// The same text, streamed: never held whole in memory.

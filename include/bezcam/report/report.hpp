@@ -63,7 +63,8 @@ struct ProgramReport {
 /// Builds the report of a program built for `m` (the rapid rate is the
 /// profile's maximum feed, in the program's units). `gcode`: the printed
 /// text, for its line and byte counts (may be empty).
-ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode = {});
+ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode = {},
+                          const MotionPlan* plan = nullptr);
 
 /// The figures of a plan that a report keeps.
 ProgramReport::Planned planned_summary(const MotionPlan& plan);
