@@ -26,15 +26,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-std::vector<Bezier> reversed(std::span<const Bezier> pieces) {
-  std::vector<Bezier> out(pieces.rbegin(), pieces.rend());
-  for (auto& b : out) {
-    std::reverse(b.points.begin(), b.points.end());
-    std::reverse(b.weights.begin(), b.weights.end());
-  }
-  return out;
-}
-
 Vec3 unit_tangent(const Bezier& b, double t) {
   Vec3 d = derivative(b, t);
   if (std::hypot(d.x, d.y) == 0) d = t < 0.5 ? b.points[1] - b.points[0] : b.back() - b.points[b.points.size() - 2];
@@ -213,7 +204,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       const std::string w = ent.label() + ": \"direction\" needs a side of the curve (side \"on\" has no part side): cut as drawn";
       p.warnings.push_back(w);
     } else if ((cp.direction == CutDirection::climb) != (side > 0)) {
-      part = reversed(part);
+      part = reversed(std::span<const Bezier>(part));
       side = -side;
     }
   }

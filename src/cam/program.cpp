@@ -337,28 +337,26 @@ Job ordered(const Job& job, const MachineProfile& m, Program& p) {
   out.entities.clear();
   for (const OrderStep& st : plan.steps) {
     Entity e = job.entities[st.contour];
-    auto& pieces = e.curve.pieces;
     const size_t k = st.start_vertex / 4;  // outline vertices: four per piece
-    if (cs[st.contour].closed && k > 0 && k < pieces.size()) {
-      std::rotate(pieces.begin(), pieces.begin() + static_cast<long>(k), pieces.end());
-      CurveSegment seg;
-      seg.kind = e.curve.kind;
-      seg.degree = e.curve.max_degree();
-      seg.rational = e.curve.rational();
-      const bool closed = e.curve.closed;
-      e.curve = make_single(seg, std::move(pieces), e.curve.dim);
-      e.curve.closed = closed;
-    } else if (st.reversed) {
-      std::reverse(pieces.begin(), pieces.end());
-      for (auto& b : pieces) {
-        std::reverse(b.points.begin(), b.points.end());
-        std::reverse(b.weights.begin(), b.weights.end());
+    const auto& pieces = e.curve.pieces;
+    const bool rotate = cs[st.contour].closed && k > 0 && k < pieces.size();
+    if (rotate || st.reversed) {
+      // The same curve from another start or the other way: one segment of
+      // its pieces (the source NURBS form no longer matches them).
+      std::vector<Bezier> moved;
+      if (rotate) {
+        moved.assign(pieces.begin() + static_cast<long>(k), pieces.end());
+        moved.insert(moved.end(), pieces.begin(), pieces.begin() + static_cast<long>(k));
+      } else {
+        moved = reversed(std::span<const Bezier>(pieces));
       }
       CurveSegment seg;
       seg.kind = e.curve.kind;
       seg.degree = e.curve.max_degree();
       seg.rational = e.curve.rational();
-      e.curve = make_single(seg, std::move(pieces), e.curve.dim);
+      const bool closed = e.curve.closed;
+      e.curve = make_single(seg, std::move(moved), e.curve.dim);
+      e.curve.closed = closed;
     }
     out.entities.push_back(std::move(e));
   }

@@ -211,6 +211,13 @@ Bezier reversed(const Bezier& b) {
   return r;
 }
 
+std::vector<Bezier> reversed(std::span<const Bezier> pieces) {
+  std::vector<Bezier> out;
+  out.reserve(pieces.size());
+  for (auto it = pieces.rbegin(); it != pieces.rend(); ++it) out.push_back(reversed(*it));
+  return out;
+}
+
 Box3 control_bounds(const Bezier& b) {
   Box3 box;
   for (const auto& p : b.points) box.add(p);

@@ -66,6 +66,8 @@ Bezier subcurve(const Bezier& b, double t0, double t1);
 Bezier elevate(const Bezier& b);
 /// Same curve, reversed direction.
 Bezier reversed(const Bezier& b);
+/// Pieces end to end, travelled the other way (last piece first, each reversed).
+std::vector<Bezier> reversed(std::span<const Bezier> pieces);
 /// Tight axis-aligned bounds of the curve (not of its control polygon),
 /// accurate to 1e-12 of the box size.
 Box3 bounds(const Bezier& b);
