@@ -112,5 +112,15 @@ def lettering():
                    "side":"on","tolerance_side":"left"},
             "entities":[S,C]}
 
-for name,f in [("part-flange",flange),("part-cam-notch",cam),("part-lettering",lettering)]:
+# The same flange cut with the controller's compensation (G41/G42 D-): the
+# program carries the part's edge; each tool's diameter is in its D register.
+def flange_g41():
+    j=flange()
+    j["job"].update({"compensation":"controller","lead":{"radius":4,"length":4}})
+    for e in j["entities"]:
+        if e.get("id","").startswith("bolt-"):
+            e.update({"tool":2,"lead":{"radius":0.8,"length":1.6}})
+    return j
+
+for name,f in [("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-cam-notch",cam),("part-lettering",lettering)]:
     open("samples/%s.json"%name,"w").write(json.dumps(f(),indent=1)+"\n")

@@ -166,6 +166,10 @@ inline constexpr ErrorId gcode_travel{"gcode.travel"};
 inline constexpr ErrorId gcode_unexpected_word{"gcode.unexpected-word"};
 /// G20/G21 changes the units after the first move.
 inline constexpr ErrorId gcode_units_change{"gcode.units-change"};
+/// Cutter radius compensation (G41/G42/G40) cannot do what the program
+/// asks: no diameter for its D, an arc or a curve where a line must be, a
+/// corner or arc too tight for the tool.
+inline constexpr ErrorId gcode_cutter_comp{"gcode.cutter-comp"};
 /// A G/M-code, axis or feature this reader does not support.
 inline constexpr ErrorId gcode_unsupported{"gcode.unsupported"};
 /// A NURBS weight is missing or not > 0.

@@ -53,6 +53,9 @@ Vec3 cut_point(const CutContext& c, const Vec3& p);
 
 /// G01 polyline within the tolerance after rounding (flatten_curve.hpp).
 void emit_lines(CutContext& c, EntityReport& r);
+/// The G01 moves of a polyline within `bound` of the entity's curve (its
+/// first vertex where the tool stands), with the independent measurement.
+void emit_polyline(CutContext& c, EntityReport& r, std::vector<Vec3> poly, double bound);
 
 /// build_program()'s running state, continued by an emitter that positions
 /// the tool itself.

@@ -1,6 +1,7 @@
 #include "bezcam/cam/machine_profile.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -24,7 +25,7 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
       {"", {"name", "description", "header", "footer", "line_numbers", "decimals", "max_decimals", "feed_decimals", "words",
             "tool_change", "spindle_on", "spindle_off", "preamble", "tool_length", "tool_changer", "spindle_dwell_s",
             "comments", "modal", "program_number", "tool_change_position",
-            "arcs", "arc_tolerance_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults", "motion"}},
+            "arcs", "arc_tolerance_mm", "cutter_compensation", "tool_diameters_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults", "motion"}},
       {"motion", {"max_velocity_mm_min", "max_acceleration_mm_s2", "max_jerk_mm_s3", "period_s", "min_segment_periods",
                   "block_rate_hz", "lookahead_blocks", "blend_tolerance_mm", "tool_change_s", "spindle_start_s",
                   "planner"}},
@@ -250,6 +251,22 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
     m.arcs = v->get<bool>();
   }
   if (auto v = r.opt(doc, "arc_tolerance_mm")) m.arc_tolerance_mm = r.num(*v, "arc_tolerance_mm");
+  if (auto v = r.opt(doc, "cutter_compensation")) {
+    if (!v->is_boolean()) r.fail("cutter_compensation", "expected true or false");
+    m.cutter_compensation = v->get<bool>();
+  }
+  if (auto v = r.opt(doc, "tool_diameters_mm")) {
+    if (!v->is_object()) r.fail("tool_diameters_mm", "expected an object {\"1\": 6.0, ...}: D register -> diameter in mm");
+    for (const auto& [k, d] : v->items()) {
+      const std::string p = "tool_diameters_mm." + k;
+      int reg = -1;
+      const auto [end, ec] = std::from_chars(k.data(), k.data() + k.size(), reg);
+      if (ec != std::errc() || end != k.data() + k.size() || reg < 0 || reg > 99999) r.fail(p, "expected a register number 0 to 99999 as the key");
+      const double dia = r.num(d, p);
+      if (!(dia >= 0 && dia < 1e4)) r.fail(p, "expected a diameter from 0 to 10000 mm");
+      m.tool_diameters_mm[reg] = dia;
+    }
+  }
   if (auto v = r.opt(doc, "nurbs")) {
     if (!v->is_object()) r.fail("nurbs", "expected an object");
     const std::string d = r.str(v->value("dialect", json("none")), "nurbs.dialect");

@@ -1,5 +1,7 @@
 #include "bezcam/cam/motion.hpp"
 
+#include "bezcam/cam/cutter_comp.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -71,7 +73,21 @@ std::vector<MotionBlock> program_motion(const Program& p) {
   std::vector<MotionBlock> out;
   Vec3 pos;
   unsigned known = 0;
+  // G41/G42: the blocks are where the tool's centre goes (cutter_comp.hpp).
+  CutterComp comp;
+  auto add = [&](std::vector<MotionBlock> blocks) {
+    for (auto& b : blocks) out.push_back(std::move(b));
+  };
   for (const Move& mv : p.moves) {
+    if (const auto* cc = std::get_if<CompensationMove>(&mv.what)) {
+      try {
+        if (cc->side == 0) add(comp.off());
+        else comp.on(cc->side, cc->radius);
+      } catch (const CompensationError& e) {
+        throw std::logic_error(std::string("built program: ") + e.what());
+      }
+      continue;
+    }
     const Motion* mo = motion_of(mv);
     if (!mo) continue;  // no motion
     MotionBlock b;
@@ -101,10 +117,15 @@ std::vector<MotionBlock> program_motion(const Program& p) {
     b.from_known = known & 7u;
     b.to = to;
     b.feed = b.kind == BlockKind::rapid ? 0 : mo->feed;
-    out.push_back(std::move(b));
     pos = to;
     known |= mo->axes;
+    try {
+      add(comp.push(b));
+    } catch (const CompensationError& e) {
+      throw std::logic_error(std::string("built program: ") + e.what());
+    }
   }
+  add(comp.finish());
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "bezcam/error.hpp"
+#include "bezcam/cam/cutter_comp.hpp"
 #include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/exact_blocks.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
@@ -128,6 +129,105 @@ std::vector<Vec3> dense_path(const std::vector<Move>& moves, size_t from, size_t
   return out;
 }
 
+// The tool centre's path under controller compensation (cutter_comp.hpp)
+// for the moves [from, to) of a stretch from `cur`, entered and left by the
+// leads, whose ends are tangent to the curve there (`ts`, `te`), as a dense
+// XY polyline: the corners the controller turns between the leads and the
+// stretch included, the leads themselves not.
+std::vector<Vec3> compensated_path(const std::vector<Move>& moves, size_t from, size_t to, Vec3 cur, const Vec3& ts,
+                                   const Vec3& te, int side, double r, double sag) {
+  Program run;
+  LineMove start;
+  start.to = cur;
+  run.moves.push_back({start});
+  for (size_t i = from; i < to; ++i) run.moves.push_back(moves[i]);
+  auto blocks = program_motion(run);
+  blocks.erase(blocks.begin());  // the move to the start
+  if (blocks.empty()) return {};
+  CutterComp comp;
+  comp.on(side, r);
+  MotionBlock entry, exit;
+  entry.from = cur - ts * (2 * r + 1);
+  entry.to = cur;
+  exit.from = blocks.back().to;
+  exit.to = exit.from + te * (2 * r + 1);
+  std::vector<MotionBlock> tool;
+  auto add = [&](std::vector<MotionBlock> bs) { tool.insert(tool.end(), bs.begin(), bs.end()); };
+  add(comp.push(entry));
+  for (const auto& b : blocks) add(comp.push(b));
+  add(comp.push(exit));  // completes the last move and its corner, holds the exit
+  std::vector<Vec3> out;
+  for (size_t i = 1; i < tool.size(); ++i)  // not the entry
+    for (const Vec3& q : sample_block(tool[i], sag))
+      if (out.empty() || q.x != out.back().x || q.y != out.back().y) out.push_back({q.x, q.y, 0});
+  return out;
+}
+
+// Chords of even size along each piece, for a controller that compensates
+// the polyline: a short chord left at a joint by the greedy flattening is
+// one the controller's offset would swallow on the inside of a bend
+// (LinuxCNC stops: "Straight feed in concave corner cannot be reached by the
+// tool without gouging"). The greedy chords of a piece, t_0 < ... < t_n,
+// with the last one a fraction f of a full one, are spread over the piece
+// as n chords of (n - 1 + f) / n greedy chords each (or n + 1); each is
+// proven as the flattener proves its own (chord_deviation() plus the
+// rounding of its ends), and a piece where that fails keeps its greedy
+// chords. Returns the polyline; `bound` gets its proven deviation.
+std::vector<Vec3> even_chords(std::span<const Bezier> pieces, double tol, int dec, double& bound) {
+  std::vector<Vec3> out;
+  bound = 0;
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const Bezier& b = pieces[k];
+    std::vector<double> ts;
+    std::vector<Vec3> greedy;
+    const double gb = flatten_pieces(std::span<const Bezier>(&b, 1), FlattenOptions{tol, dec}, [&](const FlatVertex& v) {
+      ts.push_back(v.t);
+      greedy.push_back(v.point);
+    });
+    ts.front() = 0;
+    ts.back() = 1;
+    const size_t n = ts.size() - 1;
+    std::vector<Vec3> chosen = greedy;
+    double chosen_bound = gb;
+    if (n >= 2) {
+      const double f = std::clamp(std::sqrt(chord_deviation(b, ts[n - 1], 1) / tol), 0.05, 1.0);
+      const double total = static_cast<double>(n - 1) + f;
+      auto at = [&](double x) {  // the parameter at x greedy chords from the start
+        const size_t j = static_cast<size_t>(std::floor(x));
+        if (j >= n - 1) return ts[n - 1] + std::min(1.0, (x - static_cast<double>(n - 1)) / f) * (1 - ts[n - 1]);
+        return ts[j] + (x - static_cast<double>(j)) * (ts[j + 1] - ts[j]);
+      };
+      for (size_t m = n; m <= n + 1; ++m) {
+        std::vector<double> s(m + 1);
+        for (size_t i = 0; i <= m; ++i) s[i] = i == m ? 1.0 : at(total * static_cast<double>(i) / static_cast<double>(m));
+        std::vector<Vec3> exact(m + 1), printed(m + 1);
+        for (size_t i = 0; i <= m; ++i) {
+          exact[i] = i == 0 ? b.front() : i == m ? b.back() : evaluate(b, s[i]);
+          printed[i] = dec < 0 ? exact[i] : quantize(exact[i], dec);
+        }
+        double worst = 0;
+        bool ok = true;
+        for (size_t i = 0; i < m && ok; ++i) {
+          const double moved = std::max(dist(printed[i], exact[i]), dist(printed[i + 1], exact[i + 1]));
+          const double dev = chord_deviation(b, s[i], s[i + 1], tol - moved) + moved;
+          ok = s[i + 1] > s[i] && dev <= tol;
+          worst = std::max(worst, dev);
+        }
+        if (ok) {
+          chosen = printed;
+          chosen.front() = greedy.front();  // the piece's ends as the flattener prints them
+          chosen.back() = greedy.back();
+          chosen_bound = worst;
+          break;
+        }
+      }
+    }
+    out.insert(out.end(), chosen.begin() + (out.empty() ? 0 : 1), chosen.end());
+    bound = std::max(bound, chosen_bound);
+  }
+  return out;
+}
+
 std::string where(const Vec3& p) { return "(" + fmt_num(std::round(p.x * 1000) / 1000) + ", " + fmt_num(std::round(p.y * 1000) / 1000) + ")"; }
 
 }  // namespace
@@ -145,12 +245,13 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
     const bool here = (top == "side" && own.side) || (top == "tool_diameter" && own.tool_diameter) ||
                       (top == "stock_to_leave" && own.stock_to_leave) || (top == "step_down" && own.step_down) ||
                       (top == "tabs" && own.tabs) || (top == "compensation" && own.controller_compensation) ||
-                      (top == "tolerance_side" && own.tolerance_side) || (top == "lead" && own.lead);
+                      (top == "tolerance_side" && own.tolerance_side) || (top == "lead" && own.lead) || (top == "tool" && own.tool);
     const bool in_job = !here && ((top == "side" && job.params.side) || (top == "tool_diameter" && job.params.tool_diameter) ||
                                   (top == "stock_to_leave" && job.params.stock_to_leave) ||
                                   (top == "step_down" && job.params.step_down) || (top == "tabs" && job.params.tabs) ||
                                   (top == "compensation" && job.params.controller_compensation) ||
-                                  (top == "tolerance_side" && job.params.tolerance_side));
+                                  (top == "tolerance_side" && job.params.tolerance_side) || (top == "lead" && job.params.lead) ||
+                                  (top == "tool" && job.params.tool));
     throw InputError(errc::job_cut, Place::in_json(job.source, (in_job ? std::string("job") : ent.json_path()) + "." + key),
                      (in_job ? "for entity " + ent.label() + ": " : std::string()) + why);
   };
@@ -158,9 +259,25 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   if (g.dim != 2)
     fail("side", "cutting a part needs a curve in the XY plane; this one is 3D: remove the part-cutting keys (side, "
                  "step_down, lead, tabs, ...) or give 2D points");
-  if (cp.controller_compensation)
-    fail("compensation", std::string("compensation \"controller\" (G41/G42) is not written by this version of bezcam; ") +
-                             "use \"cam\" (the default): bezcam offsets the path itself, with a proven bound");
+  const bool controller = cp.controller_compensation;
+  if (controller) {
+    // One diameter per D register: the controller reads it there.
+    for (const Move& mv : p.moves)
+      if (const auto* cc = std::get_if<CompensationMove>(&mv.what))
+        if (cc->side != 0 && cc->d == cp.tool && cp.tool_diameter && cc->radius != *cp.tool_diameter / 2)
+          fail("tool", "tool " + std::to_string(cp.tool) + " is already compensated with a diameter of " +
+                           fmt_num(2 * cc->radius) + " (D" + std::to_string(cp.tool) + "), this entity asks " +
+                           fmt_num(*cp.tool_diameter) + ": give it its own tool number");
+    if (!c.machine.cutter_compensation)
+      fail("compensation", "machine \"" + c.machine.name + "\" has no cutter radius compensation (G41/G42): use \"cam\" "
+                           "(the default): bezcam offsets the path itself");
+    if (p.output == OutputMode::nurbs)
+      fail("compensation", std::string("compensation \"controller\" cannot be written as NURBS blocks: ") +
+                               (c.machine.nurbs == NurbsDialect::linuxcnc
+                                    ? "LinuxCNC does not compensate G5.2 blocks (it cuts them on the programmed curve)"
+                                    : "Fanuc refuses G06.2 in G41/G42 (alarm PS1006)") +
+                               "; use output \"arcs\" or \"lines\", or compensation \"cam\" for exact NURBS blocks of the offset");
+  }
   const double scale = std::max(1.0, control_magnitude(g.pieces));
   const bool closed = g.closed || dist(g.pieces.front().front(), g.pieces.back().back()) <= 1e-9 * scale;
   const double tol = c.tolerance;
@@ -186,6 +303,9 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       break;
     }
   }
+  if (controller && cp.side == CutSide::on && cp.tolerance_side != ToleranceSide::left && cp.tolerance_side != ToleranceSide::right)
+    fail("compensation", "compensation \"controller\" needs a side of the curve for the tool (inside, outside, left or "
+                         "right); with side \"on\" there is nothing to compensate");
   double radius = 0;
   if (side != 0) {
     if (!cp.tool_diameter)
@@ -234,26 +354,42 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   const double offset_by = radius + dev_side * 0.5 * tol;  // the band's middle
   const int waste = side != 0 ? side : 1;
 
+  // With controller compensation the program carries the part's edge, the
+  // controller adds the tool's radius (its D register); the program's path
+  // is offset only by the stock to leave and the band's middle.
+  const double tool_r = controller ? *cp.tool_diameter / 2 : 0;
+  const double program_by = offset_by - tool_r;
   std::vector<std::vector<Bezier>> chains;
   std::vector<bool> chain_closed;
   double fit_bound = 0;
-  if (side == 0) {
+  if (side == 0 || (controller && std::abs(program_by) <= 1e-12 * scale)) {
     chains.push_back(part);
     chain_closed.push_back(closed);
-  } else {
+  }
+  if (side != 0) {
     const OffsetResult o = offset_curve(part, closed, {offset_by, side, fit});
     if (o.chains.empty())
       fail("tool_diameter", "a tool of diameter " + fmt_num(cp.tool_diameter.value_or(0)) + " does not fit: no point is " +
                                 fmt_num(offset_by) + " from the whole curve on the side asked (" +
                                 (cp.side == CutSide::inside ? "inside" : cp.side == CutSide::outside ? "outside" : side > 0 ? "left" : "right") +
                                 "); use a smaller tool");
-    fit_bound = o.bound;
-    for (size_t k = 0; k < o.chains.size(); ++k) {
-      std::vector<ArcSeg> chain = o.chains[k];
+    if (controller && o.chains.size() > 1)
+      fail("compensation", "the tool of diameter " + fmt_num(*cp.tool_diameter) + " cannot follow the whole curve in one "
+                           "path (its offset falls apart into " + std::to_string(o.chains.size()) +
+                           " pieces where the part narrows): a controller's compensation cannot cut that; use \"cam\"");
+    // The program's own path under controller compensation: the stock and
+    // the band's shift only (the part itself when both are zero).
+    OffsetResult prog;
+    if (controller && chains.empty())
+      prog = offset_curve(part, closed, {std::abs(program_by), program_by > 0 ? side : -side, fit});
+    const OffsetResult& used = controller ? prog : o;
+    fit_bound = controller ? (chains.empty() ? prog.bound : 0.0) : o.bound;
+    for (size_t k = 0; k < used.chains.size(); ++k) {
+      std::vector<ArcSeg> chain = used.chains[k];
       // A closed path with leads starts in the middle of its longest
       // stretch: the lead (a quarter arc back along the path) needs room,
       // which a corner of a pocket does not give.
-      if (cp.lead && o.closed[k]) {
+      if ((cp.lead || controller) && used.closed[k]) {
         size_t longest = 0;
         for (size_t i = 1; i < chain.size(); ++i)
           if (chain[i].length() > chain[longest].length()) longest = i;
@@ -265,8 +401,11 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
         chain = std::move(turned);
       }
       chains.push_back(bezier_pieces(chain));
-      chain_closed.push_back(o.closed[k]);
+      chain_closed.push_back(used.closed[k]);
     }
+    if (controller && chains.size() != 1)
+      fail("compensation", "the path for the controller to compensate falls apart into " + std::to_string(chains.size()) +
+                           " pieces; use \"cam\"");
     // Material the tool cannot reach, said with where.
     double total = 0;
     std::string places;
@@ -285,6 +424,21 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       p.moves.push_back({Comment{"material left: " + places + (shown > 3 ? ", ..." : "")}, entity});
       r.left = o.left;
     }
+  }
+  // The part's own closed edge under compensation starts in the middle of
+  // its longest piece (not at a corner, which the tool must roll round).
+  if (controller && chain_closed.front() && std::abs(program_by) <= 1e-12 * scale) {
+    auto& ch = chains.front();
+    size_t longest = 0;
+    for (size_t i = 1; i < ch.size(); ++i)
+      if (length(ch[i]) > length(ch[longest])) longest = i;
+    auto [a, b] = split(ch[longest], 0.5);
+    a.points.back() = b.points.front();
+    std::vector<Bezier> turned{b};
+    for (size_t i = 1; i < ch.size(); ++i) turned.push_back(ch[(longest + i) % ch.size()]);
+    turned.push_back(a);
+    turned.back().points.front() = turned[turned.size() - 2].points.back();
+    ch = std::move(turned);
   }
   const double out_tol = tol - fit_bound - (dev_side == 0 ? 0.0 : 0.5 * tol);
   if (out_tol <= 0.05 * tol) throw std::logic_error("offset fit used up the tolerance");
@@ -324,7 +478,15 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
     EntityReport part_r;
     part_r.label = r.label;
     switch (p.output) {
-      case OutputMode::lines: emit_lines(sub, part_r); break;
+      case OutputMode::lines:
+        if (controller) {
+          double bound = 0;
+          auto poly = even_chords(sub.entity.curve.pieces, budget, dec, bound);
+          emit_polyline(sub, part_r, std::move(poly), bound);
+        } else {
+          emit_lines(sub, part_r);
+        }
+        break;
       case OutputMode::arcs: emit_arcs(sub, part_r); break;
       case OutputMode::nurbs:
         // An offset is lines and arcs: LinuxCNC's exact form of an arc is
@@ -345,9 +507,21 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
     p.moves.push_back({l, entity});
   };
 
+  // The lead: under controller compensation there is always one (the
+  // controller enters and leaves compensation on it), by default a quarter
+  // arc of the tool's radius after a line of its diameter; its line must be
+  // longer than the tool's radius (LinuxCNC refuses a shorter entry move).
+  std::optional<Lead> lead_used = cp.lead;
+  if (controller && !lead_used) lead_used = Lead{tool_r, 2 * tool_r};
+  if (controller && !(lead_used->length > tool_r))
+    fail("lead.length", "compensation \"controller\" enters and leaves on the lead's line, which must be longer than the "
+                        "tool's radius " + fmt_num(tool_r) + " (it is " + fmt_num(lead_used->length) + "): make it longer");
   r.blocks = 0;
   r.bound = 0;
   double out_bound = 0;
+  // Under controller compensation the tool path is the controller's: its
+  // reading on bezcam's model of it (cutter_comp.hpp) joins the bound.
+  double comp_reading = 0;
   // The proven bound, known once every stretch is cut; the deferred
   // measurements read it.
   auto final_bound = std::make_shared<double>(0);
@@ -373,16 +547,25 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
     const Vec3 s = chain.front().front(), e = chain.back().back();
     const Vec3 ts = unit_tangent(chain.front(), 0), te = unit_tangent(chain.back(), 1);
     std::vector<Bezier> in, out;
-    if (cp.lead) {
-      in = lead_in(s, ts, waste, *cp.lead);
-      out = lead_out(e, te, waste, *cp.lead);
+    if (lead_used) {
+      // Under compensation the programmed lead arc is the tool's radius
+      // larger: the tool's centre runs on the arc of the radius asked.
+      const Lead programmed{lead_used->radius + tool_r, lead_used->length};
+      in = lead_in(s, ts, waste, programmed);
+      out = lead_out(e, te, waste, programmed);
       // A lead that reaches into the part (a pocket too small for it, a
       // part too near) would cut it: said, with how near it comes.
       if (side != 0) {
         for (const auto* lead : {&in, &out}) {
           const auto pts = flatten(*lead, {0.01 * tol, -1}).points;
           const std::vector<std::vector<Bezier>> curves{part};
-          const double near = measure_offset(curves, pts, radius, 0, tol, 0.05 * tol).min_distance;
+          double near = measure_offset(curves, pts, radius, 0, tol, 0.05 * tol).min_distance + tool_r;
+          // Under compensation the lead line's outer end is where the tool
+          // centre stands before G41 and after G40: not offset.
+          if (controller) {
+            const Vec3 outer = lead == &in ? lead->front().front() : lead->back().back();
+            near = std::min(near, measure_offset(curves, std::vector<Vec3>{outer, outer}, radius, 0, tol, 0.05 * tol).min_distance);
+          }
           if (near < radius - tol)
             p.warnings.push_back(ent.label() + ": the lead-" + (lead == &in ? "in" : "out") +
                                  (near < 1e-3 ? std::string(" crosses the curve") : " comes within " + fmt_num(std::round(near * 1000) / 1000) + " of the curve") +
@@ -398,6 +581,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       measure_pass = d == 0 || d + 1 == depths.size();
       const Vec3 entry = quantize(in.empty() ? s : in.front().front(), dec);
       approach(p, entity, {entry.x, entry.y, zq}, safe, clear, cp.plunge_feed, ms);
+      if (controller) p.moves.push_back({CompensationMove{side, cp.tool, tool_r}, entity});
       if (!in.empty()) cut(in, z, 0.5 * tol);
       const size_t first_move = p.moves.size();
       const bool tabbed = cp.tabs && z < tab_top;
@@ -415,10 +599,39 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
         const Vec3 at = quantize(e, dec);
         line_to({at.x, at.y, zq}, cp.plunge_feed);
       }
+      // Whether the controller can compensate the path (a corner or a bend
+      // too tight for the tool stops it), asked of the model before the
+      // program is written.
+      if (controller && d == 0) {
+        std::vector<Vec3> path;
+        try {
+          path = compensated_path(p.moves, first_move, p.moves.size(), quantize(s, dec), ts, te, side, tool_r, 0.01 * tol);
+        } catch (const CompensationError& err) {
+          fail("compensation", std::string("the controller cannot compensate this path: ") + err.what() +
+                                   "; use compensation \"cam\" (bezcam offsets the path, trimming what the tool cannot reach)");
+        }
+        // Where the controller's tool goes must be within the tolerance of
+        // the true offset too: G01 moves that turn by less than 0.05 rad
+        // are joined without a corner (LinuxCNC), which can stray further.
+        const std::vector<std::vector<Bezier>> curves{part};
+        const OffsetReading m = measure_offset(curves, path, radius, side, tol, 0.01 * tol);
+        const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
+        const double stray = std::max({lo - m.min_distance, m.max_distance - hi, m.coverage - tol});
+        comp_reading = std::max({comp_reading, radius - m.min_distance, m.max_distance - radius, m.coverage});
+        if (stray > 0.02 * tol)
+          fail("compensation", "the controller's compensation of these " + std::string(to_string(p.output)) +
+                                   " strays " + fmt_num(std::round(stray * 1e5) / 1e5) + " " + to_string(job.units) +
+                                   " beyond the tolerance (its tool path lies " + fmt_num(std::round(m.min_distance * 1e5) / 1e5) +
+                                   " to " + fmt_num(std::round(m.max_distance * 1e5) / 1e5) + " from the part, reaching the offset within " +
+                                   fmt_num(std::round(m.coverage * 1e5) / 1e5) +
+                                   "; a controller joins G01 moves that turn by less than 0.05 rad without a corner): use "
+                                   "output \"arcs\" (arcs are compensated exactly) or compensation \"cam\"");
+      }
       // The last pass's path, measured against the part on its own.
       if (c.measure && side != 0 && d + 1 == depths.size()) {
         const Vec3 from = quantize(s, dec);
-        auto path = dense_path(p.moves, first_move, p.moves.size(), from, 0.001 * tol);
+        auto path = controller ? compensated_path(p.moves, first_move, p.moves.size(), from, ts, te, side, tool_r, 0.001 * tol)
+                               : dense_path(p.moves, first_move, p.moves.size(), from, 0.001 * tol);
         std::vector<std::vector<Bezier>> curves{part};
         EntityReport probe;
         c.measure_with(probe, [curves = std::move(curves), path = std::move(path), radius, side, tol, dev_side,
@@ -446,7 +659,15 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
         });
         r.measured = std::max(r.measured, probe.measured);
       }
-      if (!out.empty()) cut(out, z, 0.5 * tol);
+      if (controller) {
+        // The lead-out's arc compensated, G40, then its line: the exit move.
+        cut(std::vector<Bezier>(out.begin(), out.end() - 1), z, 0.5 * tol);
+        p.moves.push_back({CompensationMove{0, cp.tool, 0}, entity});
+        const Vec3 to = quantize(out.back().back(), dec);
+        line_to({to.x, to.y, zq}, cp.feed);
+      } else if (!out.empty()) {
+        cut(out, z, 0.5 * tol);
+      }
       const Vec3 last = motion_of(p.moves.back())->to;
       RapidMove up;
       up.to = {last.x, last.y, safe};
@@ -455,7 +676,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       ms.pos_known = true;
     }
   }
-  r.bound = fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol);
+  r.bound = std::max(fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol), comp_reading);
   *final_bound = r.bound;
   r.offset = radius;
   r.tool_width = cp.tool_diameter.value_or(0);

@@ -166,10 +166,15 @@ Vec3 cut_point(const CutContext& c, const Vec3& p) {
 }
 
 void emit_lines(CutContext& c, EntityReport& r) {
-  const auto& pieces = c.entity.curve.pieces;
   FlattenOptions fo{c.tolerance, c.decimals};
   std::vector<Vec3> poly;
-  r.bound = flatten_pieces(pieces, fo, [&](const FlatVertex& v) { poly.push_back(v.point); });
+  const double bound = flatten_pieces(c.entity.curve.pieces, fo, [&](const FlatVertex& v) { poly.push_back(v.point); });
+  emit_polyline(c, r, std::move(poly), bound);
+}
+
+void emit_polyline(CutContext& c, EntityReport& r, std::vector<Vec3> poly, double bound) {
+  const auto& pieces = c.entity.curve.pieces;
+  r.bound = bound;
   // The first vertex is where the plunge put the tool.
   for (size_t i = 1; i < poly.size(); ++i) {
     LineMove l;
@@ -221,6 +226,14 @@ void approach(Program& p, int entity, const Vec3& start, double safe, double cle
 namespace {
 Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
 }  // namespace
+
+MachineProfile with_compensation_registers(const MachineProfile& m, const Program& p) {
+  MachineProfile out = m;
+  for (const Move& mv : p.moves)
+    if (const auto* cc = std::get_if<CompensationMove>(&mv.what))
+      if (cc->side != 0) out.tool_diameters_mm[cc->d] = 2 * cc->radius * mm_per_unit(p.units);
+  return out;
+}
 
 Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
   try {

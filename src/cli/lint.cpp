@@ -18,6 +18,7 @@ namespace {
 struct Options {
   std::string file, machine = "generic";
   bool quiet = false;
+  std::vector<std::string> tool_diameters;
 } o;
 
 CLI::App* add(CLI::App& app) {
@@ -26,12 +27,14 @@ CLI::App* add(CLI::App& app) {
                                        "limits, feeds. Exit 0 clean, 2 findings, 3 unreadable file.");
   s->add_option("FILE", o.file, "G-code program")->required();
   s->add_option("--machine", o.machine, "machine profile: a name in machines/ or a .json file (default: generic)");
+  add_tool_diameter_option(s, o.tool_diameters);
   s->add_flag("-q,--quiet", o.quiet, "print the findings only, no summary");
   return s;
 }
 
 int run() {
-  const MachineProfile m = load_profile_option(o.machine);
+  MachineProfile m = load_profile_option(o.machine);
+  apply_tool_diameters(m, o.tool_diameters);
   if (std::filesystem::is_directory(o.file)) throw IoError(errc::io_read, Place::at_file(o.file), "is a directory, not a G-code file");
   const auto findings = lint_gcode(read_bounded(o.file, kMaxProgramBytes, "G-code file"), m);
   for (const auto& f : findings) std::cout << o.file << ":" << f.line << ": " << f.message << " [" << f.id << "]\n";

@@ -37,6 +37,7 @@ struct Options {
   ConversionOptions conv;
   double width = 1200;
   bool no_control = false, deviation = false, feed = false, quiet = false;
+  std::vector<std::string> tool_diameters;  // --tool-diameter D=MM
 } o;
 CLI::App* sub = nullptr;
 
@@ -48,6 +49,7 @@ CLI::App* add(CLI::App& app) {
                 "draw this G-code program instead of building one (with JOB: against the job's curves)");
   s->add_option("-o,--output-file", o.out, "SVG file to write; written whole or not at all")->required();
   add_conversion_options(s, o.conv, "cutting moves, as for convert: lines, arcs or nurbs (not with --program)");
+  add_tool_diameter_option(s, o.tool_diameters);
   s->add_flag("--no-control", o.no_control, "leave out control polygons and control points");
   s->add_flag("--deviation", o.deviation,
               "colour each cutting block by its measured deviation from the true curve (0 to the tolerance)");
@@ -96,9 +98,11 @@ int run_program() {
   // The machine, when named, is checked by lint (its findings are shown,
   // not fatal: seeing the path helps to fix it) and gives the rapid rate.
   const bool named = !o.conv.machine.empty() || (job && job->machine);
-  const MachineProfile m = job ? resolve_profile(*job, o.conv.machine) : load_profile_option(o.conv.machine.empty() ? "generic" : o.conv.machine);
+  MachineProfile m = job ? resolve_profile(*job, o.conv.machine) : load_profile_option(o.conv.machine.empty() ? "generic" : o.conv.machine);
+  apply_tool_diameters(m, o.tool_diameters);
   Progress progress("preview", "bytes", text.size(), progress_config(o.quiet));
   GcodeInterpreter reader;
+  reader.set_tool_diameters_mm(m.tool_diameters_mm);
   PreviewInput in;
   int line_no = 0;
   size_t pos = 0;

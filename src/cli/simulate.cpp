@@ -58,6 +58,7 @@ struct Options {
   std::vector<std::string> faults;
   std::uint32_t session_base = 0;
   bool quiet = false;
+  std::vector<std::string> tool_diameters;  // --tool-diameter D=MM
 } o;
 ResumeOption resume;  // --from-line (resume_option.hpp)
 
@@ -71,6 +72,7 @@ CLI::App* add(CLI::App& app) {
   resume.add(s);
   l->excludes("--from-line");
   s->add_option("--machine", o.machine, "machine profile: travel limits, maximum feed and motion model (default generic)");
+  add_tool_diameter_option(s, o.tool_diameters);
   auto* rep = s->add_option("--report", o.report,
                             "with --program: plan the motion on the machine's motion model and write its report "
                             "(cycle time, achieved feed, starved blocks, path deviation, per block) as JSON");
@@ -200,6 +202,7 @@ int run() {
     throw InputError(errc::sim_usage, "simulate", "give --listen HOST:PORT or --program FILE.nc");
   ControllerConfig cfg;
   cfg.profile = load_profile_option(o.machine);
+  apply_tool_diameters(cfg.profile, o.tool_diameters);
   cfg.buffer_bytes = o.buffer;
   cfg.session_timeout = std::chrono::milliseconds(static_cast<long long>(o.session_timeout * 1000));
   cfg.exec_delay = std::chrono::microseconds(static_cast<long long>(o.exec_delay_ms * 1000));

@@ -104,6 +104,10 @@ struct GcodeInterpreter::Impl {
   void check_feed_limit(double feed);
   MotionBlock block(BlockKind k, const Vec3& to) const;
   void commit_move(const MotionBlock& b, unsigned axes);
+  // Hands a programmed block to cutter compensation; its output to `out`.
+  void emit(const MotionBlock& b);
+  void emit_all(std::vector<MotionBlock> blocks);
+  void cutter_comp(int code);
 
   // ---- motions (reader.cpp)
   void linear(bool rapid);

@@ -48,7 +48,8 @@ void GcodeInterpreter::Impl::run_modal() {
   // One code per modal group.
   std::array<std::string, kModalGroups> seen_g{};
   int motion = -999;
-  bool dwell = false, home = false, machine_coords = false, length_comp = false, blend = false;
+  bool dwell = false, home = false, machine_coords = false, length_comp = false, blend = false, comp_d = false;
+  int comp = 0;  // G40 400, G41 410, G42 420
   std::string non_modal;  // RS274/NGC: one code of group 0 per line
   for (const auto& [c, t] : ln.g) {
     const GGroup grp = g_group(c);
@@ -71,9 +72,7 @@ void GcodeInterpreter::Impl::run_modal() {
       case 930: case 950:
         fail(errc::gcode_unsupported, t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
                                 " is not supported by this reader: use G94 (units per minute)");
-      case 410: case 420:
-        fail(errc::gcode_unsupported, t + " (cutter radius compensation) is not supported by this reader: the program must "
-                                "describe the tool centre");
+      case 410: case 420: comp_d = true; break;
       case 430: length_comp = true; break;
       case 40: dwell = true; break;
       case 640: blend = true; break;
@@ -81,6 +80,7 @@ void GcodeInterpreter::Impl::run_modal() {
       case 530: machine_coords = true; break;
       default: break;
     }
+    if (grp == GGroup::cutter_comp) comp = c;
     if (grp == GGroup::motion) {
       motion = c;
       word = t;
@@ -118,6 +118,7 @@ void GcodeInterpreter::Impl::run_modal() {
   std::string extra = dwell ? "P" : blend ? "PQ" : "";
   if (home) extra += "XYZ";
   if (length_comp) extra += "H";
+  if (comp_d) extra += "D";
   check_letters(active, extra, motion != -999);
 
   // Execution order (RS274/NGC): F, S, T, M06, spindle, coolant, dwell,
@@ -198,10 +199,17 @@ void GcodeInterpreter::Impl::run_modal() {
       st.tool_length_h = 0;
     }
   }
+  // Cutter compensation before motion (RS274/NGC's order).
+  if (comp) cutter_comp(comp);
+  if ((home || machine_coords) && mo.comp.active())
+    fail(errc::gcode_cutter_comp, std::string(home ? "G28" : "G53") + " cannot be used with cutter radius compensation on: cancel it with G40 first");
   if (home) go_home();
   if (active != -999) motion_line(active, motion != -999);
   for (const auto& [c, t] : ln.m)
     if (c == 2 || c == 30) {
+      // The end of the program turns compensation off (LinuxCNC, Fanuc).
+      emit_all(mo.comp.finish());
+      st.cutter_comp = 40;
       st.program_end = true;
       mo.end_line = line;
     }

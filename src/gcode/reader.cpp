@@ -134,7 +134,64 @@ void GcodeInterpreter::Impl::commit_move(const MotionBlock& b, unsigned axes) {
   st.pos = b.to;
   st.known_axes |= axes;
   mo.moved = true;
-  out.push_back(b);
+  emit(b);
+}
+
+void GcodeInterpreter::Impl::emit_all(std::vector<MotionBlock> blocks) {
+  for (auto& b : blocks) out.push_back(std::move(b));
+}
+
+void GcodeInterpreter::Impl::emit(const MotionBlock& b) {
+  try {
+    emit_all(mo.comp.push(b));
+  } catch (const CompensationError& e) {
+    fail(errc::gcode_cutter_comp, e.what());
+  }
+}
+
+// G40, G41 / G42 with D (default: the tool in the spindle, as LinuxCNC).
+void GcodeInterpreter::Impl::cutter_comp(int code) {
+  if (code == 400) {
+    emit_all(mo.comp.off());
+    st.cutter_comp = 40;
+    st.cutter_comp_d = 0;
+    st.cutter_comp_radius = 0;
+    return;
+  }
+  const std::string g = code == 410 ? "G41" : "G42";
+  if (self.profile_ && !self.profile_->cutter_compensation)
+    fail(errc::gcode_cutter_comp, g + " (cutter radius compensation): machine \"" + self.profile_->name +
+                                      "\" has none; the program must describe the tool centre");
+  if (st.plane != 17) fail(errc::gcode_cutter_comp, g + " compensates in the XY plane (G17) only");
+  int d = st.tool;
+  if (ln.has('D')) {
+    if (val('D') < 0 || val('D') != std::floor(val('D')) || val('D') > 99999)
+      fail(errc::gcode_cutter_comp, "expected a whole offset register D from 0 to 99999, found " + txt('D'));
+    d = static_cast<int>(val('D'));
+  }
+  double radius = 0;
+  if (d != 0) {
+    const auto& table = self.tool_diameters_mm_;
+    const auto it = table.find(d);
+    if (it == table.end())
+      fail(errc::gcode_cutter_comp, g + " D" + std::to_string(d) + ": the diameter register D" + std::to_string(d) +
+                                        " is not set" + machine() +
+                                        ": give its diameter in the machine profile's tool_diameters_mm, or on the "
+                                        "command line");
+    radius = from_mm(it->second / 2);
+  }
+  if (radius > 0) {
+    try {
+      mo.comp.on(code == 410 ? 1 : -1, radius);
+    } catch (const CompensationError& e) {
+      fail(errc::gcode_cutter_comp, e.what());
+    }
+  } else if (mo.comp.active()) {
+    fail(errc::gcode_cutter_comp, g + " while cutter compensation is already on: cancel it with G40 first");
+  }
+  st.cutter_comp = code / 10;
+  st.cutter_comp_d = d;
+  st.cutter_comp_radius = radius;
 }
 
 
@@ -177,7 +234,7 @@ void GcodeInterpreter::Impl::finish_curve_block(MotionBlock& b) {
   st.pos = b.to;
   st.known_axes = 7;
   mo.moved = true;
-  out.push_back(b);
+  emit(b);
 }
 
 void GcodeInterpreter::Impl::clear_block() {
@@ -332,7 +389,9 @@ void GcodeInterpreter::Impl::arc(bool cw) {
 
 // ---------------------------------------------------------------------------
 
-GcodeInterpreter::GcodeInterpreter(const MachineProfile* profile) : profile_(profile) {}
+GcodeInterpreter::GcodeInterpreter(const MachineProfile* profile) : profile_(profile) {
+  if (profile) tool_diameters_mm_ = profile->tool_diameters_mm;
+}
 
 std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int line_no) {
   more_.last_line = line_no;  // bookkeeping for finish(), even if the line is refused
@@ -392,7 +451,7 @@ std::vector<MotionBlock> GcodeInterpreter::finish() {
                     ": close it with G5.3";
     throw InputError(errc::gcode_nurbs_open, Place::at_line(std::max(more_.last_line, 1)), msg);
   }
-  return {};
+  return more_.comp.finish();  // the move compensation still holds
 }
 
 std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile* profile) {
@@ -408,7 +467,8 @@ std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile*
     out.insert(out.end(), std::make_move_iterator(blocks.begin()), std::make_move_iterator(blocks.end()));
     pos = end + 1;
   }
-  in.finish();
+  auto held = in.finish();
+  out.insert(out.end(), std::make_move_iterator(held.begin()), std::make_move_iterator(held.end()));
   return out;
 }
 

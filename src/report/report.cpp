@@ -47,7 +47,8 @@ ProgramReport make_report(const Program& p, const MachineProfile& m, std::string
   } else if (m.motion) {
     // The printed program, read back as the controller reads it; without
     // text, the program's moves.
-    const Timeline tl = gcode.empty() ? program_timeline(p) : read_timeline(gcode, &m);
+    const MachineProfile set_up = with_compensation_registers(m, p);
+    const Timeline tl = gcode.empty() ? program_timeline(p) : read_timeline(gcode, &set_up);
     r.planned = planned_summary(plan_motion(tl, *m.motion));
   }
   r.gcode_bytes = gcode.size();

@@ -310,9 +310,9 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"G38.2 Z-5\n", "line 3", "gcode.unsupported", "G-code G38.2 is not supported by this reader"},
         Bad{"M98\n", "line 3", "gcode.unsupported", "M-code M98 is not supported by this reader"},
         Bad{"M03 M05\n", "line 3", "gcode.modal-group", "M03 and M05 are in the same modal group: give one"},
-        Bad{"G41 G01 X1\n", "line 3", "gcode.unsupported",
-            "G41 (cutter radius compensation) is not supported by this reader: the program must describe the tool "
-            "centre"},
+        Bad{"G41 D3 G01 X1\n", "line 3", "gcode.cutter-comp",
+            "G41 D3: the diameter register D3 is not set: give its diameter in the machine profile's "
+            "tool_diameters_mm, or on the command line"},
         Bad{"G01 X1\nG20\n", "line 4", "gcode.units-change",
             "G20 changes the units after the first move: positions would change meaning; set the units once, before "
             "any move"},

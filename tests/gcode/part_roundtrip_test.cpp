@@ -176,5 +176,66 @@ TEST(PartRoundTrip, EveryPartSampleInEveryModeKeepsItsBandFromThePart) {
   }
 }
 
+// Controller compensation (G41/G42 D-): the program carries the part's
+// edge; the reader, given the diameters the D registers hold, makes of it
+// the tool centre's path as the controller does (cutter_comp.hpp, the model
+// LinuxcncRs274 checks against LinuxCNC's interpreter). That path, measured
+// against the part by the independent offset measurement, never comes
+// nearer than r (the sample leaves its tolerance on the waste side) and
+// reaches every point of the true offset within the tolerance. The leads
+// (always there: compensation is entered and left on them) go away from the
+// part, so the farthest reading is not a band here.
+TEST(PartRoundTrip, ControllerCompensationPutsTheToolCentreOnTheOffset) {
+  const fs::path file = BEZCAM_SOURCE_DIR "/samples/controller-comp/flange-g41.json";
+  const Job job = load_job(file);
+  for (const char* name : {"generic", "fanuc", "linuxcnc"}) {
+    const MachineProfile m = load_machine_profile(name);
+    SCOPED_TRACE(std::string(name) + ", --output arcs");
+    ConvertOptions opt;
+    opt.output = OutputMode::arcs;
+    const ConvertResult r = convert(job, m, opt);
+    EXPECT_NE(r.gcode.find("G41 D1"), std::string::npos);
+    EXPECT_NE(r.gcode.find("G41 D2"), std::string::npos);
+    // Without the registers the reader refuses, naming the line.
+    try {
+      (void)read_gcode(r.gcode, &m);
+      ADD_FAILURE() << "read without the D registers";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.id(), "gcode.cutter-comp");
+    }
+    MachineProfile set_up = m;
+    set_up.tool_diameters_mm = {{1, 6.0}, {2, 3.0}};
+    const auto read = read_gcode(r.gcode, &set_up);
+    const auto runs = cutting_runs(read);
+    size_t at = 0;
+    const double tol = r.program.tolerance;
+    for (const auto& rep : r.program.entities) {
+      const Entity& e = job.entities[static_cast<size_t>(rep.entity)];
+      at += passes(job, e, m);
+      ASSERT_LE(at, runs.size());
+      const auto& run = runs[at - 1];
+      const Expect x = expected(job, e, m);
+      ASSERT_TRUE(x.waste);
+      const std::vector<std::vector<Bezier>> curves{e.curve.pieces};
+      const std::vector<MotionBlock> moves(run.begin() + 1, run.end());  // not the plunge
+      const OffsetReading o = measure_offset(curves, xy_path(moves, 0.02), x.r, x.side, tol, 5e-3 * tol);
+      const double res = 1e-2 * tol;
+      EXPECT_GE(o.min_distance, x.r - res) << e.label();
+      EXPECT_LE(o.coverage, tol + res) << e.label();
+    }
+    // NURBS blocks are not compensated by these controllers: refused.
+    if (m.nurbs != NurbsDialect::none) {
+      opt.output = OutputMode::nurbs;
+      try {
+        (void)convert(job, m, opt);
+        ADD_FAILURE() << "nurbs output under controller compensation";
+      } catch (const InputError& e) {
+        EXPECT_EQ(e.id(), "job.cut");
+        EXPECT_NE(std::string(e.what()).find("job.compensation"), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bezcam

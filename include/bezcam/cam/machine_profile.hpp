@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <map>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -92,6 +93,13 @@ struct MachineProfile {
   /// (Fanuc `O{program}`, printed with at least 4 digits).
   long program_number = 1000;
   bool arcs = true;
+  /// Cutter radius compensation (G41/G42 D-, G40) is available (Grbl: no).
+  bool cutter_compensation = true;
+  /// The controller's tool table as far as compensation needs it: the
+  /// diameter (mm) each D register holds (`tool_diameters_mm`, or
+  /// `--tool-diameter T=D` on the command line). A program that asks for
+  /// G41/G42 with a D not listed is refused by the reader.
+  std::map<int, double> tool_diameters_mm;
   double arc_tolerance_mm = 0.002;  ///< allowed radius mismatch of a printed arc
   NurbsDialect nurbs = NurbsDialect::none;
   std::string nurbs_start_word = "G06.2";

@@ -86,9 +86,19 @@ struct Verbatim {
   std::string text;
 };
 
+/// Cutter radius compensation (cutter_comp.hpp): `G41 D-` (side +1: the
+/// tool on the left of the path), `G42 D-` (-1), or `G40` (0: off). `d` is
+/// the offset register (the tool's number); `radius` what bezcam expects
+/// it to hold, so that a built program is measured where the tool goes.
+struct CompensationMove {
+  int side = 0;
+  int d = 0;
+  double radius = 0;
+};
+
 struct Move {
   std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChangePosition, ToolChange, SpindleMove, Comment, Dwell, CoolantMove, ProgramStop,
-               Verbatim>
+               Verbatim, CompensationMove>
       what;
   int entity = -1;  ///< index of the job entity it cuts, -1 for none
 };

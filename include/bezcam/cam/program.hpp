@@ -88,6 +88,11 @@ struct Program {
 /// plunge, cut and retract, and the final retract. Does not validate.
 Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
 
+/// The profile with the D registers the program's cutter compensation
+/// (G41/G42 D-) expects added to its tool table (tool_diameters_mm): how
+/// bezcam reads back a program it wrote, as the machine set up for it.
+MachineProfile with_compensation_registers(const MachineProfile& m, const Program& p);
+
 /// The effective cutting parameters of an entity (entity > job > profile),
 /// in job units; InputError naming the missing key when one is unset.
 struct CutParams {

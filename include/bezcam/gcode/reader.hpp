@@ -6,12 +6,14 @@
 /// controller and by the preview. Parse, validate, then execute (Grbl's
 /// structure): a line is checked completely before it changes the state.
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "bezcam/cam/cutter_comp.hpp"
 #include "bezcam/cam/machine_profile.hpp"
 #include "bezcam/cam/motion.hpp"
 #include "bezcam/gcode/lint.hpp"  // GcodeFinding, lint_gcode()
@@ -67,6 +69,11 @@ struct MachineState {
   /// infinity for G64 without P (corners as fast as the planner can).
   double path_tolerance = -1;
   int program_stops = 0;       ///< M00 / M01 seen so far (the operator resumes)
+  /// Cutter radius compensation: 41 (G41, tool left), 42 (G42) or 40 (off),
+  /// with its D register and the radius it holds (program units).
+  int cutter_comp = 40;
+  int cutter_comp_d = 0;
+  double cutter_comp_radius = 0;
 };
 
 /// Streaming interpreter: feed it lines in order.
@@ -78,11 +85,13 @@ struct MachineState {
 ///    in parentheses and after `;`, upper- or lower-case words;
 ///  - G00 G01 G02 G03 (G17 only, centre by I/J or radius by R; K refused),
 ///    G04 P dwell, G17, G20/G21 (not changed after the first move), G90,
-///    G94, G40, G43 H- / G49 (tool length compensation, zero offsets),
+///    G94, G40, G41/G42 D- (cutter radius compensation, cutter_comp.hpp: the
+///    blocks are the tool centre's; D's diameter from the profile's
+///    tool_diameters_mm), G43 H- / G49 (tool length compensation, zero offsets),
 ///    G54-G59 (zero work offsets), G28 (rapid through the optional X Y Z
 ///    point to the home position, machine zero), G53 with G00/G01 (machine
 ///    coordinates for that line), G61/G61.1/G64, G80; refused with a
-///    reason: G18/G19, G91 (incremental), G93/G95, G41/G42, anything else;
+///    reason: G18/G19, G91 (incremental), G93/G95, anything else;
 ///  - M00 M01 M02 M30 M03 M04 M05 M06 M07 M08 M09, F, S, T;
 ///  - the Fanuc-style NURBS block: start word G06.2 or G06.3 (with a
 ///    profile: its start word only), `P` rank 2..4 (default 4; the
@@ -117,6 +126,12 @@ class GcodeInterpreter {
   std::vector<MotionBlock> finish();
 
   const MachineState& state() const { return state_; }
+
+  /// The D registers for cutter compensation (diameters in mm), added to
+  /// the profile's tool_diameters_mm (a reader without a profile has none).
+  void set_tool_diameters_mm(const std::map<int, double>& d) {
+    for (const auto& [k, v] : d) tool_diameters_mm_[k] = v;
+  }
 
   /// What the next line depends on besides state(): the multi-line block
   /// it may be inside and the words earlier lines left for it. Used to
@@ -160,9 +175,11 @@ class GcodeInterpreter {
     // Lint-only bookkeeping: findings already reported once.
     bool noted_modes = false, noted_position = false, noted_spindle = false;
     double feed_reported = -1;  // the excessive feed last reported
+    CutterComp comp;            // G41/G42: the tool-centre path, one move behind
   };
 
   const MachineProfile* profile_;
+  std::map<int, double> tool_diameters_mm_;
   MachineState state_;
   More more_;
   // lint_gcode(): recoverable problems are recorded here (and the line goes
