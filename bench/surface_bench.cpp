@@ -5,8 +5,8 @@
 // uniform passes that verify the same way), with the tool of the sample
 // and with the tip on the surface (r = 0); then the time to convert each
 // sample job to a validated program; then the cutting blocks per pass in
-// each output mode (lines, arcs, nurbs on the sample's machine, and nurbs
-// on the Fanuc profile, whose G06.2 blocks carry X, Y and Z).
+// each output mode (lines, arcs, nurbs on the sample's machine, and lines
+// and nurbs on the Fanuc profile, whose G06.2 blocks carry X, Y and Z).
 //
 // Usage: surface_bench [--quick]   (--quick: one repetition)
 #include <chrono>
@@ -132,6 +132,7 @@ int main(int argc, char** argv) {
   const Mode modes[] = {{"lines", OutputMode::lines, false},
                         {"arcs", OutputMode::arcs, false},
                         {"nurbs", OutputMode::nurbs, false},
+                        {"lines", OutputMode::lines, true},
                         {"nurbs", OutputMode::nurbs, true}};
   for (const char* f : files) {
     const Job job = load_job(dir + f);
