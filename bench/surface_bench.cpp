@@ -4,7 +4,9 @@
 // the baseline of uniform parameter steps (plan_uniform_passes, the fewest
 // uniform passes that verify the same way), with the tool of the sample
 // and with the tip on the surface (r = 0); then the time to convert each
-// sample job to a validated program.
+// sample job to a validated program; then the cutting blocks per pass in
+// each output mode (lines, arcs, nurbs on the sample's machine, and lines
+// and nurbs on the Fanuc profile, whose G06.2 blocks carry X, Y and Z).
 //
 // Usage: surface_bench [--quick]   (--quick: one repetition)
 #include <chrono>
@@ -116,6 +118,38 @@ int main(int argc, char** argv) {
     for (char ch : res.gcode) lines += ch == '\n';
     std::printf("%-28s %8zu %8zu %10.1f %12.5f %12.5f\n", f, blocks, lines, t, res.program.max_measured,
                 res.program.max_bound);
+  }
+
+  std::printf("\nBlocks per pass by output mode (G-code lines of the surface entity's cutting moves / passes;\n");
+  std::printf("the first entity of each sample; nurbs plans its passes 4 tolerances closer, see docs/surfaces.md):\n");
+  std::printf("%-28s %-9s %-6s %7s %8s %9s %10s %10s\n", "sample", "machine", "mode", "passes", "blocks", "per pass",
+              "measured", "bound");
+  struct Mode {
+    const char* name;
+    OutputMode mode;
+    bool fanuc;
+  };
+  const Mode modes[] = {{"lines", OutputMode::lines, false},
+                        {"arcs", OutputMode::arcs, false},
+                        {"nurbs", OutputMode::nurbs, false},
+                        {"lines", OutputMode::lines, true},
+                        {"nurbs", OutputMode::nurbs, true}};
+  for (const char* f : files) {
+    const Job job = load_job(dir + f);
+    for (const Mode& md : modes) {
+      const MachineProfile m = load_machine_profile(md.fanuc ? "fanuc" : job.machine.value_or("generic"));
+      ConvertOptions o;
+      o.output = md.mode;
+      const ConvertResult res = convert(job, m, o);
+      const EntityReport& rep = res.program.entities[0];
+      size_t passes = 0;
+      for (const auto& mv : res.program.moves)
+        if (const auto* c = std::get_if<Comment>(&mv.what); c && mv.entity == 0)
+          passes += c->text.starts_with("pass ");
+      if (passes == 0) passes = 1;
+      std::printf("%-28s %-9s %-6s %7zu %8zu %9.1f %10.5f %10.5f\n", f, m.name.c_str(), md.name, passes, rep.blocks,
+                  double(rep.blocks) / double(passes), rep.measured, rep.bound);
+    }
   }
   return 0;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bezcam/cam/program.hpp"
+#include "bezcam/flatten/exact_blocks.hpp"
 
 namespace bezcam::detail {
 
@@ -93,8 +94,10 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
 /// Cuts a surface entity completely (surface_emitter.cpp): bezier_patch and
 /// coons_patch by their toolpath (zigzag, raster, boundary), curve_on_surface
 /// along its curve; tool and spindle, rapids at safe Z, plunges, cutting
-/// moves, links, gouge policy and the final retract. G01 lines in every
-/// output mode. Returns the filled report.
+/// moves, links, gouge policy and the final retract. Returns the filled
+/// report. In nurbs output on a profile with 3D NURBS blocks (Fanuc) the
+/// cutting runs are exact or proven-approximate NURBS blocks; elsewhere
+/// G01 lines, said once in a warning (docs/surfaces.md).
 EntityReport emit_surface(CutContext& c, MotionState& st);
 
 /// G02/G03 arcs and G01 lines within the tolerance after rounding
@@ -106,6 +109,12 @@ void emit_arcs(CutContext& c, EntityReport& r);
 /// the whole program on a profile without NURBS, said in the header and a
 /// warning (cut_nurbs.cpp).
 void emit_nurbs(CutContext& c, EntityReport& r);
+
+/// Appends the move of one planned exact block (a G01 line, a G5/G5.1
+/// Bézier move or a NURBS block in the profile's dialect), its points mapped
+/// by `at` (model point -> cutting point); returns the G-code lines it
+/// takes (cut_nurbs.cpp).
+size_t append_exact_block(CutContext& c, const ExactBlock& b, const std::function<Vec3(const Vec3&)>& at);
 
 /// The arc/line fallback for a run of pieces that starts at the current
 /// printed position: appends the moves, adds their count to `blocks`, the

@@ -32,7 +32,38 @@ size_t block_lines(const ExactBlock& b, NurbsDialect d) {
   return b.ctrl.size() + 1;
 }
 
+// The chord tolerance at which a block's printed curve is sampled for the
+// independent measurement: kSampleShare of the tolerance, not finer than
+// double precision allows at this size (flatten_curve.hpp).
+double exact_sample_tolerance(const ExactBlock& b, double tolerance) {
+  double scale = 0;
+  for (const auto& p : b.ctrl) scale = std::max(scale, max_abs(p));
+  return std::max(kSampleShare * tolerance, 1e-11 * std::max(scale, 1.0));
+}
+
 }  // namespace
+
+size_t append_exact_block(CutContext& c, const ExactBlock& b, const std::function<Vec3(const Vec3&)>& at) {
+  const int entity = static_cast<int>(c.entity.index);
+  if (b.kind == ExactKind::line) {
+    LineMove l;
+    l.to = at(b.ctrl.back());
+    l.feed = c.params.feed;
+    c.program.moves.push_back({l, entity});
+  } else {
+    CurveMove cv;
+    cv.form = b.kind == ExactKind::bezier ? CurveMove::Form::bezier : CurveMove::Form::nurbs;
+    cv.to = at(b.ctrl.back());
+    cv.feed = c.params.feed;
+    cv.axes = c.machine.nurbs == NurbsDialect::linuxcnc ? 3u : 7u;  // G5.x never moves Z
+    for (const auto& p : b.ctrl) cv.ctrl.push_back(at(p));
+    cv.weights = b.weights;
+    cv.knots = b.knots;
+    cv.order = b.kind == ExactKind::nurbs ? b.order : static_cast<int>(b.ctrl.size());
+    c.program.moves.push_back({std::move(cv), entity});
+  }
+  return block_lines(b, c.machine.nurbs);
+}
 
 void emit_nurbs(CutContext& c, EntityReport& r) {
   const MachineProfile& m = c.machine;
@@ -53,7 +84,6 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
   const std::vector<ExactBlock> blocks = plan_exact_blocks(g, eo);
 
   const int entity = static_cast<int>(c.entity.index);
-  const unsigned axes = m.nurbs == NurbsDialect::linuxcnc ? 3u : 7u;  // G5.x never moves Z
   std::vector<Vec3> path{quantize(g.pieces.front().front(), c.decimals)};
   // What is not exact, said before the moves (a comment line).
   std::string notes;
@@ -71,32 +101,11 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
       r.bound = std::max(r.bound, append_arcs_or_lines(c, b.source, path, r.blocks) + b.snap);
       continue;
     }
-    if (b.kind == ExactKind::line) {
-      LineMove l;
-      l.to = cut_point(c, b.ctrl.back());
-      l.feed = c.params.feed;
-      c.program.moves.push_back({l, entity});
-    } else {
-      CurveMove cv;
-      cv.form = b.kind == ExactKind::bezier ? CurveMove::Form::bezier : CurveMove::Form::nurbs;
-      cv.to = cut_point(c, b.ctrl.back());
-      cv.feed = c.params.feed;
-      cv.axes = axes;
-      for (const auto& p : b.ctrl) cv.ctrl.push_back(cut_point(c, p));
-      cv.weights = b.weights;
-      cv.knots = b.knots;
-      cv.order = b.kind == ExactKind::nurbs ? b.order : static_cast<int>(b.ctrl.size());
-      c.program.moves.push_back({std::move(cv), entity});
-    }
-    r.blocks += block_lines(b, m.nurbs);
+    r.blocks += append_exact_block(c, b, [&](const Vec3& p) { return cut_point(c, p); });
     r.bound = std::max(r.bound, b.bound);
     // The printed curve, densely, for the independent measurement.
     if (c.measure) {
-      // Not finer than double precision allows at this size (flatten_curve.hpp).
-      double scale = 0;
-      for (const auto& p : b.ctrl) scale = std::max(scale, max_abs(p));
-      const double sample_tol = std::max(kSampleShare * c.tolerance, 1e-11 * std::max(scale, 1.0));
-      const auto f = flatten(b.printed, {sample_tol, -1}).points;
+      const auto f = flatten(b.printed, {exact_sample_tolerance(b, c.tolerance), -1}).points;
       path.insert(path.end(), f.begin() + 1, f.end());
     }
   }

@@ -3,7 +3,11 @@
 // on the surface (r = 0) or a ball-end tool's tip (r > 0), after the gouge
 // check the job asks for. Every cutting polyline comes from
 // flatten_surface.hpp with its proven bound; passes from plan_passes(), so
-// neighbouring passes are verified to be within the stepover.
+// neighbouring passes are verified to be within the stepover. In nurbs
+// output on a profile with 3D NURBS blocks, each run is cut instead as the
+// blocks of its exact curve (r = 0) or of a proven approximation of its tip
+// curve (r > 0, approximate_tip() and reduce_degree()), measured
+// independently against the tip curve (docs/surfaces.md).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -12,6 +16,8 @@
 #include "bezcam/error.hpp"
 #include "bezcam/cam/gouge.hpp"
 #include "bezcam/cam/pass_plan.hpp"
+#include "bezcam/flatten/degree_reduce.hpp"
+#include "bezcam/flatten/exact_blocks.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "cut_emitters.hpp"
 
@@ -27,6 +33,7 @@ struct Run {
   std::vector<Vec3> points;
   bool from_start = false;
   bool to_end = false;
+  double t0 = 0, t1 = 0;  // the pass's parameters at points.front() and points.back()
 };
 
 // The polyline minus every segment that touches a gouge span: runs of at
@@ -52,8 +59,10 @@ std::vector<Run> cut_out(const TipPolyline& p, const std::vector<GougeSpan>& spa
     if (cur.points.empty()) {
       cur.points.push_back(p.points[i]);
       cur.from_start = i == 0;
+      cur.t0 = a;
     }
     cur.points.push_back(p.points[i + 1]);
+    cur.t1 = b;
   }
   close(true);
   return runs;
@@ -71,6 +80,15 @@ class SurfaceEmitter {
     rep_.type = e_.type;
     rep_.entity = static_cast<int>(e_.index);
     rep_.degree = std::max(s_.degree_u(), s_.degree_v());
+    // Exact-curve blocks need a dialect that moves all three axes in one
+    // block (Fanuc G06.2); LinuxCNC's G5.x move in X and Y only.
+    blocks_ = c.program.output == OutputMode::nurbs && c.machine.nurbs == NurbsDialect::fanuc;
+    // Passes: the printed blocks may stray from the verified polylines by
+    // twice the tolerance, so the passes are planned 4 tolerances closer
+    // (plan_passes() needs at least 4 tolerances of its own).
+    if (blocks_ && e_.type != "curve_on_surface" && e_.toolpath.pattern != "boundary" && e_.toolpath.stepover &&
+        *e_.toolpath.stepover < 8 * c.tolerance)
+      blocks_ = false;
   }
 
   EntityReport run() {
@@ -110,6 +128,7 @@ class SurfaceEmitter {
   double r_, safe_, clear_ = 0;
   bool started_ = false;  // the tool has cut this entity: links go at the clearance plane
   GougePolicy policy_;
+  bool blocks_ = false;  // cut runs as NURBS blocks (nurbs output, Fanuc dialect)
   EntityReport rep_;
   size_t skipped_ = 0;
 
@@ -142,8 +161,24 @@ class SurfaceEmitter {
             (r_ > 0 ? ", ball-end tool radius " + fmt_num(r_) : ", tool tip on the surface"));
     for (const auto& line : c_.params.before)
       push({Verbatim{expand_entity_template(line, e_, c_.params, c_.decimals)}});
-    if (c_.program.output == OutputMode::nurbs && rep_.blocks == 0)
-      c_.program.warnings.push_back(e_.label() + ": surface passes are cut with G01 lines in nurbs output");
+    if (blocks_)
+      comment(r_ > 0 ? "cut as NURBS blocks: cubic pieces within a proven distance of the ball-end tip curves"
+                     : "cut as NURBS blocks: the exact curves on the surface (reduced to cubics where of higher degree)");
+    const OutputMode out = c_.program.output;
+    if (out != OutputMode::lines && !blocks_ && rep_.blocks == 0) {
+      std::string why;
+      if (out == OutputMode::arcs)
+        why = "G02/G03 arcs lie in the XY plane and surface passes do not";
+      else if (c_.machine.nurbs == NurbsDialect::linuxcnc)
+        why = "machine " + c_.machine.name + "'s NURBS blocks (G5/G5.1/G5.2) move in X and Y only, and surface "
+              "passes move in Z too";
+      else if (c_.machine.nurbs == NurbsDialect::none)
+        why = "machine " + c_.machine.name + " has no NURBS words";
+      else
+        why = "the stepover is less than 8 tolerances, too little room for blocks beside the pass spacing";
+      c_.program.warnings.push_back(e_.label() + ": surface passes are cut with G01 lines in " +
+                                    (out == OutputMode::arcs ? "arcs" : "nurbs") + " output: " + why);
+    }
   }
   void retract() {
     if (st_.pos_known && st_.pos.z == safe_) return;
@@ -202,14 +237,7 @@ class SurfaceEmitter {
   // Flattens a curve, measures it, and returns the cut runs (after the
   // gouge policy).
   std::vector<Run> prepare(const SurfaceCurve& curve, const TipPolyline& poly, const std::string& what) {
-    rep_.bound = std::max(rep_.bound, poly.bound);
-    if (c_.measure) {
-      const double m = measure_tip(curve, r_, poly).max();
-      rep_.measured = std::max(rep_.measured, m);
-      if (m > c_.tolerance * (1 + 1e-6))
-        throw std::logic_error("internal check failed: " + rep_.label + " " + what + " deviates by " + fmt_num(m) +
-                               " beyond the tolerance " + fmt_num(c_.tolerance));
-    }
+    if (!blocks_) record_lines(curve, poly, what);
     std::vector<GougeSpan> spans;
     if (r_ > 0) spans = find_gouges(s_, curve, r_, std::max<int>(256, 4 * static_cast<int>(poly.points.size())));
     if (!spans.empty()) {
@@ -220,6 +248,116 @@ class SurfaceEmitter {
       skipped_ += spans.size();
     }
     return cut_out(poly, spans);
+  }
+
+  // The bound and the independent measurement of a polyline that is cut.
+  void record_lines(const SurfaceCurve& curve, const TipPolyline& poly, const std::string& what) {
+    rep_.bound = std::max(rep_.bound, poly.bound);
+    if (c_.measure) {
+      const double m = measure_tip(curve, r_, poly).max();
+      rep_.measured = std::max(rep_.measured, m);
+      if (m > c_.tolerance * (1 + 1e-6))
+        throw std::logic_error("internal check failed: " + rep_.label + " " + what + " deviates by " + fmt_num(m) +
+                               " beyond the tolerance " + fmt_num(c_.tolerance));
+    }
+  }
+
+  // Cuts a run, the tool at its first point: as blocks when the mode asks
+  // and they can be proven, else as its G01 lines.
+  void cut_run(const SurfaceCurve& curve, const TipPolyline& poly, const Run& run, bool backwards,
+               const std::string& what) {
+    if (blocks_ && cut_blocks(curve, run, backwards, what)) return;
+    if (blocks_) record_lines(curve, poly, what);
+    cut(run.points);
+  }
+
+  // The run as NURBS blocks: the tip curve on [t0, t1] as Bézier pieces
+  // (exact for r = 0, within a proven e1 for r > 0), reduced to the
+  // dialect's degree within a proven e2 where higher, then planned and
+  // rounded by plan_exact_blocks() within what is left of the tolerance.
+  // False (nothing emitted) when a part cannot be proven: the caller cuts
+  // the run with its lines.
+  bool cut_blocks(const SurfaceCurve& curve, const Run& run, bool backwards, const std::string& what) {
+    const double tol = c_.tolerance;
+    SurfaceCurve sub = restrict(curve, std::min(run.t0, run.t1), std::max(run.t0, run.t1));
+    if (backwards) sub = reversed(sub);
+    const auto ap = approximate_tip(sub, r_, 0.25 * tol);
+    if (!ap) return false;
+    const int maxdeg = std::clamp(c_.machine.nurbs_max_rank, 2, 4) - 1;
+    std::vector<Bezier> pieces;
+    std::vector<double> lo, hi;  // each piece's parameter interval on `sub`
+    double e2 = 0;
+    for (size_t k = 0; k < ap->pieces.size(); ++k) {
+      const Bezier& b = ap->pieces[k];
+      const double a = ap->breaks[k], w = ap->breaks[k + 1] - a;
+      if (b.degree() <= maxdeg) {
+        pieces.push_back(b);
+        lo.push_back(a);
+        hi.push_back(a + w);
+        continue;
+      }
+      const auto red = reduce_degree(b, maxdeg, 0.35 * tol);
+      if (!red) return false;
+      for (const ReducedPiece& rp : *red) {
+        pieces.push_back(rp.approx);
+        lo.push_back(a + rp.t0 * w);
+        hi.push_back(a + rp.t1 * w);
+        e2 = std::max(e2, rp.bound);
+      }
+    }
+    CurveGeometry g;
+    g.kind = "path";
+    g.dim = 3;
+    g.pieces = pieces;
+    CurveSegment seg;
+    seg.kind = "bezier";
+    seg.degree = maxdeg;
+    seg.piece_count = pieces.size();
+    g.segments = {seg};
+    ExactOptions eo;
+    eo.dialect = c_.machine.nurbs;
+    eo.max_rank = c_.machine.nurbs_max_rank;
+    eo.tolerance = tol - ap->bound - e2;
+    eo.decimals = c_.decimals;
+    eo.knot_decimals = c_.machine.knot_decimals;
+    eo.weight_decimals = c_.machine.weight_decimals;
+    std::vector<ExactBlock> blocks;
+    try {
+      blocks = plan_exact_blocks(g, eo);
+    } catch (const InputError&) {
+      return false;  // what is left is below what rounding needs: lines
+    }
+    size_t printed = 0;
+    for (const ExactBlock& b : blocks) {
+      if (b.kind == ExactKind::fallback) return false;
+      printed += b.printed.size();
+    }
+    if (printed != pieces.size()) return false;
+    // The printed pieces in order, each over its interval of `sub`'s
+    // parameter (each follows its piece in the same parameter).
+    std::vector<Bezier> printed_pieces;
+    for (const ExactBlock& b : blocks) printed_pieces.insert(printed_pieces.end(), b.printed.begin(), b.printed.end());
+    std::vector<double> breaks = lo;
+    breaks.push_back(hi.back());
+    double bound = 0;
+    for (const ExactBlock& b : blocks) bound = std::max(bound, b.bound);
+    bound += ap->bound + e2;
+    if (c_.measure) {
+      const double m = measure_tip_pieces(sub, r_, printed_pieces, breaks).max();
+      rep_.measured = std::max(rep_.measured, m);
+      if (m > tol * (1 + 1e-6))
+        throw std::logic_error("internal check failed: " + rep_.label + " " + what + " as NURBS blocks deviates by " +
+                               fmt_num(m) + " beyond the tolerance " + fmt_num(tol));
+    }
+    rep_.bound = std::max(rep_.bound, bound);
+    // The blocks start at the rounded start of the first piece; the tool
+    // is at the run's first vertex, the rounded tip there: both within the
+    // tolerance of the same tip point (a move of a last digit, if any).
+    feed_to(blocks.front().ctrl.front());
+    for (const ExactBlock& b : blocks) rep_.blocks += append_exact_block(c_, b, [](const Vec3& p) { return p; });
+    for (const Bezier& pc : printed_pieces) rep_.length += length(pc);
+    st_.pos = blocks.back().ctrl.back();
+    return true;
   }
 
   [[noreturn]] void refuse(const std::vector<GougeSpan>& spans, const std::string& what) {
@@ -249,7 +387,7 @@ class SurfaceEmitter {
     const TipPolyline poly = flatten_tip(m, r_, fo());
     for (const Run& run : prepare(m, poly, "the curve")) {
       go_to(run.points.front());
-      cut(run.points);
+      cut_run(m, poly, run, false, "the curve");
     }
     note_skips();
   }
@@ -266,7 +404,7 @@ class SurfaceEmitter {
         // Borders meet end to end: continue without lifting when the run
         // starts where the tool is.
         go_to(run.points.front());
-        cut(run.points);
+        cut_run(borders[k], poly, run, false, names[k]);
       }
     }
     note_skips();
@@ -280,7 +418,7 @@ class SurfaceEmitter {
                        "neighbouring passes, in file units");
     PassOptions o;
     o.direction = tp.direction;
-    o.stepover = *tp.stepover;
+    o.stepover = *tp.stepover - (blocks_ ? 4 * c_.tolerance : 0);
     o.tolerance = c_.tolerance;
     o.decimals = c_.decimals;
     o.tool_radius = r_;
@@ -293,10 +431,19 @@ class SurfaceEmitter {
     }
     const char across = tp.direction == 'u' ? 'v' : 'u';
     const bool zigzag = tp.pattern == "zigzag";
-    begin_entity(tp.pattern + " along " + std::string(1, tp.direction) + ", stepover " + fmt_num(o.stepover) +
-                 ", " + std::to_string(plan.passes.size()) + " passes");
-    comment("neighbouring passes at most " + fmt_num(std::round(plan.gap_bound * 1e4) / 1e4) +
-            " apart (verified on the printed passes; stepover " + fmt_num(o.stepover) + ")");
+    begin_entity(tp.pattern + " along " + std::string(1, tp.direction) + ", stepover " + fmt_num(*tp.stepover) +
+                 (blocks_ ? " (passes planned at " + fmt_num(o.stepover) + " for NURBS blocks)" : "") + ", " +
+                 std::to_string(plan.passes.size()) + " passes");
+    if (blocks_)
+      // Each printed pass lies within the tolerance of its tip curve, which
+      // lies within the flattening bound of the verified polyline.
+      comment("neighbouring passes at most " +
+              fmt_num(std::ceil((plan.gap_bound + 2 * (c_.tolerance + plan.bound)) * 1e4) / 1e4) +
+              " apart (verified on the flattened passes, plus twice the tolerance of the printed blocks and of the "
+              "flattening; stepover " + fmt_num(*tp.stepover) + ")");
+    else
+      comment("neighbouring passes at most " + fmt_num(std::round(plan.gap_bound * 1e4) / 1e4) +
+              " apart (verified on the printed passes; stepover " + fmt_num(o.stepover) + ")");
     bool have_prev = false;
     bool prev_reversed = false;
     bool prev_reached_side = false;  // the last run ended on the side the next pass starts from
@@ -320,7 +467,7 @@ class SurfaceEmitter {
         const Run& run = runs[j];
         const bool linkable = zigzag && j == 0 && have_prev && prev_reached_side && run.from_start;
         if (!(linkable && link(prev_at, ps.at, prev_reversed ? 0.0 : 1.0, run.points.front()))) go_to(run.points.front());
-        cut(run.points);
+        cut_run(ps.curve, ps.poly, run, rev, label);
         prev_reached_side = run.to_end;
       }
       if (runs.empty()) prev_reached_side = false;

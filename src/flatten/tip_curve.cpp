@@ -10,6 +10,7 @@
 #include "bezcam/limits.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "flatten/search.hpp"
+#include "kernel/bernstein_ops.hpp"
 
 namespace bezcam {
 
@@ -192,6 +193,91 @@ TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptio
 
 namespace {
 
+using detail::Hom;
+using detail::Poly;
+
+// One tip piece on [0,1] of a point piece P and its normal direction n:
+// the rational piece A = P + r (n / w - z) and its proven distance to the
+// tip (tip_curve.hpp); nothing when w is not provably positive.
+std::optional<std::pair<Bezier, double>> tip_piece(const Bezier& P, const Bezier& n, double radius) {
+  const double f0 = norm(evaluate(n, 0)), fm = norm(evaluate(n, 0.5)), f1 = norm(evaluate(n, 1));
+  const Poly<double> w{f0, 0.5 * (4 * fm - f0 - f1), f1};
+  const double wmin = std::min({w[0], w[1], w[2]});
+  if (!(wmin > 0)) return std::nullopt;
+  auto dbl = [](double a, double b) { return a * b; };
+  const Poly<Vec3> nv(n.points.begin(), n.points.end());
+  Poly<double> nn = detail::bern_product(nv, nv, [](const Vec3& a, const Vec3& b) { return dot(a, b); });
+  Poly<double> ww = detail::bern_product(w, w, dbl);
+  const int dd = std::max(detail::degree_of(nn), detail::degree_of(ww));
+  nn = detail::bern_elevate(nn, dd);
+  ww = detail::bern_elevate(ww, dd);
+  double dmax = 0, scale = 0;
+  for (size_t i = 0; i < nn.size(); ++i) {
+    dmax = std::max(dmax, std::abs(nn[i] - ww[i]));
+    scale = std::max(scale, std::abs(nn[i]));
+  }
+  // Floating-point error of the few products and sums above: a small
+  // multiple of eps times the coefficients' size.
+  const double bound = radius * (dmax + 64 * 2.2e-16 * scale) / (wmin * wmin);
+  // Numerator w H + r n h - r z w h over weight w h, H = h P.
+  const Poly<Hom> ph = detail::homogeneous(P);
+  Poly<Vec3> H(ph.size());
+  Poly<double> h(ph.size());
+  for (size_t i = 0; i < ph.size(); ++i) H[i] = ph[i].p, h[i] = ph[i].w;
+  const Poly<double> wh = detail::bern_product(w, h, dbl);
+  Poly<Vec3> a = detail::bern_scale(H, w), b = detail::bern_scale(nv, h);
+  const int d = std::max({detail::degree_of(a), detail::degree_of(b), detail::degree_of(wh)});
+  a = detail::bern_elevate(a, d);
+  b = detail::bern_elevate(b, d);
+  const Poly<double> den = detail::bern_elevate(wh, d);
+  Poly<Hom> hom(static_cast<size_t>(d) + 1);
+  for (size_t i = 0; i < hom.size(); ++i) {
+    if (!(den[i] > 0)) return std::nullopt;
+    hom[i] = Hom(a[i] + b[i] * radius - Vec3{0, 0, radius * den[i]}, den[i]);
+  }
+  return std::make_pair(detail::from_homogeneous(hom, true, 3), bound);
+}
+
+void approximate_on(const SurfaceCurve& c, size_t k, double radius, double budget, double x0, double x1, int depth,
+                    TipApprox& out, bool& ok) {
+  if (!ok) return;
+  const Bezier P = subcurve(c.points[k], x0, x1), n = subcurve(c.normals[k], x0, x1);
+  const auto got = tip_piece(P, n, radius);
+  if (got && got->second <= budget) {
+    out.pieces.push_back(got->first);
+    out.breaks.push_back(global_of(c, k, x1));
+    out.bound = std::max(out.bound, got->second);
+    return;
+  }
+  if (depth >= 12) {
+    ok = false;
+    return;
+  }
+  const double xm = 0.5 * (x0 + x1);
+  approximate_on(c, k, radius, budget, x0, xm, depth + 1, out, ok);
+  approximate_on(c, k, radius, budget, xm, x1, depth + 1, out, ok);
+}
+
+}  // namespace
+
+std::optional<TipApprox> approximate_tip(const SurfaceCurve& c, double radius, double budget) {
+  TipApprox out;
+  if (radius == 0 || c.normals.empty()) {
+    out.pieces = c.points;
+    for (auto& b : out.pieces) b.dim = 3;
+    out.breaks = c.breaks;
+    return out;
+  }
+  out.breaks.push_back(c.breaks.front());
+  bool ok = true;
+  for (size_t k = 0; k < c.points.size() && ok; ++k) approximate_on(c, k, radius, budget, 0, 1, 0, out, ok);
+  if (!ok) return std::nullopt;
+  out.breaks.back() = c.breaks.back();
+  return out;
+}
+
+namespace {
+
 // The smallest value seen by `iters` golden-section steps on [a, b],
 // the bracket's ends included.
 template <class F>
@@ -240,6 +326,44 @@ Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p
     d.path_to_curve = std::max(d.path_to_curve, dist(V[i], tip(a)));
   }
   d.path_to_curve = std::max(d.path_to_curve, dist(V.back(), tip(1)));
+  return d;
+}
+
+Deviation measure_tip_pieces(const SurfaceCurve& c, double radius, std::span<const Bezier> pieces,
+                             std::span<const double> breaks) {
+  Deviation d;
+  auto tip = [&](double t) { return tip_point(c, radius, std::clamp(t, 0.0, 1.0)); };
+  constexpr int kSamples = 32;
+  for (size_t j = 0; j < pieces.size(); ++j) {
+    const Bezier& q = pieces[j];
+    const double a = breaks[j], b = breaks[j + 1], w = b - a;
+    // Distance from a printed point at local s to the tip curve near it,
+    // and from the tip at local s to the printed piece near it.
+    auto to_curve = [&](double s) {
+      const Vec3 x = evaluate(q, s);
+      const double t = a + s * w, h = w / 16;
+      return golden_min(std::max(0.0, t - h), std::min(1.0, t + h), [&](double u) { return dist(tip(u), x); }, 50);
+    };
+    auto to_piece = [&](double s) {
+      const Vec3 x = tip(a + s * w);
+      return golden_min(std::max(0.0, s - 1.0 / 16), std::min(1.0, s + 1.0 / 16),
+                        [&](double u) { return dist(evaluate(q, u), x); }, 50);
+    };
+    auto worst_of = [&](const auto& f) {
+      std::vector<double> v(kSamples + 1);
+      for (int i = 0; i <= kSamples; ++i) v[i] = f(double(i) / kSamples);
+      double m = *std::max_element(v.begin(), v.end());
+      for (int i = 0; i <= kSamples; ++i) {
+        const bool peak = (i == 0 || v[i] >= v[i - 1]) && (i == kSamples || v[i] >= v[i + 1]);
+        if (!peak) continue;
+        const double s0 = std::max(0.0, double(i - 1) / kSamples), s1 = std::min(1.0, double(i + 1) / kSamples);
+        m = std::max(m, -golden_min(s0, s1, [&](double s) { return -f(s); }, 30));
+      }
+      return m;
+    };
+    d.path_to_curve = std::max(d.path_to_curve, worst_of(to_curve));
+    d.curve_to_path = std::max(d.curve_to_path, worst_of(to_piece));
+  }
   return d;
 }
 

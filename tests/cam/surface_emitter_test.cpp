@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/tolerance.hpp"
@@ -95,7 +96,9 @@ Read convert_and_read(Job job, const std::string& machine = "") {
 }
 
 // Cutting runs of one entity: feed moves between rapids, plunge dropped.
-std::vector<std::vector<Vec3>> runs_of(const Read& x, double feed) {
+// Each block gives its end point, or with `chord` > 0 its points sampled
+// that densely (NURBS blocks as the reader evaluates them).
+std::vector<std::vector<Vec3>> runs_of(const Read& x, double feed, double chord = 0) {
   std::vector<std::vector<Vec3>> runs;
   bool in = false;
   for (const auto& b : x.blocks) {
@@ -106,7 +109,12 @@ std::vector<std::vector<Vec3>> runs_of(const Read& x, double feed) {
     if (b.feed != feed) continue;  // plunges, other entities
     if (!in) runs.push_back({b.from});
     in = true;
-    runs.back().push_back(b.to);
+    if (chord > 0) {
+      const auto pts = sample_block(b, chord);
+      runs.back().insert(runs.back().end(), pts.begin() + 1, pts.end());
+    } else {
+      runs.back().push_back(b.to);
+    }
   }
   return runs;
 }
@@ -115,12 +123,15 @@ std::vector<std::vector<Vec3>> runs_of(const Read& x, double feed) {
 // surface entity is where it must be: tip on the surface within the
 // tolerance (r = 0), or the ball centre tip + r z at distance r within the
 // tolerance and above the surface (r > 0). Returns the largest error.
-double check_on_surface(const SurfaceGeometry& s, const std::vector<std::vector<Vec3>>& runs, double r, double tol) {
+// `vertices_only`: the vertices alone (points sampled on exact-curve blocks).
+double check_on_surface(const SurfaceGeometry& s, const std::vector<std::vector<Vec3>>& runs, double r, double tol,
+                        bool vertices_only = false) {
   double worst = 0;
+  const std::vector<double> at = vertices_only ? std::vector<double>{0.0} : std::vector<double>{0.0, 0.25, 0.5, 0.75};
   for (const auto& run : runs) {
     double u = -1, v = -1;
     for (size_t i = 0; i + 1 < run.size(); ++i)
-      for (double f : {0.0, 0.25, 0.5, 0.75}) {
+      for (double f : at) {
         const Vec3 c = lerp(run[i], run[i + 1], f) + Vec3{0, 0, r};
         Closest k = newton(s, c, u < 0 ? 0.5 : u, v < 0 ? 0.5 : v);
         if (u < 0 || std::abs(k.d - r) > tol) k = closest(s, c, u, v);
@@ -338,6 +349,121 @@ TEST(SurfaceProgram, BoundaryPatternCutsTheFourBordersInOneLoop) {
       const Vec3 tip = evaluate(s, u, v) + (unit_normal(s, u, v) - Vec3{0, 0, 1}) * cp.tool_radius;
       EXPECT_LE(dist_to_poly(tip, runs[0]), x.job.tolerance + 1e-6);
     }
+  }
+}
+
+Read convert_and_read(Job job, const std::string& machine, OutputMode mode) {
+  Read x{std::move(job), {}, {}, {}};
+  x.m = load_machine_profile(machine);
+  ConvertOptions o;
+  o.output = mode;
+  x.r = convert(x.job, x.m, o);
+  x.blocks = read_gcode(x.r.gcode, &x.m);
+  return x;
+}
+
+size_t count_of(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t i = text.find(what); i != std::string::npos; i = text.find(what, i + 1)) ++n;
+  return n;
+}
+
+// Nurbs output on a profile with 3D NURBS blocks (Fanuc G06.2): every
+// surface sample takes fewer blocks than as G01 lines, the report's
+// independent measurement of the printed blocks and the reader's own
+// evaluation of them are within the tolerance, and neighbouring passes as
+// printed stay within the stepover.
+TEST(SurfaceProgram, NurbsBlocksOnFanucTakeFewerBlocksThanLinesWithinTolerance) {
+  for (const auto& sc : kPatchSamples) {
+    SCOPED_TRACE(sc.file);
+    const Job job = load_job(kSamples + sc.file);
+    const Read lines = convert_and_read(job, "fanuc", OutputMode::lines);
+    const Read nurbs = convert_and_read(job, "fanuc", OutputMode::nurbs);
+    const Entity& e = job.entities[sc.entity];
+    const EntityReport& ln = lines.r.program.entities[sc.entity];
+    const EntityReport& nb = nurbs.r.program.entities[sc.entity];
+    EXPECT_LT(nb.blocks, ln.blocks);
+    RecordProperty(std::string(sc.file) + ".lines", static_cast<int>(ln.blocks));
+    RecordProperty(std::string(sc.file) + ".nurbs", static_cast<int>(nb.blocks));
+    EXPECT_GT(count_of(nurbs.r.gcode, "G06.2"), 0u);
+    EXPECT_LE(nb.bound, job.tolerance);
+    EXPECT_GT(nb.measured, 0);
+    EXPECT_LE(nb.measured, job.tolerance * 1.001);
+    for (const auto& w : nurbs.r.program.warnings) EXPECT_EQ(w.find("G01 lines"), std::string::npos) << w;
+    const CutParams cp = cut_params(job, e, nurbs.m);
+    // Points of the blocks as the reader evaluates them, a few per tolerance of sag.
+    const auto runs = runs_of(nurbs, quantize(cp.feed, nurbs.m.feed_decimals), job.tolerance / 2);
+    ASSERT_FALSE(runs.empty());
+    EXPECT_LE(check_on_surface(*e.surface, runs, cp.tool_radius, job.tolerance, true), job.tolerance);
+  }
+  // Raster passes as printed blocks: neighbours within the stepover (the
+  // sampled polylines stray from the blocks by at most `chord` each).
+  const Job saddle = as_raster(load_job(kSamples + "patch-saddle.json"), 0);
+  const Read x = convert_and_read(saddle, "fanuc", OutputMode::nurbs);
+  const double stepover = *saddle.entities[0].toolpath.stepover, chord = 0.01;
+  const auto runs =
+      runs_of(x, quantize(cut_params(saddle, saddle.entities[0], x.m).feed, x.m.feed_decimals), chord);
+  ASSERT_GE(runs.size(), 10u);
+  double worst = 0;
+  for (size_t i = 0; i + 1 < runs.size(); i += 3) worst = std::max(worst, brute_gap(runs[i], runs[i + 1], stepover / 20));
+  EXPECT_LE(worst, stepover + 2 * chord);
+  // The boundary pattern: four borders, each its blocks, still one loop.
+  Job coons = load_job(kSamples + "patch-coons-curved.json");
+  coons.entities[0].toolpath.pattern = "boundary";
+  const Read b = convert_and_read(coons, "fanuc", OutputMode::nurbs);
+  const Read bl = convert_and_read(coons, "fanuc", OutputMode::lines);
+  EXPECT_LT(b.r.program.entities[0].blocks, bl.r.program.entities[0].blocks);
+  const CutParams bcp = cut_params(coons, coons.entities[0], b.m);
+  const auto loop = runs_of(b, quantize(bcp.feed, b.m.feed_decimals), coons.tolerance / 2);
+  ASSERT_EQ(loop.size(), 1u);
+  EXPECT_LE(dist(loop[0].front(), loop[0].back()), 0.0011);
+  EXPECT_LE(check_on_surface(*coons.entities[0].surface, loop, bcp.tool_radius, coons.tolerance, true),
+            coons.tolerance);
+}
+
+// A deliberately wrong block is caught by the reader-side check: one
+// control point of a printed G06.2 block moved by 0.2 mm.
+TEST(SurfaceProgram, AWrongNurbsBlockIsCaught) {
+  const Job job = load_job(kSamples + "patch-saddle.json");
+  Read x = convert_and_read(job, "fanuc", OutputMode::nurbs);
+  const Entity& e = job.entities[0];
+  const CutParams cp = cut_params(job, e, x.m);
+  const double feed = quantize(cp.feed, x.m.feed_decimals);
+  // The second control point line of the first block: "N.. X.. Y.. Z.. R.. K.."
+  std::string text = x.r.gcode;
+  size_t at = text.find("G06.2");
+  ASSERT_NE(at, std::string::npos);
+  at = text.find('\n', at) + 1;
+  const size_t z = text.find(" Z", at);
+  ASSERT_LT(z, text.find('\n', at));
+  const size_t end = text.find(' ', z + 1);
+  const double v = std::stod(text.substr(z + 2, end - z - 2));
+  text.replace(z + 2, end - z - 2, fmt_num(v + 0.2));
+  x.blocks = read_gcode(text, &x.m);
+  // The moved block (in the first run) leaves the surface by far more than
+  // the tolerance; the same check passes every sample's true blocks (above).
+  const auto runs = runs_of(x, feed, 0.005);
+  ASSERT_FALSE(runs.empty());
+  EXPECT_GT(check_on_surface(*e.surface, {runs.front()}, cp.tool_radius, job.tolerance, true), 0.02);
+}
+
+// Where the dialect cannot carry a 3D block (LinuxCNC's G5.x move in X and
+// Y), and in arcs output (G17 arcs lie in XY), passes stay G01 lines and a
+// warning says why, once per entity.
+TEST(SurfaceProgram, LinesWhereNoBlockCanCarryAPassAndSaidSo) {
+  const Job job = load_job(kSamples + "patch-saddle.json");
+  for (auto [machine, mode, why] :
+       {std::tuple{"linuxcnc", OutputMode::nurbs, "move in X and Y only"},
+        std::tuple{"generic", OutputMode::nurbs, "has no NURBS words"},
+        std::tuple{"fanuc", OutputMode::arcs, "lie in the XY plane"}}) {
+    SCOPED_TRACE(machine);
+    const Read x = convert_and_read(job, machine, mode);
+    size_t said = 0;
+    for (const auto& w : x.r.program.warnings) said += w.find(why) != std::string::npos;
+    EXPECT_EQ(said, 1u);
+    for (const auto& mv : x.r.program.moves) EXPECT_FALSE(std::holds_alternative<CurveMove>(mv.what));
+    const Read l = convert_and_read(job, machine, OutputMode::lines);
+    EXPECT_EQ(x.r.program.entities[0].blocks, l.r.program.entities[0].blocks);
   }
 }
 

@@ -105,6 +105,51 @@ TEST(FlattenSurface, TipCurveBoundHoldsByIndependentMeasurement) {
   }
 }
 
+// approximate_tip(): the rational pieces follow the tip at the same
+// parameter within their proven bound (checked against the tip recomputed
+// from the surface), and measure_tip() catches a copy moved by more than
+// the tolerance.
+TEST(FlattenSurface, TipApproximationHoldsItsBoundAndAWrongOneIsMeasured) {
+  for (const auto& c : cases()) {
+    for (char dir : {'u', 'v'}) {
+      const double at = 0.35;
+      const SurfaceCurve iso = iso_curve(*c.s, dir, at, c.r > 0);
+      const auto ap = approximate_tip(iso, c.r, 0.25 * kTol);
+      ASSERT_TRUE(ap.has_value()) << c.name;
+      ASSERT_EQ(ap->breaks.size(), ap->pieces.size() + 1);
+      EXPECT_EQ(ap->breaks.front(), 0);
+      EXPECT_EQ(ap->breaks.back(), 1);
+      EXPECT_LE(ap->bound, 0.25 * kTol) << c.name;
+      if (c.r == 0) EXPECT_EQ(ap->bound, 0);
+      double worst = 0;
+      TipPolyline dense, moved;
+      for (size_t k = 0; k < ap->pieces.size(); ++k)
+        for (int i = k ? 1 : 0; i <= 200; ++i) {
+          const double x = i / 200.0, t = ap->breaks[k] + x * (ap->breaks[k + 1] - ap->breaks[k]);
+          const Vec3 want = dir == 'u' ? direct_tip(*c.s, c.r, t, at) : direct_tip(*c.s, c.r, at, t);
+          const Vec3 got = evaluate(ap->pieces[k], x);
+          worst = std::max(worst, dist(want, got));
+          dense.points.push_back(got);
+          dense.params.push_back(t);
+          moved.points.push_back(k == 0 && i == 100 ? got + Vec3{0, 0, 3 * kTol} : got);
+          moved.params.push_back(t);
+        }
+      EXPECT_LE(worst, ap->bound + 1e-9) << c.name;
+      EXPECT_LE(measure_tip(iso, c.r, dense).max(), ap->bound + 0.05 * kTol) << c.name;
+      EXPECT_GT(measure_tip(iso, c.r, moved).max(), 2 * kTol) << c.name;
+      // The measurement of printed pieces (surface blocks): the pieces
+      // themselves read within their bound; one piece moved
+      // (all its points) by 5 tolerances reads well above the tolerance.
+      const double exact = measure_tip_pieces(iso, c.r, ap->pieces, ap->breaks).max();
+      EXPECT_LE(exact, ap->bound + 1e-9) << c.name;
+      EXPECT_GE(exact, 0.5 * worst - 1e-9) << c.name;
+      std::vector<Bezier> wrong = ap->pieces;
+      for (auto& p : wrong[wrong.size() / 2].points) p += Vec3{0, 0, 5 * kTol};
+      EXPECT_GT(measure_tip_pieces(iso, c.r, wrong, ap->breaks).max(), 1.5 * kTol) << c.name;
+    }
+  }
+}
+
 TEST(FlattenSurface, CurveOnASurfaceWithABallEndToolHoldsItsBound) {
   // An S-shaped (u, v) path on the rational cylinder and on a Coons grid,
   // ridden by a ball of radius 4: the bound checked against the tip

@@ -27,6 +27,7 @@
 /// Rational P: P'' = (H'' - w''(P-c) - 2w'P')/w with H = w(P - c) bounded
 /// the same way. Rounding of the vertices adds its displacement, as for
 /// curves.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -58,10 +59,41 @@ struct TipPolyline {
 /// tolerance, or when the normal vanishes on the curve (r > 0).
 TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptions& opt);
 
+/// The tip curve as Bézier pieces that follow it in the same parameter, for
+/// exact-curve output. With r = 0 (or no normals) the pieces are the curve's
+/// own (bound 0). With r > 0, on each piece (split in halves where needed)
+/// the unit normal N = n / |n| is replaced by n / w, w the quadratic that
+/// interpolates |n| at both ends and the middle:
+///   A(t) = P(t) + r (n(t) / w(t) - z),
+/// a rational Bézier piece (numerator w H + r n h - r z w h, weight w h,
+/// for P = H / h; its weights are positive where w's coefficients are).
+/// Its distance to the tip at the same parameter is
+///   r |1 - |n| / w| = r | |n|^2 - w^2 | / (w (|n| + w)) <= r max|D_i| / min(w_i)^2,
+/// D the Bernstein coefficients of n.n - w^2 (convex hull: |D| <= max|D_i|,
+/// w >= min w_i > 0). Pieces are halved until that bound is within `budget`
+/// (at most 12 times); nothing when it cannot be reached.
+struct TipApprox {
+  std::vector<Bezier> pieces;  ///< end to end, 3D
+  std::vector<double> breaks;  ///< pieces.size() + 1 parameters of the curve (0 ... 1)
+  double bound = 0;            ///< proven sup over t of |tip(t) - pieces(t)|
+};
+std::optional<TipApprox> approximate_tip(const SurfaceCurve& c, double radius, double budget);
+
 /// Measures the two-sided distance between the tip curve and a polyline
 /// from flatten_tip(), independently of the bound: true curve points are
 /// evaluated along each polyline segment's parameter range and the extremes
 /// refined by golden-section search (parameters found to about 1e-10).
 Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p);
+
+/// Measures the two-sided distance between the tip curve and a printed
+/// path of curve pieces that follow it in the same parameter (piece j over
+/// [breaks[j], breaks[j+1]] of c's parameter, as approximate_tip() and the
+/// blocks made from it do), independently of any bound: on each piece, 32
+/// points of each curve and their nearest point on the other (golden-section
+/// search in a window of a sixteenth of the piece's interval around the same
+/// parameter), every local maximum among them refined by golden-section
+/// search; the printed curve is evaluated exactly, not sampled into chords.
+Deviation measure_tip_pieces(const SurfaceCurve& c, double radius, std::span<const Bezier> pieces,
+                             std::span<const double> breaks);
 
 }  // namespace bezcam
