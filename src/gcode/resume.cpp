@@ -76,6 +76,10 @@ std::string barrier(const MachineState& st, const GcodeInterpreter::Continuation
   if (c.open_block != ModalMotion::none)
     return "it is inside the " + motion_word(c.open_block) + " NURBS block that starts at line " +
            std::to_string(c.open_line) + ", which cannot be entered in the middle";
+  if (st.cutter_comp != 40)
+    return "cutter radius compensation (G" + std::to_string(st.cutter_comp) + " D" + std::to_string(st.cutter_comp_d) +
+           ") is on there: the tool's offset depends on the moves before it; resume at the lead before the G" +
+           std::to_string(st.cutter_comp) + " line";
   bool names_motion = false, g5 = false;
   for (const auto& [code, text] : ln.g) {
     if (gcode::g_group(code) == GGroup::motion) names_motion = true;
