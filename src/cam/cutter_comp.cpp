@@ -24,6 +24,7 @@ Vec3 unit2(const Vec3& v) {
   return l > 0 ? Vec3{v.x / l, v.y / l, 0} : Vec3{};
 }
 double len2(const Vec3& v) { return std::hypot(v.x, v.y); }
+std::string line_of(const MotionBlock& b) { return b.line > 0 ? " (line " + std::to_string(b.line) + ")" : ""; }
 std::string xy_text(const Vec3& p) { return "X" + fmt_num(std::round(p.x * 1e4) / 1e4) + " Y" + fmt_num(std::round(p.y * 1e4) / 1e4); }
 
 // Unit tangent of a line or arc at its start or end (XY).
@@ -196,11 +197,11 @@ std::vector<MotionBlock> CutterComp::release(const MotionBlock* next) {
   if (!is_arc(p)) {
     if (dot2(end - start, t1) <= 0 && len2(end - start) > 1e-9 * std::max(1.0, r_))
       throw CompensationError("cutter compensation would gouge: the move to " + xy_text(p.to) +
-                              " is too short for the tool radius " + fmt_num(r_) + " on the inside of its corners");
+                              line_of(p) + " is too short for the tool radius " + fmt_num(r_) + " on the inside of its corners");
   } else {
     const double rad = len2(flat(p.to) - flat(p.center)) + radius_change(p, side_, r_);
     if (rad <= 1e-9 * std::max(1.0, r_))
-      throw CompensationError("the arc to " + xy_text(p.to) + " has a radius not larger than the tool radius " + fmt_num(r_) +
+      throw CompensationError("the arc to " + xy_text(p.to) + line_of(p) + " has a radius not larger than the tool radius " + fmt_num(r_) +
                               " on its inside: the tool cannot follow it");
     const double want = programmed_sweep(p);
     const double got = sweep_between(p, start, end);
@@ -208,7 +209,7 @@ std::vector<MotionBlock> CutterComp::release(const MotionBlock* next) {
     // hair off the arc's own start angle is the controller's to absorb).
     if (got > want + 1e-6 && got > 0.5 * (want + kTwoPi) && len2(end - start) > 1e-9 * std::max(1.0, r_))
       throw CompensationError("cutter compensation would gouge: the arc to " + xy_text(p.to) +
-                              " is too short for the tool radius " + fmt_num(r_) + " on the inside of its corners");
+                              line_of(p) + " is too short for the tool radius " + fmt_num(r_) + " on the inside of its corners");
   }
   p.from = {start.x, start.y, p.from.z};
   p.to = {end.x, end.y, p.to.z};

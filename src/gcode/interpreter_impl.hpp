@@ -107,6 +107,7 @@ struct GcodeInterpreter::Impl {
   // Hands a programmed block to cutter compensation; its output to `out`.
   void emit(const MotionBlock& b);
   void emit_all(std::vector<MotionBlock> blocks);
+  void comp_off();  // G40 or the program's end: the move compensation holds
   void cutter_comp(int code);
 
   // ---- motions (reader.cpp)

@@ -208,7 +208,7 @@ void GcodeInterpreter::Impl::run_modal() {
   for (const auto& [c, t] : ln.m)
     if (c == 2 || c == 30) {
       // The end of the program turns compensation off (LinuxCNC, Fanuc).
-      emit_all(mo.comp.finish());
+      comp_off();
       st.cutter_comp = 40;
       st.program_end = true;
       mo.end_line = line;

@@ -141,6 +141,14 @@ void GcodeInterpreter::Impl::emit_all(std::vector<MotionBlock> blocks) {
   for (auto& b : blocks) out.push_back(std::move(b));
 }
 
+void GcodeInterpreter::Impl::comp_off() {
+  try {
+    emit_all(mo.comp.off());
+  } catch (const CompensationError& e) {
+    fail(errc::gcode_cutter_comp, e.what());
+  }
+}
+
 void GcodeInterpreter::Impl::emit(const MotionBlock& b) {
   try {
     emit_all(mo.comp.push(b));
@@ -152,7 +160,7 @@ void GcodeInterpreter::Impl::emit(const MotionBlock& b) {
 // G40, G41 / G42 with D (default: the tool in the spindle, as LinuxCNC).
 void GcodeInterpreter::Impl::cutter_comp(int code) {
   if (code == 400) {
-    emit_all(mo.comp.off());
+    comp_off();
     st.cutter_comp = 40;
     st.cutter_comp_d = 0;
     st.cutter_comp_radius = 0;
@@ -417,6 +425,19 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
   try {
     im.run(text);
   } catch (...) {
+    // A line compensation cannot follow turns compensation off, so that
+    // lint reports it once and reads on.
+    bool comp_error = false;
+    try {
+      throw;
+    } catch (const InputError& e) {
+      comp_error = e.id() == errc::gcode_cutter_comp;
+    } catch (...) {
+    }
+    if (comp_error) {
+      more_.comp = CutterComp{};
+      state_.cutter_comp = 40;
+    }
     // more_ kept every scalar (moving copies them); give the lists back.
     Impl::Lists& back = im.saved;
     if (!im.lists_saved) {
@@ -451,7 +472,11 @@ std::vector<MotionBlock> GcodeInterpreter::finish() {
                     ": close it with G5.3";
     throw InputError(errc::gcode_nurbs_open, Place::at_line(std::max(more_.last_line, 1)), msg);
   }
-  return more_.comp.finish();  // the move compensation still holds
+  try {
+    return more_.comp.finish();  // the move compensation still holds
+  } catch (const CompensationError& e) {
+    throw InputError(errc::gcode_cutter_comp, Place::at_line(std::max(more_.last_line, 1)), e.what());
+  }
 }
 
 std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile* profile) {
