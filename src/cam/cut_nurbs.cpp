@@ -96,7 +96,7 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
       double scale = 0;
       for (const auto& p : b.ctrl) scale = std::max(scale, max_abs(p));
       const double sample_tol = std::max(kSampleShare * c.tolerance, 1e-11 * std::max(scale, 1.0));
-      const auto f = flatten(b.printed, {sample_tol, -1}).points;
+      const auto f = flatten(b.printed, {.tolerance = sample_tol, .decimals = -1, .on_curve = true}).points;
       path.insert(path.end(), f.begin() + 1, f.end());
     }
   }

@@ -118,7 +118,7 @@ std::vector<Vec3> dense_path(const std::vector<Move>& moves, size_t from, size_t
       std::vector<Bezier> pieces;
       if (c->form == CurveMove::Form::bezier) pieces.push_back(Bezier::make(ctrl, {}, 2));
       else pieces = to_bezier(NurbsCurve::make(c->order - 1, ctrl, c->knots, c->weights, 2));
-      const auto pts = flatten(pieces, {sag, -1}).points;
+      const auto pts = flatten(pieces, {.tolerance = sag, .decimals = -1, .on_curve = true}).points;
       for (size_t k = 1; k < pts.size(); ++k) add(pts[k]);
       cur = c->to;
     } else if (const auto* m = motion_of(mv)) {
@@ -380,7 +380,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       // part too near) would cut it: said, with how near it comes.
       if (side != 0) {
         for (const auto* lead : {&in, &out}) {
-          const auto pts = flatten(*lead, {0.01 * tol, -1}).points;
+          const auto pts = flatten(*lead, {.tolerance = 0.01 * tol, .decimals = -1, .on_curve = true}).points;
           const std::vector<std::vector<Bezier>> curves{part};
           const double near = measure_offset(curves, pts, radius, 0, tol, 0.05 * tol).min_distance;
           if (near < radius - tol)
