@@ -4,8 +4,8 @@
 /// vertices to the printed decimals, is at most the tolerance.
 ///
 /// Method (bezcam's own; see docs/flattening.md):
-///  * Vertices lie on the curve (before rounding). For a chord [A, B] =
-///    [M(t0), M(t1)] the distance of the sub-curve to the chord is bounded
+///  * With `on_curve`, vertices lie on the curve (before rounding). For a
+///    chord [A, B] = [M(t0), M(t1)] the distance of the sub-curve to the chord is bounded
 ///    by `chord_deviation()`, which is exact (closed form) for polynomial
 ///    pieces of degree <= 3 and a rigorous convex-hull branch-and-bound bound
 ///    otherwise. Because the sub-curve runs continuously from A to B, its
