@@ -105,7 +105,7 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
     r.bound = std::max(r.bound, b.bound);
     // The printed curve, densely, for the independent measurement.
     if (c.measure) {
-      const auto f = flatten(b.printed, {exact_sample_tolerance(b, c.tolerance), -1}).points;
+      const auto f = flatten(b.printed, {.tolerance = exact_sample_tolerance(b, c.tolerance), .decimals = -1, .on_curve = true}).points;
       path.insert(path.end(), f.begin() + 1, f.end());
     }
   }

@@ -119,7 +119,7 @@ std::vector<Vec3> dense_path(const std::vector<Move>& moves, size_t from, size_t
       std::vector<Bezier> pieces;
       if (c->form == CurveMove::Form::bezier) pieces.push_back(Bezier::make(ctrl, {}, 2));
       else pieces = to_bezier(NurbsCurve::make(c->order - 1, ctrl, c->knots, c->weights, 2));
-      const auto pts = flatten(pieces, {sag, -1}).points;
+      const auto pts = flatten(pieces, {.tolerance = sag, .decimals = -1, .on_curve = true}).points;
       for (size_t k = 1; k < pts.size(); ++k) add(pts[k]);
       cur = c->to;
     } else if (const auto* m = motion_of(mv)) {
@@ -180,7 +180,7 @@ std::vector<Vec3> even_chords(std::span<const Bezier> pieces, double tol, int de
     const Bezier& b = pieces[k];
     std::vector<double> ts;
     std::vector<Vec3> greedy;
-    const double gb = flatten_pieces(std::span<const Bezier>(&b, 1), FlattenOptions{tol, dec}, [&](const FlatVertex& v) {
+    const double gb = flatten_pieces(std::span<const Bezier>(&b, 1), FlattenOptions{.tolerance = tol, .decimals = dec, .on_curve = true}, [&](const FlatVertex& v) {
       ts.push_back(v.t);
       greedy.push_back(v.point);
     });
@@ -557,7 +557,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       // part too near) would cut it: said, with how near it comes.
       if (side != 0) {
         for (const auto* lead : {&in, &out}) {
-          const auto pts = flatten(*lead, {0.01 * tol, -1}).points;
+          const auto pts = flatten(*lead, {.tolerance = 0.01 * tol, .decimals = -1, .on_curve = true}).points;
           const std::vector<std::vector<Bezier>> curves{part};
           double near = measure_offset(curves, pts, radius, 0, tol, 0.05 * tol).min_distance + tool_r;
           // Under compensation the lead line's outer end is where the tool

@@ -1,6 +1,7 @@
 #include "bezcam/flatten/flatten_curve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "bezcam/error.hpp"
+#include "bezcam/flatten/degree_reduce.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "flatten/search.hpp"
 
@@ -149,6 +151,38 @@ double hull_chord_deviation(const Bezier& sub, const Vec3& A, const Vec3& B, dou
   });
 }
 
+// sup_t |D(t)| for the polynomial cubic D with control points d, decided
+// against `budget`: D(t) is a convex combination of the d_k, so |D| <=
+// max |d_k| (split at 1/2 until that is within the budget). Returns that
+// proven bound when it is <= budget, infinity when a value of D is over
+// the budget or `depth` splits do not decide.
+double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
+  const double ub = std::max({norm(d[0]), norm(d[1]), norm(d[2]), norm(d[3])});
+  if (ub <= budget) return ub;
+  if (norm(d[0]) > budget || norm(d[3]) > budget || depth == 0) return kInf;
+  const Vec3 a = (d[0] + d[1]) * 0.5, b = (d[1] + d[2]) * 0.5, c = (d[2] + d[3]) * 0.5;
+  const Vec3 ab = (a + b) * 0.5, bc = (b + c) * 0.5, m = (ab + bc) * 0.5;
+  if (norm(m) > budget) return kInf;
+  const double l = cubic_within({d[0], a, ab, m}, budget, depth - 1);
+  if (!(l <= budget)) return kInf;
+  return std::max(l, cubic_within({m, bc, c, d[3]}, budget, depth - 1));
+}
+
+// band_deviation() on a sub-curve already cut out: L has the sub-curve's
+// degree and weights, its ends A and B, its inner points the projections
+// of the sub-curve's on the line AB clamped to the segment. L lies on the
+// segment (convex hull) and runs from A to B, so it covers the segment:
+// sup |sub - L| bounds both directions of the Hausdorff distance.
+double band_bound(const Bezier& sub, const Vec3& A, const Vec3& B, double budget) {
+  Bezier L = sub;
+  const Vec3 ab = B - A;
+  const double l2 = dot(ab, ab);
+  for (auto& p : L.points) p = A + ab * (l2 > 0 ? std::clamp(dot(p - A, ab) / l2, 0.0, 1.0) : 0.0);
+  L.points.front() = A;
+  L.points.back() = B;
+  return parametric_distance(sub, L, budget);
+}
+
 // Uniform step that Wang's formula proves safe for a polynomial piece.
 double wang_step(const Bezier& b, double tol) {
   const auto& P = b.points;
@@ -215,6 +249,55 @@ struct Prepared {
     return hull_chord_deviation(subcurve(*b, t0, t1), A, B, budget);
   }
 
+  // The piece on [t0, t1] as a Bézier curve of its own (the cubic from its
+  // power form: end points and end tangents).
+  Bezier sub(double t0, double t1) const {
+    if (!cubic) return subcurve(*b, t0, t1);
+    const double h = (t1 - t0) / 3;
+    const Vec3 A = point(t0), B = point(t1);
+    Bezier s;
+    s.dim = b->dim;
+    s.points = {A, A + tangent(t0) * h, B - tangent(t1) * h, B};
+    return s;
+  }
+
+  // Unit vector at t across the curve towards its convex side (away from
+  // the centre of curvature); zero where there is none (a straight stretch,
+  // an inflection, a stationary point).
+  Vec3 convex_side(double t) const {
+    Vec3 d1, d2;
+    if (cubic) {
+      d1 = tangent(t);
+      d2 = c3 * (6 * t) + c2 * 2;
+    } else {
+      d1 = derivative(*b, t);
+      d2 = second_derivative(*b, t);
+    }
+    const double s2 = dot(d1, d1);
+    if (!(s2 > 0)) return {};
+    const Vec3 n = d2 - d1 * (dot(d1, d2) / s2);
+    const double ln = norm(n);
+    // Curvature |n| / |M'|^2 below 1e-12 of the turning the piece can
+    // make: no side to speak of.
+    if (!(ln > 1e-12 * norm(d2)) || !std::isfinite(ln)) return {};
+    return n / -ln;
+  }
+
+  // band_deviation() of the piece on [t0, t1]; for cubics with a budget,
+  // decided on the difference cubic directly (cubic_within()).
+  double band(double t0, double t1, const Vec3& A, const Vec3& B, double budget) const {
+    if (!cubic || budget < 0) return band_bound(sub(t0, t1), A, B, budget);
+    const Bezier s = sub(t0, t1);
+    const Vec3 ab = B - A;
+    const double l2 = dot(ab, ab);
+    std::array<Vec3, 4> d;
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 L = k == 0 ? A : k == 3 ? B : A + ab * (l2 > 0 ? std::clamp(dot(s.points[k] - A, ab) / l2, 0.0, 1.0) : 0.0);
+      d[k] = s.points[k] - L;
+    }
+    return cubic_within(d, budget, 40);
+  }
+
   // First guess for a piece: from the local parabola at the start, refined
   // once at the middle of the guessed chord; Wang's uniform step otherwise.
   double first_step(double budget) const {
@@ -237,6 +320,10 @@ double chord_deviation(const Bezier& piece, double t0, double t1, double budget)
   return p.deviation(t0, t1, p.point(t0), p.point(t1), budget);
 }
 
+double band_deviation(const Bezier& piece, double t0, double t1, const Vec3& A, const Vec3& B, double budget) {
+  return Prepared(piece).band(t0, t1, A, B, budget);
+}
+
 double estimate_segments(std::span<const Bezier> pieces, double tolerance) {
   // Gauss-Legendre nodes would do no better on the kinks of a wild piece;
   // midpoints avoid the ends, where a cusp makes the integrand singular.
@@ -257,6 +344,106 @@ double estimate_segments(std::span<const Bezier> pieces, double tolerance) {
   }
   return total;
 }
+
+namespace {
+
+// A vertex is moved off the curve by this share of what the tolerance
+// leaves after the margin and the worst rounding (pieces ends stay on it).
+constexpr double kBandShare = 0.96;
+// A band chord is accepted once its parameter step is within this share of
+// one known not to fit.
+constexpr double kBandClose = 0.97;
+// First step of the search from the predicted chord: 1 / 1.03 > 0.97, so a
+// good prediction is settled by two tries.
+constexpr double kBandStep = 0.03;
+
+// The band (docs/flattening.md): from vertex A (at parameter t0 of the
+// piece, maybe off the curve), the vertex B across from the largest t1 whose
+// chord band_deviation() proves within the budget; B = M(t1) + delta n(t1),
+// n towards the convex side, delta = kBandShare of tol - margin - rounding,
+// or delta = 0 when that chord fails (inflections) and at the piece's end.
+// `Ar` is the rounded first vertex, already emitted.
+template <class Emit>
+double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, const ToleranceBudget& tb, Vec3 Ar,
+                  Emit&& emit) {
+  const double tol = opt.tolerance, margin = tb.margin;
+  // Room for the offset: the next chord starts there, and whatever its
+  // other end's rounding, a short enough chord from here fits.
+  const double shift = kBandShare * (tol - margin - tb.rounding);
+  double bound = 0;
+  struct Chord {
+    double t1 = 0, dev = 0, disp = 0;
+    Vec3 B, Br;
+    bool on = false;  // B on the curve
+  };
+  for (size_t pi = 0; pi < pieces.size(); ++pi) {
+    const Prepared P(pieces[pi]);
+    Vec3 A = pieces[pi].front();
+    double dispA = dist(Ar, A);  // includes the tiny gap at a path joint
+    double t0 = 0;
+    // A band chord from an end on the curve is about sqrt(1.5) times as long.
+    double dt = 1.2 * P.first_step(tol - margin - dispA);
+    auto try_chord = [&](double t1, Chord& c, bool zero) {
+      const Vec3 on = P.point(t1);
+      const Vec3 side = t1 < 1 ? P.convex_side(t1) : Vec3{};
+      for (const double delta : {shift, 0.0}) {
+        if (delta == 0 && !zero) continue;
+        if (delta > 0 && !(norm(side) > 0)) continue;
+        const Vec3 B = on + side * delta;
+        const Vec3 Br = opt.decimals < 0 ? B : quantize(B, opt.decimals);
+        const double disp = std::max(dispA, opt.decimals < 0 ? 0.0 : dist(Br, B));
+        const double budget = tol - margin - disp;
+        if (!(budget > 0)) continue;
+        const double dev = P.band(t0, t1, A, B, budget);
+        if (dev <= budget) {
+          c = {t1, dev, disp, B, Br, delta == 0};
+          return true;
+        }
+      }
+      return false;
+    };
+    while (t0 < 1) {
+      double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
+      bool found = false;
+      Chord best, c;
+      // Steps of 3 %, doubling until the answer changes, then bisection.
+      double step = kBandStep;
+      for (int iter = 0; iter < 200; ++iter) {
+        const bool last = dt >= 1 - t0;
+        if (last) dt = 1 - t0;
+        if (try_chord(last ? 1.0 : t0 + dt, c, !found || best.on)) {
+          found = true;
+          lo = dt;
+          best = c;
+          if (last || lo >= kBandClose * hi) break;
+          dt = std::isfinite(hi) ? 0.5 * (lo + hi) : dt * (1 + step);
+        } else {
+          hi = dt;
+          if (found && lo >= kBandClose * hi) break;
+          dt = found ? 0.5 * (lo + hi) : dt / (1 + step);
+        }
+        step = std::min(2 * step, 1.0);
+      }
+      if (!found) throw std::logic_error("flatten: no band chord fits (internal error)");
+      bound = std::max(bound, best.dev + best.disp);
+      emit({best.Br, pi, best.t1});
+      if (best.t1 < 1) {
+        // Next guess: the same step, scaled by the change of bending.
+        double g = 1;
+        const double b0 = P.bend(best.t1 - 0.5 * lo), b1 = P.bend(std::min(1.0, best.t1 + 0.5 * lo));
+        if (b0 > 0 && b1 > 0) g = std::sqrt(b0 / b1);
+        dt = lo * std::clamp(g, 0.25, 2.0);
+      }
+      t0 = best.t1;
+      A = best.B;
+      Ar = best.Br;
+      dispA = dist(Ar, A);
+    }
+  }
+  return bound;
+}
+
+}  // namespace
 
 double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
                       const std::function<void(const FlatVertex&)>& emit) {
@@ -281,8 +468,10 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
     const double step = pc.rational() ? 0 : wang_step(pc, tol - rmax);
     wang += step > 0 ? 1 / step : kInf;
   }
-  const double estimate =
-      wang <= static_cast<double>(opt.max_vertices) ? wang : estimate_segments(pieces, tol - rmax);
+  // The band's chords see a band twice as wide (estimate_segments()).
+  const double estimate = wang <= static_cast<double>(opt.max_vertices)
+                              ? wang
+                              : estimate_segments(pieces, (opt.on_curve ? 1 : 2) * (tol - rmax));
   if (estimate > static_cast<double>(opt.max_vertices))
     throw too_many("about " + (std::isfinite(estimate) ? fmt_num(std::round(estimate)) : std::string("infinitely many")));
   std::size_t emitted = 0;
@@ -294,6 +483,7 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
   double bound = 0;
   Vec3 Ar = quantize(pieces.front().front(), opt.decimals);
   emit_counted({Ar, 0, 0});
+  if (!opt.on_curve) return bound_band(pieces, opt, tb, Ar, emit_counted);
   double dt_hint = -1;
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
     const Prepared P(pieces[pi]);

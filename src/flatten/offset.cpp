@@ -203,7 +203,7 @@ double signed_area(std::span<const Bezier> pieces) {
   for (const auto& b : pieces)
     for (const auto& p : b.points) box.add(p);
   const double size = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y);
-  const auto poly = flatten(pieces, {std::max(size * 1e-5, 1e-9), -1}).points;
+  const auto poly = flatten(pieces, {.tolerance = std::max(size * 1e-5, 1e-9), .decimals = -1, .on_curve = true}).points;
   double a = 0;
   for (size_t i = 0; i + 1 < poly.size(); ++i) a += poly[i].x * poly[i + 1].y - poly[i + 1].x * poly[i].y;
   if (!poly.empty()) a += poly.back().x * poly.front().y - poly.front().x * poly.back().y;

@@ -121,8 +121,11 @@ double tip_chord_bound(const Bezier& point, const Bezier* normal, double radius,
 TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptions& opt) {
   TipPolyline out;
   if (radius == 0 || c.normals.empty()) {
-    // Exact pieces: the curve flattener's proven bound.
-    out.bound = flatten_pieces(c.points, opt, [&](const FlatVertex& v) {
+    // Exact pieces: the curve flattener's proven bound, vertices on the
+    // curve (their parameters are kept).
+    FlattenOptions on = opt;
+    on.on_curve = true;
+    out.bound = flatten_pieces(c.points, on, [&](const FlatVertex& v) {
       out.points.push_back(v.point);
       out.params.push_back(global_of(c, v.piece, v.t));
     });

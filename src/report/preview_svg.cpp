@@ -119,13 +119,13 @@ DenseCurve dense_curve(const Entity& e, const Shape& sh, double tol) {
   // the sampling error negligible next to what is measured.
   for (double frac : {1e-3, 1e-2}) {
     try {
-      d.pts = flatten(pc, FlattenOptions{tol * frac, -1}).points;
+      d.pts = flatten(pc, FlattenOptions{.tolerance = tol * frac, .decimals = -1, .on_curve = true}).points;
       return d;
     } catch (const InputError&) {
       // Too fine for double precision at these coordinates: coarser.
     }
   }
-  d.pts = flatten(pc, FlattenOptions{tol * 0.1, -1}).points;
+  d.pts = flatten(pc, FlattenOptions{.tolerance = tol * 0.1, .decimals = -1, .on_curve = true}).points;
   return d;
 }
 
@@ -1039,9 +1039,9 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   if (in.tolerance > 0) draw_tol = std::min(draw_tol, in.tolerance / 20);
   auto sample_chain = [&](const std::vector<Bezier>& chain) {
     try {
-      return flatten(chain, FlattenOptions{draw_tol, -1}).points;
+      return flatten(chain, FlattenOptions{.tolerance = draw_tol, .decimals = -1, .on_curve = true}).points;
     } catch (const InputError&) {  // finer than double precision allows
-      return flatten(chain, FlattenOptions{0.2 / smax, -1}).points;
+      return flatten(chain, FlattenOptions{.tolerance = 0.2 / smax, .decimals = -1, .on_curve = true}).points;
     }
   };
   std::vector<std::vector<std::vector<Vec3>>> chain_pts(shapes.size());

@@ -79,7 +79,9 @@ TEST(OutputArcs, RefusedByAMachineWithoutArcs) {
 TEST(OutputArcs, NonPlanarCurveStaysG01) {
   const auto r = run(job_of(kTwisted), "generic", OutputMode::arcs);
   EXPECT_EQ(count_matching(r.gcode, std::regex(R"(G0?[23] )")), 0u);
-  EXPECT_EQ(r.program.entities[0].blocks, run(job_of(kTwisted), "generic", OutputMode::lines).program.entities[0].blocks);
+  // The arc fitter's lines are on-curve chords; lines output uses the band
+  // (docs/flattening.md), which needs no more.
+  EXPECT_LE(run(job_of(kTwisted), "generic", OutputMode::lines).program.entities[0].blocks, r.program.entities[0].blocks);
 }
 
 TEST(OutputNurbs, FanucBlockIsWordedAsTheDialectPageSays) {

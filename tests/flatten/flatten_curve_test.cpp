@@ -260,8 +260,10 @@ TEST(Flatten, TheMeasurementAgreesWithBruteForce) {
 }
 
 TEST(Flatten, TheMeasurementCatchesAMovedVertex) {
-  // Every interior vertex in turn moved by twice the tolerance across the
-  // path: the measurement must read over the tolerance each time.
+  // Every interior vertex in turn moved by three times the tolerance across
+  // the path (a band vertex may already stand almost the tolerance off the
+  // curve on the other side): the measurement must read well over the
+  // tolerance each time.
   const double tol = 0.01;
   for (const Bezier& b : hard_curves()) {
     const FlattenResult r = flatten(b, {tol, 3});
@@ -269,10 +271,10 @@ TEST(Flatten, TheMeasurementCatchesAMovedVertex) {
     for (size_t k = 1; k + 1 < r.points.size(); ++k) {
       std::vector<Vec3> moved = r.points;
       const Vec3 along = norm(moved[k + 1] - moved[k - 1]) > 0 ? moved[k + 1] - moved[k - 1] : Vec3{1, 0};
-      const Vec3 across = Vec3{-along.y, along.x} * (2 * tol / norm(along));
+      const Vec3 across = Vec3{-along.y, along.x} * (3 * tol / norm(along));
       moved[k] += across;
       const double d = measure_deviation(std::span<const Bezier>(&b, 1), moved, tol).max();
-      EXPECT_GT(d, 1.5 * tol) << "vertex " << k << " of " << r.points.size() << " moved by " << 2 * tol;
+      EXPECT_GT(d, 1.5 * tol) << "vertex " << k << " of " << r.points.size() << " moved by " << 3 * tol;
     }
   }
 }
@@ -296,18 +298,188 @@ TEST(Flatten, NearTheGreedyMinimumOnTheSharedCorpus) {
   std::ifstream in(std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json");
   if (!in) GTEST_SKIP() << "shared corpus not found at " << BEZCAM_SHARED_DIR;
   const auto doc = nlohmann::json::parse(in);
-  size_t ours = 0, greedy = 0, over = 0, n = 0;
+  // The band (default) at most 0.85 times the greedy on-curve minimum
+  // (issue 15, item 3); vertices on the curve within 10 % above it.
+  size_t ours = 0, on_curve = 0, greedy = 0, over = 0, n = 0;
   for (size_t i = 0; i < doc["curves"].size(); i += 25) {
     std::vector<Vec3> p;
     for (const auto& q : doc["curves"][i]) p.push_back({q[0].get<double>(), q[1].get<double>()});
     const Bezier b = bz(p);
     const FlattenResult r = flatten(b, {0.01, -1});
+    const FlattenResult on = flatten(b, {.tolerance = 0.01, .decimals = -1, .on_curve = true});
     ours += r.points.size() - 1;
+    on_curve += on.points.size() - 1;
     greedy += greedy_count(b, 0.01);
     over += measure_deviation(std::span<const Bezier>(&b, 1), r.points, 0.01).max() > 0.01;
+    over += measure_deviation(std::span<const Bezier>(&b, 1), on.points, 0.01).max() > 0.01;
     ++n;
   }
   EXPECT_EQ(over, 0u);
-  EXPECT_LE(double(ours), 1.10 * greedy) << ours << " segments against a greedy minimum of " << greedy;
-  RecordProperty("ratio_to_greedy", std::to_string(double(ours) / greedy));
+  EXPECT_LE(double(ours), 0.85 * greedy) << ours << " band segments against a greedy on-curve minimum of " << greedy;
+  EXPECT_LE(double(on_curve), 1.10 * greedy) << on_curve << " segments against a greedy minimum of " << greedy;
+  RecordProperty("band_ratio_to_greedy", std::to_string(double(ours) / greedy));
+  RecordProperty("on_curve_ratio_to_greedy", std::to_string(double(on_curve) / greedy));
+}
+
+// ---- The band (default): vertices off the curve, on its convex side ----
+
+namespace {
+
+// The point of the curve nearest to v, by brute force: 20,000 samples,
+// then 4,000 around the nearest (a step of 5e-8 in t).
+Vec3 foot_on(const Bezier& b, const Vec3& v) {
+  double m = HUGE_VAL, at = 0;
+  for (int i = 0; i <= 20000; ++i) {
+    const double d = dist(evaluate(b, i / 20000.0), v);
+    if (d < m) m = d, at = i / 20000.0;
+  }
+  Vec3 foot = evaluate(b, at);
+  for (int i = -2000; i <= 2000; ++i) {
+    const Vec3 p = evaluate(b, std::clamp(at + i * 5e-8, 0.0, 1.0));
+    if (dist(p, v) < m) m = dist(p, v), foot = p;
+  }
+  return foot;
+}
+
+// The largest distance of a polyline vertex from the curve: how far the
+// band moved the vertices.
+double farthest_vertex(const Bezier& b, const std::vector<Vec3>& poly) {
+  double far = 0;
+  for (const Vec3& v : poly) far = std::max(far, dist(foot_on(b, v), v));
+  return far;
+}
+
+// Brute force without trusting the flattener: 20,000 curve points against
+// every segment, 400 points of every segment against the curve's dense
+// chain (brute_deviation()), for a one-piece curve.
+void expect_band_within(const Bezier& b, double tol, int decimals, const char* what) {
+  const FlattenResult r = flatten(b, {tol, decimals});
+  ASSERT_GE(r.points.size(), 2u) << what;
+  EXPECT_EQ(r.points.front(), quantize(b.front(), decimals)) << what << ": the start stays exact";
+  EXPECT_EQ(r.points.back(), quantize(b.back(), decimals)) << what << ": the end stays exact";
+  EXPECT_LE(r.bound, tol) << what;
+  const Deviation d = brute_deviation(b, r.points);
+  // The dense chain is within about 1e-3 of the tolerance of the curve.
+  EXPECT_LE(d.curve_to_path, tol * 1.002) << what;
+  EXPECT_LE(d.path_to_curve, tol * 1.002) << what;
+  EXPECT_LE(measure_deviation(std::span<const Bezier>(&b, 1), r.points, tol).max(), tol) << what;
+}
+
+}  // namespace
+
+TEST(Band, ChordsWithinToleranceByDenseSamplingBothWays) {
+  const double tol = 0.01;
+  expect_band_within(bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}}), tol, -1, "quarter circle, cubic");
+  expect_band_within(bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}), tol, 3, "two inflections");
+  expect_band_within(bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}), tol, 3, "loop");
+  expect_band_within(bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}), tol, 3, "cusp-like");
+  expect_band_within(bz({{10, 0}, {10, 10}, {0, 10}}, {1, std::sqrt(0.5), 1}), tol, 4, "rational quarter circle");
+  expect_band_within(bz({{0, 0}, {5, 10}, {10, 0}}, {1, 20, 1}), tol, 4, "rational, strong weight");
+  expect_band_within(bz({{0, 0}, {8, 3}, {2, 9}, {-4, 1}, {6, -5}, {12, 4}}), tol, 4, "degree 5");
+  expect_band_within(bz({{0, 0}, {0, 2}, {1.5, 3}, {3, 3}}), 1e-4, -1, "tiny tolerance");
+  expect_band_within(bz({{0, 0}, {0, 2}, {1.5, 3}, {3, 3}}), 2e-3, 4, "small tolerance, rounding");
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> c(-40, 40), w(0.3, 3);
+  for (int i = 0; i < 5; ++i) {
+    std::vector<Vec3> p;
+    std::vector<double> ws;
+    for (int k = 0; k <= 3; ++k) p.push_back({c(rng), c(rng)}), ws.push_back(w(rng));
+    expect_band_within(bz(p, i % 3 == 0 ? ws : std::vector<double>{}), tol, 3, "random");
+  }
+}
+
+TEST(Band, VerticesReallyLeaveTheCurveButEndsAndJointsStayExact) {
+  const double tol = 0.01;
+  const Bezier q = bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}});
+  const FlattenResult r = flatten(q, {tol, -1});
+  const double far = farthest_vertex(q, r.points);
+  EXPECT_GT(far, 0.8 * tol) << "the band is used";
+  EXPECT_LE(far, tol);
+  // Inner vertices lie outside the circle-like arc (its convex side).
+  const Vec3 centre{100, 0};
+  for (size_t k = 1; k + 1 < r.points.size(); ++k) EXPECT_GT(dist(r.points[k], centre), 99.9) << k;
+  // A path of pieces: every joint is a vertex, exactly (within rounding).
+  const std::vector<Bezier> path = {bz({{0, 0}, {10, 20}, {30, 20}, {40, 0}}), bz({{40, 0}, {50, -20}, {70, -20}, {80, 0}})};
+  std::vector<FlatVertex> seen;
+  flatten_pieces(path, {tol, 3}, [&](const FlatVertex& v) { seen.push_back(v); });
+  size_t joints = 0;
+  for (const auto& v : seen) {
+    if (v.t != 1.0) continue;
+    EXPECT_EQ(v.point, quantize(path[v.piece].back(), 3));
+    ++joints;
+  }
+  EXPECT_EQ(joints, 2u);
+  EXPECT_EQ(seen.front().point, quantize(path.front().front(), 3));
+}
+
+TEST(Band, BeatsTheOnCurveGreedyMinimumOnACircle) {
+  // A full circle of radius 50 as four rational quarters, and a cubic
+  // quarter circle of radius 100: the band needs at least 20 % fewer
+  // chords than the greedy maximal on-curve chords (asymptotically 29 %).
+  const double tol = 0.01, s = std::sqrt(0.5);
+  const std::vector<Bezier> circle = {bz({{50, 0}, {50, 50}, {0, 50}}, {1, s, 1}), bz({{0, 50}, {-50, 50}, {-50, 0}}, {1, s, 1}),
+                                      bz({{-50, 0}, {-50, -50}, {0, -50}}, {1, s, 1}), bz({{0, -50}, {50, -50}, {50, 0}}, {1, s, 1})};
+  size_t greedy = 0;
+  for (const auto& b : circle) greedy += greedy_count(b, tol);
+  const size_t band = flatten(circle, {tol, -1}).points.size() - 1;
+  EXPECT_LE(double(band), 0.8 * greedy) << band << " band chords against " << greedy << " greedy on-curve ones";
+  const Bezier q = bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}});
+  const size_t band_q = flatten(q, {tol, -1}).points.size() - 1;
+  EXPECT_LE(double(band_q), 0.8 * greedy_count(q, tol)) << band_q;
+  // Vertices on the curve stay near the greedy minimum, never below it.
+  const size_t on = flatten(q, {.tolerance = tol, .decimals = -1, .on_curve = true}).points.size() - 1;
+  EXPECT_GE(on, greedy_count(q, tol));
+  EXPECT_LE(double(on), 1.05 * greedy_count(q, tol));
+}
+
+TEST(Band, TheMeasurementCatchesABandVertexPushedTooFar) {
+  // Each inner vertex of a band flattening, pushed further out from the
+  // curve (along its own offset) to 1.05 times the tolerance: the
+  // independent measurement reads over the tolerance every time.
+  const double tol = 0.01;
+  const Bezier b = bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}});
+  const FlattenResult r = flatten(b, {tol, -1});
+  ASSERT_GE(r.points.size(), 5u);
+  size_t checked = 0;
+  for (size_t k = 1; k + 1 < r.points.size(); k += 3) {
+    const Vec3 foot = foot_on(b, r.points[k]);
+    const double m = dist(foot, r.points[k]);
+    if (m < 0.5 * tol) continue;  // a vertex the band left near the curve
+    std::vector<Vec3> pushed = r.points;
+    pushed[k] = foot + (r.points[k] - foot) * (1.05 * tol / m);
+    EXPECT_GT(measure_deviation(std::span<const Bezier>(&b, 1), pushed, tol).max(), tol) << "vertex " << k;
+    ++checked;
+  }
+  EXPECT_GT(checked, 5u);
+}
+
+TEST(Band, BandDeviationBoundsTheTrueDistanceForAnyEnds) {
+  // band_deviation() for chords whose ends are off the curve, in any
+  // direction: never below a brute-force two-sided distance.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> c(-20, 20), off(-0.3, 0.3), w(0.3, 3), tt(0, 1);
+  for (int i = 0; i < 200; ++i) {
+    std::vector<Vec3> p;
+    std::vector<double> ws;
+    for (int k = 0; k <= 3; ++k) p.push_back({c(rng), c(rng)}), ws.push_back(w(rng));
+    const Bezier b = bz(p, i % 2 ? ws : std::vector<double>{});
+    double t0 = tt(rng), t1 = tt(rng);
+    if (t0 > t1) std::swap(t0, t1);
+    t1 = std::min(1.0, t0 + 0.1 * (t1 - t0));
+    const Vec3 A = evaluate(b, t0) + Vec3{off(rng), off(rng)}, B = evaluate(b, t1) + Vec3{off(rng), off(rng)};
+    std::vector<Vec3> arc(2001);
+    for (size_t k = 0; k < arc.size(); ++k) arc[k] = evaluate(b, t0 + (t1 - t0) * k / 2000.0);
+    double brute = 0;
+    for (const Vec3& x : arc) brute = std::max(brute, dist_to_segment(x, A, B));
+    for (int k = 0; k <= 2000; ++k) {
+      const Vec3 x = lerp(A, B, k / 2000.0);
+      double m = HUGE_VAL;
+      for (size_t j = 0; j + 1 < arc.size(); ++j) m = std::min(m, dist_to_segment(x, arc[j], arc[j + 1]));
+      brute = std::max(brute, m);
+    }
+    EXPECT_GE(band_deviation(b, t0, t1, A, B), brute - 1e-5) << "curve " << i;
+    // With a budget just below the truth, the answer is never "within".
+    const double below = brute * (1 - 1e-4) - 1e-5;
+    EXPECT_GT(band_deviation(b, t0, t1, A, B, below), below) << "curve " << i;
+  }
 }

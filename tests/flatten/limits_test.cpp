@@ -56,14 +56,18 @@ TEST(Limits, ACurveTooLongForItsToleranceIsRefusedBeforeTheWork) {
 
 TEST(Limits, TheEstimateIsCloseToTheCountAndTheCountIsCheckedToo) {
   // A semicircle of radius 10 (two rational quarters): the estimate is the
-  // greedy count to within a few per cent.
+  // count to within 10 %: at twice the tolerance for the band (the default,
+  // whose chords may use the tolerance on both sides of the curve), at the
+  // tolerance with vertices on the curve.
   const double w = std::sqrt(0.5);
   const std::vector<Bezier> arc = {Bezier::make({{10, 0, 0}, {10, 10, 0}, {0, 10, 0}}, {1, w, 1}),
                                    Bezier::make({{0, 10, 0}, {-10, 10, 0}, {-10, 0, 0}}, {1, w, 1})};
   const FlattenResult full = flatten(arc, {0.01, -1});
   const double segments = double(full.points.size() - 1);
-  const double estimate = estimate_segments(arc, 0.01);
+  const double estimate = estimate_segments(arc, 0.02);
   EXPECT_NEAR(estimate, segments, 0.1 * segments);
+  const double on_curve = double(flatten(arc, {.tolerance = 0.01, .decimals = -1, .on_curve = true}).points.size() - 1);
+  EXPECT_NEAR(estimate_segments(arc, 0.01), on_curve, 0.1 * on_curve);
   // A limit the estimate allows but the flattening exceeds: refused while
   // flattening, as soon as the count is passed.
   FlattenOptions o{0.01, -1};

@@ -62,8 +62,16 @@ TEST(NurbsSamples, TheCircleIsACircle) {
   const Vec3 c{60, 50};
   for (const auto& b : g.pieces)
     for (int i = 0; i <= 200; ++i) EXPECT_NEAR(dist(evaluate(b, i / 200.0), c), 40, 1e-12 * 100);
-  // Unrounded vertices of the flattened circle are on it too.
-  for (const auto& p : flatten(g.pieces, {job.tolerance, -1}).points) EXPECT_NEAR(dist(p, c), 40, 1e-12 * 100);
+  // Unrounded vertices of the flattened circle are on it too, when asked
+  // for on the curve.
+  for (const auto& p : flatten(g.pieces, {.tolerance = job.tolerance, .decimals = -1, .on_curve = true}).points)
+    EXPECT_NEAR(dist(p, c), 40, 1e-12 * 100);
+  // The band (default) moves them out, towards the circle's convex side, by
+  // at most the tolerance; the piece ends stay on it.
+  for (const auto& p : flatten(g.pieces, {job.tolerance, -1}).points) {
+    EXPECT_GE(dist(p, c), 40 - 1e-12 * 100);
+    EXPECT_LE(dist(p, c), 40 + job.tolerance);
+  }
   EXPECT_NEAR(g.length(), 80 * M_PI, 1e-8);
 }
 

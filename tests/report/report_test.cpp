@@ -95,13 +95,13 @@ TEST(Report, AgreesWithTheBuiltProgram) {
   EXPECT_EQ(e.report.blocks, p.entities[0].blocks);
   EXPECT_EQ(e.report.measured, p.max_measured);
   EXPECT_LE(e.report.measured, job.tolerance);
-  // The cut is a polygon inscribed in the curve (vertices on it, up to
-  // rounding to 0.001), so it is a little shorter: a chord of length c and
-  // sagitta h <= tolerance misses about 8 h^2 / (3 c) of its arc. With the
-  // plunge from safe_z 5 to cut_z -1.
+  // The cut is a polygon within the tolerance of the curve, crossing it
+  // (band vertices lie outside the curve, chord middles inside): its
+  // length is the curve's to within a few 1e-4 (a chord of length c whose
+  // points stray by h <= tolerance differs from its arc by about
+  // 8 h^2 / (3 c)). With the plunge from safe_z 5 to cut_z -1.
   const double cut = e.motion.feed_length - 6;
-  EXPECT_LT(cut, e.report.length + 1e-3);
-  EXPECT_GT(cut, e.report.length * (1 - 3e-4));
+  EXPECT_NEAR(cut, e.report.length, 3e-4 * e.report.length);
   EXPECT_EQ(e.motion.feed_blocks, e.report.blocks + 1);
   // The start is the first vertex, so the only rapid travel is the final retract.
   EXPECT_DOUBLE_EQ(r.total.rapid_length, 6);

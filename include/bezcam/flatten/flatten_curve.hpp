@@ -4,8 +4,8 @@
 /// vertices to the printed decimals, is at most the tolerance.
 ///
 /// Method (bezcam's own; see docs/flattening.md):
-///  * Vertices lie on the curve (before rounding). For a chord [A, B] =
-///    [M(t0), M(t1)] the distance of the sub-curve to the chord is bounded
+///  * With `on_curve`, vertices lie on the curve (before rounding). For a
+///    chord [A, B] = [M(t0), M(t1)] the distance of the sub-curve to the chord is bounded
 ///    by `chord_deviation()`, which is exact (closed form) for polynomial
 ///    pieces of degree <= 3 and a rigorous convex-hull branch-and-bound bound
 ///    otherwise. Because the sub-curve runs continuously from A to B, its
@@ -17,6 +17,11 @@
 ///  * Chords are chosen greedily, each as long as possible (to within a few
 ///    per cent) under that bound, which keeps the count near the greedy
 ///    maximal-chord minimum while never exceeding the tolerance.
+///  * The band (default): inner vertices move off the curve, up to the
+///    tolerance towards its convex side, and chords get about 1.4 times
+///    longer. Each such chord is proven by band_deviation(): a parametric
+///    distance between the sub-curve and the chord reparametrised as a
+///    Bézier curve of the same degree, which bounds both directions.
 #include <functional>
 #include <span>
 #include <vector>
@@ -35,10 +40,17 @@ struct FlattenOptions {
   /// with InputError "limit.segments", up front when estimate_segments()
   /// predicts it, else as soon as it happens.
   std::size_t max_vertices = kMaxProgramLines;
+  /// false (default): the tolerance is a band on both sides of the curve,
+  /// and inner vertices may leave the curve by up to the tolerance on its
+  /// convex side (docs/flattening.md, "The band"); the ends of every piece
+  /// stay exact. true: every vertex lies on the curve (before rounding), for
+  /// callers that sample a curve or need each vertex's parameter.
+  bool on_curve = false;
 };
 
 /// One emitted vertex: the rounded point, and for diagnostics the piece and
-/// parameter it came from.
+/// parameter it came from (a band vertex lies off the curve, across from
+/// that parameter's point).
 struct FlatVertex {
   Vec3 point;
   size_t piece = 0;
@@ -57,11 +69,22 @@ struct FlattenResult {
 /// proven bound, one above it a proven lower bound of the deviation.
 double chord_deviation(const Bezier& piece, double t0, double t1, double budget = -1);
 
+/// Upper bound of the two-sided (Hausdorff) distance between the piece on
+/// [t0, t1] and the segment [A, B], for any A and B (on the curve or not):
+/// sup_t |M(t) - L(t)|, L the segment as a Bézier curve of the piece's
+/// degree and weights with L(0) = A, L(1) = B and inner control points the
+/// projections of the sub-curve's onto the line AB, clamped to the segment
+/// (parametric_distance(), degree_reduce.hpp). With a `budget` >= 0 the
+/// answer is certain on its side of the budget, as for chord_deviation().
+double band_deviation(const Bezier& piece, double t0, double t1, const Vec3& A, const Vec3& B, double budget = -1);
+
 /// About how many chords a flattening within `tolerance` needs: at least
 /// one per piece, and along a piece the integral of sqrt(k / (8 tolerance))
 /// ds (a chord of length l where the curvature is k deviates by about
 /// k l^2 / 8), sampled at 16 points per piece. Asymptotically exact for
-/// small tolerances, where counts explode; not a bound.
+/// small tolerances, where counts explode; not a bound. That is the count
+/// with vertices on the curve; for the band (FlattenOptions), whose chords
+/// may deviate by the tolerance on either side, pass twice the tolerance.
 double estimate_segments(std::span<const Bezier> pieces, double tolerance);
 
 /// Callback core: emits the vertices of the polyline in order (the first
