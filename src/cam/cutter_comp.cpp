@@ -113,13 +113,14 @@ double programmed_sweep(const MotionBlock& arc) {
   return s <= 1e-12 ? kTwoPi : s;
 }
 
-}  // namespace
-
+// Whether `b` moves in X or Y.
 bool moves_in_xy(const MotionBlock& b) {
   if (b.kind == BlockKind::nurbs || b.kind == BlockKind::bezier) return true;
   if (is_arc(b)) return true;
   return b.from.x != b.to.x || b.from.y != b.to.y;
 }
+
+}  // namespace
 
 void CutterComp::on(int side, double radius) {
   if (side_ != 0)
@@ -232,7 +233,7 @@ std::vector<MotionBlock> CutterComp::release(const MotionBlock* next) {
 std::vector<MotionBlock> CutterComp::push(const MotionBlock& b) {
   const bool xy = moves_in_xy(b);
   if (side_ == 0) {
-    if (!exit_from_) return {b};
+    if (idle()) return {b};
     MotionBlock x = b;
     x.from.x = exit_from_->x;
     x.from.y = exit_from_->y;

@@ -119,6 +119,10 @@ std::vector<MotionBlock> program_motion(const Program& p) {
     b.feed = b.kind == BlockKind::rapid ? 0 : mo->feed;
     pos = to;
     known |= mo->axes;
+    if (comp.idle()) {  // no compensation: the block as it is
+      out.push_back(std::move(b));
+      continue;
+    }
     try {
       add(comp.push(b));
     } catch (const CompensationError& e) {

@@ -150,6 +150,10 @@ void GcodeInterpreter::Impl::comp_off() {
 }
 
 void GcodeInterpreter::Impl::emit(const MotionBlock& b) {
+  if (mo.comp.idle()) {  // no compensation: the block as it is, no copy
+    out.push_back(b);
+    return;
+  }
   try {
     emit_all(mo.comp.push(b));
   } catch (const CompensationError& e) {
@@ -437,6 +441,8 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
     if (comp_error) {
       more_.comp = CutterComp{};
       state_.cutter_comp = 40;
+      state_.cutter_comp_d = 0;
+      state_.cutter_comp_radius = 0;
     }
     // more_ kept every scalar (moving copies them); give the lists back.
     Impl::Lists& back = im.saved;

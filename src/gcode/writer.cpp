@@ -223,7 +223,7 @@ class Writer {
     } else if (const auto* st = std::get_if<ProgramStop>(&mv.what)) {
       line(word("M0", "M00") + " " + comment(st->message));  // the operator's message, even without comments
     } else if (const auto* cc = std::get_if<CompensationMove>(&mv.what)) {
-      line(cc->side == 0 ? word("G40", "G40") : word(cc->side > 0 ? "G41" : "G42", cc->side > 0 ? "G41" : "G42") + " D" + std::to_string(cc->d));
+      line(cc->side == 0 ? std::string("G40") : (cc->side > 0 ? "G41 D" : "G42 D") + std::to_string(cc->d));
     } else if (const auto* a = std::get_if<ArcMove>(&mv.what)) {
       arc(*a);
     } else if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {

@@ -53,6 +53,9 @@ class CutterComp {
   std::vector<MotionBlock> finish() { return off(); }
 
   bool active() const { return side_ != 0; }
+  /// Whether push() would hand `b` back unchanged: compensation is off and
+  /// no exit move is pending. Callers on a hot path skip push() then.
+  bool idle() const { return side_ == 0 && !exit_from_; }
   int side() const { return side_; }
   double radius() const { return r_; }
 
@@ -67,8 +70,5 @@ class CutterComp {
   std::vector<MotionBlock> held_;        ///< Z-only moves after pending_
   std::optional<Vec3> exit_from_;        ///< after off(): the tool's XY until the exit move
 };
-
-/// Whether `b` moves in X or Y.
-bool moves_in_xy(const MotionBlock& b);
 
 }  // namespace bezcam
