@@ -3,111 +3,26 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
+#include <utility>
 #include <vector>
 
-#include "flatten/search.hpp"
-
 namespace bezcam {
-
+long g_cnt[8];
 namespace {
 
-struct Sample {
-  Vec3 p;
-  size_t piece;
-  double t;
-};
-
-// Subdivide until the control polygon is within eps of the chord; keeps
-// on-curve end points with their parameters.
-void sample_piece(const Bezier& b, size_t piece, double t0, double t1, double eps, int depth,
-                  std::vector<Sample>& out) {
-  double flat = 0;
-  for (const auto& p : b.points) flat = std::max(flat, dist_to_segment(p, b.front(), b.back()));
-  if (flat <= eps || depth >= 40) {
-    out.push_back({b.back(), piece, t1});
-    return;
-  }
-  const double tm = 0.5 * (t0 + t1);
-  auto [l, r] = split(b, 0.5);
-  sample_piece(l, piece, t0, tm, eps, depth + 1, out);
-  sample_piece(r, piece, tm, t1, eps, depth + 1, out);
-}
-
-// The same subdivision on the stack, for degrees below 16: the same
-// arithmetic as the kernel's split() (homogeneous cascade at 1/2, points
-// divided back by their weights, weights normalised to a first weight of
-// 1), so the same samples, without two allocations per split.
-struct SmallBezier {
-  int n = 0;
-  bool rational = false;
-  Vec3 p[16];
-  double w[16];
-};
-
-void sample_small(const SmallBezier& b, size_t piece, double t0, double t1, double eps, int depth,
-                  std::vector<Sample>& out) {
-  double flat = 0;
-  for (int i = 0; i <= b.n; ++i) flat = std::max(flat, dist_to_segment(b.p[i], b.p[0], b.p[b.n]));
-  if (flat <= eps || depth >= 40) {
-    out.push_back({b.p[b.n], piece, t1});
-    return;
-  }
-  const int n = b.n;
-  Vec3 qp[16];
-  double qw[16];
-  for (int i = 0; i <= n; ++i) {
-    const double w = b.rational ? b.w[i] : 1.0;
-    qp[i] = b.p[i] * w;
-    qw[i] = w;
-  }
-  Vec3 lp[16], rp[16];
-  double lw[16], rw[16];
-  lp[0] = qp[0], lw[0] = qw[0];
-  rp[n] = qp[n], rw[n] = qw[n];
-  const double t = 0.5, s = 1 - t;
-  for (int r = 1; r <= n; ++r) {
-    for (int i = 0; i <= n - r; ++i) {
-      qp[i] = qp[i] * s + qp[i + 1] * t;
-      qw[i] = qw[i] * s + qw[i + 1] * t;
-    }
-    lp[r] = qp[0], lw[r] = qw[0];
-    rp[n - r] = qp[n - r], rw[n - r] = qw[n - r];
-  }
-  SmallBezier L, R;
-  L.n = R.n = n;
-  L.rational = R.rational = b.rational;
-  for (int i = 0; i <= n; ++i) {
-    L.p[i] = lp[i] / lw[i];
-    R.p[i] = rp[i] / rw[i];
-    if (b.rational) L.w[i] = lw[i] / lw[0], R.w[i] = rw[i] / rw[0];
-  }
-  const double tm = 0.5 * (t0 + t1);
-  sample_small(L, piece, t0, tm, eps, depth + 1, out);
-  sample_small(R, piece, tm, t1, eps, depth + 1, out);
-}
-
-void sample_any(const Bezier& b, size_t piece, double eps, std::vector<Sample>& out) {
-  if (b.degree() + 1 > 16) return sample_piece(b, piece, 0, 1, eps, 0, out);
-  SmallBezier sb;
-  sb.n = b.degree();
-  sb.rational = b.rational();
-  for (int i = 0; i <= sb.n; ++i) {
-    sb.p[i] = b.points[i];
-    sb.w[i] = b.weight(i);
-  }
-  sample_small(sb, piece, 0, 1, eps, 0, out);
-}
-
 // Squared distance from p to the segment [a, b]: the arithmetic of
-// dist_to_segment(), whose value is the square root of this one. Scans
-// compare squares and take one root at the end (the same nearest distance).
+// dist_to_segment(), whose value is the square root of this one.
 inline double dist2_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
   const double len2 = dot(ab, ab);
   const Vec3 q = len2 == 0 ? a : a + ab * std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
   const Vec3 d = p - q;
   return dot(d, d);
+}
+
+// Segment k of a chain of points (a single point: a segment of length 0).
+inline double seg_dist(const Vec3& x, std::span<const Vec3> pts, size_t k) {
+  return std::sqrt(dist2_to_segment(x, pts[k], pts[std::min(k + 1, pts.size() - 1)]));
 }
 
 // The nearest of the segments [a, b) of pts to x: (squared distance, index).
@@ -119,63 +34,6 @@ std::pair<double, size_t> scan2(const Vec3& x, std::span<const Vec3> pts, size_t
     if (d < best) best = d, arg = i;
   }
   return {best, arg};
-}
-
-// Nearest distance from x to the polyline pts, searching a window around
-// *hint first and the whole polyline when the window's answer is large.
-double dist_to_polyline(const Vec3& x, std::span<const Vec3> pts, size_t& hint, size_t window, double large,
-                        size_t* seg_out = nullptr) {
-  const size_t nseg = pts.size() > 1 ? pts.size() - 1 : 0;
-  if (nseg == 0) return dist(x, pts[0]);
-  const size_t a = hint > window ? hint - window : 0;
-  const size_t b = std::min(nseg, hint + window + 1);
-  auto [d2, arg] = scan2(x, pts, a, b);
-  double d = std::sqrt(d2);
-  if (d > large) std::tie(d2, arg) = scan2(x, pts, 0, nseg), d = std::sqrt(d2);
-  hint = arg;
-  if (seg_out) *seg_out = arg;
-  return d;
-}
-
-// A quick reading of the distance from x to the polyline pts, an upper
-// bound of it: from segment *hint, step to the next (or previous) segment
-// while it is nearer; *hint is left at the segment found. Where the
-// reading is above `large`, the whole polyline is searched (a reading above
-// it is a true distance). A window centred on the segment found contains
-// it: a windowed reading from there is never above this one.
-double descend(const Vec3& x, std::span<const Vec3> pts, size_t& hint, double large) {
-  const size_t nseg = pts.size() > 1 ? pts.size() - 1 : 0;
-  if (nseg == 0) return dist(x, pts[0]);
-  size_t i = std::min(hint, nseg - 1);
-  double best = dist2_to_segment(x, pts[i], pts[i + 1]);
-  const size_t from = i;
-  while (i + 1 < nseg) {
-    const double d = dist2_to_segment(x, pts[i + 1], pts[i + 2]);
-    if (!(d < best)) break;
-    best = d, ++i;
-  }
-  if (i == from)
-    while (i > 0) {
-      const double d = dist2_to_segment(x, pts[i - 1], pts[i]);
-      if (!(d < best)) break;
-      best = d, --i;
-    }
-  double dd = std::sqrt(best);
-  if (dd > large) {
-    const auto [d2, arg] = scan2(x, pts, 0, nseg);
-    dd = std::sqrt(d2), i = arg;
-  }
-  hint = i;
-  return dd;
-}
-
-// Nearest distance from x near *hint: a descent to the nearest segment
-// along the chain from *hint (however closely the points crowd), then a
-// window of w segments either side of the one found.
-double near_distance(const Vec3& x, std::span<const Vec3> pts, size_t& hint, size_t w, double large,
-                     size_t* seg_out = nullptr) {
-  descend(x, pts, hint, large);
-  return dist_to_polyline(x, pts, hint, w, large, seg_out);
 }
 
 // The exact nearest segment of a chain of points, searched by runs of
@@ -200,7 +58,7 @@ class ChainIndex {
   // run of *seg is read first (the caller's guess).
   double nearest(const Vec3& x, size_t& seg) const {
     const size_t nseg = pts_.size() > 1 ? pts_.size() - 1 : 0;
-    if (nseg == 0) return dist(x, pts_[0]);
+    if (nseg == 0) return seg = 0, dist(x, pts_[0]);
     double best = std::numeric_limits<double>::infinity();
     size_t arg = 0;
     auto read_run = [&](size_t r) {
@@ -230,79 +88,11 @@ class ChainIndex {
   size_t run_ = 8;
 };
 
-// A quick reading near *hint (near_distance()) checked against what the
-// distance can be: a distance to a set moves no faster than the point, so
-// at x it is at most `known` (the exact distance at x0) plus |x - x0|. A
-// quick reading above that stopped at the wrong part of a chain that comes
-// back near x: x is then read exactly with `index`.
-double checked_distance(const Vec3& x, std::span<const Vec3> pts, const ChainIndex& index, size_t& hint, double large,
-                        const Vec3& x0, double known) {
-  const double d = near_distance(x, pts, hint, 2, large);
-  return d > known + dist(x, x0) + 1e-9 * large ? index.nearest(x, hint) : d;
-}
-
-// A reading of a distance at one sample: the sample (index k, or segment k
-// at fraction s), its reading d and the nearest segment found.
-struct Cand {
-  double d;
-  size_t k;
-  double s;
-  size_t near;  // nearest segment found
-  int steps;    // samples on its segment (the refinement spans the gap to the next)
-};
-
-// The eight largest exact readings of the samples in `cand`, largest
-// first, from their quick readings (upper bounds of the exact ones, see
-// descend()): candidates are read again with `reread` (which updates d and
-// near) in decreasing order of their quick reading, until no quick reading
-// can beat the eighth largest exact one: the same eight as reading every
-// sample exactly, at a fraction of the cost. `cand` is
-// consumed; the result is left in `top`.
-template <class Reread>
-void largest_readings(std::vector<Cand>& cand, std::vector<Cand>& top, Reread&& reread) {
-  constexpr size_t kTop = 8;
-  top.clear();
-  // Largest quick readings popped from a heap: usually a handful are read
-  // again before the stop.
-  auto first_less = [](const Cand& x, const Cand& y) { return x.d < y.d; };  // max-heap on d
-  std::make_heap(cand.begin(), cand.end(), first_less);
-  auto by_d = [](const Cand& x, const Cand& y) { return x.d > y.d; };  // min-heap on d
-  for (auto end = cand.end(); end != cand.begin(); --end) {
-    std::pop_heap(cand.begin(), end, first_less);
-    const Cand& c = *(end - 1);
-    if (top.size() == kTop && c.d <= top.front().d) break;
-    Cand w = c;
-    reread(w);
-    if (top.size() < kTop) {
-      top.push_back(w);
-      std::push_heap(top.begin(), top.end(), by_d);
-    } else if (w.d > top.front().d) {
-      std::pop_heap(top.begin(), top.end(), by_d);
-      top.back() = w;
-      std::push_heap(top.begin(), top.end(), by_d);
-    }
-  }
-  std::sort(top.begin(), top.end(), by_d);
-}
-
-// The largest interior value seen by golden-section steps on [a, b], to
-// 1e-5 of the interval (a distance read there is off by about the square
-// of that times the second derivative along it: on the short intervals
-// refined here, below 1e-12 of a millimetre).
-// Returns the point of that value: the refinements read it again exactly.
-struct GoldenMax {
-  double value, at;
-};
-GoldenMax golden_max(double a, double b, const auto& f) {
-  const auto g = flatten_detail::golden_section(a, b, f, 60, std::max(1e-15, 1e-5 * (b - a)), true);
-  const double k = 0.3819660112501051;  // golden_section's interior points
-  return g.f1 >= g.f2 ? GoldenMax{g.f1, g.a + k * (g.b - g.a)} : GoldenMax{g.f2, g.b - k * (g.b - g.a)};
-}
-
-// A piece with, when it is polynomial of degree <= 3, its power form
-// (M(t) = sum c_j t^j, evaluated by Horner: a few multiply-adds per point,
-// within a few units in the last place of the control points' magnitude
-// for these degrees). Other pieces are evaluated by de Casteljau.
+// A piece of the curve: evaluation (power form, by Horner, for polynomial
+// pieces up to degree 3; the kernel's de Casteljau otherwise) and the
+// bound every measurement below rests on, sag(): the arc over [t0, t1]
+// and its chord lie within sag() of each other (each point of either
+// within that distance of the other).
 struct Piece {
   const Bezier* b = nullptr;
   int n = -1;  // degree of the power form; -1: none
@@ -327,240 +117,523 @@ struct Piece {
     for (int j = n; j-- > 0;) r = r * t + c[j];
     return r;
   }
-  // The point and the first derivative at t.
-  void point_and_derivative(double t, Vec3& p, Vec3& d) const;
+  // The point and its first two derivatives at t.
+  void derivatives(double t, Vec3& p, Vec3& d1, Vec3& d2) const {
+    if (n < 0) {
+      p = evaluate(*b, t), d1 = derivative(*b, t), d2 = second_derivative(*b, t);
+      return;
+    }
+    p = at(t);
+    d1 = n >= 1 ? c[1] : Vec3{};
+    d2 = Vec3{};
+    if (n >= 2) d1 += c[2] * (2 * t), d2 = c[2] * 2.0;
+    if (n >= 3) d1 += c[3] * (3 * t * t), d2 += c[3] * (6 * t);
+  }
+  // Polynomial of degree n <= 3: C(t) - the chord's point at the same
+  // fraction is at most h^2 / 8 max |C''| over the interval (h = t1 - t0),
+  // and |C''| (linear in t) is largest at an end. Otherwise the control
+  // polygon of the sub-curve: the arc lies in its hull, so within the
+  // polygon's largest distance from the chord; and, joining the chord's
+  // ends, it passes within that distance of every chord point.
+  double sag(double t0, double t1, const Vec3& p0, const Vec3& p1) const {
+    const double h = t1 - t0;
+    if (n >= 0) {
+      if (n <= 1) return 0;
+      const Vec3 a2 = c[2] * 2.0;
+      if (n == 2) return h * h * 0.125 * norm(a2);
+      return h * h * 0.125 * std::max(norm(a2 + c[3] * (6 * t0)), norm(a2 + c[3] * (6 * t1)));
+    }
+    const Bezier sub = subcurve(*b, t0, t1);
+    double s = 0;
+    for (const Vec3& q : sub.points) s = std::max(s, dist_to_segment(q, p0, p1));
+    return s;
+  }
 };
 
-// The point and the first derivative of `b` at t, from one de Casteljau
-// cascade (homogeneous, on the stack for the usual degrees): the last two
-// points of the cascade give both.
-void cascade_point_and_derivative(const Bezier& b, double t, Vec3& p, Vec3& d) {
-  const int n = b.degree();
-  struct H {
-    Vec3 p;
-    double w;
-  };
-  constexpr int kStack = 16;
-  H stack[kStack];
-  std::vector<H> heap;
-  if (n + 1 > kStack) heap.resize(n + 1);
-  H* q = n + 1 > kStack ? heap.data() : stack;
-  for (int i = 0; i <= n; ++i) q[i] = {b.points[i] * b.weight(i), b.weight(i)};
-  const double s = 1 - t;
-  for (int r = 1; r < n; ++r)
-    for (int i = 0; i <= n - r; ++i) q[i] = {q[i].p * s + q[i + 1].p * t, q[i].w * s + q[i + 1].w * t};
-  const H a{q[0].p * s + q[1].p * t, q[0].w * s + q[1].w * t};
-  p = a.p / a.w;
-  // C = A / w: C' = (A' - C w') / w, with A' = n (A1 - A0), w' = n (w1 - w0).
-  d = ((q[1].p - q[0].p) * double(n) - p * (double(n) * (q[1].w - q[0].w))) / a.w;
+// The largest value over l in [l0, l1] of c0 + l (c1 - c0) + 4 q l (1 - l)
+// (q >= 0: a line plus a bump of height q at l = 1/2, concave).
+double max_line_bump(double c0, double c1, double q, double l0 = 0, double l1 = 1) {
+  double l = q > 0 ? 0.5 + (c1 - c0) / (8 * q) : (c1 > c0 ? l1 : l0);
+  l = std::clamp(l, l0, l1);
+  return c0 + l * (c1 - c0) + 4 * q * l * (1 - l);
 }
 
-void Piece::point_and_derivative(double t, Vec3& p, Vec3& d) const {
-  if (n < 0) return cascade_point_and_derivative(*b, t, p, d);
-  p = at(t);
-  d = Vec3{};
-  for (int j = n; j >= 1; --j) d = d * t + c[j] * double(j);
-}
-
-// Uniform steps in t over a piece with a power form, as many as keep every
-// arc between two steps within eps of its chord: a polynomial of degree n
-// departs from its chord over a step h by at most h^2 / 8 max |C''|, and
-// |C''| <= n (n - 1) max |P[i+2] - 2 P[i+1] + P[i]|. Returns false (nothing
-// sampled) when the piece has no power form or would take too many steps.
-bool sample_uniform(const Piece& pc, size_t piece, double eps, std::vector<Sample>& out) {
-  if (pc.n < 0) return false;
-  const auto& P = pc.b->points;
-  const int n = pc.n;
-  double m2 = 0;
-  for (int i = 0; i + 2 <= n; ++i) m2 = std::max(m2, norm(P[i + 2] - P[i + 1] * 2.0 + P[i]));
-  const double steps = std::ceil(std::sqrt(n * (n - 1) * m2 / (8 * eps)));
-  constexpr double kMostSteps = 1 << 22;
-  if (!(steps <= kMostSteps)) return false;
-  const size_t N = std::max<size_t>(1, static_cast<size_t>(steps));
-  const double h = 1.0 / double(N);
-  for (size_t i = 1; i < N; ++i) {
-    const double t = double(i) * h;
-    out.push_back({pc.at(t), piece, t});
-  }
-  out.push_back({P.back(), piece, 1.0});
-  return true;
-}
-
-// Distance from x to the arc of a piece over [t0, t1], an arc between two
-// neighbouring dense samples (so within `resolution` of its chord, and
-// the distance along it has a single minimum): at an end, or where
-// (C(t) - x) . C'(t) changes sign, found by bracketed regula falsi
-// (Illinois), to a billionth of the interval.
-double nearest_on_arc(const Piece& b, double t0, double t1, const Vec3& x) {
-  Vec3 p0, d0, p1, d1;
-  b.point_and_derivative(t0, p0, d0);
-  b.point_and_derivative(t1, p1, d1);
-  double g0 = dot(p0 - x, d0), g1 = dot(p1 - x, d1);
-  double best = std::min(dist(p0, x), dist(p1, x));
-  if (!(g0 < 0 && g1 > 0)) return best;  // no interior minimum
-  double a = t0, c = t1;
-  int side = 0;
-  for (int it = 0; it < 60 && c - a > 1e-9 * (t1 - t0); ++it) {
-    const double t = (a * g1 - c * g0) / (g1 - g0);
-    Vec3 p, dp;
-    b.point_and_derivative(t, p, dp);
-    best = std::min(best, dist(p, x));
-    const double g = dot(p - x, dp);
-    if (g == 0) break;
-    if (g < 0) {
-      a = t, g0 = g;
-      if (side == -1) g1 *= 0.5;
-      side = -1;
-    } else {
-      c = t, g1 = g;
-      if (side == 1) g0 *= 0.5;
-      side = 1;
+// The largest value over l in [0, 1] of the lower of two lines (a0 to a1,
+// b0 to b1) plus the bump of height q.
+double max_of_min(double a0, double a1, double b0, double b1, double q = 0) {
+  const double e0 = a0 - b0, e1 = a1 - b1;
+  if ((e0 < 0) != (e1 < 0) && e0 != e1) {
+    const double l = e0 / (e0 - e1);
+    if (l > 0 && l < 1) {
+      // The lower line at 0 up to the crossing, the other after.
+      return e0 < 0 ? std::max(max_line_bump(a0, a1, q, 0, l), max_line_bump(b0, b1, q, l, 1))
+                    : std::max(max_line_bump(b0, b1, q, 0, l), max_line_bump(a0, a1, q, l, 1));
     }
   }
-  return best;
+  return e0 + e1 <= 0 ? max_line_bump(a0, a1, q) : max_line_bump(b0, b1, q);
 }
 
-// Scratch vectors kept by each measuring thread: no allocation per sample,
-// and none per entity once the first has grown them. Capacity beyond
-// kKeep elements is given back after each measurement.
+// The B&B's refinement stops at this many halvings of an interval; what
+// an interval still bounds then is taken into the result as it is.
+constexpr int kMostDepth = 60;
+
+// ---- Curve -> polyline --------------------------------------------------
+
+// A point of the curve with its reading: d is the distance to segment k of
+// the polyline (the nearest one found), so at least the distance to the
+// polyline, and equal to it above `large`.
+struct CurvePt {
+  double t;
+  Vec3 p;
+  size_t k;
+  double d;
+};
+
+// From segment *hint, step to the next (or previous) segment while it is
+// nearer; returns that distance (an upper bound of the distance to the
+// polyline) and leaves *hint at the segment found. A reading above `large`
+// is replaced by the exact one (`exact`, every segment).
+template <class Exact>
+double descend(const Vec3& x, std::span<const Vec3> pts, size_t& hint, double large, Exact&& exact) {
+  const size_t nseg = pts.size() > 1 ? pts.size() - 1 : 0;
+  if (nseg == 0) return hint = 0, dist(x, pts[0]);
+  size_t i = std::min(hint, nseg - 1);
+  double best = dist2_to_segment(x, pts[i], pts[i + 1]);
+  const size_t from = i;
+  while (i + 1 < nseg) {
+    const double d = dist2_to_segment(x, pts[i + 1], pts[i + 2]);
+    if (!(d < best)) break;
+    best = d, ++i;
+  }
+  if (i == from)
+    while (i > 0) {
+      const double d = dist2_to_segment(x, pts[i - 1], pts[i]);
+      if (!(d < best)) break;
+      best = d, --i;
+    }
+  hint = i;
+  const double d = std::sqrt(best);
+  return d > large ? exact(x, hint) : d;
+}
+
+// ---- Polyline -> curve --------------------------------------------------
+
+// A point of the polyline (segment k at fraction s) with its reading: d is
+// the distance to the curve point of piece i at t (a foot found by Newton
+// steps from a neighbour's), so at least the distance to the curve, and
+// equal to it above `large`.
+struct PathPt {
+  double s;
+  Vec3 x;
+  size_t i;
+  double t;
+  Vec3 f;  // the curve point
+  double d;
+};
+
+// An arc of piece i over [t0, t1] in the exact nearest-point search.
+struct Arc {
+  size_t i;
+  double t0, t1;
+  Vec3 p0, p1;
+  int depth;
+};
+
+// Scratch vectors kept by each measuring thread: no allocation per
+// measurement once the first has grown them.
 struct Scratch {
-  std::vector<Sample> D;
-  std::vector<Vec3> dpts;
   std::vector<Piece> pieces;
-  std::vector<char> uniform;
-  std::vector<Cand> cand, top;
+  std::vector<CurvePt> cpts;
+  std::vector<PathPt> ppts;
+  std::vector<size_t> first;     // per piece: its first coarse point
+  std::vector<CurvePt> workc;    // the B&B's stacks of points
+  std::vector<PathPt> workp;
+  std::vector<int> depth;        // halvings of each arc on the stack
+  std::vector<Arc> arcs;
   ChainIndex index;
   static constexpr size_t kKeep = size_t{1} << 20;
   void trim() {
     auto fit = [](auto& v) {
       if (v.capacity() > kKeep) std::decay_t<decltype(v)>().swap(v);
     };
-    fit(D), fit(dpts), fit(pieces), fit(uniform), fit(cand), fit(top);
+    fit(pieces), fit(cpts), fit(ppts), fit(first), fit(workc), fit(workp), fit(depth), fit(arcs);
   }
 };
+
+class Measure {
+ public:
+  Measure(Scratch& s, std::span<const Bezier> pieces, std::span<const Vec3> poly, double tolerance)
+      : s_(s), poly_(poly), large_(tolerance) {
+    s_.pieces.clear();
+    for (const Bezier& b : pieces) s_.pieces.emplace_back(b);
+    gap_ = std::max({tolerance * kMeasureGap, control_magnitude(pieces) * 1e-14, 1e-300});
+  }
+
+  double curve_to_path();
+  double path_to_curve();
+
+ private:
+  const std::vector<Piece>& P() const { return s_.pieces; }
+
+  // Exact distance from x to the polyline.
+  double exact_to_path(const Vec3& x, size_t& seg) {
+    if (!indexed_) s_.index.build(poly_), indexed_ = true;
+    return s_.index.nearest(x, seg);
+  }
+  void read_curve(CurvePt& q, size_t hint) {
+    q.k = hint;
+    if (exact_all_) {
+      q.d = exact_to_path(q.p, q.k);
+      return;
+    }
+    q.d = descend(q.p, poly_, q.k, large_, [&](const Vec3& x, size_t& k) { return exact_to_path(x, k); });
+  }
+  // Upper bound of the distance to the polyline over the arc between a and
+  // b (of piece i): every arc point is within the sag of a chord point y,
+  // and the distance from y to either segment found at the ends is convex
+  // along the chord, so at most the segment's readings' interpolation.
+  // With a power form the sag is the parameter's own: C(t) at fraction l
+  // of the arc is within 4 s l (1 - l) of the chord's point at l, and the
+  // bound is the interpolation plus that bump.
+  double bound(const Piece& pc, const CurvePt& a, const CurvePt& b) const {
+    const double s = pc.sag(a.t, b.t, a.p, b.p);
+    const double q = pc.n >= 0 ? s : 0, add = pc.n >= 0 ? 0 : s;
+    if (a.k == b.k) return max_line_bump(a.d, b.d, q) + add;
+    return max_of_min(a.d, seg_dist(b.p, poly_, a.k), seg_dist(a.p, poly_, b.k), b.d, q) + add;
+  }
+
+  void foot(PathPt& q, size_t i, double t);
+  double exact_to_curve(const Vec3& x, size_t& piece, double& t);
+  void read_path(PathPt& q, size_t i, double t) {
+    foot(q, i, t);
+    if (q.d > large_ || exact_all_) {
+      q.d = exact_to_curve(q.x, q.i, q.t);
+      q.f = P()[q.i].at(q.t);
+    }
+  }
+  double bound(const PathPt& a, const PathPt& b) const;
+
+  Scratch& s_;
+  std::span<const Vec3> poly_;
+  double large_, gap_;
+ public:
+  // Whether an arc of bound ub is done, lb being the largest reading.
+  bool done(double ub, double lb) const { return ub <= lb + gap_; }
+  bool indexed_ = false;
+  bool exact_all_ = false;  // every reading by the exact searches
+  CurvePt best_c_{};         // the largest reading of each direction
+  PathPt best_p_{};
+  double curve_to_path_once();
+  double path_to_curve_once();
+};
+
+// The largest reading is read again exactly (every segment): when it was
+// high (the descent stopped at a part of the polyline that is not the
+// nearest, where it comes back near itself), every reading is taken
+// exactly and the search run again.
+double Measure::curve_to_path() {
+  const double d = curve_to_path_once();
+  if (exact_all_ || !(best_c_.d > 0)) return d;
+  size_t k = best_c_.k;
+  if (exact_to_path(best_c_.p, k) >= best_c_.d - gap_) return d;
+  exact_all_ = true;
+  const double e = curve_to_path_once();
+  exact_all_ = false;
+  return e;
+}
+
+double Measure::curve_to_path_once() {
+  auto& pts = s_.cpts;
+  pts.clear();
+  // A coarse grid per piece, each arc within a sixteenth of the tolerance
+  // of its chord (polynomial pieces; 8 steps otherwise), read from the
+  // segment found at the sample before.
+  size_t hint = 0;
+  const double coarse = std::max(large_ / 2, 1000 * gap_);
+  std::vector<size_t>& first = s_.first;
+  first.clear();
+  for (size_t i = 0; i < P().size(); ++i) {
+    const Piece& pc = P()[i];
+    size_t N = 8;
+    if (pc.n >= 0) {
+      const double s = pc.sag(0, 1, pc.at(0), pc.at(1));
+      N = s > coarse ? static_cast<size_t>(std::min<double>(std::ceil(std::sqrt(s / coarse)), 1 << 16)) : 1;
+    }
+    first.push_back(pts.size());
+    for (size_t j = 0; j <= N; ++j) {
+      CurvePt q;
+      q.t = j == N ? 1.0 : double(j) / double(N);
+      q.p = pc.at(q.t);
+      read_curve(q, hint);
+      ++g_cnt[3];
+      hint = q.k;
+      pts.push_back(q);
+    }
+  }
+  first.push_back(pts.size());
+  double lb = 0;
+  best_c_ = pts.front();
+  for (const CurvePt& q : pts)
+    if (q.d > best_c_.d) best_c_ = q;
+  lb = best_c_.d;
+  // Branch and bound: an arc whose bound is within eps of the largest
+  // reading is done; others are halved.
+  double open = 0;  // bounds of arcs left at the depth limit
+  std::vector<CurvePt>& work = s_.workc;
+  std::vector<int>& depth_ = s_.depth;
+  for (size_t i = 0; i < P().size(); ++i) {
+    const Piece& pc = P()[i];
+    for (size_t j = first[i]; j + 1 < first[i + 1]; ++j) {
+      work.clear();
+      work.push_back(pts[j + 1]);
+      work.push_back(pts[j]);
+      depth_.assign(1, 0);
+      // work holds a stack of points: the top two are the current arc.
+      while (work.size() >= 2) {
+        const CurvePt a = work[work.size() - 1], b = work[work.size() - 2];
+        const int depth = depth_.back();
+        const double ub = bound(pc, a, b);
+        if (done(ub, lb) || depth >= kMostDepth) {
+          if (!done(ub, lb)) open = std::max(open, ub);
+          work.pop_back();
+          depth_.pop_back();
+          continue;
+        }
+        CurvePt m;
+        m.t = 0.5 * (a.t + b.t);
+        m.p = pc.at(m.t);
+        read_curve(m, a.k);
+        ++g_cnt[0];
+        if (m.d > lb) lb = m.d, best_c_ = m;
+        // [a, m] on top, then [m, b].
+        work.back() = m;
+        work.push_back(a);
+        depth_.back() = depth + 1;
+        depth_.push_back(depth + 1);
+      }
+    }
+  }
+  return std::max(lb, open);
+}
+
+// A foot of x on the curve from (i, t): Newton steps on (C - x) . C' = 0,
+// passing to the next or previous piece at an end when the distance still
+// falls that way. Keeps the nearest curve point met: whatever the steps do,
+// the reading is the distance to a point of the curve.
+void Measure::foot(PathPt& q, size_t i, double t) {
+  Vec3 p, d1, d2;
+  double best = HUGE_VAL;
+  for (int it = 0; it < 16; ++it) {
+    const Piece& pc = P()[i];
+    pc.derivatives(t, p, d1, d2);
+    ++g_cnt[2];
+    const Vec3 r = p - q.x;
+    const double r2 = dot(r, r);
+    if (r2 < best) best = r2, q.i = i, q.t = t, q.f = p;
+    const double g = dot(r, d1), v2 = dot(d1, d1);
+    double gp = v2 + dot(r, d2);
+    if (!(gp > 0)) gp = v2;
+    if (!(gp > 0) || g == 0) break;
+    // The step would bring the distance down by about g^2 / (2 gp d): done
+    // when that is below 1e-4 of the resolution; when below a tenth of it,
+    // the step is the last (the step after would gain about its square).
+    const double gain = g * g / (2 * gp * std::sqrt(r2));
+    if (!(gain >= 0.1 * gap_)) break;
+    const bool last = gain < 100 * gap_;
+    double tn = t - g / gp;
+    if (tn > 1) {
+      if (t == 1 && i + 1 < P().size()) {
+        ++i, t = 0;
+        continue;
+      }
+      tn = 1;
+    } else if (tn < 0) {
+      if (t == 0 && i > 0) {
+        --i, t = 1;
+        continue;
+      }
+      tn = 0;
+    }
+    if (tn == t) break;
+    const bool small = last || std::abs(tn - t) < 1e-12;
+    t = tn;
+    if (small) {
+      const Vec3 pn = pc.at(t);
+      const double rn = dot(pn - q.x, pn - q.x);
+      if (rn < best) best = rn, q.i = i, q.t = t, q.f = pn;
+      break;
+    }
+  }
+  q.d = std::sqrt(best);
+}
+
+// The exact distance from x to the curve: branch and bound over the arcs
+// of every piece (an arc is no nearer than its chord's distance less its
+// sag), arcs that could be nearer halved, the nearest point met polished by
+// Newton steps. *piece and *t receive its foot.
+double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
+  PathPt q;
+  q.x = x;
+  foot(q, piece, t);
+  double best = q.d;
+  size_t bi = q.i;
+  double bt = q.t;
+  auto& stack = s_.arcs;
+  stack.clear();
+  for (size_t i = 0; i < P().size(); ++i) stack.push_back({i, 0, 1, P()[i].at(0), P()[i].at(1), 0});
+  const double tiny = gap_;
+  ++g_cnt[4];
+  while (!stack.empty()) {
+    const Arc a = stack.back();
+    stack.pop_back();
+    const Piece& pc = P()[a.i];
+    const double sag = pc.sag(a.t0, a.t1, a.p0, a.p1);
+    if (dist_to_segment(x, a.p0, a.p1) - sag >= best - tiny || a.depth >= kMostDepth) continue;
+    const double tm = 0.5 * (a.t0 + a.t1);
+    const Vec3 pm = pc.at(tm);
+    const double d = dist(x, pm);
+    if (d < best) {
+      q.x = x;
+      foot(q, a.i, tm);
+      if (q.d < d) best = q.d, bi = q.i, bt = q.t;
+      else best = d, bi = a.i, bt = tm;
+    }
+    // An arc this close to its chord is within 2 tiny of what it can give.
+    if (sag <= tiny) continue;
+    stack.push_back({a.i, a.t0, tm, a.p0, pm, a.depth + 1});
+    stack.push_back({a.i, tm, a.t1, pm, a.p1, a.depth + 1});
+  }
+  piece = bi, t = bt;
+  return best;
+}
+
+// Upper bound of the distance to the curve over the polyline between a
+// and b: the distance to the curve is at most that to a chord of it plus
+// the chord's sag, and the distance to a chord is convex along the
+// segment. The chord joins the two feet (one per piece when they lie in
+// neighbouring pieces); the distance moving no faster than the point gives
+// the other bound.
+double Measure::bound(const PathPt& a, const PathPt& b) const {
+  double ub = 0.5 * (a.d + b.d + dist(a.x, b.x));
+  if (a.i == b.i) {
+    const Piece& pc = P()[a.i];
+    const bool fwd = a.t <= b.t;
+    const PathPt& lo = fwd ? a : b;
+    const PathPt& hi = fwd ? b : a;
+    const double s = pc.sag(lo.t, hi.t, lo.f, hi.f);
+    ub = std::min(ub, std::max(dist_to_segment(a.x, a.f, b.f), dist_to_segment(b.x, a.f, b.f)) + s);
+    // With a power form: x at fraction l of [a, b] against C at fraction l
+    // of [a.t, b.t]: their difference is the interpolation of a's and b's
+    // plus at most the bump 4 s l (1 - l).
+    if (pc.n >= 0) ub = std::min(ub, max_line_bump(a.d, b.d, s));
+  } else if (a.i + 1 == b.i || b.i + 1 == a.i) {
+    // a's piece from a's foot to its end nearest b's piece, and b's the same way.
+    const bool fwd = a.i < b.i;
+    const Piece& pa = P()[a.i];
+    const Piece& pb = P()[b.i];
+    const double ea = fwd ? 1.0 : 0.0, eb = fwd ? 0.0 : 1.0;
+    const Vec3 qa = pa.at(ea), qb = pb.at(eb);
+    const double sa = fwd ? pa.sag(a.t, 1, a.f, qa) : pa.sag(0, a.t, qa, a.f);
+    const double sb = fwd ? pb.sag(0, b.t, qb, b.f) : pb.sag(b.t, 1, b.f, qb);
+    ub = std::min(ub, max_of_min(dist_to_segment(a.x, a.f, qa) + sa, dist_to_segment(b.x, a.f, qa) + sa,
+                                 dist_to_segment(a.x, qb, b.f) + sb, dist_to_segment(b.x, qb, b.f) + sb));
+  }
+  return ub;
+}
+
+// The largest reading is read again exactly (over every piece): when it
+// was high (a foot that is not the nearest point), every reading is taken
+// exactly and the search run again.
+double Measure::path_to_curve() {
+  const double d = path_to_curve_once();
+  if (exact_all_ || !(best_p_.d > 0)) return d;
+  size_t i = best_p_.i;
+  double t = best_p_.t;
+  if (exact_to_curve(best_p_.x, i, t) >= best_p_.d - gap_) return d;
+  exact_all_ = true;
+  const double e = path_to_curve_once();
+  exact_all_ = false;
+  return e;
+}
+
+double Measure::path_to_curve_once() {
+  auto& pts = s_.ppts;
+  pts.clear();
+  // Two readings per segment and the end, the foot followed from the
+  // vertex before; the first found by the exact search.
+  constexpr int kCoarse = 2;
+  size_t fi = 0;
+  double ft = 0;
+  {
+    PathPt q;
+    q.s = 0, q.x = poly_[0];
+    exact_to_curve(q.x, fi, ft);
+  }
+  const size_t nseg = poly_.size() > 1 ? poly_.size() - 1 : 0;
+  for (size_t k = 0; k <= nseg; ++k) {
+    const int steps = k < nseg ? kCoarse : 1;
+    for (int j = 0; j < steps; ++j) {
+      PathPt q;
+      q.s = double(k) + double(j) / steps;
+      q.x = k < nseg ? lerp(poly_[k], poly_[k + 1], double(j) / steps) : poly_[k];
+      read_path(q, fi, ft);
+      fi = q.i, ft = q.t;
+      pts.push_back(q);
+    }
+  }
+  double lb = 0;
+  best_p_ = pts.front();
+  for (const PathPt& q : pts)
+    if (q.d > best_p_.d) best_p_ = q;
+  lb = best_p_.d;
+  double open = 0;
+  auto& work = s_.workp;
+  auto& depth = s_.depth;
+  for (size_t j = 0; j + 1 < pts.size(); ++j) {
+    work.clear();
+    work.push_back(pts[j + 1]);
+    work.push_back(pts[j]);
+    depth.assign(1, 0);
+    const size_t k = static_cast<size_t>(pts[j].s);
+    while (work.size() >= 2) {
+      const PathPt a = work[work.size() - 1], b = work[work.size() - 2];
+      const int dep = depth.back();
+      const double ub = bound(a, b);
+      if (done(ub, lb) || dep >= kMostDepth) {
+        if (!done(ub, lb)) open = std::max(open, ub);
+        work.pop_back();
+        depth.pop_back();
+        continue;
+      }
+      PathPt m;
+      m.s = 0.5 * (a.s + b.s);
+      m.x = lerp(poly_[k], poly_[k + 1], m.s - double(k));
+      // Start from the foot interpolated between the ends' when they share a piece.
+      read_path(m, a.i, a.i == b.i ? 0.5 * (a.t + b.t) : a.t);
+      ++g_cnt[1];
+      if (m.d > lb) lb = m.d, best_p_ = m;
+      work.back() = m;
+      work.push_back(a);
+      depth.back() = dep + 1;
+      depth.push_back(dep + 1);
+    }
+  }
+  return std::max(lb, open);
+}
 
 }  // namespace
 
 Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3> polyline, double tolerance) {
   Deviation dev;
   if (pieces.empty() || polyline.empty()) return dev;
-  const double resolution = std::max(tolerance * kMeasureResolution, control_magnitude(pieces) * 1e-13);
   thread_local Scratch scratch;
   struct Trim {
     Scratch& s;
     ~Trim() { s.trim(); }
   } trim{scratch};
-  auto& D = scratch.D;
-  auto& P = scratch.pieces;
-  auto& uniform = scratch.uniform;  // per piece: sampled in uniform steps (each arc within `resolution` of its chord)
-  D.clear(), P.clear(), uniform.clear();
-  for (const Bezier& b : pieces) P.emplace_back(b);
-  D.push_back({pieces[0].front(), 0, 0});
-  for (size_t i = 0; i < pieces.size(); ++i) {
-    uniform.push_back(sample_uniform(P[i], i, resolution, D));
-    if (!uniform.back()) sample_any(pieces[i], i, resolution, D);
-  }
-  auto& dpts = scratch.dpts;
-  dpts.resize(D.size());
-  for (size_t i = 0; i < D.size(); ++i) dpts[i] = D[i].p;
-
-  // Quick readings and refinements search near the nearest segment found
-  // before (the two sequences advance together along the curve); a reading
-  // above `large` is replaced by a search of everything.
-  const double large = tolerance;
-  auto& cand = scratch.cand;
-  auto& top = scratch.top;
-  // Curve -> polyline, at the on-curve samples (a quick reading each, the
-  // largest read again exactly), then refined between them.
-  {
-    cand.clear();
-    size_t hint = 0;
-    for (size_t i = 0; i < D.size(); ++i) {
-      const double d = descend(D[i].p, polyline, hint, large);
-      cand.push_back({d, i, 0, hint, 0});
-    }
-    scratch.index.build(polyline);
-    largest_readings(cand, top, [&](Cand& c) { c.d = scratch.index.nearest(D[c.k].p, c.near); });
-    for (const Cand& c : top) {
-      dev.curve_to_path = std::max(dev.curve_to_path, c.d);
-      const size_t i = c.k;
-      // Refine on the true curve between the neighbouring samples of the same piece.
-      for (size_t j : {i > 0 ? i - 1 : i, i}) {
-        if (j + 1 >= D.size()) continue;
-        const Piece& b = P[D[j + 1].piece];
-        const double t0 = D[j].piece == D[j + 1].piece ? D[j].t : 0.0;
-        // Around the sample's nearest segment (found exactly), not the
-        // whole polyline: the refinement cost does not grow with the
-        // program's length.
-        // The search's quick readings may read high where the path comes
-        // back near itself: its best point is read again exactly, and that
-        // reading is the one kept.
-        size_t h = c.near;
-        const GoldenMax m = golden_max(t0, D[j + 1].t, [&](double t) {
-          return checked_distance(b.at(t), polyline, scratch.index, h, large, D[c.k].p, c.d);
-        });
-        dev.curve_to_path = std::max(dev.curve_to_path, scratch.index.nearest(b.at(m.at), h));
-      }
-    }
-  }
-  // Polyline -> curve: 64 samples per segment against the dense on-curve
-  // chain (itself within `resolution` of the curve), then the worst samples
-  // are refined along their segment and projected exactly on the true curve.
-  {
-    constexpr int kSteps = 64;
-    cand.clear();
-    size_t hint = 0;
-    auto point_at = [&](size_t k, double s) {
-      return k + 1 < polyline.size() ? lerp(polyline[k], polyline[k + 1], s) : polyline[k];
-    };
-    // A quick reading first (the nearest dense segment moves along with the
-    // sample), then the largest read again exactly: see largest_readings().
-    for (size_t k = 0; k < polyline.size(); ++k) {
-      const int steps = k + 1 < polyline.size() ? kSteps : 1;
-      for (int i = 0; i < steps; ++i) {
-        const double s = double(i) / steps;
-        const double d = descend(point_at(k, s), dpts, hint, large);
-        cand.push_back({d, k, s, hint, steps});
-      }
-    }
-    scratch.index.build(dpts);
-    largest_readings(cand, top, [&](Cand& c) { c.d = scratch.index.nearest(point_at(c.k, c.s), c.near); });
-    // Exact distance from x to the true curve near its nearest dense
-    // segment: found by descent from the candidate's (exact) nearest one,
-    // which the refinement's points stay close to, and searched exactly
-    // when the descent's reading is more than the distance can be there (a
-    // part of the curve coming back close). A whole-chain scan per
-    // evaluation made long programs quadratic.
-    // With `exact`, the nearest dense segment is searched exactly.
-    auto to_curve = [&](const Vec3& x, size_t& h, const Cand& c, bool exact) {
-      size_t seg = 0;
-      double d = exact ? scratch.index.nearest(x, h)
-                       : checked_distance(x, dpts, scratch.index, h, large, point_at(c.k, c.s), c.d);
-      seg = h;
-      const size_t lo = seg > 0 ? seg - 1 : 0, hi = std::min(seg + 2, D.size() - 1);
-      for (size_t j = lo; j < hi; ++j) {
-        if (D[j].piece == D[j + 1].piece && D[j + 1].t <= D[j].t) continue;
-        // An arc within `resolution` of its chord is no nearer than the
-        // chord's distance less that: such an arc cannot lower d.
-        if (uniform[D[j + 1].piece] && std::sqrt(dist2_to_segment(x, dpts[j], dpts[j + 1])) - resolution >= d)
-          continue;
-        const Piece& b = P[D[j + 1].piece];
-        const double t0 = D[j].piece == D[j + 1].piece ? D[j].t : 0.0;
-        d = std::min(d, nearest_on_arc(b, t0, D[j + 1].t, x));
-      }
-      return d;
-    };
-    // Kept: exact readings at the candidate and at the search's best point
-    // (its quick readings guide it, and may read high).
-    for (const Cand& cd : top) {
-      size_t h = cd.near;  // moves with the refinement's points
-      dev.path_to_curve = std::max(dev.path_to_curve, to_curve(point_at(cd.k, cd.s), h, cd, true));
-      if (cd.k + 1 >= polyline.size()) continue;
-      const double a = std::max(0.0, cd.s - 1.0 / cd.steps), b = std::min(1.0, cd.s + 1.0 / cd.steps);
-      const GoldenMax m = golden_max(a, b, [&](double s) { return to_curve(point_at(cd.k, s), h, cd, false); });
-      dev.path_to_curve = std::max(dev.path_to_curve, to_curve(point_at(cd.k, m.at), h, cd, true));
-    }
-  }
+  Measure m(scratch, pieces, polyline, tolerance);
+  dev.curve_to_path = m.curve_to_path();
+  dev.path_to_curve = m.path_to_curve();
   return dev;
 }
 
