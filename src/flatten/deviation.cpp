@@ -135,6 +135,18 @@ struct Piece {
   // polygon of the sub-curve: the arc lies in its hull, so within the
   // polygon's largest distance from the chord; and, joining the chord's
   // ends, it passes within that distance of every chord point.
+  // |C''(t)| with a power form (-1 without: sag() does not use it).
+  double acc(double t) const {
+    if (n < 0) return -1;
+    if (n <= 1) return 0;
+    return n == 2 ? 2 * norm(c[2]) : norm(c[2] * 2.0 + c[3] * (6 * t));
+  }
+  // sag() from the ends' acc(), already known.
+  double sag(double t0, double t1, double acc0, double acc1, const Vec3& p0, const Vec3& p1) const {
+    if (n < 0) return sag(t0, t1, p0, p1);
+    const double h = t1 - t0;
+    return h * h * 0.125 * std::max(acc0, acc1);
+  }
   double sag(double t0, double t1, const Vec3& p0, const Vec3& p1) const {
     const double h = t1 - t0;
     if (n >= 0) {
@@ -152,25 +164,30 @@ struct Piece {
 
 // The largest value over l in [l0, l1] of c0 + l (c1 - c0) + 4 q l (1 - l)
 // (q >= 0: a line plus a bump of height q at l = 1/2, concave).
-double max_line_bump(double c0, double c1, double q, double l0 = 0, double l1 = 1) {
+// *at (optional) receives the place of that value.
+double max_line_bump(double c0, double c1, double q, double l0 = 0, double l1 = 1, double* at = nullptr) {
   double l = q > 0 ? 0.5 + (c1 - c0) / (8 * q) : (c1 > c0 ? l1 : l0);
   l = std::clamp(l, l0, l1);
+  if (at) *at = l;
   return c0 + l * (c1 - c0) + 4 * q * l * (1 - l);
 }
 
 // The largest value over l in [0, 1] of the lower of two lines (a0 to a1,
 // b0 to b1) plus the bump of height q.
-double max_of_min(double a0, double a1, double b0, double b1, double q = 0) {
+double max_of_min(double a0, double a1, double b0, double b1, double q = 0, double* at = nullptr) {
   const double e0 = a0 - b0, e1 = a1 - b1;
   if ((e0 < 0) != (e1 < 0) && e0 != e1) {
     const double l = e0 / (e0 - e1);
     if (l > 0 && l < 1) {
       // The lower line at 0 up to the crossing, the other after.
-      return e0 < 0 ? std::max(max_line_bump(a0, a1, q, 0, l), max_line_bump(b0, b1, q, l, 1))
-                    : std::max(max_line_bump(b0, b1, q, 0, l), max_line_bump(a0, a1, q, l, 1));
+      double l1 = 0, l2 = 0;
+      const double m1 = e0 < 0 ? max_line_bump(a0, a1, q, 0, l, &l1) : max_line_bump(b0, b1, q, 0, l, &l1);
+      const double m2 = e0 < 0 ? max_line_bump(b0, b1, q, l, 1, &l2) : max_line_bump(a0, a1, q, l, 1, &l2);
+      if (at) *at = m1 >= m2 ? l1 : l2;
+      return std::max(m1, m2);
     }
   }
-  return e0 + e1 <= 0 ? max_line_bump(a0, a1, q) : max_line_bump(b0, b1, q);
+  return e0 + e1 <= 0 ? max_line_bump(a0, a1, q, 0, 1, at) : max_line_bump(b0, b1, q, 0, 1, at);
 }
 
 // The B&B's refinement stops at this many halvings of an interval; what
@@ -184,6 +201,7 @@ constexpr int kMostDepth = 60;
 // polyline, and equal to it above `large`.
 struct CurvePt {
   double t;
+  double acc;  // Piece::acc(t)
   Vec3 p;
   size_t k;
   double d;
@@ -227,6 +245,7 @@ struct PathPt {
   Vec3 x;
   size_t i;
   double t;
+  double acc;  // Piece::acc(t) of piece i
   Vec3 f;  // the curve point
   double d;
 };
@@ -267,6 +286,10 @@ class Measure {
     s_.pieces.clear();
     for (const Bezier& b : pieces) s_.pieces.emplace_back(b);
     gap_ = std::max({tolerance * kMeasureGap, control_magnitude(pieces) * 1e-14, 1e-300});
+    planar_ = std::all_of(poly.begin(), poly.end(), [](const Vec3& p) { return p.z == 0; }) &&
+              std::all_of(pieces.begin(), pieces.end(), [](const Bezier& b) {
+                return std::all_of(b.points.begin(), b.points.end(), [](const Vec3& p) { return p.z == 0; });
+              });
   }
 
   double curve_to_path();
@@ -295,11 +318,56 @@ class Measure {
   // With a power form the sag is the parameter's own: C(t) at fraction l
   // of the arc is within 4 s l (1 - l) of the chord's point at l, and the
   // bound is the interpolation plus that bump.
-  double bound(const Piece& pc, const CurvePt& a, const CurvePt& b) const {
-    const double s = pc.sag(a.t, b.t, a.p, b.p);
+  // In the plane z = 0, with a power form, when both ends are read
+  // against the same segment and the whole arc projects inside it (the
+  // ends' projections, widened by the sag), the distance to that segment
+  // is |n . (C(t) - A)|, a polynomial in t: its exact largest value over
+  // the arc is the bound, and *split its place (a reading there settles
+  // the arc unless another segment is nearer: it is split there).
+  double bound(const Piece& pc, const CurvePt& a, const CurvePt& b, double* split) const {
+    const double s = pc.sag(a.t, b.t, a.acc, b.acc, a.p, b.p);
+    *split = 0.5 * (a.t + b.t);
+    if (a.k == b.k && planar_ && pc.n >= 0 && poly_.size() > 1) {
+      const Vec3 A = poly_[a.k], B = poly_[a.k + 1];
+      const double L = norm(B - A);
+      if (L > 0) {
+        const Vec3 e = (B - A) / L, nv{-e.y, e.x, 0};
+        const double ua = dot(a.p - A, e), ub = dot(b.p - A, e);
+        if (std::min(ua, ub) >= s && std::max(ua, ub) + s <= L) {
+          double f[4] = {dot(nv, pc.c[0] - A), 0, 0, 0};
+          for (int j = 1; j <= pc.n; ++j) f[j] = dot(nv, pc.c[j]);
+          auto F = [&](double t) { return std::abs(((f[3] * t + f[2]) * t + f[1]) * t + f[0]); };
+          double best = std::max(a.d, b.d), arg = *split;
+          auto at = [&](double t) {
+            if (t > a.t && t < b.t) {
+              const double v = F(t);
+              if (v > best) best = v, arg = t;
+            }
+          };
+          // f' = 3 f3 t^2 + 2 f2 t + f1.
+          const double qa = 3 * f[3], qb = 2 * f[2], qc = f[1];
+          if (qa == 0) {
+            if (qb != 0) at(-qc / qb);
+          } else {
+            const double disc = qb * qb - 4 * qa * qc;
+            if (disc >= 0) {
+              const double r = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+              if (r != 0) at(qc / r);
+              at(r / qa);
+            }
+          }
+          *split = arg;
+          return best;
+        }
+      }
+    }
+    // Split where the bound is largest, kept off the ends.
     const double q = pc.n >= 0 ? s : 0, add = pc.n >= 0 ? 0 : s;
-    if (a.k == b.k) return max_line_bump(a.d, b.d, q) + add;
-    return max_of_min(a.d, seg_dist(b.p, poly_, a.k), seg_dist(a.p, poly_, b.k), b.d, q) + add;
+    double l = 0.5;
+    const double ub = a.k == b.k ? max_line_bump(a.d, b.d, q, 0, 1, &l)
+                                 : max_of_min(a.d, seg_dist(b.p, poly_, a.k), seg_dist(a.p, poly_, b.k), b.d, q, &l);
+    *split = a.t + std::clamp(l, 0.1, 0.9) * (b.t - a.t);
+    return ub + add;
   }
 
   void foot(PathPt& q, size_t i, double t);
@@ -310,8 +378,9 @@ class Measure {
       q.d = exact_to_curve(q.x, q.i, q.t);
       q.f = P()[q.i].at(q.t);
     }
+    q.acc = P()[q.i].acc(q.t);
   }
-  double bound(const PathPt& a, const PathPt& b) const;
+  double bound(const PathPt& a, const PathPt& b, double* split) const;
 
   Scratch& s_;
   std::span<const Vec3> poly_;
@@ -320,6 +389,7 @@ class Measure {
   // Whether an arc of bound ub is done, lb being the largest reading.
   bool done(double ub, double lb) const { return ub <= lb + gap_; }
   bool indexed_ = false;
+  bool planar_ = false;  // curve and polyline in the plane z = 0
   bool exact_all_ = false;  // every reading by the exact searches
   CurvePt best_c_{};         // the largest reading of each direction
   PathPt best_p_{};
@@ -345,11 +415,11 @@ double Measure::curve_to_path() {
 double Measure::curve_to_path_once() {
   auto& pts = s_.cpts;
   pts.clear();
-  // A coarse grid per piece, each arc within a sixteenth of the tolerance
-  // of its chord (polynomial pieces; 8 steps otherwise), read from the
-  // segment found at the sample before.
+  // A coarse grid per piece, each arc within twice the tolerance of its
+  // chord (polynomial pieces; 8 steps otherwise: about as many arcs as the
+  // polyline has segments), read from the segment found at the point before.
   size_t hint = 0;
-  const double coarse = std::max(large_ / 2, 1000 * gap_);
+  const double coarse = std::max(2 * large_, 1000 * gap_);
   std::vector<size_t>& first = s_.first;
   first.clear();
   for (size_t i = 0; i < P().size(); ++i) {
@@ -364,6 +434,7 @@ double Measure::curve_to_path_once() {
       CurvePt q;
       q.t = j == N ? 1.0 : double(j) / double(N);
       q.p = pc.at(q.t);
+      q.acc = pc.acc(q.t);
       read_curve(q, hint);
       ++g_cnt[3];
       hint = q.k;
@@ -392,7 +463,8 @@ double Measure::curve_to_path_once() {
       while (work.size() >= 2) {
         const CurvePt a = work[work.size() - 1], b = work[work.size() - 2];
         const int depth = depth_.back();
-        const double ub = bound(pc, a, b);
+        double split = 0;
+        const double ub = bound(pc, a, b, &split);
         if (done(ub, lb) || depth >= kMostDepth) {
           if (!done(ub, lb)) open = std::max(open, ub);
           work.pop_back();
@@ -400,8 +472,9 @@ double Measure::curve_to_path_once() {
           continue;
         }
         CurvePt m;
-        m.t = 0.5 * (a.t + b.t);
+        m.t = split;
         m.p = pc.at(m.t);
+        m.acc = pc.acc(m.t);
         read_curve(m, a.k);
         ++g_cnt[0];
         if (m.d > lb) lb = m.d, best_c_ = m;
@@ -513,8 +586,23 @@ double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
 // segment. The chord joins the two feet (one per piece when they lie in
 // neighbouring pieces); the distance moving no faster than the point gives
 // the other bound.
-double Measure::bound(const PathPt& a, const PathPt& b) const {
-  double ub = 0.5 * (a.d + b.d + dist(a.x, b.x));
+double Measure::bound(const PathPt& a, const PathPt& b, double* split) const {
+  *split = 0.5;
+  // Where the feet jump (two parts of the curve equally near), only this
+  // one shrinks with the stretch.
+  const double lip = 0.5 * (a.d + b.d + dist(a.x, b.x));
+  if (a.i == b.i && P()[a.i].n >= 0) {
+    // With a power form: x at fraction l of [a, b] against C at fraction l
+    // of [a.t, b.t]: their difference is the interpolation of a's and b's
+    // plus at most the bump 4 s l (1 - l).
+    const Piece& pc = P()[a.i];
+    double l = 0.5;
+    const double ub = max_line_bump(a.d, b.d, pc.sag(std::min(a.t, b.t), std::max(a.t, b.t), a.acc, b.acc, a.f, b.f), 0, 1, &l);
+    // Split where it is largest, kept off the ends.
+    *split = std::clamp(l, 0.1, 0.9);
+    return std::min(lip, ub);
+  }
+  double ub = lip;
   if (a.i == b.i) {
     const Piece& pc = P()[a.i];
     const bool fwd = a.t <= b.t;
@@ -522,10 +610,6 @@ double Measure::bound(const PathPt& a, const PathPt& b) const {
     const PathPt& hi = fwd ? b : a;
     const double s = pc.sag(lo.t, hi.t, lo.f, hi.f);
     ub = std::min(ub, std::max(dist_to_segment(a.x, a.f, b.f), dist_to_segment(b.x, a.f, b.f)) + s);
-    // With a power form: x at fraction l of [a, b] against C at fraction l
-    // of [a.t, b.t]: their difference is the interpolation of a's and b's
-    // plus at most the bump 4 s l (1 - l).
-    if (pc.n >= 0) ub = std::min(ub, max_line_bump(a.d, b.d, s));
   } else if (a.i + 1 == b.i || b.i + 1 == a.i) {
     // a's piece from a's foot to its end nearest b's piece, and b's the same way.
     const bool fwd = a.i < b.i;
@@ -598,7 +682,8 @@ double Measure::path_to_curve_once() {
     while (work.size() >= 2) {
       const PathPt a = work[work.size() - 1], b = work[work.size() - 2];
       const int dep = depth.back();
-      const double ub = bound(a, b);
+      double split = 0.5;
+      const double ub = bound(a, b, &split);
       if (done(ub, lb) || dep >= kMostDepth) {
         if (!done(ub, lb)) open = std::max(open, ub);
         work.pop_back();
@@ -606,10 +691,10 @@ double Measure::path_to_curve_once() {
         continue;
       }
       PathPt m;
-      m.s = 0.5 * (a.s + b.s);
+      m.s = a.s + split * (b.s - a.s);
       m.x = lerp(poly_[k], poly_[k + 1], m.s - double(k));
       // Start from the foot interpolated between the ends' when they share a piece.
-      read_path(m, a.i, a.i == b.i ? 0.5 * (a.t + b.t) : a.t);
+      read_path(m, a.i, a.i == b.i ? a.t + split * (b.t - a.t) : a.t);
       ++g_cnt[1];
       if (m.d > lb) lb = m.d, best_p_ = m;
       work.back() = m;

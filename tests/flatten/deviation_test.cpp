@@ -1,0 +1,173 @@
+// measure_deviation() against a plain reference on corpus curves: the
+// reading of each direction agrees with a dense search refined around its
+// best samples, for the flattener's polylines and for polylines whose
+// vertices were moved at random (readings above the tolerance, windows
+// that miss). Also: several pieces, rational and high-degree ones.
+#include "bezcam/flatten/deviation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "bezcam/flatten/flatten_curve.hpp"
+
+using namespace bezcam;
+
+namespace {
+
+// Nearest distance from x to the whole polyline (every segment).
+double to_path(const Vec3& x, const std::vector<Vec3>& poly) {
+  if (poly.size() == 1) return dist(x, poly[0]);
+  double m = HUGE_VAL;
+  for (size_t k = 0; k + 1 < poly.size(); ++k) m = std::min(m, dist_to_segment(x, poly[k], poly[k + 1]));
+  return m;
+}
+
+// A point of a path of pieces at u in [0, n]: piece floor(u).
+Vec3 at(const std::vector<Bezier>& pieces, double u) {
+  const size_t i = std::min(pieces.size() - 1, static_cast<size_t>(std::max(0.0, u)));
+  return evaluate(pieces[i], std::clamp(u - double(i), 0.0, 1.0));
+}
+
+// Golden-section search for an extremum of f on [a, b] to 1e-12 of it.
+template <class F>
+double golden(double a, double b, F&& f, bool maximize) {
+  const double g = 0.3819660112501051;
+  double x1 = a + g * (b - a), x2 = b - g * (b - a), f1 = f(x1), f2 = f(x2);
+  double best = maximize ? std::max(f1, f2) : std::min(f1, f2);
+  for (int i = 0; i < 100 && b - a > 1e-12; ++i) {
+    if (maximize ? f1 >= f2 : f1 <= f2) b = x2, x2 = x1, f2 = f1, x1 = a + g * (b - a), f1 = f(x1);
+    else a = x1, x1 = x2, f1 = f2, x2 = b - g * (b - a), f2 = f(x2);
+    best = maximize ? std::max({best, f1, f2}) : std::min({best, f1, f2});
+  }
+  return best;
+}
+
+// Nearest distance from x to the curve: the 3 nearest of `m` samples per
+// piece, each refined by golden section over its two neighbouring steps.
+double to_curve(const Vec3& x, const std::vector<Bezier>& pieces, const std::vector<Vec3>& dense, size_t m) {
+  std::vector<std::pair<double, size_t>> near;
+  for (size_t j = 0; j < dense.size(); ++j) near.push_back({dist(x, dense[j]), j});
+  std::partial_sort(near.begin(), near.begin() + std::min<size_t>(3, near.size()), near.end());
+  double best = near[0].first;
+  for (size_t r = 0; r < std::min<size_t>(3, near.size()); ++r) {
+    const double u = double(near[r].second) / double(m), h = 1.0 / double(m);
+    best = std::min(best, golden(std::max(0.0, u - h), std::min(double(pieces.size()), u + h),
+                                 [&](double v) { return dist(x, at(pieces, v)); }, false));
+  }
+  return best;
+}
+
+// The reference: curve -> path over `m` samples per piece, every local
+// largest refined by golden section over its two neighbouring steps; path
+// -> curve the same over 64 samples per segment.
+Deviation reference(const std::vector<Bezier>& pieces, const std::vector<Vec3>& poly, size_t m = 4000) {
+  Deviation d;
+  const size_t n = m * pieces.size();
+  std::vector<double> c(n + 1);
+  std::vector<Vec3> dense(n + 1);
+  for (size_t j = 0; j <= n; ++j) dense[j] = at(pieces, double(j) / double(m)), c[j] = to_path(dense[j], poly);
+  for (size_t j = 0; j <= n; ++j) {
+    d.curve_to_path = std::max(d.curve_to_path, c[j]);
+    if ((j == 0 || c[j] >= c[j - 1]) && (j == n || c[j] >= c[j + 1])) {
+      const double u = double(j) / double(m), h = 1.0 / double(m);
+      d.curve_to_path = std::max(d.curve_to_path, golden(std::max(0.0, u - h), std::min(double(pieces.size()), u + h),
+                                                         [&](double v) { return to_path(at(pieces, v), poly); }, true));
+    }
+  }
+  // Path -> curve against a coarser chain (each nearest point is refined).
+  const size_t m2 = 500, n2 = m2 * pieces.size();
+  std::vector<Vec3> chain(n2 + 1);
+  for (size_t j = 0; j <= n2; ++j) chain[j] = at(pieces, double(j) / double(m2));
+  for (size_t k = 0; k + 1 < poly.size() || k == 0; ++k) {
+    const Vec3 a = poly[k], b = poly[std::min(k + 1, poly.size() - 1)];
+    constexpr int kSteps = 64;
+    std::vector<double> e(kSteps + 1);
+    for (int i = 0; i <= kSteps; ++i) e[i] = to_curve(lerp(a, b, double(i) / kSteps), pieces, chain, m2);
+    for (int i = 0; i <= kSteps; ++i) {
+      d.path_to_curve = std::max(d.path_to_curve, e[i]);
+      if ((i == 0 || e[i] >= e[i - 1]) && (i == kSteps || e[i] >= e[i + 1])) {
+        const double s = double(i) / kSteps, h = 1.0 / kSteps;
+        d.path_to_curve = std::max(d.path_to_curve, golden(std::max(0.0, s - h), std::min(1.0, s + h),
+                                                           [&](double v) { return to_curve(lerp(a, b, v), pieces, chain, m2); },
+                                                           true));
+      }
+    }
+    if (poly.size() == 1) break;
+  }
+  return d;
+}
+
+void expect_agrees(const std::vector<Bezier>& pieces, const std::vector<Vec3>& poly, double tol, const char* what) {
+  const Deviation fast = measure_deviation(pieces, poly, tol);
+  const Deviation ref = reference(pieces, poly);
+  // The reference reads at points, refined to 1e-12 of the parameter: the
+  // measurement is within kMeasureGap of the tolerance of the truth; the
+  // margin here is ten times that.
+  EXPECT_NEAR(fast.curve_to_path, ref.curve_to_path, 10 * kMeasureGap * tol) << what;
+  EXPECT_NEAR(fast.path_to_curve, ref.path_to_curve, 10 * kMeasureGap * tol) << what;
+}
+
+}  // namespace
+
+TEST(Deviation, AgreesWithAReferenceOnCorpusCurves) {
+  // BEZCAM_SHARED_DIR in the environment overrides the build's (a worktree's).
+  const char* env = std::getenv("BEZCAM_SHARED_DIR");
+  const std::string shared = env ? env : BEZCAM_SHARED_DIR;
+  std::ifstream in(shared + "/bench/cubics-10k.json");
+  if (!in) GTEST_SKIP() << "shared corpus not found at " << shared;
+  const auto doc = nlohmann::json::parse(in);
+  std::mt19937_64 rng(15);
+  std::uniform_real_distribution<double> off(-2, 2);
+  const double tol = 0.01;
+  for (size_t i = 0; i < doc["curves"].size(); i += 1000) {
+    std::vector<Vec3> p;
+    for (const auto& q : doc["curves"][i]) p.push_back({q[0].get<double>(), q[1].get<double>()});
+    const std::vector<Bezier> b = {Bezier::make(p)};
+    const std::vector<Vec3> poly = flatten(b, {tol, -1}).points;
+    expect_agrees(b, poly, tol, "flattened");
+    // Vertices moved at random by up to twice the tolerance each way.
+    std::vector<Vec3> moved = poly;
+    for (Vec3& v : moved) v += Vec3{off(rng) * tol, off(rng) * tol};
+    expect_agrees(b, moved, tol, "moved");
+    // Every other vertex left out.
+    std::vector<Vec3> sparse;
+    for (size_t k = 0; k < poly.size(); k += 2) sparse.push_back(poly[k]);
+    if (sparse.back() != poly.back()) sparse.push_back(poly.back());
+    expect_agrees(b, sparse, tol, "sparse");
+  }
+}
+
+TEST(Deviation, AgreesWithAReferenceOnPathsOfSeveralKindsOfPieces) {
+  const double w = std::sqrt(0.5);
+  const std::vector<Bezier> path = {
+      Bezier::make({{0, 0}, {20, 10}, {30, 20}, {30, 30}}),
+      Bezier::make({{30, 30}, {30, 40}, {20, 40}}, {1, w, 1}),  // a quarter circle
+      Bezier::make({{20, 40}, {10, 40}, {0, 60}, {-10, 30}, {5, 20}, {0, 0}}),  // degree 5
+  };
+  for (double tol : {0.1, 0.01}) {
+    const std::vector<Vec3> poly = flatten(path, {tol, 3}).points;
+    expect_agrees(path, poly, tol, "flattened");
+    // A polyline that cuts the corner of the arc.
+    std::vector<Vec3> cut = poly;
+    for (Vec3& v : cut)
+      if (v.y > 30 && v.x > 20) v = v + (Vec3{20, 30} - v) * 0.01;
+    expect_agrees(path, cut, tol, "cut");
+  }
+}
+
+TEST(Deviation, ALoopSkippedByThePolylineReadsItsSize) {
+  // The loop of this cubic is about 9 mm across: a polyline that goes
+  // straight across its crossing leaves all of it out.
+  const Bezier b = Bezier::make({{0, 0}, {30, 20}, {-10, 20}, {20, 0}});
+  const std::vector<Vec3> skip = {{0, 0}, {20, 0}};
+  const Deviation d = measure_deviation(std::span<const Bezier>(&b, 1), skip, 0.01);
+  const Deviation ref = reference({b}, skip);
+  EXPECT_GT(d.curve_to_path, 5);
+  EXPECT_NEAR(d.curve_to_path, ref.curve_to_path, 1e-8);
+  EXPECT_NEAR(d.path_to_curve, ref.path_to_curve, 1e-8);
+}
