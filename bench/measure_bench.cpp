@@ -18,7 +18,6 @@
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 
-namespace bezcam { extern long g_cnt[8]; }
 int main(int argc, char** argv) {
   std::string corpus = std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json";
   bool quick = false;
@@ -60,8 +59,6 @@ int main(int argc, char** argv) {
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("| %g | %zu | %.3f | %.0f | %.0f | %.6g | %.6g |\n", tol, segs, s, curves.size() / s, segs / s,
                 worst.curve_to_path, worst.path_to_curve);
-    for (long& c : bezcam::g_cnt) std::printf(" %.2f", c / double(segs)), c = 0;
-    std::printf("\n");
   }
   return 0;
 }

@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace bezcam {
-long g_cnt[8];
+
 namespace {
 
 // Squared distance from p to the segment [a, b]: the arithmetic of
@@ -436,7 +436,6 @@ double Measure::curve_to_path_once() {
       q.p = pc.at(q.t);
       q.acc = pc.acc(q.t);
       read_curve(q, hint);
-      ++g_cnt[3];
       hint = q.k;
       pts.push_back(q);
     }
@@ -476,7 +475,6 @@ double Measure::curve_to_path_once() {
         m.p = pc.at(m.t);
         m.acc = pc.acc(m.t);
         read_curve(m, a.k);
-        ++g_cnt[0];
         if (m.d > lb) lb = m.d, best_c_ = m;
         // [a, m] on top, then [m, b].
         work.back() = m;
@@ -499,7 +497,6 @@ void Measure::foot(PathPt& q, size_t i, double t) {
   for (int it = 0; it < 16; ++it) {
     const Piece& pc = P()[i];
     pc.derivatives(t, p, d1, d2);
-    ++g_cnt[2];
     const Vec3 r = p - q.x;
     const double r2 = dot(r, r);
     if (r2 < best) best = r2, q.i = i, q.t = t, q.f = p;
@@ -555,7 +552,6 @@ double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
   stack.clear();
   for (size_t i = 0; i < P().size(); ++i) stack.push_back({i, 0, 1, P()[i].at(0), P()[i].at(1), 0});
   const double tiny = gap_;
-  ++g_cnt[4];
   while (!stack.empty()) {
     const Arc a = stack.back();
     stack.pop_back();
@@ -695,7 +691,6 @@ double Measure::path_to_curve_once() {
       m.x = lerp(poly_[k], poly_[k + 1], m.s - double(k));
       // Start from the foot interpolated between the ends' when they share a piece.
       read_path(m, a.i, a.i == b.i ? a.t + split * (b.t - a.t) : a.t);
-      ++g_cnt[1];
       if (m.d > lb) lb = m.d, best_p_ = m;
       work.back() = m;
       work.push_back(a);
