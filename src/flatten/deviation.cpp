@@ -403,7 +403,7 @@ class Measure {
 // exactly and the search run again.
 double Measure::curve_to_path() {
   const double d = curve_to_path_once();
-  if (exact_all_ || !(best_c_.d > 0)) return d;
+  if (exact_all_ || !(best_c_.d > gap_)) return d;
   size_t k = best_c_.k;
   if (exact_to_path(best_c_.p, k) >= best_c_.d - gap_) return d;
   exact_all_ = true;
@@ -507,9 +507,10 @@ void Measure::foot(PathPt& q, size_t i, double t) {
     // The step would bring the distance down by about g^2 / (2 gp d): done
     // when that is below 1e-4 of the resolution; when below a tenth of it,
     // the step is the last (the step after would gain about its square).
-    const double gain = g * g / (2 * gp * std::sqrt(r2));
-    if (!(gain >= 0.1 * gap_)) break;
-    const bool last = gain < 100 * gap_;
+    // (Compared squared: gain^2 = g^4 / (4 gp^2 r2).)
+    const double g2 = g * g, lhs = g2 * g2, rhs = 4 * gp * gp * r2;
+    if (!(lhs >= 0.01 * gap_ * gap_ * rhs)) break;
+    const bool last = lhs < 1e4 * gap_ * gap_ * rhs;
     double tn = t - g / gp;
     if (tn > 1) {
       if (t == 1 && i + 1 < P().size()) {
@@ -541,6 +542,40 @@ void Measure::foot(PathPt& q, size_t i, double t) {
 // of every piece (an arc is no nearer than its chord's distance less its
 // sag), arcs that could be nearer halved, the nearest point met polished by
 // Newton steps. *piece and *t receive its foot.
+// Whether the arc a of a power-form piece is certainly no nearer to x
+// than `floor`, when |C(t) - x|^2 is convex over it: its second derivative
+// 2 (|C'|^2 + (C - x) . C'') is positive where |C'| >= |C'(tm)| - h/2 max
+// |C''| exceeds sqrt(max |C - x| max |C''|). Then Newton steps kept in the
+// arc find its nearest point (noted in best, bi, bt when nearer), and the
+// tangent there bounds the rest: r^2 >= r^2(t) - |(r^2)'(t)| h.
+bool convex_min_at_least(const Piece& pc, const Arc& a, const Vec3& x, double floor, double& best, size_t& bi,
+                         double& bt) {
+  const double h = a.t1 - a.t0, tm = 0.5 * (a.t0 + a.t1);
+  const double A = std::max(pc.acc(a.t0), pc.acc(a.t1));
+  const double s = h * h * 0.125 * A;
+  Vec3 p, d1, d2;
+  pc.derivatives(tm, p, d1, d2);
+  const double speed = norm(d1) - 0.5 * h * A;
+  const double far = std::max(dist(x, a.p0), dist(x, a.p1)) + s;
+  if (!(speed > 0 && speed * speed > far * A)) return false;
+  double t = tm, r2 = 0, g = 0;
+  for (int it = 0; it < 30; ++it) {
+    pc.derivatives(t, p, d1, d2);
+    const Vec3 r = p - x;
+    r2 = dot(r, r), g = dot(r, d1);
+    const double gp = dot(d1, d1) + dot(r, d2);
+    const double tn = std::clamp(t - g / gp, a.t0, a.t1);
+    if (tn == t) break;
+    t = tn;
+  }
+  pc.derivatives(t, p, d1, d2);
+  r2 = dot(p - x, p - x), g = dot(p - x, d1);
+  if (std::sqrt(r2) < best) best = std::sqrt(r2), bi = a.i, bt = t;
+  // Past an end where the slope pushes outwards, the bound holds on the arc.
+  const double lb2 = r2 - 2 * std::abs(g) * std::max(t - a.t0, a.t1 - t);
+  return floor <= 0 || (lb2 > 0 && lb2 >= floor * floor);
+}
+
 double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
   PathPt q;
   q.x = x;
@@ -569,6 +604,7 @@ double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
     }
     // An arc this close to its chord is within 2 tiny of what it can give.
     if (sag <= tiny) continue;
+    if (pc.n >= 2 && convex_min_at_least(pc, a, x, best - tiny, best, bi, bt)) continue;
     stack.push_back({a.i, a.t0, tm, a.p0, pm, a.depth + 1});
     stack.push_back({a.i, tm, a.t1, pm, a.p1, a.depth + 1});
   }
@@ -584,9 +620,9 @@ double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
 // the other bound.
 double Measure::bound(const PathPt& a, const PathPt& b, double* split) const {
   *split = 0.5;
-  // Where the feet jump (two parts of the curve equally near), only this
-  // one shrinks with the stretch.
-  const double lip = 0.5 * (a.d + b.d + dist(a.x, b.x));
+  // The bound from the distance moving no faster than the point (lip
+  // below) is the one that shrinks with the stretch where the feet jump
+  // (two parts of the curve equally near).
   if (a.i == b.i && P()[a.i].n >= 0) {
     // With a power form: x at fraction l of [a, b] against C at fraction l
     // of [a.t, b.t]: their difference is the interpolation of a's and b's
@@ -596,9 +632,10 @@ double Measure::bound(const PathPt& a, const PathPt& b, double* split) const {
     const double ub = max_line_bump(a.d, b.d, pc.sag(std::min(a.t, b.t), std::max(a.t, b.t), a.acc, b.acc, a.f, b.f), 0, 1, &l);
     // Split where it is largest, kept off the ends.
     *split = std::clamp(l, 0.1, 0.9);
-    return std::min(lip, ub);
+    if (ub <= std::max(a.d, b.d) + gap_) return ub;
+    return std::min(ub, 0.5 * (a.d + b.d + dist(a.x, b.x)));
   }
-  double ub = lip;
+  double ub = 0.5 * (a.d + b.d + dist(a.x, b.x));
   if (a.i == b.i) {
     const Piece& pc = P()[a.i];
     const bool fwd = a.t <= b.t;
@@ -626,7 +663,7 @@ double Measure::bound(const PathPt& a, const PathPt& b, double* split) const {
 // exactly and the search run again.
 double Measure::path_to_curve() {
   const double d = path_to_curve_once();
-  if (exact_all_ || !(best_p_.d > 0)) return d;
+  if (exact_all_ || !(best_p_.d > gap_)) return d;
   size_t i = best_p_.i;
   double t = best_p_.t;
   if (exact_to_curve(best_p_.x, i, t) >= best_p_.d - gap_) return d;
@@ -640,14 +677,17 @@ double Measure::path_to_curve_once() {
   auto& pts = s_.ppts;
   pts.clear();
   // Two readings per segment and the end, the foot followed from the
-  // vertex before; the first found by the exact search.
+  // vertex before; the first one's from the curve's start (by the exact
+  // search unless it is there).
   constexpr int kCoarse = 2;
   size_t fi = 0;
   double ft = 0;
   {
     PathPt q;
     q.s = 0, q.x = poly_[0];
-    exact_to_curve(q.x, fi, ft);
+    foot(q, 0, 0);
+    fi = q.i, ft = q.t;
+    if (q.d > gap_) exact_to_curve(q.x, fi, ft);
   }
   const size_t nseg = poly_.size() > 1 ? poly_.size() - 1 : 0;
   for (size_t k = 0; k <= nseg; ++k) {
