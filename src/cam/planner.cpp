@@ -612,8 +612,12 @@ struct Builder {
   }
 
   void build() {
-    size_t pause = 0;
+    size_t pause = 0, kept = 0;  // kept: the first segment whose pieces are kept
     bool stop_before = true;  // the machine is at rest
+    // About a segment per block (a blend replaces the ends it joins): no
+    // reallocation holding the segments twice while a long program grows.
+    segs.reserve(tl.blocks.size() + 16);
+    junction.reserve(tl.blocks.size() + 16);
     for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
       bool pause_here = false;
       while (pause < tl.pauses.size() && tl.pauses[pause].before_block <= bi) {
@@ -698,6 +702,10 @@ struct Builder {
       }
       stop_before = false;
       if (mine.empty() && pause_here) stop_before = true;
+      // A summary needs no segment's geometry once no blend can reach it
+      // (blends change the last two): free it as the program goes.
+      if (summary)
+        for (; kept < segs.size() && kept + 2 < segs.size(); ++kept) std::vector<PlanSegment::Piece>().swap(segs[kept].pieces);
     }
     if (!segs.empty()) exact_stop_end(Stop::end);
     junction.push_back(0);  // the end
