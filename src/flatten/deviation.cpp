@@ -602,8 +602,19 @@ double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
       if (q.d < d) best = q.d, bi = q.i, bt = q.t;
       else best = d, bi = a.i, bt = tm;
     }
-    // An arc this close to its chord is within 2 tiny of what it can give.
-    if (sag <= tiny) continue;
+    // An arc this close to its chord is within 2 tiny of what it can give,
+    // once read near the chord's point nearest to x (the midpoint need not
+    // be: on a straight piece it may be no nearer than the best so far
+    // while the foot lies elsewhere on it).
+    if (sag <= tiny) {
+      const Vec3 ch = a.p1 - a.p0;
+      const double len2 = dot(ch, ch);
+      const double l = len2 > 0 ? std::clamp(dot(x - a.p0, ch) / len2, 0.0, 1.0) : 0.5;
+      q.x = x;
+      foot(q, a.i, a.t0 + l * (a.t1 - a.t0));
+      if (q.d < best) best = q.d, bi = q.i, bt = q.t;
+      continue;
+    }
     if (pc.n >= 2 && convex_min_at_least(pc, a, x, best - tiny, best, bi, bt)) continue;
     stack.push_back({a.i, a.t0, tm, a.p0, pm, a.depth + 1});
     stack.push_back({a.i, tm, a.t1, pm, a.p1, a.depth + 1});
