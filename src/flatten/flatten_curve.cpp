@@ -168,6 +168,69 @@ double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
   return std::max(l, cubic_within({m, bc, c, d[3]}, budget, depth - 1));
 }
 
+// The parametric distance of band_bound() for a planar polynomial cubic
+// sub-curve S (control points S[0..3]) against the segment [A, B], in
+// closed form. D = S - L has control points d0 = S0 - A, d1, d2, d3 = S3 - B;
+// when the inner points of S project inside the segment (no clamping), d1
+// and d2 are across the chord, so along the chord D has the Bernstein
+// coefficients (a0, 0, 0, a3) and across it (p0, p1, p2, p3). The cross
+// part's largest magnitude P is exact (its extremes are at the ends or at
+// the roots of a quadratic); the along part is at most max(|a0|, |a3|) = T.
+// So sup |D| <= sqrt(P^2 + T^2), and sup |D| >= P. Both are exact to within
+// a relative T^2 / (2 P^2), which is about an eighth of the square of the
+// angle the chord turns by (the ends are shifted across the curve, nearly
+// across the chord). When the budget falls between them, or the inner
+// points project outside the segment, the difference cubic is subdivided
+// (cubic_within()). `bulge`, when not null, receives the largest signed
+// distance of S from the line AB on the side of its inner control points:
+// how far the sub-curve bulges past the chord, which steers the search.
+// Squared quantities are kept multiplied by |AB|^2 to spare divisions.
+double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double budget, double* bulge) {
+  const double abx = B.x - A.x, aby = B.y - A.y;
+  const double l2 = abx * abx + aby * aby;
+  auto cross_ab = [&](double x, double y) { return abx * y - aby * x; };
+  auto dot_ab = [&](double x, double y) { return abx * x + aby * y; };
+  const double w1x = S[1].x - A.x, w1y = S[1].y - A.y, w2x = S[2].x - A.x, w2y = S[2].y - A.y;
+  const double d0x = S[0].x - A.x, d0y = S[0].y - A.y, d3x = S[3].x - B.x, d3y = S[3].y - B.y;
+  const double c0 = cross_ab(d0x, d0y), c1 = cross_ab(w1x, w1y), c2 = cross_ab(w2x, w2y), c3 = cross_ab(d3x, d3y);
+  const double l1 = dot_ab(w1x, w1y), l2p = dot_ab(w2x, w2y);
+  const bool clamped = !(l2 > 1e-300) || l1 < 0 || l1 > l2 || l2p < 0 || l2p > l2;
+  // Extremes of the cross part: the ends and the roots of its derivative,
+  // 3 B2(c1 - c0, c2 - c1, c3 - c2), in power form.
+  const double e0 = c1 - c0, e1 = c2 - c1, e2 = c3 - c2;
+  double r[2];
+  const int n = quadratic_roots01(e0, 2 * (e1 - e0), e0 - 2 * e1 + e2, r);
+  double lo = std::min(c0, c3), hi = std::max(c0, c3);
+  // The bulge: on the side sg of the inner points, the largest interior
+  // extreme, when both ends lie on the other side (a shape the search's
+  // model fits; otherwise the bulge is left unknown).
+  const double sg = c1 + c2 >= 0 ? 1 : -1;
+  double in = -kInf;
+  for (int i = 0; i < n; ++i) {
+    const double s = r[i], u = 1 - s;
+    const double v = u * u * (c0 * u + 3 * c1 * s) + s * s * (3 * c2 * u + c3 * s);
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    in = std::max(in, sg * v);
+  }
+  const double P2 = std::max(lo * lo, hi * hi);
+  if (bulge && l2 > 0 && sg * c0 <= 0 && sg * c3 <= 0 && in > -kInf) *bulge = in / std::sqrt(l2);
+  const double b2 = budget * budget * l2;
+  if (!clamped) {
+    const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
+    const double U2 = P2 + std::max(a0 * a0, a3 * a3);
+    if (U2 <= b2) return std::sqrt(U2 / l2);
+  }
+  // The cross part alone exceeds the budget somewhere: so does |D|.
+  if (P2 > b2 && l2 > 0) return std::sqrt(P2 / l2);
+  std::array<Vec3, 4> d;
+  d[0] = S[0] - A;
+  d[3] = S[3] - B;
+  const Vec3 ab = B - A;
+  for (int k = 1; k < 3; ++k) d[k] = S[k] - (A + ab * (l2 > 0 ? std::clamp(dot(S[k] - A, ab) / l2, 0.0, 1.0) : 0.0));
+  return cubic_within(d, budget, 40);
+}
+
 // band_deviation() on a sub-curve already cut out: L has the sub-curve's
 // degree and weights, its ends A and B, its inner points the projections
 // of the sub-curve's on the line AB clamped to the segment. L lies on the
@@ -283,17 +346,31 @@ struct Prepared {
     return n / -ln;
   }
 
+  // The cubic sub-curve on [t0, t1] from the power form (end points and
+  // end tangents), without building a Bézier.
+  void sub_points(double t0, double t1, Vec3* S) const {
+    const double h = (t1 - t0) / 3;
+    S[0] = point(t0);
+    S[3] = point(t1);
+    S[1] = S[0] + tangent(t0) * h;
+    S[2] = S[3] - tangent(t1) * h;
+  }
+
   // band_deviation() of the piece on [t0, t1]; for cubics with a budget,
-  // decided on the difference cubic directly (cubic_within()).
-  double band(double t0, double t1, const Vec3& A, const Vec3& B, double budget) const {
+  // decided on the difference cubic directly: in closed form in the plane
+  // (band_cubic_planar(), which also reports the bulge), else by
+  // subdivision (cubic_within()).
+  double band(double t0, double t1, const Vec3& A, const Vec3& B, double budget, double* bulge = nullptr) const {
     if (!cubic || budget < 0) return band_bound(sub(t0, t1), A, B, budget);
-    const Bezier s = sub(t0, t1);
+    Vec3 S[4];
+    sub_points(t0, t1, S);
+    if (planar) return band_cubic_planar(S, A, B, budget, bulge);
     const Vec3 ab = B - A;
     const double l2 = dot(ab, ab);
     std::array<Vec3, 4> d;
     for (int k = 0; k < 4; ++k) {
-      const Vec3 L = k == 0 ? A : k == 3 ? B : A + ab * (l2 > 0 ? std::clamp(dot(s.points[k] - A, ab) / l2, 0.0, 1.0) : 0.0);
-      d[k] = s.points[k] - L;
+      const Vec3 L = k == 0 ? A : k == 3 ? B : A + ab * (l2 > 0 ? std::clamp(dot(S[k] - A, ab) / l2, 0.0, 1.0) : 0.0);
+      d[k] = S[k] - L;
     }
     return cubic_within(d, budget, 40);
   }
@@ -353,8 +430,9 @@ constexpr double kBandShare = 0.96;
 // A band chord is accepted once its parameter step is within this share of
 // one known not to fit.
 constexpr double kBandClose = 0.97;
-// First step of the search from the predicted chord: 1 / 1.03 > 0.97, so a
-// good prediction is settled by two tries.
+// Without a bulge to steer by (rational or higher-degree pieces, 3D
+// cubics): first step of the search from the predicted chord; 1 / 1.03 >
+// 0.97, so a good prediction is settled by two tries.
 constexpr double kBandStep = 0.03;
 
 // The band (docs/flattening.md): from vertex A (at parameter t0 of the
@@ -363,6 +441,16 @@ constexpr double kBandStep = 0.03;
 // n towards the convex side, delta = kBandShare of tol - margin - rounding,
 // or delta = 0 when that chord fails (inflections) and at the piece's end.
 // `Ar` is the rounded first vertex, already emitted.
+//
+// The search is steered by the bulge (planar cubics): with the ends shifted
+// by dA and dB across the curve, a chord's bulge past the segment is about
+// H - (dA + dB) / 2, H the sub-curve's bulge past its own chord, which grows
+// like the square of the step. So fill = (bulge + (dA + dB) / 2) / (budget +
+// (dA + dB) / 2) is the share of the longest chord's H that this one uses,
+// and a chord is settled once its fill reaches kAcceptShare (its step is
+// within 3 % of the longest) or its step is within kBandClose of one that
+// failed. The next chord's first step is the last one's, scaled by the fill
+// and by the change of bending, so most chords are settled by their first try.
 template <class Emit>
 double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, const ToleranceBudget& tb, Vec3 Ar,
                   Emit&& emit) {
@@ -373,54 +461,74 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
   double bound = 0;
   struct Chord {
     double t1 = 0, dev = 0, disp = 0;
+    double fill = -kInf;  // see above; -infinity: not known
+    double room = 0;   // budget + (dA + dB) / 2
     Vec3 B, Br;
     bool on = false;  // B on the curve
   };
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
     const Prepared P(pieces[pi]);
+    const bool steered = P.cubic && P.planar;
     Vec3 A = pieces[pi].front();
     double dispA = dist(Ar, A);  // includes the tiny gap at a path joint
+    double offA = 0;             // how far A lies off the curve
     double t0 = 0;
-    // A band chord from an end on the curve is about sqrt(1.5) times as long.
-    double dt = 1.2 * P.first_step(tol - margin - dispA);
+    // A band chord from an end on the curve has room for about budget +
+    // shift / 2 of bulge.
+    double dt = steered ? P.first_step(tol - margin - dispA + 0.5 * shift)
+                        : 1.2 * P.first_step(tol - margin - dispA);
+    // One try: B shifted across the curve, then (when allowed and of use)
+    // B on the curve.
     auto try_chord = [&](double t1, Chord& c, bool zero) {
       const Vec3 on = P.point(t1);
       const Vec3 side = t1 < 1 ? P.convex_side(t1) : Vec3{};
+      double fill = -kInf;
       for (const double delta : {shift, 0.0}) {
         if (delta == 0 && !zero) continue;
-        if (delta > 0 && !(norm(side) > 0)) continue;
-        const Vec3 B = on + side * delta;
+        if (delta > 0 && !(side.x != 0 || side.y != 0 || side.z != 0)) continue;
+        // The shifted chord's bulge is over the budget: with B on the
+        // curve it only grows, so that try would be wasted.
+        if (delta == 0 && fill > 1) break;
+        const Vec3 B = delta > 0 ? on + side * delta : on;
         const Vec3 Br = opt.decimals < 0 ? B : quantize(B, opt.decimals);
-        const double disp = std::max(dispA, opt.decimals < 0 ? 0.0 : dist(Br, B));
+        const double disp = opt.decimals < 0 ? dispA : std::max(dispA, dist(Br, B));
         const double budget = tol - margin - disp;
         if (!(budget > 0)) continue;
-        const double dev = P.band(t0, t1, A, B, budget);
-        if (dev <= budget) {
-          c = {t1, dev, disp, B, Br, delta == 0};
-          return true;
-        }
+        double bulge = -kInf;
+        const double dev = P.band(t0, t1, A, B, budget, steered ? &bulge : nullptr);
+        const double room = budget + 0.5 * (offA + delta);
+        fill = bulge > -kInf ? (bulge + 0.5 * (offA + delta)) / room : -kInf;
+        c = {t1, dev, disp, fill, room, B, Br, delta == 0};
+        if (dev <= budget) return true;
       }
+      c.fill = fill;
       return false;
     };
     while (t0 < 1) {
       double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
       bool found = false;
       Chord best, c;
-      // Steps of 3 %, doubling until the answer changes, then bisection.
       double step = kBandStep;
       for (int iter = 0; iter < 200; ++iter) {
         const bool last = dt >= 1 - t0;
         if (last) dt = 1 - t0;
-        if (try_chord(last ? 1.0 : t0 + dt, c, !found || best.on)) {
+        const bool ok = try_chord(last ? 1.0 : t0 + dt, c, !found || best.on);
+        if (ok) {
           found = true;
           lo = dt;
           best = c;
-          if (last || lo >= kBandClose * hi) break;
-          dt = std::isfinite(hi) ? 0.5 * (lo + hi) : dt * (1 + step);
+          if (last || lo >= kBandClose * hi || c.fill >= kAcceptShare) break;
+          double nd = !steered ? dt * (1 + step) : c.fill > 0 ? dt * std::min(4.0, std::sqrt(kAimShare / c.fill)) : 2 * dt;
+          if (nd >= hi) nd = 0.5 * (lo + hi);
+          dt = nd;
         } else {
           hi = dt;
           if (found && lo >= kBandClose * hi) break;
-          dt = found ? 0.5 * (lo + hi) : dt / (1 + step);
+          double nd = !std::isfinite(c.fill) ? dt / (1 + step)
+                      : c.fill > 1       ? dt * std::clamp(std::sqrt(kAimShare / c.fill), 0.05, 0.99)
+                                         : 0.7 * dt;
+          if (found && nd <= lo) nd = 0.5 * (lo + hi);
+          dt = nd;
         }
         step = std::min(2 * step, 1.0);
       }
@@ -428,16 +536,23 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
       bound = std::max(bound, best.dev + best.disp);
       emit({best.Br, pi, best.t1});
       if (best.t1 < 1) {
-        // Next guess: the same step, scaled by the change of bending.
+        // Next guess: the same step, scaled by the change of bending and,
+        // when known, by the room this chord left.
         double g = 1;
         const double b0 = P.bend(best.t1 - 0.5 * lo), b1 = P.bend(std::min(1.0, best.t1 + 0.5 * lo));
         if (b0 > 0 && b1 > 0) g = std::sqrt(b0 / b1);
-        dt = lo * std::clamp(g, 0.25, 2.0);
+        if (best.fill > 0) {
+          // The next chord starts where this one ends and ends shifted.
+          const double next_room = best.room + 0.5 * (shift - offA);
+          g *= std::sqrt(kAimShare * std::max(next_room, 0.5 * best.room) / (best.fill * best.room));
+        }
+        dt = lo * std::clamp(g, 0.25, 4.0);
       }
       t0 = best.t1;
       A = best.B;
       Ar = best.Br;
       dispA = dist(Ar, A);
+      offA = best.on ? 0.0 : shift;
     }
   }
   return bound;
