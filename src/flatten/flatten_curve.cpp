@@ -294,6 +294,10 @@ struct Prepared {
   double bend(double t) const {
     if (!cubic) return 0;
     const Vec3 d1 = tangent(t), d2 = c3 * (6 * t) + c2 * 2;
+    if (planar) {
+      const double s2 = d1.x * d1.x + d1.y * d1.y;
+      return s2 > 0 ? std::abs(d1.x * d2.y - d1.y * d2.x) / std::sqrt(s2) : std::sqrt(d2.x * d2.x + d2.y * d2.y);
+    }
     const double n = norm(d1);
     return n > 0 ? norm(cross(d1, d2)) / n : norm(d2);
   }
@@ -332,6 +336,14 @@ struct Prepared {
     if (cubic) {
       d1 = tangent(t);
       d2 = c3 * (6 * t) + c2 * 2;
+      if (planar) {
+        // The same in the plane: the normal part of M'' is perp(M') cr /
+        // |M'|^2, with cr = M' x M''; no second square root.
+        const double s2 = d1.x * d1.x + d1.y * d1.y, cr = d1.x * d2.y - d1.y * d2.x;
+        if (!(cr * cr > 1e-24 * (d2.x * d2.x + d2.y * d2.y) * s2) || !std::isfinite(cr * cr * s2)) return {};
+        const double k = (cr > 0 ? -1 : 1) / std::sqrt(s2);
+        return {-d1.y * k, d1.x * k};
+      }
     } else {
       d1 = derivative(*b, t);
       d2 = second_derivative(*b, t);
@@ -430,6 +442,10 @@ constexpr double kBandShare = 0.96;
 // A band chord is accepted once its parameter step is within this share of
 // one known not to fit.
 constexpr double kBandClose = 0.97;
+// ... or once its sagitta is this share of the longest chord's: its step is
+// then at least sqrt(0.9) = 95 % of the longest (and most are settled by
+// their first try, aimed at kAimShare).
+constexpr double kBandAccept = 0.90;
 // Without a bulge to steer by (rational or higher-degree pieces, 3D
 // cubics): first step of the search from the predicted chord; 1 / 1.03 >
 // 0.97, so a good prediction is settled by two tries.
@@ -451,6 +467,19 @@ constexpr double kBandStep = 0.03;
 // within 3 % of the longest) or its step is within kBandClose of one that
 // failed. The next chord's first step is the last one's, scaled by the fill
 // and by the change of bending, so most chords are settled by their first try.
+// The search's model of a chord whose ends lie dA and dB off the curve on
+// its convex side, for a sub-curve of sagitta H (its bulge past its own
+// chord, growing like the square of the step): near the top the sub-curve
+// is a parabola, and its bulge past the chord is H - (dA + dB) / 2 +
+// (dB - dA)^2 / (16 H). sagitta() inverts that for a measured bulge,
+// longest_sagitta() gives the H whose bulge is the budget.
+double sagitta(double bulge, double dA, double dB) {
+  const double m = bulge + 0.5 * (dA + dB), q = 0.25 * (dB - dA) * (dB - dA);
+  if (q == 0) return m;
+  return m * m > q ? 0.5 * (m + std::sqrt(m * m - q)) : 0.5 * m;
+}
+double longest_sagitta(double budget, double dA, double dB) { return sagitta(budget, dA, dB); }
+
 template <class Emit>
 double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, const ToleranceBudget& tb, Vec3 Ar,
                   Emit&& emit) {
@@ -461,8 +490,8 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
   double bound = 0;
   struct Chord {
     double t1 = 0, dev = 0, disp = 0;
-    double fill = -kInf;  // see above; -infinity: not known
-    double room = 0;   // budget + (dA + dB) / 2
+    double H = -kInf;  // the sub-curve's sagitta (sagitta()); -infinity: not known
+    double budget = 0;
     Vec3 B, Br;
     bool on = false;  // B on the curve
   };
@@ -475,33 +504,32 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     double t0 = 0;
     // A band chord from an end on the curve has room for about budget +
     // shift / 2 of bulge.
-    double dt = steered ? P.first_step(tol - margin - dispA + 0.5 * shift)
+    double dt = steered ? P.first_step(longest_sagitta(tol - margin - dispA, 0, shift))
                         : 1.2 * P.first_step(tol - margin - dispA);
     // One try: B shifted across the curve, then (when allowed and of use)
     // B on the curve.
     auto try_chord = [&](double t1, Chord& c, bool zero) {
       const Vec3 on = P.point(t1);
       const Vec3 side = t1 < 1 ? P.convex_side(t1) : Vec3{};
-      double fill = -kInf;
+      double H = -kInf;
       for (const double delta : {shift, 0.0}) {
         if (delta == 0 && !zero) continue;
         if (delta > 0 && !(side.x != 0 || side.y != 0 || side.z != 0)) continue;
-        // The shifted chord's bulge is over the budget: with B on the
-        // curve it only grows, so that try would be wasted.
-        if (delta == 0 && fill > 1) break;
         const Vec3 B = delta > 0 ? on + side * delta : on;
         const Vec3 Br = opt.decimals < 0 ? B : quantize(B, opt.decimals);
         const double disp = opt.decimals < 0 ? dispA : std::max(dispA, dist(Br, B));
         const double budget = tol - margin - disp;
         if (!(budget > 0)) continue;
+        // The shifted chord's sagitta is over what B on the curve allows:
+        // that try would be wasted.
+        if (delta == 0 && H > longest_sagitta(budget, offA, 0)) break;
         double bulge = -kInf;
         const double dev = P.band(t0, t1, A, B, budget, steered ? &bulge : nullptr);
-        const double room = budget + 0.5 * (offA + delta);
-        fill = bulge > -kInf ? (bulge + 0.5 * (offA + delta)) / room : -kInf;
-        c = {t1, dev, disp, fill, room, B, Br, delta == 0};
+        H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
+        c = {t1, dev, disp, H, budget, B, Br, delta == 0};
         if (dev <= budget) return true;
       }
-      c.fill = fill;
+      c.H = H;
       return false;
     };
     while (t0 < 1) {
@@ -513,20 +541,27 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         const bool last = dt >= 1 - t0;
         if (last) dt = 1 - t0;
         const bool ok = try_chord(last ? 1.0 : t0 + dt, c, !found || best.on);
+        // The share of the longest chord's sagitta this one uses, for a
+        // next try with B shifted (or, when this one fits, as it is).
+        const double fill = c.H / longest_sagitta(c.budget, offA, ok && c.on ? 0 : shift);
         if (ok) {
           found = true;
           lo = dt;
           best = c;
-          if (last || lo >= kBandClose * hi || c.fill >= kAcceptShare) break;
-          double nd = !steered ? dt * (1 + step) : c.fill > 0 ? dt * std::min(4.0, std::sqrt(kAimShare / c.fill)) : 2 * dt;
+          if (last || lo >= kBandClose * hi || fill >= kBandAccept) break;
+          double nd = !std::isfinite(fill) ? dt * (1 + step) : fill > 0 ? dt * std::min(4.0, std::sqrt(kAimShare / fill)) : 2 * dt;
           if (nd >= hi) nd = 0.5 * (lo + hi);
           dt = nd;
         } else {
           hi = dt;
           if (found && lo >= kBandClose * hi) break;
-          double nd = !std::isfinite(c.fill) ? dt / (1 + step)
-                      : c.fill > 1       ? dt * std::clamp(std::sqrt(kAimShare / c.fill), 0.05, 0.99)
-                                         : 0.7 * dt;
+          // Without a sagitta, the deviation over the budget tells how
+          // much to shrink (as if it grew like the square of the step).
+          double nd = std::isfinite(fill) && fill > 1 ? dt * std::clamp(std::sqrt(kAimShare / fill), 0.05, 0.99)
+                      : std::isfinite(fill)           ? 0.7 * dt
+                      : c.dev > c.budget && c.budget > 0
+                          ? dt * std::clamp(std::sqrt(kAimShare * c.budget / c.dev), 0.5, 1 / (1 + step))
+                          : dt / (1 + step);
           if (found && nd <= lo) nd = 0.5 * (lo + hi);
           dt = nd;
         }
@@ -541,10 +576,9 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         double g = 1;
         const double b0 = P.bend(best.t1 - 0.5 * lo), b1 = P.bend(std::min(1.0, best.t1 + 0.5 * lo));
         if (b0 > 0 && b1 > 0) g = std::sqrt(b0 / b1);
-        if (best.fill > 0) {
+        if (best.H > 0) {
           // The next chord starts where this one ends and ends shifted.
-          const double next_room = best.room + 0.5 * (shift - offA);
-          g *= std::sqrt(kAimShare * std::max(next_room, 0.5 * best.room) / (best.fill * best.room));
+          g *= std::sqrt(kAimShare * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H);
         }
         dt = lo * std::clamp(g, 0.25, 4.0);
       }
