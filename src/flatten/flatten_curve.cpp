@@ -330,11 +330,13 @@ struct Prepared {
 
   // Unit vector at t across the curve towards its convex side (away from
   // the centre of curvature); zero where there is none (a straight stretch,
-  // an inflection, a stationary point).
-  Vec3 convex_side(double t) const {
+  // an inflection, a stationary point). For a cubic, `tangent_out` (when
+  // not null) receives M'(t).
+  Vec3 convex_side(double t, Vec3* tangent_out = nullptr) const {
     Vec3 d1, d2;
     if (cubic) {
       d1 = tangent(t);
+      if (tangent_out) *tangent_out = d1;
       d2 = c3 * (6 * t) + c2 * 2;
       if (planar) {
         // The same in the plane: the normal part of M'' is perp(M') cr /
@@ -501,6 +503,7 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     Vec3 A = pieces[pi].front();
     double dispA = dist(Ar, A);  // includes the tiny gap at a path joint
     double offA = 0;             // how far A lies off the curve
+    Vec3 S0, T0;                 // the curve's point and tangent at t0
     double t0 = 0;
     // A band chord from an end on the curve has room for about budget +
     // shift / 2 of bulge.
@@ -510,7 +513,18 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     // B on the curve.
     auto try_chord = [&](double t1, Chord& c, bool zero) {
       const Vec3 on = P.point(t1);
-      const Vec3 side = t1 < 1 ? P.convex_side(t1) : Vec3{};
+      Vec3 d1;
+      const Vec3 side = t1 < 1 ? P.convex_side(t1, &d1) : Vec3{};
+      // The planar cubic's sub-curve, from what is known at t0 and t1.
+      Vec3 S[4];
+      if (steered) {
+        const double h = (t1 - t0) / 3;
+        if (!(t1 < 1)) d1 = P.tangent(t1);
+        S[0] = S0;
+        S[1] = S0 + T0 * h;
+        S[2] = on - d1 * h;
+        S[3] = on;
+      }
       double H = -kInf;
       for (const double delta : {shift, 0.0}) {
         if (delta == 0 && !zero) continue;
@@ -524,7 +538,7 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         // that try would be wasted.
         if (delta == 0 && H > longest_sagitta(budget, offA, 0)) break;
         double bulge = -kInf;
-        const double dev = P.band(t0, t1, A, B, budget, steered ? &bulge : nullptr);
+        const double dev = steered ? band_cubic_planar(S, A, B, budget, &bulge) : P.band(t0, t1, A, B, budget);
         H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
         c = {t1, dev, disp, H, budget, B, Br, delta == 0};
         if (dev <= budget) return true;
@@ -536,6 +550,10 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
       double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
       bool found = false;
       Chord best, c;
+      if (steered) {
+        S0 = P.point(t0);
+        T0 = P.tangent(t0);
+      }
       double step = kBandStep;
       for (int iter = 0; iter < 200; ++iter) {
         const bool last = dt >= 1 - t0;
