@@ -214,15 +214,16 @@ double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double bud
     in = std::max(in, sg * v);
   }
   const double P2 = std::max(lo * lo, hi * hi);
-  if (bulge && l2 > 0 && sg * c0 <= 0 && sg * c3 <= 0 && in > -kInf) *bulge = in / std::sqrt(l2);
+  const double inv = l2 > 0 ? 1 / std::sqrt(l2) : 0;
+  if (bulge && l2 > 0 && sg * c0 <= 0 && sg * c3 <= 0 && in > -kInf) *bulge = in * inv;
   const double b2 = budget * budget * l2;
   if (!clamped) {
     const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
     const double U2 = P2 + std::max(a0 * a0, a3 * a3);
-    if (U2 <= b2) return std::sqrt(U2 / l2);
+    if (U2 <= b2) return std::sqrt(U2) * inv;
   }
   // The cross part alone exceeds the budget somewhere: so does |D|.
-  if (P2 > b2 && l2 > 0) return std::sqrt(P2 / l2);
+  if (P2 > b2 && l2 > 0) return std::sqrt(P2) * inv;
   std::array<Vec3, 4> d;
   d[0] = S[0] - A;
   d[3] = S[3] - B;
@@ -540,7 +541,8 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         double bulge = -kInf;
         const double dev = steered ? band_cubic_planar(S, A, B, budget, &bulge) : P.band(t0, t1, A, B, budget);
         H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
-        c = {t1, dev, disp, H, budget, B, Br, delta == 0};
+        c.t1 = t1, c.dev = dev, c.disp = disp, c.H = H, c.budget = budget;
+        c.B = B, c.Br = Br, c.on = delta == 0;
         if (dev <= budget) return true;
       }
       c.H = H;
@@ -549,7 +551,10 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     while (t0 < 1) {
       double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
       bool found = false;
-      Chord best, c;
+      // Two slots, the best chord so far and the one being tried, swapped
+      // by index rather than copied (copying the struct stalled the loop).
+      Chord slot[2];
+      int cur = 0;
       if (steered) {
         S0 = P.point(t0);
         T0 = P.tangent(t0);
@@ -558,14 +563,15 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
       for (int iter = 0; iter < 200; ++iter) {
         const bool last = dt >= 1 - t0;
         if (last) dt = 1 - t0;
-        const bool ok = try_chord(last ? 1.0 : t0 + dt, c, !found || best.on);
+        Chord& c = slot[cur];
+        const bool ok = try_chord(last ? 1.0 : t0 + dt, c, !found || slot[cur ^ 1].on);
         // The share of the longest chord's sagitta this one uses, for a
         // next try with B shifted (or, when this one fits, as it is).
         const double fill = c.H / longest_sagitta(c.budget, offA, ok && c.on ? 0 : shift);
         if (ok) {
           found = true;
           lo = dt;
-          best = c;
+          cur ^= 1;  // c is now the best
           if (last || lo >= kBandClose * hi || fill >= kBandAccept) break;
           double nd = !std::isfinite(fill) ? dt * (1 + step) : fill > 0 ? dt * std::min(4.0, std::sqrt(kAimShare / fill)) : 2 * dt;
           if (nd >= hi) nd = 0.5 * (lo + hi);
@@ -586,19 +592,21 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         step = std::min(2 * step, 1.0);
       }
       if (!found) throw std::logic_error("flatten: no band chord fits (internal error)");
+      const Chord& best = slot[cur ^ 1];
       bound = std::max(bound, best.dev + best.disp);
       emit({best.Br, pi, best.t1});
       if (best.t1 < 1) {
         // Next guess: the same step, scaled by the change of bending and,
         // when known, by the room this chord left.
-        double g = 1;
+        // The square of the ratio: the bending across this chord's middle
+        // over that across the next one's, times the sagitta the next one
+        // may have over this one's.
+        double g2 = 1;
         const double b0 = P.bend(best.t1 - 0.5 * lo), b1 = P.bend(std::min(1.0, best.t1 + 0.5 * lo));
-        if (b0 > 0 && b1 > 0) g = std::sqrt(b0 / b1);
-        if (best.H > 0) {
-          // The next chord starts where this one ends and ends shifted.
-          g *= std::sqrt(kAimShare * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H);
-        }
-        dt = lo * std::clamp(g, 0.25, 4.0);
+        if (b0 > 0 && b1 > 0) g2 = b0 / b1;
+        // The next chord starts where this one ends and ends shifted.
+        if (best.H > 0) g2 *= kAimShare * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H;
+        dt = lo * std::sqrt(std::clamp(g2, 1.0 / 16, 16.0));
       }
       t0 = best.t1;
       A = best.B;
