@@ -332,8 +332,9 @@ struct Prepared {
   // Unit vector at t across the curve towards its convex side (away from
   // the centre of curvature); zero where there is none (a straight stretch,
   // an inflection, a stationary point). For a cubic, `tangent_out` (when
-  // not null) receives M'(t).
-  Vec3 convex_side(double t, Vec3* tangent_out = nullptr) const {
+  // not null) receives M'(t); in the plane, where there is a side,
+  // `bend_out` (when not null) receives bend(t).
+  Vec3 convex_side(double t, Vec3* tangent_out = nullptr, double* bend_out = nullptr) const {
     Vec3 d1, d2;
     if (cubic) {
       d1 = tangent(t);
@@ -345,6 +346,7 @@ struct Prepared {
         const double s2 = d1.x * d1.x + d1.y * d1.y, cr = d1.x * d2.y - d1.y * d2.x;
         if (!(cr * cr > 1e-24 * (d2.x * d2.x + d2.y * d2.y) * s2) || !std::isfinite(cr * cr * s2)) return {};
         const double k = (cr > 0 ? -1 : 1) / std::sqrt(s2);
+        if (bend_out) *bend_out = std::abs(cr * k);  // bend(t)
         return {-d1.y * k, d1.x * k};
       }
     } else {
@@ -496,6 +498,7 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     double H = -kInf;  // the sub-curve's sagitta (sagitta()); -infinity: not known
     double budget = 0;
     Vec3 B, Br;
+    double bend = 0;  // bend() at t1, when the try found it (planar cubics)
     bool on = false;  // B on the curve
   };
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
@@ -505,6 +508,7 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     double dispA = dist(Ar, A);  // includes the tiny gap at a path joint
     double offA = 0;             // how far A lies off the curve
     Vec3 S0, T0;                 // the curve's point and tangent at t0
+    double bend0 = steered ? P.bend(0) : 0;  // bend() at t0
     double t0 = 0;
     // A band chord from an end on the curve has room for about budget +
     // shift / 2 of bulge.
@@ -515,7 +519,8 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     auto try_chord = [&](double t1, Chord& c, bool zero) {
       const Vec3 on = P.point(t1);
       Vec3 d1;
-      const Vec3 side = t1 < 1 ? P.convex_side(t1, &d1) : Vec3{};
+      double bend1 = 0;
+      const Vec3 side = t1 < 1 ? P.convex_side(t1, &d1, &bend1) : Vec3{};
       // The planar cubic's sub-curve, from what is known at t0 and t1.
       Vec3 S[4];
       if (steered) {
@@ -542,7 +547,7 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         const double dev = steered ? band_cubic_planar(S, A, B, budget, &bulge) : P.band(t0, t1, A, B, budget);
         H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
         c.t1 = t1, c.dev = dev, c.disp = disp, c.H = H, c.budget = budget;
-        c.B = B, c.Br = Br, c.on = delta == 0;
+        c.B = B, c.Br = Br, c.on = delta == 0, c.bend = bend1;
         if (dev <= budget) return true;
       }
       c.H = H;
@@ -602,7 +607,17 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         // over that across the next one's, times the sagitta the next one
         // may have over this one's.
         double g2 = 1;
-        const double b0 = P.bend(best.t1 - 0.5 * lo), b1 = P.bend(std::min(1.0, best.t1 + 0.5 * lo));
+        // In the plane, from the bending at this chord's ends (known from
+        // the tries), extrapolated linearly; else evaluated.
+        double b0, b1;
+        if (steered) {
+          b0 = 0.5 * (bend0 + best.bend);
+          b1 = std::max(best.bend + 0.5 * (best.bend - bend0), 0.25 * best.bend);
+          bend0 = best.bend;
+        } else {
+          b0 = P.bend(best.t1 - 0.5 * lo);
+          b1 = P.bend(std::min(1.0, best.t1 + 0.5 * lo));
+        }
         if (b0 > 0 && b1 > 0) g2 = b0 / b1;
         // The next chord starts where this one ends and ends shifted.
         if (best.H > 0) g2 *= kAimShare * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H;
