@@ -493,6 +493,7 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
   // other end's rounding, a short enough chord from here fits.
   const double shift = kBandShare * (tol - margin - tb.rounding);
   double bound = 0;
+  size_t emitted = 0;  // vertices after the first
   struct Chord {
     double t1 = 0, dev = 0, disp = 0;
     double H = -kInf;  // the sub-curve's sagitta (sagitta()); -infinity: not known
@@ -599,7 +600,14 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
       if (!found) throw std::logic_error("flatten: no band chord fits (internal error)");
       const Chord& best = slot[cur ^ 1];
       bound = std::max(bound, best.dev + best.disp);
-      emit({best.Br, pi, best.t1});
+      // A vertex that rounds onto the one before it would print a move of
+      // length zero: the printed polyline is the same without it (but a
+      // path keeps at least one segment).
+      const bool final_vertex = pi + 1 == pieces.size() && best.t1 >= 1;
+      if (!(best.Br == Ar) || (final_vertex && emitted == 0)) {
+        emit({best.Br, pi, best.t1});
+        ++emitted;
+      }
       if (best.t1 < 1) {
         // Next guess: the same step, scaled by the change of bending and,
         // when known, by the room this chord left.
