@@ -97,7 +97,9 @@ struct GcodeInterpreter::Impl {
   std::pair<Vec3, unsigned> target() const;
   // Start point of a move: unknown axes take the end's value.
   Vec3 start_for(const Vec3& to) const;
-  void require_xy_known(const std::string& what) const;
+  void require_xy_known(const std::string& what) const { require_known(what, 3); }
+  /// Fails unless every axis of `mask` (X 1, Y 2, Z 4) has been set.
+  void require_known(const std::string& what, unsigned mask) const;
   void require_feed(const std::string& what) const;
   // Travel limits of the profile, for the axes given by `axes`.
   void check_travel(const Box3& b, unsigned axes) const;

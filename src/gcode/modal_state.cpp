@@ -65,9 +65,12 @@ void GcodeInterpreter::Impl::run_modal() {
       non_modal = t;
     }
     switch (c) {
-      case 180: case 190:
-        fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "XZ" : "YZ") +
-                          " plane: this reader supports G17 (XY) only");
+      case 170: case 180: case 190:
+        if (c != 170 && mo.comp.active())
+          fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "ZX" : "YZ") +
+                                      " plane while cutter radius compensation is on: it compensates in G17 (XY) only; "
+                                      "cancel it with G40 first");
+        break;
       case 910: fail(errc::gcode_incremental, "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates");
       case 930: case 950:
         fail(errc::gcode_unsupported, t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
@@ -169,8 +172,8 @@ void GcodeInterpreter::Impl::run_modal() {
       if (ln.has('P') && !(val('P') >= 0)) fail(errc::gcode_number, "G64 needs a path tolerance P >= 0, found " + txt('P'));
       if (ln.has('Q') && !(val('Q') >= 0)) fail(errc::gcode_number, "G64's Q (merge tolerance) must be >= 0, found " + txt('Q'));
       st.path_tolerance = ln.has('P') && val('P') > 0 ? val('P') : std::numeric_limits<double>::infinity();
-    } else if (c == 170) {
-      st.plane = 17;
+    } else if (c == 170 || c == 180 || c == 190) {
+      st.plane = c / 10;
       mo.plane_set = true;
     } else if (c == 200 || c == 210) {
       const Units u = c == 200 ? Units::inch : Units::mm;
@@ -220,7 +223,7 @@ void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra,
   std::string allowed = "FST";
   switch (active) {
     case 0: case 10: allowed += "XYZ"; break;
-    case 20: case 30: allowed += "XYZIJR"; break;
+    case 20: case 30: allowed += st.plane == 17 ? "XYZIJR" : st.plane == 18 ? "XYZIKR" : "XYZJKR"; break;
     case 50: allowed += "XYIJPQ"; break;
     case 51: allowed += "XYIJ"; break;
     case 52: allowed += "XYPL"; break;
@@ -232,8 +235,12 @@ void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra,
     if (allowed.find(w.letter) != std::string::npos) continue;
     if (std::string_view("ABCUVW").find(w.letter) != std::string_view::npos)
       fail(errc::gcode_unsupported, "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
-    if (w.letter == 'K' && (active == 20 || active == 30))
-      fail(errc::gcode_arc, w.text + ": K is not a centre word in the G17 plane (some controllers refuse even K0): give I and J only");
+    if ((active == 20 || active == 30) && std::string_view("IJK").find(w.letter) != std::string_view::npos) {
+      const char* words = st.plane == 17 ? "I and J" : st.plane == 18 ? "I and K" : "J and K";
+      fail(errc::gcode_arc, w.text + ": " + std::string(1, w.letter) + " is not a centre word in the G" +
+                                std::to_string(st.plane) + " plane (some controllers refuse even " +
+                                std::string(1, w.letter) + "0): give " + words + " only");
+    }
     if (w.letter == 'Z' && (active == 50 || active == 51 || active == 52))
       fail(errc::gcode_bezier, wt(active) + " moves in X and Y only: a Z word (" + w.text + ") is not allowed");
     if ((active == 62 || active == 63) && !explicit_motion) {
