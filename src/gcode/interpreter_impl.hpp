@@ -135,7 +135,9 @@ struct GcodeInterpreter::Impl {
   void run_modal();
   // Every word must mean something on this line.
   // `extra`: letters the line's non-motion codes take (G04 P, G43 H, G28 XYZ).
-  void check_letters(int active, const std::string& extra, bool explicit_motion);
+  /// `plane`: the plane the line's arc is in (17, 18, 19; the line's own
+  /// G17/G18/G19 if it has one).
+  void check_letters(int active, const std::string& extra, bool explicit_motion, int plane);
 
   // ---- Fanuc G06.2 / G06.3 blocks (fanuc_nurbs.cpp)
   // Lines inside an open multi-line block. Returns true when consumed.

@@ -48,6 +48,7 @@ void GcodeInterpreter::Impl::run_modal() {
   // One code per modal group.
   std::array<std::string, kModalGroups> seen_g{};
   int motion = -999;
+  int line_plane = 0;  // the G17/G18/G19 of this line, 0 for none
   bool dwell = false, home = false, machine_coords = false, length_comp = false, blend = false, comp_d = false;
   int comp = 0;  // G40 400, G41 410, G42 420
   std::string non_modal;  // RS274/NGC: one code of group 0 per line
@@ -66,7 +67,8 @@ void GcodeInterpreter::Impl::run_modal() {
     }
     switch (c) {
       case 170: case 180: case 190:
-        if (c != 170 && mo.comp.active())
+        line_plane = c / 10;
+        if (c != 170 && st.cutter_comp != 40)
           fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "ZX" : "YZ") +
                                       " plane while cutter radius compensation is on: it compensates in G17 (XY) only; "
                                       "cancel it with G40 first");
@@ -122,7 +124,7 @@ void GcodeInterpreter::Impl::run_modal() {
   if (home) extra += "XYZ";
   if (length_comp) extra += "H";
   if (comp_d) extra += "D";
-  check_letters(active, extra, motion != -999);
+  check_letters(active, extra, motion != -999, line_plane ? line_plane : st.plane);
 
   // Execution order (RS274/NGC): F, S, T, M06, spindle, coolant, dwell,
   // plane, units, distance mode, motion, program end.
@@ -219,11 +221,11 @@ void GcodeInterpreter::Impl::run_modal() {
 }
 
 // Every word must mean something on this line.
-void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra, bool explicit_motion) {
+void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra, bool explicit_motion, int plane) {
   std::string allowed = "FST";
   switch (active) {
     case 0: case 10: allowed += "XYZ"; break;
-    case 20: case 30: allowed += st.plane == 17 ? "XYZIJR" : st.plane == 18 ? "XYZIKR" : "XYZJKR"; break;
+    case 20: case 30: allowed += plane == 17 ? "XYZIJR" : plane == 18 ? "XYZIKR" : "XYZJKR"; break;
     case 50: allowed += "XYIJPQ"; break;
     case 51: allowed += "XYIJ"; break;
     case 52: allowed += "XYPL"; break;
@@ -236,9 +238,9 @@ void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra,
     if (std::string_view("ABCUVW").find(w.letter) != std::string_view::npos)
       fail(errc::gcode_unsupported, "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
     if ((active == 20 || active == 30) && std::string_view("IJK").find(w.letter) != std::string_view::npos) {
-      const char* words = st.plane == 17 ? "I and J" : st.plane == 18 ? "I and K" : "J and K";
+      const char* words = plane == 17 ? "I and J" : plane == 18 ? "I and K" : "J and K";
       fail(errc::gcode_arc, w.text + ": " + std::string(1, w.letter) + " is not a centre word in the G" +
-                                std::to_string(st.plane) + " plane (some controllers refuse even " +
+                                std::to_string(plane) + " plane (some controllers refuse even " +
                                 std::string(1, w.letter) + "0): give " + words + " only");
     }
     if (w.letter == 'Z' && (active == 50 || active == 51 || active == 52))
