@@ -3,9 +3,15 @@
 // starts with the tool at the entity's first point at cutting depth and
 // appends the moves that cut the entity, filling the report's blocks,
 // measured deviation and bound.
+#include <condition_variable>
+#include <cstdint>
 #include <deque>
+#include <exception>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <span>
+#include <thread>
 #include <vector>
 
 #include "bezcam/cam/program.hpp"
@@ -13,17 +19,49 @@
 
 namespace bezcam::detail {
 
-/// The independent measurements of a program's curve entities, run after
-/// the whole program is built, on every core (they are most of the time a
-/// conversion takes, and independent of each other). Each task returns the
-/// reading for the report at `report` (index into Program::entities) and
-/// throws std::logic_error when the reading breaks the tolerance.
-struct Measurements {
+/// The independent measurements of a program's curve entities, run on
+/// every core while the program is still being built (they are most of the
+/// time a conversion takes, and independent of each other): a task added
+/// for an entity waits until release() says the entity is complete (its
+/// closure may read figures the entity fills in last), then a worker
+/// thread takes it; finish() runs what is left on the calling thread too.
+/// Each task returns the reading for the report at `report` (index into
+/// Program::entities) and throws std::logic_error when the reading breaks
+/// the tolerance. A task's closure (and the path it holds) is freed as soon
+/// as it has run.
+class Measurements {
+ public:
   struct Task {
-    size_t report;
+    size_t report = 0;
     std::function<double()> measure;
+    double reading = 0;
+    std::exception_ptr error;
   };
-  std::vector<Task> tasks;
+  Measurements() = default;
+  Measurements(const Measurements&) = delete;
+  Measurements& operator=(const Measurements&) = delete;
+  /// Stops the workers (a refusal while building): tasks not yet taken
+  /// never run.
+  ~Measurements();
+
+  void add(size_t report, std::function<double()> measure);
+  /// The tasks added so far may run.
+  void release();
+  /// Runs every task (this thread working too) and waits for all; rethrows
+  /// the failure of the earliest task that failed (in the order added, so
+  /// the same one on every run). The tasks, in the order added, with their
+  /// readings.
+  const std::vector<std::unique_ptr<Task>>& finish();
+
+ private:
+  void work(bool until_empty);
+  std::mutex m_;
+  std::condition_variable more_, done_;
+  std::vector<std::unique_ptr<Task>> tasks_;  // grows under m_; a Task never moves
+  size_t released_ = 0, next_ = 0, finished_ = 0;
+  size_t failed_ = SIZE_MAX;  // earliest failed task
+  bool stop_ = false;
+  std::vector<std::thread> pool_;
 };
 
 struct CutContext {
@@ -44,7 +82,7 @@ struct CutContext {
   std::deque<Entity>* owned = nullptr;
   /// Runs `f` now into `r.measured`, or leaves it for later.
   void measure_with(EntityReport& r, std::function<double()> f) const {
-    if (later) later->tasks.push_back({report, std::move(f)});
+    if (later) later->add(report, std::move(f));
     else r.measured = f();
   }
 };

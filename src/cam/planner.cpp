@@ -30,6 +30,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace bezcam {
 
@@ -615,8 +616,12 @@ struct Builder {
   }
 
   void build() {
-    size_t pause = 0;
+    size_t pause = 0, kept = 0;  // kept: the first segment whose pieces are kept
     bool stop_before = true;  // the machine is at rest
+    // About a segment per block (a blend replaces the ends it joins): no
+    // reallocation holding the segments twice while a long program grows.
+    segs.reserve(tl.blocks.size() + 16);
+    junction.reserve(tl.blocks.size() + 16);
     for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
       bool pause_here = false;
       while (pause < tl.pauses.size() && tl.pauses[pause].before_block <= bi) {
@@ -701,6 +706,10 @@ struct Builder {
       }
       stop_before = false;
       if (mine.empty() && pause_here) stop_before = true;
+      // A summary needs no segment's geometry once no blend can reach it
+      // (blends change the last two): free it as the program goes.
+      if (summary)
+        for (; kept < segs.size() && kept + 2 < segs.size(); ++kept) std::vector<PlanSegment::Piece>().swap(segs[kept].pieces);
     }
     if (!segs.empty()) exact_stop_end(Stop::end);
     junction.push_back(0);  // the end
@@ -982,10 +991,15 @@ Vec3 PlanSegment::point_at(double s, const std::vector<MotionBlock>& blocks) con
   return {};
 }
 
-MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail detail) {
+namespace {
+
+// Plans `timed`, a copy of the timeline to plan that it changes (starts of
+// unknown axes, pause times). `original`: the timeline's own blocks, kept
+// by a full plan (PlanDetail::full; null for a summary).
+MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original, const MotionModel& model,
+                      PlanDetail detail) {
   if (!(model.period_s > 0)) throw std::invalid_argument("motion model: period_s must be > 0");
-  // Tool changes and spindle starts take the machine's time.
-  Timeline timed = tl;
+  const Timeline& tl = timed;
   // Axes the program had not set yet start where the machine stands.
   Vec3 pos = tl.start;
   for (MotionBlock& mb : timed.blocks) {
@@ -996,6 +1010,7 @@ MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail 
     }
     pos = mb.to;
   }
+  // Tool changes and spindle starts take the machine's time.
   for (PlanPause& p : timed.pauses) {
     if (p.kind == PlanPause::Kind::tool_change) p.seconds = model.tool_change_s;
     if (p.kind == PlanPause::Kind::spindle_start) p.seconds = model.spindle_start_s;
@@ -1021,8 +1036,20 @@ MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail 
   }
   b.plan.segments = std::move(b.segs);
   b.plan.pauses = timed.pauses;
-  b.plan.motion = tl.blocks;
+  b.plan.motion = *original;
   return std::move(b.plan);
+}
+
+}  // namespace
+
+MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail detail) {
+  Timeline timed = tl;
+  return plan_timed(timed, &tl.blocks, model, detail);
+}
+
+MotionPlan plan_motion(Timeline&& tl, const MotionModel& model, PlanDetail detail) {
+  if (detail == PlanDetail::full) return plan_motion(std::as_const(tl), model, detail);
+  return plan_timed(tl, nullptr, model, detail);  // a summary keeps no blocks: no copy of them
 }
 
 void sample_plan(const MotionPlan& plan, const std::function<void(double, const Vec3&, double)>& out) {

@@ -221,6 +221,71 @@ void approach(Program& p, int entity, const Vec3& start, double safe, double cle
   push({plunge, entity});
 }
 
+Measurements::~Measurements() {
+  {
+    std::lock_guard lk(m_);
+    stop_ = true;
+  }
+  more_.notify_all();
+  for (auto& t : pool_) t.join();
+}
+
+void Measurements::add(size_t report, std::function<double()> measure) {
+  auto t = std::make_unique<Task>();
+  t->report = report;
+  t->measure = std::move(measure);
+  std::lock_guard lk(m_);
+  tasks_.push_back(std::move(t));
+}
+
+void Measurements::release() {
+  {
+    std::lock_guard lk(m_);
+    if (released_ == tasks_.size()) return;
+    released_ = tasks_.size();
+    // The workers start with the first task: the calling thread builds
+    // on, the other cores measure.
+    if (pool_.empty())
+      for (unsigned k = 1; k < std::max(1u, std::thread::hardware_concurrency()); ++k)
+        pool_.emplace_back([this] { work(false); });
+  }
+  more_.notify_all();
+}
+
+// Takes released tasks in order and runs them; a worker waits for more
+// until stopped, finish()'s thread returns when none is left to take.
+void Measurements::work(bool until_empty) {
+  std::unique_lock lk(m_);
+  for (;;) {
+    if (!until_empty) more_.wait(lk, [&] { return stop_ || next_ < released_; });
+    if (stop_ || next_ >= released_) return;
+    const size_t i = next_++;
+    Task& t = *tasks_[i];
+    // Past an earlier failure: its reading is not needed.
+    if (i < failed_) {
+      lk.unlock();
+      try {
+        t.reading = t.measure();
+      } catch (...) {
+        t.error = std::current_exception();
+      }
+      t.measure = nullptr;  // the path it held
+      lk.lock();
+      if (t.error) failed_ = std::min(failed_, i);
+    }
+    if (++finished_ == tasks_.size()) done_.notify_all();
+  }
+}
+
+const std::vector<std::unique_ptr<Measurements::Task>>& Measurements::finish() {
+  release();
+  work(true);
+  std::unique_lock lk(m_);
+  done_.wait(lk, [&] { return finished_ == tasks_.size(); });
+  if (failed_ != SIZE_MAX) std::rethrow_exception(tasks_[failed_]->error);
+  return tasks_;
+}
+
 }  // namespace detail
 
 namespace {
@@ -258,37 +323,15 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
 
 namespace {
 
-// Runs the deferred measurements on every core, fills the reports and the
-// program's largest reading; the first failure (an internal check) is
-// rethrown here.
+// Waits for the measurements (run on every core as the program was
+// built), fills the reports and the program's largest reading; the
+// earliest failure (an internal check) is rethrown here.
 void run_measurements(Program& p, detail::Measurements& later) {
-  auto& tasks = later.tasks;
-  if (tasks.empty()) return;
-  std::vector<double> readings(tasks.size(), 0);
-  std::atomic<size_t> next{0};
-  std::mutex failed_m;
-  std::exception_ptr failed;
-  auto work = [&] {
-    for (size_t i; (i = next.fetch_add(1)) < tasks.size();) {
-      try {
-        readings[i] = tasks[i].measure();
-      } catch (...) {
-        std::lock_guard lk(failed_m);
-        if (!failed) failed = std::current_exception();
-      }
-    }
-  };
-  const size_t n = std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), tasks.size());
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < n; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  if (failed) std::rethrow_exception(failed);
-  for (size_t i = 0; i < tasks.size(); ++i) {
+  for (const auto& t : later.finish()) {
     // An entity cut in several runs (part cutting) has several readings.
-    auto& m = p.entities[tasks[i].report].measured;
-    m = std::max(m, readings[i]);
-    p.max_measured = std::max(p.max_measured, readings[i]);
+    auto& m = p.entities[t->report].measured;
+    m = std::max(m, t->reading);
+    p.max_measured = std::max(p.max_measured, t->reading);
   }
 }
 
@@ -498,6 +541,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
     p.max_measured = std::max(p.max_measured, r.measured);
     p.max_bound = std::max(p.max_bound, r.bound);
     p.entities.push_back(r);
+    later.release();  // the entity is complete: its measurements may run
     length.after_entity(p, job, e);
   }
   // The coolant stops with the cut; the profile's footer stops the spindle.

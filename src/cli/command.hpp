@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bezcam::cli {
@@ -34,6 +35,17 @@ struct RegisterCommand {
 ///  - "-" writes to stdout.
 /// A failed write is an IoError naming the path and the cause.
 void write_output(const std::string& path, const std::string& data);
+
+/// Receives the output's text in order, piece by piece.
+using OutputSink = std::function<void(std::string_view)>;
+/// Makes the output: hands its text to the sink as it goes; may throw.
+using OutputProducer = std::function<void(const OutputSink&)>;
+/// The same, streamed: `produce` writes the text in pieces, never held
+/// whole. A regular file is still renamed into place only when `produce`
+/// has returned: an exception (a refusal found while writing) leaves no
+/// file, or the old one. Standard output and devices receive the pieces
+/// as they come.
+void write_output(const std::string& path, const OutputProducer& produce);
 
 /// Whether stderr is a terminal (progress bars) and whether to be quiet.
 bool stderr_is_tty();

@@ -1,5 +1,6 @@
 // bezcam convert JOB.json [-o OUT.nc] [--machine NAME|FILE] [--tolerance T]
 //                [--output lines|arcs|nurbs] [--report FILE.json] [-q]
+#include <algorithm>
 #include <iostream>
 
 #include "bezcam/error.hpp"
@@ -36,6 +37,16 @@ CLI::App* add(CLI::App& app) {
   return s;
 }
 
+// One output mode's figures for --compare-outputs.
+ProgramReport::Alternative alternative(OutputMode mode, const ProgramReport& rep) {
+  ProgramReport::Alternative a;
+  a.output = mode;
+  a.planned = *rep.planned;
+  a.gcode_bytes = rep.gcode_bytes;
+  for (const auto& e : rep.entities) a.blocks += e.report.blocks;
+  return a;
+}
+
 int run() {
   // Both files on stdout would be one unreadable stream; one file for both
   // would lose the program.
@@ -60,42 +71,45 @@ int run() {
   opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
   ConvertResult r;
   try {
-    r = convert(job, m, opt);
+    r = convert_program(job, m, opt);  // every refusal before a byte is written
   } catch (const Error&) {
     progress.finish();
     if (!o.quiet) print_warnings(job.warnings);  // a refusal never hides a warning
     throw;
   }
   progress.finish();
-  ProgramReport rep = make_report(r.program, m, r.gcode, r.plan ? &*r.plan : nullptr);
+  const MotionPlan* plan = r.plan ? &*r.plan : nullptr;
+  // The other output modes first: a refusal there leaves no program
+  // written. Their text is only counted, never kept.
+  std::vector<ProgramReport::Alternative> others;
+  const auto takes = [&](OutputMode mode) {
+    return !(mode == OutputMode::arcs && !m.arcs) && !(mode == OutputMode::nurbs && m.nurbs == NurbsDialect::none);
+  };
   if (o.compare) {
     if (!m.motion)
       throw InputError(errc::usage_option, Place::at_option("--compare-outputs"),
                        "machine \"" + m.name + "\" has no motion model (key \"motion\", docs/machines.md) to compare cycle times with");
     for (OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
-      if (mode == OutputMode::arcs && !m.arcs) continue;
-      if (mode == OutputMode::nurbs && m.nurbs == NurbsDialect::none) continue;
-      ProgramReport::Alternative a;
-      a.output = mode;
-      if (mode == opt.output && rep.planned) {
-        a.planned = *rep.planned;
-        a.gcode_bytes = r.gcode.size();
-        for (const auto& e : rep.entities) a.blocks += e.report.blocks;
-      } else {
-        ConvertOptions other = opt;
-        other.output = mode;
-        other.on_entity = nullptr;
-        const ConvertResult r2 = convert(job, m, other);
-        const ProgramReport rep2 = make_report(r2.program, m, r2.gcode, r2.plan ? &*r2.plan : nullptr);
-        if (!rep2.planned) continue;
-        a.planned = *rep2.planned;
-        a.gcode_bytes = r2.gcode.size();
-        for (const auto& e : rep2.entities) a.blocks += e.report.blocks;
-      }
-      rep.alternatives.push_back(a);
+      if (mode == opt.output || !takes(mode)) continue;
+      ConvertOptions other = opt;
+      other.output = mode;
+      other.on_entity = nullptr;
+      const ConvertResult r2 = convert_program(job, m, other);
+      const ProgramReport rep2 = write_and_report(r2.program, m, r2.plan ? &*r2.plan : nullptr, [](std::string_view) {});
+      if (!rep2.planned) continue;
+      others.push_back(alternative(mode, rep2));
     }
   }
-  write_output(o.out, r.gcode);
+  // The program streamed to its file as it is printed (renamed into place
+  // once whole), the report made from it on the way.
+  ProgramReport rep;
+  write_output(o.out, [&](const OutputSink& out) { rep = write_and_report(r.program, m, plan, out); });
+  if (o.compare) {
+    // In the order lines, arcs, nurbs, this mode's where it belongs.
+    if (rep.planned && takes(opt.output)) others.push_back(alternative(opt.output, rep));
+    std::stable_sort(others.begin(), others.end(), [](const auto& a, const auto& b) { return a.output < b.output; });
+    rep.alternatives = std::move(others);
+  }
   if (!o.report.empty()) write_output(o.report, report_json(rep));
   if (!o.quiet) {
     // The job's warnings and the program's own (e.g. an output mode replaced).

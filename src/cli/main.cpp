@@ -37,7 +37,7 @@ namespace {
 
 // Writes all of `data` to `fd`, checking every write (a device may take
 // part of it, or refuse: /dev/full says "No space left on device").
-void write_all(int fd, const std::string& path, const std::string& data) {
+void write_all(int fd, const std::string& path, std::string_view data) {
   size_t off = 0;
   while (off < data.size()) {
     const ssize_t n = ::write(fd, data.data() + off, data.size() - off);
@@ -64,11 +64,11 @@ std::filesystem::path resolve_links(const std::string& path) {
 
 // Anything but a regular file (a serial port for DNC, a FIFO, a terminal)
 // is written through, never replaced.
-void write_through(const std::string& path, const std::filesystem::path& target, const std::string& data) {
+void write_through(const std::string& path, const std::filesystem::path& target, const OutputProducer& produce) {
   const int fd = ::open(target.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
   if (fd < 0) write_failed(path, "cannot open for writing", errno);
   try {
-    write_all(fd, path, data);
+    produce([&](std::string_view piece) { write_all(fd, path, piece); });
   } catch (...) {
     ::close(fd);
     throw;
@@ -79,7 +79,7 @@ void write_through(const std::string& path, const std::filesystem::path& target,
 // A regular file (or a new one): a temporary file beside it, renamed into
 // place only when complete, with the mode and owner of the file it replaces.
 void replace_regular(const std::string& path, const std::filesystem::path& target, const struct stat* old,
-                     const std::string& data) {
+                     const OutputProducer& produce) {
   const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
   std::string tmpl = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
   const int fd = ::mkstemp(tmpl.data());
@@ -91,7 +91,8 @@ void replace_regular(const std::string& path, const std::filesystem::path& targe
     write_failed(path, what, err);
   };
   try {
-    write_all(fd, path, data);
+    // In pieces as they are made: the file is whole only when renamed.
+    produce([&](std::string_view piece) { write_all(fd, path, piece); });
   } catch (...) {
     ::close(fd);
     ::unlink(tmpl.c_str());
@@ -124,9 +125,13 @@ void replace_regular(const std::string& path, const std::filesystem::path& targe
 
 }  // namespace
 
-void write_output(const std::string& path, const std::string& data) {
+void write_output(const std::string& path, const OutputProducer& produce) {
   if (path == "-" || path.empty()) {
-    std::cout << data << std::flush;
+    produce([](std::string_view piece) {
+      std::cout.write(piece.data(), static_cast<std::streamsize>(piece.size()));
+      if (!std::cout) throw IoError(errc::io_write, Place::at_file("stdout"), "cannot write the program to standard output");
+    });
+    std::cout.flush();
     if (!std::cout) throw IoError(errc::io_write, Place::at_file("stdout"), "cannot write the program to standard output");
     return;
   }
@@ -134,12 +139,16 @@ void write_output(const std::string& path, const std::string& data) {
   struct stat st {};
   if (::stat(target.c_str(), &st) != 0) {
     if (errno != ENOENT) write_failed(path, "cannot write", errno);
-    replace_regular(path, target, nullptr, data);
+    replace_regular(path, target, nullptr, produce);
     return;
   }
   if (S_ISDIR(st.st_mode)) throw IoError(errc::io_write, Place::at_file(path), "is a directory; give a file name for the output");
-  if (S_ISREG(st.st_mode)) replace_regular(path, target, &st, data);
-  else write_through(path, target, data);
+  if (S_ISREG(st.st_mode)) replace_regular(path, target, &st, produce);
+  else write_through(path, target, produce);
+}
+
+void write_output(const std::string& path, const std::string& data) {
+  write_output(path, [&](const OutputSink& out) { out(data); });
 }
 
 }  // namespace bezcam::cli

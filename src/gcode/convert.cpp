@@ -20,6 +20,12 @@ bool retracts_between_tools(const Program& p, const MachineProfile& m) {
 }  // namespace
 
 ConvertResult convert(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
+  ConvertResult r = convert_program(job, m, opt);
+  r.gcode = write_gcode(r.program, m, r.plan ? &*r.plan : nullptr);
+  return r;
+}
+
+ConvertResult convert_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
   ConvertResult r;
   r.program = build_program(job, m, opt);
   validate_program(r.program, m);  // before one character is written
@@ -31,7 +37,6 @@ ConvertResult convert(const Job& job, const MachineProfile& m, const ConvertOpti
   // moves are in the text only, and the report plans the text read back.
   if (m.motion && !retracts_between_tools(r.program, m))
     r.plan = plan_motion(program_timeline(r.program), *m.motion, PlanDetail::summary);
-  r.gcode = write_gcode(r.program, m, r.plan ? &*r.plan : nullptr);
   return r;
 }
 

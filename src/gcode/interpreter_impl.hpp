@@ -48,6 +48,8 @@ inline std::string pt(const Vec3& p) { return "(" + fmt_num(p.x) + ", " + fmt_nu
 /// The whole text's limit (limits.hpp): a finding when `text` is too large;
 /// the lines' count and length are checked line by line by feed_line().
 std::optional<GcodeFinding> too_large(std::string_view text);
+/// The same for a program of `bytes` bytes (read as it is written).
+std::optional<GcodeFinding> too_large(size_t bytes);
 
 }  // namespace gcode
 

@@ -26,10 +26,12 @@ Box3 arc_box(const MotionBlock& b) { return arc_extent(block_arc(b)); }
 
 }  // namespace
 
-std::optional<GcodeFinding> gcode::too_large(std::string_view text) {
-  if (text.size() <= kMaxProgramBytes) return std::nullopt;
+std::optional<GcodeFinding> gcode::too_large(std::string_view text) { return too_large(text.size()); }
+
+std::optional<GcodeFinding> gcode::too_large(size_t bytes) {
+  if (bytes <= kMaxProgramBytes) return std::nullopt;
   return GcodeFinding{1, errc::gcode_program_too_large,
-                      "the program is " + std::to_string(text.size() >> 20) + " MiB, more than the " +
+                      "the program is " + std::to_string(bytes >> 20) + " MiB, more than the " +
                           std::to_string(kMaxProgramBytes >> 20) +
                           " MiB bezcam reads (docs/limits.md); split it into several programs"};
 }

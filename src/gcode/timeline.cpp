@@ -3,6 +3,7 @@
 #include <string>
 
 #include "bezcam/error.hpp"
+#include "bezcam/limits.hpp"
 #include "interpreter_impl.hpp"
 
 namespace bezcam {
@@ -23,24 +24,47 @@ void add_to_timeline(Timeline& tl, const std::vector<MotionBlock>& blocks, const
   if (after.program_stops > before.program_stops) pause(PlanPause::Kind::program_stop, 0);
 }
 
+void TimelineReader::line(std::string_view text) {
+  const MachineState before = in_.state();
+  const auto blocks = in_.feed_line(text, ++no_);
+  add_to_timeline(tl_, blocks, before, in_.state(), no_);
+}
+
+void TimelineReader::feed(std::string_view text) {
+  bytes_ += text.size();
+  if (bytes_ > kMaxProgramBytes) return;  // refused at finish(), with its size
+  while (!text.empty()) {
+    const size_t end = text.find('\n');
+    if (end == std::string_view::npos) {
+      partial_ += text;
+      return;
+    }
+    if (partial_.empty()) {
+      line(text.substr(0, end));
+    } else {
+      partial_ += text.substr(0, end);
+      line(partial_);
+      partial_.clear();
+    }
+    text.remove_prefix(end + 1);
+  }
+}
+
+Timeline TimelineReader::finish() {
+  if (const auto f = gcode::too_large(bytes_)) throw InputError(f->id, "line 1", f->message);
+  if (!partial_.empty()) line(partial_);  // the last line, without its newline
+  partial_.clear();
+  const MachineState before = in_.state();
+  const auto rest = in_.finish();
+  add_to_timeline(tl_, rest, before, in_.state(), no_);
+  return std::move(tl_);
+}
+
 Timeline read_timeline(std::string_view text, const MachineProfile* profile) {
   if (const auto f = gcode::too_large(text)) throw InputError(f->id, "line 1", f->message);
-  GcodeInterpreter in(profile);
-  Timeline tl;
-  int no = 0;
-  size_t pos = 0;
-  while (pos < text.size()) {
-    size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    const MachineState before = in.state();
-    const auto blocks = in.feed_line(text.substr(pos, end - pos), ++no);
-    add_to_timeline(tl, blocks, before, in.state(), no);
-    pos = end + 1;
-  }
-  const MachineState before = in.state();
-  const auto rest = in.finish();
-  add_to_timeline(tl, rest, before, in.state(), no);
-  return tl;
+  TimelineReader r(profile);
+  r.feed(text);
+  return r.finish();
 }
 
 }  // namespace bezcam

@@ -394,4 +394,8 @@ std::string write_gcode(const Program& p, const MachineProfile& m, const MotionP
 
 void write_gcode(const Program& p, const MachineProfile& m, const GcodeSink& sink) { Writer(p, m, &sink).run(); }
 
+void write_gcode(const Program& p, const MachineProfile& m, const MotionPlan* plan, const GcodeSink& sink) {
+  Writer(p, m, &sink, plan).run();
+}
+
 }  // namespace bezcam

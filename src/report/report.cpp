@@ -1,6 +1,8 @@
 #include "bezcam/report/report.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -11,7 +13,44 @@
 
 namespace bezcam {
 
+void GcodeCounts::add(std::string_view piece) {
+  if (piece.empty()) return;
+  bytes += piece.size();
+  newlines += static_cast<size_t>(std::count(piece.begin(), piece.end(), '\n'));
+  last = piece.back();
+}
+
 ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode, const MotionPlan* plan) {
+  GcodeCounts counts;
+  counts.add(gcode);
+  // The printed program, read back as the controller reads it; without
+  // text, the program's moves.
+  std::optional<Timeline> back;
+  if (m.motion && !plan && !gcode.empty()) {
+    const MachineProfile set_up = with_compensation_registers(m, p);
+    back = read_timeline(gcode, &set_up);
+  }
+  return make_report(p, m, counts, plan, back ? &*back : nullptr);
+}
+
+ProgramReport write_and_report(const Program& p, const MachineProfile& m, const MotionPlan* plan,
+                               const GcodeSink& sink) {
+  GcodeCounts counts;
+  std::optional<MachineProfile> set_up;
+  std::optional<TimelineReader> back;
+  if (m.motion && !plan) back.emplace(&set_up.emplace(with_compensation_registers(m, p)));
+  write_gcode(p, m, plan, [&](std::string_view piece) {
+    counts.add(piece);
+    if (back) back->feed(piece);
+    sink(piece);
+  });
+  std::optional<Timeline> tl;
+  if (back && counts.bytes) tl = back->finish();
+  return make_report(p, m, counts, plan, tl ? &*tl : nullptr);
+}
+
+ProgramReport make_report(const Program& p, const MachineProfile& m, const GcodeCounts& text, const MotionPlan* plan,
+                          const Timeline* read_back) {
   ProgramReport r;
   r.job = p.job_name;
   r.machine = p.machine;
@@ -28,32 +67,41 @@ ProgramReport make_report(const Program& p, const MachineProfile& m, std::string
   r.rapid_rate = m.max_feed_mm_min / mm_per_unit(p.units);
   r.rapid_rate_basis = "the maximum feed of machine \"" + m.name + "\" (max_feed_mm_min " +
                        fmt_num(m.max_feed_mm_min) + "); the controller's true rapid rate may differ";
-  const auto motion = program_motion(p);
-  r.total = motion_totals(motion, r.rapid_rate);
-  // Per entity in one pass over the blocks (a pass per entity made a
-  // 10,000-entity job quadratic).
-  std::vector<std::vector<MotionBlock>> by_entity;
-  for (const MotionBlock& b : motion)
-    if (b.entity >= 0) {
-      if (by_entity.size() <= static_cast<size_t>(b.entity)) by_entity.resize(b.entity + 1);
-      by_entity[b.entity].push_back(b);
-    }
+  // The program's and each entity's totals in one pass over the blocks, no
+  // copy of them (a pass per entity made a 10,000-entity job quadratic),
+  // each block measured once; the sums in block order, as
+  // motion_totals() makes them.
+  std::vector<MotionTotals> by_entity;
+  const auto add = [](MotionTotals& t, const MotionTotals& one) {
+    t.feed_length += one.feed_length;
+    t.rapid_length += one.rapid_length;
+    t.feed_time_s += one.feed_time_s;
+    t.feed_blocks += one.feed_blocks;
+    t.rapid_blocks += one.rapid_blocks;
+  };
+  for (const MotionBlock& b : program_motion(p)) {
+    const MotionTotals one = motion_totals(std::span(&b, 1), 0);
+    add(r.total, one);
+    if (b.entity < 0) continue;
+    if (by_entity.size() <= static_cast<size_t>(b.entity)) by_entity.resize(b.entity + 1);
+    add(by_entity[b.entity], one);
+  }
+  const auto timed = [&](MotionTotals t) {
+    if (r.rapid_rate > 0) t.rapid_time_s = 60 * t.rapid_length / r.rapid_rate;
+    return t;
+  };
+  r.total = timed(r.total);
   for (const EntityReport& e : p.entities)
-    r.entities.push_back({e, e.entity >= 0 && static_cast<size_t>(e.entity) < by_entity.size()
-                                 ? motion_totals(by_entity[e.entity], r.rapid_rate)
-                                 : motion_totals({}, r.rapid_rate)});
+    r.entities.push_back({e, timed(e.entity >= 0 && static_cast<size_t>(e.entity) < by_entity.size()
+                                       ? by_entity[e.entity]
+                                       : MotionTotals{})});
   if (m.motion && plan) {
     r.planned = planned_summary(*plan);  // the program's one plan (convert())
   } else if (m.motion) {
-    // The printed program, read back as the controller reads it; without
-    // text, the program's moves.
-    const MachineProfile set_up = with_compensation_registers(m, p);
-    const Timeline tl = gcode.empty() ? program_timeline(p) : read_timeline(gcode, &set_up);
-    r.planned = planned_summary(plan_motion(tl, *m.motion));
+    r.planned = planned_summary(read_back ? plan_motion(*read_back, *m.motion) : plan_motion(program_timeline(p), *m.motion));
   }
-  r.gcode_bytes = gcode.size();
-  for (char c : gcode) r.gcode_lines += c == '\n';
-  if (!gcode.empty() && gcode.back() != '\n') ++r.gcode_lines;
+  r.gcode_bytes = text.bytes;
+  r.gcode_lines = text.lines();
   return r;
 }
 

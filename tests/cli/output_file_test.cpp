@@ -109,3 +109,34 @@ TEST(OutputFile, ADirectoryOrAMissingFolderIsNamed) {
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
 }
+
+// The program is streamed to a temporary file as it is printed (issue 15,
+// item 1): a write failing part-way (here the file size limit, EFBIG once
+// some pieces are written) leaves the old program, no temporary file and
+// no report.
+TEST(OutputFile, AWriteFailingPartWayLeavesTheOldFileAndNoTemporary) {
+  TempDir d;
+  std::string job = R"({"bezcam": 1, "units": "mm", "tolerance": 0.001, "machine": "generic", "entities": [)";
+  for (int i = 0; i < 400; ++i) {
+    const double x = i % 20 * 10, y = i / 20 * 10;
+    job += (i ? ",\n" : "\n") + std::string(R"({"type": "bezier", "points": [)");
+    for (const auto& [dx, dy] : {std::pair{0, 0}, {3, 9}, {7, -2}, {9, 8}})
+      job += (dx ? ", [" : "[") + std::to_string(x + dx) + ", " + std::to_string(y + dy) + "]";
+    job += "]}";
+  }
+  job += "]}\n";
+  const fs::path job_file = d / "many.json", out = d / "prog.nc", report = d / "report.json";
+  bezcam::test::write_file(job_file, job);
+  const auto whole = testproc::run(BEZCAM_EXE, {"convert", job_file.string(), "-o", "-"});
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  ASSERT_GT(whole.out.size(), size_t{300} << 10);  // more than the limit below in either unit
+  bezcam::test::write_file(out, "old\n");
+  // 200 blocks: 100 KiB (dash) or 200 KiB (bash); SIGXFSZ ignored, so the
+  // write past the limit fails with EFBIG.
+  const auto r = testproc::shell("trap '' XFSZ; ulimit -f 200; exec " + std::string(BEZCAM_EXE) + " convert " +
+                                 job_file.string() + " -o " + out.string() + " --report " + report.string() + " 2>&1");
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_NE(r.out.find("File too large"), std::string::npos) << r.out;
+  EXPECT_EQ(slurp(out), "old\n");
+  EXPECT_EQ(d.files(), (std::vector<std::string>{"many.json", "prog.nc"}));
+}

@@ -135,6 +135,9 @@ enum class PlanDetail { full, summary };
 /// the program's units. Throws std::invalid_argument only for a model out
 /// of range (profiles are validated when read).
 MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail detail = PlanDetail::full);
+/// The same for a timeline made for this plan (`plan_motion(program_timeline(p), ...)`):
+/// a summary plans in it, without a copy of its blocks.
+MotionPlan plan_motion(Timeline&& tl, const MotionModel& model, PlanDetail detail = PlanDetail::full);
 
 /// One sample per `plan.period_s` from t = 0 to the cycle's end (included):
 /// time, position and speed (units/min).

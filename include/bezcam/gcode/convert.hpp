@@ -22,4 +22,10 @@ struct ConvertResult {
 /// Throws InputError (bad job, limits) before producing any text.
 ConvertResult convert(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
 
+/// convert() up to the text: the program built, validated and planned,
+/// `gcode` left empty, for a caller that streams the text
+/// (write_gcode() with a sink; report.hpp write_and_report()). Every
+/// refusal convert() makes is made here.
+ConvertResult convert_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
+
 }  // namespace bezcam

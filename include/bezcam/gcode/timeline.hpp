@@ -3,6 +3,7 @@
 /// its motion blocks, the path mode in force at each (G61, G64 P-) and the
 /// pauses between them (tool changes, spindle starts, dwells, program
 /// stops), read with the one G-code reader.
+#include <string>
 #include <string_view>
 
 #include "bezcam/cam/planner.hpp"
@@ -13,6 +14,27 @@ namespace bezcam {
 /// Reads the whole program (throws InputError "gcode.*" at "line N" as
 /// read_gcode() does).
 Timeline read_timeline(std::string_view text, const MachineProfile* profile = nullptr);
+
+/// The same, from the text in pieces as it is written (a streamed program
+/// read back without holding it): feed() any pieces in order, lines are
+/// split here; finish() ends the input and returns the timeline. The same
+/// refusals as read_timeline() (a program over the size bezcam reads is
+/// refused at finish(), when its size is known).
+class TimelineReader {
+ public:
+  /// The profile must outlive the reader.
+  explicit TimelineReader(const MachineProfile* profile = nullptr) : in_(profile) {}
+  void feed(std::string_view text);
+  Timeline finish();
+
+ private:
+  void line(std::string_view text);
+  GcodeInterpreter in_;
+  Timeline tl_;
+  std::string partial_;  // the start of a line a piece ended in
+  int no_ = 0;
+  size_t bytes_ = 0;
+};
 
 /// The same, one line at a time: what the simulated controller feeds as it
 /// executes. `after` is the state once `line_no` was interpreted, `before`

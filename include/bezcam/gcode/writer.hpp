@@ -24,5 +24,7 @@ std::string write_gcode(const Program& p, const MachineProfile& m, const MotionP
 using GcodeSink = std::function<void(std::string_view)>;
 /// The same text, streamed: never held whole in memory.
 void write_gcode(const Program& p, const MachineProfile& m, const GcodeSink& sink);
+/// Streamed, with the program's plan (as above; null: none).
+void write_gcode(const Program& p, const MachineProfile& m, const MotionPlan* plan, const GcodeSink& sink);
 
 }  // namespace bezcam

@@ -12,6 +12,7 @@
 
 #include "bezcam/cam/motion.hpp"
 #include "bezcam/cam/planner.hpp"
+#include "bezcam/gcode/writer.hpp"
 #include "bezcam/gcode/number_format.hpp"
 
 namespace bezcam {
@@ -65,6 +66,29 @@ struct ProgramReport {
 /// text, for its line and byte counts (may be empty).
 ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode = {},
                           const MotionPlan* plan = nullptr);
+
+/// A printed program's size, counted piece by piece as it is written.
+struct GcodeCounts {
+  size_t bytes = 0, newlines = 0;
+  char last = '\n';  ///< the last character so far ('\n' before any)
+  void add(std::string_view piece);
+  /// Lines: a last line without its newline counts too.
+  size_t lines() const { return newlines + (last != '\n'); }
+};
+
+/// The same report from what a streamed program leaves: its counts and,
+/// where the plan cannot come from the moves (a machine with a motion
+/// model and no `plan`), its text read back (`read_back`; null: the
+/// program's moves are planned).
+ProgramReport make_report(const Program& p, const MachineProfile& m, const GcodeCounts& text, const MotionPlan* plan,
+                          const Timeline* read_back);
+
+/// What `bezcam convert` does once the program is validated and planned
+/// (convert_program()): prints it to `sink` in pieces (write_gcode()),
+/// never holding its text, and reports it (make_report() above, the text
+/// read back as it goes where the report plans the text).
+ProgramReport write_and_report(const Program& p, const MachineProfile& m, const MotionPlan* plan,
+                               const GcodeSink& sink);
 
 /// The figures of a plan that a report keeps.
 ProgramReport::Planned planned_summary(const MotionPlan& plan);
