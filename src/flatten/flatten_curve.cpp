@@ -168,6 +168,70 @@ double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
   return std::max(l, cubic_within({m, bc, c, d[3]}, budget, depth - 1));
 }
 
+// The parametric distance of band_bound() for a planar polynomial cubic
+// sub-curve S (control points S[0..3]) against the segment [A, B], in
+// closed form. D = S - L has control points d0 = S0 - A, d1, d2, d3 = S3 - B;
+// when the inner points of S project inside the segment (no clamping), d1
+// and d2 are across the chord, so along the chord D has the Bernstein
+// coefficients (a0, 0, 0, a3) and across it (p0, p1, p2, p3). The cross
+// part's largest magnitude P is exact (its extremes are at the ends or at
+// the roots of a quadratic); the along part is at most max(|a0|, |a3|) = T.
+// So sup |D| <= sqrt(P^2 + T^2), and sup |D| >= P. Both are exact to within
+// a relative T^2 / (2 P^2), which is about an eighth of the square of the
+// angle the chord turns by (the ends are shifted across the curve, nearly
+// across the chord). When the budget falls between them, or the inner
+// points project outside the segment, the difference cubic is subdivided
+// (cubic_within()). `bulge`, when not null, receives the largest signed
+// distance of S from the line AB on the side of its inner control points:
+// how far the sub-curve bulges past the chord, which steers the search.
+// Squared quantities are kept multiplied by |AB|^2 to spare divisions.
+double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double budget, double* bulge) {
+  const double abx = B.x - A.x, aby = B.y - A.y;
+  const double l2 = abx * abx + aby * aby;
+  auto cross_ab = [&](double x, double y) { return abx * y - aby * x; };
+  auto dot_ab = [&](double x, double y) { return abx * x + aby * y; };
+  const double w1x = S[1].x - A.x, w1y = S[1].y - A.y, w2x = S[2].x - A.x, w2y = S[2].y - A.y;
+  const double d0x = S[0].x - A.x, d0y = S[0].y - A.y, d3x = S[3].x - B.x, d3y = S[3].y - B.y;
+  const double c0 = cross_ab(d0x, d0y), c1 = cross_ab(w1x, w1y), c2 = cross_ab(w2x, w2y), c3 = cross_ab(d3x, d3y);
+  const double l1 = dot_ab(w1x, w1y), l2p = dot_ab(w2x, w2y);
+  const bool clamped = !(l2 > 1e-300) || l1 < 0 || l1 > l2 || l2p < 0 || l2p > l2;
+  // Extremes of the cross part: the ends and the roots of its derivative,
+  // 3 B2(c1 - c0, c2 - c1, c3 - c2), in power form.
+  const double e0 = c1 - c0, e1 = c2 - c1, e2 = c3 - c2;
+  double r[2];
+  const int n = quadratic_roots01(e0, 2 * (e1 - e0), e0 - 2 * e1 + e2, r);
+  double lo = std::min(c0, c3), hi = std::max(c0, c3);
+  // The bulge: on the side sg of the inner points, the largest interior
+  // extreme, when both ends lie on the other side (a shape the search's
+  // model fits; otherwise the bulge is left unknown).
+  const double sg = c1 + c2 >= 0 ? 1 : -1;
+  double in = -kInf;
+  for (int i = 0; i < n; ++i) {
+    const double s = r[i], u = 1 - s;
+    const double v = u * u * (c0 * u + 3 * c1 * s) + s * s * (3 * c2 * u + c3 * s);
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    in = std::max(in, sg * v);
+  }
+  const double P2 = std::max(lo * lo, hi * hi);
+  const double inv = l2 > 0 ? 1 / std::sqrt(l2) : 0;
+  if (bulge && l2 > 0 && sg * c0 <= 0 && sg * c3 <= 0 && in > -kInf) *bulge = in * inv;
+  const double b2 = budget * budget * l2;
+  if (!clamped) {
+    const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
+    const double U2 = P2 + std::max(a0 * a0, a3 * a3);
+    if (U2 <= b2) return std::sqrt(U2) * inv;
+  }
+  // The cross part alone exceeds the budget somewhere: so does |D|.
+  if (P2 > b2 && l2 > 0) return std::sqrt(P2) * inv;
+  std::array<Vec3, 4> d;
+  d[0] = S[0] - A;
+  d[3] = S[3] - B;
+  const Vec3 ab = B - A;
+  for (int k = 1; k < 3; ++k) d[k] = S[k] - (A + ab * (l2 > 0 ? std::clamp(dot(S[k] - A, ab) / l2, 0.0, 1.0) : 0.0));
+  return cubic_within(d, budget, 40);
+}
+
 // band_deviation() on a sub-curve already cut out: L has the sub-curve's
 // degree and weights, its ends A and B, its inner points the projections
 // of the sub-curve's on the line AB clamped to the segment. L lies on the
@@ -231,6 +295,10 @@ struct Prepared {
   double bend(double t) const {
     if (!cubic) return 0;
     const Vec3 d1 = tangent(t), d2 = c3 * (6 * t) + c2 * 2;
+    if (planar) {
+      const double s2 = d1.x * d1.x + d1.y * d1.y;
+      return s2 > 0 ? std::abs(d1.x * d2.y - d1.y * d2.x) / std::sqrt(s2) : std::sqrt(d2.x * d2.x + d2.y * d2.y);
+    }
     const double n = norm(d1);
     return n > 0 ? norm(cross(d1, d2)) / n : norm(d2);
   }
@@ -263,12 +331,24 @@ struct Prepared {
 
   // Unit vector at t across the curve towards its convex side (away from
   // the centre of curvature); zero where there is none (a straight stretch,
-  // an inflection, a stationary point).
-  Vec3 convex_side(double t) const {
+  // an inflection, a stationary point). For a cubic, `tangent_out` (when
+  // not null) receives M'(t); in the plane, where there is a side,
+  // `bend_out` (when not null) receives bend(t).
+  Vec3 convex_side(double t, Vec3* tangent_out = nullptr, double* bend_out = nullptr) const {
     Vec3 d1, d2;
     if (cubic) {
       d1 = tangent(t);
+      if (tangent_out) *tangent_out = d1;
       d2 = c3 * (6 * t) + c2 * 2;
+      if (planar) {
+        // The same in the plane: the normal part of M'' is perp(M') cr /
+        // |M'|^2, with cr = M' x M''; no second square root.
+        const double s2 = d1.x * d1.x + d1.y * d1.y, cr = d1.x * d2.y - d1.y * d2.x;
+        if (!(cr * cr > 1e-24 * (d2.x * d2.x + d2.y * d2.y) * s2) || !std::isfinite(cr * cr * s2)) return {};
+        const double k = (cr > 0 ? -1 : 1) / std::sqrt(s2);
+        if (bend_out) *bend_out = std::abs(cr * k);  // bend(t)
+        return {-d1.y * k, d1.x * k};
+      }
     } else {
       d1 = derivative(*b, t);
       d2 = second_derivative(*b, t);
@@ -283,17 +363,31 @@ struct Prepared {
     return n / -ln;
   }
 
+  // The cubic sub-curve on [t0, t1] from the power form (end points and
+  // end tangents), without building a Bézier.
+  void sub_points(double t0, double t1, Vec3* S) const {
+    const double h = (t1 - t0) / 3;
+    S[0] = point(t0);
+    S[3] = point(t1);
+    S[1] = S[0] + tangent(t0) * h;
+    S[2] = S[3] - tangent(t1) * h;
+  }
+
   // band_deviation() of the piece on [t0, t1]; for cubics with a budget,
-  // decided on the difference cubic directly (cubic_within()).
-  double band(double t0, double t1, const Vec3& A, const Vec3& B, double budget) const {
+  // decided on the difference cubic directly: in closed form in the plane
+  // (band_cubic_planar(), which also reports the bulge), else by
+  // subdivision (cubic_within()).
+  double band(double t0, double t1, const Vec3& A, const Vec3& B, double budget, double* bulge = nullptr) const {
     if (!cubic || budget < 0) return band_bound(sub(t0, t1), A, B, budget);
-    const Bezier s = sub(t0, t1);
+    Vec3 S[4];
+    sub_points(t0, t1, S);
+    if (planar) return band_cubic_planar(S, A, B, budget, bulge);
     const Vec3 ab = B - A;
     const double l2 = dot(ab, ab);
     std::array<Vec3, 4> d;
     for (int k = 0; k < 4; ++k) {
-      const Vec3 L = k == 0 ? A : k == 3 ? B : A + ab * (l2 > 0 ? std::clamp(dot(s.points[k] - A, ab) / l2, 0.0, 1.0) : 0.0);
-      d[k] = s.points[k] - L;
+      const Vec3 L = k == 0 ? A : k == 3 ? B : A + ab * (l2 > 0 ? std::clamp(dot(S[k] - A, ab) / l2, 0.0, 1.0) : 0.0);
+      d[k] = S[k] - L;
     }
     return cubic_within(d, budget, 40);
   }
@@ -353,8 +447,13 @@ constexpr double kBandShare = 0.96;
 // A band chord is accepted once its parameter step is within this share of
 // one known not to fit.
 constexpr double kBandClose = 0.97;
-// First step of the search from the predicted chord: 1 / 1.03 > 0.97, so a
-// good prediction is settled by two tries.
+// ... or once its sagitta is this share of the longest chord's: its step is
+// then at least sqrt(0.9) = 95 % of the longest (and most are settled by
+// their first try, aimed at kAimShare).
+constexpr double kBandAccept = 0.90;
+// Without a bulge to steer by (rational or higher-degree pieces, 3D
+// cubics): first step of the search from the predicted chord; 1 / 1.03 >
+// 0.97, so a good prediction is settled by two tries.
 constexpr double kBandStep = 0.03;
 
 // The band (docs/flattening.md): from vertex A (at parameter t0 of the
@@ -363,6 +462,29 @@ constexpr double kBandStep = 0.03;
 // n towards the convex side, delta = kBandShare of tol - margin - rounding,
 // or delta = 0 when that chord fails (inflections) and at the piece's end.
 // `Ar` is the rounded first vertex, already emitted.
+//
+// The search is steered by the bulge (planar cubics): with the ends shifted
+// by dA and dB across the curve, a chord's bulge past the segment is about
+// H - (dA + dB) / 2, H the sub-curve's bulge past its own chord, which grows
+// like the square of the step. So fill = (bulge + (dA + dB) / 2) / (budget +
+// (dA + dB) / 2) is the share of the longest chord's H that this one uses,
+// and a chord is settled once its fill reaches kAcceptShare (its step is
+// within 3 % of the longest) or its step is within kBandClose of one that
+// failed. The next chord's first step is the last one's, scaled by the fill
+// and by the change of bending, so most chords are settled by their first try.
+// The search's model of a chord whose ends lie dA and dB off the curve on
+// its convex side, for a sub-curve of sagitta H (its bulge past its own
+// chord, growing like the square of the step): near the top the sub-curve
+// is a parabola, and its bulge past the chord is H - (dA + dB) / 2 +
+// (dB - dA)^2 / (16 H). sagitta() inverts that for a measured bulge,
+// longest_sagitta() gives the H whose bulge is the budget.
+double sagitta(double bulge, double dA, double dB) {
+  const double m = bulge + 0.5 * (dA + dB), q = 0.25 * (dB - dA) * (dB - dA);
+  if (q == 0) return m;
+  return m * m > q ? 0.5 * (m + std::sqrt(m * m - q)) : 0.5 * m;
+}
+double longest_sagitta(double budget, double dA, double dB) { return sagitta(budget, dA, dB); }
+
 template <class Emit>
 double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, const ToleranceBudget& tb, Vec3 Ar,
                   Emit&& emit) {
@@ -371,73 +493,149 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
   // other end's rounding, a short enough chord from here fits.
   const double shift = kBandShare * (tol - margin - tb.rounding);
   double bound = 0;
+  size_t emitted = 0;  // vertices after the first
   struct Chord {
     double t1 = 0, dev = 0, disp = 0;
+    double H = -kInf;  // the sub-curve's sagitta (sagitta()); -infinity: not known
+    double budget = 0;
     Vec3 B, Br;
+    double bend = 0;  // bend() at t1, when the try found it (planar cubics)
     bool on = false;  // B on the curve
   };
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
     const Prepared P(pieces[pi]);
+    const bool steered = P.cubic && P.planar;
     Vec3 A = pieces[pi].front();
     double dispA = dist(Ar, A);  // includes the tiny gap at a path joint
+    double offA = 0;             // how far A lies off the curve
+    Vec3 S0, T0;                 // the curve's point and tangent at t0
+    double bend0 = steered ? P.bend(0) : 0;  // bend() at t0
     double t0 = 0;
-    // A band chord from an end on the curve is about sqrt(1.5) times as long.
-    double dt = 1.2 * P.first_step(tol - margin - dispA);
+    // A band chord from an end on the curve has room for about budget +
+    // shift / 2 of bulge.
+    double dt = steered ? P.first_step(longest_sagitta(tol - margin - dispA, 0, shift))
+                        : 1.2 * P.first_step(tol - margin - dispA);
+    // One try: B shifted across the curve, then (when allowed and of use)
+    // B on the curve.
     auto try_chord = [&](double t1, Chord& c, bool zero) {
       const Vec3 on = P.point(t1);
-      const Vec3 side = t1 < 1 ? P.convex_side(t1) : Vec3{};
+      Vec3 d1;
+      double bend1 = 0;
+      const Vec3 side = t1 < 1 ? P.convex_side(t1, &d1, &bend1) : Vec3{};
+      // The planar cubic's sub-curve, from what is known at t0 and t1.
+      Vec3 S[4];
+      if (steered) {
+        const double h = (t1 - t0) / 3;
+        if (!(t1 < 1)) d1 = P.tangent(t1);
+        S[0] = S0;
+        S[1] = S0 + T0 * h;
+        S[2] = on - d1 * h;
+        S[3] = on;
+      }
+      double H = -kInf;
       for (const double delta : {shift, 0.0}) {
         if (delta == 0 && !zero) continue;
-        if (delta > 0 && !(norm(side) > 0)) continue;
-        const Vec3 B = on + side * delta;
+        if (delta > 0 && !(side.x != 0 || side.y != 0 || side.z != 0)) continue;
+        const Vec3 B = delta > 0 ? on + side * delta : on;
         const Vec3 Br = opt.decimals < 0 ? B : quantize(B, opt.decimals);
-        const double disp = std::max(dispA, opt.decimals < 0 ? 0.0 : dist(Br, B));
+        const double disp = opt.decimals < 0 ? dispA : std::max(dispA, dist(Br, B));
         const double budget = tol - margin - disp;
         if (!(budget > 0)) continue;
-        const double dev = P.band(t0, t1, A, B, budget);
-        if (dev <= budget) {
-          c = {t1, dev, disp, B, Br, delta == 0};
-          return true;
-        }
+        // The shifted chord's sagitta is over what B on the curve allows:
+        // that try would be wasted.
+        if (delta == 0 && H > longest_sagitta(budget, offA, 0)) break;
+        double bulge = -kInf;
+        const double dev = steered ? band_cubic_planar(S, A, B, budget, &bulge) : P.band(t0, t1, A, B, budget);
+        H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
+        c.t1 = t1, c.dev = dev, c.disp = disp, c.H = H, c.budget = budget;
+        c.B = B, c.Br = Br, c.on = delta == 0, c.bend = bend1;
+        if (dev <= budget) return true;
       }
+      c.H = H;
       return false;
     };
     while (t0 < 1) {
       double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
       bool found = false;
-      Chord best, c;
-      // Steps of 3 %, doubling until the answer changes, then bisection.
+      // Two slots, the best chord so far and the one being tried, swapped
+      // by index rather than copied (copying the struct stalled the loop).
+      Chord slot[2];
+      int cur = 0;
+      if (steered) {
+        S0 = P.point(t0);
+        T0 = P.tangent(t0);
+      }
       double step = kBandStep;
       for (int iter = 0; iter < 200; ++iter) {
         const bool last = dt >= 1 - t0;
         if (last) dt = 1 - t0;
-        if (try_chord(last ? 1.0 : t0 + dt, c, !found || best.on)) {
+        Chord& c = slot[cur];
+        const bool ok = try_chord(last ? 1.0 : t0 + dt, c, !found || slot[cur ^ 1].on);
+        // The share of the longest chord's sagitta this one uses, for a
+        // next try with B shifted (or, when this one fits, as it is).
+        const double fill = c.H / longest_sagitta(c.budget, offA, ok && c.on ? 0 : shift);
+        if (ok) {
           found = true;
           lo = dt;
-          best = c;
-          if (last || lo >= kBandClose * hi) break;
-          dt = std::isfinite(hi) ? 0.5 * (lo + hi) : dt * (1 + step);
+          cur ^= 1;  // c is now the best
+          if (last || lo >= kBandClose * hi || fill >= kBandAccept) break;
+          double nd = !std::isfinite(fill) ? dt * (1 + step) : fill > 0 ? dt * std::min(4.0, std::sqrt(kAimShare / fill)) : 2 * dt;
+          if (nd >= hi) nd = 0.5 * (lo + hi);
+          dt = nd;
         } else {
           hi = dt;
           if (found && lo >= kBandClose * hi) break;
-          dt = found ? 0.5 * (lo + hi) : dt / (1 + step);
+          // Without a sagitta, the deviation over the budget tells how
+          // much to shrink (as if it grew like the square of the step).
+          double nd = std::isfinite(fill) && fill > 1 ? dt * std::clamp(std::sqrt(kAimShare / fill), 0.05, 0.99)
+                      : std::isfinite(fill)           ? 0.7 * dt
+                      : c.dev > c.budget && c.budget > 0
+                          ? dt * std::clamp(std::sqrt(kAimShare * c.budget / c.dev), 0.5, 1 / (1 + step))
+                          : dt / (1 + step);
+          if (found && nd <= lo) nd = 0.5 * (lo + hi);
+          dt = nd;
         }
         step = std::min(2 * step, 1.0);
       }
       if (!found) throw std::logic_error("flatten: no band chord fits (internal error)");
+      const Chord& best = slot[cur ^ 1];
       bound = std::max(bound, best.dev + best.disp);
-      emit({best.Br, pi, best.t1});
+      // A vertex that rounds onto the one before it would print a move of
+      // length zero: the printed polyline is the same without it (but a
+      // path keeps at least one segment).
+      const bool final_vertex = pi + 1 == pieces.size() && best.t1 >= 1;
+      if (!(best.Br == Ar) || (final_vertex && emitted == 0)) {
+        emit({best.Br, pi, best.t1});
+        ++emitted;
+      }
       if (best.t1 < 1) {
-        // Next guess: the same step, scaled by the change of bending.
-        double g = 1;
-        const double b0 = P.bend(best.t1 - 0.5 * lo), b1 = P.bend(std::min(1.0, best.t1 + 0.5 * lo));
-        if (b0 > 0 && b1 > 0) g = std::sqrt(b0 / b1);
-        dt = lo * std::clamp(g, 0.25, 2.0);
+        // Next guess: the same step, scaled by the change of bending and,
+        // when known, by the room this chord left.
+        // The square of the ratio: the bending across this chord's middle
+        // over that across the next one's, times the sagitta the next one
+        // may have over this one's.
+        double g2 = 1;
+        // In the plane, from the bending at this chord's ends (known from
+        // the tries), extrapolated linearly; else evaluated.
+        double b0, b1;
+        if (steered) {
+          b0 = 0.5 * (bend0 + best.bend);
+          b1 = std::max(best.bend + 0.5 * (best.bend - bend0), 0.25 * best.bend);
+          bend0 = best.bend;
+        } else {
+          b0 = P.bend(best.t1 - 0.5 * lo);
+          b1 = P.bend(std::min(1.0, best.t1 + 0.5 * lo));
+        }
+        if (b0 > 0 && b1 > 0) g2 = b0 / b1;
+        // The next chord starts where this one ends and ends shifted.
+        if (best.H > 0) g2 *= kAimShare * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H;
+        dt = lo * std::sqrt(std::clamp(g2, 1.0 / 16, 16.0));
       }
       t0 = best.t1;
       A = best.B;
       Ar = best.Br;
       dispA = dist(Ar, A);
+      offA = best.on ? 0.0 : shift;
     }
   }
   return bound;

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-5.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009458 mm, proven bound 0.009994 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009344 mm, proven bound 0.009832 mm, rounding included)
 (T1: seed-ex-5)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -11,12 +11,12 @@ S12000 M03
 G00 Z5.
 X0. Y0.
 G01 Z-0.5 F200.
-X0.618 Y0.561 F600.
-X1.186 Y0.914
+X0.616 Y0.559 F600.
+X1.164 Y0.904
 X1.5 Y1.009
-X1.358 Y1.02
-X0.87 Y1.262
-X0.206 Y1.789
+X1.347 Y1.023
+X0.857 Y1.27
+X0.195 Y1.8
 X0. Y2.
 G00 Z5.
 M05

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-7.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009613 mm, proven bound 0.009969 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009338 mm, proven bound 0.009783 mm, rounding included)
 N30 (T1: seed-ex-7)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
@@ -15,12 +15,12 @@ N120 (entity seed-ex-7: bezier, degree 3, 2D)
 N130 G00 Z5.
 N140 X0. Y0.
 N150 G01 Z-0.5 F200.
-N160 X0.708 Y0.657 F600.
-N170 X1.119 Y0.907
-N180 X1.37 Y0.933
-N190 X1.841 Y0.714
-N200 X2.204 Y0.706
-N210 X2.748 Y0.873
+N160 X0.693 Y0.646 F600.
+N170 X1.111 Y0.904
+N180 X1.362 Y0.934
+N190 X1.846 Y0.712
+N200 X2.211 Y0.707
+N210 X2.763 Y0.879
 N220 X3. Y1.
 N230 G00 Z5.
 N240 M05

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-9.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009557 mm, proven bound 0.009991 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009643 mm, proven bound 0.009991 mm, rounding included)
 N30 (T1: seed-ex-9)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
@@ -16,13 +16,13 @@ N130 G00 Z5.
 N140 X0. Y-1.
 N150 G01 Z-0.5 F200.
 N160 X0.34 Y-0.244 F600.
-N170 X0.39 Y0.082
-N180 X0.308 Y0.213
-N190 X0.029 Y0.259
-N200 X-0.259 Y0.261
-N210 X-0.381 Y0.351
-N220 X-0.368 Y0.53
-N230 X-0.113 Y0.895
+N170 X0.39 Y0.084
+N180 X0.305 Y0.215
+N190 X0.01 Y0.259
+N200 X-0.261 Y0.262
+N210 X-0.382 Y0.353
+N220 X-0.366 Y0.535
+N230 X-0.104 Y0.905
 N240 X0. Y1.
 N250 G00 Z5.
 N260 M05

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009879 mm, proven bound 0.009992 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009731 mm, proven bound 0.009991 mm, rounding included)
 (T1: quarter-circle-r10)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -11,19 +11,19 @@ S12000 M03
 G00 Z5.
 X10. Y0.
 G01 Z-1. F300.
-X9.955 Y1.036 F1000.
-X9.765 Y2.198
-X9.437 Y3.335
-X8.963 Y4.455
-X8.363 Y5.498
-X7.656 Y6.447
-X6.811 Y7.334
-X5.895 Y8.089
-X4.875 Y8.741
-X3.803 Y9.258
-X2.67 Y9.646
-X1.501 Y9.896
-X0.322 Y10.004
+X9.956 Y1.032 F1000.
+X9.759 Y2.224
+X9.421 Y3.38
+X8.948 Y4.484
+X8.349 Y5.52
+X7.621 Y6.489
+X6.794 Y7.35
+X5.873 Y8.105
+X4.847 Y8.757
+X3.769 Y9.272
+X2.632 Y9.657
+X1.459 Y9.902
+X0.242 Y10.006
 X0. Y10.
 G00 Z5.
 M05

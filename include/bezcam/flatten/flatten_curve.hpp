@@ -75,7 +75,10 @@ double chord_deviation(const Bezier& piece, double t0, double t1, double budget 
 /// degree and weights with L(0) = A, L(1) = B and inner control points the
 /// projections of the sub-curve's onto the line AB, clamped to the segment
 /// (parametric_distance(), degree_reduce.hpp). With a `budget` >= 0 the
-/// answer is certain on its side of the budget, as for chord_deviation().
+/// answer is certain on its side of the budget, as for chord_deviation();
+/// for planar polynomial pieces of degree <= 3 it is then decided in closed
+/// form (the part of the difference across the chord exactly, the part
+/// along it by its end values), subdividing only when that cannot decide.
 double band_deviation(const Bezier& piece, double t0, double t1, const Vec3& A, const Vec3& B, double budget = -1);
 
 /// About how many chords a flattening within `tolerance` needs: at least
