@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
   }
 
   std::printf("\nBlocks per pass by output mode (G-code lines of the surface entity's cutting moves / passes;\n");
-  std::printf("the first entity of each sample; nurbs plans its passes 4 tolerances closer, see docs/surfaces.md):\n");
+  std::printf("the first entity of each sample; arcs and nurbs plan their passes 4 tolerances closer, see docs/surfaces.md):\n");
   std::printf("%-28s %-9s %-6s %7s %8s %9s %10s %10s\n", "sample", "machine", "mode", "passes", "blocks", "per pass",
               "measured", "bound");
   struct Mode {

@@ -97,6 +97,7 @@ std::vector<MotionBlock> program_motion(const Program& p) {
     if (const auto* arc = std::get_if<ArcMove>(&mv.what)) {
       b.kind = arc->ccw ? BlockKind::arc_ccw : BlockKind::arc_cw;
       b.center = arc->center;
+      b.plane = arc->plane;
     }
     if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {
       b.kind = cv->form == CurveMove::Form::bezier ? BlockKind::bezier : BlockKind::nurbs;
@@ -141,7 +142,8 @@ double block_length(const MotionBlock& b) {
     case BlockKind::arc_ccw: {
       const Arc a = block_arc(b);
       const double r0 = a.r_start(), r1 = a.r_end();
-      if (r0 == r1) return std::hypot(r0 * a.sweep(), b.to.z - b.from.z);  // helix: exact
+      const int h = world_axis(a.plane, 2);
+      if (r0 == r1) return std::hypot(r0 * a.sweep(), b.to[h] - b.from[h]);  // helix: exact
       break;  // a spiral: by chords below
     }
     default: break;
@@ -185,7 +187,7 @@ std::vector<Vec3> sample_block(const MotionBlock& b, double chord) {
   return out;
 }
 
-Arc block_arc(const MotionBlock& b) { return {b.from, b.to, b.center, b.kind == BlockKind::arc_ccw}; }
+Arc block_arc(const MotionBlock& b) { return {b.from, b.to, b.center, b.kind == BlockKind::arc_ccw, b.plane}; }
 
 double arc_sweep(const MotionBlock& b) { return block_arc(b).sweep(); }
 
@@ -252,7 +254,8 @@ std::vector<Bezier> block_to_bezier(const MotionBlock& b) {
     }
     case BlockKind::arc_cw:
     case BlockKind::arc_ccw: {
-      if (b.from.z != b.to.z) throw std::invalid_argument("block_to_bezier: helical arc");
+      const int h = world_axis(b.plane, 2);
+      if (b.from[h] != b.to[h]) throw std::invalid_argument("block_to_bezier: helical arc");
       return bezier_pieces(block_arc(b));
     }
   }

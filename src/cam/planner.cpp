@@ -97,16 +97,18 @@ Vec3 block_tangent(const MotionBlock& b, bool end) {
     case BlockKind::linear: return unit(b.to - b.from);
     case BlockKind::arc_cw:
     case BlockKind::arc_ccw: {
-      const Vec3 p = end ? b.to : b.from;
-      Vec3 r = p - b.center;
+      // In the plane's coordinates (a, b, axis), every plane is G17's.
+      const Vec3 p = to_plane(end ? b.to : b.from, b.plane);
+      Vec3 r = p - to_plane(b.center, b.plane);
       r.z = 0;
       Vec3 t = b.kind == BlockKind::arc_ccw ? Vec3{-r.y, r.x, 0} : Vec3{r.y, -r.x, 0};
       t = unit(t);
       const double L = block_length(b);
       const double sweep = arc_sweep(b);
       const double rr = norm(r);
-      if (L > 0 && rr > 0) t = unit(t * (rr * sweep) + Vec3{0, 0, b.to.z - b.from.z});
-      return t;
+      const int h = world_axis(b.plane, 2);
+      if (L > 0 && rr > 0) t = unit(t * (rr * sweep) + Vec3{0, 0, b.to[h] - b.from[h]});
+      return from_plane(t, b.plane);
     }
     default: {
       const double h = 1e-6;
@@ -311,7 +313,7 @@ struct Builder {
       segs.push_back(std::move(s));
       pb.programmed_feed = rapid ? v * 60 : b.feed;
     } else if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
-      const Vec3 n{0, 0, 1};
+      const Vec3 n = from_plane({0, 0, 1}, b.plane);  // the plane's axis
       const double vplane = in_plane(n, lim.vmax), aplane = arc_accel(in_plane(n, lim.amax));
       double v = b.feed / 60;
       SpeedLimit why = SpeedLimit::programmed;
@@ -320,7 +322,7 @@ struct Builder {
         why = SpeedLimit::axes;
         pb.clamped = true;
       }
-      Vec3 r0 = b.from - b.center;
+      Vec3 r0 = to_plane(b.from - b.center, b.plane);
       r0.z = 0;
       const double R = norm(r0);
       PlanSegment s;
@@ -335,7 +337,9 @@ struct Builder {
       s.length = pb.length;
       curved_limits(s, v, why, R, aplane);
       s.curved = true;
-      s.center = Vec3{b.center.x, b.center.y, b.to.z};
+      Vec3 c = to_plane(b.center, b.plane);
+      c.z = to_plane(b.to, b.plane).z;
+      s.center = from_plane(c, b.plane);
       s.radius = R;
       s.angle = arc_sweep(b);
       segs.push_back(std::move(s));

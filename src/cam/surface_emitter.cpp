@@ -7,7 +7,12 @@
 // output on a profile with 3D NURBS blocks, each run is cut instead as the
 // blocks of its exact curve (r = 0) or of a proven approximation of its tip
 // curve (r > 0, approximate_tip() and reduce_degree()), measured
-// independently against the tip curve (docs/surfaces.md).
+// independently against the tip curve (docs/surfaces.md). In arcs output
+// each run is cut as helical G02/G03 arcs in the plane (G17, G18 or G19)
+// whose axis the run moves least along, fitted to the same exact or proven
+// tip curve with fit_arcs() (helical, bound proven in 3D), G01 where no arc
+// fits, and measured the same way; a run that no arc shortens keeps its
+// lines.
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -16,6 +21,7 @@
 #include "bezcam/error.hpp"
 #include "bezcam/cam/gouge.hpp"
 #include "bezcam/cam/pass_plan.hpp"
+#include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/degree_reduce.hpp"
 #include "bezcam/flatten/exact_blocks.hpp"
 #include "bezcam/flatten/tolerance.hpp"
@@ -82,13 +88,14 @@ class SurfaceEmitter {
     rep_.degree = std::max(s_.degree_u(), s_.degree_v());
     // Exact-curve blocks need a dialect that moves all three axes in one
     // block (Fanuc G06.2); LinuxCNC's G5.x move in X and Y only.
-    blocks_ = c.program.output == OutputMode::nurbs && c.machine.nurbs == NurbsDialect::fanuc;
+    arcs_ = c.program.output == OutputMode::arcs && c.machine.arcs;
+    blocks_ = arcs_ || (c.program.output == OutputMode::nurbs && c.machine.nurbs == NurbsDialect::fanuc);
     // Passes: the printed blocks may stray from the verified polylines by
     // twice the tolerance, so the passes are planned 4 tolerances closer
     // (plan_passes() needs at least 4 tolerances of its own).
     if (blocks_ && e_.type != "curve_on_surface" && e_.toolpath.pattern != "boundary" && e_.toolpath.stepover &&
         *e_.toolpath.stepover < 8 * c.tolerance)
-      blocks_ = false;
+      blocks_ = arcs_ = false;
   }
 
   EntityReport run() {
@@ -128,7 +135,8 @@ class SurfaceEmitter {
   double r_, safe_, clear_ = 0;
   bool started_ = false;  // the tool has cut this entity: links go at the clearance plane
   GougePolicy policy_;
-  bool blocks_ = false;  // cut runs as NURBS blocks (nurbs output, Fanuc dialect)
+  bool blocks_ = false;  // cut runs as blocks: NURBS (nurbs output, Fanuc dialect) or arcs
+  bool arcs_ = false;    // ... as arcs (arcs output)
   EntityReport rep_;
   size_t skipped_ = 0;
 
@@ -161,14 +169,20 @@ class SurfaceEmitter {
             (r_ > 0 ? ", ball-end tool radius " + fmt_num(r_) : ", tool tip on the surface"));
     for (const auto& line : c_.params.before)
       push({Verbatim{expand_entity_template(line, e_, c_.params, c_.decimals)}});
-    if (blocks_)
+    if (arcs_)
+      comment(std::string("cut as G02/G03 arcs in the G17, G18 or G19 plane (helical where the run climbs), G01 where "
+                          "no arc fits, within the tolerance of ") +
+              (r_ > 0 ? "the ball-end tip curves" : "the exact curves on the surface"));
+    else if (blocks_)
       comment(r_ > 0 ? "cut as NURBS blocks: cubic pieces within a proven distance of the ball-end tip curves"
                      : "cut as NURBS blocks: the exact curves on the surface (reduced to cubics where of higher degree)");
     const OutputMode out = c_.program.output;
     if (out != OutputMode::lines && !blocks_ && rep_.blocks == 0) {
       std::string why;
-      if (out == OutputMode::arcs)
-        why = "G02/G03 arcs lie in the XY plane and surface passes do not";
+      if (out == OutputMode::arcs && !c_.machine.arcs)
+        why = "machine " + c_.machine.name + " does not take arcs";
+      else if (out == OutputMode::arcs)
+        why = "the stepover is less than 8 tolerances, too little room for arcs beside the pass spacing";
       else if (c_.machine.nurbs == NurbsDialect::linuxcnc)
         why = "machine " + c_.machine.name + "'s NURBS blocks (G5/G5.1/G5.2) move in X and Y only, and surface "
               "passes move in Z too";
@@ -266,7 +280,7 @@ class SurfaceEmitter {
   // and they can be proven, else as its G01 lines.
   void cut_run(const SurfaceCurve& curve, const TipPolyline& poly, const Run& run, bool backwards,
                const std::string& what) {
-    if (blocks_ && cut_blocks(curve, run, backwards, what)) return;
+    if (blocks_ && (arcs_ ? cut_arcs(curve, run, backwards, what) : cut_blocks(curve, run, backwards, what))) return;
     if (blocks_) record_lines(curve, poly, what);
     cut(run.points);
   }
@@ -357,6 +371,95 @@ class SurfaceEmitter {
     for (const ExactBlock& b : blocks) rep_.blocks += append_exact_block(c_, b, [](const Vec3& p) { return p; });
     for (const Bezier& pc : printed_pieces) rep_.length += length(pc);
     st_.pos = blocks.back().ctrl.back();
+    return true;
+  }
+
+  // The run as helical arcs: the tip curve on [t0, t1] as Bézier pieces
+  // (exact for r = 0, within a proven e1 for r > 0), in the coordinates of
+  // the plane whose axis the run moves least along, fitted by fit_arcs()
+  // (helical) within what is left of the tolerance; measured independently
+  // against the tip curve. False (nothing emitted) when no arc shortens the
+  // run or the fit cannot be proven: the caller cuts its lines.
+  bool cut_arcs(const SurfaceCurve& curve, const Run& run, bool backwards, const std::string& what) {
+    const double tol = c_.tolerance;
+    SurfaceCurve sub = restrict(curve, std::min(run.t0, run.t1), std::max(run.t0, run.t1));
+    if (backwards) sub = reversed(sub);
+    const auto ap = approximate_tip(sub, r_, 0.25 * tol);
+    if (!ap) return false;
+    // The plane: the one whose axis the control points (a hull of the run)
+    // spread least along; its arcs then climb least.
+    Box3 box;
+    for (const Bezier& b : ap->pieces)
+      for (const Vec3& p : b.points) box.add(p);
+    int axis = 2;
+    for (int k = 0; k < 2; ++k)
+      if (box.hi[k] - box.lo[k] < box.hi[axis] - box.lo[axis]) axis = k;
+    const Plane pl = axis == 2 ? Plane::xy : axis == 1 ? Plane::zx : Plane::yz;
+    std::vector<Bezier> local = ap->pieces;
+    for (Bezier& b : local)
+      for (Vec3& p : b.points) p = to_plane(p, pl);
+    ArcFitOptions ao;
+    ao.tolerance = tol - ap->bound;
+    ao.decimals = c_.decimals;
+    ao.radius_tolerance = c_.machine.arc_tolerance_mm / mm_per_unit(c_.job.units);
+    ao.helical = true;
+    ArcFitResult fit;
+    try {
+      fit = fit_arcs(local, ao);
+    } catch (const InputError&) {
+      return false;  // what is left is below what rounding needs: lines
+    }
+    const size_t arcs = static_cast<size_t>(std::count_if(fit.moves.begin(), fit.moves.end(),
+                                                          [](const FitMove& f) { return f.kind != FitKind::line; }));
+    if (arcs == 0 || fit.moves.size() >= run.points.size() - 1) return false;
+    // The printed moves in world coordinates, each over its interval of
+    // `sub`'s parameter.
+    struct Printed {
+      Arc arc;  // lines: from, to only
+      bool line;
+    };
+    std::vector<Printed> moves;
+    std::vector<double> breaks{0.0};
+    Vec3 from = from_plane(fit.start, pl);
+    for (const FitMove& f : fit.moves) {
+      const Vec3 to = from_plane(f.to, pl);
+      moves.push_back({Arc{from, to, from_plane(f.center, pl), f.kind == FitKind::arc_ccw, pl}, f.kind == FitKind::line});
+      breaks.push_back(ap->breaks[f.piece] + f.t * (ap->breaks[f.piece + 1] - ap->breaks[f.piece]));
+      from = to;
+    }
+    const double bound = fit.bound + ap->bound;
+    if (c_.measure) {
+      const auto at = [&](size_t j, double s) {
+        const Printed& m = moves[j];
+        return m.line ? m.arc.from + (m.arc.to - m.arc.from) * s : m.arc.point(s);
+      };
+      const double m = measure_tip_moves(sub, r_, moves.size(), at, breaks).max();
+      rep_.measured = std::max(rep_.measured, m);
+      if (m > tol * (1 + 1e-6))
+        throw std::logic_error("internal check failed: " + rep_.label + " " + what + " as arcs deviates by " +
+                               fmt_num(m) + " beyond the tolerance " + fmt_num(tol));
+    }
+    rep_.bound = std::max(rep_.bound, bound);
+    // The tool is at the run's first vertex, the rounded tip there: the
+    // fit starts at the same point (a move of a last digit, if any).
+    feed_to(moves.front().arc.from);
+    for (const Printed& m : moves) {
+      if (m.line) {
+        feed_to(m.arc.to);
+        continue;
+      }
+      ArcMove am;
+      am.to = m.arc.to;
+      am.center = m.arc.center;
+      am.ccw = m.arc.ccw;
+      am.plane = pl;
+      am.feed = c_.params.feed;
+      push({am});
+      ++rep_.blocks;
+      rep_.length += std::hypot(0.5 * (m.arc.r_start() + m.arc.r_end()) * m.arc.sweep(),
+                                m.arc.to[axis] - m.arc.from[axis]);
+      st_.pos = am.to;
+    }
     return true;
   }
 

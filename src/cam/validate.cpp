@@ -13,10 +13,10 @@ namespace bezcam {
 
 namespace {
 
-// Extent of a G17 arc from `from` to `to` (the modal end point) around its
+// Extent of an arc (in its plane) from `from` to `to` (the modal end point) around its
 // centre: the kernel's Arc box, plus m.to as the move holds it.
 Box3 arc_box(const Vec3& from, const Vec3& to, const ArcMove& m) {
-  Box3 b = xy_box(Arc{from, to, m.center, m.ccw});
+  Box3 b = arc_extent(Arc{from, to, m.center, m.ccw, m.plane});
   b.add(m.to);
   return b;
 }
@@ -77,8 +77,8 @@ void validate_program(const Program& p, const MachineProfile& m) {
       if (!m.arcs)
         throw InputError(errc::program_arcs, where(mv), "machine \"" + m.name + "\" does not take arcs (\"arcs\": false)");
       // The emitters keep printed arcs within the controller's radius check.
-      const double rs = std::hypot(pos.x - arc->center.x, pos.y - arc->center.y);
-      const double re = std::hypot(to.x - arc->center.x, to.y - arc->center.y);
+      const Arc printed{pos, to, arc->center, arc->ccw, arc->plane};
+      const double rs = printed.r_start(), re = printed.r_end();
       if (std::abs(rs - re) > m.arc_tolerance_mm * k * (1 + 1e-9))
         throw std::logic_error("internal check failed: an arc's radii differ by " + fmt_num(std::abs(rs - re)));
       b = arc_box(pos, to, *arc);

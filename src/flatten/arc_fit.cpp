@@ -53,6 +53,31 @@
 // points give the lower bound that ends the search.
 // Finally the drawn path lies at the printed z' while a planar piece lies at
 // z: the 3D distance is hypot(B, |z - z'|).
+//
+// Helical arcs (ArcFitOptions::helical; G17 in the plane's coordinates,
+// the axis h of D running linearly with the angle from h_s = S'.h to
+// h_e = E'.h). Distances are 3D. In the sector, D has the point D(angle of
+// p), whose in-plane distance to p is ||p-c'| - rho| and axial distance
+// |p.h - h(angle)|, so
+//   d(p) = hypot(max(|p-c'| - rmin, rmax - |p-c'|), |p.h - h(angle of p)|),
+// and outside it d(p) = min(|p-S'|, |p-E'|) in 3D; both bound dist(p, D).
+// (b) carries over: d bounds the in-plane distance too, so the curve's
+// angle is continuous as before and every angle of D between those of S
+// and E is taken by a curve point within U. Near S', a point D(angle) of
+// the sliver is within |rho - r_s| + |h - h_s| <= (|r_e - r_s| + |h_e -
+// h_s|) sS of the point Q at that angle on the circle of radius r_s at
+// height h_s, and Q is no farther from S than S' is (same height, smaller
+// angle to S): B = max(U, |S-S'|, |E-E'|) + (|r_e - r_s| + |h_e - h_s|)
+// max(sS, sE). Over a hull that keeps away from the centre (Rmin > 0:
+// it lies in a half-plane beyond c'), the angles of its points lie between
+// the least and greatest angle of its control points (the cone they span
+// is convex), so for its points in the sector h(angle) lies between its
+// values at those angles clamped to the sweep, while p.h lies between the
+// control points' least and greatest h: the axial term is bounded by the
+// larger gap. That bound shrinks only linearly with the node; when every
+// control point lies in the sector, the second-order bound of
+// axial_taylor() (its Hessian is k times the angle's, of norm 1/r^2) is
+// used where smaller. The end-distance term is taken in 3D.
 
 namespace bezcam {
 
@@ -90,21 +115,80 @@ struct ArcGeometry {
   const PrintedArc& arc;
   Vec3 a, b;  // S' - c', E' - c'
   double rmin, rmax;
-  explicit ArcGeometry(const PrintedArc& pa) : arc(pa), a(pa.from - pa.center), b(pa.to - pa.center) {
+  bool helical;
+  double W = 0;  // helical: the sweep
+  ArcGeometry(const PrintedArc& pa, bool hel) : arc(pa), a(pa.from - pa.center), b(pa.to - pa.center), helical(hel) {
     rmin = std::min(norm2(a), norm2(b));
     rmax = std::max(norm2(a), norm2(b));
+    if (helical) W = pa.sweep();
   }
   bool in_sector(const Vec3& v) const {
     const double c1 = cross2(a, v), c2 = cross2(v, b);
     return arc.ccw ? (c1 >= 0 && c2 >= 0) : (c1 <= 0 && c2 <= 0);
   }
+  double dist_end(const Vec3& p, const Vec3& e) const { return helical ? dist(p, e) : dist2(p, e); }
+  // Helical: the height of D at the angle of v (in the sector), from S'.
+  double h_at(const Vec3& v) const {
+    const double th = std::clamp(directed_angle(a, v, arc.ccw), 0.0, W);
+    return arc.from.z + (arc.to.z - arc.from.z) * (th / W);
+  }
   double d(const Vec3& p) const {
     const Vec3 v = p - arc.center;
     if (in_sector(v)) {
       const double r = norm2(v);
-      return std::max(r - rmin, rmax - r);
+      const double radial = std::max(r - rmin, rmax - r);
+      return helical ? std::hypot(radial, p.z - h_at(v)) : radial;
     }
-    return std::min(dist2(p, arc.from), dist2(p, arc.to));
+    return std::min(dist_end(p, arc.from), dist_end(p, arc.to));
+  }
+  // Helical: bound of |p.h - h(angle of p)| over the hull (see the top).
+  double axial_bound(const Bezier& node, bool all_in, double Rmin) const {
+    double zlo = kInf, zhi = -kInf, hlo = std::min(arc.from.z, arc.to.z), hhi = std::max(arc.from.z, arc.to.z);
+    double thlo = kInf, thhi = -kInf;
+    for (const auto& q : node.points) {
+      zlo = std::min(zlo, q.z);
+      zhi = std::max(zhi, q.z);
+      const double th = directed_angle(a, q - arc.center, arc.ccw);
+      thlo = std::min(thlo, th);
+      thhi = std::max(thhi, th);
+    }
+    // Rmin > 0: the hull lies in a half-plane away from the centre, inside
+    // the cone of its extreme control points (angles within pi of each
+    // other, no wrap-around), so its points in the sector have angles in
+    // [thlo, thhi] clamped to the sweep.
+    if (Rmin > 0 && thhi - thlo < kPi) {
+      const double t0 = std::clamp(thlo, 0.0, W), t1 = std::clamp(thhi, 0.0, W);
+      const double h0 = arc.from.z + (arc.to.z - arc.from.z) * (t0 / W);
+      const double h1 = arc.from.z + (arc.to.z - arc.from.z) * (t1 / W);
+      hlo = std::min(h0, h1);
+      hhi = std::max(h0, h1);
+    }
+    double bound = std::max({zhi - hlo, hhi - zlo, 0.0});
+    if (all_in && Rmin > 0) bound = std::min(bound, axial_taylor(node, Rmin));
+    return bound;
+  }
+  // Helical, all control points in the sector, the hull at least Rmin from
+  // the centre: phi(p) = p.h - h(angle of p) is smooth on the hull, its
+  // Hessian is k times the angle's, of norm 1/r^2 (k = (h_e - h_s) / W), so
+  // around the node's first point q (a curve point)
+  //   |phi(p)| <= |phi(q) + grad phi(q).(p - q)| + |k| |p - q|^2 / (2 Rmin^2)
+  // with |p - q| in the plane; the linear part is largest at a control point.
+  double axial_taylor(const Bezier& node, double Rmin) const {
+    const double k = (arc.to.z - arc.from.z) / W;
+    const Vec3 q = node.points.front(), v = q - arc.center;
+    const double r2 = v.x * v.x + v.y * v.y;
+    if (!(r2 > 0)) return kInf;
+    const double sgn = arc.ccw ? 1 : -1;  // the angle grows in the arc's direction
+    const double phi = q.z - h_at(v);
+    // grad angle = sgn (-v.y, v.x) / r^2; grad phi = e_h - k grad angle.
+    const double gx = k * sgn * v.y / r2, gy = -k * sgn * v.x / r2;
+    double lin = 0, far2 = 0;
+    for (const auto& p : node.points) {
+      const Vec3 d = p - q;
+      lin = std::max(lin, std::abs(phi + d.z + gx * d.x + gy * d.y));
+      far2 = std::max(far2, d.x * d.x + d.y * d.y);
+    }
+    return lin + std::abs(k) * far2 / (2 * Rmin * Rmin);
   }
   // Upper bound of d over the convex hull of the node's control points.
   double hull_bound(const Bezier& node) const {
@@ -116,8 +200,8 @@ struct ArcGeometry {
       Rmax = std::max(Rmax, norm2(v));
       sum += v;
       all_in = all_in && in_sector(v);
-      toS = std::max(toS, dist2(q, arc.from));
-      toE = std::max(toE, dist2(q, arc.to));
+      toS = std::max(toS, dist_end(q, arc.from));
+      toE = std::max(toE, dist_end(q, arc.to));
     }
     double Rmin = 0;
     const double ls = norm2(sum);
@@ -127,7 +211,8 @@ struct ArcGeometry {
       for (const auto& q : node.points) Rmin = std::min(Rmin, dot2(q - arc.center, u));
       Rmin = std::max(Rmin, 0.0);
     }
-    const double radial = std::max(Rmax - rmin, rmax - Rmin);
+    double radial = std::max(Rmax - rmin, rmax - Rmin);
+    if (helical) radial = std::hypot(radial, axial_bound(node, all_in, Rmin));
     return all_in ? radial : std::max(radial, std::min(toS, toE));
   }
 };
@@ -164,6 +249,9 @@ struct Span {
 // bulge chosen minimax over samples (golden section from the three-point
 // circle), then the printed centre among the grid points around it, then
 // certification. Returns nothing when no arc fits `budget_xy`.
+double span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
+                      double resolution, bool helical);
+
 std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, double budget_xy, double rtol) {
   const Vec3 chord{sp.E.x - sp.S.x, sp.E.y - sp.S.y, 0};
   const double L = norm2(chord);
@@ -225,15 +313,15 @@ std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, do
       const double rs = a.r_start(), re = a.r_end();
       if (std::abs(rs - re) > rtol) continue;
       if (a.sweep() > kMaxSweep) continue;
-      const ArcGeometry g(a);
-      double est = std::max(dist2(sp.S, sp.Sr), dist2(sp.E, sp.Er));
+      const ArcGeometry g(a, opt.helical);
+      double est = std::max(g.dist_end(sp.S, sp.Sr), g.dist_end(sp.E, sp.Er));
       for (const auto& p : P) est = std::max(est, g.d(p));
       opts.push_back({a, ij, est});
     }
   std::sort(opts.begin(), opts.end(), [](const Option& x, const Option& y) { return x.estimate < y.estimate; });
   for (size_t i = 0; i < opts.size() && i < 3; ++i) {
     if (opts[i].estimate > budget_xy) break;
-    const double B = arc_span_deviation(sp.b, sp.t0, sp.t1, opts[i].arc, budget_xy, 0);
+    const double B = span_deviation(sp.b, sp.t0, sp.t1, opts[i].arc, budget_xy, 0, opt.helical);
     if (B <= budget_xy) return ArcCandidate{opts[i].arc, opts[i].ij, B};
   }
   return std::nullopt;
@@ -247,11 +335,14 @@ bool planar_xy(const Bezier& piece) {
   return true;
 }
 
-double arc_span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
-                          double resolution) {
+namespace {
+
+// arc_span_deviation() (helical false) and helix_span_deviation() (true).
+double span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
+                      double resolution, bool helical) {
   const double W = arc.sweep();
   if (!(W > 0) || W > kMaxSweep) return kInf;
-  const ArcGeometry g(arc);
+  const ArcGeometry g(arc, helical);
   if (!(g.rmin > 0)) return kInf;
   const Bezier sub = subcurve(piece, t0, t1);
   const Vec3 S = sub.front(), E = sub.back();
@@ -260,12 +351,25 @@ double arc_span_deviation(const Bezier& piece, double t0, double t1, const Print
   const double aE = directed_angle(g.b, E - arc.center, arc.ccw);
   const double sS = aS > 0 ? std::min(aS / W, 1.0) : 0.0;
   const double sE = aE < 0 ? std::min(-aE / W, 1.0) : 0.0;
-  const double spiral = std::abs(arc.r_end() - arc.r_start()) * std::max(sS, sE);
+  const double rise = helical ? std::abs(arc.to.z - arc.from.z) : 0.0;
+  const double spiral = (std::abs(arc.r_end() - arc.r_start()) + rise) * std::max(sS, sE);
   const double U = sup_d(g, sub, budget < 0 ? budget : std::max(budget - spiral, 0.0), resolution);
-  const double B = std::max({U, dist2(S, arc.from), dist2(E, arc.to)}) + spiral;
+  const double B = std::max({U, g.dist_end(S, arc.from), g.dist_end(E, arc.to)}) + spiral;
   // The covering argument needs the curve to stay well away from the centre.
   if (!(B < 0.5 * g.rmin)) return kInf;
   return B;
+}
+
+}  // namespace
+
+double arc_span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
+                          double resolution) {
+  return span_deviation(piece, t0, t1, arc, budget, resolution, false);
+}
+
+double helix_span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
+                            double resolution) {
+  return span_deviation(piece, t0, t1, arc, budget, resolution, true);
 }
 
 std::vector<Vec3> sample_arc(const PrintedArc& arc, double sagitta) {
@@ -295,8 +399,9 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
   double line_hint = -1, arc_hint = -1;
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
     const Bezier& b = pieces[pi];
-    const bool planar = planar_xy(b);
-    const double dz = planar ? std::abs(b.front().z - quantize(b.front().z, opt.decimals)) : 0.0;
+    // Helical arcs take any piece; their bound is 3D (dz = 0 below).
+    const bool planar = opt.helical || planar_xy(b);
+    const double dz = planar && !opt.helical ? std::abs(b.front().z - quantize(b.front().z, opt.decimals)) : 0.0;
     const double budget_xy = dz < budget ? std::sqrt(budget * budget - dz * dz) : -1.0;
     double t0 = 0;
     Vec3 S = b.front();
@@ -357,11 +462,11 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
         if (found) {
           arc_hint = found_t1 - t0;
           // Report a tight bound, not merely the accepted one.
-          const double tight = arc_span_deviation(b, t0, found_t1, found->arc, -1, 1e-4 * tol);
+          const double tight = span_deviation(b, t0, found_t1, found->arc, -1, 1e-4 * tol, opt.helical);
           const double B = std::hypot(std::min(found->bound_xy, tight), dz);
           best = {found->arc.ccw ? FitKind::arc_ccw : FitKind::arc_cw, found->arc.to, found->arc.center, found->ij,
                   pi, found_t1, B};
-          best.center.z = best.to.z;
+          best.center.z = opt.helical ? Sr.z : best.to.z;
           bestE = foundE;
         }
       }

@@ -332,25 +332,33 @@ Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p
   return d;
 }
 
-Deviation measure_tip_pieces(const SurfaceCurve& c, double radius, std::span<const Bezier> pieces,
-                             std::span<const double> breaks) {
+namespace {
+
+// The measurement of measure_tip_pieces() and measure_tip_moves(): printed
+// move j at local s is printed(j, s); `in_step` says it follows the curve in
+// the same parameter (nearest points searched in a window of a sixteenth of
+// the move around the same parameter) or not (searched over the whole move,
+// and the curve over the move's interval widened by a quarter either side).
+Deviation measure_tip_core(const SurfaceCurve& c, double radius, size_t n,
+                           const std::function<Vec3(size_t, double)>& printed, std::span<const double> breaks,
+                           bool in_step) {
   Deviation d;
   auto tip = [&](double t) { return tip_point(c, radius, std::clamp(t, 0.0, 1.0)); };
   constexpr int kSamples = 32;
-  for (size_t j = 0; j < pieces.size(); ++j) {
-    const Bezier& q = pieces[j];
+  for (size_t j = 0; j < n; ++j) {
     const double a = breaks[j], b = breaks[j + 1], w = b - a;
     // Distance from a printed point at local s to the tip curve near it,
-    // and from the tip at local s to the printed piece near it.
+    // and from the tip at local s to the printed move near it.
     auto to_curve = [&](double s) {
-      const Vec3 x = evaluate(q, s);
+      const Vec3 x = printed(j, s);
       const double t = a + s * w, h = w / 16;
-      return golden_min(std::max(0.0, t - h), std::min(1.0, t + h), [&](double u) { return dist(tip(u), x); }, 50);
+      const double lo = in_step ? t - h : a - w / 4, hi = in_step ? t + h : b + w / 4;
+      return golden_min(std::max(0.0, lo), std::min(1.0, hi), [&](double u) { return dist(tip(u), x); }, 50);
     };
     auto to_piece = [&](double s) {
       const Vec3 x = tip(a + s * w);
-      return golden_min(std::max(0.0, s - 1.0 / 16), std::min(1.0, s + 1.0 / 16),
-                        [&](double u) { return dist(evaluate(q, u), x); }, 50);
+      const double lo = in_step ? s - 1.0 / 16 : 0.0, hi = in_step ? s + 1.0 / 16 : 1.0;
+      return golden_min(std::max(0.0, lo), std::min(1.0, hi), [&](double u) { return dist(printed(j, u), x); }, 50);
     };
     auto worst_of = [&](const auto& f) {
       std::vector<double> v(kSamples + 1);
@@ -368,6 +376,19 @@ Deviation measure_tip_pieces(const SurfaceCurve& c, double radius, std::span<con
     d.curve_to_path = std::max(d.curve_to_path, worst_of(to_piece));
   }
   return d;
+}
+
+}  // namespace
+
+Deviation measure_tip_pieces(const SurfaceCurve& c, double radius, std::span<const Bezier> pieces,
+                             std::span<const double> breaks) {
+  return measure_tip_core(
+      c, radius, pieces.size(), [&](size_t j, double s) { return evaluate(pieces[j], s); }, breaks, true);
+}
+
+Deviation measure_tip_moves(const SurfaceCurve& c, double radius, size_t n,
+                            const std::function<Vec3(size_t, double)>& printed, std::span<const double> breaks) {
+  return measure_tip_core(c, radius, n, printed, breaks, false);
 }
 
 }  // namespace bezcam

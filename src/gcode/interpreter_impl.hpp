@@ -99,7 +99,9 @@ struct GcodeInterpreter::Impl {
   std::pair<Vec3, unsigned> target() const;
   // Start point of a move: unknown axes take the end's value.
   Vec3 start_for(const Vec3& to) const;
-  void require_xy_known(const std::string& what) const;
+  void require_xy_known(const std::string& what) const { require_known(what, 3); }
+  /// Fails unless every axis of `mask` (X 1, Y 2, Z 4) has been set.
+  void require_known(const std::string& what, unsigned mask) const;
   void require_feed(const std::string& what) const;
   // Travel limits of the profile, for the axes given by `axes`.
   void check_travel(const Box3& b, unsigned axes) const;
@@ -135,7 +137,9 @@ struct GcodeInterpreter::Impl {
   void run_modal();
   // Every word must mean something on this line.
   // `extra`: letters the line's non-motion codes take (G04 P, G43 H, G28 XYZ).
-  void check_letters(int active, const std::string& extra, bool explicit_motion);
+  /// `plane`: the plane the line's arc is in (17, 18, 19; the line's own
+  /// G17/G18/G19 if it has one).
+  void check_letters(int active, const std::string& extra, bool explicit_motion, int plane);
 
   // ---- Fanuc G06.2 / G06.3 blocks (fanuc_nurbs.cpp)
   // Lines inside an open multi-line block. Returns true when consumed.

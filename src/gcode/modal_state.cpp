@@ -48,6 +48,7 @@ void GcodeInterpreter::Impl::run_modal() {
   // One code per modal group.
   std::array<std::string, kModalGroups> seen_g{};
   int motion = -999;
+  int line_plane = 0;  // the G17/G18/G19 of this line, 0 for none
   bool dwell = false, home = false, machine_coords = false, length_comp = false, blend = false, comp_d = false;
   int comp = 0;  // G40 400, G41 410, G42 420
   std::string non_modal;  // RS274/NGC: one code of group 0 per line
@@ -65,9 +66,13 @@ void GcodeInterpreter::Impl::run_modal() {
       non_modal = t;
     }
     switch (c) {
-      case 180: case 190:
-        fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "XZ" : "YZ") +
-                          " plane: this reader supports G17 (XY) only");
+      case 170: case 180: case 190:
+        line_plane = c / 10;
+        if (c != 170 && st.cutter_comp != 40)
+          fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "ZX" : "YZ") +
+                                      " plane while cutter radius compensation is on: it compensates in G17 (XY) only; "
+                                      "cancel it with G40 first");
+        break;
       case 910: fail(errc::gcode_incremental, "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates");
       case 930: case 950:
         fail(errc::gcode_unsupported, t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
@@ -119,7 +124,7 @@ void GcodeInterpreter::Impl::run_modal() {
   if (home) extra += "XYZ";
   if (length_comp) extra += "H";
   if (comp_d) extra += "D";
-  check_letters(active, extra, motion != -999);
+  check_letters(active, extra, motion != -999, line_plane ? line_plane : st.plane);
 
   // Execution order (RS274/NGC): F, S, T, M06, spindle, coolant, dwell,
   // plane, units, distance mode, motion, program end.
@@ -169,8 +174,8 @@ void GcodeInterpreter::Impl::run_modal() {
       if (ln.has('P') && !(val('P') >= 0)) fail(errc::gcode_number, "G64 needs a path tolerance P >= 0, found " + txt('P'));
       if (ln.has('Q') && !(val('Q') >= 0)) fail(errc::gcode_number, "G64's Q (merge tolerance) must be >= 0, found " + txt('Q'));
       st.path_tolerance = ln.has('P') && val('P') > 0 ? val('P') : std::numeric_limits<double>::infinity();
-    } else if (c == 170) {
-      st.plane = 17;
+    } else if (c == 170 || c == 180 || c == 190) {
+      st.plane = c / 10;
       mo.plane_set = true;
     } else if (c == 200 || c == 210) {
       const Units u = c == 200 ? Units::inch : Units::mm;
@@ -216,11 +221,11 @@ void GcodeInterpreter::Impl::run_modal() {
 }
 
 // Every word must mean something on this line.
-void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra, bool explicit_motion) {
+void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra, bool explicit_motion, int plane) {
   std::string allowed = "FST";
   switch (active) {
     case 0: case 10: allowed += "XYZ"; break;
-    case 20: case 30: allowed += "XYZIJR"; break;
+    case 20: case 30: allowed += plane == 17 ? "XYZIJR" : plane == 18 ? "XYZIKR" : "XYZJKR"; break;
     case 50: allowed += "XYIJPQ"; break;
     case 51: allowed += "XYIJ"; break;
     case 52: allowed += "XYPL"; break;
@@ -232,8 +237,12 @@ void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra,
     if (allowed.find(w.letter) != std::string::npos) continue;
     if (std::string_view("ABCUVW").find(w.letter) != std::string_view::npos)
       fail(errc::gcode_unsupported, "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
-    if (w.letter == 'K' && (active == 20 || active == 30))
-      fail(errc::gcode_arc, w.text + ": K is not a centre word in the G17 plane (some controllers refuse even K0): give I and J only");
+    if ((active == 20 || active == 30) && std::string_view("IJK").find(w.letter) != std::string_view::npos) {
+      const char* words = plane == 17 ? "I and J" : plane == 18 ? "I and K" : "J and K";
+      fail(errc::gcode_arc, w.text + ": " + std::string(1, w.letter) + " is not a centre word in the G" +
+                                std::to_string(plane) + " plane (some controllers refuse even " +
+                                std::string(1, w.letter) + "0): give " + words + " only");
+    }
     if (w.letter == 'Z' && (active == 50 || active == 51 || active == 52))
       fail(errc::gcode_bezier, wt(active) + " moves in X and Y only: a Z word (" + w.text + ") is not allowed");
     if ((active == 62 || active == 63) && !explicit_motion) {

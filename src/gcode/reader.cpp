@@ -21,8 +21,8 @@ using namespace gcode;
 
 namespace {
 
-// Box of an arc (G17): both ends and every axis extreme the sweep passes.
-Box3 arc_box(const MotionBlock& b) { return xy_box(block_arc(b)); }
+// Box of an arc (in its plane): both ends and every axis extreme the sweep passes.
+Box3 arc_box(const MotionBlock& b) { return arc_extent(block_arc(b)); }
 
 }  // namespace
 
@@ -85,10 +85,13 @@ Vec3 GcodeInterpreter::Impl::start_for(const Vec3& to) const {
   return f;
 }
 
-void GcodeInterpreter::Impl::require_xy_known(const std::string& what) const {
-  if ((st.known_axes & 3) != 3)
-    fail(errc::gcode_position_unknown, what + " cannot start from an unknown position: no earlier move has set " +
-                                 ((st.known_axes & 1) ? std::string("Y") : (st.known_axes & 2) ? "X" : "X and Y"));
+void GcodeInterpreter::Impl::require_known(const std::string& what, unsigned mask) const {
+  const unsigned missing = mask & ~st.known_axes;
+  if (!missing) return;
+  std::string names;
+  for (int a = 0; a < 3; ++a)
+    if (missing & (1u << a)) names += (names.empty() ? "" : " and ") + axis_name(a);
+  fail(errc::gcode_position_unknown, what + " cannot start from an unknown position: no earlier move has set " + names);
 }
 
 void GcodeInterpreter::Impl::require_feed(const std::string& what) const {
@@ -274,6 +277,9 @@ void GcodeInterpreter::Impl::motion_line(int code, bool explicit_motion) {
     return;
   }
   if (self.profile_ && explicit_motion) check_dialect(code);
+  if (code >= 50 && code <= 52 && st.plane != 17)
+    fail(errc::gcode_plane, wt(code) + " moves in the XY plane: select it with G17 first (G" + std::to_string(st.plane) +
+                                " is in force)");
   switch (code) {
     case 0: case 10: linear(code == 0); break;
     case 20: case 30: arc(code == 20); break;
@@ -357,21 +363,30 @@ double GcodeInterpreter::Impl::arc_tolerance() const {
 void GcodeInterpreter::Impl::arc(bool cw) {
   st.motion = cw ? ModalMotion::arc_cw : ModalMotion::arc_ccw;
   mo.g5_chain = false;
-  const std::string g = cw ? "G02" : "G03";
-  const bool ij = ln.has('I') || ln.has('J'), r = ln.has('R');
-  if (ij && r) fail(errc::gcode_arc, g + ": give either I and J (the centre) or R (the radius), not both");
-  if (!ij && !r) fail(errc::gcode_arc, g + " needs the centre offsets I and J (or a radius R)");
-  require_xy_known(g);
+  // In the plane's coordinates (a, b, axis) every plane is G17's: the
+  // centre words of a and b, the end words of a and b.
+  const Plane pl = static_cast<Plane>(st.plane - 17);
+  const int ia = world_axis(pl, 0), ib = world_axis(pl, 1);
+  const char la = "IJK"[ia], lb = "IJK"[ib];
+  const std::string words = std::string(1, std::min(la, lb)) + " and " + std::string(1, std::max(la, lb));
+  const std::string g = std::string(cw ? "G02" : "G03") + (pl == Plane::xy ? "" : " (G" + std::to_string(st.plane) + ")");
+  const bool ij = ln.has(la) || ln.has(lb), r = ln.has('R');
+  if (ij && r) fail(errc::gcode_arc, g + ": give either " + words + " (the centre) or R (the radius), not both");
+  if (!ij && !r) fail(errc::gcode_arc, g + " needs the centre offsets " + words + " (or a radius R)");
+  require_known(g, (1u << ia) | (1u << ib));
   require_feed(g);
   const auto [to, axes] = target();
   const Vec3 from = st.pos;
-  Vec3 c{from.x, from.y, from.z};
+  const Vec3 lf = to_plane(from, pl), lt = to_plane(to, pl);
+  Vec3 c = lf;  // the centre, in plane coordinates
   if (ij) {
-    c.x += ln.has('I') ? val('I') : 0;
-    c.y += ln.has('J') ? val('J') : 0;
+    c.x += ln.has(la) ? val(la) : 0;
+    c.y += ln.has(lb) ? val(lb) : 0;
   } else {
-    if (!(axes & 3)) fail(errc::gcode_arc, g + " with R needs an end point X or Y (a full circle needs I and J)");
-    const double dx = to.x - from.x, dy = to.y - from.y, d = std::hypot(dx, dy);
+    if (!(axes & ((1u << ia) | (1u << ib))))
+      fail(errc::gcode_arc, g + " with R needs an end point " + axis_name(ia) + " or " + axis_name(ib) +
+                                " (a full circle needs " + words + ")");
+    const double dx = lt.x - lf.x, dy = lt.y - lf.y, d = std::hypot(dx, dy);
     const double R = val('R');
     if (d == 0) fail(errc::gcode_arc, g + " with R: the end point equals the start point; give a full circle with I and J");
     const double tol = arc_tolerance();
@@ -381,20 +396,22 @@ void GcodeInterpreter::Impl::arc(bool cw) {
     const double h = std::sqrt(std::max(0.0, R * R - d * d / 4));
     // Centre left of the chord for a minor CCW arc or a major CW one.
     const double side = ((!cw) == (R > 0)) ? 1.0 : -1.0;
-    c.x = (from.x + to.x) / 2 - side * h * dy / d;
-    c.y = (from.y + to.y) / 2 + side * h * dx / d;
+    c.x = (lf.x + lt.x) / 2 - side * h * dy / d;
+    c.y = (lf.y + lt.y) / 2 + side * h * dx / d;
   }
-  const double r0 = std::hypot(from.x - c.x, from.y - c.y), r1 = std::hypot(to.x - c.x, to.y - c.y);
-  if (r0 == 0) fail(errc::gcode_arc, g + ": the centre coincides with the start point (I and J are both 0)");
+  const double r0 = std::hypot(lf.x - c.x, lf.y - c.y), r1 = std::hypot(lt.x - c.x, lt.y - c.y);
+  if (r0 == 0) fail(errc::gcode_arc, g + ": the centre coincides with the start point (" + words + " are both 0)");
   const double tol = arc_tolerance();
   const double slack = 1e-12 * std::max({1.0, max_abs(from), max_abs(to), max_abs(c)});
   if (std::abs(r0 - r1) > tol + slack)
-    soft(errc::gcode_arc_radius, g + ": the centre (" + fmt_num(c.x) + ", " + fmt_num(c.y) + ") is " + fmt_num(r0) +
+    soft(errc::gcode_arc_radius, g + ": the centre (" + fmt_num(from_plane(c, pl)[std::min(ia, ib)]) + ", " +
+                                     fmt_num(from_plane(c, pl)[std::max(ia, ib)]) + ") is " + fmt_num(r0) +
                            " from the start and " + fmt_num(r1) + " from the end; they differ by " +
                            fmt_num(std::abs(r0 - r1)) + " " + unit() + ", more than the arc tolerance" + machine() +
                            " (" + fmt_num(tol) + " " + unit() + "): the end point or the centre is wrong");
   MotionBlock b = block(cw ? BlockKind::arc_cw : BlockKind::arc_ccw, to);
-  b.center = {c.x, c.y, from.z};
+  b.center = from_plane(c, pl);  // along the plane's axis: the start's
+  b.plane = pl;
   lint_motion(b.kind, b.from, to, axes);
   check_travel(arc_box(b), 7);
   check_feed_limit(st.feed);

@@ -103,7 +103,8 @@ struct Snapshot {
 std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, double plunge) {
   const MachineState& st = s.state;
   std::vector<std::string> out;
-  std::string modes = "G17 G90 G94 G40";
+  // The arc plane in force there (G18/G19 inside a run of surface arcs).
+  std::string modes = "G" + std::to_string(st.plane) + " G90 G94 G40";
   if (st.units_set) modes += st.units == Units::inch ? " G20" : " G21";
   modes += " G" + std::to_string(st.coord_system);
   if (st.path_mode == 611) modes += " G61.1";

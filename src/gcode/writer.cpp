@@ -71,6 +71,7 @@ class Writer {
     line(std::string(p_.units == Units::mm ? "G21" : "G20") + " G90 G17");
     for (const auto& l : m_.preamble) line(subst(l));
     for (const Move& mv : p_.moves) move(mv);
+    plane(Plane::xy);  // the program ends in G17, as it began
     for (const auto& f : m_.footer) {
       if (!f.empty() && f[0] == '%') raw(subst(f));
       else line(subst(f));
@@ -202,7 +203,23 @@ class Writer {
     return s;
   }
 
+  // Selects the arc plane when it changes (a line of its own).
+  void plane(Plane pl) {
+    if (pl == plane_) return;
+    plane_ = pl;
+    line("G" + std::to_string(g_number(pl)));
+  }
+
   void move(const Move& mv) {
+    // Back to G17 before what assumes it: compensation, curve blocks (G5.x
+    // are XY moves), the operator's and the job's lines, tool changes. Lines,
+    // rapids, comments, spindle, coolant and dwells do not depend on it.
+    if (plane_ != Plane::xy &&
+        !(std::holds_alternative<ArcMove>(mv.what) || std::holds_alternative<LineMove>(mv.what) ||
+          std::holds_alternative<RapidMove>(mv.what) || std::holds_alternative<Comment>(mv.what) ||
+          std::holds_alternative<SpindleMove>(mv.what) || std::holds_alternative<CoolantMove>(mv.what) ||
+          std::holds_alternative<Dwell>(mv.what)))
+      plane(Plane::xy);
     if (const auto* c = std::get_if<Comment>(&mv.what)) {
       note(c->text);
     } else if (const auto* v = std::get_if<Verbatim>(&mv.what)) {
@@ -276,17 +293,24 @@ class Writer {
     pos_ = to;
   }
 
-  // G02/G03 in G17: both end words always (some controllers require them),
-  // the centre as I and J relative to the start (the active plane's words
-  // only: some controllers reject K in G17), Z only if it changes (which
-  // bezcam's arcs never do). The word is always printed.
+  // G02/G03 in the arc's plane (G17, G18 or G19 on a line of its own when
+  // it changes): both end words of the plane always (some controllers
+  // require them), the centre relative to the start in the plane's words
+  // only (I J, K I, J K: some controllers reject the third), the plane's
+  // axis only if it changes (a helix). The word is always printed.
   void arc(const ArcMove& mv) {
+    plane(mv.plane);
     const Vec3 from = pos_;
     const std::string g = mv.ccw ? m_.word_ccw : m_.word_cw;
-    axis_[0].clear();
-    axis_[1].clear();
+    const int h = world_axis(mv.plane, 2);
+    std::string centre[3];
+    for (int k = 0; k < 3; ++k)
+      if (k != h) {
+        axis_[k].clear();
+        centre[k] = std::string(1, "IJK"[k]) + num(mv.center[k] - from[k]);
+      }
     const std::string a = axes(mv.to, mv.axes);
-    line(join({g, a, "I" + num(mv.center.x - from.x), "J" + num(mv.center.y - from.y), feed(mv.feed)}));
+    line(join({g, a, centre[0], centre[1], centre[2], feed(mv.feed)}));
     motion_ = g;
     for (int k = 0; k < 3; ++k)
       if (mv.axes & (1u << k)) pos_[k] = mv.to[k];
@@ -357,6 +381,7 @@ class Writer {
   int n_ = m_.line_start;
   std::string axis_[3], motion_, feed_;
   Vec3 pos_;  // current position as printed
+  Plane plane_ = Plane::xy;  // the arc plane in force (the units line sets G17)
 };
 
 }  // namespace

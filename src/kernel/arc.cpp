@@ -10,35 +10,71 @@ namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 }  // namespace
 
-double Arc::start_angle() const { return std::atan2(from.y - center.y, from.x - center.x); }
+int g_number(Plane p) { return 17 + static_cast<int>(p); }
 
-double Arc::r_start() const { return std::hypot(from.x - center.x, from.y - center.y); }
+int world_axis(Plane pl, int k) {
+  // G17 (x, y, z), G18 (z, x, y), G19 (y, z, x).
+  return (k + 3 - static_cast<int>(pl)) % 3;
+}
 
-double Arc::r_end() const { return std::hypot(to.x - center.x, to.y - center.y); }
+Vec3 to_plane(const Vec3& p, Plane pl) {
+  return {p[world_axis(pl, 0)], p[world_axis(pl, 1)], p[world_axis(pl, 2)]};
+}
+
+Vec3 from_plane(const Vec3& q, Plane pl) {
+  Vec3 p;
+  for (int k = 0; k < 3; ++k) p[world_axis(pl, k)] = q[k];
+  return p;
+}
+
+namespace {
+// The ends and the centre in plane coordinates.
+struct Local {
+  Vec3 f, t, c;
+  explicit Local(const Arc& a) : f(to_plane(a.from, a.plane)), t(to_plane(a.to, a.plane)), c(to_plane(a.center, a.plane)) {}
+};
+}  // namespace
+
+double Arc::start_angle() const {
+  const Local l(*this);
+  return std::atan2(l.f.y - l.c.y, l.f.x - l.c.x);
+}
+
+double Arc::r_start() const {
+  const Local l(*this);
+  return std::hypot(l.f.x - l.c.x, l.f.y - l.c.y);
+}
+
+double Arc::r_end() const {
+  const Local l(*this);
+  return std::hypot(l.t.x - l.c.x, l.t.y - l.c.y);
+}
 
 double Arc::sweep() const {
   // The difference of the ends' atan2 angles: the programs' outputs were
   // made with this rounding, so it stays the one formula.
-  const double a0 = start_angle();
-  const double a1 = std::atan2(to.y - center.y, to.x - center.x);
+  const Local l(*this);
+  const double a0 = std::atan2(l.f.y - l.c.y, l.f.x - l.c.x);
+  const double a1 = std::atan2(l.t.y - l.c.y, l.t.x - l.c.x);
   double s = ccw ? a1 - a0 : a0 - a1;
   while (s <= 0) s += kTwoPi;  // equal ends: a full circle
   while (s > kTwoPi) s -= kTwoPi;
-  if (from.x == to.x && from.y == to.y) s = kTwoPi;
+  if (l.f.x == l.t.x && l.f.y == l.t.y) s = kTwoPi;
   return s;
 }
 
 Vec3 Arc::point(double s) const {
   if (s <= 0) return from;
   if (s >= 1) return to;
+  const Local l(*this);
   const double w = sweep(), a0 = start_angle();
   const double a = ccw ? a0 + s * w : a0 - s * w;
   const double r0 = r_start(), r1 = r_end();
   const double r = r0 + (r1 - r0) * s;
-  return {center.x + r * std::cos(a), center.y + r * std::sin(a), from.z + (to.z - from.z) * s};
+  return from_plane({l.c.x + r * std::cos(a), l.c.y + r * std::sin(a), l.f.z + (l.t.z - l.f.z) * s}, plane);
 }
 
-Box3 xy_box(const Arc& a) {
+Box3 arc_extent(const Arc& a) {
   Box3 box;
   box.add(a.from);
   box.add(a.to);
@@ -57,8 +93,11 @@ std::vector<Bezier> bezier_pieces(const Arc& a) {
   const int n = std::max(1, static_cast<int>(std::ceil(w / (std::numbers::pi / 2) - 1e-12)));
   const double th = w / n, dir = a.ccw ? 1 : -1;
   const double r = a.r_start(), a0 = a.start_angle();
-  const Vec3 c{a.center.x, a.center.y, a.from.z};
-  auto on = [&](double ang, double rr) { return c + Vec3{rr * std::cos(ang), rr * std::sin(ang), 0}; };
+  const Local l(a);
+  const Vec3 c{l.c.x, l.c.y, l.f.z};
+  auto on = [&](double ang, double rr) {
+    return from_plane(c + Vec3{rr * std::cos(ang), rr * std::sin(ang), 0}, a.plane);
+  };
   std::vector<Bezier> out;
   // Rational quadratic arc: middle point at r / cos(th/2) on the bisector,
   // weight cos(th/2) (The NURBS Book, section 7.3).

@@ -76,7 +76,10 @@ int trace_sample_count(const MotionBlock& b) {
 // the shape between, at parameters k/(n+1) so that neither end repeats.
 std::string trace_block(const MotionBlock& b) {
   std::string s = line_ref(b) + " " + kind_name(b.kind) + " to " + xyz(b.to);
-  if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) s += " center " + xyz(b.center);
+  if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
+    s += " center " + xyz(b.center);
+    if (b.plane != Plane::xy) s += " plane G" + std::to_string(g_number(b.plane));
+  }
   if (b.kind == BlockKind::nurbs || b.kind == BlockKind::bezier)
     s += " order " + std::to_string(b.order) + " points " + std::to_string(b.ctrl.size());
   if (b.kind != BlockKind::rapid) s += " feed " + trace_number(b.feed);

@@ -447,15 +447,63 @@ TEST(SurfaceProgram, AWrongNurbsBlockIsCaught) {
   EXPECT_GT(check_on_surface(*e.surface, {runs.front()}, cp.tool_radius, job.tolerance, true), 0.02);
 }
 
+// Arcs output: every surface sample takes fewer blocks than as G01 lines,
+// as G02/G03 arcs in G17, G18 or G19 (helical where the run climbs); the
+// program read back by the reader lies on the surface within the tolerance
+// (the arcs sampled as the reader evaluates them), the report's bound and
+// independent measurement are within it, and raster passes as printed
+// stay within the stepover.
+TEST(SurfaceProgram, ArcsInThreePlanesTakeFewerBlocksThanLinesWithinTolerance) {
+  for (const auto& sc : kPatchSamples) {
+    SCOPED_TRACE(sc.file);
+    const Job job = load_job(kSamples + sc.file);
+    const std::string machine = job.machine.value_or("generic");
+    const Read lines = convert_and_read(job, machine, OutputMode::lines);
+    const Read arcs = convert_and_read(job, machine, OutputMode::arcs);
+    const Entity& e = job.entities[sc.entity];
+    const EntityReport& ln = lines.r.program.entities[sc.entity];
+    const EntityReport& ar = arcs.r.program.entities[sc.entity];
+    EXPECT_LT(ar.blocks, ln.blocks);
+    RecordProperty(std::string(sc.file) + ".arcs", static_cast<int>(ar.blocks));
+    size_t read_arcs = 0, helical = 0, other_planes = 0;
+    for (const auto& b : arcs.blocks) {
+      if (b.kind != BlockKind::arc_cw && b.kind != BlockKind::arc_ccw) continue;
+      ++read_arcs;
+      const int h = world_axis(b.plane, 2);
+      helical += b.from[h] != b.to[h];
+      other_planes += b.plane != Plane::xy;
+    }
+    EXPECT_GT(read_arcs, 0u);
+    if (sc.file == std::string("patch-saddle.json")) EXPECT_GT(other_planes, 0u);  // passes along Y: G19
+    RecordProperty(std::string(sc.file) + ".helical", static_cast<int>(helical));
+    EXPECT_LE(ar.bound, job.tolerance);
+    EXPECT_GT(ar.measured, 0);
+    EXPECT_LE(ar.measured, job.tolerance * 1.001);
+    for (const auto& w : arcs.r.program.warnings) EXPECT_EQ(w.find("G01 lines"), std::string::npos) << w;
+    const CutParams cp = cut_params(job, e, arcs.m);
+    const auto runs = runs_of(arcs, quantize(cp.feed, arcs.m.feed_decimals), job.tolerance / 2);
+    ASSERT_FALSE(runs.empty());
+    EXPECT_LE(check_on_surface(*e.surface, runs, cp.tool_radius, job.tolerance, true), job.tolerance);
+  }
+  const Job saddle = as_raster(load_job(kSamples + "patch-saddle.json"), 0);
+  const Read x = convert_and_read(saddle, "generic", OutputMode::arcs);
+  const double stepover = *saddle.entities[0].toolpath.stepover, chord = 0.01;
+  const auto runs =
+      runs_of(x, quantize(cut_params(saddle, saddle.entities[0], x.m).feed, x.m.feed_decimals), chord);
+  ASSERT_GE(runs.size(), 10u);
+  double worst = 0;
+  for (size_t i = 0; i + 1 < runs.size(); i += 3) worst = std::max(worst, brute_gap(runs[i], runs[i + 1], stepover / 20));
+  EXPECT_LE(worst, stepover + 2 * chord);
+}
+
 // Where the dialect cannot carry a 3D block (LinuxCNC's G5.x move in X and
-// Y), and in arcs output (G17 arcs lie in XY), passes stay G01 lines and a
-// warning says why, once per entity.
+// Y), or the machine takes no arcs, passes stay G01 lines and a warning says
+// why, once per entity.
 TEST(SurfaceProgram, LinesWhereNoBlockCanCarryAPassAndSaidSo) {
   const Job job = load_job(kSamples + "patch-saddle.json");
   for (auto [machine, mode, why] :
        {std::tuple{"linuxcnc", OutputMode::nurbs, "move in X and Y only"},
-        std::tuple{"generic", OutputMode::nurbs, "has no NURBS words"},
-        std::tuple{"fanuc", OutputMode::arcs, "lie in the XY plane"}}) {
+        std::tuple{"generic", OutputMode::nurbs, "has no NURBS words"}}) {
     SCOPED_TRACE(machine);
     const Read x = convert_and_read(job, machine, mode);
     size_t said = 0;

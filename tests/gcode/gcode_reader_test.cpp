@@ -303,7 +303,8 @@ INSTANTIATE_TEST_SUITE_P(
 INSTANTIATE_TEST_SUITE_P(
     Modes, GcodeRefusal,
     ::testing::Values(
-        Bad{"G18\n", "line 3", "gcode.plane", "G18 selects the XZ plane: this reader supports G17 (XY) only"},
+        Bad{"G18\nG5 X1 Y1 I1 J0 P0 Q1\n", "line 4", "gcode.plane",
+            "G5 moves in the XY plane: select it with G17 first (G18 is in force)"},
         Bad{"G91 G01 X1\n", "line 3", "gcode.incremental",
             "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates"},
         Bad{"G00 G01 X1\n", "line 3", "gcode.modal-group", "G00 and G01 are in the same modal group: give one"},
@@ -332,7 +333,12 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"G02 X10 Y0 R2\n", "line 3", "gcode.arc",
             "R2 is too small for the chord of 10 mm between start and end (the radius must be at least half of it)"},
         Bad{"G02 X10 Y0 I0 J0\n", "line 3", "gcode.arc",
-            "G02: the centre coincides with the start point (I and J are both 0)"}));
+            "G02: the centre coincides with the start point (I and J are both 0)"},
+        Bad{"G18\nG02 X10 Z0 I5 J0\n", "line 4", "gcode.arc",
+            "J0: J is not a centre word in the G18 plane (some controllers refuse even J0): give I and K only"},
+        Bad{"G19\nG03 Y1 Z1\n", "line 4", "gcode.arc", "G03 (G19) needs the centre offsets J and K (or a radius R)"},
+        Bad{"G19 G03 Y0 Z0 J0 K0\n", "line 3", "gcode.arc",
+            "G03 (G19): the centre coincides with the start point (J and K are both 0)"}));
 
 INSTANTIATE_TEST_SUITE_P(
     FanucBlocks, GcodeRefusal,

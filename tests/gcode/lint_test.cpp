@@ -91,14 +91,14 @@ TEST(Lint, EveryProblemOnItsLineAndLintGoesOn) {
                            "G03 X0 Y10.01 I-10 J0\n"    // 10: radius mismatch (kept)
                            "G01 X500\n"                 // 11: travel (grbl: 400)
                            "G01 X0 F9000\n"             // 12: feed (grbl: 5000)
-                           "G18\n"                      // 13: plane refused
+                           "G19 G02 Y1 Z1 I1 J0\n"      // 13: I is no centre word in G19
                            "G01 X1 X2\n"                // 14: repeated word, first kept
                            "G38.2 Z-5\n"                // 15: unsupported
                            "G01 Y5\n" +                 // 16: fine, from X1
                            kTail;
   const auto fs = lint_gcode(prog, profile("grbl"));
   EXPECT_EQ(brief(fs), (std::vector<std::string>{"9:gcode.syntax", "10:gcode.arc-radius", "11:gcode.travel",
-                                                 "12:gcode.feed-limit", "13:gcode.plane", "14:gcode.repeated-word",
+                                                 "12:gcode.feed-limit", "13:gcode.arc", "14:gcode.repeated-word",
                                                  "15:gcode.unsupported"}));
   EXPECT_EQ(fs[2].message, "the move reaches X = 500 mm, outside the travel of machine \"grbl\" (X from -400 to 400 mm)");
 }

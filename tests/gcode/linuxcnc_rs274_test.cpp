@@ -144,6 +144,7 @@ struct Expected {
   unsigned axes = 7;
   int order = 0;
   int rotation = 0;
+  Plane plane = Plane::xy;  ///< arcs: ARC_FEED's ends are the plane's (G18: Z X, axis Y; G19: Y Z, axis X)
 };
 
 // Under cutter compensation the calls are the tool centre's: the program's
@@ -179,6 +180,7 @@ std::vector<Expected> compensated_calls(const Program& p) {
       e.name = "ARC_FEED";
       e.center = b.center;
       e.rotation = b.kind == BlockKind::arc_ccw ? 1 : -1;
+      e.plane = b.plane;
     } else {
       bool changes = false;
       for (int a = 0; a < 3; ++a) changes = changes || format_number(b.to[a], p.decimals) != printed[a];
@@ -216,6 +218,7 @@ std::vector<Expected> expected_calls(const Program& p) {
       e.name = "ARC_FEED";
       e.center = arc->center;
       e.rotation = arc->ccw ? 1 : -1;
+      e.plane = arc->plane;
     } else if (const auto* cv = std::get_if<CurveMove>(&move.what)) {
       e.name = "NURBS_FEED";
       e.order = cv->order;
@@ -321,12 +324,15 @@ TEST(LinuxcncRs274, EverySampleInEveryModeIsAcceptedAndMeansWhatWeMeant) {
       if (w.name == "ARC_FEED") {
         ++arcs;
         ASSERT_GE(c.args.size(), 6u);
-        EXPECT_NEAR(c.args[0], w.to.x, eps);
-        EXPECT_NEAR(c.args[1], w.to.y, eps);
-        EXPECT_NEAR(c.args[2], w.center.x, eps);
-        EXPECT_NEAR(c.args[3], w.center.y, eps);
+        // In the plane's coordinates: first end, second end, first and
+        // second centre, rotation, the axis end.
+        const Vec3 to = to_plane(w.to, w.plane), centre = to_plane(w.center, w.plane);
+        EXPECT_NEAR(c.args[0], to.x, eps);
+        EXPECT_NEAR(c.args[1], to.y, eps);
+        EXPECT_NEAR(c.args[2], centre.x, eps);
+        EXPECT_NEAR(c.args[3], centre.y, eps);
         EXPECT_EQ(c.args[4], w.rotation);
-        EXPECT_NEAR(c.args[5], w.to.z, eps);
+        EXPECT_NEAR(c.args[5], to.z, eps);
         continue;
       }
       ASSERT_GE(c.args.size(), 3u);

@@ -284,12 +284,12 @@ TEST(Resume, BadLinesAreRefusedNamingTheLine) {
   EXPECT_NE(e.message().find("cannot resume at line 4"), std::string::npos) << e.message();
   EXPECT_NE(e.message().find("gcode.incremental"), std::string::npos) << e.message();
   // An unsupported word before the line.
-  const std::string g18 = "G21 G90\nG00 Z5.\nG18\nG00 X1.\nM30\n";
-  e = test::refusal_of([&] { plan_resume(g18, &m, 4); });
+  const std::string g38 = "G21 G90\nG00 Z5.\nG38.2 Z-5.\nG00 X1.\nM30\n";
+  e = test::refusal_of([&] { plan_resume(g38, &m, 4); });
   EXPECT_EQ(e.id(), "resume.state-unknown");
   EXPECT_EQ(e.where(), "line 3");
   // ... but not after it: the lines after N are the controller's to check.
-  EXPECT_EQ(plan_resume(g18, &m, 2).start_line, 2);
+  EXPECT_EQ(plan_resume(g38, &m, 2).start_line, 2);
 }
 
 TEST(Resume, SafeHeightAndPlungeFeedMustBeKnownAndAccepted) {

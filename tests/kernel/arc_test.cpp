@@ -46,14 +46,14 @@ TEST(Arc, BoxHoldsTheAxisExtremesPassed) {
   Arc moved = a;
   moved.from = a.from + a.center;
   moved.to = a.to + a.center;
-  const Box3 b = xy_box(moved);
+  const Box3 b = arc_extent(moved);
   EXPECT_NEAR(b.hi.y, 21, 1e-12);
   EXPECT_NEAR(b.lo.x, 9, 1e-12);
   EXPECT_NEAR(b.hi.x, moved.from.x, 0);
   EXPECT_NEAR(b.lo.y, moved.to.y, 0);
   // The other way round passes 0 and 270 degrees instead.
   moved.ccw = false;
-  const Box3 c = xy_box(moved);
+  const Box3 c = arc_extent(moved);
   EXPECT_NEAR(c.hi.x, 11, 1e-12);
   EXPECT_NEAR(c.lo.y, 19, 1e-12);
 }

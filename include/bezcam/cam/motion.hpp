@@ -24,6 +24,7 @@ struct MotionBlock {
   unsigned from_known = 7;
   double feed = 0;         ///< units/min (0 for rapids)
   Vec3 center;             ///< arcs
+  Plane plane = Plane::xy; ///< arcs: G17, G18 or G19
   int order = 0;           ///< nurbs: degree + 1; bezier: degree + 1
   std::vector<Vec3> ctrl;  ///< nurbs / bezier control points, ctrl[0] == from
   std::vector<double> weights, knots;  ///< nurbs (LinuxCNC G5.2: the interpreter's clamped uniform knots)
@@ -34,7 +35,7 @@ struct MotionBlock {
 
 /// Point of a block at t in [0,1] (arcs by angle, NURBS over the knot domain).
 /// Arcs: the radius runs linearly from the start's to the end's (they may
-/// differ within the arc tolerance) and Z linearly (helix); t = 0 and t = 1
+/// differ within the arc tolerance) and the plane's axis linearly (helix); t = 0 and t = 1
 /// give `from` and `to` exactly.
 Vec3 evaluate_block(const MotionBlock& b, double t);
 
@@ -42,14 +43,14 @@ Vec3 evaluate_block(const MotionBlock& b, double t);
 /// G5/G5.1 as they are, NURBS blocks decomposed (to_bezier), planar arcs as
 /// rational quadratic pieces of at most 90 degrees on the circle through
 /// `from` around `center` (exact when `to` lies on it; the last piece ends
-/// at `to`). Helical arcs (Z varies) throw std::invalid_argument, as do
+/// at `to`). Helical arcs (the plane's axis varies) throw std::invalid_argument, as do
 /// NURBS blocks that cannot be decomposed (lint-recovered bad knots).
 std::vector<Bezier> block_to_bezier(const MotionBlock& b);
 
 /// The printed arc of an arc block (arc_cw or arc_ccw).
 Arc block_arc(const MotionBlock& b);
 
-/// Swept angle of a G17 arc block, in (0, 2 pi] (equal ends: a full circle).
+/// Swept angle of an arc block, in (0, 2 pi] (equal ends: a full circle).
 double arc_sweep(const MotionBlock& b);
 
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "bezcam/job/job.hpp"  // Coolant
+#include "bezcam/kernel/arc.hpp"  // Plane
 #include "bezcam/kernel/vec.hpp"
 
 namespace bezcam {
@@ -34,11 +35,14 @@ struct Motion {
 struct RapidMove : Motion {};
 /// G01: straight, at `feed`.
 struct LineMove : Motion {};
-/// G02 (clockwise) / G03 in G17, around `center` (absolute; printed as I, J
-/// relative to the start).
+/// G02 (clockwise) / G03 in `plane` (G17, G18, G19), around `center`
+/// (absolute; printed as the plane's centre words I J, K I or J K relative to
+/// the start). The plane's axis moves linearly with the angle (a helix) when
+/// the ends differ along it.
 struct ArcMove : Motion {
   Vec3 center;
   bool ccw = false;
+  Plane plane = Plane::xy;
 };
 /// An exact curve block: a NURBS block (Fanuc G06.2 / LinuxCNC G5.2) or a
 /// LinuxCNC G5 / G5.1 Bézier move. `ctrl` starts at the current position.

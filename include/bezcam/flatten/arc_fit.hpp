@@ -41,6 +41,12 @@ struct ArcFitOptions {
   /// Largest |r_start - r_end| of a printed arc the controller accepts
   /// (model units; the profile's arc_tolerance_mm converted).
   double radius_tolerance = 0.002;
+  /// Helical arcs: the pieces are in plane coordinates (a, b, h) of one of
+  /// G17/G18/G19 (to_plane()), need not be planar, and every span may be an
+  /// arc whose h runs linearly with the angle from the start's to the end's;
+  /// the bound covers the in-plane and axial parts together. When false,
+  /// only pieces in a plane z = const get arcs, whose z is constant.
+  bool helical = false;
 };
 
 enum class FitKind { line, arc_cw, arc_ccw };
@@ -49,7 +55,7 @@ enum class FitKind { line, arc_cw, arc_ccw };
 struct FitMove {
   FitKind kind = FitKind::line;
   Vec3 to;          ///< rounded end point (z rounded too; a 2D curve keeps z = 0)
-  Vec3 center;      ///< arcs: S' + rounded (I, J), z = to.z
+  Vec3 center;      ///< arcs: S' + rounded (I, J), z = to.z (helical: the start's z)
   Vec3 ij;          ///< arcs: the printed I, J (x, y), relative to the move's start
   size_t piece = 0; ///< piece and parameter of the curve point the move ends at
   double t = 0;
@@ -91,6 +97,11 @@ using PrintedArc = Arc;
 /// within `resolution` (model units) or 0.1 % of the supremum it bounds.
 double arc_span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
                           double resolution = 0);
+/// The same in 3D for a helical arc (arc_fit.cpp's proof, helical part):
+/// piece and arc in the coordinates of the arc's plane (a G17 arc whose z
+/// may run linearly with the angle), the distance measured in 3D.
+double helix_span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
+                            double resolution = 0);
 
 /// Dense points of the drawn path of a printed arc, consecutive chords within
 /// `sagitta` of it (for independent measurement and drawing); includes both ends.

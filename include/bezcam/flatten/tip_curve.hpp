@@ -27,6 +27,7 @@
 /// Rational P: P'' = (H'' - w''(P-c) - 2w'P')/w with H = w(P - c) bounded
 /// the same way. Rounding of the vertices adds its displacement, as for
 /// curves.
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -95,5 +96,15 @@ Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p
 /// search; the printed curve is evaluated exactly, not sampled into chords.
 Deviation measure_tip_pieces(const SurfaceCurve& c, double radius, std::span<const Bezier> pieces,
                              std::span<const double> breaks);
+
+/// The same measurement for `n` printed moves that do not follow the curve
+/// in its parameter (circular and helical arcs, lines): printed(j, s) is the
+/// point of move j at s in [0, 1]; the move runs from the tip at breaks[j]
+/// to the tip at breaks[j+1]. Nearest points are searched over the whole
+/// move, and over its curve interval widened by a quarter either side: each
+/// move must be short enough (an arc of less than half a turn) for the
+/// distance along it to a point near it to have a single minimum.
+Deviation measure_tip_moves(const SurfaceCurve& c, double radius, size_t n,
+                            const std::function<Vec3(size_t, double)>& printed, std::span<const double> breaks);
 
 }  // namespace bezcam
