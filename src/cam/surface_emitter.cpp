@@ -285,6 +285,12 @@ class SurfaceEmitter {
     cut(run.points);
   }
 
+  // The run's stretch of the pass's curve, in cutting direction.
+  static SurfaceCurve run_curve(const SurfaceCurve& curve, const Run& run, bool backwards) {
+    SurfaceCurve sub = restrict(curve, std::min(run.t0, run.t1), std::max(run.t0, run.t1));
+    return backwards ? reversed(sub) : sub;
+  }
+
   // The run as NURBS blocks: the tip curve on [t0, t1] as Bézier pieces
   // (exact for r = 0, within a proven e1 for r > 0), reduced to the
   // dialect's degree within a proven e2 where higher, then planned and
@@ -293,8 +299,7 @@ class SurfaceEmitter {
   // the run with its lines.
   bool cut_blocks(const SurfaceCurve& curve, const Run& run, bool backwards, const std::string& what) {
     const double tol = c_.tolerance;
-    SurfaceCurve sub = restrict(curve, std::min(run.t0, run.t1), std::max(run.t0, run.t1));
-    if (backwards) sub = reversed(sub);
+    const SurfaceCurve sub = run_curve(curve, run, backwards);
     const auto ap = approximate_tip(sub, r_, 0.25 * tol);
     if (!ap) return false;
     const int maxdeg = std::clamp(c_.machine.nurbs_max_rank, 2, 4) - 1;
@@ -382,8 +387,7 @@ class SurfaceEmitter {
   // run or the fit cannot be proven: the caller cuts its lines.
   bool cut_arcs(const SurfaceCurve& curve, const Run& run, bool backwards, const std::string& what) {
     const double tol = c_.tolerance;
-    SurfaceCurve sub = restrict(curve, std::min(run.t0, run.t1), std::max(run.t0, run.t1));
-    if (backwards) sub = reversed(sub);
+    const SurfaceCurve sub = run_curve(curve, run, backwards);
     const auto ap = approximate_tip(sub, r_, 0.25 * tol);
     if (!ap) return false;
     // The plane: the one whose axis the control points (a hull of the run)
