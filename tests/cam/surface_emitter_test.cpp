@@ -373,6 +373,21 @@ size_t count_of(const std::string& text, const std::string& what) {
 // independent measurement of the printed blocks and the reader's own
 // evaluation of them are within the tolerance, and neighbouring passes as
 // printed stay within the stepover.
+// The saddle's raster passes as printed blocks on `machine` in `mode`:
+// neighbours within the stepover (the sampled polylines stray from the
+// blocks by at most `chord` each).
+void expect_saddle_raster_within_stepover(const char* machine, OutputMode mode) {
+  const Job saddle = as_raster(load_job(kSamples + "patch-saddle.json"), 0);
+  const Read x = convert_and_read(saddle, machine, mode);
+  const double stepover = *saddle.entities[0].toolpath.stepover, chord = 0.01;
+  const auto runs =
+      runs_of(x, quantize(cut_params(saddle, saddle.entities[0], x.m).feed, x.m.feed_decimals), chord);
+  ASSERT_GE(runs.size(), 10u);
+  double worst = 0;
+  for (size_t i = 0; i + 1 < runs.size(); i += 3) worst = std::max(worst, brute_gap(runs[i], runs[i + 1], stepover / 20));
+  EXPECT_LE(worst, stepover + 2 * chord);
+}
+
 TEST(SurfaceProgram, NurbsBlocksOnFanucTakeFewerBlocksThanLinesWithinTolerance) {
   for (const auto& sc : kPatchSamples) {
     SCOPED_TRACE(sc.file);
@@ -396,17 +411,8 @@ TEST(SurfaceProgram, NurbsBlocksOnFanucTakeFewerBlocksThanLinesWithinTolerance) 
     ASSERT_FALSE(runs.empty());
     EXPECT_LE(check_on_surface(*e.surface, runs, cp.tool_radius, job.tolerance, true), job.tolerance);
   }
-  // Raster passes as printed blocks: neighbours within the stepover (the
-  // sampled polylines stray from the blocks by at most `chord` each).
-  const Job saddle = as_raster(load_job(kSamples + "patch-saddle.json"), 0);
-  const Read x = convert_and_read(saddle, "fanuc", OutputMode::nurbs);
-  const double stepover = *saddle.entities[0].toolpath.stepover, chord = 0.01;
-  const auto runs =
-      runs_of(x, quantize(cut_params(saddle, saddle.entities[0], x.m).feed, x.m.feed_decimals), chord);
-  ASSERT_GE(runs.size(), 10u);
-  double worst = 0;
-  for (size_t i = 0; i + 1 < runs.size(); i += 3) worst = std::max(worst, brute_gap(runs[i], runs[i + 1], stepover / 20));
-  EXPECT_LE(worst, stepover + 2 * chord);
+  // Raster passes as printed blocks: neighbours within the stepover.
+  expect_saddle_raster_within_stepover("fanuc", OutputMode::nurbs);
   // The boundary pattern: four borders, each its blocks, still one loop.
   Job coons = load_job(kSamples + "patch-coons-curved.json");
   coons.entities[0].toolpath.pattern = "boundary";
@@ -485,15 +491,7 @@ TEST(SurfaceProgram, ArcsInThreePlanesTakeFewerBlocksThanLinesWithinTolerance) {
     ASSERT_FALSE(runs.empty());
     EXPECT_LE(check_on_surface(*e.surface, runs, cp.tool_radius, job.tolerance, true), job.tolerance);
   }
-  const Job saddle = as_raster(load_job(kSamples + "patch-saddle.json"), 0);
-  const Read x = convert_and_read(saddle, "generic", OutputMode::arcs);
-  const double stepover = *saddle.entities[0].toolpath.stepover, chord = 0.01;
-  const auto runs =
-      runs_of(x, quantize(cut_params(saddle, saddle.entities[0], x.m).feed, x.m.feed_decimals), chord);
-  ASSERT_GE(runs.size(), 10u);
-  double worst = 0;
-  for (size_t i = 0; i + 1 < runs.size(); i += 3) worst = std::max(worst, brute_gap(runs[i], runs[i + 1], stepover / 20));
-  EXPECT_LE(worst, stepover + 2 * chord);
+  expect_saddle_raster_within_stepover("generic", OutputMode::arcs);
 }
 
 // Where the dialect cannot carry a 3D block (LinuxCNC's G5.x move in X and
