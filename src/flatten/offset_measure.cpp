@@ -91,28 +91,63 @@ struct Index {
     const double dy = std::max({b.lo.y - p.y, 0.0, p.y - b.hi.y});
     return dx * dx + dy * dy;
   }
-  double nearest(const Vec3& p) {
-    if (segs.empty()) return HUGE_VAL;
+  static double box_box_d2(const Box3& a, const Box3& b) {
+    const double dx = std::max({b.lo.x - a.hi.x, 0.0, a.lo.x - b.hi.x});
+    const double dy = std::max({b.lo.y - a.hi.y, 0.0, a.lo.y - b.hi.y});
+    return dx * dx + dy * dy;
+  }
+  static double cross(const Vec3& o, const Vec3& a, const Vec3& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  }
+  // Squared distance between segments pq and ab: zero where they cross,
+  // else the nearest of the four ends to the other segment.
+  static double seg_seg_d2(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b) {
+    const double o1 = cross(p, q, a), o2 = cross(p, q, b), o3 = cross(a, b, p), o4 = cross(a, b, q);
+    if (((o1 < 0 && o2 > 0) || (o1 > 0 && o2 < 0)) && ((o3 < 0 && o4 > 0) || (o3 > 0 && o4 < 0))) return 0;
+    return std::min({seg_d2(p, a, b), seg_d2(q, a, b), seg_d2(a, p, q), seg_d2(b, p, q)});
+  }
+  // The smallest squared distance from any segment to what `d2` measures
+  // (a point or a segment), chunks pruned by `box` (a lower bound on d2 for
+  // a chunk's box); seeded by the segments near the previous answer.
+  template <class D2, class BoxD2>
+  double search(D2 d2, BoxD2 box) {
     double best = HUGE_VAL;
     size_t at = hint;
     const size_t lo = hint > 4 ? hint - 4 : 0, hi = std::min(segs.size(), hint + 5);
     for (size_t i = lo; i < hi; ++i) {
-      const double d = seg_d2(p, segs[i].first, segs[i].second);
+      const double d = d2(segs[i]);
       if (d < best) best = d, at = i;
     }
     for (size_t g = 0; g < groups.size(); ++g) {
-      if (box_d2(p, groups[g]) >= best) continue;
+      if (box(groups[g]) >= best) continue;
       for (size_t c = g * kChunk; c < std::min(boxes.size(), (g + 1) * kChunk); ++c) {
-        if (box_d2(p, boxes[c]) >= best) continue;
+        if (box(boxes[c]) >= best) continue;
         for (size_t i = c * kChunk; i < std::min(segs.size(), (c + 1) * kChunk); ++i) {
-          const double d = seg_d2(p, segs[i].first, segs[i].second);
+          const double d = d2(segs[i]);
           if (d < best) best = d, at = i;
         }
       }
     }
     hint = at;
-    return std::sqrt(best);
+    return best;
   }
+  /// Distance from p to the nearest segment; `hint` is then that segment.
+  double nearest(const Vec3& p) {
+    if (segs.empty()) return HUGE_VAL;
+    return std::sqrt(search([&](const auto& s) { return seg_d2(p, s.first, s.second); },
+                            [&](const Box3& b) { return box_d2(p, b); }));
+  }
+  /// The smallest distance between the segment pq and any segment.
+  double nearest(const Vec3& p, const Vec3& q) {
+    if (segs.empty()) return HUGE_VAL;
+    Box3 pq;
+    pq.add(p);
+    pq.add(q);
+    return std::sqrt(search([&](const auto& s) { return seg_seg_d2(p, q, s.first, s.second); },
+                            [&](const Box3& b) { return box_box_d2(pq, b); }));
+  }
+  /// Distance from p to segment i.
+  double to(size_t i, const Vec3& p) const { return std::sqrt(seg_d2(p, segs[i].first, segs[i].second)); }
 };
 
 }  // namespace
@@ -130,26 +165,56 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
     }
   }
   Index curve(std::move(segs));
-  // Path points, with steps of at most `resolution` between them.
+  // The path's distances from the curve's polyline. The smallest is exact:
+  // the nearest approach of each path segment to any curve segment. The
+  // largest is read at path points: the vertices, then the midpoints of a
+  // path segment while it could hold a larger distance than read so far.
+  // It cannot where one curve segment S is within that largest reading of
+  // both its ends (the distance to S is convex along a line, and the
+  // distance to the curve is at most the distance to S), nor where the
+  // segment is at most 2 resolution long (no point is farther than
+  // `resolution` from a read end, and the distance moves by at most the
+  // distance travelled): the largest reading is within `resolution` of the
+  // largest distance.
   double lo = HUGE_VAL, hi = 0;
   std::vector<std::pair<Vec3, Vec3>> psegs;
+  struct Read {
+    Vec3 at;
+    size_t seg;  // the curve segment nearest to it
+  };
+  std::vector<std::pair<Read, Read>> todo;
+  auto read = [&](const Vec3& p) {
+    const double d = curve.nearest(p);
+    hi = std::max(hi, d);
+    lo = std::min(lo, d);
+    return Read{p, curve.hint};
+  };
+  auto within = [&](const Read& a, const Read& b, size_t s) {
+    return std::max(curve.to(s, a.at), curve.to(s, b.at)) <= hi;
+  };
+  Read prev{};
   for (size_t i = 0; i < path.size(); ++i) {
     const Vec3 p{path[i].x, path[i].y, 0};
-    if (i > 0) psegs.push_back({Vec3{path[i - 1].x, path[i - 1].y, 0}, p});
-    if (!distances) continue;
-    const Vec3 q = i > 0 ? Vec3{path[i - 1].x, path[i - 1].y, 0} : p;
-    // The distance to the curve moves by at most the distance travelled,
-    // so from a reading d the next one that could beat the extremes so far
-    // is min(hi - d, d - lo) away; steps of at least 2 resolution read every
-    // point's distance within resolution.
-    const double len = std::hypot(p.x - q.x, p.y - q.y);
-    for (double at = i > 0 ? std::min(2 * resolution, len) : 0;;) {
-      const double d = curve.nearest(len > 0 ? lerp(q, p, at / len) : p);
-      lo = std::min(lo, d);
-      hi = std::max(hi, d);
-      if (at >= len) break;
-      at = std::min(len, at + std::max(2 * resolution, std::min(hi - d, d - lo)));
+    if (i > 0) psegs.push_back({prev.at, p});
+    if (!distances) {
+      prev.at = p;
+      continue;
     }
+    const Read cur = read(p);
+    if (i > 0 && !curve.segs.empty()) {
+      lo = std::min(lo, curve.nearest(prev.at, p));
+      todo.push_back({prev, cur});
+      while (!todo.empty()) {
+        const auto [a, b] = todo.back();
+        todo.pop_back();
+        if (dist(a.at, b.at) <= 2 * resolution || within(a, b, a.seg) || within(a, b, b.seg)) continue;
+        const Read m = read(lerp(a.at, b.at, 0.5));
+        if (within(a, b, m.seg)) continue;
+        todo.push_back({m, b});
+        todo.push_back({a, m});
+      }
+    }
+    prev = cur;
   }
   out.min_distance = distances ? lo : r;
   out.max_distance = distances ? hi : r;

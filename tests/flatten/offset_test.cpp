@@ -137,5 +137,38 @@ TEST(Offset, TheMeasurementCatchesAWrongOffset) {
   EXPECT_GE(measure_offset(curves, cut, 3, -1, 0.01, 1e-4).coverage, 0.04);
 }
 
+// Long path segments, whose nearest and farthest points from the curve lie
+// inside them, read against the exact distance to a circle (| |x - c| - R |,
+// brute force along each segment): the smallest and largest within the
+// resolution plus the sampled curve's own chord error.
+TEST(Offset, TheMeasurementReadsLongSegmentsWithinItsResolution) {
+  const double R = 20, res = 1e-3;
+  const auto part = circle(0, 0, R);
+  const std::vector<std::vector<Bezier>> curves{part};
+  const std::vector<std::vector<Vec3>> paths{
+      {{-30, 23}, {30, 23}},                                   // passes 3 from the circle at its middle
+      {{-30, 23}, {30, 23}, {30, -24}, {-31, -22}, {-30, 23}},  // a quadrilateral round it
+      {{-25, 0}, {25, 1}},                                      // crosses it twice
+      {{0, 0}, {5, 5}, {-3, 7}},                                // inside
+      {{-15, 0.5}, {15, 0.5}},                                  // farthest at its middle
+  };
+  for (size_t k = 0; k < paths.size(); ++k) {
+    const auto& path = paths[k];
+    double lo = HUGE_VAL, hi = 0;
+    for (size_t i = 1; i < path.size(); ++i)
+      for (int j = 0; j <= 200000; ++j) {
+        const Vec3 x = lerp(path[i - 1], path[i], j / 200000.0);
+        const double d = std::abs(std::hypot(x.x, x.y) - R);
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+      }
+    const OffsetReading m = measure_offset(curves, path, 3, 0, 0.1, res);
+    EXPECT_NEAR(m.min_distance, lo, 2 * res) << k;
+    EXPECT_NEAR(m.max_distance, hi, 2 * res) << k;
+    // A reading is a real point's distance to the sampled curve (chords within res of it).
+    EXPECT_LE(m.max_distance, hi + res) << k;
+  }
+}
+
 }  // namespace
 }  // namespace bezcam

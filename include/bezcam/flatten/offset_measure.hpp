@@ -4,8 +4,12 @@
 /// curve, and whether every point of the true offset is reached.
 ///
 /// The curve is sampled densely on its own (adaptive subdivision, samples
-/// on the curve, chords within `resolution`), the path is sampled at steps
-/// of `resolution`, and distances are taken through a grid of the samples.
+/// on the curve, chords within `resolution`); distances are taken to that
+/// polyline through an index of its segments. The smallest distance of the
+/// path is exact against it (each path segment's nearest approach); the
+/// largest is read at path points, a segment halved only while no single
+/// curve segment proves it holds nothing farther (the distance to one
+/// segment is convex along a line) and it is longer than 2 `resolution`.
 /// Readings are accurate to about `resolution`.
 #include <span>
 #include <vector>
