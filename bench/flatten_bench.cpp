@@ -213,6 +213,21 @@ int main(int argc, char** argv) {
     else corpus = argv[i], named = true;
   }
   const auto curves = load(corpus, quick, named);
+  if (only == "hash") {
+    unsigned long long h = 1469598103934665603ull;
+    for (int dec : {-1, 3, 4})
+      for (double tol : {0.1, 0.01, 0.001, 0.03}) {
+        if (dec == 3 && tol < 0.005) continue;
+        for (const auto& c : curves) {
+          const double bound = flatten_pieces(std::span<const Bezier>(&c.b, 1), {tol, dec}, [&](const FlatVertex& v) {
+            for (double d : {v.point.x, v.point.y, v.t}) { unsigned long long u; std::memcpy(&u, &d, 8); h = (h ^ u) * 1099511628211ull; }
+          });
+          unsigned long long u; std::memcpy(&u, &bound, 8); h = (h ^ u) * 1099511628211ull;
+        }
+      }
+    std::printf("hash %llx\n", h);
+    return 0;
+  }
   if (!only.empty()) {
     std::vector<Vec3> pts;
     pts.reserve(1 << 16);
