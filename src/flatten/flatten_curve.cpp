@@ -576,12 +576,16 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
       c.H = H;
       return false;
     };
+    // Two slots, the best chord so far and the one being tried, swapped by
+    // index rather than copied (copying the struct stalled the loop), and
+    // kept across the piece's searches (building them for each one cost as
+    // much as a chord's arithmetic).
+    Chord slot[2];
     while (t0 < 1) {
       double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
       bool found = false;
-      // Two slots, the best chord so far and the one being tried, swapped
-      // by index rather than copied (copying the struct stalled the loop).
-      Chord slot[2];
+      // The two slots (piece-wide, see below) start each search as new.
+      for (Chord& c : slot) c.dev = 0, c.budget = 0, c.H = -kInf, c.on = false;
       int cur = 0;
       if (steered) {
         S0 = P.point(t0);
