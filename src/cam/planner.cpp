@@ -201,6 +201,11 @@ class CurvePoints {
   std::vector<double> breaks_;
 };
 
+// How many pieces the planner cuts a curve block into (Builder::add_block).
+int curve_pieces(const MotionBlock& b) {
+  return std::clamp(static_cast<int>(4 * std::max<size_t>(b.ctrl.size(), 2)), 8, 256);
+}
+
 struct Builder {
   Builder(const Timeline& t, const MotionModel& m, bool summary_only)
       : tl(t), model(m), summary(summary_only), period(m.period_s), scale(mm_per_unit(t.units)) {}
@@ -212,6 +217,7 @@ struct Builder {
   double scale;  // mm per program unit
   std::vector<PlanSegment> segs;
   std::vector<double> junction;   // junction[i]: largest speed entering segs[i] (0: stop)
+  std::vector<PlanSegment> mine_;  // build(): the block's segments before they join segs
   MotionPlan plan;
 
   double path_tolerance(size_t block) const {
@@ -287,8 +293,8 @@ struct Builder {
     s.overall_accel = a;
   }
 
-  // Segments of one block, appended to segs; returns how many.
-  void add_block(int bi) {
+  // Segments of one block, appended to `out`.
+  void add_block(int bi, std::vector<PlanSegment>& out) {
     const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
     PlannedBlock pb;
     pb.line = b.line;
@@ -298,7 +304,7 @@ struct Builder {
     const bool curved_block = b.kind == BlockKind::nurbs || b.kind == BlockKind::bezier;
     pb.length = curved_block ? 0 : block_length(b);
     const bool rapid = b.kind == BlockKind::rapid;
-    const size_t first = segs.size();
+    const size_t first = out.size();
     if (b.kind == BlockKind::rapid || b.kind == BlockKind::linear) {
       const Vec3 u = unit(b.to - b.from);
       double v;
@@ -310,7 +316,7 @@ struct Builder {
       s.accel = along(u, lim.amax);
       if (!std::isfinite(s.accel)) s.accel = lim.amax.x;
       s.overall_accel = s.accel;
-      segs.push_back(std::move(s));
+      out.push_back(std::move(s));
       pb.programmed_feed = rapid ? v * 60 : b.feed;
     } else if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
       const Vec3 n = from_plane({0, 0, 1}, b.plane);  // the plane's axis
@@ -342,12 +348,12 @@ struct Builder {
       s.center = from_plane(c, b.plane);
       s.radius = R;
       s.angle = arc_sweep(b);
-      segs.push_back(std::move(s));
+      out.push_back(std::move(s));
       pb.programmed_feed = b.feed;
     } else {
       // A curve block on the true curve: pieces of the parameter range,
       // each with the speed its tightest curvature allows.
-      const int pieces = std::clamp(static_cast<int>(4 * std::max<size_t>(b.ctrl.size(), 2)), 8, 256);
+      const int pieces = curve_pieces(b);
       constexpr int kSub = 12;
       const Vec3 n{0, 0, 1};
       bool planar = true;
@@ -413,17 +419,17 @@ struct Builder {
           if (d > 0) s.center = a + (cross(nrm, ab) * dot(ac, ac) + cross(ac, nrm) * dot(ab, ab)) * (1 / d);
         }
         pb.length += len;
-        if (len > 0) segs.push_back(std::move(s));
+        if (len > 0) out.push_back(std::move(s));
       }
       pb.programmed_feed = b.feed;
     }
     // The block rate: the block takes at least 1 / block_rate.
     if (model.block_rate_hz > 0 && pb.length > 0) {
       const double cap = pb.length * model.block_rate_hz;
-      for (size_t i = first; i < segs.size(); ++i)
-        if (cap < segs[i].vmax) {
-          segs[i].vmax = cap;
-          segs[i].limit = SpeedLimit::block_rate;
+      for (size_t i = first; i < out.size(); ++i)
+        if (cap < out[i].vmax) {
+          out[i].vmax = cap;
+          out[i].limit = SpeedLimit::block_rate;
         }
     }
     plan.blocks.push_back(pb);
@@ -618,25 +624,26 @@ struct Builder {
   void build() {
     size_t pause = 0, kept = 0;  // kept: the first segment whose pieces are kept
     bool stop_before = true;  // the machine is at rest
-    // About a segment per block (a blend replaces the ends it joins): no
+    // At most a segment per line, rapid or arc and one per curve piece, and
+    // a blend after each: reserved once (address space only until used), no
     // reallocation holding the segments twice while a long program grows.
-    segs.reserve(tl.blocks.size() + 16);
-    junction.reserve(tl.blocks.size() + 16);
+    size_t most = 16;
+    for (const MotionBlock& b : tl.blocks)
+      most += 1 + (b.kind == BlockKind::nurbs || b.kind == BlockKind::bezier ? static_cast<size_t>(curve_pieces(b)) : 1);
+    segs.reserve(most);
+    junction.reserve(most + 1);
+    plan.blocks.reserve(tl.blocks.size());
     for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
       bool pause_here = false;
       while (pause < tl.pauses.size() && tl.pauses[pause].before_block <= bi) {
         pause_here = true;
         ++pause;
       }
-      std::vector<PlanSegment> mine;
-      {
-        // Build this block's segments aside, then join them.
-        std::vector<PlanSegment> saved;
-        saved.swap(segs);
-        add_block(static_cast<int>(bi));
-        mine.swap(segs);
-        segs.swap(saved);
-      }
+      // Build this block's segments aside (one vector for every block),
+      // then join them.
+      std::vector<PlanSegment>& mine = mine_;
+      mine.clear();
+      add_block(static_cast<int>(bi), mine);
       const MotionBlock& b = tl.blocks[bi];
       // A block that does not move (its end is where it starts) takes no
       // time and makes no corner: controllers drop it.
