@@ -206,6 +206,19 @@ int curve_pieces(const MotionBlock& b) {
   return std::clamp(static_cast<int>(4 * std::max<size_t>(b.ctrl.size(), 2)), 8, 256);
 }
 
+// What the speed passes and the totals read and write of a segment, packed:
+// they run over every segment of a long program, and a summary keeps only
+// this of a segment once no blend can reach it (PlanSegment holds its
+// geometry too, several times the size).
+struct Lean {
+  double length = 0, vmax = 0, accel = 0;  // accel: tangential, the kinks' share taken off
+  int block = -1;
+  SpeedLimit limit = SpeedLimit::programmed;
+  bool rapid = false;
+  double v0 = 0, v1 = 0, vpeak = 0, t_acc = 0, t_cruise = 0, t_dec = 0;
+  double time() const { return t_acc + t_cruise + t_dec; }
+};
+
 struct Builder {
   Builder(const Timeline& t, const MotionModel& m, bool summary_only)
       : tl(t), model(m), summary(summary_only), period(m.period_s), scale(mm_per_unit(t.units)) {}
@@ -218,6 +231,26 @@ struct Builder {
   std::vector<PlanSegment> segs;
   std::vector<double> junction;   // junction[i]: largest speed entering segs[i] (0: stop)
   std::vector<PlanSegment> mine_;  // build(): the block's segments before they join segs
+  // Every segment's speed figures, in order (speeds(), totals()). A summary
+  // moves a segment here once no blend can reach it and drops it from
+  // `segs`, which then holds only the last few; a full plan keeps `segs`
+  // whole and fills this from it.
+  std::vector<Lean> lean;
+  size_t most_segments = 0;  // at most this many segments (plan_timed())
+
+  // The segment's figures for the passes, the share its kinks take off its
+  // acceleration applied (to the segment too: a full plan keeps it).
+  void add_lean(PlanSegment& sg) {
+    sg.accel *= 1 - sg.kink_reduce;
+    Lean l;
+    l.length = sg.length;
+    l.vmax = sg.vmax;
+    l.accel = sg.accel;
+    l.block = sg.block;
+    l.limit = sg.limit;
+    l.rapid = sg.rapid;
+    lean.push_back(l);
+  }
   MotionPlan plan;
 
   double path_tolerance(size_t block) const {
@@ -622,15 +655,13 @@ struct Builder {
   }
 
   void build() {
-    size_t pause = 0, kept = 0;  // kept: the first segment whose pieces are kept
+    size_t pause = 0;
     bool stop_before = true;  // the machine is at rest
-    // At most a segment per line, rapid or arc and one per curve piece, and
-    // a blend after each: reserved once (address space only until used), no
-    // reallocation holding the segments twice while a long program grows.
-    size_t most = 16;
-    for (const MotionBlock& b : tl.blocks)
-      most += 1 + (b.kind == BlockKind::nurbs || b.kind == BlockKind::bezier ? static_cast<size_t>(curve_pieces(b)) : 1);
-    segs.reserve(most);
+    // Reserved once (address space only until used): no reallocation
+    // holding the segments twice while a long program grows.
+    const size_t most = most_segments + 16;
+    if (summary) lean.reserve(most);
+    else segs.reserve(most);
     junction.reserve(most + 1);
     plan.blocks.reserve(tl.blocks.size());
     for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
@@ -713,13 +744,17 @@ struct Builder {
       }
       stop_before = false;
       if (mine.empty() && pause_here) stop_before = true;
-      // A summary needs no segment's geometry once no blend can reach it
-      // (blends change the last two): free it as the program goes.
-      if (summary)
-        for (; kept < segs.size() && kept + 2 < segs.size(); ++kept) std::vector<PlanSegment::Piece>().swap(segs[kept].pieces);
+      // A summary needs no segment once no blend can reach it (corners
+      // change the last two): only its figures are kept, as the program goes.
+      if (summary && segs.size() > 2) {
+        for (size_t k = 0; k + 2 < segs.size(); ++k) add_lean(segs[k]);
+        segs.erase(segs.begin(), segs.end() - 2);
+      }
     }
     if (!segs.empty()) exact_stop_end(Stop::end);
     junction.push_back(0);  // the end
+    for (PlanSegment& sg : segs) add_lean(sg);
+    if (summary) segs.clear();
   }
 
   // Why the machine stops between two moves.
@@ -744,14 +779,13 @@ struct Builder {
   }
 
   void speeds() {
-    const size_t n = segs.size();
+    const size_t n = lean.size();
     const double j = lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0;
-    for (PlanSegment& sg : segs) sg.accel *= 1 - sg.kink_reduce;
     // junction has n + 1 entries: entering each segment, then the end.
     std::vector<double> v(junction);
     for (size_t i = 0; i < n; ++i) {
-      v[i] = std::min(v[i], segs[i].vmax);
-      if (i > 0) v[i] = std::min(v[i], segs[i - 1].vmax);
+      v[i] = std::min(v[i], lean[i].vmax);
+      if (i > 0) v[i] = std::min(v[i], lean[i - 1].vmax);
     }
     // Look-ahead: at each segment the controller must be able to stop
     // within the segments it sees (counted in blocks).
@@ -760,15 +794,15 @@ struct Builder {
     {
       // Only where the window is short compared with a stop.
       std::vector<double> prefix(n + 1, 0);
-      for (size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + segs[i].length;
+      for (size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + lean[i].length;
       std::vector<size_t> end_of(n);
       // Window end: the segment after `window` distinct blocks.
       size_t e = 0;
       int last_block = -2;
       std::vector<int> bcount(n + 1, 0);
       for (size_t i = 0; i < n; ++i) {
-        bcount[i + 1] = bcount[i] + (segs[i].block != last_block ? 1 : 0);
-        last_block = segs[i].block;
+        bcount[i + 1] = bcount[i] + (lean[i].block != last_block ? 1 : 0);
+        last_block = lean[i].block;
       }
       for (size_t i = 0; i < n; ++i) {
         if (e < i) e = i;
@@ -785,16 +819,16 @@ struct Builder {
         const size_t stop = end_of[i > 0 ? i - 1 : 0];
         if (stop >= n) continue;  // sees the program's end: the normal passes cover it
         for (; pushed < stop; ++pushed) {
-          while (!mins.empty() && segs[mins.back()].accel >= segs[pushed].accel) mins.pop_back();
+          while (!mins.empty() && lean[mins.back()].accel >= lean[pushed].accel) mins.pop_back();
           mins.push_back(pushed);
         }
         while (!mins.empty() && mins.front() < i) mins.pop_front();
-        const double a_min = mins.empty() ? segs[i].accel : segs[mins.front()].accel;
+        const double a_min = mins.empty() ? lean[i].accel : lean[mins.front()].accel;
         // A window long enough to stop from the top speed does not limit.
-        const double dist_needed = ramp_distance(0, segs[i].vmax, a_min, 0);
+        const double dist_needed = ramp_distance(0, lean[i].vmax, a_min, 0);
         if (prefix[stop] - prefix[i] >= dist_needed * 1.0001) continue;
         double w = 0;
-        for (size_t k = stop; k-- > i;) w = std::min(reachable(w, segs[k].length, segs[k].accel, 0, segs[k].vmax), v[k]);
+        for (size_t k = stop; k-- > i;) w = std::min(reachable(w, lean[k].length, lean[k].accel, 0, lean[k].vmax), v[k]);
         look[i] = w;
       }
     }
@@ -807,31 +841,41 @@ struct Builder {
     }
     // Backward then forward (speeds by the acceleration; the jerk's share
     // of a ramp is counted below, once per ramp).
-    for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], segs[i].length, segs[i].accel, 0, segs[i].vmax));
+    for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], lean[i].length, lean[i].accel, 0, lean[i].vmax));
     for (size_t i = 0; i < n; ++i)
-      v[i + 1] = std::min(v[i + 1], reachable(v[i], segs[i].length, segs[i].accel, 0, segs[i].vmax));
+      v[i + 1] = std::min(v[i + 1], reachable(v[i], lean[i].length, lean[i].accel, 0, lean[i].vmax));
     // Trapezoids, then (with a jerk limit) S-curves: a ramp's build-up and
     // wind-down where the acceleration starts and ends, not at every joint.
-    for (size_t i = 0; i < n; ++i) profile_one(segs[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
+    for (size_t i = 0; i < n; ++i) profile_one(lean[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
     if (j > 0) {
       std::vector<char> acc_in(n, 1), acc_out(n, 1), dec_in(n, 1), dec_out(n, 1);
-      auto ends_acc = [&](const PlanSegment& q) { return q.t_acc > 0 && q.t_cruise <= 0 && q.t_dec <= 0; };
-      auto starts_acc = [&](const PlanSegment& q) { return q.t_acc > 0; };
-      auto ends_dec = [&](const PlanSegment& q) { return q.t_dec > 0; };
-      auto starts_dec = [&](const PlanSegment& q) { return q.t_dec > 0 && q.t_acc <= 0 && q.t_cruise <= 0; };
+      auto ends_acc = [&](const Lean& q) { return q.t_acc > 0 && q.t_cruise <= 0 && q.t_dec <= 0; };
+      auto starts_acc = [&](const Lean& q) { return q.t_acc > 0; };
+      auto ends_dec = [&](const Lean& q) { return q.t_dec > 0; };
+      auto starts_dec = [&](const Lean& q) { return q.t_dec > 0 && q.t_acc <= 0 && q.t_cruise <= 0; };
       for (size_t i = 0; i + 1 < n; ++i) {
-        if (ends_acc(segs[i]) && starts_acc(segs[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
-        if (ends_dec(segs[i]) && starts_dec(segs[i + 1])) dec_out[i] = dec_in[i + 1] = 0;
+        if (ends_acc(lean[i]) && starts_acc(lean[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
+        if (ends_dec(lean[i]) && starts_dec(lean[i + 1])) dec_out[i] = dec_in[i + 1] = 0;
       }
       for (size_t i = 0; i < n; ++i) {
         std::array<char, 4> f{acc_in[i], acc_out[i], dec_in[i], dec_out[i]};
-        profile_one(segs[i], v[i], v[i + 1], j, f);
+        profile_one(lean[i], v[i], v[i + 1], j, f);
       }
     }
+    if (!summary)
+      for (size_t i = 0; i < n; ++i) {
+        PlanSegment& sg = segs[i];
+        sg.v0 = lean[i].v0;
+        sg.v1 = lean[i].v1;
+        sg.vpeak = lean[i].vpeak;
+        sg.t_acc = lean[i].t_acc;
+        sg.t_cruise = lean[i].t_cruise;
+        sg.t_dec = lean[i].t_dec;
+      }
   }
 
   // One segment from v0 to v1: the highest peak that fits its length.
-  static void profile_one(PlanSegment& s, double v0, double v1, double j, std::array<char, 4> f) {
+  static void profile_one(Lean& s, double v0, double v1, double j, std::array<char, 4> f) {
     s.v0 = v0;
     s.v1 = v1;
     const double a = s.accel;
@@ -863,25 +907,47 @@ struct Builder {
     double t = 0;
     size_t pause = 0;
     // Pauses sit before the first segment of their block.
-    std::vector<size_t> first_seg(tl.blocks.size() + 1, segs.size());
-    for (size_t i = segs.size(); i-- > 0;) first_seg[static_cast<size_t>(segs[i].block)] = i;
+    std::vector<size_t> first_seg(tl.blocks.size() + 1, lean.size());
+    for (size_t i = lean.size(); i-- > 0;) first_seg[static_cast<size_t>(lean[i].block)] = i;
     for (size_t b = tl.blocks.size(); b-- > 0;) first_seg[b] = std::min(first_seg[b], first_seg[b + 1]);
     plan.pause_start_s.assign(tl.pauses.size(), 0);
-    for (size_t i = 0; i <= segs.size(); ++i) {
+    // One pass over the segments, in order: the times, per block what held
+    // it below its programmed feed (the limit of its fastest segment), and
+    // the mean feed ratio over the cutting moves: the length cut over the
+    // length the programmed feeds would have cut in the same time (so each
+    // stretch of path counts by its length, blends with their block). A
+    // cutting segment's block is a cutting block, whose programmed feed
+    // add_block() took from the block as it is.
+    std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
+    std::vector<double> top(plan.blocks.size(), 0);
+    double cut = 0, at_feed = 0;
+    for (size_t i = 0; i <= lean.size(); ++i) {
       while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, tl.blocks.size())] <= i) {
         plan.pause_start_s[pause] = t;
         t += tl.pauses[pause].seconds;
         plan.pause_time_s += tl.pauses[pause].seconds;
         ++pause;
       }
-      if (i == segs.size()) break;
-      PlanSegment& s = segs[i];
-      s.t_start = t;
+      if (i == lean.size()) break;
+      const Lean& s = lean[i];
+      if (!summary) segs[i].t_start = t;
       t += s.time();
       (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += s.time();
-      PlannedBlock& pb = plan.blocks[static_cast<size_t>(s.block)];
+      const size_t b = static_cast<size_t>(s.block);
+      PlannedBlock& pb = plan.blocks[b];
       pb.time_s += s.time();
       pb.peak_feed = std::max(pb.peak_feed, s.vpeak * 60);
+      SpeedLimit l = s.limit;
+      if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
+      if (s.vmax >= top[b]) {
+        top[b] = s.vmax;
+        why[b] = l;
+      }
+      if (s.rapid) continue;
+      const double want = pb.programmed_feed / 60;
+      if (!(want > 0)) continue;
+      cut += s.length;
+      at_feed += s.time() * want;
     }
     while (pause < tl.pauses.size()) {
       plan.pause_start_s[pause] = t;
@@ -890,26 +956,17 @@ struct Builder {
       ++pause;
     }
     plan.cycle_time_s = t;
-    // Per block: what held it below its programmed feed.
-    std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
-    std::vector<double> top(plan.blocks.size(), 0);
-    for (size_t i = 0; i < segs.size(); ++i) {
-      const size_t b = static_cast<size_t>(segs[i].block);
-      SpeedLimit l = segs[i].limit;
-      if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
-      if (segs[i].vmax >= top[b]) {
-        top[b] = segs[i].vmax;
-        why[b] = l;
-      }
-    }
+    plan.mean_feed_ratio = at_feed > 0 ? cut / at_feed : 1;
+    // Per block (add_block() gave a cutting block its programmed feed, a
+    // rapid the axes' rate along it).
     for (size_t b = 0; b < plan.blocks.size(); ++b) {
       PlannedBlock& pb = plan.blocks[b];
-      const MotionBlock& mb = tl.blocks[b];
+      const bool rapid = pb.kind == BlockKind::rapid;
       if (pb.length <= 1e-9) {
-        pb.programmed_feed = mb.kind == BlockKind::rapid ? 0 : mb.feed;
+        if (rapid) pb.programmed_feed = 0;
         continue;  // no move: no time, no limit
       }
-      const double want = mb.kind == BlockKind::rapid ? pb.programmed_feed : mb.feed;
+      const double want = pb.programmed_feed;
       if (want > 0) plan.programmed_feed_time_s += pb.length / want * 60;
       if (pb.clamped) ++plan.clamped_blocks;
       if (pb.peak_feed < want * (1 - 1e-6)) {
@@ -919,18 +976,6 @@ struct Builder {
       pb.starved = pb.peak_feed < want * 0.99 && is_starvation(pb.limit);
       if (pb.starved) ++plan.starved_blocks;
     }
-    // Mean feed ratio over the cutting moves: the length cut over the
-    // length the programmed feeds would have cut in the same time (so each
-    // stretch of path counts by its length, blends with their block).
-    double cut = 0, at_feed = 0;
-    for (const PlanSegment& sg : segs) {
-      if (sg.rapid) continue;
-      const double want = tl.blocks[static_cast<size_t>(sg.block)].feed / 60;
-      if (!(want > 0)) continue;
-      cut += sg.length;
-      at_feed += sg.time() * want;
-    }
-    plan.mean_feed_ratio = at_feed > 0 ? cut / at_feed : 1;
   }
 };
 
@@ -1007,8 +1052,11 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
                       PlanDetail detail) {
   if (!(model.period_s > 0)) throw std::invalid_argument("motion model: period_s must be > 0");
   const Timeline& tl = timed;
-  // Axes the program had not set yet start where the machine stands.
+  // Axes the program had not set yet start where the machine stands. And
+  // in the same pass: at most a segment per line, rapid or arc and one per
+  // curve piece, and a blend after each.
   Vec3 pos = tl.start;
+  size_t most = 0;
   for (MotionBlock& mb : timed.blocks) {
     if (mb.from_known != 7u) {
       for (int k = 0; k < 3; ++k)
@@ -1016,6 +1064,7 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
       if (!mb.ctrl.empty()) mb.ctrl.front() = mb.from;
     }
     pos = mb.to;
+    most += 1 + (mb.kind == BlockKind::nurbs || mb.kind == BlockKind::bezier ? static_cast<size_t>(curve_pieces(mb)) : 1);
   }
   // Tool changes and spindle starts take the machine's time.
   for (PlanPause& p : timed.pauses) {
@@ -1024,6 +1073,7 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
   }
   const bool summary = detail == PlanDetail::summary;
   Builder b(timed, model, summary);
+  b.most_segments = most;
   for (int i = 0; i < 3; ++i) {
     b.lim.vmax[i] = model.max_velocity_mm_min[static_cast<size_t>(i)] / 60 / b.scale;
     b.lim.amax[i] = model.max_acceleration_mm_s2[static_cast<size_t>(i)] / b.scale;
