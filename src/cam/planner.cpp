@@ -215,7 +215,7 @@ struct Lean {
   int block = -1;
   SpeedLimit limit = SpeedLimit::programmed;
   bool rapid = false;
-  double v0 = 0, v1 = 0, vpeak = 0, t_acc = 0, t_cruise = 0, t_dec = 0;
+  double vpeak = 0, t_acc = 0, t_cruise = 0, t_dec = 0;  // entry and exit speeds: speeds()'s v
   double time() const { return t_acc + t_cruise + t_dec; }
 };
 
@@ -865,8 +865,8 @@ struct Builder {
     if (!summary)
       for (size_t i = 0; i < n; ++i) {
         PlanSegment& sg = segs[i];
-        sg.v0 = lean[i].v0;
-        sg.v1 = lean[i].v1;
+        sg.v0 = v[i];
+        sg.v1 = v[i + 1];
         sg.vpeak = lean[i].vpeak;
         sg.t_acc = lean[i].t_acc;
         sg.t_cruise = lean[i].t_cruise;
@@ -876,17 +876,15 @@ struct Builder {
 
   // One segment from v0 to v1: the highest peak that fits its length.
   static void profile_one(Lean& s, double v0, double v1, double j, std::array<char, 4> f) {
-    s.v0 = v0;
-    s.v1 = v1;
     const double a = s.accel;
-    auto up = [&](double vp) { return ramp_time(s.v0, vp, a, j, f[0], f[1]); };
-    auto down = [&](double vp) { return ramp_time(vp, s.v1, a, j, f[2], f[3]); };
-    auto used = [&](double vp) { return 0.5 * (s.v0 + vp) * up(vp) + 0.5 * (vp + s.v1) * down(vp); };
-    double lo = std::max(s.v0, s.v1), hi = s.vmax;
+    auto up = [&](double vp) { return ramp_time(v0, vp, a, j, f[0], f[1]); };
+    auto down = [&](double vp) { return ramp_time(vp, v1, a, j, f[2], f[3]); };
+    auto used = [&](double vp) { return 0.5 * (v0 + vp) * up(vp) + 0.5 * (vp + v1) * down(vp); };
+    double lo = std::max(v0, v1), hi = s.vmax;
     double vp = hi;
     if (used(hi) > s.length * (1 + 1e-12)) {
       if (j <= 0) {
-        vp = std::clamp(std::sqrt(std::max(0.0, (2 * a * s.length + s.v0 * s.v0 + s.v1 * s.v1) / 2)), lo, hi);
+        vp = std::clamp(std::sqrt(std::max(0.0, (2 * a * s.length + v0 * v0 + v1 * v1) / 2)), lo, hi);
       } else {
         for (int it = 0; it < 60; ++it) {
           const double mid = 0.5 * (lo + hi);
