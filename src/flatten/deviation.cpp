@@ -88,53 +88,115 @@ class ChainIndex {
   size_t run_ = 8;
 };
 
-// A piece of the curve: evaluation (power form, by Horner, for polynomial
-// pieces up to degree 3; the kernel's de Casteljau otherwise) and the
-// bound every measurement below rests on, sag(): the arc over [t0, t1]
-// and its chord lie within sag() of each other (each point of either
-// within that distance of the other).
+// Homogeneous point (w P, w) of a piece's general form.
+struct H {
+  Vec3 p;
+  double w;
+};
+inline H lerp_h(const H& a, const H& b, double t) {
+  const double s = 1 - t;
+  return {a.p * s + b.p * t, a.w * s + b.w * t};
+}
+
+// Work space for a de Casteljau cascade of m homogeneous points: on the
+// stack below kSmall points, on the heap only for the rare higher degrees.
+constexpr int kSmall = 16;
+class HWork {
+ public:
+  explicit HWork(int m) : p_(m > kSmall ? (heap_.resize(static_cast<size_t>(m)), heap_.data()) : stack_) {}
+  H* get() { return p_; }
+  H& operator[](int i) { return p_[i]; }
+
+ private:
+  H stack_[kSmall];
+  std::vector<H> heap_;
+  H* p_;
+};
+
+// A piece of the curve: evaluation and the bound every measurement below
+// rests on, sag(): the arc over [t0, t1] and its chord lie within sag() of
+// each other (each point of either within that distance of the other).
+// Polynomial pieces up to degree 3 have a power form (Horner); the others
+// (rational, or degree > 3) a general form: their homogeneous control
+// points, evaluated and split by de Casteljau's cascade on the stack (no
+// allocation below degree kSmall).
 struct Piece {
   const Bezier* b = nullptr;
   int n = -1;  // degree of the power form; -1: none
   Vec3 c[4];
+  int deg = 0;           // the general form's degree
+  const H* hp = nullptr;  // its deg + 1 homogeneous control points (n < 0)
+  double sag01 = -1;     // sag() over the whole piece (-1: not known yet)
+  Vec3 e0, e1;           // its ends
 
-  explicit Piece(const Bezier& bz) : b(&bz) {
-    if (bz.rational() || bz.degree() > 3) return;
-    n = bz.degree();
-    const auto& P = bz.points;
-    c[0] = P[0];
-    if (n == 1) c[1] = P[1] - P[0];
-    if (n == 2) c[1] = (P[1] - P[0]) * 2.0, c[2] = P[2] - P[1] * 2.0 + P[0];
-    if (n == 3) {
-      c[1] = (P[1] - P[0]) * 3.0;
-      c[2] = (P[2] - P[1] * 2.0 + P[0]) * 3.0;
-      c[3] = P[3] - P[2] * 3.0 + P[1] * 3.0 - P[0];
+  // `hom`: room for the general form's points (n < 0), filled here.
+  Piece(const Bezier& bz, H* hom) : b(&bz), deg(bz.degree()) {
+    if (bz.rational() || bz.degree() > 3) {
+      for (int i = 0; i <= deg; ++i) {
+        const double w = bz.weight(i);
+        hom[i] = {bz.points[i] * w, w};
+      }
+      hp = hom;
+    } else {
+      n = bz.degree();
+      const auto& P = bz.points;
+      c[0] = P[0];
+      if (n == 1) c[1] = P[1] - P[0];
+      if (n == 2) c[1] = (P[1] - P[0]) * 2.0, c[2] = P[2] - P[1] * 2.0 + P[0];
+      if (n == 3) {
+        c[1] = (P[1] - P[0]) * 3.0;
+        c[2] = (P[2] - P[1] * 2.0 + P[0]) * 3.0;
+        c[3] = P[3] - P[2] * 3.0 + P[1] * 3.0 - P[0];
+      }
     }
+    e0 = at(0), e1 = at(1);
+    sag01 = sag(0, 1, e0, e1);
   }
+  // Room a piece's general form takes.
+  static size_t room(const Bezier& bz) { return bz.rational() || bz.degree() > 3 ? bz.points.size() : 0; }
+
   Vec3 at(double t) const {
-    if (n < 0) return evaluate(*b, t);
+    if (n < 0) {
+      HWork q(deg + 1);
+      for (int i = 0; i <= deg; ++i) q[i] = hp[i];
+      for (int r = 1; r <= deg; ++r)
+        for (int i = 0; i <= deg - r; ++i) q[i] = lerp_h(q[i], q[i + 1], t);
+      return q[0].p / q[0].w;
+    }
     Vec3 r = c[n];
     for (int j = n; j-- > 0;) r = r * t + c[j];
     return r;
   }
   // The point and its first two derivatives at t.
   void derivatives(double t, Vec3& p, Vec3& d1, Vec3& d2) const {
-    if (n < 0) {
-      p = evaluate(*b, t), d1 = derivative(*b, t), d2 = second_derivative(*b, t);
-      return;
-    }
+    if (n < 0) return general_derivatives(t, p, d1, d2);
     p = at(t);
     d1 = n >= 1 ? c[1] : Vec3{};
     d2 = Vec3{};
     if (n >= 2) d1 += c[2] * (2 * t), d2 = c[2] * 2.0;
     if (n >= 3) d1 += c[3] * (3 * t * t), d2 += c[3] * (6 * t);
   }
-  // Polynomial of degree n <= 3: C(t) - the chord's point at the same
-  // fraction is at most h^2 / 8 max |C''| over the interval (h = t1 - t0),
-  // and |C''| (linear in t) is largest at an end. Otherwise the control
-  // polygon of the sub-curve: the arc lies in its hull, so within the
-  // polygon's largest distance from the chord; and, joining the chord's
-  // ends, it passes within that distance of every chord point.
+  // The cascade down to its last three points gives the homogeneous
+  // curve A (with weight) and its derivatives: A' = deg (S1 - S0) from
+  // the last two, A'' = deg (deg - 1) (R2 - 2 R1 + R0) from the three;
+  // then C = A / w, C' = (A' - w' C) / w, C'' = (A'' - 2 w' C' - w'' C) / w.
+  void general_derivatives(double t, Vec3& p, Vec3& d1, Vec3& d2) const {
+    HWork q(deg + 1);
+    for (int i = 0; i <= deg; ++i) q[i] = hp[i];
+    H a2{{}, 0};
+    for (int r = 1; r <= deg - 2; ++r)
+      for (int i = 0; i <= deg - r; ++i) q[i] = lerp_h(q[i], q[i + 1], t);
+    if (deg >= 2) {
+      const double k = double(deg) * double(deg - 1);
+      a2 = {(q[2].p - q[1].p * 2.0 + q[0].p) * k, (q[2].w - 2 * q[1].w + q[0].w) * k};
+      q[0] = lerp_h(q[0], q[1], t), q[1] = lerp_h(q[1], q[2], t);
+    }
+    const H a1{(q[1].p - q[0].p) * double(deg), (q[1].w - q[0].w) * double(deg)};
+    const H a0 = lerp_h(q[0], q[1], t);
+    p = a0.p / a0.w;
+    d1 = (a1.p - p * a1.w) / a0.w;
+    d2 = (a2.p - d1 * (2 * a1.w) - p * a2.w) / a0.w;
+  }
   // |C''(t)| with a power form (-1 without: sag() does not use it).
   double acc(double t) const {
     if (n < 0) return -1;
@@ -147,6 +209,10 @@ struct Piece {
     const double h = t1 - t0;
     return h * h * 0.125 * std::max(acc0, acc1);
   }
+  // Polynomial of degree n <= 3: C(t) - the chord's point at the same
+  // fraction is at most h^2 / 8 max |C''| over the interval (h = t1 - t0),
+  // and |C''| (linear in t) is largest at an end. Otherwise the sub-curve
+  // (general_sag()).
   double sag(double t0, double t1, const Vec3& p0, const Vec3& p1) const {
     const double h = t1 - t0;
     if (n >= 0) {
@@ -155,9 +221,44 @@ struct Piece {
       if (n == 2) return h * h * 0.125 * norm(a2);
       return h * h * 0.125 * std::max(norm(a2 + c[3] * (6 * t0)), norm(a2 + c[3] * (6 * t1)));
     }
-    const Bezier sub = subcurve(*b, t0, t1);
+    if (t0 == 0 && t1 == 1 && sag01 >= 0 && p0 == e0 && p1 == e1) return sag01;
+    return general_sag(t0, t1, p0, p1);
+  }
+  // The sub-curve over [t0, t1] (the cascade's right part at t0, then the
+  // left part of that at the rescaled t1, as subcurve() does), its control
+  // points' largest distance from the chord: with weights > 0 the arc lies
+  // in their hull, so within that distance of the chord; and, joining the
+  // chord's ends, it passes within that distance of every chord point. A
+  // quadratic's arc is nearer: with weights normalised to 1, w, 1, its
+  // distance to the chord's line is 2 u w d / (1 + 2 u (w - 1)) at
+  // u = t (1 - t), d the middle point's, increasing in u, so at most
+  // w d / (1 + w); when the middle point projects inside the chord the
+  // whole hull does, and that is also the distance to the chord.
+  double general_sag(double t0, double t1, const Vec3& p0, const Vec3& p1) const {
+    HWork q(deg + 1);
+    for (int i = 0; i <= deg; ++i) q[i] = hp[i];
+    // Forward in place, q[k] is last written at row deg - k: its last
+    // point, the right part's k-th. Backward in place, q[k] is last
+    // written at row k: its first point, the left part's k-th.
+    if (t0 > 0)
+      for (int r = 1; r <= deg; ++r)
+        for (int i = 0; i <= deg - r; ++i) q[i] = lerp_h(q[i], q[i + 1], t0);
+    if (t1 < 1) {
+      const double u = t0 > 0 ? (t1 - t0) / (1 - t0) : t1;
+      for (int r = 1; r <= deg; ++r)
+        for (int i = deg; i >= r; --i) q[i] = lerp_h(q[i - 1], q[i], u);
+    }
     double s = 0;
-    for (const Vec3& q : sub.points) s = std::max(s, dist_to_segment(q, p0, p1));
+    for (int i = 0; i <= deg; ++i) s = std::max(s, dist_to_segment(q[i].p / q[i].w, p0, p1));
+    if (deg == 2) {
+      const Vec3 e = p1 - p0, m = q[1].p / q[1].w - p0;
+      const double len2 = dot(e, e), l = len2 > 0 ? dot(m, e) / len2 : -1;
+      if (l >= 0 && l <= 1) {
+        const double w = q[1].w / std::sqrt(q[0].w * q[2].w), d = norm(m - e * l);
+        const double ends = std::max(dist_to_segment(q[0].p / q[0].w, p0, p1), dist_to_segment(q[2].p / q[2].w, p0, p1));
+        s = std::min(s, std::max(w * d / (1 + w), ends));
+      }
+    }
     return s;
   }
 };
@@ -262,6 +363,7 @@ struct Arc {
 // measurement once the first has grown them.
 struct Scratch {
   std::vector<Piece> pieces;
+  std::vector<H> hom;            // the pieces' general forms
   std::vector<CurvePt> cpts;
   std::vector<PathPt> ppts;
   std::vector<size_t> first;     // per piece: its first coarse point
@@ -275,7 +377,7 @@ struct Scratch {
     auto fit = [](auto& v) {
       if (v.capacity() > kKeep) std::decay_t<decltype(v)>().swap(v);
     };
-    fit(pieces), fit(cpts), fit(ppts), fit(first), fit(workc), fit(workp), fit(depth), fit(arcs);
+    fit(pieces), fit(hom), fit(cpts), fit(ppts), fit(first), fit(workc), fit(workp), fit(depth), fit(arcs);
   }
 };
 
@@ -283,8 +385,12 @@ class Measure {
  public:
   Measure(Scratch& s, std::span<const Bezier> pieces, std::span<const Vec3> poly, double tolerance)
       : s_(s), poly_(poly), large_(tolerance) {
+    size_t room = 0;
+    for (const Bezier& b : pieces) room += Piece::room(b);
+    s_.hom.resize(room);
     s_.pieces.clear();
-    for (const Bezier& b : pieces) s_.pieces.emplace_back(b);
+    room = 0;
+    for (const Bezier& b : pieces) s_.pieces.emplace_back(b, s_.hom.data() + room), room += Piece::room(b);
     gap_ = std::max({tolerance * kMeasureGap, control_magnitude(pieces) * 1e-14, 1e-300});
     planar_ = std::all_of(poly.begin(), poly.end(), [](const Vec3& p) { return p.z == 0; }) &&
               std::all_of(pieces.begin(), pieces.end(), [](const Bezier& b) {
@@ -305,11 +411,7 @@ class Measure {
   }
   void read_curve(CurvePt& q, size_t hint) {
     q.k = hint;
-    if (exact_all_) {
-      q.d = exact_to_path(q.p, q.k);
-      return;
-    }
-    q.d = descend(q.p, poly_, q.k, large_, [&](const Vec3& x, size_t& k) { return exact_to_path(x, k); });
+    q.d = descend(q.p, poly_, q.k, exact_above_, [&](const Vec3& x, size_t& k) { return exact_to_path(x, k); });
   }
   // Upper bound of the distance to the polyline over the arc between a and
   // b (of piece i): every arc point is within the sag of a chord point y,
@@ -374,7 +476,7 @@ class Measure {
   double exact_to_curve(const Vec3& x, size_t& piece, double& t);
   void read_path(PathPt& q, size_t i, double t) {
     foot(q, i, t);
-    if (q.d > large_ || exact_all_) {
+    if (q.d > exact_above_) {
       q.d = exact_to_curve(q.x, q.i, q.t);
       q.f = P()[q.i].at(q.t);
     }
@@ -385,31 +487,35 @@ class Measure {
   Scratch& s_;
   std::span<const Vec3> poly_;
   double large_, gap_;
+  double exact_above_ = large_;  // readings above it are taken exactly
+  double floor_ = 0;             // a true distance known beforehand
  public:
   // Whether an arc of bound ub is done, lb being the largest reading.
   bool done(double ub, double lb) const { return ub <= lb + gap_; }
   bool indexed_ = false;
   bool planar_ = false;  // curve and polyline in the plane z = 0
-  bool exact_all_ = false;  // every reading by the exact searches
   CurvePt best_c_{};         // the largest reading of each direction
   PathPt best_p_{};
   double curve_to_path_once();
   double path_to_curve_once();
 };
 
-// The largest reading is read again exactly (every segment): when it was
-// high (the descent stopped at a part of the polyline that is not the
-// nearest, where it comes back near itself), every reading is taken
-// exactly and the search run again.
+// The largest reading is read again exactly (every segment) unless it is
+// exact already (above the tolerance): when that is lower (the descent
+// stopped at a part of the polyline that is not the nearest, where it
+// comes back near itself), the search runs again with that true distance
+// as its floor and every reading above it taken exactly: its largest
+// reading is then a true distance.
 double Measure::curve_to_path() {
   const double d = curve_to_path_once();
-  if (exact_all_ || !(best_c_.d > gap_)) return d;
+  if (!(best_c_.d > gap_) || best_c_.d > exact_above_) return d;
   size_t k = best_c_.k;
-  if (exact_to_path(best_c_.p, k) >= best_c_.d - gap_) return d;
-  exact_all_ = true;
-  const double e = curve_to_path_once();
-  exact_all_ = false;
-  return e;
+  const double e = exact_to_path(best_c_.p, k);
+  if (e >= best_c_.d - gap_) return d;
+  exact_above_ = floor_ = e;
+  const double r = curve_to_path_once();
+  exact_above_ = large_, floor_ = 0;
+  return r;
 }
 
 double Measure::curve_to_path_once() {
@@ -445,7 +551,7 @@ double Measure::curve_to_path_once() {
   best_c_ = pts.front();
   for (const CurvePt& q : pts)
     if (q.d > best_c_.d) best_c_ = q;
-  lb = best_c_.d;
+  lb = std::max(best_c_.d, floor_);
   // Branch and bound: an arc whose bound is within eps of the largest
   // reading is done; others are halved.
   double open = 0;  // bounds of arcs left at the depth limit
@@ -489,11 +595,27 @@ double Measure::curve_to_path_once() {
 
 // A foot of x on the curve from (i, t): Newton steps on (C - x) . C' = 0,
 // passing to the next or previous piece at an end when the distance still
-// falls that way. Keeps the nearest curve point met: whatever the steps do,
-// the reading is the distance to a point of the curve.
+// falls that way, along this piece or along the neighbour (at a corner the
+// distance may rise along this piece's end and fall along the next one's
+// start). Never back to the piece just left. Keeps the nearest curve point
+// met: whatever the steps do, the reading is the distance to a point of
+// the curve.
 void Measure::foot(PathPt& q, size_t i, double t) {
   Vec3 p, d1, d2;
   double best = HUGE_VAL;
+  size_t from = std::numeric_limits<size_t>::max();  // the piece just left
+  // At an end shared with a neighbour where the distance falls along it:
+  // over to it.
+  auto cross = [&]() {
+    if (t == 1 && i + 1 < P().size() && i + 1 != from) {
+      P()[i + 1].derivatives(0, p, d1, d2);
+      if (dot(p - q.x, d1) < 0) return from = i, ++i, t = 0, true;
+    } else if (t == 0 && i > 0 && i - 1 != from) {
+      P()[i - 1].derivatives(1, p, d1, d2);
+      if (dot(p - q.x, d1) > 0) return from = i, --i, t = 1, true;
+    }
+    return false;
+  };
   for (int it = 0; it < 16; ++it) {
     const Piece& pc = P()[i];
     pc.derivatives(t, p, d1, d2);
@@ -503,35 +625,45 @@ void Measure::foot(PathPt& q, size_t i, double t) {
     const double g = dot(r, d1), v2 = dot(d1, d1);
     double gp = v2 + dot(r, d2);
     if (!(gp > 0)) gp = v2;
-    if (!(gp > 0) || g == 0) break;
+    if (!(gp > 0) || g == 0) {
+      if (cross()) continue;
+      break;
+    }
     // The step would bring the distance down by about g^2 / (2 gp d): done
     // when that is below 1e-4 of the resolution; when below a tenth of it,
     // the step is the last (the step after would gain about its square).
     // (Compared squared: gain^2 = g^4 / (4 gp^2 r2).)
     const double g2 = g * g, lhs = g2 * g2, rhs = 4 * gp * gp * r2;
-    if (!(lhs >= 0.01 * gap_ * gap_ * rhs)) break;
+    if (!(lhs >= 0.01 * gap_ * gap_ * rhs)) {
+      if (cross()) continue;
+      break;
+    }
     const bool last = lhs < 1e4 * gap_ * gap_ * rhs;
     double tn = t - g / gp;
     if (tn > 1) {
-      if (t == 1 && i + 1 < P().size()) {
-        ++i, t = 0;
+      if (t == 1 && i + 1 < P().size() && i + 1 != from) {
+        from = i, ++i, t = 0;
         continue;
       }
       tn = 1;
     } else if (tn < 0) {
-      if (t == 0 && i > 0) {
-        --i, t = 1;
+      if (t == 0 && i > 0 && i - 1 != from) {
+        from = i, --i, t = 1;
         continue;
       }
       tn = 0;
     }
-    if (tn == t) break;
+    if (tn == t) {
+      if (cross()) continue;
+      break;
+    }
     const bool small = last || std::abs(tn - t) < 1e-12;
     t = tn;
     if (small) {
       const Vec3 pn = pc.at(t);
       const double rn = dot(pn - q.x, pn - q.x);
       if (rn < best) best = rn, q.i = i, q.t = t, q.f = pn;
+      if (cross()) continue;
       break;
     }
   }
@@ -669,19 +801,20 @@ double Measure::bound(const PathPt& a, const PathPt& b, double* split) const {
   return ub;
 }
 
-// The largest reading is read again exactly (over every piece): when it
-// was high (a foot that is not the nearest point), every reading is taken
-// exactly and the search run again.
+// The largest reading is read again exactly (over every piece) unless it
+// is exact already: when that is lower (a foot that is not the nearest
+// point), the search runs again as curve_to_path()'s does.
 double Measure::path_to_curve() {
   const double d = path_to_curve_once();
-  if (exact_all_ || !(best_p_.d > gap_)) return d;
+  if (!(best_p_.d > gap_) || best_p_.d > exact_above_) return d;
   size_t i = best_p_.i;
   double t = best_p_.t;
-  if (exact_to_curve(best_p_.x, i, t) >= best_p_.d - gap_) return d;
-  exact_all_ = true;
-  const double e = path_to_curve_once();
-  exact_all_ = false;
-  return e;
+  const double e = exact_to_curve(best_p_.x, i, t);
+  if (e >= best_p_.d - gap_) return d;
+  exact_above_ = floor_ = e;
+  const double r = path_to_curve_once();
+  exact_above_ = large_, floor_ = 0;
+  return r;
 }
 
 double Measure::path_to_curve_once() {
@@ -716,7 +849,7 @@ double Measure::path_to_curve_once() {
   best_p_ = pts.front();
   for (const PathPt& q : pts)
     if (q.d > best_p_.d) best_p_ = q;
-  lb = best_p_.d;
+  lb = std::max(best_p_.d, floor_);
   double open = 0;
   auto& work = s_.workp;
   auto& depth = s_.depth;

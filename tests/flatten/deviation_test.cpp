@@ -171,3 +171,93 @@ TEST(Deviation, ALoopSkippedByThePolylineReadsItsSize) {
   EXPECT_NEAR(d.curve_to_path, ref.curve_to_path, 1e-8);
   EXPECT_NEAR(d.path_to_curve, ref.path_to_curve, 1e-8);
 }
+
+namespace {
+
+// A random piece of degree n across a 10 mm square: control points from
+// left to right (within 1 mm), heights at random; weights (when rational)
+// between 0.3 and 3. (Not folding back onto itself: the reference's nearest
+// points, refined from 500 samples a piece, would read high there.)
+Bezier random_piece(std::mt19937_64& rng, int n, bool rational) {
+  std::uniform_real_distribution<double> xy(0, 10), dx(-1, 1), w(0.3, 3);
+  std::vector<Vec3> p;
+  std::vector<double> ws;
+  for (int i = 0; i <= n; ++i) p.push_back({10.0 * i / n + dx(rng), xy(rng)}), ws.push_back(w(rng));
+  return rational ? Bezier::make(p, ws) : Bezier::make(p);
+}
+
+// Flattened, vertices moved at random, every other vertex left out: each
+// against the reference.
+void expect_agrees_three_ways(const std::vector<Bezier>& path, double tol, std::mt19937_64& rng, const std::string& what) {
+  std::uniform_real_distribution<double> off(-2, 2);
+  const std::vector<Vec3> poly = flatten(path, {tol, -1}).points;
+  expect_agrees(path, poly, tol, (what + ", flattened").c_str());
+  std::vector<Vec3> moved = poly;
+  for (Vec3& v : moved) v += Vec3{off(rng) * tol, off(rng) * tol};
+  expect_agrees(path, moved, tol, (what + ", moved").c_str());
+  std::vector<Vec3> sparse;
+  for (size_t k = 0; k < poly.size(); k += 2) sparse.push_back(poly[k]);
+  if (sparse.back() != poly.back()) sparse.push_back(poly.back());
+  expect_agrees(path, sparse, tol, (what + ", sparse").c_str());
+}
+
+}  // namespace
+
+TEST(Deviation, AgreesWithAReferenceOnPiecesOfDegreeFourToSeven) {
+  // Pieces without a power form: evaluated and split on the stack.
+  std::mt19937_64 rng(4);
+  for (int n = 4; n <= 7; ++n)
+    for (bool rational : {false, true}) {
+      const std::vector<Bezier> b = {random_piece(rng, n, rational)};
+      expect_agrees_three_ways(b, 0.01, rng, "degree " + std::to_string(n) + (rational ? ", rational" : ""));
+    }
+}
+
+TEST(Deviation, AgreesWithAReferenceOnRationalPieces) {
+  std::mt19937_64 rng(2);
+  for (int n = 1; n <= 3; ++n)
+    for (int k = 0; k < 2; ++k) {
+      const std::vector<Bezier> b = {random_piece(rng, n, true)};
+      expect_agrees_three_ways(b, 0.01, rng, "rational degree " + std::to_string(n));
+    }
+  // Circular arcs of a DXF polyline with bulges (each a rational
+  // quadratic: weights 1, cos(sweep / 2), 1), of radii 5, 2 and 2, meeting
+  // at corners (a foot passes over a corner to the next arc).
+  auto arc = [](Vec3 c, double r, double a0, double sweep) {
+    auto on = [&](double a, double rr) { return c + Vec3{std::cos(a), std::sin(a)} * rr; };
+    return Bezier::make({on(a0, r), on(a0 + sweep / 2, r / std::cos(sweep / 2)), on(a0 + sweep, r)}, {1, std::cos(sweep / 2), 1});
+  };
+  const double deg = M_PI / 180;
+  std::vector<Bezier> path = {arc({0, 5}, 5, -90 * deg, 90 * deg), arc({5, 7}, 2, -90 * deg, -120 * deg)};
+  path.push_back(arc(path.back().back() + Vec3{0, 2}, 2, -90 * deg, 120 * deg));
+  for (double tol : {0.1, 0.01}) expect_agrees_three_ways(path, tol, rng, "arcs at tolerance " + std::to_string(tol));
+}
+
+TEST(Deviation, AgreesWithAReferenceOnPiecesOfDegreeSixteenAndMore) {
+  // Degree >= 16: the cascade's work space on the heap.
+  std::mt19937_64 rng(16);
+  for (int n : {16, 20})
+    for (bool rational : {false, true}) {
+      const std::vector<Bezier> b = {random_piece(rng, n, rational)};
+      expect_agrees_three_ways(b, 0.05, rng, "degree " + std::to_string(n) + (rational ? ", rational" : ""));
+    }
+}
+
+TEST(Deviation, CatchesAWrongPolylineOnRationalAndHighDegreePieces) {
+  // Every interior vertex in turn moved across by three times the
+  // tolerance: the reading is over the tolerance each time, and never
+  // below the reference.
+  std::mt19937_64 rng(3);
+  const double tol = 0.01;
+  for (int n : {2, 5, 17}) {
+    const Bezier b = random_piece(rng, n, true);
+    const std::vector<Vec3> poly = flatten(std::vector<Bezier>{b}, {tol, -1}).points;
+    for (size_t k = 1; k + 1 < poly.size(); k += std::max<size_t>(1, poly.size() / 7)) {
+      std::vector<Vec3> moved = poly;
+      const Vec3 along = moved[k + 1] - moved[k - 1];
+      moved[k] += Vec3{-along.y, along.x} * (3 * tol / norm(along));
+      const double d = measure_deviation(std::span<const Bezier>(&b, 1), moved, tol).max();
+      EXPECT_GT(d, 1.5 * tol) << "degree " << n << ", vertex " << k << " of " << poly.size();
+    }
+  }
+}

@@ -11,11 +11,15 @@
 ///   most the lower of the two ends' segments' distances interpolated
 ///   along the chord (convex there), plus the arc's sag: for polynomial
 ///   pieces up to degree 3, h^2 / 8 max |C''| spread as the parabola
-///   4 s l (1 - l) over the arc's fraction l; otherwise the sub-curve's
-///   control polygon's distance from its chord.
+///   4 s l (1 - l) over the arc's fraction l; otherwise (rational pieces,
+///   degree > 3) the sub-curve's control polygon's distance from its chord
+///   (a rational quadratic's: w d / (1 + w), d its middle point's, w its
+///   normalised middle weight), the sub-curve split on the stack by a
+///   homogeneous de Casteljau cascade (no allocation below degree 16).
 /// - polyline -> curve: stretches of each segment (two per segment, then
 ///   halves). Each end is read against a foot on the curve (Newton steps
-///   from a neighbour's foot, along the pieces). Over the stretch, the
+///   from a neighbour's foot, along the pieces, over a corner to the next
+///   piece when the distance falls along it). Over the stretch, the
 ///   distance is at most the interpolated ends' distances plus the sag of
 ///   the curve between the two feet (and never more than it can change
 ///   moving along the segment).
@@ -26,9 +30,10 @@
 /// Accuracy: each reading is a distance to a real point (of the polyline
 /// or of the curve), so never below the true distance there; the largest
 /// one is read again by an exact search (every segment; a branch and bound
-/// over every piece), and where that is lower all readings are taken
-/// exactly and the search runs again. Any reading above the tolerance is
-/// exact from the start. So each of the two results is within kMeasureGap
+/// over every piece), and where that is lower the search runs again with
+/// that true distance as its floor and every reading above it taken
+/// exactly, so that its largest reading is a true distance. Any reading
+/// above the tolerance is exact from the start. So each of the two results is within kMeasureGap
 /// x tolerance of the true distance (never finer than 1e-14 of the control
 /// points' magnitude; below it by at most the bounds' gap, above it by at
 /// most a foot's last Newton step, far less): a flattening that is over
