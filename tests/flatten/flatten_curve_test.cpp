@@ -257,7 +257,9 @@ TEST(Flatten, TheMeasurementAgreesWithBruteForce) {
     EXPECT_NEAR(fast.path_to_curve, slow.path_to_curve, 2e-4) << b.points[1].x;
     // The brute force reads at points (below the truth); the measurement is
     // never below it by more than the accuracy deviation.hpp states
-    // (kMeasureResolution of the tolerance; seen 5e-6 of it below here).
+    // (kMeasureResolution of the tolerance; seen 5e-6 of it below here:
+    // the brute force's own excess, its path -> curve reading being taken
+    // against chords of the curve; see deviation.hpp).
     EXPECT_GE(fast.max() + kMeasureResolution * 0.01, slow.max()) << "the measurement reads less than the brute force";
   }
 }
