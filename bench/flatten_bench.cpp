@@ -13,7 +13,8 @@
 //        flatten_bench [--quick] --only bezcam|cairo --tol T
 //          runs one method once over the corpus inside run_only(), for
 //          bench/flatten_instructions.sh (instruction counts under callgrind,
-//          which machine load does not change).
+//          which machine load does not change); with --repeat N, N times
+//          (for a sampling profiler: perf record).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -206,17 +207,36 @@ int main(int argc, char** argv) {
   bool quick = false, named = false;
   std::string only;
   double only_tol = 0.01;
+  int repeat = 1;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
     else if (!std::strcmp(argv[i], "--tol") && i + 1 < argc) only_tol = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
     else corpus = argv[i], named = true;
   }
   const auto curves = load(corpus, quick, named);
+  if (only == "hash") {
+    unsigned long long h = 1469598103934665603ull;
+    for (int dec : {-1, 3, 4})
+      for (double tol : {0.1, 0.01, 0.001, 0.03}) {
+        if (dec == 3 && tol < 0.005) continue;
+        for (const auto& c : curves) {
+          const double bound = flatten_pieces(std::span<const Bezier>(&c.b, 1), {tol, dec}, [&](const FlatVertex& v) {
+            for (double d : {v.point.x, v.point.y, v.t}) { unsigned long long u; std::memcpy(&u, &d, 8); h = (h ^ u) * 1099511628211ull; }
+          });
+          unsigned long long u; std::memcpy(&u, &bound, 8); h = (h ^ u) * 1099511628211ull;
+        }
+      }
+    std::printf("hash %llx\n", h);
+    return 0;
+  }
   if (!only.empty()) {
     std::vector<Vec3> pts;
     pts.reserve(1 << 16);
-    std::printf("%s tol %g: %zu segments\n", only.c_str(), only_tol, run_only(curves, only, only_tol, pts));
+    size_t segments = 0;
+    for (int r = 0; r < repeat; ++r) segments = run_only(curves, only, only_tol, pts);
+    std::printf("%s tol %g: %zu segments\n", only.c_str(), only_tol, segments);
     return 0;
   }
   std::printf("corpus: %s, %zu curves%s\n\n", corpus.c_str(), curves.size(), quick ? " (quick: every 10th)" : "");

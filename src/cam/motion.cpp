@@ -71,6 +71,9 @@ double box_size(const MotionBlock& b) {
 
 std::vector<MotionBlock> program_motion(const Program& p) {
   std::vector<MotionBlock> out;
+  // A block per motion (compensation may add a few): no reallocation
+  // moving every block of a long program.
+  out.reserve(static_cast<size_t>(std::count_if(p.moves.begin(), p.moves.end(), [](const Move& mv) { return motion_of(mv) != nullptr; })));
   Vec3 pos;
   unsigned known = 0;
   // G41/G42: the blocks are where the tool's centre goes (cutter_comp.hpp).

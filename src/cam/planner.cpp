@@ -201,6 +201,24 @@ class CurvePoints {
   std::vector<double> breaks_;
 };
 
+// How many pieces the planner cuts a curve block into (Builder::add_block).
+int curve_pieces(const MotionBlock& b) {
+  return std::clamp(static_cast<int>(4 * std::max<size_t>(b.ctrl.size(), 2)), 8, 256);
+}
+
+// What the speed passes and the totals read and write of a segment, packed:
+// they run over every segment of a long program, and a summary keeps only
+// this of a segment once no blend can reach it (PlanSegment holds its
+// geometry too, several times the size).
+struct Lean {
+  double length = 0, vmax = 0, accel = 0;  // accel: tangential, the kinks' share taken off
+  int block = -1;
+  SpeedLimit limit = SpeedLimit::programmed;
+  bool rapid = false;
+  double vpeak = 0, t_acc = 0, t_cruise = 0, t_dec = 0;  // entry and exit speeds: speeds()'s v
+  double time() const { return t_acc + t_cruise + t_dec; }
+};
+
 struct Builder {
   Builder(const Timeline& t, const MotionModel& m, bool summary_only)
       : tl(t), model(m), summary(summary_only), period(m.period_s), scale(mm_per_unit(t.units)) {}
@@ -212,6 +230,27 @@ struct Builder {
   double scale;  // mm per program unit
   std::vector<PlanSegment> segs;
   std::vector<double> junction;   // junction[i]: largest speed entering segs[i] (0: stop)
+  std::vector<PlanSegment> mine_;  // build(): the block's segments before they join segs
+  // Every segment's speed figures, in order (speeds(), totals()). A summary
+  // moves a segment here once no blend can reach it and drops it from
+  // `segs`, which then holds only the last few; a full plan keeps `segs`
+  // whole and fills this from it.
+  std::vector<Lean> lean;
+  size_t most_segments = 0;  // at most this many segments (plan_timed())
+
+  // The segment's figures for the passes, the share its kinks take off its
+  // acceleration applied (to the segment too: a full plan keeps it).
+  void add_lean(PlanSegment& sg) {
+    sg.accel *= 1 - sg.kink_reduce;
+    Lean l;
+    l.length = sg.length;
+    l.vmax = sg.vmax;
+    l.accel = sg.accel;
+    l.block = sg.block;
+    l.limit = sg.limit;
+    l.rapid = sg.rapid;
+    lean.push_back(l);
+  }
   MotionPlan plan;
 
   double path_tolerance(size_t block) const {
@@ -287,8 +326,8 @@ struct Builder {
     s.overall_accel = a;
   }
 
-  // Segments of one block, appended to segs; returns how many.
-  void add_block(int bi) {
+  // Segments of one block, appended to `out`.
+  void add_block(int bi, std::vector<PlanSegment>& out) {
     const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
     PlannedBlock pb;
     pb.line = b.line;
@@ -298,7 +337,7 @@ struct Builder {
     const bool curved_block = b.kind == BlockKind::nurbs || b.kind == BlockKind::bezier;
     pb.length = curved_block ? 0 : block_length(b);
     const bool rapid = b.kind == BlockKind::rapid;
-    const size_t first = segs.size();
+    const size_t first = out.size();
     if (b.kind == BlockKind::rapid || b.kind == BlockKind::linear) {
       const Vec3 u = unit(b.to - b.from);
       double v;
@@ -310,7 +349,7 @@ struct Builder {
       s.accel = along(u, lim.amax);
       if (!std::isfinite(s.accel)) s.accel = lim.amax.x;
       s.overall_accel = s.accel;
-      segs.push_back(std::move(s));
+      out.push_back(std::move(s));
       pb.programmed_feed = rapid ? v * 60 : b.feed;
     } else if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
       const Vec3 n = from_plane({0, 0, 1}, b.plane);  // the plane's axis
@@ -342,12 +381,12 @@ struct Builder {
       s.center = from_plane(c, b.plane);
       s.radius = R;
       s.angle = arc_sweep(b);
-      segs.push_back(std::move(s));
+      out.push_back(std::move(s));
       pb.programmed_feed = b.feed;
     } else {
       // A curve block on the true curve: pieces of the parameter range,
       // each with the speed its tightest curvature allows.
-      const int pieces = std::clamp(static_cast<int>(4 * std::max<size_t>(b.ctrl.size(), 2)), 8, 256);
+      const int pieces = curve_pieces(b);
       constexpr int kSub = 12;
       const Vec3 n{0, 0, 1};
       bool planar = true;
@@ -413,17 +452,17 @@ struct Builder {
           if (d > 0) s.center = a + (cross(nrm, ab) * dot(ac, ac) + cross(ac, nrm) * dot(ab, ab)) * (1 / d);
         }
         pb.length += len;
-        if (len > 0) segs.push_back(std::move(s));
+        if (len > 0) out.push_back(std::move(s));
       }
       pb.programmed_feed = b.feed;
     }
     // The block rate: the block takes at least 1 / block_rate.
     if (model.block_rate_hz > 0 && pb.length > 0) {
       const double cap = pb.length * model.block_rate_hz;
-      for (size_t i = first; i < segs.size(); ++i)
-        if (cap < segs[i].vmax) {
-          segs[i].vmax = cap;
-          segs[i].limit = SpeedLimit::block_rate;
+      for (size_t i = first; i < out.size(); ++i)
+        if (cap < out[i].vmax) {
+          out[i].vmax = cap;
+          out[i].limit = SpeedLimit::block_rate;
         }
     }
     plan.blocks.push_back(pb);
@@ -616,27 +655,26 @@ struct Builder {
   }
 
   void build() {
-    size_t pause = 0, kept = 0;  // kept: the first segment whose pieces are kept
+    size_t pause = 0;
     bool stop_before = true;  // the machine is at rest
-    // About a segment per block (a blend replaces the ends it joins): no
-    // reallocation holding the segments twice while a long program grows.
-    segs.reserve(tl.blocks.size() + 16);
-    junction.reserve(tl.blocks.size() + 16);
+    // Reserved once (address space only until used): no reallocation
+    // holding the segments twice while a long program grows.
+    const size_t most = most_segments + 16;
+    if (summary) lean.reserve(most);
+    else segs.reserve(most);
+    junction.reserve(most + 1);
+    plan.blocks.reserve(tl.blocks.size());
     for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
       bool pause_here = false;
       while (pause < tl.pauses.size() && tl.pauses[pause].before_block <= bi) {
         pause_here = true;
         ++pause;
       }
-      std::vector<PlanSegment> mine;
-      {
-        // Build this block's segments aside, then join them.
-        std::vector<PlanSegment> saved;
-        saved.swap(segs);
-        add_block(static_cast<int>(bi));
-        mine.swap(segs);
-        segs.swap(saved);
-      }
+      // Build this block's segments aside (one vector for every block),
+      // then join them.
+      std::vector<PlanSegment>& mine = mine_;
+      mine.clear();
+      add_block(static_cast<int>(bi), mine);
       const MotionBlock& b = tl.blocks[bi];
       // A block that does not move (its end is where it starts) takes no
       // time and makes no corner: controllers drop it.
@@ -706,13 +744,17 @@ struct Builder {
       }
       stop_before = false;
       if (mine.empty() && pause_here) stop_before = true;
-      // A summary needs no segment's geometry once no blend can reach it
-      // (blends change the last two): free it as the program goes.
-      if (summary)
-        for (; kept < segs.size() && kept + 2 < segs.size(); ++kept) std::vector<PlanSegment::Piece>().swap(segs[kept].pieces);
+      // A summary needs no segment once no blend can reach it (corners
+      // change the last two): only its figures are kept, as the program goes.
+      if (summary && segs.size() > 2) {
+        for (size_t k = 0; k + 2 < segs.size(); ++k) add_lean(segs[k]);
+        segs.erase(segs.begin(), segs.end() - 2);
+      }
     }
     if (!segs.empty()) exact_stop_end(Stop::end);
     junction.push_back(0);  // the end
+    for (PlanSegment& sg : segs) add_lean(sg);
+    if (summary) segs.clear();
   }
 
   // Why the machine stops between two moves.
@@ -737,14 +779,13 @@ struct Builder {
   }
 
   void speeds() {
-    const size_t n = segs.size();
+    const size_t n = lean.size();
     const double j = lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0;
-    for (PlanSegment& sg : segs) sg.accel *= 1 - sg.kink_reduce;
     // junction has n + 1 entries: entering each segment, then the end.
     std::vector<double> v(junction);
     for (size_t i = 0; i < n; ++i) {
-      v[i] = std::min(v[i], segs[i].vmax);
-      if (i > 0) v[i] = std::min(v[i], segs[i - 1].vmax);
+      v[i] = std::min(v[i], lean[i].vmax);
+      if (i > 0) v[i] = std::min(v[i], lean[i - 1].vmax);
     }
     // Look-ahead: at each segment the controller must be able to stop
     // within the segments it sees (counted in blocks).
@@ -753,15 +794,15 @@ struct Builder {
     {
       // Only where the window is short compared with a stop.
       std::vector<double> prefix(n + 1, 0);
-      for (size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + segs[i].length;
+      for (size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + lean[i].length;
       std::vector<size_t> end_of(n);
       // Window end: the segment after `window` distinct blocks.
       size_t e = 0;
       int last_block = -2;
       std::vector<int> bcount(n + 1, 0);
       for (size_t i = 0; i < n; ++i) {
-        bcount[i + 1] = bcount[i] + (segs[i].block != last_block ? 1 : 0);
-        last_block = segs[i].block;
+        bcount[i + 1] = bcount[i] + (lean[i].block != last_block ? 1 : 0);
+        last_block = lean[i].block;
       }
       for (size_t i = 0; i < n; ++i) {
         if (e < i) e = i;
@@ -778,16 +819,16 @@ struct Builder {
         const size_t stop = end_of[i > 0 ? i - 1 : 0];
         if (stop >= n) continue;  // sees the program's end: the normal passes cover it
         for (; pushed < stop; ++pushed) {
-          while (!mins.empty() && segs[mins.back()].accel >= segs[pushed].accel) mins.pop_back();
+          while (!mins.empty() && lean[mins.back()].accel >= lean[pushed].accel) mins.pop_back();
           mins.push_back(pushed);
         }
         while (!mins.empty() && mins.front() < i) mins.pop_front();
-        const double a_min = mins.empty() ? segs[i].accel : segs[mins.front()].accel;
+        const double a_min = mins.empty() ? lean[i].accel : lean[mins.front()].accel;
         // A window long enough to stop from the top speed does not limit.
-        const double dist_needed = ramp_distance(0, segs[i].vmax, a_min, 0);
+        const double dist_needed = ramp_distance(0, lean[i].vmax, a_min, 0);
         if (prefix[stop] - prefix[i] >= dist_needed * 1.0001) continue;
         double w = 0;
-        for (size_t k = stop; k-- > i;) w = std::min(reachable(w, segs[k].length, segs[k].accel, 0, segs[k].vmax), v[k]);
+        for (size_t k = stop; k-- > i;) w = std::min(reachable(w, lean[k].length, lean[k].accel, 0, lean[k].vmax), v[k]);
         look[i] = w;
       }
     }
@@ -800,42 +841,50 @@ struct Builder {
     }
     // Backward then forward (speeds by the acceleration; the jerk's share
     // of a ramp is counted below, once per ramp).
-    for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], segs[i].length, segs[i].accel, 0, segs[i].vmax));
+    for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], lean[i].length, lean[i].accel, 0, lean[i].vmax));
     for (size_t i = 0; i < n; ++i)
-      v[i + 1] = std::min(v[i + 1], reachable(v[i], segs[i].length, segs[i].accel, 0, segs[i].vmax));
+      v[i + 1] = std::min(v[i + 1], reachable(v[i], lean[i].length, lean[i].accel, 0, lean[i].vmax));
     // Trapezoids, then (with a jerk limit) S-curves: a ramp's build-up and
     // wind-down where the acceleration starts and ends, not at every joint.
-    for (size_t i = 0; i < n; ++i) profile_one(segs[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
+    for (size_t i = 0; i < n; ++i) profile_one(lean[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
     if (j > 0) {
       std::vector<char> acc_in(n, 1), acc_out(n, 1), dec_in(n, 1), dec_out(n, 1);
-      auto ends_acc = [&](const PlanSegment& q) { return q.t_acc > 0 && q.t_cruise <= 0 && q.t_dec <= 0; };
-      auto starts_acc = [&](const PlanSegment& q) { return q.t_acc > 0; };
-      auto ends_dec = [&](const PlanSegment& q) { return q.t_dec > 0; };
-      auto starts_dec = [&](const PlanSegment& q) { return q.t_dec > 0 && q.t_acc <= 0 && q.t_cruise <= 0; };
+      auto ends_acc = [&](const Lean& q) { return q.t_acc > 0 && q.t_cruise <= 0 && q.t_dec <= 0; };
+      auto starts_acc = [&](const Lean& q) { return q.t_acc > 0; };
+      auto ends_dec = [&](const Lean& q) { return q.t_dec > 0; };
+      auto starts_dec = [&](const Lean& q) { return q.t_dec > 0 && q.t_acc <= 0 && q.t_cruise <= 0; };
       for (size_t i = 0; i + 1 < n; ++i) {
-        if (ends_acc(segs[i]) && starts_acc(segs[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
-        if (ends_dec(segs[i]) && starts_dec(segs[i + 1])) dec_out[i] = dec_in[i + 1] = 0;
+        if (ends_acc(lean[i]) && starts_acc(lean[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
+        if (ends_dec(lean[i]) && starts_dec(lean[i + 1])) dec_out[i] = dec_in[i + 1] = 0;
       }
       for (size_t i = 0; i < n; ++i) {
         std::array<char, 4> f{acc_in[i], acc_out[i], dec_in[i], dec_out[i]};
-        profile_one(segs[i], v[i], v[i + 1], j, f);
+        profile_one(lean[i], v[i], v[i + 1], j, f);
       }
     }
+    if (!summary)
+      for (size_t i = 0; i < n; ++i) {
+        PlanSegment& sg = segs[i];
+        sg.v0 = v[i];
+        sg.v1 = v[i + 1];
+        sg.vpeak = lean[i].vpeak;
+        sg.t_acc = lean[i].t_acc;
+        sg.t_cruise = lean[i].t_cruise;
+        sg.t_dec = lean[i].t_dec;
+      }
   }
 
   // One segment from v0 to v1: the highest peak that fits its length.
-  static void profile_one(PlanSegment& s, double v0, double v1, double j, std::array<char, 4> f) {
-    s.v0 = v0;
-    s.v1 = v1;
+  static void profile_one(Lean& s, double v0, double v1, double j, std::array<char, 4> f) {
     const double a = s.accel;
-    auto up = [&](double vp) { return ramp_time(s.v0, vp, a, j, f[0], f[1]); };
-    auto down = [&](double vp) { return ramp_time(vp, s.v1, a, j, f[2], f[3]); };
-    auto used = [&](double vp) { return 0.5 * (s.v0 + vp) * up(vp) + 0.5 * (vp + s.v1) * down(vp); };
-    double lo = std::max(s.v0, s.v1), hi = s.vmax;
+    auto up = [&](double vp) { return ramp_time(v0, vp, a, j, f[0], f[1]); };
+    auto down = [&](double vp) { return ramp_time(vp, v1, a, j, f[2], f[3]); };
+    auto used = [&](double vp) { return 0.5 * (v0 + vp) * up(vp) + 0.5 * (vp + v1) * down(vp); };
+    double lo = std::max(v0, v1), hi = s.vmax;
     double vp = hi;
     if (used(hi) > s.length * (1 + 1e-12)) {
       if (j <= 0) {
-        vp = std::clamp(std::sqrt(std::max(0.0, (2 * a * s.length + s.v0 * s.v0 + s.v1 * s.v1) / 2)), lo, hi);
+        vp = std::clamp(std::sqrt(std::max(0.0, (2 * a * s.length + v0 * v0 + v1 * v1) / 2)), lo, hi);
       } else {
         for (int it = 0; it < 60; ++it) {
           const double mid = 0.5 * (lo + hi);
@@ -856,25 +905,47 @@ struct Builder {
     double t = 0;
     size_t pause = 0;
     // Pauses sit before the first segment of their block.
-    std::vector<size_t> first_seg(tl.blocks.size() + 1, segs.size());
-    for (size_t i = segs.size(); i-- > 0;) first_seg[static_cast<size_t>(segs[i].block)] = i;
+    std::vector<size_t> first_seg(tl.blocks.size() + 1, lean.size());
+    for (size_t i = lean.size(); i-- > 0;) first_seg[static_cast<size_t>(lean[i].block)] = i;
     for (size_t b = tl.blocks.size(); b-- > 0;) first_seg[b] = std::min(first_seg[b], first_seg[b + 1]);
     plan.pause_start_s.assign(tl.pauses.size(), 0);
-    for (size_t i = 0; i <= segs.size(); ++i) {
+    // One pass over the segments, in order: the times, per block what held
+    // it below its programmed feed (the limit of its fastest segment), and
+    // the mean feed ratio over the cutting moves: the length cut over the
+    // length the programmed feeds would have cut in the same time (so each
+    // stretch of path counts by its length, blends with their block). A
+    // cutting segment's block is a cutting block, whose programmed feed
+    // add_block() took from the block as it is.
+    std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
+    std::vector<double> top(plan.blocks.size(), 0);
+    double cut = 0, at_feed = 0;
+    for (size_t i = 0; i <= lean.size(); ++i) {
       while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, tl.blocks.size())] <= i) {
         plan.pause_start_s[pause] = t;
         t += tl.pauses[pause].seconds;
         plan.pause_time_s += tl.pauses[pause].seconds;
         ++pause;
       }
-      if (i == segs.size()) break;
-      PlanSegment& s = segs[i];
-      s.t_start = t;
+      if (i == lean.size()) break;
+      const Lean& s = lean[i];
+      if (!summary) segs[i].t_start = t;
       t += s.time();
       (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += s.time();
-      PlannedBlock& pb = plan.blocks[static_cast<size_t>(s.block)];
+      const size_t b = static_cast<size_t>(s.block);
+      PlannedBlock& pb = plan.blocks[b];
       pb.time_s += s.time();
       pb.peak_feed = std::max(pb.peak_feed, s.vpeak * 60);
+      SpeedLimit l = s.limit;
+      if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
+      if (s.vmax >= top[b]) {
+        top[b] = s.vmax;
+        why[b] = l;
+      }
+      if (s.rapid) continue;
+      const double want = pb.programmed_feed / 60;
+      if (!(want > 0)) continue;
+      cut += s.length;
+      at_feed += s.time() * want;
     }
     while (pause < tl.pauses.size()) {
       plan.pause_start_s[pause] = t;
@@ -883,26 +954,17 @@ struct Builder {
       ++pause;
     }
     plan.cycle_time_s = t;
-    // Per block: what held it below its programmed feed.
-    std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
-    std::vector<double> top(plan.blocks.size(), 0);
-    for (size_t i = 0; i < segs.size(); ++i) {
-      const size_t b = static_cast<size_t>(segs[i].block);
-      SpeedLimit l = segs[i].limit;
-      if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
-      if (segs[i].vmax >= top[b]) {
-        top[b] = segs[i].vmax;
-        why[b] = l;
-      }
-    }
+    plan.mean_feed_ratio = at_feed > 0 ? cut / at_feed : 1;
+    // Per block (add_block() gave a cutting block its programmed feed, a
+    // rapid the axes' rate along it).
     for (size_t b = 0; b < plan.blocks.size(); ++b) {
       PlannedBlock& pb = plan.blocks[b];
-      const MotionBlock& mb = tl.blocks[b];
+      const bool rapid = pb.kind == BlockKind::rapid;
       if (pb.length <= 1e-9) {
-        pb.programmed_feed = mb.kind == BlockKind::rapid ? 0 : mb.feed;
+        if (rapid) pb.programmed_feed = 0;
         continue;  // no move: no time, no limit
       }
-      const double want = mb.kind == BlockKind::rapid ? pb.programmed_feed : mb.feed;
+      const double want = pb.programmed_feed;
       if (want > 0) plan.programmed_feed_time_s += pb.length / want * 60;
       if (pb.clamped) ++plan.clamped_blocks;
       if (pb.peak_feed < want * (1 - 1e-6)) {
@@ -912,18 +974,6 @@ struct Builder {
       pb.starved = pb.peak_feed < want * 0.99 && is_starvation(pb.limit);
       if (pb.starved) ++plan.starved_blocks;
     }
-    // Mean feed ratio over the cutting moves: the length cut over the
-    // length the programmed feeds would have cut in the same time (so each
-    // stretch of path counts by its length, blends with their block).
-    double cut = 0, at_feed = 0;
-    for (const PlanSegment& sg : segs) {
-      if (sg.rapid) continue;
-      const double want = tl.blocks[static_cast<size_t>(sg.block)].feed / 60;
-      if (!(want > 0)) continue;
-      cut += sg.length;
-      at_feed += sg.time() * want;
-    }
-    plan.mean_feed_ratio = at_feed > 0 ? cut / at_feed : 1;
   }
 };
 
@@ -1000,8 +1050,11 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
                       PlanDetail detail) {
   if (!(model.period_s > 0)) throw std::invalid_argument("motion model: period_s must be > 0");
   const Timeline& tl = timed;
-  // Axes the program had not set yet start where the machine stands.
+  // Axes the program had not set yet start where the machine stands. And
+  // in the same pass: at most a segment per line, rapid or arc and one per
+  // curve piece, and a blend after each.
   Vec3 pos = tl.start;
+  size_t most = 0;
   for (MotionBlock& mb : timed.blocks) {
     if (mb.from_known != 7u) {
       for (int k = 0; k < 3; ++k)
@@ -1009,6 +1062,7 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
       if (!mb.ctrl.empty()) mb.ctrl.front() = mb.from;
     }
     pos = mb.to;
+    most += 1 + (mb.kind == BlockKind::nurbs || mb.kind == BlockKind::bezier ? static_cast<size_t>(curve_pieces(mb)) : 1);
   }
   // Tool changes and spindle starts take the machine's time.
   for (PlanPause& p : timed.pauses) {
@@ -1017,6 +1071,7 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
   }
   const bool summary = detail == PlanDetail::summary;
   Builder b(timed, model, summary);
+  b.most_segments = most;
   for (int i = 0; i < 3; ++i) {
     b.lim.vmax[i] = model.max_velocity_mm_min[static_cast<size_t>(i)] / 60 / b.scale;
     b.lim.amax[i] = model.max_acceleration_mm_s2[static_cast<size_t>(i)] / b.scale;

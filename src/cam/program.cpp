@@ -289,7 +289,11 @@ const std::vector<std::unique_ptr<Measurements::Task>>& Measurements::finish() {
 }  // namespace detail
 
 namespace {
-Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
+using WhileMeasuring = std::function<void(const Program&)>;
+Program build_program_unchecked(const Job& job, const MachineProfile& m, const ConvertOptions& opt,
+                                const WhileMeasuring& while_measuring);
+Program build_program_checked(const Job& job, const MachineProfile& m, const ConvertOptions& opt,
+                              const WhileMeasuring& while_measuring);
 }  // namespace
 
 MachineProfile with_compensation_registers(const MachineProfile& m, const Program& p) {
@@ -301,8 +305,35 @@ MachineProfile with_compensation_registers(const MachineProfile& m, const Progra
 }
 
 Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
+  return build_program(job, m, opt, nullptr);
+}
+
+Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt,
+                      const std::function<void(const Program&)>& while_measuring) {
+  // The caller's failure is kept aside while the measurements finish (a
+  // failed one is thrown first), and thrown as it is: not through the
+  // tolerance wording below, which is for the build's own refusals.
+  std::exception_ptr during;
+  WhileMeasuring guarded;
+  if (while_measuring)
+    guarded = [&](const Program& p) {
+      try {
+        while_measuring(p);
+      } catch (...) {
+        during = std::current_exception();
+      }
+    };
+  Program p = build_program_checked(job, m, opt, guarded);
+  if (during) std::rethrow_exception(during);
+  return p;
+}
+
+namespace {
+
+Program build_program_checked(const Job& job, const MachineProfile& m, const ConvertOptions& opt,
+                              const WhileMeasuring& while_measuring) {
   try {
-    return build_program_unchecked(job, m, opt);
+    return build_program_unchecked(job, m, opt, while_measuring);
   } catch (const InputError& e) {
     // The flattener knows neither the file nor the machine: say where the
     // tolerance came from and whose decimals it meets.
@@ -320,8 +351,6 @@ Program build_program(const Job& job, const MachineProfile& m, const ConvertOpti
                          ")");
   }
 }
-
-namespace {
 
 // Waits for the measurements (run on every core as the program was
 // built), fills the reports and the program's largest reading; the
@@ -426,7 +455,8 @@ Job ordered(const Job& job, const MachineProfile& m, Program& p) {
   return out;
 }
 
-Program build_program_unchecked(const Job& original_job, const MachineProfile& m, const ConvertOptions& opt) {
+Program build_program_unchecked(const Job& original_job, const MachineProfile& m, const ConvertOptions& opt,
+                                const WhileMeasuring& while_measuring) {
   Program p;
   const Job ordered_job = original_job.order_shortest ? ordered(original_job, m, p) : Job{};
   const Job& job = original_job.order_shortest ? ordered_job : original_job;
@@ -546,7 +576,9 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   }
   // The coolant stops with the cut; the profile's footer stops the spindle.
   if (cur_coolant != Coolant::off) push({CoolantMove{Coolant::off}});
-  run_measurements(p, later);
+  // The moves are final from here on (the measurements read only what their
+  // tasks hold, never p.moves): the caller's work on them runs while the
+  // last measurements do.
   move_part(p, opt.offset);
   if (opt.return_to) {
     // Up (Z only) to the higher of safe Z and the target, across, then down.
@@ -562,6 +594,8 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
     rapid({to.x, to.y, high}, kAxisX | kAxisY);
     if (to.z < high) rapid(to, kAxisZ);
   }
+  if (while_measuring) while_measuring(p);
+  run_measurements(p, later);
   if (opt.on_entity) opt.on_entity(job.entities.size(), job.entities.size(), "");
   return p;
 }

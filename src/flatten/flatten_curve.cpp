@@ -518,48 +518,74 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     // One try: B shifted across the curve, then (when allowed and of use)
     // B on the curve.
     auto try_chord = [&](double t1, Chord& c, bool zero) {
-      const Vec3 on = P.point(t1);
-      Vec3 d1;
+      // Planar cubics (the common case) in two dimensions, from the power
+      // form, with the same operations as Prepared's point(), tangent() and
+      // convex_side(), so that the vertices are the same.
+      Vec3 on, d1, side, S[4];
       double bend1 = 0;
-      const Vec3 side = t1 < 1 ? P.convex_side(t1, &d1, &bend1) : Vec3{};
-      // The planar cubic's sub-curve, from what is known at t0 and t1.
-      Vec3 S[4];
       if (steered) {
+        if (t1 < 1) {
+          const double t = t1, t3 = 3 * t, t6 = 6 * t;
+          on = {((P.c3.x * t + P.c2.x) * t + P.c1.x) * t + P.c0.x, ((P.c3.y * t + P.c2.y) * t + P.c1.y) * t + P.c0.y};
+          d1 = {(P.c3.x * t3 + P.c2.x * 2) * t + P.c1.x, (P.c3.y * t3 + P.c2.y * 2) * t + P.c1.y};
+          const double d2x = P.c3.x * t6 + P.c2.x * 2, d2y = P.c3.y * t6 + P.c2.y * 2;
+          const double s2 = d1.x * d1.x + d1.y * d1.y, cr = d1.x * d2y - d1.y * d2x;
+          if (cr * cr > 1e-24 * (d2x * d2x + d2y * d2y) * s2 && std::isfinite(cr * cr * s2)) {
+            const double k = (cr > 0 ? -1 : 1) / std::sqrt(s2);
+            bend1 = std::abs(cr * k);
+            side = {-d1.y * k, d1.x * k};
+          }
+        } else {
+          on = pieces[pi].back();
+          d1 = P.tangent(t1);
+        }
+        // The sub-curve, from what is known at t0 and t1.
         const double h = (t1 - t0) / 3;
-        if (!(t1 < 1)) d1 = P.tangent(t1);
         S[0] = S0;
-        S[1] = S0 + T0 * h;
-        S[2] = on - d1 * h;
+        S[1] = {S0.x + T0.x * h, S0.y + T0.y * h};
+        S[2] = {on.x - d1.x * h, on.y - d1.y * h};
         S[3] = on;
+      } else {
+        on = P.point(t1);
+        if (t1 < 1) side = P.convex_side(t1, &d1, &bend1);
       }
+      const bool has_side = side.x != 0 || side.y != 0 || side.z != 0;
       double H = -kInf;
-      for (const double delta : {shift, 0.0}) {
-        if (delta == 0 && !zero) continue;
-        if (delta > 0 && !(side.x != 0 || side.y != 0 || side.z != 0)) continue;
-        const Vec3 B = delta > 0 ? on + side * delta : on;
-        const Vec3 Br = opt.decimals < 0 ? B : quantize(B, opt.decimals);
-        const double disp = opt.decimals < 0 ? dispA : std::max(dispA, dist(Br, B));
+      for (int pass = 0; pass < 2; ++pass) {
+        const double delta = pass == 0 ? shift : 0.0;
+        if (pass == 0 ? !has_side : !zero) continue;
+        const Vec3 B = pass == 0 ? on + side * delta : on;
+        Vec3 Br = B;
+        double disp = dispA;
+        if (opt.decimals >= 0) {
+          Br = quantize(B, opt.decimals);
+          disp = std::max(dispA, dist(Br, B));
+        }
         const double budget = tol - margin - disp;
         if (!(budget > 0)) continue;
         // The shifted chord's sagitta is over what B on the curve allows:
         // that try would be wasted.
-        if (delta == 0 && H > longest_sagitta(budget, offA, 0)) break;
+        if (pass == 1 && H > longest_sagitta(budget, offA, 0)) break;
         double bulge = -kInf;
         const double dev = steered ? band_cubic_planar(S, A, B, budget, &bulge) : P.band(t0, t1, A, B, budget);
         H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
         c.t1 = t1, c.dev = dev, c.disp = disp, c.H = H, c.budget = budget;
-        c.B = B, c.Br = Br, c.on = delta == 0, c.bend = bend1;
+        c.B = B, c.Br = Br, c.on = pass == 1, c.bend = bend1;
         if (dev <= budget) return true;
       }
       c.H = H;
       return false;
     };
+    // Two slots, the best chord so far and the one being tried, swapped by
+    // index rather than copied (copying the struct stalled the loop), and
+    // kept across the piece's searches (building them for each one cost as
+    // much as a chord's arithmetic).
+    Chord slot[2];
     while (t0 < 1) {
       double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
       bool found = false;
-      // Two slots, the best chord so far and the one being tried, swapped
-      // by index rather than copied (copying the struct stalled the loop).
-      Chord slot[2];
+      // The two slots (piece-wide, see below) start each search as new.
+      for (Chord& c : slot) c.dev = 0, c.budget = 0, c.H = -kInf, c.on = false;
       int cur = 0;
       if (steered) {
         S0 = P.point(t0);

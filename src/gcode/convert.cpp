@@ -27,16 +27,22 @@ ConvertResult convert(const Job& job, const MachineProfile& m, const ConvertOpti
 
 ConvertResult convert_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
   ConvertResult r;
-  r.program = build_program(job, m, opt);
-  validate_program(r.program, m);  // before one character is written
-  // One plan for the header and the report, from the program's moves: the
-  // printed program's motion (coordinates are rounded to the printed
-  // decimals when the program is built; MotionGolden checks every sample's
-  // plan against its text read back and planned). Not where the profile's
-  // tool change position lines move the machine between tools: those
-  // moves are in the text only, and the report plans the text read back.
-  if (m.motion && !retracts_between_tools(r.program, m))
-    r.plan = plan_motion(program_timeline(r.program), *m.motion, PlanDetail::summary);
+  // Validation and the plan read the moves only, never the measured
+  // readings: they run while the measurements finish on the other cores.
+  // A failed measurement is still the error thrown when both fail (as when
+  // they ran after it), and either leaves no program to write.
+  r.program = build_program(job, m, opt, [&](const Program& p) {
+    validate_program(p, m);  // before one character is written
+    // One plan for the header and the report, from the program's moves:
+    // the printed program's motion (coordinates are rounded to the printed
+    // decimals when the program is built; MotionGolden checks every
+    // sample's plan against its text read back and planned). Not where the
+    // profile's tool change position lines move the machine between tools:
+    // those moves are in the text only, and the report plans the text read
+    // back.
+    if (m.motion && !retracts_between_tools(p, m))
+      r.plan = plan_motion(program_timeline(p), *m.motion, PlanDetail::summary);
+  });
   return r;
 }
 

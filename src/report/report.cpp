@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <cstdio>
+#include <future>
 #include <nlohmann/json.hpp>
 
 #include "bezcam/error.hpp"
@@ -20,6 +21,42 @@ void GcodeCounts::add(std::string_view piece) {
   last = piece.back();
 }
 
+namespace {
+
+// The program's and each entity's lengths and feed times (rapid times are
+// added with the rate, in make_report()).
+struct ProgramTotals {
+  MotionTotals total;
+  std::vector<MotionTotals> by_entity;
+};
+
+// The totals in one pass over the blocks, no copy of them (a pass per
+// entity made a 10,000-entity job quadratic), each block measured once;
+// the sums in block order, as motion_totals() makes them.
+ProgramTotals program_totals(const Program& p) {
+  ProgramTotals r;
+  const auto add = [](MotionTotals& t, const MotionTotals& one) {
+    t.feed_length += one.feed_length;
+    t.rapid_length += one.rapid_length;
+    t.feed_time_s += one.feed_time_s;
+    t.feed_blocks += one.feed_blocks;
+    t.rapid_blocks += one.rapid_blocks;
+  };
+  for (const MotionBlock& b : program_motion(p)) {
+    const MotionTotals one = motion_totals(std::span(&b, 1), 0);
+    add(r.total, one);
+    if (b.entity < 0) continue;
+    if (r.by_entity.size() <= static_cast<size_t>(b.entity)) r.by_entity.resize(b.entity + 1);
+    add(r.by_entity[b.entity], one);
+  }
+  return r;
+}
+
+ProgramReport report_of(const Program& p, const MachineProfile& m, const GcodeCounts& text, const MotionPlan* plan,
+                        const Timeline* read_back, ProgramTotals totals);
+
+}  // namespace
+
 ProgramReport make_report(const Program& p, const MachineProfile& m, std::string_view gcode, const MotionPlan* plan) {
   GcodeCounts counts;
   counts.add(gcode);
@@ -35,6 +72,9 @@ ProgramReport make_report(const Program& p, const MachineProfile& m, std::string
 
 ProgramReport write_and_report(const Program& p, const MachineProfile& m, const MotionPlan* plan,
                                const GcodeSink& sink) {
+  // The moves' totals need no text: summed on another core while the text
+  // is written (both only read the program).
+  std::future<ProgramTotals> totals = std::async(std::launch::async, [&p] { return program_totals(p); });
   GcodeCounts counts;
   std::optional<MachineProfile> set_up;
   std::optional<TimelineReader> back;
@@ -46,11 +86,18 @@ ProgramReport write_and_report(const Program& p, const MachineProfile& m, const 
   });
   std::optional<Timeline> tl;
   if (back && counts.bytes) tl = back->finish();
-  return make_report(p, m, counts, plan, tl ? &*tl : nullptr);
+  return report_of(p, m, counts, plan, tl ? &*tl : nullptr, totals.get());
 }
 
 ProgramReport make_report(const Program& p, const MachineProfile& m, const GcodeCounts& text, const MotionPlan* plan,
                           const Timeline* read_back) {
+  return report_of(p, m, text, plan, read_back, program_totals(p));
+}
+
+namespace {
+
+ProgramReport report_of(const Program& p, const MachineProfile& m, const GcodeCounts& text, const MotionPlan* plan,
+                        const Timeline* read_back, ProgramTotals totals) {
   ProgramReport r;
   r.job = p.job_name;
   r.machine = p.machine;
@@ -67,25 +114,8 @@ ProgramReport make_report(const Program& p, const MachineProfile& m, const Gcode
   r.rapid_rate = m.max_feed_mm_min / mm_per_unit(p.units);
   r.rapid_rate_basis = "the maximum feed of machine \"" + m.name + "\" (max_feed_mm_min " +
                        fmt_num(m.max_feed_mm_min) + "); the controller's true rapid rate may differ";
-  // The program's and each entity's totals in one pass over the blocks, no
-  // copy of them (a pass per entity made a 10,000-entity job quadratic),
-  // each block measured once; the sums in block order, as
-  // motion_totals() makes them.
-  std::vector<MotionTotals> by_entity;
-  const auto add = [](MotionTotals& t, const MotionTotals& one) {
-    t.feed_length += one.feed_length;
-    t.rapid_length += one.rapid_length;
-    t.feed_time_s += one.feed_time_s;
-    t.feed_blocks += one.feed_blocks;
-    t.rapid_blocks += one.rapid_blocks;
-  };
-  for (const MotionBlock& b : program_motion(p)) {
-    const MotionTotals one = motion_totals(std::span(&b, 1), 0);
-    add(r.total, one);
-    if (b.entity < 0) continue;
-    if (by_entity.size() <= static_cast<size_t>(b.entity)) by_entity.resize(b.entity + 1);
-    add(by_entity[b.entity], one);
-  }
+  r.total = totals.total;
+  const std::vector<MotionTotals>& by_entity = totals.by_entity;
   const auto timed = [&](MotionTotals t) {
     if (r.rapid_rate > 0) t.rapid_time_s = 60 * t.rapid_length / r.rapid_rate;
     return t;
@@ -104,6 +134,8 @@ ProgramReport make_report(const Program& p, const MachineProfile& m, const Gcode
   r.gcode_lines = text.lines();
   return r;
 }
+
+}  // namespace
 
 ProgramReport::Planned planned_summary(const MotionPlan& plan) {
   ProgramReport::Planned q;

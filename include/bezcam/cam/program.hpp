@@ -87,6 +87,17 @@ struct Program {
 /// Builds the canonical program: header state, per entity a retract, rapid,
 /// plunge, cut and retract, and the final retract. Does not validate.
 Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt);
+/// The same, calling `while_measuring` with the program once its moves are
+/// final (the part moved, the return move added) while the independent
+/// measurements still run on the other cores: work that reads the moves
+/// only (validation, the motion plan) overlaps them. The readings
+/// (EntityReport::measured, Program::max_measured) are not in yet when it
+/// is called. The program returned has them. A failed measurement is
+/// thrown in preference to an exception from `while_measuring` (the
+/// earliest-added failure, as build_program() throws it); an exception from
+/// `while_measuring` is thrown as it is, after the measurements are done.
+Program build_program(const Job& job, const MachineProfile& m, const ConvertOptions& opt,
+                      const std::function<void(const Program&)>& while_measuring);
 
 /// The profile with the D registers the program's cutter compensation
 /// (G41/G42 D-) expects added to its tool table (tool_diameters_mm): how
