@@ -77,6 +77,36 @@ TEST(BlockLength, ArcsByDirectionFullCircleAndHelix) {
               std::hypot(2 * kPi, 4.0), 1e-12);
 }
 
+// Arcs whose ends lie at different radii (rounding; the controllers run
+// the radius linearly with the angle) against a sum of a million chords of
+// evaluate_block's points: near circles, a wide spiral, helical, in G18,
+// one starting almost at its centre, and the full turn.
+TEST(BlockLength, SpiralArcsAgreeWithADenseChordSum) {
+  std::vector<MotionBlock> spirals{
+      arc_block(BlockKind::arc_ccw, {5, 0, 0}, {0, 5.0001, 0}, {0, 0, 0}),
+      arc_block(BlockKind::arc_cw, {5, 0, 0}, {-1, -3, 0}, {0, 0, 0}),
+      arc_block(BlockKind::arc_ccw, {2, 0, 0}, {-2.5, 0, 4}, {0, 0, 0}),
+      arc_block(BlockKind::arc_ccw, {1e-6, 0, 0}, {0, 3, -1}, {0, 0, 0}),
+      arc_block(BlockKind::arc_cw, {3, 0, 0}, {3.2, 0, 0.5}, {0, 0, 0}),
+  };
+  spirals.push_back(arc_block(BlockKind::arc_ccw, {1, 0, 5}, {1, 3, 8}, {1, 0, 7}));
+  spirals.back().plane = Plane::zx;
+  for (size_t k = 0; k < spirals.size(); ++k) {
+    const MotionBlock& b = spirals[k];
+    double sum = 0;
+    Vec3 prev = b.from;
+    const int n = 1000000;
+    for (int i = 1; i <= n; ++i) {
+      const Vec3 q = evaluate_block(b, double(i) / n);
+      sum += dist(prev, q);
+      prev = q;
+    }
+    // Chords fall short of the arc by O(1/n^2) of its length.
+    EXPECT_NEAR(block_length(b), sum, 1e-9 * sum) << k;
+    EXPECT_GE(block_length(b), sum) << k;
+  }
+}
+
 TEST(SampleBlock, ArcChordsStayWithinTheRequestedError) {
   const auto b = arc_block(BlockKind::arc_ccw, {10, 0, 0}, {-10, 0, 0}, {0, 0, 0});
   for (double chord : {1e-1, 1e-3}) {
