@@ -15,6 +15,7 @@
 // lines.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -421,13 +422,15 @@ class SurfaceEmitter {
     struct Printed {
       Arc arc;  // lines: from, to only
       bool line;
+      std::optional<ArcPoints> pts;  // arcs: their points, measured many times
     };
     std::vector<Printed> moves;
     std::vector<double> breaks{0.0};
     Vec3 from = from_plane(fit.start, pl);
     for (const FitMove& f : fit.moves) {
       const Vec3 to = from_plane(f.to, pl);
-      moves.push_back({Arc{from, to, from_plane(f.center, pl), f.kind == FitKind::arc_ccw, pl}, f.kind == FitKind::line});
+      moves.push_back({Arc{from, to, from_plane(f.center, pl), f.kind == FitKind::arc_ccw, pl}, f.kind == FitKind::line, {}});
+      if (!moves.back().line) moves.back().pts.emplace(moves.back().arc);
       breaks.push_back(ap->breaks[f.piece] + f.t * (ap->breaks[f.piece + 1] - ap->breaks[f.piece]));
       from = to;
     }
@@ -435,7 +438,7 @@ class SurfaceEmitter {
     if (c_.measure) {
       const auto at = [&](size_t j, double s) {
         const Printed& m = moves[j];
-        return m.line ? m.arc.from + (m.arc.to - m.arc.from) * s : m.arc.point(s);
+        return m.line ? m.arc.from + (m.arc.to - m.arc.from) * s : m.pts->at(s);
       };
       const double m = measure_tip_moves(sub, r_, moves.size(), at, breaks).max();
       rep_.measured = std::max(rep_.measured, m);

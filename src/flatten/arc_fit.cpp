@@ -380,7 +380,8 @@ std::vector<Vec3> sample_arc(const PrintedArc& arc, double sagitta) {
   const size_t n = std::max<size_t>(1, static_cast<size_t>(std::ceil(W / step)));
   std::vector<Vec3> out;
   out.reserve(n + 1);
-  for (size_t i = 0; i <= n; ++i) out.push_back(arc.point(static_cast<double>(i) / static_cast<double>(n)));
+  const ArcPoints pts(arc);
+  for (size_t i = 0; i <= n; ++i) out.push_back(pts.at(static_cast<double>(i) / static_cast<double>(n)));
   return out;
 }
 

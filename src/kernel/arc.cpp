@@ -66,12 +66,24 @@ double Arc::sweep() const {
 Vec3 Arc::point(double s) const {
   if (s <= 0) return from;
   if (s >= 1) return to;
-  const Local l(*this);
-  const double w = sweep(), a0 = start_angle();
-  const double a = ccw ? a0 + s * w : a0 - s * w;
-  const double r0 = r_start(), r1 = r_end();
-  const double r = r0 + (r1 - r0) * s;
-  return from_plane({l.c.x + r * std::cos(a), l.c.y + r * std::sin(a), l.f.z + (l.t.z - l.f.z) * s}, plane);
+  return ArcPoints(*this).at(s);
+}
+
+ArcPoints::ArcPoints(const Arc& a)
+    : from_(a.from), to_(a.to), a0_(a.start_angle()), w_(a.sweep()), r0_(a.r_start()), r1_(a.r_end()), ccw_(a.ccw),
+      plane_(a.plane) {
+  const Local l(a);
+  c_ = l.c;
+  z0_ = l.f.z;
+  z1_ = l.t.z;
+}
+
+Vec3 ArcPoints::at(double s) const {
+  if (s <= 0) return from_;
+  if (s >= 1) return to_;
+  const double a = ccw_ ? a0_ + s * w_ : a0_ - s * w_;
+  const double r = r0_ + (r1_ - r0_) * s;
+  return from_plane({c_.x + r * std::cos(a), c_.y + r * std::sin(a), z0_ + (z1_ - z0_) * s}, plane_);
 }
 
 Box3 arc_extent(const Arc& a) {

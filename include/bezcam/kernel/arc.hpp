@@ -56,6 +56,21 @@ struct Arc {
   Vec3 point(double s) const;
 };
 
+/// An arc's points at many parameters: Arc::point() with the centre, the
+/// angles and the radii taken once (the same arithmetic, so the same
+/// points bit for bit), for the loops that sample or search one arc.
+class ArcPoints {
+ public:
+  explicit ArcPoints(const Arc& a);
+  Vec3 at(double s) const;
+
+ private:
+  Vec3 from_, to_, c_;  // c_: the centre in plane coordinates
+  double a0_ = 0, w_ = 0, r0_ = 0, r1_ = 0, z0_ = 0, z1_ = 0;
+  bool ccw_ = true;
+  Plane plane_ = Plane::xy;
+};
+
 /// Extent of the arc's path: both ends plus the points where the path
 /// crosses an axis direction of its plane (0, 90, 180, 270 degrees) inside
 /// the sweep.
