@@ -24,6 +24,9 @@
 ///    rounding of the ends; every emitted arc carries that bound.
 ///  * Only pieces that lie in a plane z = const are fitted with arcs; a
 ///    piece whose z varies gets G01 lines (flatten_curve.hpp's bound).
+///  * With the band (ArcFitOptions::band) those lines end off the curve,
+///    as the flattener's band vertices do, and the arc after such a line
+///    starts from its printed end: the same bound covers it.
 #include <functional>
 #include <span>
 #include <vector>
@@ -47,6 +50,15 @@ struct ArcFitOptions {
   /// the bound covers the in-plane and axial parts together. When false,
   /// only pieces in a plane z = const get arcs, whose z is constant.
   bool helical = false;
+  /// The tolerance as a band on both sides of the curve (not with
+  /// `helical`): a G01 line's inner end may lie off the curve, shifted
+  /// towards its convex side as the flattener's band vertices are (so the
+  /// lines a piece that is not planar or nearly straight needs get about 1.4
+  /// times longer), and the arc after it starts from that printed point.
+  /// Arc ends stay on the curve (arc_fit.cpp says why), and so does every
+  /// piece's end (within rounding). false: every span end lies on the
+  /// curve (before rounding).
+  bool band = false;
 };
 
 enum class FitKind { line, arc_cw, arc_ccw };
