@@ -54,29 +54,29 @@
 // Finally the drawn path lies at the printed z' while a planar piece lies at
 // z: the 3D distance is hypot(B, |z - z'|).
 //
-// The band (ArcFitOptions::band). A line may then end off the curve, up to
-// kBandShare of the budget towards its convex side; it is proven by
-// band_deviation() (flatten_curve.hpp) between its printed ends, a
-// parametric distance that bounds both directions. The next arc starts at
-// that printed point S', up to the budget away from S = C(t0). Nothing
-// above assumed S' close to S beyond what B counts: d(p) and (a) do not
-// involve S; the angular argument needs only the curve within U < rmin/2 of
-// D (so off the disc of radius rmin/2 around c'), W < pi and the end discs
-// of radius rmin/2 around S' and E' (30 degrees each), none of which refers
-// to S; the sliver between the angles of S' and S is within
-// max(|S'-S|, ||S-c'| - r_s|) + |rho - r_s| of S whatever |S'-S| is,
-// because the distance from S to a point of the circle of radius r_s grows
-// with the angle between them; and |S-S'| enters B as it is. The z term is
-// unchanged: S' keeps the piece's rounded z. So the same B bounds an arc
-// from an off-curve start. Arc ends themselves stay on the curve (before
-// rounding): the circle's three parameters absorb what a span's curvature
-// does up to a linear change, whose error then grows like s^3 along it, and
-// with a shared joint value a at both ends the least error over a span is
-// reached at a = 0 (p(s) = a + k s (s - L) (s - L/2) is odd about the middle
-// but for a). An end moved off the curve (the minimax arc with a free end,
-// whose errors at its two ends have opposite signs) makes that span up to
-// 15 % longer and the next one shorter by more: on the corpus of cubics it
-// took 2 to 8 % more blocks (bench/output_modes_bench --corpus).
+// The band (ArcFitOptions::band). On a piece that gets no arcs (its z
+// varies, or its rounded z leaves no budget in the plane) the lines' inner
+// ends are shifted off the curve towards its convex side by kBandShare of
+// what rounding leaves, as the flattener's band vertices are, and each line
+// is proven by band_deviation() (flatten_curve.hpp) between its printed
+// ends: a parametric distance, which bounds both directions, rounding
+// included since the ends are the printed points. The piece's ends stay on
+// the curve (the last line ends at t = 1, where no shift is made), so the
+// planar pieces around it and their arcs are as without the band.
+// Arc ends stay on the curve, for a measured reason. The proof above would
+// take an off-curve start S' as it is (nothing in (a), the angular argument
+// or the sliver bound needs S' near S beyond the |S-S'| that B counts), but
+// the arcs would not get longer: a circle's three parameters absorb a
+// span's curvature up to its linear change, so the error along a span of
+// length L grows like p(s) = a + (b - a) s / L + k s (s - L) (s - m), a and
+// b the offsets at its ends. With a = b shared by consecutive spans, the
+// best is a = 0 (on the curve); the minimax arc with a free end (errors of
+// opposite signs at its ends, about 15 % longer alone) leaves the next span
+// starting at the wrong sign. On the corpus of cubics
+// (bench/output_modes_bench --corpus --quick) free ends took 1.8, 5.7 and
+// 8.0 % more blocks at 0.1, 0.01 and 0.001 mm, and band lines between the
+// arcs of planar pieces 0.1 % more (an arc after a shifted line starts
+// off the curve, where it is shorter).
 //
 // Helical arcs (ArcFitOptions::helical; G17 in the plane's coordinates,
 // the axis h of D running linearly with the angle from h_s = S'.h to
@@ -272,53 +272,6 @@ struct Span {
   Vec3 Sr, Er;  // printed ends
 };
 
-// The minimax circle through two given ends A and B over the samples P:
-// centre on the perpendicular bisector of A B, bulge chosen minimax over the
-// radial misfit |dist(p, c) - |A - c|| by golden section from the
-// three-point circle (A, the middle sample, B). Nothing when the samples lie
-// on the chord or the bulge leaves the allowed range.
-struct CentreFit {
-  Vec3 c;
-  bool ccw = false;
-  double misfit = kInf;
-};
-std::optional<CentreFit> fit_centre(const Vec3& A, const Vec3& B, std::span<const Vec3> P) {
-  const Vec3 chord{B.x - A.x, B.y - A.y, 0};
-  const double L = norm2(chord);
-  if (!(L > 0)) return std::nullopt;
-  const Vec3 u = chord / L, n{-u.y, u.x, 0};
-  const Vec3 M = (A + B) * 0.5;
-  // Three-point circle through A, the middle sample and B: its bulge.
-  const Vec3 pm = P[P.size() / 2] - M;
-  const double xm = dot2(pm, u), ym = dot2(pm, n);
-  if (std::abs(ym) <= 1e-9 * L) return std::nullopt;
-  const double k3 = (xm * xm + ym * ym - L * L / 4) / (2 * ym);
-  const double r3 = std::sqrt(L * L / 4 + k3 * k3);
-  const double b3 = ym > 0 ? k3 + r3 : k3 - r3;
-  // Bulge b: arc midpoint M + n b; centre M + n k, k = (b^2 - L^2/4) / 2b.
-  const double bmax = L / 2 * std::tan(kMaxSweep / 4);
-  const double bmin = L / (8 * kMaxRadiusPerChord);
-  auto centre_of = [&](double bb) { return M + n * ((bb * bb - L * L / 4) / (2 * bb)); };
-  auto misfit = [&](double bb) {
-    const Vec3 c = centre_of(bb);
-    const double r = dist2(A, c);
-    double m = 0;
-    for (const auto& p : P) m = std::max(m, std::abs(dist2(p, c) - r));
-    return m;
-  };
-  const double sgn = b3 > 0 ? 1 : -1;
-  double lo = std::clamp(0.6 * std::abs(b3), bmin, bmax), hi = std::clamp(1.4 * std::abs(b3), bmin, bmax);
-  if (!(hi > lo)) return std::nullopt;
-  {
-    const auto g = flatten_detail::golden_section(lo, hi, [&](double x) { return misfit(sgn * x); }, 40, 1e-12 * L);
-    lo = g.a;
-    hi = g.b;
-  }
-  const double bb = sgn * 0.5 * (lo + hi);
-  // A bulge to the left of A->B means clockwise travel.
-  return CentreFit{centre_of(bb), bb < 0, misfit(bb)};
-}
-
 // The unit vector at t towards the curve's convex side: minus the part of
 // M'' across the tangent, normalised; zero where the tangent vanishes or
 // the curve hardly bends (that part below 1e-12 of |M''|).
@@ -332,26 +285,53 @@ Vec3 convex_side(const Bezier& b, double t) {
   return across * (-1 / l);
 }
 
-// Fits one arc to the span and certifies it: the minimax circle through its
-// printed start (with the band, else the curve point S) and the curve point E
-// (fit_centre()), then the printed centre among the grid points around it,
-// then certification. Returns nothing when no arc fits `budget_xy`.
+// Fits one arc to the span: centre on the perpendicular bisector of S E,
+// bulge chosen minimax over samples (golden section from the three-point
+// circle), then the printed centre among the grid points around it, then
+// certification. Returns nothing when no arc fits `budget_xy`.
 double span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
                       double resolution, bool helical);
 
-std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, double budget_xy, double rtol,
-                                    bool band) {
-  const Vec3 S0 = band ? sp.Sr : sp.S;
-  const double L = dist2(S0, sp.E);
+std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, double budget_xy, double rtol) {
+  const Vec3 chord{sp.E.x - sp.S.x, sp.E.y - sp.S.y, 0};
+  const double L = norm2(chord);
   const double q = opt.decimals >= 0 ? std::pow(10.0, -opt.decimals) : 0.0;
   // Printed ends that coincide would mean a full circle.
   if (!(L > 0) || dist2(sp.Er, sp.Sr) < std::max(1.5 * q, 1e-12 * L)) return std::nullopt;
+  const Vec3 u = chord / L, n{-u.y, u.x, 0};
+  const Vec3 M = (sp.S + sp.E) * 0.5;
   std::array<Vec3, kFitSamples - 1> P;
   for (int j = 1; j < kFitSamples; ++j) P[j - 1] = point_at(sp.b, sp.t0 + (sp.t1 - sp.t0) * j / kFitSamples);
-  const auto fit = fit_centre(S0, sp.E, P);
-  if (!fit || fit->misfit > budget_xy) return std::nullopt;  // hopeless even before rounding
-  const Vec3 c = fit->c;
-  const bool ccw = fit->ccw;
+  // Three-point circle through S, the middle sample and E: its bulge.
+  const Vec3 pm = P[kFitSamples / 2 - 1] - M;
+  const double xm = dot2(pm, u), ym = dot2(pm, n);
+  if (std::abs(ym) <= 1e-9 * L) return std::nullopt;
+  const double k3 = (xm * xm + ym * ym - L * L / 4) / (2 * ym);
+  const double r3 = std::sqrt(L * L / 4 + k3 * k3);
+  const double b3 = ym > 0 ? k3 + r3 : k3 - r3;
+  // Bulge b: arc midpoint M + n b; centre M + n k, k = (b^2 - L^2/4) / 2b.
+  const double bmax = L / 2 * std::tan(kMaxSweep / 4);
+  const double bmin = L / (8 * kMaxRadiusPerChord);
+  auto centre_of = [&](double bb) { return M + n * ((bb * bb - L * L / 4) / (2 * bb)); };
+  auto misfit = [&](double bb) {
+    const Vec3 c = centre_of(bb);
+    const double r = dist2(sp.S, c);
+    double m = 0;
+    for (const auto& p : P) m = std::max(m, std::abs(dist2(p, c) - r));
+    return m;
+  };
+  const double sgn = b3 > 0 ? 1 : -1;
+  double lo = std::clamp(0.6 * std::abs(b3), bmin, bmax), hi = std::clamp(1.4 * std::abs(b3), bmin, bmax);
+  if (!(hi > lo)) return std::nullopt;
+  {
+    const auto g = flatten_detail::golden_section(lo, hi, [&](double x) { return misfit(sgn * x); }, 40, 1e-12 * L);
+    lo = g.a;
+    hi = g.b;
+  }
+  const double bb = sgn * 0.5 * (lo + hi);
+  if (misfit(bb) > budget_xy) return std::nullopt;  // hopeless even before rounding
+  const Vec3 c = centre_of(bb);
+  const bool ccw = bb < 0;  // bulge to the left of S->E means clockwise travel
 
   // Printed centres: the rounded one and its grid neighbours, best first.
   struct Option {
@@ -452,8 +432,7 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
   const double scale = control_magnitude(pieces);
   const ToleranceBudget tb = check_tolerance(tol, opt.decimals, pieces.front().dim, scale);
   const double budget = tb.budget;
-  // The band (not for helical fits): lines may end off the curve and arcs
-  // start from such an end (see the top).
+  // The band (not for helical fits): see the top.
   const bool band = opt.band && !opt.helical;
   // The controller compares radii computed from the same printed numbers;
   // keep a floating-point margin below its limit.
@@ -470,17 +449,20 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
     const double budget_xy = dz < budget ? std::sqrt(budget * budget - dz * dz) : -1.0;
     // How far a line's inner end is shifted off the curve: the flattener's
     // share of what the tolerance leaves after rounding.
-    const double line_shift = band ? kBandShare * (budget - tb.rounding) : 0.0;
+    const double line_shift = kBandShare * (budget - tb.rounding);
+    // The band on pieces that get no arcs (see the top).
+    const bool line_band = band && !(planar && budget_xy > 0);
     double t0 = 0;
     Vec3 S = b.front();
     while (t0 < 1) {
       // Longest chord: the flattener's bound (exact deviation + rounding).
-      // In the band: the chord from the printed point to the end shifted
-      // towards the convex side (or, when that fails, on the curve), proven
-      // by band_deviation() between the printed points themselves.
+      // In the band (a piece without arcs): the chord from the printed
+      // point to the end shifted towards the convex side (or, when that
+      // fails, on the curve), proven by band_deviation() between the
+      // printed points themselves.
       auto line_ok = [&](double t1, Vec3& E, Vec3& Er, double& dev) {
         E = point_at(b, t1);
-        if (band) {
+        if (line_band) {
           const Vec3 side = t1 < 1 ? convex_side(b, t1) : Vec3{};
           if (side.x != 0 || side.y != 0 || side.z != 0) {
             Er = quantize(E + side * line_shift, opt.decimals);
@@ -528,7 +510,7 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
           const double t1 = adt >= 1 - t0 ? 1.0 : t0 + adt;
           const Vec3 E = point_at(b, t1);
           const Span sp{.b = b, .t0 = t0, .t1 = t1, .S = S, .E = E, .Sr = Sr, .Er = quantize(E, opt.decimals)};
-          if (auto c = try_arc(sp, opt, budget_xy, rtol, band)) {
+          if (auto c = try_arc(sp, opt, budget_xy, rtol)) {
             found = c;
             found_t1 = t1;
             foundE = E;
