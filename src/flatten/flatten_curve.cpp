@@ -189,7 +189,7 @@ double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
 // `inner`, when not null, receives the largest magnitude of the cross part
 // at its interior extremes (0 when it has none), whatever the sides: for
 // chords across an inflection, which have no bulge, it steers the search.
-double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double budget, double* bulge,
+inline __attribute__((always_inline)) double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double budget, double* bulge,
                          double* inner = nullptr) {
   const double abx = B.x - A.x, aby = B.y - A.y;
   const double l2 = abx * abx + aby * aby;
@@ -200,6 +200,28 @@ double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double bud
   const double c0 = cross_ab(d0x, d0y), c1 = cross_ab(w1x, w1y), c2 = cross_ab(w2x, w2y), c3 = cross_ab(d3x, d3y);
   const double l1 = dot_ab(w1x, w1y), l2p = dot_ab(w2x, w2y);
   const bool clamped = !(l2 > 1e-300) || l1 < 0 || l1 > l2 || l2p < 0 || l2p > l2;
+  const double sg = c1 + c2 >= 0 ? 1 : -1;
+  if (!clamped) {
+    // A sufficient test first, without roots: the cross part split at
+    // s = 1/2 (de Casteljau) lies within the hull of its 7 control values,
+    // which is exact for a symmetric bump and within a few per cent of the
+    // largest value for the chords the search tries. When that bound with
+    // the along part's fits the budget, it is the answer (and the values
+    // past the ends steer the search, a little on the safe side).
+    const double a = 0.5 * (c0 + c1), b = 0.5 * (c1 + c2), c = 0.5 * (c2 + c3);
+    const double ab = 0.5 * (a + b), bc = 0.5 * (b + c), m = 0.5 * (ab + bc);
+    const double hin = std::max(std::max(std::max(std::abs(a), std::abs(ab)), std::max(std::abs(m), std::abs(bc))), std::abs(c));
+    const double hb = std::max(hin, std::max(std::abs(c0), std::abs(c3)));
+    const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
+    const double U2 = hb * hb + std::max(a0 * a0, a3 * a3);
+    if (U2 <= budget * budget * l2) {
+      const double inv = 1 / std::sqrt(l2);
+      if (bulge && sg * c0 <= 0 && sg * c3 <= 0)
+        *bulge = std::max(std::max(std::max(sg * a, sg * ab), std::max(sg * m, sg * bc)), sg * c) * inv;
+      if (inner) *inner = hin * inv;
+      return std::sqrt(U2) * inv;
+    }
+  }
   // Extremes of the cross part: the ends and the roots of its derivative,
   // 3 B2(c1 - c0, c2 - c1, c3 - c2), in power form.
   const double e0 = c1 - c0, e1 = c2 - c1, e2 = c3 - c2;
@@ -209,7 +231,6 @@ double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double bud
   // The bulge: on the side sg of the inner points, the largest interior
   // extreme, when both ends lie on the other side (a shape the search's
   // model fits; otherwise the bulge is left unknown).
-  const double sg = c1 + c2 >= 0 ? 1 : -1;
   double in = -kInf, mag = 0;
   for (int i = 0; i < n; ++i) {
     const double s = r[i], u = 1 - s;
