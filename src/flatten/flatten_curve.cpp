@@ -528,31 +528,42 @@ constexpr double kCrossClose = 0.93;
 // The search for such a chord: a root of f(dt) = cbrt(extreme) -
 // cbrt(kBandAim budget) (the cube law makes it about linear), by regula
 // falsi with the Illinois modification (an end kept twice in a row has its
-// value halved, so that both ends move), or, with one end known, by the
-// cube law from it.
+// value halved, so that both ends move). With one end known, by a power law
+// from it: the cube, or the exponent the last two tries on that side show
+// (the extreme near an end shifted off the curve hardly changes with the
+// step, and a cube law would then creep).
 struct CrossSearch {
   double f_lo = kInf, f_hi = kInf;  // f at lo and hi; infinity: not known
   int last = 0;                     // which end moved last: -1 lo, +1 hi
+  double dt_last = 0, in_last = -1, dt_prev = 0, in_prev = -1;  // the last two tries on the side `last`
   // Records a try of step dt whose extreme is `inner` (fitting or not).
-  void record(bool ok, double inner, double budget) {
+  void record(bool ok, double dt, double inner, double budget) {
     const double f = std::cbrt(inner) - std::cbrt(kBandAim * budget);
-    if (ok) {
-      if (last == -1 && std::isfinite(f_hi)) f_hi *= 0.5;
-      f_lo = f, last = -1;
+    const int side = ok ? -1 : 1;
+    if (side == last) {
+      (ok ? f_hi : f_lo) *= 0.5;  // infinity stays infinity
+      dt_prev = dt_last, in_prev = in_last;
     } else {
-      if (last == 1 && std::isfinite(f_lo)) f_lo *= 0.5;
-      f_hi = f, last = 1;
+      in_prev = -1;
     }
+    (ok ? f_lo : f_hi) = f;
+    last = side, dt_last = dt, in_last = inner;
   }
   // The next step in the bracket [lo, hi] (hi infinite: none yet).
   double next(double lo, double hi, double budget) const {
-    const double target = std::cbrt(kBandAim * budget);
     if (std::isfinite(f_lo) && std::isfinite(f_hi) && std::isfinite(hi) && lo > 0) {
       const double nd = f_hi > f_lo ? lo + (hi - lo) * -f_lo / (f_hi - f_lo) : 0.5 * (lo + hi);
       return std::clamp(nd, lo + 0.05 * (hi - lo), hi - 0.05 * (hi - lo));
     }
-    if (std::isfinite(f_lo) && !std::isfinite(hi)) return lo * std::clamp(target / (f_lo + target), 1.03, 2.0);
-    if (std::isfinite(f_hi) && lo <= 0) return hi * std::clamp(target / (f_hi + target), 0.3, 0.95);
+    const bool grow = std::isfinite(f_lo) && !std::isfinite(hi), shrink = std::isfinite(f_hi) && lo <= 0;
+    if (grow || shrink) {
+      const double dt = grow ? lo : hi, in = in_last;
+      double p = 3;
+      if (in_prev > 0 && in > 0 && dt_prev > 0 && dt_prev != dt)
+        p = std::clamp(std::log(in / in_prev) / std::log(dt / dt_prev), 0.5, 3.0);
+      const double g = in > 0 ? std::pow(kBandAim * budget / in, 1 / p) : 2.0;
+      return grow ? lo * std::clamp(g, 1.03, 2.0) : hi * std::clamp(g, 0.3, 0.95);
+    }
     // One end known without an extreme: halve the bracket.
     return std::isfinite(hi) ? 0.5 * (lo + hi) : 2 * lo;
   }
@@ -708,7 +719,7 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
           cur ^= 1;  // c is now the best
           if (last || lo >= kBandClose * hi || fill >= kBandAccept) break;
           if (!std::isfinite(fill) && c.inner >= 0) {
-            cross.record(true, c.inner, c.budget);
+            cross.record(true, dt, c.inner, c.budget);
             if (lo >= kCrossClose * hi || c.inner >= kCrossAccept * c.budget) break;
             dt = cross.next(lo, hi, c.budget);
             step = std::min(2 * step, 1.0);
@@ -721,7 +732,7 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
           hi = dt;
           if (found && lo >= kBandClose * hi) break;
           if (!std::isfinite(fill) && c.inner >= 0) {
-            cross.record(false, c.inner, c.budget);
+            cross.record(false, dt, c.inner, c.budget);
             if (found && lo >= kCrossClose * hi) break;
             dt = cross.next(lo, hi, c.budget);
             step = std::min(2 * step, 1.0);
