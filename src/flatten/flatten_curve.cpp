@@ -216,8 +216,13 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Vec3* S, co
     const double U2 = hb * hb + std::max(a0 * a0, a3 * a3);
     if (U2 <= budget * budget * l2) {
       const double inv = 1 / std::sqrt(l2);
-      if (bulge && sg * c0 <= 0 && sg * c3 <= 0)
-        *bulge = std::max(std::max(std::max(sg * a, sg * ab), std::max(sg * m, sg * bc)), sg * c) * inv;
+      if (bulge && sg * c0 <= 0 && sg * c3 <= 0) {
+        // The peak of the parabola through the values at 1/4, 1/2 and 3/4
+        // (a near-symmetric bump's top, for steering only), at most the hull's.
+        const double w1 = sg * (27 * (c0 + c1) + 9 * c2 + c3) / 64, w2 = sg * m, w3 = sg * (c0 + 9 * c1 + 27 * (c2 + c3)) / 64;
+        const double den = 2 * w2 - w1 - w3, top = std::max(std::max(sg * a, sg * ab), std::max(std::max(w2, sg * bc), sg * c));
+        *bulge = (den > 0 ? std::min(top, w2 + (w3 - w1) * (w3 - w1) / (8 * den)) : top) * inv;
+      }
       if (inner) *inner = hin * inv;
       return std::sqrt(U2) * inv;
     }
