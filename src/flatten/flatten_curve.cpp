@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <tuple>
 #include <stdexcept>
@@ -575,10 +574,15 @@ struct CrossSearch {
 };
 
 #ifdef BEZCAM_FLATTEN_COUNTERS
+// For measurement only (bench/flatten_tries.sh builds the benchmark with
+// it): the band's chord searches and their tries, by kind (steered by the
+// bulge; across an inflection, where some try had none; the piece's last
+// chord), with how many searches took 1, 2, ..., 8 or more tries, printed
+// to stderr at exit.
 struct Counters {
   long searches[3] = {}, tries[3] = {}, hist[3][8] = {};
   ~Counters() {
-    const char* names[3] = {"steered", "unsteered", "last"};
+    const char* names[3] = {"steered", "inflection", "last"};
     for (int k = 0; k < 3; ++k) {
       std::fprintf(stderr, "%-10s searches %ld tries %ld (%.2f)", names[k], searches[k], tries[k], searches[k] ? double(tries[k]) / searches[k] : 0.0);
       for (int i = 0; i < 8; ++i) std::fprintf(stderr, " %ld", hist[k][i]);
@@ -716,7 +720,6 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
 #ifdef BEZCAM_FLATTEN_COUNTERS
         ++n_tries;
         if (!std::isfinite(fill)) unsteered = true;
-        if (std::getenv("FS3TRACE")) std::fprintf(stderr, "  t0 %.6f dt %.6g ok %d on %d fill %.4g inner/b %.4g dev/b %.6g lo %.6g hi %.6g\n", t0, dt, ok, c.on, fill, c.inner / c.budget, c.dev / c.budget, lo, hi);
 #endif
         if (ok) {
           found = true;
