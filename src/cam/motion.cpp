@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "bezcam/kernel/knot_vector.hpp"
+#include "bezcam/kernel/quadrature.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 
 namespace bezcam {
@@ -62,40 +63,16 @@ double arc_length(const BlockCurve& c, double t0, const Vec3& p0, double t1, con
 // Length of a spiral arc (the controllers' arc whose ends lie at different
 // radii after rounding: the radius moves linearly with the angle, as the
 // axis does): the integral over s in [0, 1] of sqrt(dr^2 + dz^2 + (w r(s))^2),
-// a smooth integrand (r >= 0), by 8-point Gauss-Legendre rules on halves
-// compared with the whole until they agree to `eps`.
+// a smooth integrand (r >= 0), by the kernel's adaptive Gauss-Legendre
+// quadrature to `eps`.
 double spiral_length(double r0, double r1, double w, double dz, double eps) {
-  static constexpr double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-  static constexpr double g[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
   const double a = (r1 - r0) * (r1 - r0) + dz * dz;
-  auto f = [&](double s) {
-    const double r = w * (r0 + (r1 - r0) * s);
-    return std::sqrt(a + r * r);
-  };
-  auto rule = [&](double s0, double s1) {
-    const double m = 0.5 * (s0 + s1), h = 0.5 * (s1 - s0);
-    double sum = 0;
-    for (int k = 0; k < 4; ++k) sum += g[k] * (f(m - h * x[k]) + f(m + h * x[k]));
-    return h * sum;
-  };
-  struct Span {
-    double s0, s1, whole, eps;
-    int depth;
-  };
-  double len = 0;
-  std::vector<Span> todo{{0, 1, rule(0, 1), eps, 0}};
-  while (!todo.empty()) {
-    const Span sp = todo.back();
-    todo.pop_back();
-    const double m = 0.5 * (sp.s0 + sp.s1), left = rule(sp.s0, m), right = rule(m, sp.s1);
-    if (std::abs(left + right - sp.whole) <= sp.eps || sp.depth >= 30) {
-      len += left + right;
-      continue;
-    }
-    todo.push_back({sp.s0, m, left, sp.eps / 2, sp.depth + 1});
-    todo.push_back({m, sp.s1, right, sp.eps / 2, sp.depth + 1});
-  }
-  return len;
+  return integrate(
+      [&](double s) {
+        const double r = w * (r0 + (r1 - r0) * s);
+        return std::sqrt(a + r * r);
+      },
+      0, 1, eps);
 }
 
 double box_size(const MotionBlock& b) {

@@ -849,10 +849,17 @@ struct Builder {
     for (size_t i = 0; i < n; ++i) profile_one(lean[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
     if (j > 0) {
       std::vector<char> acc_in(n, 1), acc_out(n, 1), dec_in(n, 1), dec_out(n, 1);
-      auto ends_acc = [&](const Lean& q) { return q.t_acc > 0 && q.t_cruise <= 0 && q.t_dec <= 0; };
-      auto starts_acc = [&](const Lean& q) { return q.t_acc > 0; };
-      auto ends_dec = [&](const Lean& q) { return q.t_dec > 0; };
-      auto starts_dec = [&](const Lean& q) { return q.t_dec > 0 && q.t_acc <= 0 && q.t_cruise <= 0; };
+      // A phase counts when it covers more than rounding would leave of the
+      // segment (1e-9 of its length, at most its peak speed times its
+      // duration): a cruise or a ramp of a few ulps, left where the speeds
+      // meet exactly on paper, must not decide whether a ramp continues into
+      // the next segment (that would move the time by a jerk's share of a
+      // ramp for a change of 1e-12 in a length).
+      auto has = [](const Lean& q, double t) { return t * q.vpeak > 1e-9 * q.length; };
+      auto ends_acc = [&](const Lean& q) { return has(q, q.t_acc) && !has(q, q.t_cruise) && !has(q, q.t_dec); };
+      auto starts_acc = [&](const Lean& q) { return has(q, q.t_acc); };
+      auto ends_dec = [&](const Lean& q) { return has(q, q.t_dec); };
+      auto starts_dec = [&](const Lean& q) { return has(q, q.t_dec) && !has(q, q.t_acc) && !has(q, q.t_cruise); };
       for (size_t i = 0; i + 1 < n; ++i) {
         if (ends_acc(lean[i]) && starts_acc(lean[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
         if (ends_dec(lean[i]) && starts_dec(lean[i + 1])) dec_out[i] = dec_in[i + 1] = 0;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bezcam/error.hpp"
+#include "bezcam/kernel/minimize.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "flatten/search.hpp"
@@ -281,12 +282,21 @@ std::optional<TipApprox> approximate_tip(const SurfaceCurve& c, double radius, d
 
 namespace {
 
-// The smallest value seen by `iters` golden-section steps on [a, b],
-// the bracket's ends included.
+// The smallest distance from x to point(t) for t in [lo, hi]: Brent's
+// method on the squared distance, smooth even where the distance reaches 0
+// (the distance itself grows linearly off such a minimum, which only
+// bisection-like steps pin down), located to 1e-10 of the window.
+template <class P>
+double nearest_distance(double lo, double hi, const Vec3& x, P point) {
+  const auto m = brent_min(lo, hi, [&](double t) { const Vec3 d = point(t) - x; return dot(d, d); }, 1e-10 * (hi - lo));
+  return std::sqrt(m.f);
+}
+
+// The largest value of f on [a, b] (bracketing a sampled peak), located to
+// 1e-7 of the window.
 template <class F>
-double golden_min(double a, double b, F f, int iters) {
-  const auto g = flatten_detail::golden_section(a, b, f, iters, -1);
-  return std::min({g.f1, g.f2, f(g.a), f(g.b)});
+double peak_value(double a, double b, F f) {
+  return -brent_min(a, b, [&](double s) { return -f(s); }, 1e-7 * (b - a)).f;
 }
 
 }  // namespace
@@ -313,17 +323,14 @@ Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p
       if (e > best) best = e, bt = t;
     }
     const double h = (b - a) / kSamples;
-    best = std::max(best, -golden_min(std::max(a, bt - h), std::min(b, bt + h),
-                                      [&](double t) { return -dist_poly(tip(t), i); }, 30));
+    best = std::max(best, peak_value(std::max(a, bt - h), std::min(b, bt + h), [&](double t) { return dist_poly(tip(t), i); }));
     d.curve_to_path = std::max(d.curve_to_path, best);
     // Polyline -> curve: chord points to their nearest curve point, searched
     // over the vertices' parameter range widened by half a segment each side.
     const double lo = std::max(0.0, a - 0.5 * (b - a)), hi = std::min(1.0, b + 0.5 * (b - a));
     for (int s = 1; s < kSamples; ++s) {
       const Vec3 x = lerp(V[i], V[i + 1], double(s) / kSamples);
-      // Near-zero distances grow linearly off the minimum, so the search
-      // must pin the parameter down to about 1e-10 of the window.
-      const double e = golden_min(lo, hi, [&](double t) { return dist(tip(t), x); }, 50);
+      const double e = nearest_distance(lo, hi, x, tip);
       d.path_to_curve = std::max(d.path_to_curve, e);
     }
     d.path_to_curve = std::max(d.path_to_curve, dist(V[i], tip(a)));
@@ -353,12 +360,12 @@ Deviation measure_tip_core(const SurfaceCurve& c, double radius, size_t n,
       const Vec3 x = printed(j, s);
       const double t = a + s * w, h = w / 16;
       const double lo = in_step ? t - h : a - w / 4, hi = in_step ? t + h : b + w / 4;
-      return golden_min(std::max(0.0, lo), std::min(1.0, hi), [&](double u) { return dist(tip(u), x); }, 50);
+      return nearest_distance(std::max(0.0, lo), std::min(1.0, hi), x, tip);
     };
     auto to_piece = [&](double s) {
       const Vec3 x = tip(a + s * w);
       const double lo = in_step ? s - 1.0 / 16 : 0.0, hi = in_step ? s + 1.0 / 16 : 1.0;
-      return golden_min(std::max(0.0, lo), std::min(1.0, hi), [&](double u) { return dist(printed(j, u), x); }, 50);
+      return nearest_distance(std::max(0.0, lo), std::min(1.0, hi), x, [&](double u) { return printed(j, u); });
     };
     auto worst_of = [&](const auto& f) {
       std::vector<double> v(kSamples + 1);
@@ -368,7 +375,7 @@ Deviation measure_tip_core(const SurfaceCurve& c, double radius, size_t n,
         const bool peak = (i == 0 || v[i] >= v[i - 1]) && (i == kSamples || v[i] >= v[i + 1]);
         if (!peak) continue;
         const double s0 = std::max(0.0, double(i - 1) / kSamples), s1 = std::min(1.0, double(i + 1) / kSamples);
-        m = std::max(m, -golden_min(s0, s1, [&](double s) { return -f(s); }, 30));
+        m = std::max(m, peak_value(s0, s1, f));
       }
       return m;
     };

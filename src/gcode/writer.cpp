@@ -65,6 +65,7 @@ class Writer {
          u + ", rounding included");
     if (m_.comments) {
       tools();
+      registers();
       cycle_time();
     }
     for (const auto& n : p_.notes) note(n);
@@ -108,6 +109,22 @@ class Writer {
     }
     if (list.empty() || (list.size() == 1 && list.front().first < 0)) return;
     for (const auto& [tool, labels] : list) note("T" + std::to_string(tool) + ": " + labels);
+  }
+  // Under the controller's compensation (G41/G42 D-), what each D register
+  // must hold, next to the tools: the operator sets the tool table from it.
+  void registers() {
+    std::vector<std::pair<int, double>> regs;  // D, radius, in the order first used
+    for (const Move& mv : p_.moves)
+      if (const auto* cc = std::get_if<CompensationMove>(&mv.what); cc && cc->side != 0 &&
+          std::none_of(regs.begin(), regs.end(), [&](const auto& r) { return r.first == cc->d; }))
+        regs.push_back({cc->d, cc->radius});
+    const char* unit = p_.units == Units::inch ? " in" : " mm";
+    for (const auto& [d, r] : regs) {
+      char b[128];
+      std::snprintf(b, sizeof b, "D%d: tool radius %s%s (diameter %s%s) for G41/G42", d, format_significant(r, 6).c_str(),
+                    unit, format_significant(2 * r, 6).c_str(), unit);
+      note(b);
+    }
   }
   // The cycle time the report gives: the program planned on the machine's
   // motion model when the profile has one (cam/planner.hpp), else feeds and

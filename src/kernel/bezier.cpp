@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bezcam/error.hpp"
+#include "bezcam/kernel/quadrature.hpp"
 
 namespace bezcam {
 
@@ -251,32 +252,10 @@ Box3 bounds(const Bezier& b) {
   return box;
 }
 
-namespace {
-// 7-point Gauss-Legendre on [a, b] of |M'(t)|.
-double gl7(const Bezier& b, double a, double c) {
-  static constexpr std::array<double, 7> x = {0.0, 0.4058451513773972, -0.4058451513773972, 0.7415311855993945,
-                                              -0.7415311855993945, 0.9491079123427585, -0.9491079123427585};
-  static constexpr std::array<double, 7> w = {0.4179591836734694, 0.3818300505051189, 0.3818300505051189,
-                                              0.2797053914892766, 0.2797053914892766, 0.1294849661688697,
-                                              0.1294849661688697};
-  const double h = (c - a) / 2, m = (a + c) / 2;
-  double s = 0;
-  for (int i = 0; i < 7; ++i) s += w[i] * norm(derivative(b, m + h * x[i]));
-  return s * h;
-}
-double adaptive_length(const Bezier& b, double a, double c, double whole, double tol, int depth) {
-  const double m = (a + c) / 2;
-  const double l = gl7(b, a, m), r = gl7(b, m, c);
-  if (depth > 30 || std::abs(l + r - whole) <= tol) return l + r;
-  return adaptive_length(b, a, m, l, tol / 2, depth + 1) + adaptive_length(b, m, c, r, tol / 2, depth + 1);
-}
-}  // namespace
-
 double length(const Bezier& b) {
-  const double whole = gl7(b, 0, 1);
   double poly = 0;
   for (int i = 1; i <= b.degree(); ++i) poly += dist(b.points[i], b.points[i - 1]);
-  return adaptive_length(b, 0, 1, whole, 1e-10 * std::max(poly, 1e-300), 0);
+  return integrate([&](double t) { return norm(derivative(b, t)); }, 0, 1, 1e-10 * std::max(poly, 1e-300));
 }
 
 double binomial(int n, int k) {

@@ -253,6 +253,34 @@ TEST(Planner, SamplesAreDeterministicAndWithinTheLimits) {
   EXPECT_NEAR(prev.y, 0, 1e-9);
 }
 
+TEST(Planner, TheCycleTimeIsContinuousInTheLengths) {
+  // A ramp that runs over several collinear segments builds its jerk up
+  // once. Whether a segment's ramp continues into the next must not hang on
+  // a cruise or a deceleration of a few ulps left by rounding: moving the
+  // joints by 1e-10 mm changes the time by about that much, not by the
+  // jerk's share of a ramp (a / 2j = 25 ms here).
+  MotionModel m = model(60000, 1000);
+  m.max_jerk_mm_s3 = std::array<double, 3>{20000, 20000, 20000};
+  auto program = [](double shift) {
+    std::string g = std::string(kHead) + "G1 F60000\n";
+    double x = 0;
+    for (int i = 0; i < 12; ++i) {
+      x += 0.37 + 0.011 * i + (i == 5 ? shift : 0);
+      char b[64];
+      std::snprintf(b, sizeof b, "X%.12f\n", x);
+      g += b;
+    }
+    return g + "M30\n";
+  };
+  double lo = 1e300, hi = -1e300;
+  for (int k = 0; k <= 40; ++k) {
+    const double t = plan(program(1e-11 * k), m).cycle_time_s;
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  EXPECT_LT(hi - lo, 1e-6) << "cycle times from " << lo << " to " << hi << " s";
+}
+
 TEST(Planner, InchProgramsUseTheLimitsInInches) {
   const MotionPlan p = plan("G20 G90 G17\nG0 X0 Y0 Z0\nG1 X4 F120\nM30\n", model(6000, 1000));
   // 4 in at 2 in/s, a = 1000 / 25.4 in/s^2.

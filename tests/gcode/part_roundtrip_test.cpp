@@ -196,6 +196,11 @@ TEST(PartRoundTrip, ControllerCompensationPutsTheToolCentreOnTheOffset) {
     const ConvertResult r = convert(job, m, opt);
     EXPECT_NE(r.gcode.find("G41 D1"), std::string::npos);
     EXPECT_NE(r.gcode.find("G41 D2"), std::string::npos);
+    // The header says what each register must hold, before the first G41.
+    const size_t d1 = r.gcode.find("D1: tool radius 3 mm"), d2 = r.gcode.find("D2: tool radius 1.5 mm");
+    EXPECT_LT(d1, r.gcode.find("G41 D"));
+    EXPECT_LT(d2, r.gcode.find("G41 D"));
+    EXPECT_EQ(r.gcode.find("diameter 6 mm", d1), d1 + std::string("D1: tool radius 3 mm [").size());
     // Without the registers the reader refuses, naming the line.
     try {
       (void)read_gcode(r.gcode, &m);
