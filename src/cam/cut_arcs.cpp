@@ -35,6 +35,10 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
   ArcFitOptions ao;
   ao.tolerance = c.tolerance;
   ao.decimals = c.decimals;
+  // The tolerance on both sides (the default): inner span ends may leave the
+  // curve, as lines output's vertices do; one-sided tolerances reach here
+  // only on the curve's own path and keep every end on it.
+  ao.band = c.params.tolerance_side == ToleranceSide::both;
   // The controller's radius check is in its own units: the program's.
   ao.radius_tolerance = c.machine.arc_tolerance_mm / mm_per_unit(c.job.units);
   return fit_arcs(pieces, ao, [&](const FitMove& f) {

@@ -54,6 +54,30 @@
 // Finally the drawn path lies at the printed z' while a planar piece lies at
 // z: the 3D distance is hypot(B, |z - z'|).
 //
+// The band (ArcFitOptions::band). On a piece that gets no arcs (its z
+// varies, or its rounded z leaves no budget in the plane) the lines' inner
+// ends are shifted off the curve towards its convex side by kBandShare of
+// what rounding leaves, as the flattener's band vertices are, and each line
+// is proven by band_deviation() (flatten_curve.hpp) between its printed
+// ends: a parametric distance, which bounds both directions, rounding
+// included since the ends are the printed points. The piece's ends stay on
+// the curve (the last line ends at t = 1, where no shift is made), so the
+// planar pieces around it and their arcs are as without the band.
+// Arc ends stay on the curve, for a measured reason. The proof above would
+// take an off-curve start S' as it is (nothing in (a), the angular argument
+// or the sliver bound needs S' near S beyond the |S-S'| that B counts), but
+// the arcs would not get longer: a circle's three parameters absorb a
+// span's curvature up to its linear change, so the error along a span of
+// length L grows like p(s) = a + (b - a) s / L + k s (s - L) (s - m), a and
+// b the offsets at its ends. With a = b shared by consecutive spans, the
+// best is a = 0 (on the curve); the minimax arc with a free end (errors of
+// opposite signs at its ends, about 15 % longer alone) leaves the next span
+// starting at the wrong sign. On the corpus of cubics
+// (bench/output_modes_bench --corpus --quick) free ends took 1.8, 5.7 and
+// 8.0 % more blocks at 0.1, 0.01 and 0.001 mm, and band lines between the
+// arcs of planar pieces 0.1 % more (an arc after a shifted line starts
+// off the curve, where it is shorter).
+//
 // Helical arcs (ArcFitOptions::helical; G17 in the plane's coordinates,
 // the axis h of D running linearly with the angle from h_s = S'.h to
 // h_e = E'.h). Distances are 3D. In the sector, D has the point D(angle of
@@ -92,6 +116,9 @@ constexpr double kMaxSweep = kPi - 0.02;
 constexpr double kMaxRadiusPerChord = 1000;
 // Curve samples used to choose the centre (the proof does not rely on them).
 constexpr int kFitSamples = 16;
+// The band: a line's inner end is shifted off the curve by this share of
+// what the tolerance leaves after rounding (the flattener's share).
+constexpr double kBandShare = 0.96;
 
 double cross2(const Vec3& a, const Vec3& b) { return a.x * b.y - a.y * b.x; }
 double dot2(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y; }
@@ -245,6 +272,19 @@ struct Span {
   Vec3 Sr, Er;  // printed ends
 };
 
+// The unit vector at t towards the curve's convex side: minus the part of
+// M'' across the tangent, normalised; zero where the tangent vanishes or
+// the curve hardly bends (that part below 1e-12 of |M''|).
+Vec3 convex_side(const Bezier& b, double t) {
+  const Vec3 d1 = derivative(b, t), d2 = second_derivative(b, t);
+  const double s2 = dot(d1, d1);
+  if (!(s2 > 0)) return {};
+  const Vec3 across = d2 - d1 * (dot(d1, d2) / s2);
+  const double l = norm(across);
+  if (!(l > 1e-12 * norm(d2)) || !std::isfinite(l)) return {};
+  return across * (-1 / l);
+}
+
 // Fits one arc to the span: centre on the perpendicular bisector of S E,
 // bulge chosen minimax over samples (golden section from the three-point
 // circle), then the printed centre among the grid points around it, then
@@ -390,7 +430,10 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
   if (pieces.empty()) return 0;
   const double tol = opt.tolerance;
   const double scale = control_magnitude(pieces);
-  const double budget = check_tolerance(tol, opt.decimals, pieces.front().dim, scale).budget;
+  const ToleranceBudget tb = check_tolerance(tol, opt.decimals, pieces.front().dim, scale);
+  const double budget = tb.budget;
+  // The band (not for helical fits): see the top.
+  const bool band = opt.band && !opt.helical;
   // The controller compares radii computed from the same printed numbers;
   // keep a floating-point margin below its limit.
   const double rtol = opt.radius_tolerance - 64 * std::numeric_limits<double>::epsilon() * std::max(scale, 1.0);
@@ -404,12 +447,32 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
     const bool planar = opt.helical || planar_xy(b);
     const double dz = planar && !opt.helical ? std::abs(b.front().z - quantize(b.front().z, opt.decimals)) : 0.0;
     const double budget_xy = dz < budget ? std::sqrt(budget * budget - dz * dz) : -1.0;
+    // How far a line's inner end is shifted off the curve: the flattener's
+    // share of what the tolerance leaves after rounding.
+    const double line_shift = kBandShare * (budget - tb.rounding);
+    // The band on pieces that get no arcs (see the top).
+    const bool line_band = band && !(planar && budget_xy > 0);
     double t0 = 0;
     Vec3 S = b.front();
     while (t0 < 1) {
       // Longest chord: the flattener's bound (exact deviation + rounding).
+      // In the band (a piece without arcs): the chord from the printed
+      // point to the end shifted towards the convex side (or, when that
+      // fails, on the curve), proven by band_deviation() between the
+      // printed points themselves.
       auto line_ok = [&](double t1, Vec3& E, Vec3& Er, double& dev) {
         E = point_at(b, t1);
+        if (line_band) {
+          const Vec3 side = t1 < 1 ? convex_side(b, t1) : Vec3{};
+          if (side.x != 0 || side.y != 0 || side.z != 0) {
+            Er = quantize(E + side * line_shift, opt.decimals);
+            dev = band_deviation(b, t0, t1, Sr, Er, budget);
+            if (dev <= budget) return true;
+          }
+          Er = quantize(E, opt.decimals);
+          dev = band_deviation(b, t0, t1, Sr, Er, budget);
+          return dev <= budget;
+        }
         Er = quantize(E, opt.decimals);
         const double disp = std::max(dist(Sr, S), dist(Er, E));
         dev = chord_deviation(b, t0, t1, budget - disp) + disp;

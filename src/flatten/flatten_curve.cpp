@@ -27,12 +27,12 @@ constexpr double kAcceptShare = 0.94;
 constexpr double kAimShare = 0.97;
 
 // Roots in [0,1] of a + b s + c s^2 (numerically stable form).
-int quadratic_roots01(double a, double b, double c, double out[2]) {
+inline __attribute__((always_inline)) int quadratic_roots01(double a, double b, double c, double out[2]) {
   int n = 0;
   auto keep = [&](double s) {
     if (s >= 0 && s <= 1 && std::isfinite(s)) out[n++] = s;
   };
-  const double scale = std::max({std::abs(a), std::abs(b), std::abs(c)});
+  const double scale = std::max(std::max(std::abs(a), std::abs(b)), std::abs(c));
   if (scale == 0) return 0;
   if (std::abs(c) <= 1e-14 * scale) {
     if (b != 0) keep(-a / b);
@@ -185,7 +185,11 @@ double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
 // distance of S from the line AB on the side of its inner control points:
 // how far the sub-curve bulges past the chord, which steers the search.
 // Squared quantities are kept multiplied by |AB|^2 to spare divisions.
-double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double budget, double* bulge) {
+// `inner`, when not null, receives the largest magnitude of the cross part
+// at its interior extremes (0 when it has none), whatever the sides: for
+// chords across an inflection, which have no bulge, it steers the search.
+inline __attribute__((always_inline)) double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double budget, double* bulge,
+                         double* inner = nullptr) {
   const double abx = B.x - A.x, aby = B.y - A.y;
   const double l2 = abx * abx + aby * aby;
   auto cross_ab = [&](double x, double y) { return abx * y - aby * x; };
@@ -195,6 +199,33 @@ double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double bud
   const double c0 = cross_ab(d0x, d0y), c1 = cross_ab(w1x, w1y), c2 = cross_ab(w2x, w2y), c3 = cross_ab(d3x, d3y);
   const double l1 = dot_ab(w1x, w1y), l2p = dot_ab(w2x, w2y);
   const bool clamped = !(l2 > 1e-300) || l1 < 0 || l1 > l2 || l2p < 0 || l2p > l2;
+  const double sg = c1 + c2 >= 0 ? 1 : -1;
+  if (!clamped) {
+    // A sufficient test first, without roots: the cross part split at
+    // s = 1/2 (de Casteljau) lies within the hull of its 7 control values,
+    // which is exact for a symmetric bump and within a few per cent of the
+    // largest value for the chords the search tries. When that bound with
+    // the along part's fits the budget, it is the answer (and the values
+    // past the ends steer the search, a little on the safe side).
+    const double a = 0.5 * (c0 + c1), b = 0.5 * (c1 + c2), c = 0.5 * (c2 + c3);
+    const double ab = 0.5 * (a + b), bc = 0.5 * (b + c), m = 0.5 * (ab + bc);
+    const double hin = std::max(std::max(std::max(std::abs(a), std::abs(ab)), std::max(std::abs(m), std::abs(bc))), std::abs(c));
+    const double hb = std::max(hin, std::max(std::abs(c0), std::abs(c3)));
+    const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
+    const double U2 = hb * hb + std::max(a0 * a0, a3 * a3);
+    if (U2 <= budget * budget * l2) {
+      const double inv = 1 / std::sqrt(l2);
+      if (bulge && sg * c0 <= 0 && sg * c3 <= 0) {
+        // The peak of the parabola through the values at 1/4, 1/2 and 3/4
+        // (a near-symmetric bump's top, for steering only), at most the hull's.
+        const double w1 = sg * (27 * (c0 + c1) + 9 * c2 + c3) / 64, w2 = sg * m, w3 = sg * (c0 + 9 * c1 + 27 * (c2 + c3)) / 64;
+        const double den = 2 * w2 - w1 - w3, top = std::max(std::max(sg * a, sg * ab), std::max(std::max(w2, sg * bc), sg * c));
+        *bulge = (den > 0 ? std::min(top, w2 + (w3 - w1) * (w3 - w1) / (8 * den)) : top) * inv;
+      }
+      if (inner) *inner = hin * inv;
+      return std::sqrt(U2) * inv;
+    }
+  }
   // Extremes of the cross part: the ends and the roots of its derivative,
   // 3 B2(c1 - c0, c2 - c1, c3 - c2), in power form.
   const double e0 = c1 - c0, e1 = c2 - c1, e2 = c3 - c2;
@@ -204,18 +235,19 @@ double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double bud
   // The bulge: on the side sg of the inner points, the largest interior
   // extreme, when both ends lie on the other side (a shape the search's
   // model fits; otherwise the bulge is left unknown).
-  const double sg = c1 + c2 >= 0 ? 1 : -1;
-  double in = -kInf;
+  double in = -kInf, mag = 0;
   for (int i = 0; i < n; ++i) {
     const double s = r[i], u = 1 - s;
     const double v = u * u * (c0 * u + 3 * c1 * s) + s * s * (3 * c2 * u + c3 * s);
     lo = std::min(lo, v);
     hi = std::max(hi, v);
     in = std::max(in, sg * v);
+    mag = std::max(mag, std::abs(v));
   }
   const double P2 = std::max(lo * lo, hi * hi);
   const double inv = l2 > 0 ? 1 / std::sqrt(l2) : 0;
   if (bulge && l2 > 0 && sg * c0 <= 0 && sg * c3 <= 0 && in > -kInf) *bulge = in * inv;
+  if (inner) *inner = l2 > 0 ? mag * inv : -1;
   const double b2 = budget * budget * l2;
   if (!clamped) {
     const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
@@ -448,9 +480,12 @@ constexpr double kBandShare = 0.96;
 // one known not to fit.
 constexpr double kBandClose = 0.97;
 // ... or once its sagitta is this share of the longest chord's: its step is
-// then at least sqrt(0.9) = 95 % of the longest (and most are settled by
-// their first try, aimed at kAimShare).
-constexpr double kBandAccept = 0.90;
+// then at least sqrt(0.7) = 84 % of the longest. Most chords are settled by
+// their first try, aimed at kBandAim of the longest chord's sagitta; a
+// lower share accepts more first tries (fewer tries per chord: 1.7 instead
+// of 2.0 at 0.1 mm on the corpus) for 0.5-1.5 % more chords.
+constexpr double kBandAccept = 0.70;
+constexpr double kBandAim = 0.97;
 // Without a bulge to steer by (rational or higher-degree pieces, 3D
 // cubics): first step of the search from the predicted chord; 1 / 1.03 >
 // 0.97, so a good prediction is settled by two tries.
@@ -485,6 +520,78 @@ double sagitta(double bulge, double dA, double dB) {
 }
 double longest_sagitta(double budget, double dA, double dB) { return sagitta(budget, dA, dB); }
 
+// A chord across an inflection has no bulge: its ends lie on opposite
+// sides, and what limits it is the cross part's interior extreme, which
+// grows about like the cube of the step (the gap of a chord across an
+// inflection is |M^(3)| l^3 / (72 sqrt 3)). Such a chord is settled once that
+// extreme reaches kCrossAccept of the budget (its step is then within
+// cbrt(0.85) = 95 % of the longest under that model) or its step is within
+// kCrossClose of one that failed.
+constexpr double kCrossAccept = 0.85;
+constexpr double kCrossClose = 0.93;
+// The search for such a chord: a root of f(dt) = cbrt(extreme) -
+// cbrt(kBandAim budget) (the cube law makes it about linear), by regula
+// falsi with the Illinois modification (an end kept twice in a row has its
+// value halved, so that both ends move). With one end known, by a power law
+// from it: the cube, or the exponent the last two tries on that side show
+// (the extreme near an end shifted off the curve hardly changes with the
+// step, and a cube law would then creep).
+struct CrossSearch {
+  double f_lo = kInf, f_hi = kInf;  // f at lo and hi; infinity: not known
+  int last = 0;                     // which end moved last: -1 lo, +1 hi
+  double dt_last = 0, in_last = -1, dt_prev = 0, in_prev = -1;  // the last two tries on the side `last`
+  // Records a try of step dt whose extreme is `inner` (fitting or not).
+  void record(bool ok, double dt, double inner, double budget) {
+    const double f = std::cbrt(inner) - std::cbrt(kBandAim * budget);
+    const int side = ok ? -1 : 1;
+    if (side == last) {
+      (ok ? f_hi : f_lo) *= 0.5;  // infinity stays infinity
+      dt_prev = dt_last, in_prev = in_last;
+    } else {
+      in_prev = -1;
+    }
+    (ok ? f_lo : f_hi) = f;
+    last = side, dt_last = dt, in_last = inner;
+  }
+  // The next step in the bracket [lo, hi] (hi infinite: none yet).
+  double next(double lo, double hi, double budget) const {
+    if (std::isfinite(f_lo) && std::isfinite(f_hi) && std::isfinite(hi) && lo > 0) {
+      const double nd = f_hi > f_lo ? lo + (hi - lo) * -f_lo / (f_hi - f_lo) : 0.5 * (lo + hi);
+      return std::clamp(nd, lo + 0.05 * (hi - lo), hi - 0.05 * (hi - lo));
+    }
+    const bool grow = std::isfinite(f_lo) && !std::isfinite(hi), shrink = std::isfinite(f_hi) && lo <= 0;
+    if (grow || shrink) {
+      const double dt = grow ? lo : hi, in = in_last;
+      double p = 3;
+      if (in_prev > 0 && in > 0 && dt_prev > 0 && dt_prev != dt)
+        p = std::clamp(std::log(in / in_prev) / std::log(dt / dt_prev), 0.5, 3.0);
+      const double g = in > 0 ? std::pow(kBandAim * budget / in, 1 / p) : 2.0;
+      return grow ? lo * std::clamp(g, 1.03, 2.0) : hi * std::clamp(g, 0.3, 0.95);
+    }
+    // One end known without an extreme: halve the bracket.
+    return std::isfinite(hi) ? 0.5 * (lo + hi) : 2 * lo;
+  }
+};
+
+#ifdef BEZCAM_FLATTEN_COUNTERS
+// For measurement only (bench/flatten_tries.sh builds the benchmark with
+// it): the band's chord searches and their tries, by kind (steered by the
+// bulge; across an inflection, where some try had none; the piece's last
+// chord), with how many searches took 1, 2, ..., 8 or more tries, printed
+// to stderr at exit.
+struct Counters {
+  long searches[3] = {}, tries[3] = {}, hist[3][8] = {};
+  ~Counters() {
+    const char* names[3] = {"steered", "inflection", "last"};
+    for (int k = 0; k < 3; ++k) {
+      std::fprintf(stderr, "%-10s searches %ld tries %ld (%.2f)", names[k], searches[k], tries[k], searches[k] ? double(tries[k]) / searches[k] : 0.0);
+      for (int i = 0; i < 8; ++i) std::fprintf(stderr, " %ld", hist[k][i]);
+      std::fprintf(stderr, "\n");
+    }
+  }
+} g_counters;
+#endif
+
 template <class Emit>
 double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, const ToleranceBudget& tb, Vec3 Ar,
                   Emit&& emit) {
@@ -500,7 +607,9 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     double budget = 0;
     Vec3 B, Br;
     double bend = 0;  // bend() at t1, when the try found it (planar cubics)
+    double inner = -1;  // the cross part's largest interior extreme (planar cubics); -1: not known
     bool on = false;  // B on the curve
+    Vec3 M, dM;       // the curve's point and tangent at t1 (planar cubics)
   };
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
     const Prepared P(pieces[pi]);
@@ -566,11 +675,12 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         // The shifted chord's sagitta is over what B on the curve allows:
         // that try would be wasted.
         if (pass == 1 && H > longest_sagitta(budget, offA, 0)) break;
-        double bulge = -kInf;
-        const double dev = steered ? band_cubic_planar(S, A, B, budget, &bulge) : P.band(t0, t1, A, B, budget);
+        double bulge = -kInf, inner = -1;
+        const double dev = steered ? band_cubic_planar(S, A, B, budget, &bulge, &inner) : P.band(t0, t1, A, B, budget);
         H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
         c.t1 = t1, c.dev = dev, c.disp = disp, c.H = H, c.budget = budget;
-        c.B = B, c.Br = Br, c.on = pass == 1, c.bend = bend1;
+        c.B = B, c.Br = Br, c.on = pass == 1, c.bend = bend1, c.inner = inner;
+        c.M = on, c.dM = d1;
         if (dev <= budget) return true;
       }
       c.H = H;
@@ -583,15 +693,22 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     Chord slot[2];
     while (t0 < 1) {
       double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
+      // Without a bulge (chords across an inflection), the cross part's
+      // interior extreme at lo and hi (-1: not known) steers the search.
+      CrossSearch cross;
       bool found = false;
       // The two slots (piece-wide, see below) start each search as new.
       for (Chord& c : slot) c.dev = 0, c.budget = 0, c.H = -kInf, c.on = false;
       int cur = 0;
-      if (steered) {
+      if (steered && t0 == 0) {
         S0 = P.point(t0);
         T0 = P.tangent(t0);
       }
       double step = kBandStep;
+#ifdef BEZCAM_FLATTEN_COUNTERS
+      int n_tries = 0;
+      bool unsteered = false;
+#endif
       for (int iter = 0; iter < 200; ++iter) {
         const bool last = dt >= 1 - t0;
         if (last) dt = 1 - t0;
@@ -600,23 +717,41 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         // The share of the longest chord's sagitta this one uses, for a
         // next try with B shifted (or, when this one fits, as it is).
         const double fill = c.H / longest_sagitta(c.budget, offA, ok && c.on ? 0 : shift);
+#ifdef BEZCAM_FLATTEN_COUNTERS
+        ++n_tries;
+        if (!std::isfinite(fill)) unsteered = true;
+#endif
         if (ok) {
           found = true;
           lo = dt;
           cur ^= 1;  // c is now the best
           if (last || lo >= kBandClose * hi || fill >= kBandAccept) break;
-          double nd = !std::isfinite(fill) ? dt * (1 + step) : fill > 0 ? dt * std::min(4.0, std::sqrt(kAimShare / fill)) : 2 * dt;
+          if (!std::isfinite(fill) && c.inner >= 0) {
+            cross.record(true, dt, c.inner, c.budget);
+            if (lo >= kCrossClose * hi || c.inner >= kCrossAccept * c.budget) break;
+            dt = cross.next(lo, hi, c.budget);
+            step = std::min(2 * step, 1.0);
+            continue;
+          }
+          double nd = !std::isfinite(fill) ? dt * (1 + step) : fill > 0 ? dt * std::min(4.0, std::sqrt(kBandAim / fill)) : 2 * dt;
           if (nd >= hi) nd = 0.5 * (lo + hi);
           dt = nd;
         } else {
           hi = dt;
           if (found && lo >= kBandClose * hi) break;
+          if (!std::isfinite(fill) && c.inner >= 0) {
+            cross.record(false, dt, c.inner, c.budget);
+            if (found && lo >= kCrossClose * hi) break;
+            dt = cross.next(lo, hi, c.budget);
+            step = std::min(2 * step, 1.0);
+            continue;
+          }
           // Without a sagitta, the deviation over the budget tells how
           // much to shrink (as if it grew like the square of the step).
-          double nd = std::isfinite(fill) && fill > 1 ? dt * std::clamp(std::sqrt(kAimShare / fill), 0.05, 0.99)
+          double nd = std::isfinite(fill) && fill > 1 ? dt * std::clamp(std::sqrt(kBandAim / fill), 0.05, 0.99)
                       : std::isfinite(fill)           ? 0.7 * dt
                       : c.dev > c.budget && c.budget > 0
-                          ? dt * std::clamp(std::sqrt(kAimShare * c.budget / c.dev), 0.5, 1 / (1 + step))
+                          ? dt * std::clamp(std::sqrt(kBandAim * c.budget / c.dev), 0.5, 1 / (1 + step))
                           : dt / (1 + step);
           if (found && nd <= lo) nd = 0.5 * (lo + hi);
           dt = nd;
@@ -625,6 +760,14 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
       }
       if (!found) throw std::logic_error("flatten: no band chord fits (internal error)");
       const Chord& best = slot[cur ^ 1];
+#ifdef BEZCAM_FLATTEN_COUNTERS
+      {
+        const int k = best.t1 >= 1 ? 2 : unsteered ? 1 : 0;
+        ++g_counters.searches[k];
+        g_counters.tries[k] += n_tries;
+        ++g_counters.hist[k][std::min(n_tries, 8) - 1];
+      }
+#endif
       bound = std::max(bound, best.dev + best.disp);
       // A vertex that rounds onto the one before it would print a move of
       // length zero: the printed polyline is the same without it (but a
@@ -654,13 +797,14 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
         }
         if (b0 > 0 && b1 > 0) g2 = b0 / b1;
         // The next chord starts where this one ends and ends shifted.
-        if (best.H > 0) g2 *= kAimShare * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H;
+        if (best.H > 0) g2 *= kBandAim * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H;
         dt = lo * std::sqrt(std::clamp(g2, 1.0 / 16, 16.0));
       }
       t0 = best.t1;
       A = best.B;
       Ar = best.Br;
-      dispA = dist(Ar, A);
+      dispA = Ar == A ? 0.0 : dist(Ar, A);
+      S0 = best.M, T0 = best.dM;  // the next chord's start: the same values as P.point(t0), P.tangent(t0)
       offA = best.on ? 0.0 : shift;
     }
   }

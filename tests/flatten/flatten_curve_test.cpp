@@ -543,3 +543,90 @@ TEST(Band, ClosedFormCubicBoundAgainstBruteForce) {
   }
   EXPECT_EQ(checked, pieces.size() * 20);
 }
+
+TEST(Band, RootFreeAcceptTestIsAnUpperBound) {
+  // With a budget well above the truth, band_deviation() on planar cubics
+  // (and quadratics, elevated) answers from the cross part split once at
+  // s = 1/2 (the hull of its 7 control values, no roots): the answer must
+  // still be within the budget and never below a dense reading of the
+  // same parametric distance. Ends across the curve as the band puts them
+  // (up to 60 % of the budget), and short to long chords on inflections,
+  // cusps, loops and near-straight pieces.
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> c(-30, 30), tt(0, 1), off(-1, 1);
+  std::vector<Bezier> pieces = {bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),         // two inflections
+                                bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),           // cusp
+                                bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),        // loop
+                                bz({{0, 0}, {10, 1e-4}, {20, -1e-4}, {30, 0}}),     // near-straight
+                                bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}}),   // quarter circle
+                                bz({{0, 0}, {20, 35}, {40, 0}})};                   // degree 2
+  for (int i = 0; i < 40; ++i) {
+    std::vector<Vec3> p;
+    for (int k = 0; k <= (i % 4 == 0 ? 2 : 3); ++k) p.push_back({c(rng), c(rng)});
+    pieces.push_back(bz(p));
+  }
+  size_t checked = 0;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    Bezier e = pieces[i];
+    while (e.degree() < 3) e = elevate(e);
+    for (int j = 0; j < 12; ++j) {
+      double t0 = tt(rng), t1 = tt(rng);
+      if (t0 > t1) std::swap(t0, t1);
+      t1 = std::min(1.0, t0 + (j % 3 == 0 ? 0.5 : j % 3 == 1 ? 0.1 : 0.02) * (t1 - t0) + 1e-3);
+      const Bezier sub = subcurve(e, t0, t1);
+      // The sub-curve's own sagitta sets the scale of the ends' offsets.
+      double sag = 0;
+      for (int k = 0; k <= 200; ++k) sag = std::max(sag, dist_to_segment(evaluate(sub, k / 200.0), sub.front(), sub.back()));
+      const double size = 0.6 * sag + 1e-6;
+      const Vec3 A = sub.front() + Vec3{off(rng), off(rng)} * size, B = sub.back() + Vec3{off(rng), off(rng)} * size;
+      Bezier L = sub;
+      const Vec3 ab = B - A;
+      for (auto& q : L.points) q = A + ab * std::clamp(dot(q - A, ab) / dot(ab, ab), 0.0, 1.0);
+      L.points.front() = A;
+      L.points.back() = B;
+      double truth = 0;
+      for (int k = 0; k <= 20000; ++k) {
+        const double s = k / 20000.0;
+        truth = std::max(truth, dist(evaluate(sub, s), evaluate(L, s)));
+      }
+      for (double f : {1.02, 1.1, 1.5, 3.0}) {
+        const double budget = truth * f;
+        const double got = band_deviation(pieces[i], t0, t1, A, B, budget);
+        EXPECT_LE(got, budget) << "piece " << i << " chord " << j << " budget x" << f;
+        EXPECT_GE(got, truth * (1 - 1e-6)) << "piece " << i << " chord " << j << " budget x" << f;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, pieces.size() * 48);
+}
+
+TEST(Band, InflectionsWithinToleranceAndNearTheMinimum) {
+  // Chords across an inflection have no bulge to steer by; their search
+  // follows the cross part's interior extreme. On S-shaped cubics (one or
+  // two inflections) at three tolerances, the band stays within the
+  // tolerance by dense brute force both ways, and needs fewer chords than
+  // the greedy maximal on-curve chords.
+  std::mt19937_64 rng(43);
+  std::uniform_real_distribution<double> u(0.2, 0.8), h(10, 40);
+  size_t band = 0, greedy = 0;
+  for (int i = 0; i < 6; ++i) {
+    const double a = h(rng), b = h(rng);
+    const Bezier s = i % 2 ? bz({{0, 0}, {100 * u(rng), a}, {100 * u(rng), -b}, {100, 0}})        // one inflection
+                           : bz({{0, 0}, {40 * u(rng), -a}, {40 * u(rng), 2 * b}, {100, -a}});  // two
+    for (double tol : {0.1, 0.01, 0.001}) {
+      // The brute force costs the square of the count: the finer
+      // tolerances are read by the independent measurement alone.
+      if (tol > 0.05) {
+        expect_band_within(s, tol, -1, "S-curve");
+      } else {
+        const FlattenResult r = flatten(s, {tol, -1});
+        EXPECT_LE(r.bound, tol);
+        EXPECT_LE(measure_deviation(std::span<const Bezier>(&s, 1), r.points, tol).max(), tol);
+      }
+      band += flatten(s, {tol, -1}).points.size() - 1;
+      greedy += greedy_count(s, tol);
+    }
+  }
+  EXPECT_LE(double(band), 0.9 * double(greedy)) << band << " band chords, " << greedy << " greedy";
+}

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-4.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009323 mm, proven bound 0.00999 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009322 mm, proven bound 0.009922 mm, rounding included)
 N30 (T1: seed-ex-4)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
@@ -19,9 +19,9 @@ N160 X0.415 Y0.045 F600.
 N170 X0.859 Y0.229
 N180 X1.108 Y0.453
 N190 X1.162 Y0.642
-N200 X1.067 Y0.799
-N210 X0.766 Y0.934
-N220 X0.123 Y1.008
+N200 X1.078 Y0.79
+N210 X0.824 Y0.918
+N220 X0.233 Y1.004
 N230 X0. Y1.
 N240 G00 Z5.
 N250 M05

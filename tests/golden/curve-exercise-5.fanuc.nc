@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-5.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009344 mm, proven bound 0.009832 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009302 mm, proven bound 0.009946 mm, rounding included)
 N30 (T1: seed-ex-5)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
@@ -17,10 +17,10 @@ N140 X0. Y0.
 N150 G01 Z-0.5 F200.
 N160 X0.616 Y0.559 F600.
 N170 X1.164 Y0.904
-N180 X1.5 Y1.009
-N190 X1.347 Y1.023
-N200 X0.857 Y1.27
-N210 X0.195 Y1.8
+N180 X1.499 Y1.009
+N190 X1.393 Y1.01
+N200 X0.939 Y1.218
+N210 X0.326 Y1.68
 N220 X0. Y2.
 N230 G00 Z5.
 N240 M05

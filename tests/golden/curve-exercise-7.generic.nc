@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-7.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009338 mm, proven bound 0.009783 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009285 mm, proven bound 0.009754 mm, rounding included)
 (T1: seed-ex-7)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -13,10 +13,11 @@ X0. Y0.
 G01 Z-0.5 F200.
 X0.693 Y0.646 F600.
 X1.111 Y0.904
-X1.362 Y0.934
-X1.846 Y0.712
-X2.211 Y0.707
-X2.763 Y0.879
+X1.353 Y0.936
+X1.575 Y0.845
+X1.779 Y0.731
+X2.116 Y0.695
+X2.556 Y0.798
 X3. Y1.
 G00 Z5.
 M05

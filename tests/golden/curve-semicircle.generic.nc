@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output lines)
-(tolerance 0.005 mm; largest deviation measured 0.004783 mm, proven bound 0.004946 mm, rounding included)
+(tolerance 0.005 mm; largest deviation measured 0.004755 mm, proven bound 0.004953 mm, rounding included)
 (T1: semicircle-r3)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -14,24 +14,24 @@ G01 Z-0.5 F200.
 X-2.978 Y0.446 F800.
 X-2.89 Y0.904
 X-2.742 Y1.323
-X-2.542 Y1.697
-X-2.289 Y2.029
-X-1.986 Y2.321
-X-1.633 Y2.568
-X-1.235 Y2.766
-X-0.795 Y2.908
-X-0.333 Y2.988
-X0.141 Y3.001
-X0.616 Y2.947
-X1.068 Y2.829
-X1.486 Y2.65
-X1.862 Y2.417
-X2.191 Y2.134
-X2.467 Y1.807
-X2.688 Y1.439
-X2.852 Y1.032
-X2.958 Y0.584
-X3.003 Y0.097
+X-2.541 Y1.697
+X-2.288 Y2.031
+X-1.983 Y2.323
+X-1.625 Y2.573
+X-1.221 Y2.772
+X-0.777 Y2.913
+X-0.309 Y2.99
+X0.17 Y3.
+X0.64 Y2.943
+X1.09 Y2.821
+X1.506 Y2.639
+X1.877 Y2.406
+X2.198 Y2.127
+X2.468 Y1.805
+X2.685 Y1.443
+X2.848 Y1.044
+X2.955 Y0.604
+X3.002 Y0.12
 X3. Y0.
 G00 Z5.
 M05

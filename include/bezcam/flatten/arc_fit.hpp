@@ -24,6 +24,8 @@
 ///    rounding of the ends; every emitted arc carries that bound.
 ///  * Only pieces that lie in a plane z = const are fitted with arcs; a
 ///    piece whose z varies gets G01 lines (flatten_curve.hpp's bound).
+///  * With the band (ArcFitOptions::band) those lines' inner ends lie off
+///    the curve, as the flattener's band vertices do (band_deviation()).
 #include <functional>
 #include <span>
 #include <vector>
@@ -47,6 +49,14 @@ struct ArcFitOptions {
   /// the bound covers the in-plane and axial parts together. When false,
   /// only pieces in a plane z = const get arcs, whose z is constant.
   bool helical = false;
+  /// The tolerance as a band on both sides of the curve (not with
+  /// `helical`): on a piece that gets no arcs (not in a plane z = const)
+  /// the G01 lines' inner ends lie off the curve, shifted towards its convex
+  /// side as the flattener's band vertices are, so that those lines get
+  /// about 1.4 times longer; the piece's ends stay exact (within rounding).
+  /// Arcs and their ends stay on the curve (arc_fit.cpp says why). false:
+  /// every span end lies on the curve (before rounding).
+  bool band = false;
 };
 
 enum class FitKind { line, arc_cw, arc_ccw };

@@ -19,7 +19,8 @@
 ///    maximal-chord minimum while never exceeding the tolerance.
 ///  * The band (default): inner vertices move off the curve, up to the
 ///    tolerance towards its convex side, and chords get about 1.4 times
-///    longer. Each such chord is proven by band_deviation(): a parametric
+///    longer. Its search takes the first proven chord of at least 84 % of
+///    the longest (few tries per chord, a few per cent more chords). Each such chord is proven by band_deviation(): a parametric
 ///    distance between the sub-curve and the chord reparametrised as a
 ///    Bézier curve of the same degree, which bounds both directions.
 #include <functional>
@@ -76,9 +77,12 @@ double chord_deviation(const Bezier& piece, double t0, double t1, double budget 
 /// projections of the sub-curve's onto the line AB, clamped to the segment
 /// (parametric_distance(), degree_reduce.hpp). With a `budget` >= 0 the
 /// answer is certain on its side of the budget, as for chord_deviation();
-/// for planar polynomial pieces of degree <= 3 it is then decided in closed
-/// form (the part of the difference across the chord exactly, the part
-/// along it by its end values), subdividing only when that cannot decide.
+/// for planar polynomial pieces of degree <= 3 it is then decided first by
+/// a root-free sufficient test (the part of the difference across the
+/// chord bounded by its control values after one split at 1/2), then in
+/// closed form (that part exactly, the part along the chord by its end
+/// values), subdividing only when neither can decide. A result within the
+/// budget is a proven bound, not necessarily the smallest.
 double band_deviation(const Bezier& piece, double t0, double t1, const Vec3& A, const Vec3& B, double budget = -1);
 
 /// About how many chords a flattening within `tolerance` needs: at least
