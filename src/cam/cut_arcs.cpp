@@ -1,4 +1,5 @@
 // --output arcs: G02/G03 in G17 with I/J, G01 where no arc fits.
+#include <algorithm>
 #include <stdexcept>
 
 #include "bezcam/error.hpp"
@@ -41,7 +42,7 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
   ao.band = c.params.tolerance_side == ToleranceSide::both;
   // The controller's radius check is in its own units: the program's.
   ao.radius_tolerance = c.machine.arc_tolerance_mm / mm_per_unit(c.job.units);
-  return fit_arcs(pieces, ao, [&](const FitMove& f) {
+  auto emit = [&](const FitMove& f) {
     if (f.kind == FitKind::line) {
       push_line(f.to);
     } else {
@@ -57,7 +58,21 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
       ++blocks;
     }
     from = f.to;
-  });
+  };
+  // A curve that climbs (a piece whose z varies) gets no plain arcs; it may
+  // get helical ones (G02/G03 with Z in G17: z linear in the angle, the
+  // bound proven in 3D), which follow a ramp or a helix in a few blocks
+  // where lines need dozens. Both fits are made and the one with fewer
+  // blocks is written: band lines win on a climb that is not helix-like.
+  if (std::any_of(pieces.begin(), pieces.end(), [](const Bezier& b) { return !planar_xy(b); })) {
+    ArcFitOptions helical = ao;
+    helical.helical = true;
+    ArcFitResult h = fit_arcs(pieces, helical), l = fit_arcs(pieces, ao);
+    const ArcFitResult& best = h.moves.size() < l.moves.size() ? h : l;
+    for (const FitMove& f : best.moves) emit(f);
+    return best.bound;
+  }
+  return fit_arcs(pieces, ao, emit);
 }
 
 void emit_arcs(CutContext& c, EntityReport& r) {

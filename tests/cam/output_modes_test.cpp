@@ -76,12 +76,28 @@ TEST(OutputArcs, RefusedByAMachineWithoutArcs) {
   }
 }
 
-TEST(OutputArcs, NonPlanarCurveStaysG01) {
+TEST(OutputArcs, NonPlanarCurveTakesHelicalArcsOnlyWhereTheySaveBlocks) {
+  // A twisted cubic is no helix: band lines (as in lines output) need
+  // fewer blocks than helical arcs would, and are written.
   const auto r = run(job_of(kTwisted), "generic", OutputMode::arcs);
   EXPECT_EQ(count_matching(r.gcode, std::regex(R"(G0?[23] )")), 0u);
-  // The arc fitter's lines are on-curve chords; lines output uses the band
-  // (docs/flattening.md), which needs no more.
   EXPECT_LE(run(job_of(kTwisted), "generic", OutputMode::lines).program.entities[0].blocks, r.program.entities[0].blocks);
+  // A ramp round a quarter circle (z falling 2 over it) is nearly a
+  // helix: helical arcs (G02/G03 with Z), a handful where lines need dozens,
+  // within the tolerance by the independent measurement.
+  const std::string ramp =
+      R"({"id": "ramp", "type": "bezier", "points": [[10,0,0],[10,10,-1],[0,10,-2]], "weights": [1, 0.7071067811865476, 1]})";
+  for (const char* m : {"generic", "fanuc", "linuxcnc", "grbl"}) {
+    SCOPED_TRACE(m);
+    const auto a = run(job_of(ramp), m, OutputMode::arcs), l = run(job_of(ramp), m, OutputMode::lines);
+    const size_t helical = count_matching(a.gcode, std::regex(R"((^|\s)G0?3 X-?[0-9.]+ Y-?[0-9.]+ Z-?[0-9.]+ I-?[0-9.]+ J-?[0-9.]+)"));
+    EXPECT_GE(helical, 1u) << a.gcode;
+    EXPECT_LT(a.program.entities[0].blocks * 3, l.program.entities[0].blocks)
+        << a.program.entities[0].blocks << " vs " << l.program.entities[0].blocks;
+    EXPECT_LE(a.program.max_bound, 0.01);
+    EXPECT_GT(a.program.max_measured, 0);
+    EXPECT_LE(a.program.max_measured, a.program.max_bound * (1 + 1e-3));
+  }
 }
 
 TEST(OutputNurbs, FanucBlockIsWordedAsTheDialectPageSays) {
