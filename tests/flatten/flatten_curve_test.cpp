@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -215,22 +216,58 @@ namespace {
 // 20,000 points of the curve, and 400 points of every segment against
 // them. Slow, plain and independent of measure_deviation()'s windows and
 // refinements; accurate to about the spacing's square times the curvature.
+// The smallest distance from x to a chain of points, every segment read:
+// blocks of 64 segments whose bounding box lies no nearer than the best
+// distance so far are skipped (none of their segments could be nearer), so
+// the value is exactly the plain minimum over all segments, in a fraction
+// of the time (which matters under the sanitizers).
+class Chain {
+ public:
+  explicit Chain(std::vector<Vec3> pts) : p_(std::move(pts)) {
+    for (size_t j = 0; j + 1 < p_.size(); j += kBlock) {
+      Box3 box;
+      for (size_t k = j; k <= std::min(j + kBlock, p_.size() - 1); ++k) box.add(p_[k]);
+      boxes_.push_back(box);
+    }
+  }
+  double nearest(const Vec3& x) const {
+    std::vector<std::pair<double, size_t>> order;
+    order.reserve(boxes_.size());
+    for (size_t i = 0; i < boxes_.size(); ++i) {
+      const Box3& b = boxes_[i];
+      const Vec3 out{std::max({b.lo.x - x.x, 0.0, x.x - b.hi.x}), std::max({b.lo.y - x.y, 0.0, x.y - b.hi.y}),
+                     std::max({b.lo.z - x.z, 0.0, x.z - b.hi.z})};
+      order.push_back({norm(out), i});
+    }
+    std::sort(order.begin(), order.end());
+    double m = HUGE_VAL;
+    for (const auto& [lower, i] : order) {
+      if (lower >= m) break;
+      const size_t j0 = i * kBlock, j1 = std::min(j0 + kBlock, p_.size() - 1);
+      for (size_t j = j0; j < j1; ++j) m = std::min(m, dist_to_segment(x, p_[j], p_[j + 1]));
+    }
+    return m;
+  }
+  const std::vector<Vec3>& points() const { return p_; }
+
+ private:
+  static constexpr size_t kBlock = 64;
+  std::vector<Vec3> p_;
+  std::vector<Box3> boxes_;
+};
+
 Deviation brute_deviation(const Bezier& b, const std::vector<Vec3>& poly) {
   std::vector<Vec3> c(20001);
   for (size_t i = 0; i < c.size(); ++i) c[i] = evaluate(b, double(i) / (c.size() - 1));
+  const Chain chain(std::move(c));
   Deviation d;
-  for (const Vec3& x : c) {
+  for (const Vec3& x : chain.points()) {
     double m = HUGE_VAL;
     for (size_t k = 0; k + 1 < poly.size(); ++k) m = std::min(m, dist_to_segment(x, poly[k], poly[k + 1]));
     d.curve_to_path = std::max(d.curve_to_path, m);
   }
   for (size_t k = 0; k + 1 < poly.size(); ++k)
-    for (int i = 0; i <= 400; ++i) {
-      const Vec3 x = lerp(poly[k], poly[k + 1], i / 400.0);
-      double m = HUGE_VAL;
-      for (size_t j = 0; j + 1 < c.size(); ++j) m = std::min(m, dist_to_segment(x, c[j], c[j + 1]));
-      d.path_to_curve = std::max(d.path_to_curve, m);
-    }
+    for (int i = 0; i <= 400; ++i) d.path_to_curve = std::max(d.path_to_curve, chain.nearest(lerp(poly[k], poly[k + 1], i / 400.0)));
   return d;
 }
 
