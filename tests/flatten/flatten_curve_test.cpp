@@ -529,6 +529,46 @@ TEST(Band, BandDeviationBoundsTheTrueDistanceForAnyEnds) {
   }
 }
 
+namespace {
+
+// The pieces both closed-form band tests read: named hard cases, then n
+// random planar quadratics and cubics drawn from rng.
+std::vector<Bezier> band_test_pieces(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> c(-30, 30);
+  std::vector<Bezier> pieces = {bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),         // two inflections
+                                bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),           // cusp
+                                bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),        // loop
+                                bz({{0, 0}, {10, 1e-4}, {20, -1e-4}, {30, 0}}),     // near-straight
+                                bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}}),   // quarter circle
+                                bz({{0, 0}, {20, 35}, {40, 0}})};                   // degree 2
+  for (int i = 0; i < n; ++i) {
+    std::vector<Vec3> p;
+    for (int k = 0; k <= (i % 4 == 0 ? 2 : 3); ++k) p.push_back({c(rng), c(rng)});
+    pieces.push_back(bz(p));
+  }
+  return pieces;
+}
+
+// What band_deviation() bounds, read densely: the largest distance between
+// the sub-curve and the chord A-B written as a curve of the same degree whose
+// inner points are the sub-curve's projected on the segment, at equal
+// parameters.
+double dense_parametric_distance(const Bezier& sub, const Vec3& A, const Vec3& B) {
+  Bezier L = sub;
+  const Vec3 ab = B - A;
+  for (auto& q : L.points) q = A + ab * std::clamp(dot(q - A, ab) / dot(ab, ab), 0.0, 1.0);
+  L.points.front() = A;
+  L.points.back() = B;
+  double truth = 0;
+  for (int k = 0; k <= 20000; ++k) {
+    const double s = k / 20000.0;
+    truth = std::max(truth, dist(evaluate(sub, s), evaluate(L, s)));
+  }
+  return truth;
+}
+
+}  // namespace
+
 TEST(Band, ClosedFormCubicBoundAgainstBruteForce) {
   // band_deviation() with a budget on planar polynomial pieces of degree 2
   // and 3 is decided in closed form (cross part exact, along part bounded
@@ -539,18 +579,8 @@ TEST(Band, ClosedFormCubicBoundAgainstBruteForce) {
   // "within" when the truth is 0.1 % under it, and a bound it returns
   // within the budget is never below the truth.
   std::mt19937_64 rng(29);
-  std::uniform_real_distribution<double> c(-30, 30), tt(0, 1), off(-1, 1);
-  std::vector<Bezier> pieces = {bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),         // two inflections
-                                bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),           // cusp
-                                bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),        // loop
-                                bz({{0, 0}, {10, 1e-4}, {20, -1e-4}, {30, 0}}),     // near-straight
-                                bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}}),   // quarter circle
-                                bz({{0, 0}, {20, 35}, {40, 0}})};                   // degree 2
-  for (int i = 0; i < 60; ++i) {
-    std::vector<Vec3> p;
-    for (int k = 0; k <= (i % 4 == 0 ? 2 : 3); ++k) p.push_back({c(rng), c(rng)});
-    pieces.push_back(bz(p));
-  }
+  std::uniform_real_distribution<double> tt(0, 1), off(-1, 1);
+  const std::vector<Bezier> pieces = band_test_pieces(rng, 60);
   size_t checked = 0;
   for (size_t i = 0; i < pieces.size(); ++i) {
     Bezier e = pieces[i];
@@ -563,16 +593,7 @@ TEST(Band, ClosedFormCubicBoundAgainstBruteForce) {
       // Ends off the curve across it, as the band puts them, and anywhere.
       const double size = 0.02 * dist(sub.front(), sub.back()) + 1e-3;
       const Vec3 A = sub.front() + Vec3{off(rng), off(rng)} * size, B = sub.back() + Vec3{off(rng), off(rng)} * size;
-      Bezier L = sub;
-      const Vec3 ab = B - A;
-      for (auto& q : L.points) q = A + ab * std::clamp(dot(q - A, ab) / dot(ab, ab), 0.0, 1.0);
-      L.points.front() = A;
-      L.points.back() = B;
-      double truth = 0;
-      for (int k = 0; k <= 20000; ++k) {
-        const double s = k / 20000.0;
-        truth = std::max(truth, dist(evaluate(sub, s), evaluate(L, s)));
-      }
+      const double truth = dense_parametric_distance(sub, A, B);
       const double over = band_deviation(pieces[i], t0, t1, A, B, truth * 0.999);
       EXPECT_GT(over, truth * 0.999) << "piece " << i << " chord " << j;
       const double under = band_deviation(pieces[i], t0, t1, A, B, truth * 1.001);
@@ -593,18 +614,8 @@ TEST(Band, RootFreeAcceptTestIsAnUpperBound) {
   // (up to 60 % of the budget), and short to long chords on inflections,
   // cusps, loops and near-straight pieces.
   std::mt19937_64 rng(41);
-  std::uniform_real_distribution<double> c(-30, 30), tt(0, 1), off(-1, 1);
-  std::vector<Bezier> pieces = {bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),         // two inflections
-                                bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),           // cusp
-                                bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),        // loop
-                                bz({{0, 0}, {10, 1e-4}, {20, -1e-4}, {30, 0}}),     // near-straight
-                                bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}}),   // quarter circle
-                                bz({{0, 0}, {20, 35}, {40, 0}})};                   // degree 2
-  for (int i = 0; i < 40; ++i) {
-    std::vector<Vec3> p;
-    for (int k = 0; k <= (i % 4 == 0 ? 2 : 3); ++k) p.push_back({c(rng), c(rng)});
-    pieces.push_back(bz(p));
-  }
+  std::uniform_real_distribution<double> tt(0, 1), off(-1, 1);
+  const std::vector<Bezier> pieces = band_test_pieces(rng, 40);
   size_t checked = 0;
   for (size_t i = 0; i < pieces.size(); ++i) {
     Bezier e = pieces[i];
@@ -619,16 +630,7 @@ TEST(Band, RootFreeAcceptTestIsAnUpperBound) {
       for (int k = 0; k <= 200; ++k) sag = std::max(sag, dist_to_segment(evaluate(sub, k / 200.0), sub.front(), sub.back()));
       const double size = 0.6 * sag + 1e-6;
       const Vec3 A = sub.front() + Vec3{off(rng), off(rng)} * size, B = sub.back() + Vec3{off(rng), off(rng)} * size;
-      Bezier L = sub;
-      const Vec3 ab = B - A;
-      for (auto& q : L.points) q = A + ab * std::clamp(dot(q - A, ab) / dot(ab, ab), 0.0, 1.0);
-      L.points.front() = A;
-      L.points.back() = B;
-      double truth = 0;
-      for (int k = 0; k <= 20000; ++k) {
-        const double s = k / 20000.0;
-        truth = std::max(truth, dist(evaluate(sub, s), evaluate(L, s)));
-      }
+      const double truth = dense_parametric_distance(sub, A, B);
       for (double f : {1.02, 1.1, 1.5, 3.0}) {
         const double budget = truth * f;
         const double got = band_deviation(pieces[i], t0, t1, A, B, budget);
