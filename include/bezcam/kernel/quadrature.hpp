@@ -7,7 +7,7 @@
 /// arc (cam/motion.cpp) both come here.
 ///
 /// Header-only so that the integrand is inlined: no std::function, no
-/// allocation (the recursion is at most `kMaxDepth` deep).
+/// allocation (the recursion is at most `detail::kMaxQuadratureDepth` deep).
 #include <array>
 #include <cmath>
 
