@@ -1,4 +1,5 @@
-// --output arcs: G02/G03 in G17 with I/J, G01 where no arc fits.
+// --output arcs: G02/G03 in G17 with I/J (helical ones in G17, G18 or G19
+// for a curve that climbs), G01 where no arc fits.
 #include <algorithm>
 #include <stdexcept>
 
@@ -42,7 +43,8 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
   ao.band = c.params.tolerance_side == ToleranceSide::both;
   // The controller's radius check is in its own units: the program's.
   ao.radius_tolerance = c.machine.arc_tolerance_mm / mm_per_unit(c.job.units);
-  auto emit = [&](const FitMove& f) {
+  // `pl`: the arcs' plane (G18 and G19 for helical arcs only).
+  auto emit = [&](const FitMove& f, Plane pl) {
     if (f.kind == FitKind::line) {
       push_line(f.to);
     } else {
@@ -50,9 +52,11 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
       am.to = cut_point(c, f.to);
       am.center = cut_point(c, f.center);
       am.ccw = f.kind == FitKind::arc_ccw;
+      am.plane = pl;
       am.feed = c.params.feed;
       c.program.moves.push_back({am, entity});
-      const PrintedArc a{from, f.to, f.center, f.kind == FitKind::arc_ccw};
+      // The measured path follows the arc in its own plane.
+      const PrintedArc a{from, f.to, f.center, f.kind == FitKind::arc_ccw, pl};
       const auto pts = sample_arc(a, kSampleShare * c.tolerance);
       path.insert(path.end(), pts.begin() + 1, pts.end());
       ++blocks;
@@ -60,19 +64,27 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
     from = f.to;
   };
   // A curve that climbs (a piece whose z varies) gets no plain arcs; it may
-  // get helical ones (G02/G03 with Z in G17: z linear in the angle, the
-  // bound proven in 3D), which follow a ramp or a helix in a few blocks
-  // where lines need dozens. Both fits are made and the one with fewer
-  // blocks is written: band lines win on a climb that is not helix-like.
+  // get helical ones (G02/G03 whose third coordinate runs linearly with the
+  // angle, the bound proven in 3D), which follow a ramp or a helix in a few
+  // blocks where lines need dozens: in G17 around Z, G18 around Y or G19
+  // around X. The fit in each plane and the band lines are made, and the
+  // one with fewest blocks is written: lines on a tie (a climb that is not
+  // helix-like), then the plane the curve's control hull spreads least
+  // along (least_climb_plane(), the surface emitter's choice), then G17.
   if (std::any_of(pieces.begin(), pieces.end(), [](const Bezier& b) { return !planar_xy(b); })) {
-    ArcFitOptions helical = ao;
-    helical.helical = true;
-    ArcFitResult h = fit_arcs(pieces, helical), l = fit_arcs(pieces, ao);
-    const ArcFitResult& best = h.moves.size() < l.moves.size() ? h : l;
-    for (const FitMove& f : best.moves) emit(f);
+    ArcFitResult best = fit_arcs(pieces, ao);
+    const auto try_plane = [&](Plane pl) {
+      ArcFitResult h = fit_helical_arcs(pieces, ao, pl);
+      if (h.moves.size() < best.moves.size()) best = std::move(h);
+    };
+    const Plane first = least_climb_plane(pieces);
+    try_plane(first);
+    for (const Plane pl : {Plane::xy, Plane::zx, Plane::yz})
+      if (pl != first) try_plane(pl);
+    for (const FitMove& f : best.moves) emit(f, best.plane);
     return best.bound;
   }
-  return fit_arcs(pieces, ao, emit);
+  return fit_arcs(pieces, ao, [&](const FitMove& f) { emit(f, Plane::xy); });
 }
 
 void emit_arcs(CutContext& c, EntityReport& r) {

@@ -393,24 +393,15 @@ class SurfaceEmitter {
     if (!ap) return false;
     // The plane: the one whose axis the control points (a hull of the run)
     // spread least along; its arcs then climb least.
-    Box3 box;
-    for (const Bezier& b : ap->pieces)
-      for (const Vec3& p : b.points) box.add(p);
-    int axis = 2;
-    for (int k = 0; k < 2; ++k)
-      if (box.hi[k] - box.lo[k] < box.hi[axis] - box.lo[axis]) axis = k;
-    const Plane pl = axis == 2 ? Plane::xy : axis == 1 ? Plane::zx : Plane::yz;
-    std::vector<Bezier> local = ap->pieces;
-    for (Bezier& b : local)
-      for (Vec3& p : b.points) p = to_plane(p, pl);
+    const Plane pl = least_climb_plane(ap->pieces);
+    const int axis = world_axis(pl, 2);
     ArcFitOptions ao;
     ao.tolerance = tol - ap->bound;
     ao.decimals = c_.decimals;
     ao.radius_tolerance = c_.machine.arc_tolerance_mm / mm_per_unit(c_.job.units);
-    ao.helical = true;
     ArcFitResult fit;
     try {
-      fit = fit_arcs(local, ao);
+      fit = fit_helical_arcs(ap->pieces, ao, pl);
     } catch (const InputError&) {
       return false;  // what is left is below what rounding needs: lines
     }
@@ -426,10 +417,10 @@ class SurfaceEmitter {
     };
     std::vector<Printed> moves;
     std::vector<double> breaks{0.0};
-    Vec3 from = from_plane(fit.start, pl);
+    Vec3 from = fit.start;
     for (const FitMove& f : fit.moves) {
-      const Vec3 to = from_plane(f.to, pl);
-      moves.push_back({Arc{from, to, from_plane(f.center, pl), f.kind == FitKind::arc_ccw, pl}, f.kind == FitKind::line, {}});
+      const Vec3& to = f.to;
+      moves.push_back({Arc{from, to, f.center, f.kind == FitKind::arc_ccw, pl}, f.kind == FitKind::line, {}});
       if (!moves.back().line) moves.back().pts.emplace(moves.back().arc);
       breaks.push_back(ap->breaks[f.piece] + f.t * (ap->breaks[f.piece + 1] - ap->breaks[f.piece]));
       from = to;

@@ -551,4 +551,35 @@ ArcFitResult fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt) 
   return r;
 }
 
+Plane least_climb_plane(std::span<const Bezier> pieces) {
+  Box3 box;
+  for (const Bezier& b : pieces)
+    for (const Vec3& p : b.points) box.add(p);
+  int axis = 2;
+  for (int k = 0; k < 2; ++k)
+    if (box.hi[k] - box.lo[k] < box.hi[axis] - box.lo[axis]) axis = k;
+  return axis == 2 ? Plane::xy : axis == 1 ? Plane::zx : Plane::yz;
+}
+
+ArcFitResult fit_helical_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt, Plane pl) {
+  ArcFitOptions ho = opt;
+  ho.helical = true;
+  if (pl == Plane::xy) {
+    ArcFitResult r = fit_arcs(pieces, ho);
+    r.plane = pl;
+    return r;
+  }
+  std::vector<Bezier> local(pieces.begin(), pieces.end());
+  for (Bezier& b : local)
+    for (Vec3& p : b.points) p = to_plane(p, pl);
+  ArcFitResult r = fit_arcs(local, ho);
+  r.plane = pl;
+  r.start = from_plane(r.start, pl);
+  for (FitMove& m : r.moves) {
+    m.to = from_plane(m.to, pl);
+    m.center = from_plane(m.center, pl);
+  }
+  return r;
+}
+
 }  // namespace bezcam

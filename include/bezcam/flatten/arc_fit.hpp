@@ -76,6 +76,7 @@ struct ArcFitResult {
   Vec3 start;                ///< rounded first point (where the tool must be)
   std::vector<FitMove> moves;
   double bound = 0;          ///< largest certified deviation
+  Plane plane = Plane::xy;   ///< the arcs' plane (fit_helical_arcs(); G17 otherwise)
 };
 
 /// Callback core: emits the moves in order, starting from the rounded start
@@ -86,6 +87,20 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
 
 /// Collecting wrapper around the callback core.
 ArcFitResult fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt);
+
+/// The plane for helical arcs along `pieces`: the one whose axis their
+/// control points (a hull of the curve) spread least along, so that its
+/// arcs climb least. Ties go to G17, then G18.
+Plane least_climb_plane(std::span<const Bezier> pieces);
+
+/// Helical arcs in the plane `pl` for pieces in world coordinates:
+/// fit_arcs() with `helical` set, on the pieces mapped to the plane's
+/// coordinates (to_plane()), its moves mapped back (from_plane()). start,
+/// to and center are world points (the centre's coordinate along the
+/// plane's axis: the move's start's); ij stays in the plane's (a, b): the
+/// printed centre words (I J in G17, K I in G18, J K in G19). Throws as
+/// fit_arcs() does.
+ArcFitResult fit_helical_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt, Plane pl);
 
 /// True when the piece lies in a plane z = const (all control points share
 /// their z exactly; for rational and polynomial pieces alike that is the
