@@ -2,6 +2,7 @@
 // dialect (the words, their order and decimals), fallbacks and refusals.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <regex>
 #include <sstream>
@@ -97,6 +98,72 @@ TEST(OutputArcs, NonPlanarCurveTakesHelicalArcsOnlyWhereTheySaveBlocks) {
     EXPECT_LE(a.program.max_bound, 0.01);
     EXPECT_GT(a.program.max_measured, 0);
     EXPECT_LE(a.program.max_measured, a.program.max_bound * (1 + 1e-3));
+    // Round Z: G17, as the program begins.
+    EXPECT_EQ(count_matching(a.gcode, std::regex(R"((^|\s)G1[89]$)")), 0u) << a.gcode;
+  }
+  EXPECT_EQ(count_matching(r.gcode, std::regex(R"((^|\s)G1[89]$)")), 0u) << r.gcode;
+}
+
+// The plane word alone on its line (after a line number, if any).
+const std::regex kG18(R"(^(N\d+ )?G18$)"), kG19(R"(^(N\d+ )?G19$)"), kG17(R"(^(N\d+ )?G17$)");
+
+// Checks that the helical arcs of `a` are in the plane `g` (18 or 19): the
+// plane word before the first arc and G17 after the last, the arcs with
+// both ends and the centre words of that plane only, fewer than half the
+// blocks of lines output `l`, within the tolerance by the independent
+// measurement.
+void expect_arcs_in_plane(const ConvertResult& a, const ConvertResult& l, int g) {
+  const auto ls = lines_of(a.gcode);
+  const std::regex arc(R"((^|\s)G0?[23] )");
+  const std::regex words(g == 18 ? R"((^|\s)G0?[23] X-?[0-9.]+ Y-?[0-9.]+ Z-?[0-9.]+ I-?[0-9.]+ K-?[0-9.]+( F[0-9.]+)?$)"
+                                 : R"((^|\s)G0?[23] Y-?[0-9.]+ Z-?[0-9.]+ J-?[0-9.]+ K-?[0-9.]+( F[0-9.]+)?$)");
+  const std::regex& plane_word = g == 18 ? kG18 : kG19;
+  size_t first = ls.size(), last = 0, arcs = 0;
+  for (size_t i = 0; i < ls.size(); ++i)
+    if (std::regex_search(ls[i], arc)) {
+      first = std::min(first, i);
+      last = i;
+      ++arcs;
+      EXPECT_TRUE(std::regex_search(ls[i], words)) << ls[i];
+    }
+  ASSERT_GE(arcs, 4u) << a.gcode;
+  size_t selected = ls.size();
+  for (size_t i = 0; i < first; ++i)
+    if (std::regex_search(ls[i], plane_word)) selected = i;
+  EXPECT_LT(selected, first) << a.gcode;
+  for (size_t i = selected + 1; i < last; ++i) EXPECT_FALSE(std::regex_search(ls[i], kG17)) << ls[i];
+  bool back = false;
+  for (size_t i = last + 1; i < ls.size(); ++i) back = back || std::regex_search(ls[i], kG17);
+  EXPECT_TRUE(back) << a.gcode;
+  EXPECT_LT(a.program.entities[0].blocks * 2, l.program.entities[0].blocks)
+      << a.program.entities[0].blocks << " vs " << l.program.entities[0].blocks;
+  EXPECT_LE(a.program.max_bound, 0.01);
+  EXPECT_GT(a.program.max_measured, 0);
+  EXPECT_LE(a.program.max_measured, a.program.max_bound * (1 + 1e-3));
+}
+
+TEST(OutputArcs, CurveTurningRoundYTakesHelicalG18Arcs) {
+  // Half a turn of a helix round Y (radius 10, Y rising 20): it spreads
+  // less along Z (10) than along X (20), so G17 is tried first and fails;
+  // G18 follows it in a few arcs.
+  const double k = 10 * 4.0 / 3 * (std::sqrt(2.0) - 1);
+  const std::string groove =
+      R"({"id": "groove", "type": "path", "segments": [{"type": "bezier", "points": [[-10,0,0],[-10,3.3333333333333335,)" +
+      std::to_string(-k) + R"(],[)" + std::to_string(-k) +
+      R"(,6.666666666666667,-10],[0,10,-10]]}, {"type": "bezier", "points": [[0,10,-10],[)" + std::to_string(k) +
+      R"(,13.333333333333334,-10],[10,16.666666666666668,)" + std::to_string(-k) + R"(],[10,20,0]]}]})";
+  for (const char* m : {"generic", "fanuc", "linuxcnc", "grbl"}) {
+    SCOPED_TRACE(m);
+    expect_arcs_in_plane(run(job_of(groove), m, OutputMode::arcs), run(job_of(groove), m, OutputMode::lines), 18);
+  }
+}
+
+TEST(OutputArcs, CurveInAPlaneXConstTakesG19Arcs) {
+  // An arch in the plane x = 3: no helix, plain arcs of G19 (X stays).
+  const std::string arch = R"({"id": "arch", "type": "bezier", "points": [[3,0,0],[3,0,-8],[3,20,-8],[3,20,0]]})";
+  for (const char* m : {"generic", "fanuc", "linuxcnc", "grbl"}) {
+    SCOPED_TRACE(m);
+    expect_arcs_in_plane(run(job_of(arch), m, OutputMode::arcs), run(job_of(arch), m, OutputMode::lines), 19);
   }
 }
 

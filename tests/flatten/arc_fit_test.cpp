@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include "bezcam/error.hpp"
@@ -26,15 +27,16 @@ Bezier exact_arc(Vec3 c, double r, double a0, double a1) {
   return Bezier::make({p0, p1, p2}, {1, std::cos(h), 1});
 }
 
-// The path a controller draws, densely: arcs by the spiral model, lines as they are.
-std::vector<Vec3> drawn(const ArcFitResult& r, double sagitta) {
+// The path a controller draws, densely: arcs by the spiral model in the
+// result's plane (or `plane` when given), lines as they are.
+std::vector<Vec3> drawn(const ArcFitResult& r, double sagitta, std::optional<Plane> plane = std::nullopt) {
   std::vector<Vec3> out{r.start};
   Vec3 from = r.start;
   for (const auto& m : r.moves) {
     if (m.kind == FitKind::line) {
       out.push_back(m.to);
     } else {
-      PrintedArc a{from, m.to, m.center, m.kind == FitKind::arc_ccw};
+      PrintedArc a{from, m.to, m.center, m.kind == FitKind::arc_ccw, plane.value_or(r.plane)};
       auto pts = sample_arc(a, sagitta);
       out.insert(out.end(), pts.begin() + 1, pts.end());
     }
@@ -216,6 +218,64 @@ TEST(ArcFit, PathOfSeveralPiecesStartsEachPieceFromThePrintedPoint) {
     piece = m.piece;
   }
   EXPECT_EQ(piece, 2u);
+}
+
+// One turn of a helix round the axis of `pl` (radius 10, rising 2 a
+// quarter turn), as four cubic quarter turns in world coordinates: the
+// classic circle handles (within 2.7e-4 of the radius) and h linear in t.
+std::vector<Bezier> helix_turn(Plane pl) {
+  const double k = 10 * 4.0 / 3 * (std::sqrt(2.0) - 1);
+  std::vector<Bezier> ps;
+  for (int q = 0; q < 4; ++q) {
+    const double a0 = q * kPi / 2, a1 = a0 + kPi / 2, h0 = 2.0 * q;
+    const Vec3 u0{std::cos(a0), std::sin(a0)}, u1{std::cos(a1), std::sin(a1)};
+    const Vec3 t0{-u0.y, u0.x}, t1{-u1.y, u1.x};
+    std::vector<Vec3> pts{u0 * 10, u0 * 10 + t0 * k, u1 * 10 - t1 * k, u1 * 10};
+    for (int i = 0; i < 4; ++i) pts[i] = from_plane(pts[i] + Vec3{0, 0, h0 + 2.0 * i / 3}, pl);
+    ps.push_back(Bezier::make(pts, {}, 3));
+  }
+  return ps;
+}
+
+TEST(ArcFit, HelicalArcsInEachPlaneFollowAHelixRoundItsAxis) {
+  for (const Plane pl : {Plane::xy, Plane::zx, Plane::yz}) {
+    SCOPED_TRACE(g_number(pl));
+    const auto ps = helix_turn(pl);
+    // The axis spreads 8, the plane 20 each way: the plane is chosen.
+    EXPECT_EQ(least_climb_plane(ps), pl);
+    ArcFitOptions o{0.01, 3, 0.002};
+    const auto r = fit_helical_arcs(ps, o, pl);
+    EXPECT_EQ(r.plane, pl);
+    EXPECT_EQ(r.start, quantize(ps.front().front(), 3));
+    EXPECT_EQ(r.moves.back().to, quantize(ps.back().back(), 3));
+    // A handful of arcs where lines need many times more.
+    EXPECT_GE(count_arcs(r), 4u);
+    EXPECT_LT(r.moves.size() * 4, fit_arcs(ps, o).moves.size());
+    const int h = world_axis(pl, 2);
+    Vec3 from = r.start;
+    for (const auto& m : r.moves) {
+      if (m.kind != FitKind::line) {
+        // World points; the centre at the start's height along the axis,
+        // the printed centre words in the plane's (a, b).
+        EXPECT_EQ(m.center[h], from[h]);
+        const Vec3 d = to_plane(m.center - from, pl);
+        EXPECT_NEAR(d.x, m.ij.x, 1e-9);
+        EXPECT_NEAR(d.y, m.ij.y, 1e-9);
+        const PrintedArc a{from, m.to, m.center, m.kind == FitKind::arc_ccw, pl};
+        EXPECT_LE(std::abs(a.r_start() - a.r_end()), o.radius_tolerance);
+      }
+      EXPECT_LE(m.bound, o.tolerance);
+      from = m.to;
+    }
+    EXPECT_LE(r.bound, o.tolerance);
+    // Measured independently along the arcs drawn in their plane.
+    const double check = r.bound + 2e-3 * o.tolerance;
+    EXPECT_LE(measure_deviation(ps, drawn(r, o.tolerance * 1e-4), check).max(), check);
+    // The same words drawn in another plane are far off: the measurement
+    // sees the plane.
+    const Plane other = pl == Plane::xy ? Plane::zx : Plane::xy;
+    EXPECT_GT(measure_deviation(ps, drawn(r, o.tolerance * 1e-4, other), o.tolerance).max(), 1.0);
+  }
 }
 
 }  // namespace
