@@ -188,8 +188,17 @@ double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
 // `inner`, when not null, receives the largest magnitude of the cross part
 // at its interior extremes (0 when it has none), whatever the sides: for
 // chords across an inflection, which have no bulge, it steers the search.
-inline __attribute__((always_inline)) double band_cubic_planar(const Vec3* S, const Vec3& A, const Vec3& B, double budget, double* bulge,
-                         double* inner = nullptr) {
+// A point of the plane, for the band's search on planar cubics (which
+// needs no z); as_vec3() gives either kind of point as a Vec3.
+struct XY {
+  double x, y;
+};
+inline Vec3 as_vec3(const Vec3& p) { return p; }
+inline Vec3 as_vec3(const XY& p) { return {p.x, p.y}; }
+
+template <class Pt>
+inline __attribute__((always_inline)) double band_cubic_planar(const Pt* S, const Pt& A, const Pt& B, double budget,
+                                                               double* bulge, double* inner = nullptr) {
   const double abx = B.x - A.x, aby = B.y - A.y;
   const double l2 = abx * abx + aby * aby;
   auto cross_ab = [&](double x, double y) { return abx * y - aby * x; };
@@ -257,11 +266,15 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Vec3* S, co
   }
   // The cross part alone exceeds the budget somewhere: so does |D|.
   if (P2 > b2 && l2 > 0) return std::sqrt(P2) * inv;
+  const Vec3 Av = as_vec3(A), Bv = as_vec3(B);
   std::array<Vec3, 4> d;
-  d[0] = S[0] - A;
-  d[3] = S[3] - B;
-  const Vec3 ab = B - A;
-  for (int k = 1; k < 3; ++k) d[k] = S[k] - (A + ab * (l2 > 0 ? std::clamp(dot(S[k] - A, ab) / l2, 0.0, 1.0) : 0.0));
+  d[0] = as_vec3(S[0]) - Av;
+  d[3] = as_vec3(S[3]) - Bv;
+  const Vec3 ab = Bv - Av;
+  for (int k = 1; k < 3; ++k) {
+    const Vec3 Sk = as_vec3(S[k]);
+    d[k] = Sk - (Av + ab * (l2 > 0 ? std::clamp(dot(Sk - Av, ab) / l2, 0.0, 1.0) : 0.0));
+  }
   return cubic_within(d, budget, 40);
 }
 
@@ -700,7 +713,7 @@ void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece,
           d1y = (c3y * (3 * t1) + c2y * 2) * t1 + c1y;
         }
         const double h = (t1 - t0) / 3;
-        const Vec3 S[4] = {{S0x, S0y}, {S0x + T0x * h, S0y + T0y * h}, {onx - d1x * h, ony - d1y * h}, {onx, ony}};
+        const XY S[4] = {{S0x, S0y}, {S0x + T0x * h, S0y + T0y * h}, {onx - d1x * h, ony - d1y * h}, {onx, ony}};
         const bool has_side = sx != 0 || sy != 0;
         double H = -kInf;
         for (int pass = 0; pass < 2; ++pass) {
@@ -717,7 +730,7 @@ void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece,
           if (!(budget > 0)) continue;
           if (pass == 1 && H > (decimals >= 0 ? longest_sagitta(budget, offA, 0) : ls_on())) break;
           double bulge = -kInf, inner = -1;
-          const double dev = band_cubic_planar(S, Vec3{ax, ay}, Vec3{Bx, By}, budget, &bulge, &inner);
+          const double dev = band_cubic_planar(S, XY{ax, ay}, XY{Bx, By}, budget, &bulge, &inner);
           H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
           c.t1 = t1, c.dev = dev, c.disp = disp, c.H = H, c.budget = budget;
           c.Bx = Bx, c.By = By, c.Brx = Brx, c.Bry = Bry, c.on = pass == 1, c.bend = bend1, c.inner = inner;
