@@ -15,6 +15,10 @@
 //          bench/flatten_instructions.sh (instruction counts under callgrind,
 //          which machine load does not change); with --repeat N, N times
 //          (for a sampling profiler: perf record).
+//        flatten_bench [--quick] --only hash|hash-all
+//          prints a fingerprint of the band flattener's vertices (hash-all:
+//          also over space, rational and degree-4 pieces), for checking that
+//          a change meant to be faster flattens exactly alike.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -216,17 +220,35 @@ int main(int argc, char** argv) {
     else corpus = argv[i], named = true;
   }
   const auto curves = load(corpus, quick, named);
-  if (only == "hash") {
+  if (only == "hash" || only == "hash-all") {
+    // A fingerprint of every vertex the band flattener emits over the
+    // corpus, for tolerances and decimals: two builds that print the same
+    // hash flatten alike. "hash-all" adds, for every 10th curve, the same
+    // curve lifted into space (z from x and y), made rational (inner
+    // weights 2 and 1/2) and raised to degree 4: the pieces the general
+    // search takes.
+    std::vector<Bezier> extra;
+    if (only == "hash-all")
+      for (size_t i = 0; i < curves.size(); i += 10) {
+        const Bezier& b = curves[i].b;
+        std::vector<Vec3> p3 = b.points;
+        for (auto& p : p3) p.z = 0.3 * p.x - 0.2 * p.y;
+        extra.push_back(Bezier::make(p3, {}, 3));
+        extra.push_back(Bezier::make(b.points, {1, 2, 0.5, 1}));
+        extra.push_back(elevate(b));
+      }
     unsigned long long h = 1469598103934665603ull;
     for (int dec : {-1, 3, 4})
       for (double tol : {0.1, 0.01, 0.001, 0.03}) {
         if (dec == 3 && tol < 0.005) continue;
-        for (const auto& c : curves) {
-          const double bound = flatten_pieces(std::span<const Bezier>(&c.b, 1), {tol, dec}, [&](const FlatVertex& v) {
-            for (double d : {v.point.x, v.point.y, v.t}) { unsigned long long u; std::memcpy(&u, &d, 8); h = (h ^ u) * 1099511628211ull; }
+        auto run = [&](const Bezier& b) {
+          const double bound = flatten_pieces(std::span<const Bezier>(&b, 1), {tol, dec}, [&](const FlatVertex& v) {
+            for (double d : {v.point.x, v.point.y, v.point.z, v.t}) { unsigned long long u; std::memcpy(&u, &d, 8); h = (h ^ u) * 1099511628211ull; }
           });
           unsigned long long u; std::memcpy(&u, &bound, 8); h = (h ^ u) * 1099511628211ull;
-        }
+        };
+        for (const auto& c : curves) run(c.b);
+        for (const auto& b : extra) run(b);
       }
     std::printf("hash %llx\n", h);
     return 0;
