@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "bezcam/error.hpp"
+#include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
@@ -492,6 +493,45 @@ TEST(SurfaceProgram, ArcsInThreePlanesTakeFewerBlocksThanLinesWithinTolerance) {
     EXPECT_LE(check_on_surface(*e.surface, runs, cp.tool_radius, job.tolerance, true), job.tolerance);
   }
   expect_saddle_raster_within_stepover("generic", OutputMode::arcs);
+}
+
+// A pass that turns half a helix round Y spreads least along Z (the arch
+// rises 27 along Z, its control points run 40 along X and 58 along Y), so
+// the least-spread plane is G17, where it fits no arc; the other planes are
+// tried then, and its passes are cut as helical G18 arcs, fewer blocks than
+// lines, within the tolerance measured independently and on the surface.
+TEST(SurfaceProgram, APassTurningRoundYTakesG18ArcsThoughItSpreadsLeastAlongZ) {
+  const std::string text = R"({"bezcam": 1, "units": "mm", "tolerance": 0.01,
+    "job": {"feed": 1000, "plunge_feed": 300, "safe_z": 40, "tool_radius": 0},
+    "entities": [{"id": "twisted-arch", "type": "bezier_patch", "points": [
+      [[20, 0, 0], [20, 8, 0]],
+      [[20, 16.6667, 26.6667], [20, 24.6667, 26.6667]],
+      [[-20, 33.3333, 26.6667], [-20, 41.3333, 26.6667]],
+      [[-20, 50, 0], [-20, 58, 0]]],
+      "toolpath": {"pattern": "zigzag", "direction": "u", "stepover": 4}}]})";
+  const Job job = parse_job(text, "twisted-arch.json");
+  ASSERT_EQ(least_climb_plane(std::vector<Bezier>{Bezier::make(
+                {{20, 0, 0}, {20, 16.6667, 26.6667}, {-20, 33.3333, 26.6667}, {-20, 50, 0}}, {}, 3)}),
+            Plane::xy);
+  const Read lines = convert_and_read(job, "generic", OutputMode::lines);
+  const Read arcs = convert_and_read(job, "generic", OutputMode::arcs);
+  const EntityReport& ln = lines.r.program.entities[0];
+  const EntityReport& ar = arcs.r.program.entities[0];
+  size_t g18 = 0, others = 0;
+  for (const auto& b : arcs.blocks) {
+    if (b.kind != BlockKind::arc_cw && b.kind != BlockKind::arc_ccw) continue;
+    (b.plane == Plane::zx ? g18 : others) += 1;
+  }
+  EXPECT_GT(g18, 0u);
+  EXPECT_EQ(others, 0u);
+  EXPECT_LT(2 * ar.blocks, ln.blocks);
+  EXPECT_LE(ar.bound, job.tolerance);
+  EXPECT_GT(ar.measured, 0);
+  EXPECT_LE(ar.measured, job.tolerance * 1.001);
+  const CutParams cp = cut_params(job, job.entities[0], arcs.m);
+  const auto runs = runs_of(arcs, quantize(cp.feed, arcs.m.feed_decimals), job.tolerance / 2);
+  ASSERT_FALSE(runs.empty());
+  EXPECT_LE(check_on_surface(*job.entities[0].surface, runs, cp.tool_radius, job.tolerance, true), job.tolerance);
 }
 
 // Where the dialect cannot carry a 3D block (LinuxCNC's G5.x move in X and
