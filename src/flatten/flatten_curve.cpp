@@ -377,24 +377,14 @@ struct Prepared {
 
   // Unit vector at t across the curve towards its convex side (away from
   // the centre of curvature); zero where there is none (a straight stretch,
-  // an inflection, a stationary point). For a cubic, `tangent_out` (when
-  // not null) receives M'(t); in the plane, where there is a side,
-  // `bend_out` (when not null) receives bend(t).
-  Vec3 convex_side(double t, Vec3* tangent_out = nullptr, double* bend_out = nullptr) const {
+  // an inflection, a stationary point). For the general search (pieces in
+  // space, rational or of degree over 3); band_planar_piece() finds it for
+  // planar cubics on its own, without a second square root.
+  Vec3 convex_side(double t) const {
     Vec3 d1, d2;
     if (cubic) {
       d1 = tangent(t);
-      if (tangent_out) *tangent_out = d1;
       d2 = c3 * (6 * t) + c2 * 2;
-      if (planar) {
-        // The same in the plane: the normal part of M'' is perp(M') cr /
-        // |M'|^2, with cr = M' x M''; no second square root.
-        const double s2 = d1.x * d1.x + d1.y * d1.y, cr = d1.x * d2.y - d1.y * d2.x;
-        if (!(cr * cr > 1e-24 * (d2.x * d2.x + d2.y * d2.y) * s2) || !std::isfinite(cr * cr * s2)) return {};
-        const double k = (cr > 0 ? -1 : 1) / std::sqrt(s2);
-        if (bend_out) *bend_out = std::abs(cr * k);  // bend(t)
-        return {-d1.y * k, d1.x * k};
-      }
     } else {
       d1 = derivative(*b, t);
       d2 = second_derivative(*b, t);
@@ -629,9 +619,10 @@ inline void count_search(int kind, int n_tries) {
 // steered by the bulge as described above. It works on plain x and y values
 // held in locals (no z; the curve's point and tangent at t0 carried from the
 // chord that ended there; the largest sagittas computed once per search when
-// there is no rounding): 12-15 % faster than the same search written over
-// Vec3 with its state reached through a lambda's references, vertex for
-// vertex the same (flatten_bench --only hash-all). bound_band() calls it for
+// there is no rounding): about 10 % faster than the same search written
+// over Vec3 with its state reached through a lambda's references (best of 5
+// interleaved runs), vertex for vertex the same (flatten_bench --only
+// hash-all). bound_band() calls it for
 // such pieces and searches every other one itself. `A`, `Ar` (the last
 // vertex, exact and rounded) and `dispA` come in for the piece's start;
 // `Ar` leaves as the piece's last vertex; `bound` and `emitted` accumulate.
