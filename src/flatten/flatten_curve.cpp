@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <tuple>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +16,10 @@
 #include "bezcam/flatten/degree_reduce.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "flatten/search.hpp"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace bezcam {
 
@@ -224,6 +231,7 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Pt* S, cons
     const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
     const double U2 = hb * hb + std::max(a0 * a0, a3 * a3);
     if (U2 <= budget * budget * l2) {
+      if (!bulge && !inner) return std::sqrt(U2 / l2);  // (one root fewer)
       const double inv = 1 / std::sqrt(l2);
       if (bulge && sg * c0 <= 0 && sg * c3 <= 0) {
         // The peak of the parabola through the values at 1/4, 1/2 and 3/4
@@ -245,10 +253,11 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Pt* S, cons
   // The bulge: on the side sg of the inner points, the largest interior
   // extreme, when both ends lie on the other side (a shape the search's
   // model fits; otherwise the bulge is left unknown).
-  double in = -kInf, mag = 0;
+  double in = -kInf, mag = 0, rv[2] = {0, 0};
   for (int i = 0; i < n; ++i) {
     const double s = r[i], u = 1 - s;
     const double v = u * u * (c0 * u + 3 * c1 * s) + s * s * (3 * c2 * u + c3 * s);
+    rv[i] = v;
     lo = std::min(lo, v);
     hi = std::max(hi, v);
     in = std::max(in, sg * v);
@@ -263,6 +272,26 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Pt* S, cons
     const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
     const double U2 = P2 + std::max(a0 * a0, a3 * a3);
     if (U2 <= b2) return std::sqrt(U2) * inv;
+    // Finer, before subdividing: |D|^2 l2 is cross^2 + along^2, with
+    // along(s) = a0 (1 - s)^3 + a3 s^3 large only near the ends, where the
+    // cross part is small. On each quarter of [0, 1] the cross part's
+    // largest magnitude is at an end of it or at an extreme found above,
+    // and |along|'s at an end (it is convex or monotone): their squares'
+    // sum bounds |D|^2 l2 there.
+    if (P2 <= b2) {
+      double U2f = 0, cp = c0 * c0, ap = a0 * a0;
+      for (int k = 1; k <= 4; ++k) {
+        const double s = 0.25 * k, u = 1 - s;
+        const double cv = u * u * (c0 * u + 3 * c1 * s) + s * s * (3 * c2 * u + c3 * s);
+        const double av = a0 * u * u * u + a3 * s * s * s;
+        double cm = std::max(cp, cv * cv);
+        for (int i = 0; i < n; ++i)
+          if (r[i] >= s - 0.25 && r[i] <= s) cm = std::max(cm, rv[i] * rv[i]);
+        U2f = std::max(U2f, cm + std::max(ap, av * av));
+        cp = cv * cv, ap = av * av;
+      }
+      if (U2f <= b2) return std::sqrt(U2f) * inv;
+    }
   }
   // The cross part alone exceeds the budget somewhere: so does |D|.
   if (P2 > b2 && l2 > 0) return std::sqrt(P2) * inv;
@@ -298,8 +327,12 @@ double wang_step(const Bezier& b, double tol) {
   const auto& P = b.points;
   const int n = b.degree();
   if (n < 2) return 1;
-  double m = 0;
-  for (int i = 0; i + 2 <= n; ++i) m = std::max(m, norm(P[i] - P[i + 1] * 2 + P[i + 2]));
+  double m2 = 0;  // (the largest square, one root: the same value)
+  for (int i = 0; i + 2 <= n; ++i) {
+    const Vec3 d = P[i] - P[i + 1] * 2 + P[i + 2];
+    m2 = std::max(m2, dot(d, d));
+  }
+  const double m = std::sqrt(m2);
   const double k = std::sqrt(n * (n - 1) * m / (8 * tol));
   return k <= 1 ? 1.0 : 1.0 / std::ceil(k);
 }
@@ -581,13 +614,16 @@ struct CrossSearch {
 
 #ifdef BEZCAM_FLATTEN_COUNTERS
 // For measurement only (bench/flatten_tries.sh builds the benchmark with
-// it): the band's chord searches and their tries, by kind (steered by the
-// bulge; across an inflection, where some try had none; the piece's last
-// chord), with how many searches took 1, 2, ..., 8 or more tries, printed
-// to stderr at exit.
+// it): the planned pieces (band_planar_spread()) with their tries and the
+// chords shortened; the searches (band_planar_piece() and the general
+// loop) and their tries, by kind (steered by the bulge; across an
+// inflection, where some try had none; the piece's last chord), with how
+// many searches took 1, 2, ..., 8 or more tries; printed to stderr at exit.
 struct Counters {
   long searches[3] = {}, tries[3] = {}, hist[3][8] = {};
+  long spread_pieces = 0, spread_tries = 0, spread_shrinks = 0;
   ~Counters() {
+    std::fprintf(stderr, "planned    pieces %ld tries %ld shortened %ld\n", spread_pieces, spread_tries, spread_shrinks);
     const char* names[3] = {"steered", "inflection", "last"};
     for (int k = 0; k < 3; ++k) {
       std::fprintf(stderr, "%-10s searches %ld tries %ld (%.2f)", names[k], searches[k], tries[k], searches[k] ? double(tries[k]) / searches[k] : 0.0);
@@ -629,7 +665,8 @@ inline void count_search(int kind, int n_tries) {
 template <class Emit>
 void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt,
                        double tol, double margin, double shift, size_t pi, const Vec3& A, Vec3& Ar, double dispA,
-                       double& bound, size_t& emitted, Emit& emit) {
+                       double& bound, size_t& emitted, Emit& emit, double t_start = 0, double offA_start = 0,
+                       double dt_start = 0) {
   const double c0x = P.c0.x, c0y = P.c0.y, c1x = P.c1.x, c1y = P.c1.y;
   const double c2x = P.c2.x, c2y = P.c2.y, c3x = P.c3.x, c3y = P.c3.y;
   const double endx = piece.back().x, endy = piece.back().y;
@@ -644,13 +681,13 @@ void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece,
     double Mx = 0, My = 0, dMx = 0, dMy = 0;
     bool on = false;
   };
-  double offA = 0;
-  double bend0 = P.bend(0);
-  double t0 = 0;
-  double dt = P.first_step(longest_sagitta(tol - margin - dispA, 0, shift));
+  double offA = offA_start;
+  double bend0 = P.bend(t_start);
+  double t0 = t_start;
+  double dt = dt_start > 0 ? dt_start : P.first_step(longest_sagitta(tol - margin - dispA, 0, shift));
   double ax = A.x, ay = A.y;
-  const Vec3 T0v = P.tangent(0);
-  double S0x = piece.front().x, S0y = piece.front().y, T0x = T0v.x, T0y = T0v.y;  // M(t0), M'(t0)
+  const Vec3 T0v = P.tangent(t_start), S0v = P.point(t_start);
+  double S0x = S0v.x, S0y = S0v.y, T0x = T0v.x, T0y = T0v.y;  // M(t0), M'(t0)
   // Two slots, the best chord so far and the one being tried, swapped by
   // index rather than copied, kept across the piece's searches.
   Chord2 slot[2];
@@ -805,6 +842,386 @@ void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece,
   }
 }
 
+// The band's fast path on one planar polynomial cubic piece: the chords
+// planned all at once, then each one proven. Band chords that all use the
+// same share of their room are close to the fewest (the error spread
+// evenly is the asymptotic optimum), and planning them needs no search: a
+// chord of parameter step h where the density
+//   f(t) = sqrt(|M'(t) x M''(t)| / |M'(t)|)
+// holds has a sagitta of about f^2 h^2 / 8, so the piece needs about
+//   integral of f / sqrt(8 H) dt
+// chords of sagitta H, and they end where the running integral reaches
+// equal shares of the whole. H is kSpreadAim of the longest sagitta the
+// band allows with both ends shifted (longest_sagitta()) under the worst
+// rounding; a chord with an end on the curve (the piece's first and last)
+// has less room and is planned shorter. Near an inflection, where f
+// vanishes and a chord's gap grows like the cube of its step, the cubic
+// term's density takes over. The integral is taken by the trapezoid rule,
+// on 8 to kSpreadSamples intervals (more for pieces that need more chords).
+// Every chord is then proven like any other (band_cubic_planar(), with its
+// ends' real rounding). One that does not fit is shortened, as if its
+// sagitta grew like the square of its step, and the rest of the piece is
+// planned again from its end. A piece the plan cannot serve (a cusp at a
+// sample, more than kSpreadMax chords) goes to band_planar_piece(), and so
+// does the rest of one whose chord will not fit after kSpreadShrinks tries.
+constexpr int kSpreadSamples = 32;
+constexpr double kSpreadRefine = 1.0;
+constexpr double kSpreadAim = 0.95;
+constexpr double kSpreadMax = 1 << 16;
+constexpr int kSpreadShrinks = 32;
+// Cube root for planning only (a guess refined by two Newton steps: about
+// 1e-5 relative), for x > 0: std::cbrt costs ten times more.
+inline double cbrt_estimate(double x) {
+  std::uint64_t i;
+  std::memcpy(&i, &x, sizeof i);
+  i = i / 3 + 0x2A9F7893782DA1CEull;
+  double y;
+  std::memcpy(&y, &i, sizeof y);
+  y = (2 * y + x / (y * y)) * (1.0 / 3);
+  return (2 * y + x / (y * y)) * (1.0 / 3);
+}
+
+#if defined(__SSE2__)
+using v2d = double __attribute__((vector_size(16)));
+inline v2d vabs(v2d x) { return v2d(_mm_andnot_pd(_mm_set1_pd(-0.0), __m128d(x))); }
+inline v2d vmax(v2d a, v2d b) { return v2d(_mm_max_pd(__m128d(a), __m128d(b))); }
+inline v2d vsqrt(v2d x) { return v2d(_mm_sqrt_pd(__m128d(x))); }
+// band_cubic_planar()'s sufficient test (the one without roots) on two
+// chords at once, lane by lane the same arithmetic: ok[i] when it settles
+// chord i (it fits, of bound dev[i]); otherwise band_cubic_planar() decides.
+inline void band_sufficient2(const v2d* Sx, const v2d* Sy, v2d Ax, v2d Ay, v2d Bx, v2d By, v2d budget, bool ok[2],
+                             double dev[2]) {
+  const v2d abx = Bx - Ax, aby = By - Ay;
+  const v2d l2 = abx * abx + aby * aby;
+  auto cross_ab = [&](v2d x, v2d y) { return abx * y - aby * x; };
+  auto dot_ab = [&](v2d x, v2d y) { return abx * x + aby * y; };
+  const v2d w1x = Sx[1] - Ax, w1y = Sy[1] - Ay, w2x = Sx[2] - Ax, w2y = Sy[2] - Ay;
+  const v2d d0x = Sx[0] - Ax, d0y = Sy[0] - Ay, d3x = Sx[3] - Bx, d3y = Sy[3] - By;
+  const v2d c0 = cross_ab(d0x, d0y), c1 = cross_ab(w1x, w1y), c2 = cross_ab(w2x, w2y), c3 = cross_ab(d3x, d3y);
+  const v2d l1 = dot_ab(w1x, w1y), l2p = dot_ab(w2x, w2y);
+  const v2d a = 0.5 * (c0 + c1), b = 0.5 * (c1 + c2), c = 0.5 * (c2 + c3);
+  const v2d ab = 0.5 * (a + b), bc = 0.5 * (b + c), m = 0.5 * (ab + bc);
+  const v2d hin = vmax(vmax(vmax(vabs(a), vabs(ab)), vmax(vabs(m), vabs(bc))), vabs(c));
+  const v2d hb = vmax(hin, vmax(vabs(c0), vabs(c3)));
+  const v2d a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
+  const v2d U2 = hb * hb + vmax(a0 * a0, a3 * a3);
+  const auto fit = (l2 > 1e-300) & (l1 >= 0) & (l1 <= l2) & (l2p >= 0) & (l2p <= l2) & (U2 <= budget * budget * l2);
+  const v2d dv = vsqrt(U2 / l2);
+  ok[0] = fit[0] != 0, ok[1] = fit[1] != 0;
+  dev[0] = dv[0], dev[1] = dv[1];
+}
+#endif
+
+template <class Emit>
+void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt,
+                        double tol, double margin, double rounding, double shift, size_t pi, const Vec3& A, Vec3& Ar,
+                        double dispA, double& bound, size_t& emitted, Emit& emit) {
+  const double c0x = P.c0.x, c0y = P.c0.y, c1x = P.c1.x, c1y = P.c1.y;
+  const double c2x = P.c2.x, c2y = P.c2.y, c3x = P.c3.x, c3y = P.c3.y;
+  const double plan_budget = tol - margin - std::max(rounding, dispA);
+  if (!(plan_budget > 0))
+    return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);
+  const double H2 = longest_sagitta(plan_budget, shift, shift);
+  const double inv8H = 1 / std::sqrt(8 * kSpreadAim * H2);
+  // The cubic term: across an inflection a chord's gap is about
+  // |M' x M'''| / |M'| h^3 / (72 sqrt 3), with M''' = 6 c3.
+  const double k3 = 6 / (72 * std::sqrt(3.0) * kSpreadAim * plan_budget);
+  // Densities on a grid of kSpreadSamples intervals, sampled every 8th,
+  // then refined (by halving) while the piece needs more than
+  // kSpreadRefine chords per interval.
+  double D[kSpreadSamples + 1];
+  // (N samples at once, from index `from` by `step`: the loop has no
+  // branch and a fixed count, so the compiler takes two samples per
+  // instruction; the cubic term's root, rarely needed, comes after)
+  auto one = [&](double t, double& d, double& g) {
+    const double d1x = (c3x * (3 * t) + c2x * 2) * t + c1x, d1y = (c3y * (3 * t) + c2y * 2) * t + c1y;
+    const double d2x = c3x * (6 * t) + c2x * 2, d2y = c3y * (6 * t) + c2y * 2;
+    const double is = 1 / std::sqrt(d1x * d1x + d1y * d1y);
+    d = std::sqrt(std::abs(d1x * d2y - d1y * d2x) * is) * inv8H;
+    g = std::abs(d1x * c3y - d1y * c3x) * is * k3;
+  };
+  auto densities = [&]<int N>(std::integral_constant<int, N>, int from, int step) {
+    double d[N], g[N];
+#if defined(__SSE2__)
+    for (int k = 0; k < N; k += 2) {
+      const v2d t = v2d{double(from + k * step), double(from + (k + 1) * step)} * (1.0 / kSpreadSamples);
+      const v2d d1x = (c3x * (3 * t) + c2x * 2) * t + c1x, d1y = (c3y * (3 * t) + c2y * 2) * t + c1y;
+      const v2d d2x = c3x * (6 * t) + c2x * 2, d2y = c3y * (6 * t) + c2y * 2;
+      const v2d is = 1 / vsqrt(d1x * d1x + d1y * d1y);
+      const v2d dk = vsqrt(vabs(d1x * d2y - d1y * d2x) * is) * inv8H;
+      const v2d gk = vabs(d1x * c3y - d1y * c3x) * is * k3;
+      d[k] = dk[0], d[k + 1] = dk[1], g[k] = gk[0], g[k + 1] = gk[1];
+    }
+#else
+    for (int k = 0; k < N; ++k) one(double(from + k * step) * (1.0 / kSpreadSamples), d[k], g[k]);
+#endif
+    for (int k = 0; k < N; ++k) {
+      const int idx = from + k * step;
+      if (idx > kSpreadSamples) break;
+      // A stationary point at the sample (M' = 0, as where the first
+      // control points coincide): the density's limit, from close by.
+      if (!(d[k] >= 0 && g[k] >= 0)) {
+        const double t = double(idx) * (1.0 / kSpreadSamples);
+        one(t < 0.5 ? t + 1e-6 : t - 1e-6, d[k], g[k]);
+      }
+      D[idx] = g[k] > d[k] * d[k] * d[k] ? cbrt_estimate(g[k]) : d[k];
+    }
+  };
+  int m = 8, stride = kSpreadSamples / 8;
+  densities(std::integral_constant<int, 10>{}, 0, stride);  // (the 10th is past the end, unused)
+  auto integral = [&] {
+    double sum = 0.5 * (D[0] + D[kSpreadSamples]);
+    for (int idx = stride; idx < kSpreadSamples; idx += stride) sum += D[idx];
+    return sum / m;
+  };
+  double total = integral();
+  while (m < kSpreadSamples && m * kSpreadRefine < total) {
+    if (m == 8)
+      densities(std::integral_constant<int, 8>{}, stride / 2, stride);
+    else
+      densities(std::integral_constant<int, 16>{}, stride / 2, stride);
+    m *= 2, stride /= 2;
+    total = integral();
+  }
+  // (a cusp at a sample gives infinity or NaN here)
+  if (!(total < kSpreadMax))
+    return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);
+  double C[kSpreadSamples + 1];
+  C[0] = 0;
+  const double inv_m = 1.0 / m;  // (m is a power of 2: multiplying by it divides exactly)
+  for (int j = 1; j <= m; ++j) C[j] = C[j - 1] + 0.5 * (D[(j - 1) * stride] + D[j * stride]) * inv_m;
+  // The intervals' inverse widths (divisions here, off the chords' path).
+  double W[kSpreadSamples];
+  for (int j = 0; j < m; ++j) W[j] = C[j + 1] > C[j] ? 1 / (C[j + 1] - C[j]) : 0.0;
+  total = C[m];
+  // The plan from a vertex: the rest of the integral shared among as few
+  // chords as fit, the last one (and the first, from a vertex on the curve)
+  // counting for e of the units (both ends on the curve: e1).
+  const double e = std::sqrt(longest_sagitta(plan_budget, 0, shift) / H2), e1 = std::sqrt(plan_budget / H2);
+  int j = 0;         // the grid interval of `level`
+  double level = 0;  // the integral at the planned end
+  double unit = 0;   // the integral an inner chord covers
+  int left = 0;      // chords left in the plan, the planned one included
+  auto at_level = [&](double lv) {
+    while (j < m - 1 && C[j + 1] < lv) ++j;
+    return (j + std::clamp((lv - C[j]) * W[j], 0.0, 1.0)) * inv_m;
+  };
+  auto plan_from = [&](double from, bool from_curve) {
+    j = std::min(int(from * m), m - 1);
+    const double c = C[j] + (from * m - j) * (C[j + 1] - C[j]);
+    const double rest = total - c;
+    if (!(rest > (from_curve ? e1 : e))) {
+      left = 1;
+      return 1.0;
+    }
+    const double first = from_curve ? e : 1.0;
+    const double inner = std::max(0.0, std::ceil(rest - first - e - 1e-9));
+    unit = rest / (first + inner + e);
+    left = int(inner) + 2;
+    level = c + first * unit;
+    return std::max(from, at_level(level));
+  };
+  double ax = A.x, ay = A.y, dA = dispA;
+  double t0 = 0, S0x = piece.front().x, S0y = piece.front().y, T0x = c1x, T0y = c1y;
+  const double endx = piece.back().x, endy = piece.back().y;
+  const int decimals = opt.decimals;
+  int shrinks = 0;
+  bool as_planned = true;  // the chord tried ends where the plan put it
+  double t1 = plan_from(0, true);
+  // One vertex: the curve's point and tangent at t, B shifted towards the
+  // convex side (none at an inflection, a straight stretch or the end),
+  // its rounding and how far that moved it.
+  struct Vtx {
+    double t, onx, ony, d1x, d1y, Bx, By, disp;
+    Vec3 Br;
+    bool side;
+  };
+  auto finish = [&](Vtx& v, double sx, double sy) {
+    v.Bx = v.onx + sx, v.By = v.ony + sy, v.side = sx != 0 || sy != 0;
+    v.Br = Vec3{v.Bx, v.By};
+    v.disp = 0;
+    if (decimals >= 0) {
+      v.Br = quantize(v.Br, decimals);
+      v.disp = std::sqrt((v.Br.x - v.Bx) * (v.Br.x - v.Bx) + (v.Br.y - v.By) * (v.Br.y - v.By));
+    }
+  };
+  auto vertex = [&](double t, Vtx& v) {
+    v.t = t;
+    double sx = 0, sy = 0;
+    if (t < 1) {
+      const double t3 = 3 * t, t6 = 6 * t;
+      v.onx = ((c3x * t + c2x) * t + c1x) * t + c0x;
+      v.ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
+      v.d1x = (c3x * t3 + c2x * 2) * t + c1x;
+      v.d1y = (c3y * t3 + c2y * 2) * t + c1y;
+      const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
+      const double s2 = v.d1x * v.d1x + v.d1y * v.d1y, cr = v.d1x * d2y - v.d1y * d2x;
+      if (cr * cr > 1e-24 * (d2x * d2x + d2y * d2y) * s2 && std::isfinite(cr * cr * s2)) {
+        const double k = (cr > 0 ? -shift : shift) / std::sqrt(s2);
+        sx = -v.d1y * k, sy = v.d1x * k;
+      }
+    } else {
+      v.onx = endx, v.ony = endy;
+      v.d1x = c3x * 3 + c2x * 2 + c1x;
+      v.d1y = c3y * 3 + c2y * 2 + c1y;
+    }
+    finish(v, sx, sy);
+  };
+  // The chord from the current vertex to v: its bound (infinity: it cannot
+  // fit) and budget.
+  auto chord = [&](const Vtx& v, double& budget) {
+    budget = tol - margin - std::max(dA, v.disp);
+    const double h = (v.t - t0) * (1.0 / 3);
+    const XY S[4] = {{S0x, S0y}, {S0x + T0x * h, S0y + T0y * h}, {v.onx - v.d1x * h, v.ony - v.d1y * h}, {v.onx, v.ony}};
+#ifdef BEZCAM_FLATTEN_COUNTERS
+    ++g_counters.spread_tries;
+#endif
+    return budget > 0 ? band_cubic_planar(S, XY{ax, ay}, XY{v.Bx, v.By}, budget, nullptr) : kInf;
+  };
+  // v becomes the current vertex (its chord proven, of bound dev).
+  auto accept = [&](const Vtx& v, double dev) {
+    shrinks = 0;
+    bound = std::max(bound, dev + std::max(dA, v.disp));
+    // A vertex that rounds onto the one before it is left out (a path keeps
+    // at least one segment), as in the search.
+    const bool final_vertex = final_piece && v.t >= 1;
+    if (!(v.Br == Ar) || (final_vertex && emitted == 0)) {
+      emit({v.Br, pi, v.t});
+      ++emitted;
+    }
+    Ar = v.Br;
+    t0 = v.t;
+    ax = v.Bx, ay = v.By, dA = v.disp;
+    S0x = v.onx, S0y = v.ony, T0x = v.d1x, T0y = v.d1y;
+  };
+  // The next end after an accepted vertex v.
+  auto next = [&](const Vtx& v) {
+    if (as_planned && --left > 1) {
+      level += unit;
+      return std::max(t0, at_level(level));
+    }
+    if (as_planned && left == 1 && v.side) return 1.0;
+    return plan_from(t0, !v.side);
+  };
+  // vertex() at two parameters below 1 at once (the same arithmetic).
+  auto vertex2 = [&](double ta, double tb, Vtx& va, Vtx& vb) {
+#if defined(__SSE2__)
+    const v2d t = {ta, tb}, t3 = 3 * t, t6 = 6 * t;
+    const v2d onx = ((c3x * t + c2x) * t + c1x) * t + c0x, ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
+    const v2d d1x = (c3x * t3 + c2x * 2) * t + c1x, d1y = (c3y * t3 + c2y * 2) * t + c1y;
+    const v2d d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
+    const v2d s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
+    const v2d k = v2d{cr[0] > 0 ? -shift : shift, cr[1] > 0 ? -shift : shift} / vsqrt(s2);
+    const v2d q = 1e-24 * (d2x * d2x + d2y * d2y) * s2, cr2 = cr * cr;
+    Vtx* out[2] = {&va, &vb};
+    for (int i = 0; i < 2; ++i) {
+      Vtx& v = *out[i];
+      v.t = t[i], v.onx = onx[i], v.ony = ony[i], v.d1x = d1x[i], v.d1y = d1y[i];
+      const bool side = cr2[i] > q[i] && std::isfinite(cr2[i] * s2[i]);
+      finish(v, side ? -d1y[i] * k[i] : 0.0, side ? d1x[i] * k[i] : 0.0);
+    }
+#else
+    vertex(ta, va);
+    vertex(tb, vb);
+#endif
+  };
+  // chord() from the current vertex to va and from va to vb; the second
+  // only matters when the first fits.
+  auto chord2 = [&](const Vtx& va, const Vtx& vb, double& deva, double& ba, double& devb, double& bb) {
+#if defined(__SSE2__)
+    ba = tol - margin - std::max(dA, va.disp);
+    bb = tol - margin - std::max(va.disp, vb.disp);
+    const v2d h = v2d{va.t - t0, vb.t - va.t} * (1.0 / 3);
+    const v2d Sx0 = {S0x, va.onx}, Sy0 = {S0y, va.ony}, onx = {va.onx, vb.onx}, ony = {va.ony, vb.ony};
+    const v2d Sx[4] = {Sx0, Sx0 + v2d{T0x, va.d1x} * h, onx - v2d{va.d1x, vb.d1x} * h, onx};
+    const v2d Sy[4] = {Sy0, Sy0 + v2d{T0y, va.d1y} * h, ony - v2d{va.d1y, vb.d1y} * h, ony};
+    bool ok[2];
+    double dev[2];
+    band_sufficient2(Sx, Sy, v2d{ax, va.Bx}, v2d{ay, va.By}, v2d{va.Bx, vb.Bx}, v2d{va.By, vb.By}, v2d{ba, bb}, ok,
+                     dev);
+#ifdef BEZCAM_FLATTEN_COUNTERS
+    g_counters.spread_tries += 2;
+#endif
+    auto full = [&](int i, double budget) {
+      if (!(budget > 0)) return kInf;
+      const XY S[4] = {{Sx[0][i], Sy[0][i]}, {Sx[1][i], Sy[1][i]}, {Sx[2][i], Sy[2][i]}, {Sx[3][i], Sy[3][i]}};
+      return i == 0 ? band_cubic_planar(S, XY{ax, ay}, XY{va.Bx, va.By}, budget, nullptr)
+                    : band_cubic_planar(S, XY{va.Bx, va.By}, XY{vb.Bx, vb.By}, budget, nullptr);
+    };
+    deva = ok[0] && ba > 0 ? dev[0] : full(0, ba);
+    devb = !(deva <= ba) ? kInf : ok[1] && bb > 0 ? dev[1] : full(1, bb);
+#else
+    deva = chord(va, ba);
+    if (!(deva <= ba)) {
+      devb = kInf, bb = 0;
+      return;
+    }
+    const double sx = ax, sy = ay, sd = dA, s0x = S0x, s0y = S0y, t0x = T0x, t0y = T0y, st = t0;
+    ax = va.Bx, ay = va.By, dA = va.disp, S0x = va.onx, S0y = va.ony, T0x = va.d1x, T0y = va.d1y, t0 = va.t;
+    devb = chord(vb, bb);
+    ax = sx, ay = sy, dA = sd, S0x = s0x, S0y = s0y, T0x = t0x, T0y = t0y, t0 = st;
+#endif
+  };
+  // A chord to v that does not fit: the next try is shorter, as if the
+  // sagitta grew like the square of the step; the search takes over the
+  // rest of a piece where that runs on (false: it has).
+  auto shrink = [&](const Vtx& v, double dev, double budget) {
+    if (++shrinks > kSpreadShrinks || !(v.t - t0 > 1e-9)) {
+      band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, Vec3{ax, ay}, Ar, dA, bound, emitted, emit,
+                        t0, ax == S0x && ay == S0y ? 0.0 : shift, v.t - t0);
+      return false;
+    }
+    const double g = dev < kInf ? std::sqrt(kSpreadAim * (budget + shift) / (dev + shift)) : 0.5;
+    t1 = t0 + (v.t - t0) * std::clamp(g, 0.3, 0.95);
+    as_planned = false;
+#ifdef BEZCAM_FLATTEN_COUNTERS
+    ++g_counters.spread_shrinks;
+#endif
+    return true;
+  };
+  Vtx v1, v2;
+  for (;;) {
+    // Two planned inner vertices ahead: both evaluated, and both chords
+    // tested, at once.
+    if (as_planned && left > 2) {
+      const double t2 = std::max(t1, at_level(level + unit));
+      if (t2 < 1) {
+        vertex2(t1, t2, v1, v2);
+        double b1, b2;
+        double dev1, dev2;
+        chord2(v1, v2, dev1, b1, dev2, b2);
+        if (dev1 <= b1) {
+          accept(v1, dev1);
+          t1 = next(v1);  // = t2
+          if (dev2 <= b2) {
+            accept(v2, dev2);
+            t1 = next(v2);
+            continue;
+          }
+          if (!shrink(v2, dev2, b2)) return;
+          continue;
+        }
+        if (!shrink(v1, dev1, b1)) return;
+        continue;
+      }
+    }
+    vertex(t1, v1);
+    double budget;
+    const double dev = chord(v1, budget);
+    if (!(dev <= budget)) {
+      if (!shrink(v1, dev, budget)) return;
+      continue;
+    }
+    accept(v1, dev);
+    if (v1.t >= 1) break;
+    t1 = next(v1);
+    as_planned = true;
+  }
+#ifdef BEZCAM_FLATTEN_COUNTERS
+  ++g_counters.spread_pieces;
+#endif
+}
+
 template <class Emit>
 double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, const ToleranceBudget& tb, Vec3 Ar,
                   Emit&& emit) {
@@ -826,8 +1243,8 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     // Planar cubics (a 2D piece keeps z = 0): the search steered by the
     // bulge, on their own (band_planar_piece()).
     if (P.cubic && P.planar) {
-      band_planar_piece(pieces[pi], P, pi + 1 == pieces.size(), opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted,
-                        emit);
+      band_planar_spread(pieces[pi], P, pi + 1 == pieces.size(), opt, tol, margin, tb.rounding, shift, pi, A, Ar, dispA,
+                         bound, emitted, emit);
       continue;
     }
     // Every other piece (rational, of degree over 3, in space): no bulge to
@@ -1037,6 +1454,9 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
 
 FlattenResult flatten(std::span<const Bezier> pieces, const FlattenOptions& opt) {
   FlattenResult r;
+  // (room for most curves at once: growing one vertex at a time from none
+  // would allocate four or five times)
+  r.points.reserve(32);
   r.bound = flatten_pieces(pieces, opt, [&](const FlatVertex& v) { r.points.push_back(v.point); });
   return r;
 }

@@ -176,7 +176,13 @@ std::vector<Vec3> measuring_points(const MotionBlock& b, double tol, int dim) {
 }
 
 // Two-sided deviation of one block from the curve; `hint` follows the cut.
-double measure_block(const DenseCurve& c, std::span<const Vec3> P, size_t& hint, double tol) {
+// `prev` and `next` are the blocks cut before and after it on that curve
+// (empty: none). A curve point between the projections of the block's ends
+// counts against the nearest of the three: at a turn sharper than the band
+// is wide, vertices off the curve can project back along it, and the
+// stretch of curve there is the neighbours' as much as this block's.
+double measure_block(const DenseCurve& c, std::span<const Vec3> P, size_t& hint, double tol,
+                     std::span<const Vec3> prev = {}, std::span<const Vec3> next = {}) {
   const std::span<const Vec3> D(c.pts);
   double dev = 0;
   // Block -> curve.
@@ -191,7 +197,12 @@ double measure_block(const DenseCurve& c, std::span<const Vec3> P, size_t& hint,
   }
   // Curve -> block: the dense points between the projections of the ends.
   auto span_max = [&](size_t a, size_t b) {
-    for (size_t i = a; i <= b && i < D.size(); ++i) dev = std::max(dev, dist_to_polyline(D[i], P));
+    for (size_t i = a; i <= b && i < D.size(); ++i) {
+      double d = dist_to_polyline(D[i], P);
+      if (d > dev && !prev.empty()) d = std::min(d, dist_to_polyline(D[i], prev));
+      if (d > dev && !next.empty()) d = std::min(d, dist_to_polyline(D[i], next));
+      dev = std::max(dev, d);
+    }
   };
   if (last.seg >= first.seg) {
     span_max(first.seg + 1, last.seg);
@@ -390,6 +401,18 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
   for (const auto& m : motion) tagged = tagged || m.entity >= 0;
   std::vector<std::vector<Vec3>> points(motion.size());
   auto cutting = [&](size_t i) { return is_feed(motion[i]) && !is_plunge(motion, i); };
+  // One curve against its blocks, in cutting order, each with its
+  // neighbours (measure_block()).
+  auto measure_run = [&](const DenseCurve& c, const std::vector<size_t>& run) {
+    size_t hint = 0;
+    std::vector<std::vector<Vec3>> Ps;
+    for (size_t i : run) Ps.push_back(measuring_points(motion[i], tolerance, c.dim));
+    for (size_t k = 0; k < Ps.size(); ++k) {
+      const std::span<const Vec3> prev = k > 0 ? std::span<const Vec3>(Ps[k - 1]) : std::span<const Vec3>();
+      const std::span<const Vec3> next = k + 1 < Ps.size() ? std::span<const Vec3>(Ps[k + 1]) : std::span<const Vec3>();
+      out.push_back({run[k], c.entity, measure_block(c, Ps[k], hint, tolerance, prev, next)});
+    }
+  };
 
   if (tagged) {
     // Each entity against its own blocks, in cutting order.
@@ -402,14 +425,8 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
       if (it == by_entity.end()) continue;
       const Shape sh = entity_shape(e);
       if (sh.measure.empty() || beside_its_curve(job, e)) continue;
-      const DenseCurve c = dense_curve(e, sh, tolerance);
-      size_t hint = 0;
-      for (size_t i : it->second) {
-        const auto P = measuring_points(motion[i], tolerance, c.dim);
-        out.push_back({i, c.entity, measure_block(c, P, hint, tolerance)});
-      }
+      measure_run(dense_curve(e, sh, tolerance), it->second);
     }
-    std::sort(out.begin(), out.end(), [](auto& a, auto& b) { return a.block < b.block; });
   } else {
     // A program read from text: each block against the nearest curve.
     std::vector<DenseCurve> curves;
@@ -418,21 +435,27 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
       const Shape sh = entity_shape(e);
       if (!sh.measure.empty() && !beside_its_curve(job, e)) curves.push_back(dense_curve(e, sh, tolerance));
     }
+    // Each block to the curve nearest its middle, then each curve against
+    // its blocks in cutting order.
     std::vector<size_t> hints(curves.size(), 0);
+    std::vector<std::vector<size_t>> blocks(curves.size());
     for (size_t i = 0; i < motion.size() && !curves.empty(); ++i) {
       if (!cutting(i)) continue;
       const auto& b = motion[i];
       size_t best = 0;
-      double best_d = HUGE_VAL;
+      Near best_n;
       const Vec3 mid = lerp(b.from, b.to, 0.5);
       for (size_t k = 0; k < curves.size(); ++k) {
         const Near n = nearest(curves[k].pts, flat_if_2d(mid, curves[k].dim), hints[k], tolerance);
-        if (n.d < best_d) best_d = n.d, best = k;
+        if (n.d < best_n.d) best_n = n, best = k;
       }
-      const auto P = measuring_points(b, tolerance, curves[best].dim);
-      out.push_back({i, curves[best].entity, measure_block(curves[best], P, hints[best], tolerance)});
+      hints[best] = best_n.seg;
+      blocks[best].push_back(i);
     }
+    for (size_t k = 0; k < curves.size(); ++k)
+      if (!blocks[k].empty()) measure_run(curves[k], blocks[k]);
   }
+  std::sort(out.begin(), out.end(), [](auto& a, auto& b) { return a.block < b.block; });
   if (on_entity) on_entity(total, total, "");
   return out;
 }

@@ -306,10 +306,14 @@ TEST(Flatten, TheMeasurementAgreesWithBruteForce) {
 
 TEST(Flatten, TheMeasurementCatchesAMovedVertex) {
   // Every interior vertex in turn moved by three times the tolerance across
-  // the path (a band vertex may already stand almost the tolerance off the
-  // curve on the other side): the measurement must read well over the
-  // tolerance each time.
+  // the path: the measurement reads well over the tolerance for nine moves
+  // in ten at least, and where it does not, the brute force agrees that the
+  // path stayed near the curve (a band vertex may already stand almost the
+  // tolerance off the curve on the other side, and at a turn tighter than
+  // the band the vertices crowd round the tip, where a moved one can stay
+  // near the curve).
   const double tol = 0.01;
+  size_t moves = 0, caught = 0;
   for (const Bezier& b : hard_curves()) {
     const FlattenResult r = flatten(b, {tol, 3});
     ASSERT_GE(r.points.size(), 3u);
@@ -319,24 +323,44 @@ TEST(Flatten, TheMeasurementCatchesAMovedVertex) {
       const Vec3 across = Vec3{-along.y, along.x} * (3 * tol / norm(along));
       moved[k] += across;
       const double d = measure_deviation(std::span<const Bezier>(&b, 1), moved, tol).max();
-      EXPECT_GT(d, 1.5 * tol) << "vertex " << k << " of " << r.points.size() << " moved by " << 3 * tol;
+      ++moves;
+      if (d > 1.5 * tol) {
+        ++caught;
+        continue;
+      }
+      // (the brute force is slow: only for the moves read low)
+      const double truth = brute_deviation(b, moved).max();
+      EXPECT_GE(d + kMeasureResolution * tol, truth) << "vertex " << k << " of " << r.points.size();
+      EXPECT_LE(truth, 1.5 * tol) << "vertex " << k << " of " << r.points.size() << " moved by " << 3 * tol;
     }
   }
+  EXPECT_GE(caught, moves * 9 / 10) << caught << " of " << moves << " moves read over 1.5 times the tolerance";
 }
 
 TEST(Flatten, TheMeasurementCatchesADroppedVertex) {
   // A vertex left out: the chord across the gap leaves the curve by about
-  // four times the tolerance (twice the span, so four times the sagitta).
+  // four times the tolerance (twice the span, so four times the sagitta),
+  // but not where the vertices crowd round a turn tighter than the band.
+  // Nine gaps in ten at least read over the tolerance, and where one does
+  // not, the brute force agrees.
   const double tol = 0.01;
+  size_t drops = 0, caught = 0;
   for (const Bezier& b : hard_curves()) {
     const FlattenResult r = flatten(b, {tol, 3});
     for (size_t k = 1; k + 1 < r.points.size(); k += 7) {
       std::vector<Vec3> dropped = r.points;
       dropped.erase(dropped.begin() + static_cast<long>(k));
       const Deviation d = measure_deviation(std::span<const Bezier>(&b, 1), dropped, tol);
-      EXPECT_GT(d.curve_to_path, tol) << "vertex " << k << " dropped";
+      ++drops;
+      if (d.curve_to_path > tol) {
+        ++caught;
+        continue;
+      }
+      const Deviation truth = brute_deviation(b, dropped);
+      EXPECT_LE(truth.curve_to_path, tol + 2e-4) << "vertex " << k << " dropped";
     }
   }
+  EXPECT_GE(caught, drops * 9 / 10) << caught << " of " << drops << " gaps read over the tolerance";
 }
 
 TEST(Flatten, NearTheGreedyMinimumOnTheSharedCorpus) {

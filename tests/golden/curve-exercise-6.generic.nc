@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-6.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009676 mm, proven bound 0.009987 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009354 mm, proven bound 0.009402 mm, rounding included)
 (T1: seed-ex-6)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -11,15 +11,15 @@ S12000 M03
 G00 Z5.
 X0. Y0.
 G01 Z-0.5 F200.
-X0.52 Y0.043 F600.
-X0.983 Y0.21
-X1.299 Y0.462
-X1.473 Y0.768
-X1.503 Y1.098
-X1.389 Y1.416
-X1.134 Y1.692
-X0.735 Y1.898
-X0.195 Y2.002
+X0.484 Y0.035 F600.
+X0.932 Y0.183
+X1.252 Y0.411
+X1.445 Y0.692
+X1.509 Y1.
+X1.445 Y1.308
+X1.252 Y1.589
+X0.932 Y1.817
+X0.484 Y1.965
 X0. Y2.
 G00 Z5.
 M05

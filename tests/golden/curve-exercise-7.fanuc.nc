@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-7.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009285 mm, proven bound 0.009754 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009171 mm, proven bound 0.009675 mm, rounding included)
 N30 (T1: seed-ex-7)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
@@ -15,13 +15,13 @@ N120 (entity seed-ex-7: bezier, degree 3, 2D)
 N130 G00 Z5.
 N140 X0. Y0.
 N150 G01 Z-0.5 F200.
-N160 X0.693 Y0.646 F600.
-N170 X1.111 Y0.904
-N180 X1.353 Y0.936
-N190 X1.575 Y0.845
-N200 X1.779 Y0.731
-N210 X2.116 Y0.695
-N220 X2.556 Y0.798
+N160 X0.612 Y0.58 F600.
+N170 X1.021 Y0.864
+N180 X1.275 Y0.94
+N190 X1.506 Y0.882
+N200 X1.775 Y0.732
+N210 X2.09 Y0.694
+N220 X2.505 Y0.781
 N230 X3. Y1.
 N240 G00 Z5.
 N250 M05

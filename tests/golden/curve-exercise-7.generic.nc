@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-7.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009285 mm, proven bound 0.009754 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009171 mm, proven bound 0.009675 mm, rounding included)
 (T1: seed-ex-7)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -11,13 +11,13 @@ S12000 M03
 G00 Z5.
 X0. Y0.
 G01 Z-0.5 F200.
-X0.693 Y0.646 F600.
-X1.111 Y0.904
-X1.353 Y0.936
-X1.575 Y0.845
-X1.779 Y0.731
-X2.116 Y0.695
-X2.556 Y0.798
+X0.612 Y0.58 F600.
+X1.021 Y0.864
+X1.275 Y0.94
+X1.506 Y0.882
+X1.775 Y0.732
+X2.09 Y0.694
+X2.505 Y0.781
 X3. Y1.
 G00 Z5.
 M05

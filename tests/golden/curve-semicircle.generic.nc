@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output lines)
-(tolerance 0.005 mm; largest deviation measured 0.004755 mm, proven bound 0.004953 mm, rounding included)
+(tolerance 0.005 mm; largest deviation measured 0.004592 mm, proven bound 0.004713 mm, rounding included)
 (T1: semicircle-r3)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -11,27 +11,27 @@ S12000 M03
 G00 Z5.
 X-3. Y0.
 G01 Z-0.5 F200.
-X-2.978 Y0.446 F800.
-X-2.89 Y0.904
-X-2.742 Y1.323
-X-2.541 Y1.697
-X-2.288 Y2.031
-X-1.983 Y2.323
-X-1.625 Y2.573
-X-1.221 Y2.772
-X-0.777 Y2.913
-X-0.309 Y2.99
-X0.17 Y3.
-X0.64 Y2.943
-X1.09 Y2.821
-X1.506 Y2.639
-X1.877 Y2.406
-X2.198 Y2.127
-X2.468 Y1.805
-X2.685 Y1.443
-X2.848 Y1.044
-X2.955 Y0.604
-X3.002 Y0.12
+X-2.981 Y0.416 F800.
+X-2.9 Y0.865
+X-2.763 Y1.275
+X-2.573 Y1.647
+X-2.332 Y1.98
+X-2.041 Y2.274
+X-1.704 Y2.525
+X-1.323 Y2.729
+X-0.905 Y2.88
+X-0.46 Y2.973
+X0. Y3.004
+X0.46 Y2.973
+X0.905 Y2.88
+X1.323 Y2.729
+X1.704 Y2.525
+X2.041 Y2.274
+X2.332 Y1.98
+X2.573 Y1.647
+X2.763 Y1.275
+X2.9 Y0.865
+X2.981 Y0.416
 X3. Y0.
 G00 Z5.
 M05

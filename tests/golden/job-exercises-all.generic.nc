@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: job-exercises-all.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009676 mm, proven bound 0.009992 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009643 mm, proven bound 0.009992 mm, rounding included)
 (T1: seed-ex-1, seed-ex-2, seed-ex-3, seed-ex-4, seed-ex-5, seed-ex-6, seed-ex-7, seed-ex-8, seed-ex-9)
 (estimated cycle time 28 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -11,93 +11,94 @@ S12000 M03
 G00 Z5.
 X0. Y0.
 G01 Z-0.5 F200.
-X0.716 Y0.036 F600.
-X1.138 Y0.159
-X1.312 Y0.318
-X1.337 Y0.501
-X1.221 Y0.755
+X0.662 Y0.028 F600.
+X1.094 Y0.138
+X1.29 Y0.283
+X1.342 Y0.465
+X1.251 Y0.709
 X1. Y1.
 G00 Z5.
 (entity seed-ex-2: bezier, degree 2, 2D)
 X8. Y0.
 G01 Z-0.5 F200.
-X8.629 Y-0.274 F600.
-X9.034 Y-0.341
-X9.241 Y-0.271
-X9.331 Y-0.114
-X9.323 Y0.18
-X9.111 Y0.788
+X8.553 Y-0.249 F600.
+X8.953 Y-0.341
+X9.183 Y-0.307
+X9.307 Y-0.183
+X9.341 Y0.047
+X9.249 Y0.447
 X9. Y1.
 G00 Z5.
 (entity seed-ex-3: bezier, degree 2, 2D)
 X15. Y0.
 G01 Z-0.5 F200.
-X15.532 Y0.472 F600.
-X16.114 Y0.814
-X16.657 Y0.98
+X15.493 Y0.444 F600.
+X16.041 Y0.78
+X16.563 Y0.961
 X17. Y1.
 G00 Z5.
 (entity seed-ex-4: bezier, degree 3, 2D)
 X0. Y5.
 G01 Z-0.5 F200.
-X0.415 Y5.045 F600.
-X0.859 Y5.229
-X1.108 Y5.453
-X1.162 Y5.642
-X1.078 Y5.79
-X0.824 Y5.918
-X0.233 Y6.004
+X0.371 Y5.034 F600.
+X0.779 Y5.184
+X1.05 Y5.381
+X1.159 Y5.568
+X1.128 Y5.732
+X0.956 Y5.868
+X0.573 Y5.973
 X0. Y6.
 G00 Z5.
 (entity seed-ex-5: bezier, degree 3, 2D)
 X8. Y5.
 G01 Z-0.5 F200.
-X8.616 Y5.559 F600.
-X9.164 Y5.904
+X8.537 Y5.497 F600.
+X9.055 Y5.849
+X9.427 Y5.998
 X9.499 Y6.009
-X9.393 Y6.01
-X8.939 Y6.218
-X8.326 Y6.68
+X9.464 Y5.995
+X9.096 Y6.13
+X8.562 Y6.483
 X8. Y7.
 G00 Z5.
 (entity seed-ex-6: bezier, degree 3, 2D)
 X16. Y5.
 G01 Z-0.5 F200.
-X16.52 Y5.043 F600.
-X16.983 Y5.21
-X17.299 Y5.462
-X17.473 Y5.768
-X17.503 Y6.098
-X17.389 Y6.416
-X17.134 Y6.692
-X16.735 Y6.898
-X16.195 Y7.002
+X16.484 Y5.035 F600.
+X16.932 Y5.183
+X17.252 Y5.411
+X17.445 Y5.692
+X17.509 Y6.
+X17.445 Y6.308
+X17.252 Y6.589
+X16.932 Y6.817
+X16.484 Y6.965
 X16. Y7.
 G00 Z5.
 (entity seed-ex-7: bezier, degree 3, 2D)
 X0. Y10.
 G01 Z-0.5 F200.
-X0.693 Y10.646 F600.
-X1.111 Y10.904
-X1.353 Y10.936
-X1.575 Y10.845
-X1.779 Y10.731
-X2.116 Y10.695
-X2.556 Y10.798
+X0.612 Y10.58 F600.
+X1.021 Y10.864
+X1.275 Y10.94
+X1.506 Y10.882
+X1.775 Y10.732
+X2.09 Y10.694
+X2.505 Y10.781
 X3. Y11.
 G00 Z5.
 (entity seed-ex-8: bezier, degree 3, 2D)
 X8. Y10.
 G01 Z-0.5 F200.
-X8.393 Y10.033 F600.
-X8.561 Y10.14
-X8.581 Y10.279
-X8.457 Y10.517
-X7.752 Y11.253
-X7.47 Y11.595
-X7.415 Y11.795
-X7.496 Y11.917
-X7.725 Y11.992
+X8.359 Y10.024 F600.
+X8.544 Y10.118
+X8.584 Y10.261
+X8.478 Y10.488
+X8.006 Y11.006
+X7.58 Y11.436
+X7.421 Y11.712
+X7.446 Y11.87
+X7.628 Y11.973
 X8. Y12.
 G00 Z5.
 (entity seed-ex-9: bezier, degree 4, 2D)
