@@ -889,7 +889,7 @@ inline v2d vsqrt(v2d x) { return v2d(_mm_sqrt_pd(__m128d(x))); }
 // band_cubic_planar()'s sufficient test (the one without roots) on two
 // chords at once, lane by lane the same arithmetic: ok[i] when it settles
 // chord i (it fits, of bound dev[i]); otherwise band_cubic_planar() decides.
-inline void band_sufficient2(const v2d* Sx, const v2d* Sy, v2d Ax, v2d Ay, v2d Bx, v2d By, v2d budget, bool ok[2],
+inline __attribute__((always_inline)) void band_sufficient2(const v2d* Sx, const v2d* Sy, v2d Ax, v2d Ay, v2d Bx, v2d By, v2d budget, bool ok[2],
                              double dev[2]) {
   const v2d abx = Bx - Ax, aby = By - Ay;
   const v2d l2 = abx * abx + aby * aby;
@@ -1002,7 +1002,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   double level = 0;  // the integral at the planned end
   double unit = 0;   // the integral an inner chord covers
   int left = 0;      // chords left in the plan, the planned one included
-  auto at_level = [&](double lv) {
+  auto at_level = [&](double lv) __attribute__((always_inline)) {
     while (j < m - 1 && C[j + 1] < lv) ++j;
     return (j + std::clamp((lv - C[j]) * W[j], 0.0, 1.0)) * inv_m;
   };
@@ -1036,7 +1036,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     Vec3 Br;
     bool side;
   };
-  auto finish = [&](Vtx& v, double sx, double sy) {
+  auto finish = [&](Vtx& v, double sx, double sy) __attribute__((always_inline)) {
     v.Bx = v.onx + sx, v.By = v.ony + sy, v.side = sx != 0 || sy != 0;
     v.Br = Vec3{v.Bx, v.By};
     v.disp = 0;
@@ -1045,7 +1045,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
       v.disp = std::sqrt((v.Br.x - v.Bx) * (v.Br.x - v.Bx) + (v.Br.y - v.By) * (v.Br.y - v.By));
     }
   };
-  auto vertex = [&](double t, Vtx& v) {
+  auto vertex = [&](double t, Vtx& v) __attribute__((always_inline)) {
     v.t = t;
     double sx = 0, sy = 0;
     if (t < 1) {
@@ -1069,7 +1069,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   };
   // The chord from the current vertex to v: its bound (infinity: it cannot
   // fit) and budget.
-  auto chord = [&](const Vtx& v, double& budget) {
+  auto chord = [&](const Vtx& v, double& budget) __attribute__((always_inline)) {
     budget = tol - margin - std::max(dA, v.disp);
     const double h = (v.t - t0) * (1.0 / 3);
     const XY S[4] = {{S0x, S0y}, {S0x + T0x * h, S0y + T0y * h}, {v.onx - v.d1x * h, v.ony - v.d1y * h}, {v.onx, v.ony}};
@@ -1079,7 +1079,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     return budget > 0 ? band_cubic_planar(S, XY{ax, ay}, XY{v.Bx, v.By}, budget, nullptr) : kInf;
   };
   // v becomes the current vertex (its chord proven, of bound dev).
-  auto accept = [&](const Vtx& v, double dev) {
+  auto accept = [&](const Vtx& v, double dev) __attribute__((always_inline)) {
     shrinks = 0;
     bound = std::max(bound, dev + std::max(dA, v.disp));
     // A vertex that rounds onto the one before it is left out (a path keeps
@@ -1095,7 +1095,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     S0x = v.onx, S0y = v.ony, T0x = v.d1x, T0y = v.d1y;
   };
   // The next end after an accepted vertex v.
-  auto next = [&](const Vtx& v) {
+  auto next = [&](const Vtx& v) __attribute__((always_inline)) {
     if (as_planned && --left > 1) {
       level += unit;
       return std::max(t0, at_level(level));
@@ -1104,7 +1104,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     return plan_from(t0, !v.side);
   };
   // vertex() at two parameters below 1 at once (the same arithmetic).
-  auto vertex2 = [&](double ta, double tb, Vtx& va, Vtx& vb) {
+  auto vertex2 = [&](double ta, double tb, Vtx& va, Vtx& vb) __attribute__((always_inline)) {
 #if defined(__SSE2__)
     const v2d t = {ta, tb}, t3 = 3 * t, t6 = 6 * t;
     const v2d onx = ((c3x * t + c2x) * t + c1x) * t + c0x, ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
@@ -1127,7 +1127,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   };
   // chord() from the current vertex to va and from va to vb; the second
   // only matters when the first fits.
-  auto chord2 = [&](const Vtx& va, const Vtx& vb, double& deva, double& ba, double& devb, double& bb) {
+  auto chord2 = [&](const Vtx& va, const Vtx& vb, double& deva, double& ba, double& devb, double& bb) __attribute__((always_inline)) {
 #if defined(__SSE2__)
     ba = tol - margin - std::max(dA, va.disp);
     bb = tol - margin - std::max(va.disp, vb.disp);
