@@ -859,11 +859,13 @@ void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece,
 // term's density takes over. The integral is taken by the trapezoid rule,
 // on 8 to kSpreadSamples intervals (more for pieces that need more chords).
 // Every chord is then proven like any other (band_cubic_planar(), with its
-// ends' real rounding). One that does not fit is shortened, as if its
-// sagitta grew like the square of its step, and the rest of the piece is
-// planned again from its end. A piece the plan cannot serve (a cusp at a
-// sample, more than kSpreadMax chords) goes to band_planar_piece(), and so
-// does the rest of one whose chord will not fit after kSpreadShrinks tries.
+// ends' real rounding), two at a time where the plan gives two inner
+// vertices ahead. One that does not fit is shortened, as if its sagitta
+// grew like the square of its step, and the rest of the piece is planned
+// again from its end. A piece the plan cannot serve (a density undefined
+// even beside its sample, as on a piece of one point, or more than
+// kSpreadMax chords) goes to band_planar_piece(), and so does the rest of
+// one whose chord will not fit after kSpreadShrinks tries.
 constexpr int kSpreadSamples = 32;
 constexpr double kSpreadRefine = 1.0;
 constexpr double kSpreadAim = 0.95;
