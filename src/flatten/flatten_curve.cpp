@@ -195,6 +195,15 @@ double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
 // `inner`, when not null, receives the largest magnitude of the cross part
 // at its interior extremes (0 when it has none), whatever the sides: for
 // chords across an inflection, which have no bulge, it steers the search.
+// Whether a planar curve has a convex side where its derivatives are
+// M' = (d1x, d1y) and M'' = (d2x, d2y), given cr = M' x M'' and
+// s2 = |M'|^2: its curvature is above 1e-12 of the turning M'' could give
+// (not a straight stretch, an inflection or a stationary point).
+constexpr double kSideFloor = 1e-24;  // (1e-12 squared)
+inline bool planar_side(double cr, double s2, double d2x, double d2y) {
+  return cr * cr > kSideFloor * (d2x * d2x + d2y * d2y) * s2 && std::isfinite(cr * cr * s2);
+}
+
 // A point of the plane, for the band's search on planar cubics (which
 // needs no z); as_vec3() gives either kind of point as a Vec3.
 struct XY {
@@ -730,7 +739,7 @@ void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece,
           d1y = (c3y * t3 + c2y * 2) * t + c1y;
           const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
           const double s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
-          if (cr * cr > 1e-24 * (d2x * d2x + d2y * d2y) * s2 && std::isfinite(cr * cr * s2)) {
+          if (planar_side(cr, s2, d2x, d2y)) {
             const double k = (cr > 0 ? -1 : 1) / std::sqrt(s2);
             bend1 = std::abs(cr * k);
             sx = -d1y * k, sy = d1x * k;
@@ -932,9 +941,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   // then refined (by halving) while the piece needs more than
   // kSpreadRefine chords per interval.
   double D[kSpreadSamples + 1];
-  // (N samples at once, from index `from` by `step`: the loop has no
-  // branch and a fixed count, so the compiler takes two samples per
-  // instruction; the cubic term's root, rarely needed, comes after)
+  // The two densities at t: the sagitta's (d) and the cubic term's cube (g).
   auto one = [&](double t, double& d, double& g) {
     const double d1x = (c3x * (3 * t) + c2x * 2) * t + c1x, d1y = (c3y * (3 * t) + c2y * 2) * t + c1y;
     const double d2x = c3x * (6 * t) + c2x * 2, d2y = c3y * (6 * t) + c2y * 2;
@@ -942,6 +949,8 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     d = std::sqrt(std::abs(d1x * d2y - d1y * d2x) * is) * inv8H;
     g = std::abs(d1x * c3y - d1y * c3x) * is * k3;
   };
+  // N samples, from index `from` by `step`, two at a time with SSE2 (the
+  // same arithmetic as one()); the cubic term's root, rarely needed, after.
   auto densities = [&]<int N>(std::integral_constant<int, N>, int from, int step) {
     double d[N], g[N];
 #if defined(__SSE2__)
@@ -985,7 +994,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     m *= 2, stride /= 2;
     total = integral();
   }
-  // (a cusp at a sample gives infinity or NaN here)
+  // (a density undefined even beside its sample gives infinity or NaN here)
   if (!(total < kSpreadMax))
     return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);
   double C[kSpreadSamples + 1];
@@ -1058,7 +1067,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
       v.d1y = (c3y * t3 + c2y * 2) * t + c1y;
       const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
       const double s2 = v.d1x * v.d1x + v.d1y * v.d1y, cr = v.d1x * d2y - v.d1y * d2x;
-      if (cr * cr > 1e-24 * (d2x * d2x + d2y * d2y) * s2 && std::isfinite(cr * cr * s2)) {
+      if (planar_side(cr, s2, d2x, d2y)) {
         const double k = (cr > 0 ? -shift : shift) / std::sqrt(s2);
         sx = -v.d1y * k, sy = v.d1x * k;
       }
@@ -1105,16 +1114,17 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     if (as_planned && left == 1 && v.side) return 1.0;
     return plan_from(t0, !v.side);
   };
+#if defined(__SSE2__)
   // vertex() at two parameters below 1 at once (the same arithmetic).
   auto vertex2 = [&](double ta, double tb, Vtx& va, Vtx& vb) __attribute__((always_inline)) {
-#if defined(__SSE2__)
     const v2d t = {ta, tb}, t3 = 3 * t, t6 = 6 * t;
     const v2d onx = ((c3x * t + c2x) * t + c1x) * t + c0x, ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
     const v2d d1x = (c3x * t3 + c2x * 2) * t + c1x, d1y = (c3y * t3 + c2y * 2) * t + c1y;
     const v2d d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
     const v2d s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
     const v2d k = v2d{cr[0] > 0 ? -shift : shift, cr[1] > 0 ? -shift : shift} / vsqrt(s2);
-    const v2d q = 1e-24 * (d2x * d2x + d2y * d2y) * s2, cr2 = cr * cr;
+    // (planar_side() on both lanes)
+    const v2d q = kSideFloor * (d2x * d2x + d2y * d2y) * s2, cr2 = cr * cr;
     Vtx* out[2] = {&va, &vb};
     for (int i = 0; i < 2; ++i) {
       Vtx& v = *out[i];
@@ -1122,15 +1132,10 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
       const bool side = cr2[i] > q[i] && std::isfinite(cr2[i] * s2[i]);
       finish(v, side ? -d1y[i] * k[i] : 0.0, side ? d1x[i] * k[i] : 0.0);
     }
-#else
-    vertex(ta, va);
-    vertex(tb, vb);
-#endif
   };
   // chord() from the current vertex to va and from va to vb; the second
   // only matters when the first fits.
   auto chord2 = [&](const Vtx& va, const Vtx& vb, double& deva, double& ba, double& devb, double& bb) __attribute__((always_inline)) {
-#if defined(__SSE2__)
     ba = tol - margin - std::max(dA, va.disp);
     bb = tol - margin - std::max(va.disp, vb.disp);
     const v2d h = v2d{va.t - t0, vb.t - va.t} * (1.0 / 3);
@@ -1152,18 +1157,8 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     };
     deva = ok[0] && ba > 0 ? dev[0] : full(0, ba);
     devb = !(deva <= ba) ? kInf : ok[1] && bb > 0 ? dev[1] : full(1, bb);
-#else
-    deva = chord(va, ba);
-    if (!(deva <= ba)) {
-      devb = kInf, bb = 0;
-      return;
-    }
-    const double sx = ax, sy = ay, sd = dA, s0x = S0x, s0y = S0y, t0x = T0x, t0y = T0y, st = t0;
-    ax = va.Bx, ay = va.By, dA = va.disp, S0x = va.onx, S0y = va.ony, T0x = va.d1x, T0y = va.d1y, t0 = va.t;
-    devb = chord(vb, bb);
-    ax = sx, ay = sy, dA = sd, S0x = s0x, S0y = s0y, T0x = t0x, T0y = t0y, t0 = st;
-#endif
   };
+#endif
   // A chord to v that does not fit: the next try is shorter, as if the
   // sagitta grew like the square of the step; the search takes over the
   // rest of a piece where that runs on (false: it has).
@@ -1183,8 +1178,9 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   };
   Vtx v1, v2;
   for (;;) {
+#if defined(__SSE2__)
     // Two planned inner vertices ahead: both evaluated, and both chords
-    // tested, at once.
+    // tested, at once (one at a time without SSE2: the same chords).
     if (as_planned && left > 2) {
       const double t2 = std::max(t1, at_level(level + unit));
       if (t2 < 1) {
@@ -1207,6 +1203,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
         continue;
       }
     }
+#endif
     vertex(t1, v1);
     double budget;
     const double dev = chord(v1, budget);
@@ -1242,8 +1239,8 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
     const Prepared P(pieces[pi]);
     Vec3 A = pieces[pi].front();
     double dispA = dist(Ar, A);  // includes the tiny gap at a path joint
-    // Planar cubics (a 2D piece keeps z = 0): the search steered by the
-    // bulge, on their own (band_planar_piece()).
+    // Planar cubics (a 2D piece keeps z = 0): the chords planned, then
+    // proven (band_planar_spread()).
     if (P.cubic && P.planar) {
       band_planar_spread(pieces[pi], P, pi + 1 == pieces.size(), opt, tol, margin, tb.rounding, shift, pi, A, Ar, dispA,
                          bound, emitted, emit);
