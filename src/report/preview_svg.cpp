@@ -399,18 +399,16 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
   const size_t total = job.entities.size();
   bool tagged = false;
   for (const auto& m : motion) tagged = tagged || m.entity >= 0;
-  std::vector<std::vector<Vec3>> points(motion.size());
   auto cutting = [&](size_t i) { return is_feed(motion[i]) && !is_plunge(motion, i); };
   // One curve against its blocks, in cutting order, each with its
-  // neighbours (measure_block()).
+  // neighbours (measure_block()); three blocks' points held at a time.
   auto measure_run = [&](const DenseCurve& c, const std::vector<size_t>& run) {
     size_t hint = 0;
-    std::vector<std::vector<Vec3>> Ps;
-    for (size_t i : run) Ps.push_back(measuring_points(motion[i], tolerance, c.dim));
-    for (size_t k = 0; k < Ps.size(); ++k) {
-      const std::span<const Vec3> prev = k > 0 ? std::span<const Vec3>(Ps[k - 1]) : std::span<const Vec3>();
-      const std::span<const Vec3> next = k + 1 < Ps.size() ? std::span<const Vec3>(Ps[k + 1]) : std::span<const Vec3>();
-      out.push_back({run[k], c.entity, measure_block(c, Ps[k], hint, tolerance, prev, next)});
+    std::vector<Vec3> prev, cur, next = measuring_points(motion[run[0]], tolerance, c.dim);
+    for (size_t k = 0; k < run.size(); ++k) {
+      prev.swap(cur), cur.swap(next);  // prev <- cur <- next
+      next = k + 1 < run.size() ? measuring_points(motion[run[k + 1]], tolerance, c.dim) : std::vector<Vec3>();
+      out.push_back({run[k], c.entity, measure_block(c, cur, hint, tolerance, prev, next)});
     }
   };
 
