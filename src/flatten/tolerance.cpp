@@ -11,26 +11,33 @@
 
 namespace bezcam {
 
+namespace {
+// 10^d, exact doubles for d <= 22.
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+}  // namespace
+
+bool printed_units(double v, int decimals, double& units) {
+  // k = v 10^d is within |k| 2^-53 of the exact product (and f within 2^-53
+  // of k's fraction), so unless k lies that near a half (a tie, or nearly
+  // one) the text's units are round(k), an exact double as |k| < 2^50.
+  if (decimals < 0 || decimals > 22 || !std::isfinite(v)) return false;
+  const double k = v * kPow10[decimals];
+  if (!(std::abs(k) < 0x1p50)) return false;
+  const double n = std::floor(k), f = k - n;
+  if (!(std::abs(f - 0.5) > std::abs(k) * 0x1p-50 + 0x1p-40)) return false;
+  units = f > 0.5 ? n + 1 : n;
+  return true;
+}
+
 double quantize(double v, int decimals) {
   if (decimals < 0 || !std::isfinite(v)) return v;
-  // Without the text when the text's digits are certain: k = v 10^d is
-  // within |k| 2^-53 of the exact product, so unless that lies near a half
-  // (a tie, or nearly one) the printed integer of units is N = round(k);
-  // N and 10^d are exact doubles (|N| < 2^50, d <= 22) and one correctly
-  // rounded division gives the double nearest N / 10^d, which is what
-  // parsing the printed text gives. The rest (ties, huge values, more
-  // decimals) goes through the text.
-  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  if (decimals <= 22) {
-    const double p = kPow10[decimals], k = v * p;
-    if (std::abs(k) < 0x1p50) {
-      const double n = std::floor(k), f = k - n;
-      if (std::abs(f - 0.5) > std::abs(k) * 0x1p-50 + 0x1p-40) {
-        const double out = (f > 0.5 ? n + 1 : n) / p;
-        return out == 0 ? 0.0 : out;
-      }
-    }
+  // Without the text when its units N are certain (printed_units()): 10^d
+  // is an exact double for d <= 22, and one correctly rounded division
+  // gives the double nearest N / 10^d, which is what parsing the text gives.
+  if (double units; printed_units(v, decimals, units)) {
+    const double out = units / kPow10[decimals];
+    return out == 0 ? 0.0 : out;
   }
   char buf[400];
   auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);

@@ -21,6 +21,12 @@ inline constexpr double kToleranceSafety = 1e-9;
 /// digits after the point (the printed text is parsed back, so the value is
 /// bit-for-bit what the G-code writer prints). decimals < 0: no rounding.
 double quantize(double v, int decimals);
+/// The whole number of 10^-decimals units that `v` printed with `decimals`
+/// digits after the point shows (the text without its point), when that is
+/// certain without printing: v 10^decimals is not within its rounding
+/// error of a half, under 2^50 in magnitude, and 0 <= decimals <= 22.
+/// Otherwise false, and only the text itself tells.
+bool printed_units(double v, int decimals, double& units);
 /// quantize() on x, y and z.
 Vec3 quantize(const Vec3& p, int decimals);
 /// Largest displacement rounding can cause to a point of `dim` coordinates.
