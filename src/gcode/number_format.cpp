@@ -14,25 +14,20 @@ namespace bezcam {
 
 char* format_number_to(char* buf, double v, int decimals) {
   const int d = decimals < 0 ? 6 : decimals;
-  // The digits without the general printer when they are certain
-  // (printed_units(): the same text to_chars() gives): the units' digits,
-  // the point d digits from the right, trailing zeros trimmed.
+  char* end = buf;
   if (double units; printed_units(v, d, units)) {
-    char* p = buf;
-    if (units < 0) *p++ = '-';
-    std::uint64_t n = static_cast<std::uint64_t>(std::abs(units));
+    // The text to_chars() prints, without it (printed_units()): the units'
+    // digits, the point d digits from the right.
+    if (units < 0) *end++ = '-';
     char digits[24];
     int len = 0;
-    for (; n > 0 || len <= d; n /= 10) digits[len++] = char('0' + n % 10);  // (at least one digit before the point)
-    int low = 0;  // trailing zeros after the point are not written
-    while (low < d && digits[low] == '0') ++low;
-    for (int i = len - 1; i >= d; --i) *p++ = digits[i];
-    *p++ = '.';
-    for (int i = d - 1; i >= low; --i) *p++ = digits[i];
-    if (units == 0) return std::copy_n("0.", 2, buf);  // never "-0."
-    return p;
+    for (auto n = static_cast<std::uint64_t>(std::abs(units)); n > 0 || len <= d; n /= 10) digits[len++] = char('0' + n % 10);
+    while (len > d) *end++ = digits[--len];
+    if (d > 0) *end++ = '.';
+    while (len > 0) *end++ = digits[--len];
+  } else {
+    end = std::to_chars(buf, buf + kNumberChars - 1, v, std::chars_format::fixed, d).ptr;
   }
-  char* end = std::to_chars(buf, buf + kNumberChars - 1, v, std::chars_format::fixed, decimals < 0 ? 6 : decimals).ptr;
   if (std::find(buf, end, '.') == end) *end++ = '.';
   while (end[-1] == '0') --end;
   if (end - buf == 3 && buf[0] == '-' && buf[1] == '0' && buf[2] == '.') return std::copy_n("0.", 2, buf);
