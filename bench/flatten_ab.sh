@@ -14,7 +14,7 @@ variant=${2:?usage: flatten_ab.sh BUILD_DIR VARIANT.cpp [CORPUS [EVERY [ROUNDS]]
 corpus=${3:-$src/../shared/bench/cubics-10k.json}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-sed -E 's/\bflatten_pieces\b/flatten_pieces_v/g; s/\bFlattenResult flatten\(/FlattenResult flatten_v(/; s/\bdouble (chord_deviation|band_deviation|estimate_segments)\(/double \1_v(/' \
+sed -E 's/\bflatten_pieces\b/flatten_pieces_v/g; s/\bflatten_into\b/flatten_into_v/g; s/\bFlattenResult flatten\(/FlattenResult flatten_v(/; s/\bdouble (chord_deviation|band_deviation|estimate_segments)\(/double \1_v(/' \
   "$variant" > "$out/variant.cpp"
 flags=$(sed -n 's/^CXX_FLAGS = //p' "$build/bench/CMakeFiles/flatten_bench.dir/flags.make" | tr ' ' '\n' | grep -E '^-O|^-g|^-D|^-std|^-m' | tr '\n' ' ')
 inc="-I$src/include -I$src/src -I$build/include"

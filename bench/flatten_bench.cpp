@@ -154,7 +154,7 @@ __attribute__((noinline)) size_t run_only(const std::vector<Curve>& curves, cons
   if (method == "bezcam") {
     for (const auto& c : curves) {
       pts.clear();
-      flatten_pieces(std::span<const Bezier>(&c.b, 1), {tol, -1}, [&](const FlatVertex& v) { pts.push_back(v.point); });
+      flatten_into(std::span<const Bezier>(&c.b, 1), {tol, -1}, pts);
       segments += pts.size() - 1;
     }
   }
@@ -281,7 +281,7 @@ int main(int argc, char** argv) {
     for (const FlattenOptions* o : {&band, &on_curve})
       fs.push_back([&, o](const Bezier& b) {
         pts_b.clear();
-        flatten_pieces(std::span<const Bezier>(&b, 1), *o, [&](const FlatVertex& v) { pts_b.push_back(v.point); });
+        flatten_into(std::span<const Bezier>(&b, 1), *o, pts_b);
       });
 #ifdef BEZCAM_HAVE_CAIRO
     Cairo cairo;

@@ -132,8 +132,7 @@ int main(int argc, char** argv) {
   // The measurement, one thread, on the polylines the program cuts.
   std::vector<std::vector<bezcam::Vec3>> polys(n);
   for (size_t i = 0; i < n; ++i)
-    bezcam::flatten_pieces(job.entities[i].curve.pieces, {job.tolerance, m.decimals(job.units)},
-                           [&](const bezcam::FlatVertex& v) { polys[i].push_back(v.point); });
+    bezcam::flatten_into(job.entities[i].curve.pieces, {job.tolerance, m.decimals(job.units)}, polys[i]);
   double worst = 0;
   t = start();
   for (size_t i = 0; i < n; ++i)

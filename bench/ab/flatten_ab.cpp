@@ -25,8 +25,7 @@
 #include "bezcam/kernel/bezier.hpp"
 
 namespace bezcam {
-double flatten_pieces_v(std::span<const Bezier> pieces, const FlattenOptions& opt,
-                        const std::function<void(const FlatVertex&)>& emit);
+double flatten_into_v(std::span<const Bezier> pieces, const FlattenOptions& opt, std::vector<Vec3>& out);
 }
 
 int main(int argc, char** argv) {
@@ -63,7 +62,6 @@ int main(int argc, char** argv) {
   std::printf("%zu curves, %d rounds\n", curves.size(), rounds);
   std::vector<Vec3> pts;
   pts.reserve(1 << 16);
-  const std::function<void(const FlatVertex&)> emit = [&](const FlatVertex& v) { pts.push_back(v.point); };
   for (const double tol : tols) {
     const FlattenOptions o{.tolerance = tol, .decimals = -1};
     double best[2] = {1e300, 1e300};
@@ -75,9 +73,9 @@ int main(int argc, char** argv) {
         for (const auto& b : curves) {
           pts.clear();
           if (k == 0)
-            flatten_pieces(std::span<const Bezier>(&b, 1), o, emit);
+            flatten_into(std::span<const Bezier>(&b, 1), o, pts);
           else
-            flatten_pieces_v(std::span<const Bezier>(&b, 1), o, emit);
+            flatten_into_v(std::span<const Bezier>(&b, 1), o, pts);
           n += pts.size() - 1;
         }
         best[k] = std::min(best[k], std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());

@@ -168,7 +168,7 @@ Vec3 cut_point(const CutContext& c, const Vec3& p) {
 void emit_lines(CutContext& c, EntityReport& r) {
   FlattenOptions fo{c.tolerance, c.decimals};
   std::vector<Vec3> poly;
-  const double bound = flatten_pieces(c.entity.curve.pieces, fo, [&](const FlatVertex& v) { poly.push_back(v.point); });
+  const double bound = flatten_into(c.entity.curve.pieces, fo, poly);
   emit_polyline(c, r, std::move(poly), bound);
 }
 

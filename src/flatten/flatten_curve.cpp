@@ -1190,7 +1190,10 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
         chord2(v1, v2, dev1, b1, dev2, b2);
         if (dev1 <= b1) {
           accept(v1, dev1);
-          t1 = next(v1);  // = t2
+          // (what next(v1) gives: the plan goes on, and its end is t2)
+          --left;
+          level += unit;
+          t1 = t2;
           if (dev2 <= b2) {
             accept(v2, dev2);
             t1 = next(v2);
@@ -1341,8 +1344,13 @@ double bound_band(std::span<const Bezier> pieces, const FlattenOptions& opt, con
 
 }  // namespace
 
-double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
-                      const std::function<void(const FlatVertex&)>& emit) {
+namespace {
+
+// flatten_pieces() for any sink of FlatVertex: flatten_into() passes one that
+// appends the point to a vector, inlined with the rest (no call through a
+// std::function per vertex).
+template <class Sink>
+double flatten_with(std::span<const Bezier> pieces, const FlattenOptions& opt, Sink&& emit) {
   if (pieces.empty()) return 0;
   const double tol = opt.tolerance;
   const ToleranceBudget tb = check_tolerance(tol, opt.decimals, pieces.front().dim, control_magnitude(pieces));
@@ -1451,12 +1459,23 @@ double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
   return bound;
 }
 
+}  // namespace
+
+double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
+                      const std::function<void(const FlatVertex&)>& emit) {
+  return flatten_with(pieces, opt, emit);
+}
+
+double flatten_into(std::span<const Bezier> pieces, const FlattenOptions& opt, std::vector<Vec3>& out) {
+  return flatten_with(pieces, opt, [&out](const FlatVertex& v) { out.push_back(v.point); });
+}
+
 FlattenResult flatten(std::span<const Bezier> pieces, const FlattenOptions& opt) {
   FlattenResult r;
   // (room for most curves at once: growing one vertex at a time from none
   // would allocate four or five times)
   r.points.reserve(32);
-  r.bound = flatten_pieces(pieces, opt, [&](const FlatVertex& v) { r.points.push_back(v.point); });
+  r.bound = flatten_into(pieces, opt, r.points);
   return r;
 }
 

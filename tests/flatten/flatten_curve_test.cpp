@@ -187,6 +187,38 @@ TEST(Flatten, CallbackAndCollectingFormsAgree) {
   EXPECT_EQ(seen.back().t, 1.0);
 }
 
+// flatten_into() (what the program's lines and the benchmark call) appends
+// exactly the points flatten_pieces() emits, with the same bound, for paths
+// of planar and spatial, polynomial and rational pieces, in the band and on
+// the curve, with and without rounding; what the vector held stays.
+TEST(Flatten, AppendingFormAgreesWithTheCallback) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> c(-40, 40), w(0.5, 2);
+  for (int i = 0; i < 120; ++i) {
+    const int dim = i % 4 == 3 ? 3 : 2, n = 1 + i % 5;
+    std::vector<Bezier> path;
+    Vec3 start{c(rng), c(rng), dim == 3 ? c(rng) : 0};
+    for (int k = 0; k < 1 + i % 3; ++k) {
+      std::vector<Vec3> p{start};
+      std::vector<double> ws{1};
+      for (int q = 1; q <= n; ++q) p.push_back({c(rng), c(rng), dim == 3 ? c(rng) : 0}), ws.push_back(q == n ? 1 : w(rng));
+      path.push_back(bz(p, i % 7 == 5 ? ws : std::vector<double>{}, dim));
+      start = p.back();
+    }
+    for (const FlattenOptions& o : {FlattenOptions{.tolerance = 0.05, .decimals = 3}, FlattenOptions{.tolerance = 0.01, .decimals = -1},
+                                    FlattenOptions{.tolerance = 0.02, .decimals = 4, .on_curve = true}}) {
+      std::vector<Vec3> seen;
+      const double bound = flatten_pieces(path, o, [&](const FlatVertex& v) { seen.push_back(v.point); });
+      std::vector<Vec3> out{{1, 2, 3}};
+      const double bound_into = flatten_into(path, o, out);
+      ASSERT_EQ(out.size(), seen.size() + 1) << "case " << i;
+      EXPECT_EQ(out.front(), (Vec3{1, 2, 3}));
+      for (size_t k = 0; k < seen.size(); ++k) ASSERT_EQ(out[k + 1], seen[k]) << "case " << i << ", vertex " << k;
+      EXPECT_EQ(bound_into, bound);
+    }
+  }
+}
+
 TEST(Flatten, RefusesATolerancetheDecimalsCannotHonour) {
   const Bezier b = bz({{0, 0}, {1, 0}, {2, 1}, {0, 1}});
   try {

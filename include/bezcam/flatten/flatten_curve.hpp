@@ -101,7 +101,12 @@ double estimate_segments(std::span<const Bezier> pieces, double tolerance);
 double flatten_pieces(std::span<const Bezier> pieces, const FlattenOptions& opt,
                       const std::function<void(const FlatVertex&)>& emit);
 
-/// Collecting wrapper around flatten_pieces().
+/// flatten_pieces() appending each vertex's point to `out` (which keeps what
+/// it held): the same vertices, without a call through `emit` per vertex.
+/// On an error `out` may hold the vertices emitted before it.
+double flatten_into(std::span<const Bezier> pieces, const FlattenOptions& opt, std::vector<Vec3>& out);
+
+/// Collecting wrapper around flatten_into().
 FlattenResult flatten(std::span<const Bezier> pieces, const FlattenOptions& opt);
 inline FlattenResult flatten(const Bezier& b, const FlattenOptions& opt) {
   return flatten(std::span<const Bezier>(&b, 1), opt);
