@@ -866,7 +866,7 @@ void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece,
 // has less room and is planned shorter. Near an inflection, where f
 // vanishes and a chord's gap grows like the cube of its step, the cubic
 // term's density takes over. The integral is taken by the trapezoid rule,
-// on 8 to kSpreadSamples intervals (more for pieces that need more chords).
+// on 16 or kSpreadSamples intervals (more for pieces that need more chords).
 // Every chord is then proven like any other (band_cubic_planar(), with its
 // ends' real rounding), two at a time where the plan gives two inner
 // vertices ahead. One that does not fit is shortened, as if its sagitta
@@ -937,9 +937,10 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   // The cubic term: across an inflection a chord's gap is about
   // |M' x M'''| / |M'| h^3 / (72 sqrt 3), with M''' = 6 c3.
   const double k3 = 6 / (72 * std::sqrt(3.0) * kSpreadAim * plan_budget);
-  // Densities on a grid of kSpreadSamples intervals, sampled every 8th,
-  // then refined (by halving) while the piece needs more than
-  // kSpreadRefine chords per interval.
+  // Densities on a grid of kSpreadSamples intervals, sampled every other
+  // one, then at all of them when the piece needs more than kSpreadRefine
+  // chords per interval. (Starting from every 4th saves no time, for a
+  // coarser plan: 0.4 % more chords at 0.1 mm.)
   double D[kSpreadSamples + 1];
   // The two densities at t: the sagitta's (d) and the cubic term's cube (g).
   auto one = [&](double t, double& d, double& g) {
@@ -978,19 +979,16 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
       D[idx] = g[k] > d[k] * d[k] * d[k] ? cbrt_estimate(g[k]) : d[k];
     }
   };
-  int m = 8, stride = kSpreadSamples / 8;
-  densities(std::integral_constant<int, 10>{}, 0, stride);  // (the 10th is past the end, unused)
+  int m = 16, stride = kSpreadSamples / 16;
+  densities(std::integral_constant<int, 18>{}, 0, stride);  // (the 18th is past the end, unused)
   auto integral = [&] {
     double sum = 0.5 * (D[0] + D[kSpreadSamples]);
     for (int idx = stride; idx < kSpreadSamples; idx += stride) sum += D[idx];
     return sum / m;
   };
   double total = integral();
-  while (m < kSpreadSamples && m * kSpreadRefine < total) {
-    if (m == 8)
-      densities(std::integral_constant<int, 8>{}, stride / 2, stride);
-    else
-      densities(std::integral_constant<int, 16>{}, stride / 2, stride);
+  if (m < kSpreadSamples && m * kSpreadRefine < total) {
+    densities(std::integral_constant<int, 16>{}, stride / 2, stride);
     m *= 2, stride /= 2;
     total = integral();
   }

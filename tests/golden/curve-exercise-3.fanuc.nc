@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-3.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.0094 mm, proven bound 0.009484 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.0094 mm, proven bound 0.009553 mm, rounding included)
 N30 (T1: seed-ex-3)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
@@ -16,8 +16,8 @@ N130 G00 Z5.
 N140 X-1. Y0.
 N150 G01 Z-0.5 F200.
 N160 X-0.507 Y0.444 F600.
-N170 X0.041 Y0.78
-N180 X0.563 Y0.961
+N170 X0.042 Y0.78
+N180 X0.564 Y0.962
 N190 X1. Y1.
 N200 G00 Z5.
 N210 M05

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-3.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.0094 mm, proven bound 0.009484 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.0094 mm, proven bound 0.009553 mm, rounding included)
 (T1: seed-ex-3)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -12,8 +12,8 @@ G00 Z5.
 X-1. Y0.
 G01 Z-0.5 F200.
 X-0.507 Y0.444 F600.
-X0.041 Y0.78
-X0.563 Y0.961
+X0.042 Y0.78
+X0.564 Y0.962
 X1. Y1.
 G00 Z5.
 M05

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-4.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.00928 mm, proven bound 0.00973 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.00913 mm, proven bound 0.009541 mm, rounding included)
 N30 (T1: seed-ex-4)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
@@ -15,13 +15,13 @@ N120 (entity seed-ex-4: bezier, degree 3, 2D)
 N130 G00 Z5.
 N140 X0. Y0.
 N150 G01 Z-0.5 F200.
-N160 X0.371 Y0.034 F600.
-N170 X0.779 Y0.184
-N180 X1.05 Y0.381
-N190 X1.159 Y0.568
-N200 X1.128 Y0.732
-N210 X0.956 Y0.868
-N220 X0.573 Y0.973
+N160 X0.372 Y0.035 F600.
+N170 X0.783 Y0.186
+N180 X1.057 Y0.389
+N190 X1.16 Y0.574
+N200 X1.129 Y0.731
+N210 X0.958 Y0.867
+N220 X0.575 Y0.972
 N230 X0. Y1.
 N240 G00 Z5.
 N250 M05

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-7.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009171 mm, proven bound 0.009675 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009051 mm, proven bound 0.009569 mm, rounding included)
 (T1: seed-ex-7)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -11,13 +11,13 @@ S12000 M03
 G00 Z5.
 X0. Y0.
 G01 Z-0.5 F200.
-X0.612 Y0.58 F600.
-X1.021 Y0.864
-X1.275 Y0.94
-X1.506 Y0.882
-X1.775 Y0.732
-X2.09 Y0.694
-X2.505 Y0.781
+X0.614 Y0.582 F600.
+X1.023 Y0.865
+X1.273 Y0.94
+X1.493 Y0.888
+X1.791 Y0.727
+X2.094 Y0.694
+X2.504 Y0.78
 X3. Y1.
 G00 Z5.
 M05
