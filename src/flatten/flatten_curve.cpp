@@ -1035,6 +1035,8 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   const double endx = piece.back().x, endy = piece.back().y;
   const int decimals = opt.decimals;
   int shrinks = 0;
+  bool drop = false;     // the next try's end on the curve (repeated failures that shortening does not cure)
+  double prev_dev = kInf;
   bool as_planned = true;  // the chord tried ends where the plan put it
   double t1 = plan_from(0, true);
   // One vertex: the curve's point and tangent at t, B shifted towards the
@@ -1090,6 +1092,8 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   // v becomes the current vertex (its chord proven, of bound dev).
   auto accept = [&](const Vtx& v, double dev) __attribute__((always_inline)) {
     shrinks = 0;
+    drop = false;
+    prev_dev = kInf;
     bound = std::max(bound, dev + std::max(dA, v.disp));
     // A vertex that rounds onto the one before it is left out (a path keeps
     // at least one segment), as in the search.
@@ -1166,6 +1170,21 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
                         t0, ax == S0x && ay == S0y ? 0.0 : shift, v.t - t0);
       return false;
     }
+    // Shortened once already, and the deviation (with the shift, what the
+    // model says falls like the square of the step) fell by less than 5 %:
+    // what fails is not the length but the end's side (near an inflection,
+    // or a turn tighter than the band, the end shifted away from the
+    // chord's bulge). The same end on the curve is tried before shortening
+    // on: at 0.1 mm on the corpus, where chords shortened 6 to 30 times
+    // crept down 5 % a try, 2 % less time and 9 fewer chords per 1,000
+    // curves (bench/flatten_ab.sh; 0.01 mm: 2 %, 26 fewer).
+    if (!drop && v.side && dev < kInf && dev + shift > 0.95 * (prev_dev + shift)) {
+      drop = true;
+      t1 = v.t;
+      as_planned = false;
+      return true;
+    }
+    prev_dev = dev;
     const double g = dev < kInf ? std::sqrt(kSpreadAim * (budget + shift) / (dev + shift)) : 0.5;
     t1 = t0 + (v.t - t0) * std::clamp(g, 0.3, 0.95);
     as_planned = false;
@@ -1206,6 +1225,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     }
 #endif
     vertex(t1, v1);
+    if (drop && v1.side) finish(v1, 0.0, 0.0);
     double budget;
     const double dev = chord(v1, budget);
     if (!(dev <= budget)) {
