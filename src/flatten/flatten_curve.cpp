@@ -1178,14 +1178,19 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     // on: at 0.1 mm on the corpus, where chords shortened 6 to 30 times
     // crept down 5 % a try, 2 % less time and 9 fewer chords per 1,000
     // curves (bench/flatten_ab.sh; 0.01 mm: 2 %, 26 fewer).
-    if (!drop && v.side && dev < kInf && dev + shift > 0.95 * (prev_dev + shift)) {
+    const bool stuck = dev < kInf && dev + shift > 0.95 * (prev_dev + shift);
+    if (!drop && v.side && stuck) {
       drop = true;
       t1 = v.t;
       as_planned = false;
       return true;
     }
     prev_dev = dev;
-    const double g = dev < kInf ? std::sqrt(kSpreadAim * (budget + shift) / (dev + shift)) : 0.5;
+    double g = dev < kInf ? std::sqrt(kSpreadAim * (budget + shift) / (dev + shift)) : 0.5;
+    // Still stuck with the end on the curve: the start vertex is what fails
+    // (shifted away from this chord's bulge), and only a much shorter chord
+    // fits: shortened by 0.7 at least rather than creeping down 5 % a try.
+    if (stuck && drop) g = std::min(g, 0.7);
     t1 = t0 + (v.t - t0) * std::clamp(g, 0.3, 0.95);
     as_planned = false;
 #ifdef BEZCAM_FLATTEN_COUNTERS
