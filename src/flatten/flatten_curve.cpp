@@ -987,7 +987,8 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     return sum / m;
   };
   double total = integral();
-  if (m < kSpreadSamples && m * kSpreadRefine < total) {
+  static_assert(kSpreadSamples == 32, "the grid is refined once, from 16 intervals to 32");
+  if (m * kSpreadRefine < total) {
     densities(std::integral_constant<int, 16>{}, stride / 2, stride);
     m *= 2, stride /= 2;
     total = integral();
