@@ -331,17 +331,23 @@ double band_bound(const Bezier& sub, const Vec3& A, const Vec3& B, double budget
   return parametric_distance(sub, L, budget);
 }
 
-// Uniform step that Wang's formula proves safe for a polynomial piece.
-double wang_step(const Bezier& b, double tol) {
+// The largest square of a second difference of the control points (Wang's
+// formula's m, squared).
+double second_difference_sq(const Bezier& b) {
   const auto& P = b.points;
-  const int n = b.degree();
-  if (n < 2) return 1;
-  double m2 = 0;  // (the largest square, one root: the same value)
-  for (int i = 0; i + 2 <= n; ++i) {
+  double m2 = 0;
+  for (size_t i = 0; i + 2 < P.size(); ++i) {
     const Vec3 d = P[i] - P[i + 1] * 2 + P[i + 2];
     m2 = std::max(m2, dot(d, d));
   }
-  const double m = std::sqrt(m2);
+  return m2;
+}
+
+// Uniform step that Wang's formula proves safe for a polynomial piece.
+double wang_step(const Bezier& b, double tol) {
+  const int n = b.degree();
+  if (n < 2) return 1;
+  const double m = std::sqrt(second_difference_sq(b));  // (the largest square, one root: the same value)
   const double k = std::sqrt(n * (n - 1) * m / (8 * tol));
   return k <= 1 ? 1.0 : 1.0 / std::ceil(k);
 }
@@ -979,31 +985,41 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
       D[idx] = g[k] > d[k] * d[k] * d[k] ? cbrt_estimate(g[k]) : d[k];
     }
   };
-  int m = 16, stride = kSpreadSamples / 16;
-  densities(std::integral_constant<int, 18>{}, 0, stride);  // (the 18th is past the end, unused)
-  auto integral = [&] {
-    double sum = 0.5 * (D[0] + D[kSpreadSamples]);
-    for (int idx = stride; idx < kSpreadSamples; idx += stride) sum += D[idx];
-    return sum / m;
+  // The running integral (trapezoid rule) on the grid of M intervals, and
+  // the intervals' inverse widths (divisions here, two at a time, off the
+  // chords' path).
+  double C[kSpreadSamples + 1];
+  double W[kSpreadSamples];
+  auto prefix = [&]<int M>(std::integral_constant<int, M>) {
+    constexpr int stride = kSpreadSamples / M;
+    constexpr double inv_m = 1.0 / M;  // (a power of 2: multiplying by it divides exactly)
+    C[0] = 0;
+    for (int j = 1; j <= M; ++j) C[j] = C[j - 1] + 0.5 * (D[(j - 1) * stride] + D[j * stride]) * inv_m;
   };
-  double total = integral();
   static_assert(kSpreadSamples == 32, "the grid is refined once, from 16 intervals to 32");
-  if (m * kSpreadRefine < total) {
-    densities(std::integral_constant<int, 16>{}, stride / 2, stride);
-    m *= 2, stride /= 2;
-    total = integral();
+  int m = 16;
+  densities(std::integral_constant<int, 18>{}, 0, 2);  // (the 18th is past the end, unused)
+  prefix(std::integral_constant<int, 16>{});
+  if (16 * kSpreadRefine < C[16]) {
+    densities(std::integral_constant<int, 16>{}, 1, 2);
+    m = 32;
+    prefix(std::integral_constant<int, 32>{});
   }
+  double total = C[m];
   // (a density undefined even beside its sample gives infinity or NaN here)
   if (!(total < kSpreadMax))
     return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);
-  double C[kSpreadSamples + 1];
-  C[0] = 0;
-  const double inv_m = 1.0 / m;  // (m is a power of 2: multiplying by it divides exactly)
-  for (int j = 1; j <= m; ++j) C[j] = C[j - 1] + 0.5 * (D[(j - 1) * stride] + D[j * stride]) * inv_m;
-  // The intervals' inverse widths (divisions here, off the chords' path).
-  double W[kSpreadSamples];
+#if defined(__SSE2__)
+  for (int j = 0; j < m; j += 2) {
+    const v2d lo = {C[j], C[j + 1]}, hi = {C[j + 1], C[j + 2]};
+    const v2d w = 1 / (hi - lo);
+    W[j] = hi[0] > lo[0] ? w[0] : 0.0;
+    W[j + 1] = hi[1] > lo[1] ? w[1] : 0.0;
+  }
+#else
   for (int j = 0; j < m; ++j) W[j] = C[j + 1] > C[j] ? 1 / (C[j + 1] - C[j]) : 0.0;
-  total = C[m];
+#endif
+  const double inv_m = 1.0 / m;
   // The plan from a vertex: the rest of the integral shared among as few
   // chords as fit, the last one (and the first, from a vertex on the curve)
   // counting for e of the units (both ends on the curve: e1).
@@ -1391,20 +1407,39 @@ double flatten_with(std::span<const Bezier> pieces, const FlattenOptions& opt, S
   // Wang's formula bounds the uniform step count of each polynomial piece
   // from its control points alone (O(n), no allocation); only when that
   // bound could reach the limit is the sampled estimate worth its cost.
-  double wang = 0;
+  // Cheaper still, and enough for most paths: each piece's count ceil(k),
+  // k = sqrt(n (n - 1) m / (8 tol)), is at most k + 1, so the sum stays
+  // within the limit when every k is within K = limit / pieces - 1, that
+  // is when (n (n - 1))^2 m^2 <= (8 tol K^2)^2 with the largest n and m
+  // (no root, no division per piece; K half a count short, for rounding).
+  double m2max = 0;
+  int nmax = 0;
+  bool rational = false;
   for (const auto& pc : pieces) {
-    const double step = pc.rational() ? 0 : wang_step(pc, tol - rmax);
-    wang += step > 0 ? 1 / step : kInf;
+    rational = rational || pc.rational();
+    nmax = std::max(nmax, pc.degree());
+    m2max = std::max(m2max, second_difference_sq(pc));
   }
-  // The band's chords see a band twice as wide (estimate_segments()).
-  const double estimate = wang <= static_cast<double>(opt.max_vertices)
-                              ? wang
-                              : estimate_segments(pieces, (opt.on_curve ? 1 : 2) * (tol - rmax));
-  if (estimate > static_cast<double>(opt.max_vertices))
-    throw too_many("about " + (std::isfinite(estimate) ? fmt_num(std::round(estimate)) : std::string("infinitely many")));
+  const double K = static_cast<double>(opt.max_vertices) / static_cast<double>(pieces.size()) - 1.5;
+  const double nn = double(nmax) * (nmax - 1), w = 8 * (tol - rmax) * K * K;
+  if (rational || !(K > 0) || !(nn * nn * m2max <= w * w)) {
+    double wang = 0;
+    for (const auto& pc : pieces) {
+      const double step = pc.rational() ? 0 : wang_step(pc, tol - rmax);
+      wang += step > 0 ? 1 / step : kInf;
+    }
+    // The band's chords see a band twice as wide (estimate_segments()).
+    const double estimate = wang <= static_cast<double>(opt.max_vertices)
+                                ? wang
+                                : estimate_segments(pieces, (opt.on_curve ? 1 : 2) * (tol - rmax));
+    if (estimate > static_cast<double>(opt.max_vertices))
+      throw too_many("about " + (std::isfinite(estimate) ? fmt_num(std::round(estimate)) : std::string("infinitely many")));
+  }
   std::size_t emitted = 0;
-  auto emit_counted = [&](const FlatVertex& v) {
-    if (++emitted > opt.max_vertices) throw too_many("at least " + std::to_string(emitted));
+  // (the refusal out of line: the sink stays inlined with the flattener)
+  auto refuse = [&]() __attribute__((noinline, cold)) { throw too_many("at least " + std::to_string(emitted)); };
+  auto emit_counted = [&](const FlatVertex& v) __attribute__((always_inline)) {
+    if (++emitted > opt.max_vertices) [[unlikely]] refuse();
     emit(v);
   };
 
