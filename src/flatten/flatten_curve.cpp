@@ -746,7 +746,7 @@ void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece,
           const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
           const double s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
           if (planar_side(cr, s2, d2x, d2y)) {
-            const double k = (cr > 0 ? -1 : 1) / std::sqrt(s2);
+            const double k = std::copysign(1.0, -cr) / std::sqrt(s2);  // (-1 where cr > 0, without a branch)
             bend1 = std::abs(cr * k);
             sx = -d1y * k, sy = d1x * k;
           }
@@ -1085,7 +1085,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
       const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
       const double s2 = v.d1x * v.d1x + v.d1y * v.d1y, cr = v.d1x * d2y - v.d1y * d2x;
       if (planar_side(cr, s2, d2x, d2y)) {
-        const double k = (cr > 0 ? -shift : shift) / std::sqrt(s2);
+        const double k = std::copysign(shift, -cr) / std::sqrt(s2);  // (-shift where cr > 0, without a branch)
         sx = -v.d1y * k, sy = v.d1x * k;
       }
     } else {
@@ -1141,7 +1141,9 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     const v2d d1x = (c3x * t3 + c2x * 2) * t + c1x, d1y = (c3y * t3 + c2y * 2) * t + c1y;
     const v2d d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
     const v2d s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
-    const v2d k = v2d{cr[0] > 0 ? -shift : shift, cr[1] > 0 ? -shift : shift} / vsqrt(s2);
+    // (-shift where cr > 0, shift where cr < 0, without a branch: the sign
+    // of -cr on shift; where cr is 0 or not finite there is no side)
+    const v2d k = v2d(_mm_or_pd(_mm_andnot_pd(__m128d(cr), _mm_set1_pd(-0.0)), _mm_set1_pd(shift))) / vsqrt(s2);
     // (planar_side() on both lanes)
     const v2d q = kSideFloor * (d2x * d2x + d2y * d2y) * s2, cr2 = cr * cr;
     Vtx* out[2] = {&va, &vb};
