@@ -36,8 +36,11 @@ constexpr double kAimShare = 0.97;
 // Roots in [0,1] of a + b s + c s^2 (numerically stable form).
 inline __attribute__((always_inline)) int quadratic_roots01(double a, double b, double c, double out[2]) {
   int n = 0;
+  // (without a branch: the slot is written whether the root is kept or not;
+  // the comparisons also leave out infinities and NaN)
   auto keep = [&](double s) {
-    if (s >= 0 && s <= 1 && std::isfinite(s)) out[n++] = s;
+    out[n] = s;
+    n += int(s >= 0) & int(s <= 1);
   };
   const double scale = std::max(std::max(std::abs(a), std::abs(b)), std::abs(c));
   if (scale == 0) return 0;
