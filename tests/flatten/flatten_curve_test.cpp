@@ -728,3 +728,21 @@ TEST(Band, InflectionsWithinToleranceAndNearTheMinimum) {
   }
   EXPECT_LE(double(band), 0.9 * double(greedy)) << band << " band chords, " << greedy << " greedy";
 }
+
+TEST(Band, PlanPutsAVertexOnTheCurveAtAnInflection) {
+  // A point-symmetric S (about (50, 0)) inflects at t = 1/2, at (50, 0).
+  // The plan puts a vertex there, on the curve (no chord across the
+  // inflection with its ends shifted to opposite sides), and the band's
+  // other vertices leave the curve; all within the tolerance.
+  const Bezier s = bz({{0, 0}, {40, 30}, {60, -30}, {100, 0}});
+  for (double tol : {0.1, 0.01}) {
+    const FlattenResult r = flatten(s, {tol, -1});
+    ASSERT_GE(r.points.size(), 5u);
+    const auto at = std::find_if(r.points.begin() + 1, r.points.end() - 1,
+                                 [](const Vec3& p) { return std::abs(p.x - 50) < 1e-9 && std::abs(p.y) < 1e-9; });
+    EXPECT_NE(at, r.points.end() - 1) << "no vertex at the inflection, tol " << tol;
+    EXPECT_LE(r.bound, tol);
+    EXPECT_LE(measure_deviation(std::span<const Bezier>(&s, 1), r.points, tol).max(), tol);
+    expect_band_within(s, tol, -1, "symmetric S");
+  }
+}

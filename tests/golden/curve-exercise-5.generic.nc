@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-5.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009112 mm, proven bound 0.009842 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.00934 mm, proven bound 0.009363 mm, rounding included)
 (T1: seed-ex-5)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
@@ -11,13 +11,13 @@ S12000 M03
 G00 Z5.
 X0. Y0.
 G01 Z-0.5 F200.
-X0.53 Y0.491 F600.
-X1.044 Y0.842
-X1.417 Y0.996
-X1.498 Y1.009
-X1.465 Y0.995
-X1.097 Y1.129
-X0.562 Y1.483
+X0.482 Y0.453 F600.
+X0.961 Y0.795
+X1.332 Y0.972
+X1.5 Y1.
+X1.332 Y1.028
+X0.961 Y1.205
+X0.482 Y1.547
 X0. Y2.
 G00 Z5.
 M05

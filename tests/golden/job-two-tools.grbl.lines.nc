@@ -1,6 +1,6 @@
 (bezcam 0.1.0: job-two-tools.json, machine grbl, output lines)
 (program 4711)
-(tolerance 0.01 mm; largest deviation measured 0.009408 mm, proven bound 0.009805 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009512 mm, proven bound 0.009805 mm, rounding included)
 (T1: pocket-outline)
 (T2: engraving)
 (estimated cycle time 23 s on the motion model of machine grbl [acceleration, corners, tool changes])
@@ -89,28 +89,29 @@ M7
 X5. Y12.5
 Z1.
 G1 Z-0.2 F250.
-X5.845 Y13.247 F400.
-X6.831 Y13.945
-X7.819 Y14.48
-X8.818 Y14.869
-X9.844 Y15.122
-X10.912 Y15.241
-X12.043 Y15.225
-X13.261 Y15.064
-X14.62 Y14.736
-X16.193 Y14.201
-X18.282 Y13.315
-X21.718 Y11.685
-X23.807 Y10.799
-X25.38 Y10.264
-X26.739 Y9.936
-X27.957 Y9.775
-X29.088 Y9.759
-X30.156 Y9.878
-X31.182 Y10.131
-X32.181 Y10.52
-X33.169 Y11.055
-X34.155 Y11.753
+X5.819 Y13.227 F400.
+X6.775 Y13.91
+X7.732 Y14.439
+X8.699 Y14.831
+X9.688 Y15.092
+X10.715 Y15.229
+X11.799 Y15.24
+X12.961 Y15.116
+X14.233 Y14.844
+X15.696 Y14.385
+X17.499 Y13.665
+X20. Y12.5
+X22.501 Y11.335
+X24.304 Y10.615
+X25.767 Y10.156
+X27.039 Y9.884
+X28.201 Y9.76
+X29.285 Y9.771
+X30.312 Y9.908
+X31.301 Y10.169
+X32.268 Y10.561
+X33.225 Y11.09
+X34.181 Y11.773
 X35. Y12.5
 G0 Z5.
 M9
