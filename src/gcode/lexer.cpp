@@ -90,19 +90,46 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
       d.fail(errc::gcode_syntax, "unexpected character '" + std::string(1, c) + "': expected a word (a letter and a number)");
     const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     ++i;
+    // RS274/NGC reads a line with its blanks taken out (comments aside), so
+    // a blank may stand anywhere inside a word: "G 0 1", "X - 1 . 5" and
+    // "Z   5.0000" are G01, X-1.5 and Z5. A blank before a digit (or before
+    // the number's one decimal point) goes on with the number; before
+    // anything else it ends it.
+    auto skip_blanks = [&] {
+      while (i < n && is_space(text[i])) ++i;
+    };
+    skip_blanks();
     const size_t start = i;
-    if (i < n && (text[i] == '+' || text[i] == '-')) ++i;
-    size_t digits = 0;
-    while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) ++i, ++digits;
-    if (i < n && text[i] == '.') {
-      ++i;
-      while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) ++i, ++digits;
+    std::string num;
+    if (i < n && (text[i] == '+' || text[i] == '-')) {
+      num += text[i++];
+      skip_blanks();
     }
-    std::string num(text.substr(start, i - start));
+    size_t digits = 0;
+    bool point = false;
+    while (i < n) {
+      const char ch = text[i];
+      if (std::isdigit(static_cast<unsigned char>(ch))) {
+        num += ch;
+        ++digits;
+        ++i;
+      } else if (ch == '.' && !point) {
+        num += ch;
+        point = true;
+        ++i;
+      } else if (is_space(ch)) {
+        size_t j = i;
+        while (j < n && is_space(text[j])) ++j;
+        if (j < n && (std::isdigit(static_cast<unsigned char>(text[j])) || (text[j] == '.' && !point))) i = j;
+        else break;
+      } else {
+        break;
+      }
+    }
     if (digits == 0) {
-      size_t e = i;
+      size_t e = start;
       while (e < n && !is_space(text[e]) && text[e] != '(' && text[e] != ';') ++e;
-      const std::string found(text.substr(start, std::max(e, i) - start));
+      const std::string found(text.substr(start, e - start));
       d.fail(errc::gcode_syntax, std::string("expected a number after '") + letter + "', found " +
                          (found.empty() ? std::string("nothing") : "'" + found + "'"));
     }

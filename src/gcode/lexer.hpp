@@ -2,7 +2,8 @@
 // The G-code lexer: one line of text into its words. Private to src/gcode.
 //
 // Number syntax: an optional sign, digits, an optional '.' and digits (at
-// least one digit in all); no exponent. Comments are '( ... )' (not nested,
+// least one digit in all); no exponent. Blanks may stand anywhere inside a
+// word, as RS274/NGC reads it ("X - 1 . 5" is ). Comments are '( ... )' (not nested,
 // closed on the line) and everything after ';'. Letters are upper-cased.
 #include <array>
 #include <optional>
@@ -19,7 +20,7 @@ namespace bezcam::gcode {
 struct Word {
   char letter = 0;
   double value = 0;
-  std::string text;  ///< as printed, e.g. "K0.03118"
+  std::string text;  ///< as printed without its blanks, e.g. "K0.03118"
 };
 
 /// A parsed line: its words (N and O apart), G and M codes, and the first

@@ -263,6 +263,40 @@ TEST(GcodeReader, LinuxCncBezierAndNurbsWords) {
   EXPECT_EQ(linuxcnc_knots(6, 4), (std::vector<double>{0, 0, 0, 0, 1, 2, 3, 3, 3, 3}));
 }
 
+// RS274/NGC takes the blanks out of a line before reading it (comments
+// aside): dxf2gcode writes "G0 Z   5.0000", and "G 0 1", "X - 1 . 5" are
+// legal too. LinuxCNC and Fanuc read these; so must bezcam.
+TEST(GcodeReader, BlanksMayStandInsideAWord) {
+  const auto b = read_gcode(
+      "G21 G90 G17\n"
+      "G0 Z   5.0000\n"
+      "G0 X  -3.000 Y  50.000\n"
+      "g 0 1 z - 1 . 5 f 1 5 0\n"
+      "N 1 0 G1 X 1 2 . 5 Y 5 0 .\n"
+      "G 2 X 1 2 . 5 Y 4 0 I 0 J - 5 (a half circle)\n"
+      "M 3 0\n");
+  ASSERT_EQ(b.size(), 5u);
+  EXPECT_EQ(b[0].kind, BlockKind::rapid);
+  EXPECT_EQ(b[0].to.z, 5);
+  EXPECT_EQ(b[1].to, (Vec3{-3, 50, 5}));
+  EXPECT_EQ(b[2].kind, BlockKind::linear);
+  EXPECT_EQ(b[2].to, (Vec3{-3, 50, -1.5}));
+  EXPECT_EQ(b[2].feed, 150);
+  EXPECT_EQ(b[3].to, (Vec3{12.5, 50, -1.5}));
+  EXPECT_EQ(b[4].kind, BlockKind::arc_cw);
+  EXPECT_EQ(b[4].center, (Vec3{12.5, 45, -1.5}));
+  // Messages name the word without its blanks; a blank before anything
+  // but a digit (or the number's one point) ends the number.
+  auto e = refusal(kPre + "G0 X 1 X 2\n");
+  EXPECT_EQ(e.message(), "X appears twice on the line (X1 and X2); a block gives each address once");
+  e = refusal(kPre + "G0 X1 -2\n");
+  EXPECT_EQ(e.message(), "unexpected character '-': expected a word (a letter and a number)");
+  e = refusal(kPre + "G0 X 1.5 .5\n");
+  EXPECT_EQ(e.message(), "unexpected character '.': expected a word (a letter and a number)");
+  e = refusal(kPre + "G0 X - Y1\n");
+  EXPECT_EQ(e.message(), "expected a number after 'X', found '-'");
+}
+
 // Each refusal: the line, the stable id and the sentence.
 struct Bad {
   std::string program;  // after kPre

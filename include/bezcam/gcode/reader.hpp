@@ -82,7 +82,8 @@ struct MachineState {
 /// InputError "gcode.<what>" at "line N" naming the word and what was
 /// expected):
 ///  - `%` lines, an `O1234` program-number line, `N` line numbers, comments
-///    in parentheses and after `;`, upper- or lower-case words;
+///    in parentheses and after `;`, upper- or lower-case words, blanks
+///    anywhere inside a word (`G 0 1`, `Z   5.0000`, as RS274/NGC);
 ///  - G00 G01 G02 G03 (G17 only, centre by I/J or radius by R; K refused),
 ///    G04 P dwell, G17, G20/G21 (not changed after the first move), G90,
 ///    G94, G40, G41/G42 D- (cutter radius compensation, cutter_comp.hpp: the
