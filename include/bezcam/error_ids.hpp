@@ -96,7 +96,7 @@ inline constexpr ErrorId gcode_dwell{"gcode.dwell"};
 inline constexpr ErrorId gcode_feed{"gcode.feed"};
 /// A feed rate above the machine's maximum (the controller's feed-limit alarm).
 inline constexpr ErrorId gcode_feed_limit{"gcode.feed-limit"};
-/// G91 incremental distances are not supported.
+/// G91: a travel from an axis no move has set, or G53 (absolute) in G91.
 inline constexpr ErrorId gcode_incremental{"gcode.incremental"};
 /// A NURBS block's first or last knots are not clamped.
 inline constexpr ErrorId gcode_knot_clamped{"gcode.knot-clamped"};

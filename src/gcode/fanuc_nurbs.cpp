@@ -41,9 +41,10 @@ bool GcodeInterpreter::Impl::continue_block() {
       fail(errc::gcode_knot_count, "a control point after the knot-only blocks that began at line " +
                              std::to_string(mo.knot_only_line) + ": a NURBS block lists every control point first, "
                              "then exactly P (" + std::to_string(mo.order) + ") knot-only K blocks");
+    // In G91 each point is the travel from the one before (Fanuc).
     Vec3 p = mo.ctrl.back();
     for (int a = 0; a < 3; ++a)
-      if (const Word* w = ln.get("XYZ"[a])) p[a] = w->value;
+      if (const Word* w = ln.get("XYZ"[a])) p[a] = coordinate(*w, p[a]);
     double w = 1;
     if (ln.has('R')) w = weight(*ln.get('R'));
     mo.ctrl.push_back(p);
@@ -141,16 +142,20 @@ void GcodeInterpreter::Impl::fanuc_start(int code) {
   require_feed(wt(code));
   // The first control point is the current position.
   Vec3 p0 = st.pos;
+  // (In G91 its words are the travel from there: 0, as Fanuc asks.)
   for (int a = 0; a < 3; ++a) {
     const Word* w = ln.get("XYZ"[a]);
-    if (!w) continue;
+    if (!w || !gives_coordinate(a, *w)) continue;
+    const double v = coordinate(*w, st.pos[a]);
     if (st.known_axes & (1u << a)) {
       const double slack = 1e-12 * std::max(1.0, std::abs(st.pos[a]));
-      if (std::abs(w->value - st.pos[a]) > slack)
+      if (std::abs(v - st.pos[a]) > slack)
         soft(errc::gcode_nurbs_start, w->text + ": the first control point of a NURBS block must be the current position (" +
-                                axis_name(a) + " = " + fmt_num(st.pos[a]) + ")");
+                                          (st.absolute ? axis_name(a) + " = " + fmt_num(st.pos[a])
+                                                       : "in G91 (incremental distances): " + axis_name(a) + "0") +
+                                          ")");
     }
-    p0[a] = w->value;
+    p0[a] = v;
   }
   if ((st.known_axes & 7) != 7 && lint() && !mo.noted_position) {
     // Axes neither known nor given: lint goes on with 0.

@@ -95,8 +95,21 @@ struct GcodeInterpreter::Impl {
   static int start_code(const std::string& word);
 
   // ---- helpers (reader.cpp)
-  // Target of a move: the current position with the given axis words.
+  /// The coordinate an axis word programs: the word in G90, `from` plus
+  /// the word in G91 (`from`: the axis's current position for a move, the
+  /// previous control point inside a Fanuc NURBS block).
+  double coordinate(const gcode::Word& w, double from) const;
+  /// Whether an axis word on axis `a` (X 0, Y 1, Z 2) gives a coordinate:
+  /// always in G90 or once a move has set the axis; in G91 on an axis no
+  /// move has set, a word of 0 (no travel) does not, any other is refused.
+  bool gives_coordinate(int a, const gcode::Word& w) const;
+  /// Target of a move: the current position with the line's X Y Z words
+  /// (coordinate()), and the axes whose value is known afterwards (a G91
+  /// word of 0 leaves an axis no move has set unknown; any other G91 word
+  /// on such an axis is refused).
   std::pair<Vec3, unsigned> target() const;
+  /// The axes the line names with X Y Z words (X 1, Y 2, Z 4).
+  unsigned named_axes() const;
   // Start point of a move: unknown axes take the end's value.
   Vec3 start_for(const Vec3& to) const;
   void require_xy_known(const std::string& what) const { require_known(what, 3); }
@@ -116,9 +129,14 @@ struct GcodeInterpreter::Impl {
 
   // ---- motions (reader.cpp)
   void linear(bool rapid);
-  // G28: rapid through the line's X Y Z (if any) to the home position
-  // (machine zero; the simulated controller's offsets are zero).
-  void go_home();
+  // G28 (code 280) / G30 (300): rapid through the line's X Y Z (if any,
+  // in the distance mode) to the reference point, with axis words for
+  // those axes only, else for all.
+  void go_home(int code);
+  // The reference point of G28 / G30 (program coordinates): machine zero,
+  // LinuxCNC's #5161-#5163 and #5181-#5183 as a new parameter file has
+  // them; the simulated controller's offsets are zero.
+  Vec3 reference_point(int code) const;
   double arc_tolerance() const;
   void arc(bool cw);
 

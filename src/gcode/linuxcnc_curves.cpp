@@ -48,7 +48,9 @@ void GcodeInterpreter::Impl::g52_point() {
   double w = 1;
   if (!ln.has('P')) soft(errc::gcode_weight, "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)");
   else w = weight(*ln.get('P'));
-  mo.ctrl.push_back({val('X'), val('Y'), st.pos.z});
+  // In G91 LinuxCNC's interpreter measures every point of the block from
+  // where the block began (the current position until G5.3).
+  mo.ctrl.push_back({coordinate(*ln.get('X'), st.pos.x), coordinate(*ln.get('Y'), st.pos.y), st.pos.z});
   mo.weights.push_back(w);
 }
 

@@ -17,9 +17,10 @@ GGroup g_group(int c) {
   switch (c) {
     case 0: case 10: case 20: case 30: case 50: case 51: case 52: case 53: case 62: case 63: case 800:
       return GGroup::motion;
-    case 40: case 280: case 530: return GGroup::non_modal;
+    case 40: case 280: case 300: case 530: return GGroup::non_modal;
     case 170: case 180: case 190: return GGroup::plane;
     case 900: case 910: return GGroup::distance;
+    case 901: case 911: return GGroup::arc_distance;
     case 930: case 940: case 950: return GGroup::feed_mode;
     case 200: case 210: return GGroup::units;
     case 400: case 410: case 420: return GGroup::cutter_comp;
@@ -49,7 +50,8 @@ void GcodeInterpreter::Impl::run_modal() {
   std::array<std::string, kModalGroups> seen_g{};
   int motion = -999;
   int line_plane = 0;  // the G17/G18/G19 of this line, 0 for none
-  bool dwell = false, home = false, machine_coords = false, length_comp = false, blend = false, comp_d = false;
+  int home = 0;  // G28 280, G30 300: to a reference point
+  bool dwell = false, machine_coords = false, length_comp = false, blend = false, comp_d = false;
   int comp = 0;  // G40 400, G41 410, G42 420
   std::string non_modal;  // RS274/NGC: one code of group 0 per line
   for (const auto& [c, t] : ln.g) {
@@ -73,7 +75,6 @@ void GcodeInterpreter::Impl::run_modal() {
                                       " plane while cutter radius compensation is on: it compensates in G17 (XY) only; "
                                       "cancel it with G40 first");
         break;
-      case 910: fail(errc::gcode_incremental, "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates");
       case 930: case 950:
         fail(errc::gcode_unsupported, t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
                                 " is not supported by this reader: use G94 (units per minute)");
@@ -81,7 +82,7 @@ void GcodeInterpreter::Impl::run_modal() {
       case 430: length_comp = true; break;
       case 40: dwell = true; break;
       case 640: blend = true; break;
-      case 280: home = true; break;
+      case 280: case 300: home = c; break;
       case 530: machine_coords = true; break;
       default: break;
     }
@@ -104,7 +105,7 @@ void GcodeInterpreter::Impl::run_modal() {
     fail(errc::gcode_nurbs_open, "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
 
   // Which motion the line's words belong to (-999: none; -1: G80). G28
-  // takes the line's axis words (its intermediate point).
+  // and G30 take the line's axis words (their intermediate point).
   const bool has_axes = ln.has('X') || ln.has('Y') || ln.has('Z');
   bool motion_words = has_axes && !home;
   // G04's P is its duration, G64's P and Q its tolerances: not motion words.
@@ -116,7 +117,8 @@ void GcodeInterpreter::Impl::run_modal() {
   if (dwell && (has_axes || motion != -999))
     fail(errc::gcode_modal_group, "G04 (dwell) cannot share a line with a motion: put it on its own line");
   if (home && motion != -999)
-    fail(errc::gcode_modal_group, "G28 uses the line's axis words for its intermediate point: put " + word + " on another line");
+    fail(errc::gcode_modal_group, g_text(home) + " uses the line's axis words for its intermediate point: put " + word +
+                                      " on another line");
   if (machine_coords && !(active == 0 || active == 10))
     fail(errc::gcode_unsupported, "G53 (machine coordinates) applies to a G00 or G01 move on the same line; found " +
                                       (active >= 0 ? wt(active) : std::string("no motion")));
@@ -127,7 +129,7 @@ void GcodeInterpreter::Impl::run_modal() {
   check_letters(active, extra, motion != -999, line_plane ? line_plane : st.plane);
 
   // Execution order (RS274/NGC): F, S, T, M06, spindle, coolant, dwell,
-  // plane, units, distance mode, motion, program end.
+  // plane, units, distance modes, motion, program end.
   if (ln.has('F')) {
     if (val('F') < 0) fail(errc::gcode_feed, "expected a feed rate F >= 0, found " + txt('F'));
     st.feed = val('F');
@@ -184,9 +186,11 @@ void GcodeInterpreter::Impl::run_modal() {
                                  "the units once, before any move");
       st.units = u;
       st.units_set = true;
-    } else if (c == 900) {
-      st.absolute = true;
+    } else if (c == 900 || c == 910) {
+      st.absolute = c == 900;
       mo.distance_set = true;
+    } else if (c == 901 || c == 911) {
+      st.arc_centers_absolute = c == 901;
     } else if (c >= 540 && c <= 590 && c % 10 == 0) {
       st.coord_system = c / 10;
     } else if (c == 430) {
@@ -207,8 +211,14 @@ void GcodeInterpreter::Impl::run_modal() {
   // Cutter compensation before motion (RS274/NGC's order).
   if (comp) cutter_comp(comp);
   if ((home || machine_coords) && mo.comp.active())
-    fail(errc::gcode_cutter_comp, std::string(home ? "G28" : "G53") + " cannot be used with cutter radius compensation on: cancel it with G40 first");
-  if (home) go_home();
+    fail(errc::gcode_cutter_comp, (home ? g_text(home) : std::string("G53")) +
+                                      " cannot be used with cutter radius compensation on: cancel it with G40 first");
+  // LinuxCNC refuses G53 in G91 ("cannot use G53 incremental"); Fanuc
+  // ignores it there. Either way the line would not move as written.
+  if (machine_coords && !st.absolute)
+    fail(errc::gcode_incremental, "G53 (machine coordinates) takes absolute coordinates: it cannot be used in G91 "
+                                  "(incremental distances); give G90 first");
+  if (home) go_home(home);
   if (active != -999) motion_line(active, motion != -999);
   for (const auto& [c, t] : ln.m)
     if (c == 2 || c == 30) {

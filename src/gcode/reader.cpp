@@ -67,15 +67,42 @@ void GcodeInterpreter::Impl::save_lists() {
   saved.knot_lines.assign(mo.knot_lines.begin(), mo.knot_lines.begin() + static_cast<std::ptrdiff_t>(sizes0[3]));
 }
 
+double GcodeInterpreter::Impl::coordinate(const Word& w, double from) const {
+  if (st.absolute) return w.value;
+  const double v = from + w.value;
+  // Travels that add up beyond a double must not read as infinity.
+  if (!std::isfinite(v))
+    fail(errc::gcode_number, w.text + " in G91 (incremental distances) takes " + std::string(1, w.letter) +
+                                 " beyond the largest number bezcam reads (about 1e308)");
+  return v;
+}
+
+bool GcodeInterpreter::Impl::gives_coordinate(int a, const Word& w) const {
+  if (st.absolute || (st.known_axes & (1u << a))) return true;
+  // The travel from a position this program never set: the controller
+  // knows where it ends, a reader does not. No travel leaves it unknown.
+  if (w.value == 0) return false;
+  fail(errc::gcode_incremental, w.text + " in G91 (incremental distances) travels from the current " + axis_name(a) +
+                                    ", which no earlier move has set: set it with an absolute (G90) move first");
+}
+
 std::pair<Vec3, unsigned> GcodeInterpreter::Impl::target() const {
   Vec3 t = st.pos;
   unsigned axes = 0;
-  for (int a = 0; a < 3; ++a)
-    if (const Word* w = ln.get("XYZ"[a])) {
-      t[a] = w->value;
-      axes |= 1u << a;
-    }
+  for (int a = 0; a < 3; ++a) {
+    const Word* w = ln.get("XYZ"[a]);
+    if (!w || !gives_coordinate(a, *w)) continue;
+    t[a] = coordinate(*w, st.pos[a]);
+    axes |= 1u << a;
+  }
   return {t, axes};
+}
+
+unsigned GcodeInterpreter::Impl::named_axes() const {
+  unsigned axes = 0;
+  for (int a = 0; a < 3; ++a)
+    if (ln.has("XYZ"[a])) axes |= 1u << a;
+  return axes;
 }
 
 Vec3 GcodeInterpreter::Impl::start_for(const Vec3& to) const {
@@ -331,10 +358,13 @@ void GcodeInterpreter::Impl::linear(bool rapid) {
   commit_move(b, axes);
 }
 
-void GcodeInterpreter::Impl::go_home() {
+Vec3 GcodeInterpreter::Impl::reference_point(int) const { return Vec3{0, 0, 0}; }
+
+void GcodeInterpreter::Impl::go_home(int code) {
   mo.g5_chain = false;
   const auto [via, axes] = target();
-  if (axes) {
+  // An intermediate point where the tool stands is no move.
+  if (axes && (via != st.pos || (axes & ~st.known_axes))) {
     MotionBlock b = block(BlockKind::rapid, via);
     lint_motion(b.kind, b.from, via, axes);
     Box3 box;
@@ -342,12 +372,14 @@ void GcodeInterpreter::Impl::go_home() {
     check_travel(box, axes | st.known_axes);
     commit_move(b, axes);
   }
-  // With axis words only those axes go home; without, all of them.
-  const unsigned home_axes = axes ? axes : 7u;
+  // With axis words only those axes go home (in G91, G28 Z0 sends Z there
+  // straight from where it is); without, all of them.
+  const unsigned named = named_axes();
+  const unsigned home_axes = named ? named : 7u;
+  const Vec3 ref = reference_point(code);
   Vec3 home = st.pos;
-  if (home_axes & 1) home.x = 0;
-  if (home_axes & 2) home.y = 0;
-  if (home_axes & 4) home.z = 0;
+  for (int a = 0; a < 3; ++a)
+    if (home_axes & (1u << a)) home[a] = ref[a];
   MotionBlock b = block(BlockKind::rapid, home);
   lint_motion(b.kind, b.from, home, home_axes);
   Box3 box;
@@ -373,13 +405,20 @@ void GcodeInterpreter::Impl::arc(bool cw) {
   const bool ij = ln.has(la) || ln.has(lb), r = ln.has('R');
   if (ij && r) fail(errc::gcode_arc, g + ": give either " + words + " (the centre) or R (the radius), not both");
   if (!ij && !r) fail(errc::gcode_arc, g + " needs the centre offsets " + words + " (or a radius R)");
+  // G90.1: the centre is a point, both its words needed (LinuxCNC: "I word
+  // missing in absolute center arc").
+  if (ij && st.arc_centers_absolute && !(ln.has(la) && ln.has(lb)))
+    fail(errc::gcode_arc, g + " in G90.1 (absolute arc centres) needs both " + words + ": the centre's coordinates");
   require_known(g, (1u << ia) | (1u << ib));
   require_feed(g);
   const auto [to, axes] = target();
   const Vec3 from = st.pos;
   const Vec3 lf = to_plane(from, pl), lt = to_plane(to, pl);
   Vec3 c = lf;  // the centre, in plane coordinates
-  if (ij) {
+  if (ij && st.arc_centers_absolute) {
+    c.x = val(la);
+    c.y = val(lb);
+  } else if (ij) {
     c.x += ln.has(la) ? val(la) : 0;
     c.y += ln.has(lb) ? val(lb) : 0;
   } else {
@@ -400,7 +439,9 @@ void GcodeInterpreter::Impl::arc(bool cw) {
     c.y = (lf.y + lt.y) / 2 + side * h * dx / d;
   }
   const double r0 = std::hypot(lf.x - c.x, lf.y - c.y), r1 = std::hypot(lt.x - c.x, lt.y - c.y);
-  if (r0 == 0) fail(errc::gcode_arc, g + ": the centre coincides with the start point (" + words + " are both 0)");
+  if (r0 == 0)
+    fail(errc::gcode_arc, g + ": the centre coincides with the start point (" + words +
+                              (st.arc_centers_absolute ? " name the start point in G90.1)" : " are both 0)"));
   const double tol = arc_tolerance();
   const double slack = 1e-12 * std::max({1.0, max_abs(from), max_abs(to), max_abs(c)});
   if (std::abs(r0 - r1) > tol + slack)

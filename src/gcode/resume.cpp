@@ -111,6 +111,7 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
   else if (st.path_mode == 64 && std::isfinite(st.path_tolerance) && st.path_tolerance > 0)
     modes += " G64 P" + num(st.path_tolerance);  // the tolerance in force, not only the mode
   else if (st.path_mode != 0) modes += " G" + std::to_string(st.path_mode);
+  if (st.arc_centers_absolute) modes += " G90.1";  // only a program that used it: not every controller knows it
   out.push_back(modes);
   if (st.tool > 0) out.push_back("T" + std::to_string(st.tool) + " M06");
   const int sel = s.cont.selected_tool;
@@ -145,6 +146,8 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
   }
   if (st.feed != feed_now) out.push_back("F" + num(st.feed));
   if (restorable(st.motion) && st.motion != motion_now) out.push_back(motion_word(st.motion));
+  // The moves above are absolute; the program goes on in its own mode.
+  if (!st.absolute) out.push_back("G91");
   return out;
 }
 
@@ -161,6 +164,7 @@ std::string differences(const Snapshot& want, const MachineState& got, const Gco
     if (w.known_axes & (1u << a)) diff(got.pos[a] != w.pos[a], "position");
   diff(got.units != w.units || got.units_set != w.units_set, "units");
   diff(got.absolute != w.absolute, "distance mode");
+  diff(got.arc_centers_absolute != w.arc_centers_absolute, "arc centre mode");
   diff(got.plane != w.plane, "plane");
   diff(got.coord_system != w.coord_system, "work offset");
   diff(got.path_mode != w.path_mode, "path mode");

@@ -18,6 +18,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
+#include "bezcam/sim/trace.hpp"
 #include "support/run_process.hpp"
 
 using namespace bezcam;
@@ -297,6 +298,154 @@ TEST(GcodeReader, BlanksMayStandInsideAWord) {
   EXPECT_EQ(e.message(), "expected a number after 'X', found '-'");
 }
 
+// G91: X Y Z are the travel from where the tool is, for lines, arcs and
+// LinuxCNC's curves; the trace says so. I J stay offsets from the start.
+TEST(GcodeReader, G91MovesTravelFromWhereTheToolIs) {
+  GcodeInterpreter in;
+  std::vector<MotionBlock> b;
+  std::string trace;  // the simulated controller's records of the state
+  const std::string prog =
+      "G21 G90 G17 F100\n"
+      "G0 X1 Y2 Z3\n"
+      "G91\n"
+      "G1 X1 Y1\n"
+      "Z-4\n"
+      "G2 X2 Y0 I1 J0\n"
+      "G18 G3 X2 Z0 I1 K0\n"
+      "G17 G5 X4 Y0 I1 J1 P-1 Q1\n"
+      "G5.2 P1 L3\n"
+      "X1 Y1 P1\n"
+      "X2 Y0 P1\n"
+      "G5.3\n"
+      "G90 G1 X0\n";
+  std::istringstream ss(prog);
+  int no = 0;
+  for (std::string l; std::getline(ss, l);) {
+    const MachineState before = in.state();
+    for (auto& x : in.feed_line(l, ++no)) b.push_back(x);
+    trace += sim::trace_state(no, before, in.state());
+  }
+  EXPECT_EQ(trace, "line 1 units mm\nline 3 distance incremental\nline 13 distance absolute\n");
+  ASSERT_EQ(b.size(), 8u);
+  EXPECT_EQ(b[1].to, (Vec3{2, 3, 3}));
+  EXPECT_EQ(b[2].to, (Vec3{2, 3, -1}));
+  EXPECT_EQ(b[3].kind, BlockKind::arc_cw);
+  EXPECT_EQ(b[3].to, (Vec3{4, 3, -1}));
+  EXPECT_EQ(b[3].center, (Vec3{3, 3, -1}));
+  EXPECT_EQ(b[4].plane, Plane::zx);
+  EXPECT_EQ(b[4].to, (Vec3{6, 3, -1}));
+  EXPECT_EQ(b[4].center, (Vec3{5, 3, -1}));
+  EXPECT_EQ(b[5].ctrl, (std::vector<Vec3>{{6, 3, -1}, {7, 4, -1}, {9, 4, -1}, {10, 3, -1}}));
+  // G5.2: every point from where the block began, as LinuxCNC's
+  // interpreter reads it (its end is (12, 3), not (13, 4)).
+  EXPECT_EQ(b[6].ctrl, (std::vector<Vec3>{{10, 3, -1}, {11, 4, -1}, {12, 3, -1}}));
+  EXPECT_EQ(b[7].to, (Vec3{0, 3, -1}));
+  EXPECT_TRUE(in.state().absolute);
+}
+
+TEST(GcodeReader, G91FromAPositionNoMoveHasSetIsRefusedUnlessItStaysPut) {
+  auto e = refusal("G21 G91 G17\nG0 X5\n");
+  EXPECT_EQ(e.where(), "line 2");
+  EXPECT_EQ(e.id(), "gcode.incremental");
+  EXPECT_EQ(e.message(),
+            "X5 in G91 (incremental distances) travels from the current X, which no earlier move has set: set it with "
+            "an absolute (G90) move first");
+  // Travels that add up beyond a double.
+  const std::string huge = "17" + std::string(307, '0');
+  e = refusal("G21 G90 G17\nG0 X" + huge + "\nG91 G0 X" + huge + "\n");
+  EXPECT_EQ(e.where(), "line 3");
+  EXPECT_EQ(e.id(), "gcode.number");
+  // No travel: nothing moves, and the axis stays unknown.
+  GcodeInterpreter in;
+  in.feed_line("G21 G90 G17", 1);
+  in.feed_line("G0 Z5", 2);
+  EXPECT_TRUE(in.feed_line("G91 G0 X0 Y0", 3).empty());
+  const auto b = in.feed_line("G0 X0 Y0 Z-2", 4);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0].to.z, 3);
+  EXPECT_EQ(in.state().known_axes, 4u);
+}
+
+// The end of many Fanuc programs: Z home straight from where it is (the
+// intermediate point is where the tool stands), then X and Y.
+TEST(GcodeReader, G91G28Z0SendsZHomeStraightFromWhereItIs) {
+  const auto b = read_gcode(
+      "G21 G90 G17\n"
+      "G0 X10 Y20 Z5\n"
+      "G91 G28 Z0.\n"
+      "G28 X0. Y0.\n"
+      "G90\n"
+      "G0 X1 Y1 Z1\n"
+      "G91 G30 X1\n"
+      "G90 G28 Z4\n");
+  ASSERT_EQ(b.size(), 8u);
+  EXPECT_EQ(b[1].kind, BlockKind::rapid);
+  EXPECT_EQ(b[1].from, (Vec3{10, 20, 5}));
+  EXPECT_EQ(b[1].to, (Vec3{10, 20, 0}));
+  EXPECT_EQ(b[2].to, (Vec3{0, 0, 0}));
+  EXPECT_EQ(b[3].to, (Vec3{1, 1, 1}));
+  EXPECT_EQ(b[4].to, (Vec3{2, 1, 1}));  // G30 through X + 1 ...
+  EXPECT_EQ(b[5].to, (Vec3{0, 1, 1}));  // ... to its reference point, for X only
+  EXPECT_EQ(b[6].to, (Vec3{0, 1, 4}));  // G90: through Z4 ...
+  EXPECT_EQ(b[7].to, (Vec3{0, 1, 0}));  // ... to Z home
+  // At the start of a program, with Z unknown: one move, and Z known.
+  GcodeInterpreter in;
+  in.feed_line("G21 G90 G17", 1);
+  const auto h = in.feed_line("G28 G91 Z0", 2);
+  ASSERT_EQ(h.size(), 1u);
+  EXPECT_EQ(h[0].from_known, 0u);
+  EXPECT_EQ(h[0].to.z, 0);
+  EXPECT_EQ(in.state().known_axes, 4u);
+  EXPECT_FALSE(in.state().absolute);
+}
+
+// G90.1: an arc's centre words are a point; G91.1 (the default): the
+// centre's offset from the start. R arcs and G5's I J are not affected.
+TEST(GcodeReader, G90_1TakesArcCentresAsPointsAndG91_1AsOffsets) {
+  const auto b = read_gcode(
+      "G21 G90 G17 F100\n"
+      "G0 X10 Y0 Z0\n"
+      "G90.1\n"
+      "G3 X0 Y10 I0 J0\n"
+      "G18 G2 X-10 Z0 I-5 K0\n"
+      "G17 G91 G2 X2 Y0 I-9 J10\n"
+      "G91.1 G2 X2 Y0 I1 J0\n"
+      "G90.1 G90 G2 X-4 Y10 R1\n");
+  ASSERT_EQ(b.size(), 6u);
+  EXPECT_EQ(b[1].center, (Vec3{0, 0, 0}));
+  EXPECT_EQ(b[2].center, (Vec3{-5, 10, 0}));
+  EXPECT_EQ(b[2].to, (Vec3{-10, 10, 0}));
+  EXPECT_EQ(b[3].to, (Vec3{-8, 10, 0}));
+  EXPECT_EQ(b[3].center, (Vec3{-9, 10, 0}));
+  EXPECT_EQ(b[4].to, (Vec3{-6, 10, 0}));
+  EXPECT_EQ(b[4].center, (Vec3{-7, 10, 0}));
+  EXPECT_EQ(b[5].to, (Vec3{-4, 10, 0}));
+  EXPECT_EQ(b[5].center, (Vec3{-5, 10, 0}));
+  const auto e = refusal(kPre + "G90.1 G2 X2 Y0 I1\n");
+  EXPECT_EQ(e.id(), "gcode.arc");
+}
+
+// Fanuc reads a NURBS block's points in G91 as the travel from the point
+// before (the first, from where the tool is, must be 0).
+TEST(GcodeReader, FanucNurbsBlockInG91TravelsFromPointToPoint) {
+  const auto b = read_gcode(
+      "G21 G90 G17 F500\n"
+      "G0 X10 Y0 Z-1\n"
+      "G91\n"
+      "G06.2 P3 K0 X0 Y0 Z0 R1\n"
+      "K0 X5 Y5 R0.5\n"
+      "K0 X5 Y-5 R1\n"
+      "K1\nK1\nK1\n"
+      "G01 X1\n");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(b[1].ctrl, (std::vector<Vec3>{{10, 0, -1}, {15, 5, -1}, {20, 0, -1}}));
+  EXPECT_EQ(b[2].to, (Vec3{21, 0, -1}));
+  const auto e = refusal(kPre + "G91 G06.2 P3 K0 X1 Y0 Z0\nK0 X1\nK0 X1\nK1\nK1\nK1\n");
+  EXPECT_EQ(e.id(), "gcode.nurbs-start");
+  EXPECT_EQ(e.message(), "X1: the first control point of a NURBS block must be the current position (in G91 (incremental "
+                         "distances): X0)");
+}
+
 // Each refusal: the line, the stable id and the sentence.
 struct Bad {
   std::string program;  // after kPre
@@ -339,8 +488,11 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         Bad{"G18\nG5 X1 Y1 I1 J0 P0 Q1\n", "line 4", "gcode.plane",
             "G5 moves in the XY plane: select it with G17 first (G18 is in force)"},
-        Bad{"G91 G01 X1\n", "line 3", "gcode.incremental",
-            "G91 (incremental distances) is not supported by this reader: use G90 absolute coordinates"},
+        Bad{"G91 G53 G00 Z0\n", "line 3", "gcode.incremental",
+            "G53 (machine coordinates) takes absolute coordinates: it cannot be used in G91 (incremental distances); "
+            "give G90 first"},
+        Bad{"G90.1 G02 X2 Y0 I1\n", "line 3", "gcode.arc",
+            "G02 in G90.1 (absolute arc centres) needs both I and J: the centre's coordinates"},
         Bad{"G00 G01 X1\n", "line 3", "gcode.modal-group", "G00 and G01 are in the same modal group: give one"},
         Bad{"G38.2 Z-5\n", "line 3", "gcode.unsupported", "G-code G38.2 is not supported by this reader"},
         Bad{"M98\n", "line 3", "gcode.unsupported", "M-code M98 is not supported by this reader"},

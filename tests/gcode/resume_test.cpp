@@ -60,6 +60,7 @@ void expect_same_state(const Ran& want, const Ran& got) {
   EXPECT_EQ(g.units_set, w.units_set);
   EXPECT_EQ(g.plane, w.plane);
   EXPECT_EQ(g.absolute, w.absolute);
+  EXPECT_EQ(g.arc_centers_absolute, w.arc_centers_absolute);
   EXPECT_EQ(g.coord_system, w.coord_system);
   EXPECT_EQ(g.tool, w.tool);
   EXPECT_EQ(got.cont.selected_tool, want.cont.selected_tool);
@@ -275,14 +276,14 @@ TEST(Resume, BadLinesAreRefusedNamingTheLine) {
   EXPECT_EQ(e.id(), "resume.after-end");
   EXPECT_EQ(e.where(), "line 5");
   EXPECT_NE(e.message().find("ended at line 3"), std::string::npos) << e.message();
-  // A G91 program: the state before line 4 cannot be known; the refusal
-  // names the G91 line and the line asked.
-  const std::string g91 = "G21 G90\nG91\nG00 X1.\nG00 X2.\nM30\n";
-  e = test::refusal_of([&] { plan_resume(g91, &m, 4); });
+  // A G93 program (inverse-time feeds): the state before line 4 cannot be
+  // known; the refusal names the G93 line and the line asked.
+  const std::string g93 = "G21 G90\nG93\nG00 X1.\nG00 X2.\nM30\n";
+  e = test::refusal_of([&] { plan_resume(g93, &m, 4); });
   EXPECT_EQ(e.id(), "resume.state-unknown");
   EXPECT_EQ(e.where(), "line 2");
   EXPECT_NE(e.message().find("cannot resume at line 4"), std::string::npos) << e.message();
-  EXPECT_NE(e.message().find("gcode.incremental"), std::string::npos) << e.message();
+  EXPECT_NE(e.message().find("gcode.unsupported"), std::string::npos) << e.message();
   // An unsupported word before the line.
   const std::string g38 = "G21 G90\nG00 Z5.\nG38.2 Z-5.\nG00 X1.\nM30\n";
   e = test::refusal_of([&] { plan_resume(g38, &m, 4); });
@@ -335,6 +336,22 @@ TEST(Resume, EveryLineOfTheSamplesResumesToTheSameTail) {
       check_resume(file, machine, n, p.start_line);
     }
   }
+}
+
+// A program in G91 with absolute arc centres (G90.1): the preamble moves in
+// absolute coordinates, then hands over in the program's own modes, and the
+// tail moves exactly as in the full run.
+TEST(Resume, AnIncrementalProgramResumesInItsOwnDistanceModes) {
+  const std::string prog =
+      "G21 G90 G17\nT1 M06\nS9000 M03\nG00 X0. Y0. Z5.\nG91 G90.1\nG01 Z-6. F200.\nX10. F800.\n"
+      "G02 X10. Y0. I15. J0.\nG01 Y10.\nG00 Z6.\nG90 G91.1\nM30\n";
+  const ResumePlan p = check_resume_text(prog, "generic", 9, 9);
+  EXPECT_FALSE(p.state.absolute);
+  EXPECT_TRUE(p.state.arc_centers_absolute);
+  EXPECT_NE(p.preamble.find("G17 G90 G94 G40 G21 G54 G90.1\n"), std::string::npos) << p.preamble;
+  EXPECT_EQ(p.preamble.substr(p.preamble.size() - 4), "G91\n") << p.preamble;
+  // At the arc: its centre, a point, is restored with it.
+  check_resume_text(prog, "generic", 8, 8);
 }
 
 TEST(Resume, ThePreambleRestoresEveryModalGroupTheReaderTracks) {

@@ -193,7 +193,7 @@ TEST(ResumeOverTheLink, BadLinesAreRefusedBeforeAnythingIsSent) {
   const std::string to = "127.0.0.1:" + std::to_string(sim.port());
   const std::string good = data_file("two-tools-arcs.nc");
   {
-    std::ofstream(dir / "g91.nc") << "G21 G90\nG00 Z5.\nG91\nG00 X1.\nG00 X2.\nM30\n";
+    std::ofstream(dir / "g93.nc") << "G21 G90\nG00 Z5.\nG93\nG00 X1.\nG00 X2.\nM30\n";
   }
   struct Bad {
     std::string file, line, place, id;
@@ -201,7 +201,7 @@ TEST(ResumeOverTheLink, BadLinesAreRefusedBeforeAnythingIsSent) {
   const Bad bad[] = {
       {good, "52", good + ": line 52", "resume.no-line"},
       {good, "13", good + ": line 13", "resume.no-code"},  // a comment
-      {(dir / "g91.nc").string(), "5", (dir / "g91.nc").string() + ": line 3", "resume.state-unknown"},
+      {(dir / "g93.nc").string(), "5", (dir / "g93.nc").string() + ": line 3", "resume.state-unknown"},
   };
   for (const auto& b : bad) {
     const auto r = test::run_bezcam({"stream", b.file, "--to", to, "--progress", "off", "--from-line", b.line}, dir);

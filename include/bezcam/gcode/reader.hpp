@@ -41,7 +41,13 @@ struct MachineState {
   unsigned known_axes = 0;   ///< X 1, Y 2, Z 4: set once a word gave the axis
   Units units = Units::mm;
   bool units_set = false;
+  /// Distance mode (group 3): G90 absolute (true), G91 incremental: the
+  /// X Y Z words of a move are then its travel from where the tool is.
   bool absolute = true;
+  /// Arc centre mode (group 4): G90.1 (true) takes an arc's centre words as
+  /// a point in program coordinates, G91.1 (the default) as its offset
+  /// from the arc's start.
+  bool arc_centers_absolute = false;
   int plane = 17;
   ModalMotion motion = ModalMotion::none;
   double feed = 0;
@@ -84,15 +90,17 @@ struct MachineState {
 ///  - `%` lines, an `O1234` program-number line, `N` line numbers, comments
 ///    in parentheses and after `;`, upper- or lower-case words, blanks
 ///    anywhere inside a word (`G 0 1`, `Z   5.0000`, as RS274/NGC);
-///  - G00 G01 G02 G03 (G17 only, centre by I/J or radius by R; K refused),
-///    G04 P dwell, G17, G20/G21 (not changed after the first move), G90,
-///    G94, G40, G41/G42 D- (cutter radius compensation, cutter_comp.hpp: the
+///  - G00 G01 G02 G03 (G17, G18, G19; centre by the plane's two centre
+///    words or radius by R), G04 P dwell, G17 G18 G19, G20/G21 (not changed
+///    after the first move), G90/G91 (absolute or incremental X Y Z),
+///    G90.1/G91.1 (arc centres absolute or from the start), G94, G40,
+///    G41/G42 D- (cutter radius compensation, cutter_comp.hpp: the
 ///    blocks are the tool centre's; D's diameter from the profile's
 ///    tool_diameters_mm), G43 H- / G49 (tool length compensation, zero offsets),
-///    G54-G59 (zero work offsets), G28 (rapid through the optional X Y Z
-///    point to the home position, machine zero), G53 with G00/G01 (machine
-///    coordinates for that line), G61/G61.1/G64, G80; refused with a
-///    reason: G18/G19, G91 (incremental), G93/G95, anything else;
+///    G54-G59 (zero work offsets), G28 / G30 (rapid through the optional
+///    X Y Z point, in the distance mode, to the reference point, machine
+///    zero), G53 with G00/G01 in G90 (machine coordinates for that line),
+///    G61/G61.1/G64, G80; refused with a reason: G93/G95, anything else;
 ///  - M00 M01 M02 M30 M03 M04 M05 M06 M07 M08 M09, F, S, T;
 ///  - the Fanuc-style NURBS block: start word G06.2 or G06.3 (with a
 ///    profile: its start word only), `P` rank 2..4 (default 4; the
@@ -107,6 +115,11 @@ struct MachineState {
 ///    ... G5.3 (order L >= 3, default 3; P on every point; the interpreter's
 ///    clamped uniform integer knots 0..n-k+2, see linuxcnc_knots()). These
 ///    move in X and Y only: a Z word is refused.
+/// In G91 the end point of every move is its travel from the current
+/// position; the control points of a Fanuc block each travel from the one
+/// before (the first must be X0 Y0 Z0 or left out), those of a G5.2 block
+/// from where the block began (LinuxCNC's interpreter). I J P Q of G5 and
+/// G5.1 are always offsets; the centre words of G02/G03 follow G90.1/G91.1.
 /// With a profile, the profile's NURBS dialect is enforced (no G5 on a Fanuc,
 /// no G06.2 on Grbl), and so are its travel limits (program units, arcs and
 /// curves by their true extent), maximum feed and arc tolerance (the

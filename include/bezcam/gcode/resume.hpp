@@ -65,7 +65,7 @@ struct ResumePlan {
 ///  - `resume.no-line` at `line N`: N is not a line of the program;
 ///  - `resume.no-code` at `line N`: line N holds no block (blank, comment,
 ///    `%` or an O-number line);
-///  - `resume.state-unknown` at the earlier line the reader refuses (G91,
+///  - `resume.state-unknown` at the earlier line the reader refuses (G93,
 ///    an unsupported word, ...): the modal state before N cannot be known;
 ///  - `resume.after-end` at `line N`: the program ended (M02/M30) before N;
 ///  - `resume.setting` (setting `safe_z` or `plunge_feed`): a value missing
