@@ -10,6 +10,8 @@
 // each curve block; rs274 prints it as MESSAGE("POS x y z").
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -25,6 +27,8 @@
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
+#include "bezcam/gcode/reader.hpp"
+#include "bezcam/kernel/arc.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "support/run_process.hpp"
 
@@ -351,4 +355,184 @@ TEST(LinuxcncRs274, EverySampleInEveryModeIsAcceptedAndMeansWhatWeMeant) {
 }
 
 }  // namespace
+}  // namespace bezcam
+
+namespace bezcam {
+namespace {
+
+// The position after each line: the program with a probe printing the line
+// number and the interpreter's position (#5420-#5422) after every line
+// that leaves no block open and does not end the program.
+std::string with_line_probes(const std::string& gcode, const std::vector<bool>& probe) {
+  std::string out;
+  std::istringstream in(gcode);
+  size_t no = 0;
+  for (std::string line; std::getline(in, line); ++no) {
+    out += line + "\n";
+    if (no < probe.size() && probe[no]) out += "(DEBUG,POS " + std::to_string(no + 1) + " #5420 #5421 #5422)\n";
+  }
+  return out;
+}
+
+// One motion as an interpreter executed it: its kind, where it ends, and
+// for an arc its centre, direction and plane.
+struct Executed {
+  std::string name;  // STRAIGHT_TRAVERSE, STRAIGHT_FEED, ARC_FEED, NURBS_FEED
+  Vec3 to, center;
+  int rotation = 0;
+  Plane plane = Plane::xy;
+};
+
+std::string describe(const Executed& e) {
+  std::ostringstream s;
+  s << e.name << " to (" << e.to.x << ", " << e.to.y << ", " << e.to.z << ")";
+  if (e.name == "ARC_FEED") s << " centre (" << e.center.x << ", " << e.center.y << ", " << e.center.z << ")";
+  return s.str();
+}
+
+// Straight moves that end where the one before ended move nothing: rs274
+// prints G28's intermediate point where the tool already stands, bezcam
+// leaves it out.
+void keep_moving(std::vector<Executed>& out, Executed e) {
+  const Vec3 before = out.empty() ? Vec3{} : out.back().to;
+  if (e.name.rfind("STRAIGHT", 0) == 0 && norm(e.to - before) < 1e-9) return;
+  out.push_back(std::move(e));
+}
+
+}  // namespace
+
+// Programs as other posts write them (tests/gcode/data/posts, see
+// other_posts_test.cpp): blanks inside words, G91 (lines, arcs in G17 and
+// G18, G5, G5.1 and G5.2 blocks), G90.1 / G91.1, G28 and G91 G28 Z0,
+// comments, N numbers, lower case. Every motion bezcam reads ends where
+// LinuxCNC's interpreter ends it (arcs with the same centre and
+// direction), and the position after every line is the same.
+TEST(LinuxcncRs274, ProgramsFromOtherPostsMoveAsLinuxcncReadsThem) {
+  const std::string exe = find_rs274();
+  if (exe.empty()) GTEST_SKIP() << "rs274 (LinuxCNC's standalone interpreter, Debian package linuxcnc-uspace) is not installed";
+  const char* files[] = {"dxf2gcode-plate.ngc", "dxf2gcode-incremental.ngc", "freecad-linuxcnc.ngc", "freecad-fanuc.nc",
+                         "linuxcnc-distance-modes.ngc"};
+  std::vector<std::string> texts, programs, tables;
+  std::vector<std::vector<Vec3>> positions;  // bezcam's, after each line
+  std::vector<std::vector<bool>> probed;
+  std::vector<std::vector<Executed>> ours;
+  for (const char* f : files) {
+    std::ifstream in(std::string(BEZCAM_SOURCE_DIR) + "/tests/gcode/data/posts/" + f, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    texts.push_back(ss.str());
+    GcodeInterpreter reader;
+    std::vector<Vec3> pos;
+    std::vector<bool> probe;
+    std::vector<Executed> moves;
+    std::istringstream lines(texts.back());
+    int no = 0;
+    for (std::string line; std::getline(lines, line);) {
+      for (const MotionBlock& b : reader.feed_line(line, ++no)) {
+        Executed e;
+        e.to = b.to;
+        if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
+          e.name = "ARC_FEED";
+          e.center = b.center;
+          e.rotation = b.kind == BlockKind::arc_ccw ? 1 : -1;
+          e.plane = b.plane;
+        } else {
+          e.name = b.kind == BlockKind::rapid    ? "STRAIGHT_TRAVERSE"
+                   : b.kind == BlockKind::linear ? "STRAIGHT_FEED"
+                                                 : "NURBS_FEED";
+        }
+        keep_moving(moves, e);
+      }
+      pos.push_back(reader.state().pos);
+      probe.push_back(!reader.state().program_end && reader.continuation().open_block == ModalMotion::none);
+    }
+    EXPECT_TRUE(reader.finish().empty());
+    positions.push_back(pos);
+    probed.push_back(probe);
+    ours.push_back(moves);
+    programs.push_back(with_line_probes(texts.back(), probe));
+    tables.push_back(tool_table({}));
+  }
+  const auto runs = run_rs274(exe, programs, tables);
+
+  const std::regex call(R"(^\s*\d+ N\S*\s+([A-Z_]+)\((.*)\)\s*$)");
+  const std::regex probe(R"xx("POS (\d+) (\S+) (\S+) (\S+)")xx");
+  for (size_t i = 0; i < runs.size(); ++i) {
+    SCOPED_TRACE(files[i]);
+    ASSERT_EQ(runs[i].status, 0) << runs[i].output;
+    ASSERT_NE(runs[i].output.find("PROGRAM_END()"), std::string::npos) << runs[i].output;
+    std::vector<Executed> theirs;
+    Plane plane = Plane::xy;
+    size_t probes = 0;
+    std::istringstream out(runs[i].output);
+    for (std::string line; std::getline(out, line);) {
+      std::smatch m;
+      if (!std::regex_match(line, m, call)) continue;
+      const std::string name = m[1], args = m[2];
+      if (name == "SELECT_PLANE") {
+        plane = args.find("XZ") != std::string::npos ? Plane::zx : args.find("YZ") != std::string::npos ? Plane::yz : Plane::xy;
+        continue;
+      }
+      if (name == "MESSAGE") {
+        std::smatch q;
+        ASSERT_TRUE(std::regex_search(args, q, probe)) << line;
+        const size_t no = std::stoul(q[1]);
+        ASSERT_GE(no, 1u);
+        ASSERT_LE(no, positions[i].size());
+        const Vec3 at{std::stod(q[2]), std::stod(q[3]), std::stod(q[4])};
+        // 6 decimals printed.
+        EXPECT_LT(norm(at - positions[i][no - 1]), 1e-6) << "after line " << no;
+        ++probes;
+        // A curve's end: the probe after the line that completes it.
+        if (!theirs.empty() && theirs.back().name == "NURBS_FEED" && std::isnan(theirs.back().to.x)) theirs.back().to = at;
+        continue;
+      }
+      if (name != "STRAIGHT_TRAVERSE" && name != "STRAIGHT_FEED" && name != "ARC_FEED" && name != "NURBS_FEED") continue;
+      std::vector<double> v;
+      std::istringstream a(args);
+      for (std::string tok; std::getline(a, tok, ',');)
+        if (tok.find("...") == std::string::npos) v.push_back(std::stod(tok));
+      Executed e;
+      e.name = name;
+      if (name == "NURBS_FEED") {
+        e.to = Vec3{std::nan(""), std::nan(""), std::nan("")};
+        theirs.push_back(e);  // never a move that moves nothing
+        continue;
+      }
+      if (name == "ARC_FEED") {
+        ASSERT_GE(v.size(), 6u) << line;
+        // In the plane's coordinates: first end, second end, first and
+        // second centre, rotation, the axis end.
+        e.to = from_plane(Vec3{v[0], v[1], v[5]}, plane);
+        e.rotation = static_cast<int>(v[4]);
+        e.plane = plane;
+        const Vec3 from = theirs.empty() ? Vec3{} : theirs.back().to;
+        Vec3 c = to_plane(from, plane);
+        c.x = v[2];
+        c.y = v[3];
+        e.center = from_plane(c, plane);
+        theirs.push_back(e);
+        continue;
+      }
+      ASSERT_GE(v.size(), 3u) << line;
+      e.to = Vec3{v[0], v[1], v[2]};
+      keep_moving(theirs, e);
+    }
+    EXPECT_EQ(probes, static_cast<size_t>(std::count(probed[i].begin(), probed[i].end(), true)));
+    const auto& mine = ours[i];
+    ASSERT_EQ(mine.size(), theirs.size()) << runs[i].output;
+    const double eps = 0.5e-4 + 1e-9;  // rs274 prints 4 decimals
+    for (size_t k = 0; k < mine.size(); ++k) {
+      SCOPED_TRACE("move " + std::to_string(k + 1) + ": bezcam " + describe(mine[k]) + ", rs274 " + describe(theirs[k]));
+      EXPECT_EQ(mine[k].name, theirs[k].name);
+      EXPECT_LT(norm(mine[k].to - theirs[k].to), eps);
+      if (mine[k].name == "ARC_FEED") {
+        EXPECT_EQ(mine[k].plane, theirs[k].plane);
+        EXPECT_EQ(mine[k].rotation, theirs[k].rotation);
+        EXPECT_LT(norm(mine[k].center - theirs[k].center), eps);
+      }
+    }
+  }
+}
+
 }  // namespace bezcam
