@@ -164,10 +164,14 @@ struct Context {
   }
   void path_exit() { finish_subpath(false); }
 
+  // Every attribute has been read: the element's own `transform` is known
+  // only now (SVG++ reads attributes in document order, so `d` may come
+  // before it), and its subpaths are mapped and given out.
   void on_exit_element() {
     const std::string kind = name_of(node_);
     if (kind == "polyline" || kind == "polygon") points_of(kind == "polygon");
     finish_subpath(false);
+    emit_subpaths();
   }
 
  private:
@@ -182,7 +186,12 @@ struct Context {
   char last_ctrl_kind_ = 0;
   bool open_ = false;
   std::vector<Piece> pieces_;
-  int subpaths_ = 0;
+  // Subpaths read, in user units before the element's transform.
+  struct Subpath {
+    std::vector<Piece> pieces;
+    bool closed = false;
+  };
+  std::vector<Subpath> subpaths_;
 
   // SVG 1.1 9.7: pairs of numbers, separated by white space and/or a comma.
   void points_of(bool closed) {
@@ -233,37 +242,40 @@ struct Context {
   }
   void finish_subpath(bool closed) {
     open_ = false;
-    if (pieces_.empty() || hidden_) {
-      pieces_.clear();
-      return;
-    }
+    if (!pieces_.empty()) subpaths_.push_back({std::move(pieces_), closed});
+    pieces_.clear();
+  }
+  void emit_subpaths() {
+    std::vector<Subpath> subpaths = std::move(subpaths_);
+    subpaths_.clear();
+    if (hidden_) return;
     // User units -> millimetres, y up from the page's bottom edge.
     const Affine page{kMmPerPx, 0, 0, -kMmPerPx, 0, s_->page_h_px * kMmPerPx};
     const Affine m = page.after(ctm_);
-    Contour c;
-    for (Piece& p : pieces_) {
-      for (Vec3& q : p.points) {
-        q = m.apply(q);
-        if (!std::isfinite(q.x) || !std::isfinite(q.y))
-          s_->current = node_, s_->fail(errc::import_not_finite, "expected finite coordinates once transformed and scaled, found " +
-                                                fmt_num(q.x) + ", " + fmt_num(q.y));
-      }
-      c.pieces.push_back(std::move(p));
-    }
-    pieces_.clear();
-    // Joints meet exactly (the same double), and a closed contour ends where it starts.
-    for (size_t i = 1; i < c.pieces.size(); ++i) c.pieces[i].points.front() = c.pieces[i - 1].points.back();
-    if (closed) c.pieces.back().points.back() = c.pieces.front().points.front();
-    c.closed = closed;
     const std::string kind = name_of(node_);
-    std::string base = id_.empty() ? kind + "@line " + std::to_string(line_of(node_)) : id_;
-    ++subpaths_;
-    if (subpaths_ > 1) base += "." + std::to_string(subpaths_);
-    int& uses = s_->id_uses[base];
-    c.id = ++uses == 1 ? base : base + "#" + std::to_string(uses);
-    c.element = describe(node_);
-    if (subpaths_ == 1) s_->out->layers[""].read[kind] += 1;  // elements, not subpaths
-    s_->out->contours.push_back(std::move(c));
+    for (size_t k = 0; k < subpaths.size(); ++k) {
+      Contour c;
+      for (Piece& p : subpaths[k].pieces) {
+        for (Vec3& q : p.points) {
+          q = m.apply(q);
+          if (!std::isfinite(q.x) || !std::isfinite(q.y))
+            s_->current = node_, s_->fail(errc::import_not_finite, "expected finite coordinates once transformed and scaled, found " +
+                                                  fmt_num(q.x) + ", " + fmt_num(q.y));
+        }
+        c.pieces.push_back(std::move(p));
+      }
+      // Joints meet exactly (the same double), and a closed contour ends where it starts.
+      for (size_t i = 1; i < c.pieces.size(); ++i) c.pieces[i].points.front() = c.pieces[i - 1].points.back();
+      if (subpaths[k].closed) c.pieces.back().points.back() = c.pieces.front().points.front();
+      c.closed = subpaths[k].closed;
+      std::string base = id_.empty() ? kind + "@line " + std::to_string(line_of(node_)) : id_;
+      if (k > 0) base += "." + std::to_string(k + 1);
+      int& uses = s_->id_uses[base];
+      c.id = ++uses == 1 ? base : base + "#" + std::to_string(uses);
+      c.element = describe(node_);
+      if (k == 0) s_->out->layers[""].read[kind] += 1;  // elements, not subpaths
+      s_->out->contours.push_back(std::move(c));
+    }
   }
 };
 
