@@ -65,7 +65,12 @@ struct Shared {
 };
 
 struct Context {
-  explicit Context(Shared& s) : s_(&s) {}
+  // The document's context: a root without width or height takes them
+  // from its viewBox (100 % of the reference viewport), not from SVG++'s
+  // default viewport of 500 x 500.
+  explicit Context(Shared& s) : s_(&s) {
+    if (s.ref_w > 0 && s.ref_h > 0) lengths_.set_viewport_size(s.ref_w, s.ref_h);
+  }
   Context(Context& parent, const xmlNode* node)
       : s_(parent.s_), ctm_(parent.ctm_), lengths_(parent.lengths_), node_(node), depth_(parent.depth_ + 1),
         id_(attr_of(node, "id")) {
