@@ -174,7 +174,7 @@ inline constexpr ErrorId gcode_cutter_comp{"gcode.cutter-comp"};
 inline constexpr ErrorId gcode_unsupported{"gcode.unsupported"};
 /// A NURBS weight is missing or not > 0.
 inline constexpr ErrorId gcode_weight{"gcode.weight"};
-/// A DXF block inserts itself (directly or through other blocks).
+/// A DXF block inserts itself, or an SVG `use` draws itself (directly or through others).
 inline constexpr ErrorId import_block_recursion{"import.block-recursion"};
 /// A DXF file is in binary form, which bezcam does not read.
 inline constexpr ErrorId import_dxf_binary{"import.dxf-binary"};

@@ -17,6 +17,7 @@
 #include <svgpp/policy/xml/libxml2.hpp>
 #include <svgpp/svgpp.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -25,6 +26,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/import/conic.hpp"
+#include "bezcam/limits.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -59,10 +61,18 @@ struct Shared {
   bool have_page = false;
   double ref_w = 0, ref_h = 0;          // reference viewport when the root has no width/height
   std::map<std::string, int> id_uses;   // ids given out, to keep them unique
+  std::map<std::string, const xmlNode*> by_id;  // every element with an id, for `use`
+  std::vector<const xmlNode*> using_;   // the `use` elements being expanded, outermost first
+  size_t instances = 0;                 // elements drawn through `use`
   [[noreturn]] void fail(ErrorId id, const std::string& what) const {
     throw InputError(id, Place::at_file(source), describe(current) + ": " + what);
   }
 };
+
+struct Context;
+// Draws the element a `use` references as its child (after the traversal's
+// type is known).
+void load_used(const xmlNode* target, Context& use);
 
 struct Context {
   // The document's context: a root without width or height takes them
@@ -73,7 +83,7 @@ struct Context {
   }
   Context(Context& parent, const xmlNode* node)
       : s_(parent.s_), ctm_(parent.ctm_), lengths_(parent.lengths_), node_(node), depth_(parent.depth_ + 1),
-        id_(attr_of(node, "id")) {
+        id_(attr_of(node, "id")), prefix_(parent.prefix_), via_(parent.via_) {
     s_->current = node;
   }
 
@@ -99,6 +109,12 @@ struct Context {
     h = s_->ref_h;
   }
   void disable_rendering() { hidden_ = true; }
+
+  // ---- `use`: x and y (its transform comes through the transform events)
+  void set(tag::attribute::x, double v) { use_x_ = v; }
+  void set(tag::attribute::y, double v) { use_y_ = v; }
+  void set(tag::attribute::width, double) {}   // a use's size matters only for a symbol or svg it draws
+  void set(tag::attribute::height, double) {}
 
   // ---- path events, as written
   template <class C>
@@ -177,6 +193,7 @@ struct Context {
     if (kind == "polyline" || kind == "polygon") points_of(kind == "polygon");
     finish_subpath(false);
     emit_subpaths();
+    if (kind == "use") use();
   }
 
  private:
@@ -187,6 +204,9 @@ struct Context {
   int depth_ = 0;
   bool hidden_ = false;
   std::string id_;
+  std::string prefix_;  // ids of the `use` elements this element is drawn through, each followed by '/'
+  std::string via_;     // the same, for messages
+  double use_x_ = 0, use_y_ = 0;
   Vec3 cur_, start_, last_ctrl_;
   char last_ctrl_kind_ = 0;
   bool open_ = false;
@@ -245,6 +265,41 @@ struct Context {
     last_ctrl_ = p1;
     last_ctrl_kind_ = 'Q';
   }
+  // SVG 1.1, 5.6: the referenced element is drawn as if it were a child of
+  // a `g` carrying the use's transform followed by translate(x, y).
+  void use() {
+    if (hidden_) return;
+    const std::string href = attr_of(node_, "href");  // xlink:href, or SVG 2's href
+    if (href.empty()) return;                          // references nothing: draws nothing
+    if (href[0] != '#')
+      s_->current = node_, s_->fail(errc::import_svg_syntax, "href \"" + href +
+                                                             "\": expected a reference to an element of this drawing (#id); "
+                                                             "other files are not read");
+    const auto it = s_->by_id.find(href.substr(1));
+    if (it == s_->by_id.end())
+      s_->current = node_, s_->fail(errc::import_svg_syntax, "href \"" + href + "\": no element has the id \"" +
+                                                             href.substr(1) + "\"");
+    static const std::set<std::string> usable = {"g", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon", "use"};
+    if (!usable.count(name_of(it->second))) {
+      s_->out->layers[""].skipped["use"] += 1;  // a symbol, svg, text or image: not geometry bezcam reads through use
+      return;
+    }
+    for (const xmlNode* n = it->second; n; n = n->parent)
+      if (n == node_) s_->current = node_, s_->fail(errc::import_block_recursion, "href \"" + href + "\" references an element that contains this use");
+    if (std::find(s_->using_.begin(), s_->using_.end(), it->second) != s_->using_.end() ||
+        std::find(s_->using_.begin(), s_->using_.end(), node_) != s_->using_.end())
+      s_->current = node_, s_->fail(errc::import_block_recursion, "href \"" + href + "\": the use references itself through other uses");
+    if (++s_->instances > kMaxEntities)
+      s_->current = node_, s_->fail(errc::limit_entities, "use elements draw more than " + std::to_string(kMaxEntities) +
+                                                          " elements (the most entities of a job)");
+    ctm_ = ctm_.after(Affine{1, 0, 0, 1, use_x_, use_y_});
+    prefix_ += (id_.empty() ? "use@line " + std::to_string(line_of(node_)) : id_) + "/";
+    via_ += " through " + describe(node_);
+    s_->using_.push_back(node_);
+    load_used(it->second, *this);
+    s_->using_.pop_back();
+  }
+
   void finish_subpath(bool closed) {
     open_ = false;
     if (!pieces_.empty()) subpaths_.push_back({std::move(pieces_), closed});
@@ -273,11 +328,11 @@ struct Context {
       for (size_t i = 1; i < c.pieces.size(); ++i) c.pieces[i].points.front() = c.pieces[i - 1].points.back();
       if (subpaths[k].closed) c.pieces.back().points.back() = c.pieces.front().points.front();
       c.closed = subpaths[k].closed;
-      std::string base = id_.empty() ? kind + "@line " + std::to_string(line_of(node_)) : id_;
+      std::string base = prefix_ + (id_.empty() ? kind + "@line " + std::to_string(line_of(node_)) : id_);
       if (k > 0) base += "." + std::to_string(k + 1);
       int& uses = s_->id_uses[base];
       c.id = ++uses == 1 ? base : base + "#" + std::to_string(uses);
-      c.element = describe(node_);
+      c.element = describe(node_) + via_;
       if (k == 0) s_->out->layers[""].read[kind] += 1;  // elements, not subpaths
       s_->out->contours.push_back(std::move(c));
     }
@@ -308,7 +363,13 @@ struct ChildContextFactories {
 
 using ProcessedElements =
     boost::mpl::set<tag::element::svg, tag::element::g, tag::element::path, tag::element::rect, tag::element::circle,
-                    tag::element::ellipse, tag::element::line, tag::element::polyline, tag::element::polygon>::type;
+                    tag::element::ellipse, tag::element::line, tag::element::polyline, tag::element::polygon,
+                    tag::element::use_>::type;
+// What a `use` draws: geometry, groups and further uses (a referenced svg
+// or symbol, which would set a viewport of its own, is counted as skipped).
+using UsableElements =
+    boost::mpl::set<tag::element::g, tag::element::path, tag::element::rect, tag::element::circle, tag::element::ellipse,
+                    tag::element::line, tag::element::polyline, tag::element::polygon, tag::element::use_>::type;
 
 // polyline and polygon `points` are read here (points_of()): SVG++'s
 // list-of-points parser does not compile with GCC 12 (it binds a const
@@ -322,7 +383,8 @@ using ShapeAttributes = boost::mpl::set<
     boost::mpl::pair<tag::element::ellipse, tag::attribute::cx>, boost::mpl::pair<tag::element::ellipse, tag::attribute::cy>,
     boost::mpl::pair<tag::element::ellipse, tag::attribute::rx>, boost::mpl::pair<tag::element::ellipse, tag::attribute::ry>,
     boost::mpl::pair<tag::element::line, tag::attribute::x1>, boost::mpl::pair<tag::element::line, tag::attribute::y1>,
-    boost::mpl::pair<tag::element::line, tag::attribute::x2>, boost::mpl::pair<tag::element::line, tag::attribute::y2>>::type;
+    boost::mpl::pair<tag::element::line, tag::attribute::x2>, boost::mpl::pair<tag::element::line, tag::attribute::y2>,
+    boost::mpl::pair<tag::element::use_, tag::attribute::x>, boost::mpl::pair<tag::element::use_, tag::attribute::y>>::type;
 
 using ProcessedAttributes = boost::mpl::fold<
     boost::mpl::protect<boost::mpl::joint_view<ShapeAttributes, svgpp::traits::viewport_attributes>>,
@@ -375,7 +437,7 @@ namespace {
 
 // Elements that draw but are not geometry bezcam cuts: counted as skipped.
 const std::set<std::string>& skipped_kinds() {
-  static const std::set<std::string> k = {"text", "image", "use", "foreignObject", "pattern", "marker", "textPath"};
+  static const std::set<std::string> k = {"text", "image", "foreignObject", "pattern", "marker", "textPath"};
   return k;
 }
 void count_skipped(const xmlNode* n, Drawing& d) {
@@ -388,6 +450,29 @@ void count_skipped(const xmlNode* n, Drawing& d) {
     }
     count_skipped(c->children, d);
   }
+}
+
+void index_ids(const xmlNode* n, std::map<std::string, const xmlNode*>& by_id) {
+  for (const xmlNode* c = n; c; c = c->next) {
+    if (c->type != XML_ELEMENT_NODE) continue;
+    const std::string id = attr_of(c, "id");
+    if (!id.empty()) by_id.emplace(id, c);  // the first of equal ids, as browsers take
+    index_ids(c->children, by_id);
+  }
+}
+
+using Traversal = svgpp::document_traversal<svgpp::processed_elements<ProcessedElements>,
+                                            svgpp::processed_attributes<ProcessedAttributes>,
+                                            svgpp::viewport_policy<svgpp::policy::viewport::as_transform>,
+                                            svgpp::context_factories<ChildContextFactories>,
+                                            svgpp::path_policy<svgpp::policy::path::raw>,
+                                            svgpp::basic_shapes_policy<ShapesPolicy>,
+                                            svgpp::length_policy<svgpp::policy::length::forward_to_method<Context>>>;
+
+void load_used(const xmlNode* target, Context& use) {
+  Traversal::load_referenced_element<svgpp::referencing_element<tag::element::use_>,
+                                     svgpp::expected_elements<UsableElements>,
+                                     svgpp::processed_elements<UsableElements>>::load(const_cast<xmlNode*>(target), use);
 }
 
 struct DocFree {
@@ -459,17 +544,11 @@ Drawing read_svg(std::string_view text, const std::string& source) {
                        describe(root) + ": " + a + ": expected a length in px, in, cm, mm, pt or pc (or none: 96 per inch), found \"" +
                            v + "\"");
   }
+  index_ids(root, s.by_id);
   Context ctx(s);
   s.current = root;
   try {
-    svgpp::document_traversal<svgpp::processed_elements<ProcessedElements>,
-                              svgpp::processed_attributes<ProcessedAttributes>,
-                              svgpp::viewport_policy<svgpp::policy::viewport::as_transform>,
-                              svgpp::context_factories<ChildContextFactories>,
-                              svgpp::path_policy<svgpp::policy::path::raw>,
-                              svgpp::basic_shapes_policy<ShapesPolicy>,
-                              svgpp::length_policy<svgpp::policy::length::forward_to_method<Context>>>::
-        load_document(root, ctx);
+    Traversal::load_document(root, ctx);
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {

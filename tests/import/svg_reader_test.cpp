@@ -236,24 +236,77 @@ TEST(SvgReader, EveryOutputModeWithinTolerance) {
   }
 }
 
+// `use` (SVG 1.1, 5.6): the referenced element drawn as a child of a group
+// with the use's transform, then translate(x, y); through other uses, inside
+// transformed groups, a used group's children with transforms of their own.
+// Coordinates computed by hand.
+TEST(SvgReader, UseNestedAndInsideTransformedGroups) {
+  const Drawing d = read_svg(svg(R"~(<defs><line id="l" x1="0" y1="0" x2="10" y2="0" transform="rotate(90)"/></defs>
+      <g id="grp" transform="translate(5 5)"><line id="m" x1="0" y1="0" x2="4" y2="4" transform="skewX(45)"/></g>
+      <use id="a" xlink:href="#l" x="20" y="30"/>
+      <use id="b" href="#a" transform="scale(-1 1)" x="-100"/>
+      <g transform="translate(0 40) scale(1 -1) translate(0 -40)"><use id="c" href="#grp" x="50" transform="skewX(-20)"/></g>)~",
+                                 R"~(xmlns:xlink="http://www.w3.org/1999/xlink" width="200" height="100")~"),
+                             "use.svg");
+  std::map<std::string, const Contour*> by_id;
+  for (const Contour& c : d.contours) by_id[c.id] = &c;
+  ASSERT_EQ(by_id.size(), 4u);  // m, a/l, b/a/l, c/m: nothing from defs by itself
+  const auto line_is = [&](const std::string& id, Vec3 a, Vec3 b) {
+    SCOPED_TRACE(id);
+    ASSERT_TRUE(by_id.count(id));
+    const auto& p = by_id[id]->pieces;
+    ASSERT_EQ(p.size(), 1u);
+    expect_at(p[0].points.front(), page(a.x, a.y));
+    expect_at(p[0].points.back(), page(b.x, b.y));
+  };
+  line_is("m", {5, 5}, {13, 9});
+  line_is("a/l", {20, 30}, {20, 40});
+  line_is("b/a/l", {80, 30}, {80, 40});
+  const double t = std::tan(20 * std::numbers::pi / 180);
+  line_is("c/m", {55 - 5 * t, 75}, {63 - 9 * t, 71});
+  EXPECT_EQ(d.layers.at("").read.at("line"), 4u);
+  EXPECT_NE(by_id["b/a/l"]->element.find("through <use id=\"b\">"), std::string::npos) << by_id["b/a/l"]->element;
+
+  // A use of a symbol draws nothing bezcam reads: counted as skipped.
+  const Drawing s = read_svg(svg(R"~(<symbol id="s"><rect width="5" height="5"/></symbol><use href="#s"/><line x2="1" y2="1"/>)~"), "s.svg");
+  EXPECT_EQ(s.contours.size(), 1u);
+  EXPECT_EQ(s.layers.at("").skipped.at("use"), 1u);
+
+  const auto refusal = [](const std::string& body) {
+    try {
+      read_svg(svg(body), "bad.svg");
+    } catch (const InputError& e) {
+      return e.id() + ": " + e.what();
+    }
+    return std::string("none");
+  };
+  EXPECT_EQ(refusal(R"~(<g id="g1"><line x2="1" y2="1"/><use id="loop" href="#g1"/></g>)~").substr(0, 53),
+            "import.block-recursion: bad.svg: <use id=\"loop\"> on l");
+  EXPECT_EQ(refusal(R"~(<use id="x" href="#y"/><use id="y" href="#x"/><line x2="1" y2="1"/>)~").substr(0, 22), "import.block-recursion");
+  const std::string missing = refusal(R"~(<use id="u" href="#nope"/><line x2="1" y2="1"/>)~");
+  EXPECT_EQ(missing.substr(0, 17), "import.svg-syntax") << missing;
+  EXPECT_NE(missing.find("<use id=\"u\"> on line 1: href \"#nope\": no element has the id \"nope\""), std::string::npos) << missing;
+}
+
 // Transforms on the elements themselves (before or after their geometry in
 // the tag), on every kind of element, of every kind (translate, rotate about
 // a point, mirrors, skews, matrix() with a negative determinant, lists),
 // elliptical arcs with every flag combination under each, inside
-// transformed groups, and the viewBox / preserveAspectRatio chain (meet,
-// slice, none, a nested svg): svgelements (python3-svgelements) reads the same
+// transformed groups, through `use` (x, y, transform, nested uses), and
+// the viewBox / preserveAspectRatio chain (meet, slice, none, a nested svg,
+// no width and height): svgelements (python3-svgelements) reads the same
 // files independently. Every point it evaluates on a shape (nine per
 // segment) lies on bezcam's contour of that id within 1e-9 of the drawing's
 // size, the contours start and end where its subpaths do, have their
 // lengths, are closed alike, and neither reader has a subpath the other
 // lacks.
-TEST(SvgReader, ElementTransformsAndViewportsMatchSvgelements) {
+TEST(SvgReader, ElementTransformsUseAndViewportsMatchSvgelements) {
   namespace fs = std::filesystem;
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(fs::path(BEZCAM_SOURCE_DIR) / "tests/import/data/svg"))
     if (e.path().extension() == ".svg") files.push_back(e.path());
   std::sort(files.begin(), files.end());
-  ASSERT_GE(files.size(), 4u);
+  ASSERT_GE(files.size(), 6u);
   const fs::path dir = fs::temp_directory_path() / ("bezcam-svgelements-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   {
@@ -319,8 +372,8 @@ TEST(SvgReader, ElementTransformsAndViewportsMatchSvgelements) {
     compare();
     for (const Contour& c : d.contours) EXPECT_TRUE(seen.count(c.id)) << "svgelements has no subpath " << c.id;
   }
-  EXPECT_GT(subpaths, 50u);
-  EXPECT_GT(points, 1200u);
+  EXPECT_GT(subpaths, 60u);
+  EXPECT_GT(points, 1500u);
   RecordProperty("points", static_cast<int>(points));
 }
 
