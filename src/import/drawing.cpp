@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/flatten/nesting.hpp"
 #include "bezcam/import/conic.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
@@ -116,6 +117,44 @@ std::string value_json(const std::string& v) {
 }
 bool top_level_key(const std::string& k) { return k == "tolerance" || k == "units" || k == "machine"; }
 
+std::string job_text(const Drawing& d, const ImportOptions& opt, std::vector<std::string>* warnings);
+
+// A drawing's `side` "outside" is the part's outside, "inside" the
+// outline's inside (docs/import.md, "Sides of a part"): each kept closed
+// contour gets the side of its even-odd depth among the others (even: the
+// side asked for; odd: the other one). Empty: the setting is not one of
+// those two, every entity keeps the job's side. Contours that cross each
+// other are warned about.
+std::vector<std::string> sides_by_nesting(const Drawing& d, const ImportOptions& opt, std::vector<std::string>* warnings) {
+  std::string side;
+  for (const auto& [k, v] : opt.settings)
+    if (k == "side") side = v;
+  if (side != "outside" && side != "inside") return {};
+  // The curves as the job reader builds them (B-splines and interpolations
+  // included), from the geometry alone.
+  ImportOptions geometry;
+  geometry.layers = opt.layers;
+  const Job job = parse_job(job_text(d, geometry, nullptr), d.source);
+  std::vector<size_t> closed;
+  std::vector<std::vector<Bezier>> curves;
+  for (size_t k = 0; k < job.entities.size(); ++k)
+    if (job.entities[k].curve.closed && !job.entities[k].curve.pieces.empty()) {
+      closed.push_back(k);
+      curves.push_back(job.entities[k].curve.pieces);
+    }
+  const Nesting nest = nest_closed_curves(curves);
+  const std::string other = side == "outside" ? "inside" : "outside";
+  std::vector<std::string> out(job.entities.size());
+  for (size_t i = 0; i < closed.size(); ++i) out[closed[i]] = nest.depth[i] % 2 == 0 ? side : other;
+  if (warnings)
+    for (const auto& [a, b] : nest.crossing)
+      warnings->push_back("side \"" + side + "\": contours " + quoted(job.entities[closed[a]].id) + " and " +
+                          quoted(job.entities[closed[b]].id) +
+                          " cross each other, so neither is inside the other: each is cut on the side its nesting "
+                          "among the rest gives it, and the tool runs through the other's region");
+  return out;
+}
+
 }  // namespace
 
 Vec3 Piece::end() const {
@@ -196,7 +235,11 @@ void join_contours(Drawing& d) {
   d.contours = std::move(out);
 }
 
-std::string job_json(const Drawing& d, const ImportOptions& opt) {
+std::string job_json(const Drawing& d, const ImportOptions& opt) { return job_text(d, opt, nullptr); }
+
+namespace {
+
+std::string job_text(const Drawing& d, const ImportOptions& opt, std::vector<std::string>* warnings) {
   // Layers asked for must exist.
   std::set<std::string> keep(opt.layers.begin(), opt.layers.end());
   for (const std::string& l : keep)
@@ -227,11 +270,14 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
     o << "  " << t << ",\n";
   }
   if (!job.empty()) o << "  \"job\": {\n    " << job << "\n  },\n";
+  const std::vector<std::string> sides = sides_by_nesting(d, opt, warnings);
   o << "  \"entities\": [";
   size_t n = 0;
   for (const Contour& c : d.contours) {
     if (!keep.empty() && !keep.count(c.layer)) continue;
+    const size_t k = n;
     o << (n++ ? ",\n" : "\n") << "    { \"id\": " << quoted(c.id) << ", ";
+    if (k < sides.size() && !sides[k].empty()) o << "\"side\": \"" << sides[k] << "\", ";
     if (c.is_interpolation) {
       o << "\"type\": \"interpolate\", " << (c.interpolation.closed ? "\"closed\": true, " : "")
         << "\"through\": " << points(c.interpolation.through, scale) << " }";
@@ -257,8 +303,10 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
   return o.str();
 }
 
+}  // namespace
+
 Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>* warnings) {
-  const std::string text = job_json(d, opt);
+  const std::string text = job_text(d, opt, warnings);
   JobReadOptions ro;
   ro.warnings = warnings;
   try {

@@ -28,7 +28,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"report", {"base", "kernel", "flatten", "job", "cam", "gcode"}},
       {"link", {"base"}},
       {"sim", {"base", "kernel", "flatten", "job", "cam", "gcode", "link"}},
-      {"import", {"base", "kernel", "job"}},
+      {"import", {"base", "kernel", "flatten", "job"}},
       {"cli", {"base", "kernel", "flatten", "job", "cam", "gcode", "report", "link", "sim", "import", "cli"}},
   };
   return g;

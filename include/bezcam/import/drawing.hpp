@@ -76,13 +76,17 @@ void join_contours(Drawing& d);
 
 /// The job file (docs/job-format.md) the drawing is read as: every number
 /// written to full double precision (shortest text that reads back
-/// exactly). Throws InputError when a layer named in `opt` is not in the
-/// drawing or nothing is left to cut.
+/// exactly). With the setting `side` "outside" (or "inside"), each closed
+/// contour's entity gets its own side by its even-odd depth among the kept
+/// closed contours (flatten/nesting.hpp): even the side asked for, odd the
+/// other (docs/import.md, "Sides of a part"). Throws InputError when a
+/// layer named in `opt` is not in the drawing or nothing is left to cut.
 std::string job_json(const Drawing& d, const ImportOptions& opt = {});
 
 /// The job: job_json() read by the job reader, so that `import` then
 /// `convert` and `convert DRAWING` are the same job. A setting the reader
-/// refuses is named as `--set KEY`.
+/// refuses is named as `--set KEY`. `warnings` gets the reader's, and with
+/// a side inside or outside one for each pair of contours that cross.
 Job to_job(const Drawing& d, const ImportOptions& opt = {}, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace bezcam::import
