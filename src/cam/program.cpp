@@ -13,6 +13,7 @@
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/nesting.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/cam/program_limits.hpp"
 #include "bezcam/cam/cut_order.hpp"
@@ -455,6 +456,45 @@ Job ordered(const Job& job, const MachineProfile& m, Program& p) {
   return out;
 }
 
+// A closed contour cut "outside" whose innermost enclosing contour (among
+// those cut inside or outside) is cut "outside" too is a hole in that
+// part: cut on its outside, it comes out larger by the tool's diameter,
+// into the part. Worth a word, naming both (docs/job-format.md).
+std::vector<std::string> nested_outside_warnings(const Job& job) {
+  std::vector<const Entity*> es;
+  std::vector<CutSide> sides;
+  std::vector<std::vector<Bezier>> curves;
+  size_t outside = 0;
+  for (const Entity& e : job.entities) {
+    const auto& g = e.curve;
+    if (e.surface || g.pieces.empty()) continue;
+    const JobParams p = e.params.over(job.params);
+    if (!p.side || (*p.side != CutSide::inside && *p.side != CutSide::outside)) continue;
+    const double scale = std::max(1.0, control_magnitude(g.pieces));
+    if (!g.closed && dist(g.pieces.front().front(), g.pieces.back().back()) > 1e-9 * scale) continue;
+    es.push_back(&e);
+    sides.push_back(*p.side);
+    curves.push_back(g.pieces);
+    outside += *p.side == CutSide::outside;
+  }
+  if (outside < 2) return {};
+  const Nesting nest = nest_closed_curves(curves);
+  const auto name = [](const Entity& e) {
+    return e.json_path() + (e.id.empty() ? std::string() : " (id \"" + e.id + "\")");
+  };
+  std::vector<std::string> out;
+  for (size_t i = 0; i < es.size(); ++i) {
+    if (sides[i] != CutSide::outside || !nest.parent[i] || sides[*nest.parent[i]] != CutSide::outside) continue;
+    const Entity& e = *es[i];
+    const Entity& around = *es[*nest.parent[i]];
+    const bool own = e.params.side.has_value();
+    out.push_back(name(e) + " is cut \"outside\"" + (own ? "" : " (the job's side)") + " but lies inside " + name(around) +
+                  ", also cut \"outside\": it is a hole in that part, and cut on its outside it comes out larger by the "
+                  "tool's diameter, cut into the part; give it \"side\": \"inside\"");
+  }
+  return out;
+}
+
 Program build_program_unchecked(const Job& original_job, const MachineProfile& m, const ConvertOptions& opt,
                                 const WhileMeasuring& while_measuring) {
   Program p;
@@ -485,6 +525,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
     p.decimals = d;
   }
   p.warnings = job.warnings;
+  for (std::string& w : nested_outside_warnings(job)) p.warnings.push_back(std::move(w));
   p.program_number = opt.program_number ? opt.program_number : job.program_number;
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
 

@@ -1,7 +1,9 @@
 // The sides of a part drawn in a drawing: `side: "outside"` is the part's
 // outside, so contours nested in others (even-odd) are holes cut on their
 // inside, and the tool path of every hole runs at the hole's radius minus
-// the tool's (docs/import.md, "Sides of a part").
+// the tool's (docs/import.md, "Sides of a part"). A job that cuts a hole
+// on its outside inside an outline also cut outside is warned about,
+// naming both entities.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +16,7 @@
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/import/svg_reader.hpp"
+#include "bezcam/job/job_json.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -160,6 +163,26 @@ TEST(ImportSides, LibreCadFlangeWithTouchingHoles) {
     ASSERT_GT(pts.size(), 3u);
     for (const Vec3& q : pts) EXPECT_NEAR(xy(q, cr.first), cr.second, 0.001);
   }
+}
+
+// A job file (not a drawing) says what each entity's side is; a hole cut
+// "outside" inside an outline cut "outside" is warned about, naming both.
+TEST(ImportSides, JobWithAHoleCutOutsideIsWarned) {
+  const Drawing d = read_drawing(kRoot / "samples/part.dxf");
+  std::string text = job_json(d, with({{"side", "outside"}, {"tool_diameter", "2"}}));
+  const auto program_warnings = [](const std::string& t) {
+    const Job job = parse_job(t, "part.json");
+    return convert(job, load_machine_profile("generic"), ConvertOptions{}).program.warnings;
+  };
+  for (const std::string& w : program_warnings(text)) EXPECT_EQ(w.find("is cut \"outside\""), std::string::npos) << w;
+  const std::string hole = "{ \"id\": \"HOLES:38\", \"side\": \"inside\"";
+  ASSERT_NE(text.find(hole), std::string::npos);
+  text.replace(text.find(hole), hole.size(), "{ \"id\": \"HOLES:38\", \"side\": \"outside\"");
+  const auto w = program_warnings(text);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_TRUE(w[0].starts_with("entities[2] (id \"HOLES:38\") is cut \"outside\" but lies inside entities[0] (id "
+                               "\"OUTLINE:2F+7\"), also cut \"outside\": it is a hole in that part"))
+      << w[0];
 }
 
 }  // namespace
