@@ -3,8 +3,9 @@
 //
 // The simulated controller's front end: the same SimController either
 // behind a Modbus TCP server or fed a file directly. SIGINT and SIGTERM stop
-// it cleanly: the executor finishes the line in progress and the trace is
-// flushed before the process exits.
+// it cleanly: the executor finishes the line in progress (at machine pace
+// the machine stops where it is) and the trace is flushed before the
+// process exits.
 #include <pthread.h>
 #include <signal.h>
 
@@ -299,7 +300,7 @@ int run() {
             << ")" << std::endl;
   server.run();
   signals.finish();
-  ctl.stop();  // the line in progress completes; the trace is flushed
+  ctl.stop();  // the trace is flushed, up to the last line the machine finished
   if (!o.quiet) {
     const Status st = ctl.status();
     std::cerr << "bezcam: simulate: stopped" << (signals.signal() ? " by signal " + std::to_string(signals.signal()) : "")

@@ -141,6 +141,7 @@ void SimController::open_locked(ConnId c, std::uint32_t token, std::uint32_t tot
   final_traced_ = false;
   line_no_ = lines_done_ = blocks_done_ = 0;
   machine_ = MachineState{};
+  reset_paced_locked();
   cv_.notify_all();
   char sid[16];
   std::snprintf(sid, sizeof sid, "%08x", session_);
@@ -158,6 +159,15 @@ void SimController::log_locked(const std::string& event) const {
 // writes the record into the trace (only it writes the trace).
 void SimController::raise_alarm_locked(Alarm a, long line, std::string id, std::string message) {
   if (state_ == State::alarm) return;  // the first alarm is the one that counts
+  // At machine pace the machine stops where it is: the lines it finished go
+  // into the trace before the alarm, the ones read ahead never run.
+  std::string done;
+  if (paced_locked()) {
+    const MachineView v = freeze_locked(done);
+    if (line == kMachineLine) line = v.reached;
+  } else if (line == kMachineLine) {
+    line = line_no_;
+  }
   state_ = State::alarm;
   // A controller in alarm stops the spindle and the coolant.
   machine_.spindle_on = false;
@@ -167,11 +177,21 @@ void SimController::raise_alarm_locked(Alarm a, long line, std::string id, std::
   alarm_text_ = (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + message;
   log_locked(std::string("alarm ") + to_string(a) + ": " + alarm_text_);
   final_traced_ = false;
-  pending_alarm_ = std::make_unique<Pending>(Pending{epoch_, trace_alarm(static_cast<int>(line), to_string(a), id, message)});
+  pending_alarm_ =
+      std::make_unique<Pending>(Pending{epoch_, done + trace_alarm(static_cast<int>(line), to_string(a), id, message)});
   cv_.notify_all();
 }
 
 Status SimController::status_locked(ConnId c) const {
+  // At machine pace, what the machine has done by now.
+  MachineState m = machine_;
+  long lines = lines_done_, blocks = blocks_done_;
+  if (paced_locked()) {
+    const MachineView v = view_locked(pace_now());
+    m = v.state;
+    lines = v.lines;
+    blocks = v.blocks;
+  }
   Status s;
   s.magic = kMagic;
   s.version = kProtocolVersion;
@@ -185,22 +205,22 @@ Status SimController::status_locked(ConnId c) const {
   s.ack_bytes = ack_bytes_;
   s.buffer_free = static_cast<std::uint16_t>(cfg_.buffer_bytes - buffered_locked());
   if (const auto it = last_reject_.find(c); it != last_reject_.end()) s.last_reject = it->second;
-  s.lines_executed = static_cast<std::uint32_t>(lines_done_);
-  s.blocks_executed = static_cast<std::uint32_t>(blocks_done_);
+  s.lines_executed = static_cast<std::uint32_t>(lines);
+  s.blocks_executed = static_cast<std::uint32_t>(blocks);
   s.program_crc = crc_.value();
-  for (int a = 0; a < 3; ++a) s.pos[a] = thousandths(machine_.pos[a]);
-  s.feed_tenths = static_cast<std::uint32_t>(std::clamp(std::round(machine_.feed * 10.0), 0.0, 4294967295.0));
-  s.spindle_rpm = static_cast<std::uint32_t>(std::clamp(std::round(machine_.spindle_rpm), 0.0, 4294967295.0));
-  s.flags = static_cast<std::uint16_t>((machine_.spindle_on ? flag::spindle_on : 0) |
-                                       (machine_.units == Units::inch ? flag::inch : 0) |
-                                       (machine_.absolute ? 0 : flag::incremental) |
-                                       (machine_.program_end ? flag::program_end : 0) |
+  for (int a = 0; a < 3; ++a) s.pos[a] = thousandths(m.pos[a]);
+  s.feed_tenths = static_cast<std::uint32_t>(std::clamp(std::round(m.feed * 10.0), 0.0, 4294967295.0));
+  s.spindle_rpm = static_cast<std::uint32_t>(std::clamp(std::round(m.spindle_rpm), 0.0, 4294967295.0));
+  s.flags = static_cast<std::uint16_t>((m.spindle_on ? flag::spindle_on : 0) |
+                                       (m.units == Units::inch ? flag::inch : 0) |
+                                       (m.absolute ? 0 : flag::incremental) |
+                                       (m.program_end ? flag::program_end : 0) |
                                        (owner_ != 0 ? flag::owner_attached : 0));
-  s.tool = static_cast<std::uint16_t>(std::clamp(machine_.tool, 0, 65535));
+  s.tool = static_cast<std::uint16_t>(std::clamp(m.tool, 0, 65535));
   // Register 34 (docs/modbus-register-map.md): 0-3 for G00-G03, the G
   // number x 10 for curve modes (G5.2 -> 52), 0xFFFF none.
-  const int code10 = static_cast<int>(machine_.motion);
-  s.motion = machine_.motion == ModalMotion::none ? std::uint16_t{0xFFFF}
+  const int code10 = static_cast<int>(m.motion);
+  s.motion = m.motion == ModalMotion::none ? std::uint16_t{0xFFFF}
                                                    : static_cast<std::uint16_t>(code10 <= 30 ? code10 / 10 : code10);
   s.connections = static_cast<std::uint16_t>(std::min<std::size_t>(connections_, 65535));
   s.duplicates = duplicates_;
@@ -349,7 +369,7 @@ Reject SimController::command_locked(ConnId c, std::span<const std::uint16_t> re
       const bool operator_stop = arg(0) == 0;
       if (!operator_stop && arg(0) != token_) return Reject::bad_token;
       if (active)
-        raise_alarm_locked(Alarm::aborted, line_no_, errc::link_aborted,
+        raise_alarm_locked(Alarm::aborted, kMachineLine, errc::link_aborted,
                            (operator_stop ? "the operator stopped the transfer after " : "the sender aborted the transfer after ") +
                                std::to_string(ack_bytes_) + " bytes");
       return Reject::none;
@@ -544,13 +564,11 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
   if (cfg_.exec_delay.count() > 0) std::this_thread::sleep_for(cfg_.exec_delay);
   const MachineState before = interp.state();
   std::string text;
-  std::size_t nblocks = 0;
+  std::vector<MotionBlock> blocks;
   std::optional<std::pair<Alarm, std::string>> failed;
   std::string id;
   try {
-    const auto blocks = interp.feed_line(line, static_cast<int>(no));
-    nblocks = blocks.size();
-    if (pace_) pace_->add(blocks, before, interp.state(), static_cast<int>(no));
+    blocks = interp.feed_line(line, static_cast<int>(no));
     for (const auto& b : blocks) text += trace_block(b);
     text += trace_state(static_cast<int>(no), before, interp.state());
   } catch (const Error& e) {
@@ -561,6 +579,13 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
     failed.emplace(Alarm::gcode, std::string("internal error: ") + e.what());
   }
   if (failed) text += trace_alarm(static_cast<int>(no), to_string(failed->first), id, failed->second);
+  // pace_ is the executor's own: read here without the lock.
+  if (pace_) {
+    lk.lock();
+    read_ahead_locked(interp, cur_epoch, no, before, blocks, failed, std::move(text));
+    return;
+  }
+  const std::size_t nblocks = blocks.size();
   emit_trace(text, false);
   lk.lock();
   if (epoch_ != cur_epoch) return;  // the program was replaced meanwhile
@@ -622,10 +647,6 @@ void SimController::finish_program(std::unique_lock<std::mutex>& lk, GcodeInterp
   cv_.notify_all();
 }
 
-double SimController::pace_now() const {
-  return std::chrono::duration<double>(Clock::now() - pace_origin_).count() * cfg_.time_scale;
-}
-
 void SimController::exec_loop() {
   std::unique_lock lk(m_);
   std::uint64_t cur_epoch = 0;
@@ -653,7 +674,7 @@ void SimController::exec_loop() {
       interp = std::make_unique<GcodeInterpreter>(&cfg_.profile);
       pace_.reset();
       if (cfg_.time_scale > 0 && cfg_.profile.motion) pace_ = std::make_unique<MachinePace>(*cfg_.profile.motion);
-      pace_started_ = pace_stalled_ = false;
+      reset_paced_locked();
       starved_ms_ = stalls_ = 0;
       lk.unlock();
       emit_trace(trace_header(cfg_.profile.name), true);
@@ -663,61 +684,50 @@ void SimController::exec_loop() {
     const bool running = state_ == State::receiving || state_ == State::finishing;
     std::optional<Clock::time_point> machine_wake;  // machine pace: when the machine needs work
     if (running && interp) {
-      // 3. Drip feed: execute every complete line as soon as it is in the
+      // 3. At machine pace, the lines the machine has finished go into the
+      // trace.
+      if (pace_ && retire_step(lk)) continue;
+      // 3a. Drip feed: execute every complete line as soon as it is in the
       // buffer; after COMMIT the last line needs no newline. At machine
-      // pace, only while the look-ahead window has room.
+      // pace, only while the look-ahead window has room, and none after a
+      // refused line.
       const auto nl = buf_.find('\n', head_);
       const bool line_ready = nl != std::string::npos || (state_ == State::finishing && buffered_locked() > 0);
-      if (line_ready && (!pace_ || !pace_->window_full())) {
-        if (pace_) {
-          if (!pace_started_) pace_started_ = true, pace_origin_ = Clock::now();
-          if (pace_stalled_) {
-            // The machine stood still from stall_from_ until now.
-            const double now = pace_now();
-            const double ms = std::max(0.0, now - stall_from_) * 1000;
-            starved_ms_ += static_cast<std::uint32_t>(std::lround(ms));
-            ++stalls_;
-            pace_->idle_until(now);
-            pace_stalled_ = false;
-            log_locked("machine starved " + std::to_string(std::lround(ms)) + " ms before line " +
-                       std::to_string(line_no_ + 1) + ": the buffer ran dry");
-          }
-        }
+      if (line_ready && !failure_ && (!pace_ || !pace_->window_full())) {
+        if (pace_) machine_fed_locked();
         execute_line(lk, *interp, cur_epoch, nl);
         continue;
       }
-      if (pace_ && pace_started_) {
-        // 3b. The machine moves through what it was given; when it needs
-        // more, the planner commits from the window (all of it when no more
-        // program is in reach); when there is nothing, it stands: a stall.
-        const double now = pace_now();
-        if (pace_->committed_until() <= now) {
-          if (pace_->pending() > 0) {
-            pace_->commit(!line_ready);
-            continue;
-          }
-          if (state_ == State::receiving && !pace_stalled_) {
-            pace_stalled_ = true;
-            stall_from_ = pace_->committed_until();
-          }
-        } else {
-          machine_wake = pace_origin_ + std::chrono::duration_cast<Clock::duration>(
-                                            std::chrono::duration<double>(pace_->committed_until() / cfg_.time_scale));
-        }
-      }
-      // 4. End of program: every byte confirmed and executed (and, at
-      // machine pace, the machine at rest at its end).
-      if (state_ == State::finishing && !line_ready && (!machine_wake || !pace_)) {
-        if (!pace_ || pace_->pending() == 0) {
+      // 3b. At machine pace, the machine moves through what it was given.
+      if (pace_ && machine_step(lk, cur_epoch, line_ready, machine_wake)) continue;
+      // 4. End of program: every byte confirmed and executed (at machine
+      // pace: read, then run by the machine, which is at rest at its end).
+      if (state_ == State::finishing && !line_ready && !failure_) {
+        if (!pace_) {
           finish_program(lk, *interp, cur_epoch);
           continue;
         }
+        if (!interp_finished_) {
+          finish_interpreter(lk, *interp, cur_epoch);
+          continue;
+        }
+        if (!machine_wake && pace_->pending() == 0) {
+          finish_paced(lk, *interp, cur_epoch);
+          continue;
+        }
       }
-      // 5. A full buffer with no line end can never make progress.
-      if (!line_ready && buffered_locked() >= cfg_.buffer_bytes) {
-        raise_alarm_locked(Alarm::line_too_long, line_no_ + 1, errc::sim_line_too_long,
-                           "the line is longer than the receive buffer (" + std::to_string(cfg_.buffer_bytes) +
-                               " bytes)");
+      // 5. A full buffer with no line end can never make progress (at
+      // machine pace, once the machine has run what it has).
+      if (!line_ready && !failure_ && buffered_locked() >= cfg_.buffer_bytes) {
+        const std::string message =
+            "the line is longer than the receive buffer (" + std::to_string(cfg_.buffer_bytes) + " bytes)";
+        if (pace_) {
+          failure_ = Failure{Alarm::line_too_long, line_no_ + 1, "line " + std::to_string(line_no_ + 1) + ": " + message,
+                             trace_alarm(static_cast<int>(line_no_ + 1), to_string(Alarm::line_too_long),
+                                         errc::sim_line_too_long.str(), message)};
+        } else {
+          raise_alarm_locked(Alarm::line_too_long, line_no_ + 1, errc::sim_line_too_long, message);
+        }
         continue;
       }
     }
@@ -726,7 +736,7 @@ void SimController::exec_loop() {
     if (state_ == State::receiving) {
       const auto deadline = owner_seen_ + cfg_.session_timeout;
       if (Clock::now() >= deadline) {
-        raise_alarm_locked(Alarm::sender_lost, line_no_, errc::link_sender_lost,
+        raise_alarm_locked(Alarm::sender_lost, kMachineLine, errc::link_sender_lost,
                            "the sender was silent for " + std::to_string(cfg_.session_timeout.count()) +
                                " ms; the program is incomplete");
         continue;
@@ -746,7 +756,9 @@ void SimController::exec_loop() {
     pending_alarm_.reset();
     final_traced_ = true;
   } else if (interp && (state_ == State::receiving || state_ == State::finishing)) {
-    tail = "stopped after line " + std::to_string(line_no_) + "\n";
+    long last = line_no_;
+    if (pace_ && pace_started_) last = freeze_locked(tail).done_line;  // the machine stops where it is
+    tail += "stopped after line " + std::to_string(last) + "\n";
   }
   lk.unlock();
   emit_trace(tail, false);

@@ -11,10 +11,20 @@
 /// window is committed with a stop at its end, and if the machine then
 /// stands waiting for data, that is a stall (starvation).
 ///
+/// What the machine has done at a given time (progress()) comes from the
+/// committed plans: the blocks and pauses finished, the first program line
+/// whose work is not, and the position on the planned path. Interpreted
+/// work is not done work: the controller reports progress(), never what
+/// the interpreter has read.
+///
 /// Machine time is in seconds from the program's first line; the caller
 /// maps it to wall-clock time with its time scale. No clock inside: tests
 /// drive it with the times they choose.
+#include <climits>
 #include <cstddef>
+#include <deque>
+#include <limits>
+#include <memory>
 #include <vector>
 
 #include "bezcam/cam/planner.hpp"
@@ -45,7 +55,42 @@ class MachinePace {
     if (t > until_) until_ = t;
   }
 
+  /// What the machine has done by machine time `t`.
+  struct Progress {
+    /// The first program line whose work (a block, a pause) is interpreted
+    /// but not finished at `t`: committed and still running, or not yet
+    /// committed. A block spanning lines counts from its first line.
+    /// INT_MAX when every interpreted block and pause is finished.
+    int open_line = INT_MAX;
+    /// Blocks finished since the program's start.
+    std::size_t blocks_done = 0;
+    /// Where the machine is on the planned path (program units).
+    Vec3 pos{0, 0, 0};
+  };
+  /// `t` must not be before the last forget().
+  Progress progress(double t) const;
+  /// Drops what is finished by machine time `t` (progress() at `t` and
+  /// later gives the same answers).
+  void forget(double t);
+  /// When the first committed piece of work not forgotten is finished
+  /// (infinity when there is none): progress() changes no sooner.
+  double next_end() const { return items_.empty() ? std::numeric_limits<double>::infinity() : items_.front().end; }
+
  private:
+  // One piece of committed work, in execution order.
+  struct Item {
+    int line = 0;
+    double end = 0;  // machine time it is finished
+    bool block = false;
+  };
+  // One committed plan: its committed segments (a prefix) run from t0.
+  struct Window {
+    double t0 = 0, t1 = 0;
+    std::shared_ptr<const MotionPlan> plan;
+    std::size_t segments = 0;
+  };
+  Vec3 position(double t) const;
+
   const MotionModel& model_;
   std::size_t look_;    // the controller's look-ahead, blocks
   std::size_t window_;  // blocks interpreted ahead: twice the look-ahead
@@ -53,6 +98,10 @@ class MachinePace {
   Vec3 start_{0, 0, 0};  // where the machine left the last committed block
   double speed_ = 0;     // and at what speed
   double until_ = 0;
+  std::deque<Item> items_;        // committed, not yet forgotten
+  std::size_t blocks_forgotten_ = 0;
+  std::deque<Window> windows_;    // committed plans not yet forgotten
+  Vec3 rest_{0, 0, 0};            // where the forgotten windows left the machine
 };
 
 }  // namespace bezcam::sim

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -63,7 +64,9 @@ struct ControllerConfig {
   /// motion model at this multiple of real time (1: real time), the
   /// program draining from the buffer only as the machine moves through
   /// it, and counts the stalls when the buffer runs dry mid-program
-  /// (status registers starved_ms and stalls, the operator's log). 0 (the
+  /// (status registers starved_ms and stalls, the operator's log). The
+  /// executor reads ahead of the machine (its look-ahead window); the
+  /// status, the trace, an alarm's line and DONE follow the machine. 0 (the
   /// default, and `--time-scale max`): as fast as the CPU allows. Needs a
   /// profile with a motion model.
   double time_scale = 0;
@@ -137,8 +140,9 @@ class SimController {
   /// Waits until the program is DONE or in ALARM and the trace holds its
   /// final record; false after `timeout`.
   bool wait_final(std::chrono::milliseconds timeout) const;
-  /// Stops the executor after the line in progress; the trace is flushed.
-  /// Idempotent.
+  /// Stops the executor after the line in progress (at machine pace the
+  /// machine stops where it is, and the trace ends with the last line it
+  /// finished); the trace is flushed. Idempotent.
   void stop();
 
  private:
@@ -149,7 +153,10 @@ class SimController {
   Reject apply_chunk_locked(ConnId c, std::uint32_t session, std::uint32_t seq, std::string_view payload,
                             std::uint32_t crc);
   void open_locked(ConnId c, std::uint32_t token, std::uint32_t total);
+  /// Stops the program at once with alarm `a` at `line` (kMachineLine:
+  /// the line the machine had reached).
   void raise_alarm_locked(Alarm a, long line, std::string id, std::string message);
+  static constexpr long kMachineLine = -1;
   std::uint32_t next_session_locked();
   std::size_t buffered_locked() const { return buf_.size() - head_; }
   Status status_locked(ConnId c) const;
@@ -159,6 +166,12 @@ class SimController {
   void execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpreter& interp, std::uint64_t cur_epoch,
                     std::size_t nl);
   void finish_program(std::unique_lock<std::mutex>& lk, GcodeInterpreter& interp, std::uint64_t cur_epoch);
+  // Machine pace: the end of the program in two steps (the interpreter's
+  // last blocks go to the machine, then DONE once it has run them), and a
+  // refused line raised once the machine has run everything before it.
+  void finish_interpreter(std::unique_lock<std::mutex>& lk, GcodeInterpreter& interp, std::uint64_t cur_epoch);
+  void finish_paced(std::unique_lock<std::mutex>& lk, const GcodeInterpreter& interp, std::uint64_t cur_epoch);
+  void raise_failure(std::unique_lock<std::mutex>& lk, std::uint64_t cur_epoch);
 
   ControllerConfig cfg_;
   mutable std::mutex m_;
@@ -202,6 +215,57 @@ class SimController {
   double stall_from_ = 0;  // machine time the machine ran dry
   std::uint32_t starved_ms_ = 0, stalls_ = 0;
   double pace_now() const;  // machine time now
+  // At machine pace the interpreter reads ahead of the machine; what is
+  // reported (status registers, trace, an alarm's line, DONE) is what the
+  // machine has done. The lines read and not yet done, in order:
+  struct Ahead {
+    long line = 0;
+    bool counts = true;   // a program line (false: the blocks the interpreter's finish() released)
+    MachineState after;   // the state once it is executed
+    std::string trace;    // its trace records
+  };
+  std::deque<Ahead> ahead_;
+  long settled_ = 0;          // every block of the lines up to here has been read
+  long retired_settled_ = -1; // settled_ when lines were last retired
+  long last_block_line_ = 0;  // the line of the last block read
+  // A line the executor refused (or could not read) at machine pace: the
+  // alarm is raised when the machine has run everything before it.
+  struct Failure {
+    Alarm alarm = Alarm::none;
+    long line = 0;
+    std::string text;   // the alarm's text ("line N: ...")
+    std::string trace;  // its trace record
+  };
+  std::optional<Failure> failure_;
+  bool interp_finished_ = false;  // the interpreter's finish() was run
+  // What the machine has done at machine time t.
+  struct MachineView {
+    MachineState state;  // modal state of the line in progress, position on the planned path
+    long lines = 0, blocks = 0;
+    long done_line = 0;  // every line up to here is done
+    long reached = 0;    // the line in progress, or done_line when the machine is at rest
+  };
+  bool paced_locked() const;
+  void reset_paced_locked();
+  MachineView view_locked(double t) const;
+  // Moves the lines done by machine time t (all of them: `all`) out of
+  // ahead_ into the retired state; returns their trace records.
+  std::string retire_locked(double t, bool all);
+  // The machine stops where it is: what it finished is retired (its
+  // trace records into `trace`), what was read ahead dropped.
+  MachineView freeze_locked(std::string& trace);
+  // Steps of the executor at machine pace; true when it acted (the loop
+  // starts over). retire_step: finished lines traced; machine_step: the
+  // machine takes work from the window, stalls, or reaches a refused line
+  // (`wake`: when it needs work next).
+  bool retire_step(std::unique_lock<std::mutex>& lk);
+  bool machine_step(std::unique_lock<std::mutex>& lk, std::uint64_t cur_epoch, bool line_ready,
+                    std::optional<std::chrono::steady_clock::time_point>& wake);
+  // A line is about to be read: the machine starts, or ends a stall.
+  void machine_fed_locked();
+  void read_ahead_locked(const GcodeInterpreter& interp, std::uint64_t cur_epoch, long no, const MachineState& before,
+                         const std::vector<MotionBlock>& blocks,
+                         const std::optional<std::pair<Alarm, std::string>>& failed, std::string text);
 
   std::thread exec_;
 };
