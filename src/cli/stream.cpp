@@ -7,6 +7,7 @@
 // status per docs/cli.md: 0 the controller confirmed and executed the whole
 // program, 2 bad file or options, 3 connection failure, 4 the controller
 // refused or lost the program.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -207,15 +208,20 @@ void preflight(const std::string& program, const Endpoint& to) {
                        list);
 }
 
+// The profile a controller enforces, when it is known here.
+std::optional<MachineProfile> controller_profile(const ControllerReport& r) {
+  try {
+    if (!r.machine.empty()) return load_profile_option(r.machine);
+  } catch (const Error&) {
+  }
+  return std::nullopt;
+}
+
 // --from-line: the resume is planned for the profile the controller
 // enforces (its dialect, travel and feed limits, safe Z and plunge feed).
 std::string resume_for_controller(std::string program, const Endpoint& to) {
   const ControllerReport r = controller_status(to, ms(o.timeout));
-  std::optional<MachineProfile> m;
-  try {
-    if (!r.machine.empty()) m = load_profile_option(r.machine);
-  } catch (const Error&) {
-  }
+  const std::optional<MachineProfile> m = controller_profile(r);
   if (!m && !o.quiet)
     std::cerr << "bezcam: warning: the controller enforces profile \"" << r.machine
               << "\", which is not known here: the resume is planned without its limits (give --safe-z and "
@@ -223,12 +229,66 @@ std::string resume_for_controller(std::string program, const Endpoint& to) {
   return resume.apply(std::move(program), o.file, m ? &*m : nullptr, o.quiet, "stream");
 }
 
-// A resumed program's alarm names the line of the file, not of the program sent.
-[[noreturn]] void throw_in_file_lines(const Error& e) {
+// The controller stopped the program mid-way (Ctrl-C here, an operator's
+// stop, a lost sender): where the machine stopped, in the file's
+// numbering, and the --from-line that goes on from there: the first line
+// after the last one the machine finished that holds a block. "" when the
+// controller does not say it stopped so.
+std::string where_to_resume(const std::string& file_text, const Endpoint& to) {
+  ControllerReport r;
+  try {
+    r = controller_status(to, ms(o.timeout));
+  } catch (const Error&) {
+    return {};  // the controller cannot say where it stopped
+  }
+  if (r.status.state != State::alarm || (r.status.alarm != Alarm::aborted && r.status.alarm != Alarm::sender_lost))
+    return {};
+  const long executed = r.status.lines_executed;
+  long next = executed + 1;  // in the file's numbering
+  std::string where = "the machine stopped after line " + std::to_string(executed) + " of " + o.file;
+  if (const auto& plan = resume.plan()) {
+    if (executed <= plan->preamble_lines) {
+      next = plan->start_line;
+      where = "the machine stopped in the resume preamble, before line " + std::to_string(next) + " of " + o.file;
+    } else {
+      next = plan->original_line(executed) + 1;
+      where = "the machine stopped after line " + std::to_string(next - 1) + " of " + o.file;
+    }
+  }
+  const std::optional<MachineProfile> m = controller_profile(r);
+  const long total = static_cast<long>(std::count(file_text.begin(), file_text.end(), '\n')) +
+                     (file_text.empty() || file_text.back() == '\n' ? 0 : 1);
+  const auto resume_at = [&](long n) {
+    return where + "; resume with --from-line " + std::to_string(n) + " (bezcam stream " + o.file + " --to " +
+           to.str() + " --from-line " + std::to_string(n) + ")";
+  };
+  // Lines without a block (comments, blanks) cannot begin a resume: the
+  // next one that can is named, as the resume would plan it.
+  for (long n = next; n <= total; ++n) {
+    if (!m) return resume_at(n);
+    try {
+      plan_resume(file_text, &*m, static_cast<int>(n));
+    } catch (const InputError& e) {
+      if (e.id() == errc::resume_no_code) continue;
+      if (e.id() == errc::resume_after_end) break;
+      // The safe height and plunge feed are the resume's to give: the line is good.
+      if (e.id() != errc::resume_setting)
+        return where + "; it cannot be resumed from line " + std::to_string(n) + ": " + e.message();
+    }
+    return resume_at(n);
+  }
+  return where + "; no block of the program is left to run";
+}
+
+// A resumed program's alarm names the line of the file, not of the program
+// sent; `more` is added to the message.
+[[noreturn]] void throw_in_file_lines(const Error& e, const std::string& more) {
+  const std::string message = more.empty() ? e.message() : e.message() + "; " + more;
   if (resume.plan() && e.id() == errc::controller_alarm && e.where().rfind("line ", 0) == 0) {
     const long line = std::atol(e.where().c_str() + 5);
-    if (line > 0) throw ControllerError(e.id(), resume.place_of(line), e.message());
+    if (line > 0) throw ControllerError(e.id(), resume.place_of(line), message);
   }
+  if (!more.empty()) throw ControllerError(e.id(), e.where(), message);
   throw;  // called inside the handler: the error as caught
 }
 
@@ -248,7 +308,8 @@ int run() {
     return 0;
   }
   if (o.file.empty()) throw InputError(errc::usage_stream, Place::at_option("FILE"), "give the program to send (or --abort)");
-  std::string program = read_file(o.file);
+  const std::string file_text = read_file(o.file);
+  std::string program = file_text;
   if (resume.active()) program = resume_for_controller(std::move(program), to);
   if (!o.no_preflight) preflight(program, to);
   Display::Style style = Display::Style::lines;
@@ -275,8 +336,11 @@ int run() {
     r = stream_program(program, to, opt);
   } catch (const Error& e) {
     display.clear();
-    if (e.id() != errc::link_cancelled) throw_in_file_lines(e);
+    if (e.id() != errc::link_cancelled)
+      throw_in_file_lines(e, e.id() == errc::controller_alarm ? where_to_resume(file_text, to) : std::string());
     std::cerr << "bezcam: stream: " << e.what() << "\n";
+    if (const std::string where = where_to_resume(file_text, to); !where.empty())
+      std::cerr << "bezcam: stream: " << where << "\n";
     return 130;  // as a shell reports a program stopped by Ctrl-C
   } catch (...) {
     display.clear();

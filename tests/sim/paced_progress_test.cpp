@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/gcode/resume.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/sim/sim_controller.hpp"
@@ -336,4 +337,57 @@ TEST(PacedProgress, TheTraceAtMachinePaceIsTheTraceAsFastAsPossible) {
               0u)
         << done;
   }
+}
+
+// `bezcam stream` stopped with Ctrl-C says where the machine stopped and
+// the --from-line that goes on from there; resumed from it, nothing of the
+// program is skipped or run twice: the stopped run's trace holds the lines
+// before it, the resumed run's the lines from it on, together the whole
+// program's.
+TEST(PacedProgress, CtrlCPrintsTheFromLineThatGoesOnWhereTheMachineStopped) {
+  const MachineProfile m = load_machine_profile("generic");
+  test::TempDir dir;
+  const auto file = dir / "arcs.nc";
+  const std::string prog = arcs_program(100);
+  test::write_file(file, prog);
+  const auto trace_file = dir / "trace.txt";
+  test::SimProcess sim(dir, {"--machine", "generic", "--time-scale", "50", "--trace", trace_file.string(), "-q"});
+  const std::string to = "127.0.0.1:" + std::to_string(sim.port());
+  test::Child stream({BEZCAM_EXE, "stream", file.string(), "--to", to, "--progress", "off"}, dir / "stream-err.txt");
+  for (;;) {
+    const ControllerReport r = controller_status(Endpoint{"127.0.0.1", sim.port()}, std::chrono::milliseconds(5000));
+    ASSERT_NE(r.status.state, State::done);
+    if (r.status.lines_executed >= 40) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  stream.signal(SIGINT);
+  EXPECT_EQ(stream.wait(), 130);
+  const std::string err = stream.stderr_text();
+  const ControllerReport after = controller_status(Endpoint{"127.0.0.1", sim.port()}, std::chrono::milliseconds(5000));
+  const long executed = after.status.lines_executed;
+  ASSERT_GE(executed, 40);
+  ASSERT_LT(executed, 108);
+  const long next = executed + 1;  // every line of the cut holds a block
+  EXPECT_NE(err.find("the machine stopped after line " + std::to_string(executed) + " of " + file.string() +
+                     "; resume with --from-line " + std::to_string(next) + " (bezcam stream " + file.string() +
+                     " --to " + to + " --from-line " + std::to_string(next) + ")"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(sim.stop(), 0);
+  const std::string stopped = test::slurp(trace_file);
+
+  // Resumed from there on a controller as fast as possible.
+  const auto trace2 = dir / "trace2.txt";
+  test::SimProcess sim2(dir, {"--machine", "generic", "--trace", trace2.string(), "-q"});
+  const auto r = test::run_bezcam({"stream", file.string(), "--to", "127.0.0.1:" + std::to_string(sim2.port()),
+                                   "--progress", "off", "--from-line", std::to_string(next)},
+                                  dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(sim2.stop(), 0);
+  const ResumePlan plan = plan_resume(prog, &m, static_cast<int>(next));
+  ASSERT_EQ(plan.start_line, next);
+  const std::string full = immediate_trace(prog, m);
+  EXPECT_EQ(lines_of(stopped, 1, executed), lines_of(full, 1, executed));
+  EXPECT_EQ(lines_of(test::slurp(trace2), plan.preamble_lines + 1, LONG_MAX, plan.line_offset()),
+            lines_of(full, next, LONG_MAX));
 }
