@@ -140,7 +140,20 @@ def run():
         cmd.auto(linuxcnc.AUTO_RUN, 0)
         until(lambda: not finished(), 10, "program start")
         note("running")
-        until(finished, TIMEOUT, "program end")
+        # the motion queue and the interpreter at every look (for starvation)
+        polls = report["polls"] = []
+        end = time.monotonic() + TIMEOUT
+        while True:
+            stat.poll()
+            polls.append([round(time.monotonic() - t0, 4), stat.queue, stat.read_line,
+                          stat.motion_line, stat.interp_state, int(stat.queue_full)])
+            if finished():
+                break
+            if take_errors():
+                raise RuntimeError("LinuxCNC error while waiting for program end")
+            if time.monotonic() > end:
+                raise RuntimeError("no program end within %.0f s" % TIMEOUT)
+            time.sleep(POLL)
         note("finished")
         report["final_position"] = list(stat.actual_position[:3])
         # a few samples at rest after the end, counted on the servo thread's

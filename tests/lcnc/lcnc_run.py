@@ -132,8 +132,8 @@ def ini_text(m, driver, hal):
 HAL = """\
 loadrt [KINS]KINEMATICS
 loadrt [EMCMOT]EMCMOT servo_period_nsec=[EMCMOT]SERVO_PERIOD num_joints=[KINS]JOINTS
-# columns: x y z current-vel program-line motion-type
-loadrt sampler depth=%d cfg=ffffss
+# columns: x y z current-vel program-line motion-type servo-period
+loadrt sampler depth=%d cfg=ffffssu
 addf motion-command-handler servo-thread
 addf motion-controller servo-thread
 addf sampler.0 servo-thread
@@ -153,6 +153,7 @@ net sz axis.z.pos-cmd => sampler.0.pin.2
 net sv motion.current-vel => sampler.0.pin.3
 net sl motion.program-line => sampler.0.pin.4
 net st motion.motion-type => sampler.0.pin.5
+net sp motion.servo.last-period => sampler.0.pin.6
 setp sampler.0.enable 0
 """
 
@@ -245,14 +246,26 @@ def read_samples(path):
     with open(path) as f:
         for line in f:
             p = line.split()
-            if len(p) == 7:
+            if len(p) == 8:
                 rows.append((int(p[0]), float(p[1]), float(p[2]), float(p[3]),
-                             float(p[4]), int(p[5]), int(p[6])))
+                             float(p[4]), int(p[5]), int(p[6]), int(p[7])))
     return rows
 
 
+def late_invocations(rows, first, last):
+    """Servo-thread invocations inside the cycle window that came late: the
+    interval since the one before (motion.servo.last-period, in CPU clocks)
+    more than 1.5 times the run's median. Returns (how many, periods missed)."""
+    periods = [r[7] for r in rows if len(r) > 7 and r[7] > 0]
+    if len(periods) < 3:
+        return 0, 0
+    med = sorted(periods)[len(periods) // 2]
+    late = [r[7] / med for r in rows[first + 1:last + 1] if len(r) > 7 and r[7] > 1.5 * med]
+    return len(late), int(sum(round(x) - 1 for x in late))
+
+
 def analyse(rows, period):
-    """Cycle window and split. rows: (n, x, y, z, v, line, type)."""
+    """Cycle window and split. rows: (n, x, y, z, v, line, type[, servo period])."""
     moving = [i for i in range(1, len(rows)) if rows[i][1:4] != rows[i - 1][1:4]]
     if not moving:
         raise RuntimeError("the program did not move")
@@ -275,7 +288,9 @@ def analyse(rows, period):
         peak_v[axis] = round(max(abs(p[i + 1] - p[i]) for i in range(len(p) - 1)) / period, 3)
         peak_a[axis] = round(max(abs(p[i + 1] - 2 * p[i] + p[i - 1])
                                  for i in range(1, len(p) - 1)) / period ** 2, 1)
+    late, missed = late_invocations(rows, first, last)
     return {"cycle_time_s": round((last - first) * period, 6),
+            "late_servo_invocations": late, "missed_servo_periods": missed,
             "axis_peak_velocity_mm_s": peak_v, "axis_peak_acceleration_mm_s2": peak_a,
             "feed_time_s": round(split["feed"] * period, 6),
             "rapid_time_s": round(split["rapid"] * period, 6),
@@ -338,6 +353,11 @@ def run(program, motion, outdir=None, timeout=300):
             raise RuntimeError("the samples end at %s, LinuxCNC at %s"
                                % (rows[-1][1:4] if rows else None, end))
         res = analyse(rows, period)
+        # the motion queue's low-water mark while the machine moved and the
+        # program was still being read (a queue that runs low starves the
+        # planner's look-ahead)
+        moving = [q for _, q, read, line, _, _ in drv.get("polls", []) if line > 0 and read > 0]
+        res["queue_low"] = min(moving) if moving else None
         res.update(program=program, period_s=period, mdi=mdi, g64_settings=drv.get("settings"),
                    wall_s=round(wall, 3), linuxcnc_messages=drv.get("messages", []))
         if outdir:

@@ -2,6 +2,8 @@
 """The anchor's own logic, without LinuxCNC: the profile checks, the INI it
 writes, how the cycle window is cut from samples, the limits check.
 (ctest LinuxCNC.AnchorHarness; the runs themselves are LinuxCNC.CycleTimeAnchor.)"""
+import contextlib
+import io
 import json
 import os
 import sys
@@ -116,6 +118,118 @@ class Window(unittest.TestCase):
             lcnc_run.analyse(rows_from([0, 0, 0.001, 0.002]), 0.001)
         with self.assertRaisesRegex(RuntimeError, "did not move"):
             lcnc_run.analyse(rows_from([0, 0, 0]), 0.001)
+
+
+class LateServo(unittest.TestCase):
+    def test_late_invocations_and_the_periods_they_missed(self):
+        rows = [r + (1000,) for r in rows_from([0, 0, 0.001, 0.002, 0.003, 0.004, 0.004])]
+        rows[3] = rows[3][:7] + (3000,)  # two periods missed before sample 3
+        rows[4] = rows[4][:7] + (1400,)  # late, but less than 1.5 periods: on time
+        res = lcnc_run.analyse(rows, 0.001)
+        self.assertEqual(res["late_servo_invocations"], 1)
+        self.assertEqual(res["missed_servo_periods"], 2)
+
+    def test_samples_without_the_servo_period_count_none(self):
+        res = lcnc_run.analyse(rows_from([0, 0, 0.001, 0.002, 0.002]), 0.001)
+        self.assertEqual(res["missed_servo_periods"], 0)
+
+
+class Repeat(unittest.TestCase):
+    """anchor.measure(): a program runs until two runs agree."""
+
+    def runs(self, periods):
+        it = iter(periods)
+        self.count = 0
+
+        def run_once():
+            self.count += 1
+            p = next(it)
+            return {"periods": p, "cycle_time_s": p / 1000.0}
+        return run_once
+
+    def test_two_runs_that_agree_are_enough(self):
+        kept, runs = anchor.measure(self.runs([1233, 1231]))
+        self.assertEqual((kept["periods"], len(runs)), (1231, 2))
+
+    def test_a_disturbed_run_is_repeated_and_left_out(self):
+        # the busy machine of the issue: a run 10 % slow
+        kept, runs = anchor.measure(self.runs([1354, 1231, 1232, 1500]))
+        self.assertEqual((kept["periods"], len(runs)), (1231, 3))
+
+    def test_runs_that_never_agree_give_no_time(self):
+        kept, runs = anchor.measure(self.runs([1231, 1300, 1400, 1500, 1231]))
+        self.assertIsNone(kept)
+        self.assertEqual(len(runs), anchor.MAX_RUNS)
+
+
+FAKE_BEZCAM = """#!/usr/bin/python3
+import json, sys
+a = sys.argv
+with open(a[a.index("--report") + 1], "w") as f:
+    json.dump({"cycle_time_s": %r}, f)
+"""
+
+
+class Check(unittest.TestCase):
+    """anchor.py --check: bezcam against the reference, no LinuxCNC."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.profile = profile_with(self.tmp.name, MOTION)
+        self.program = os.path.join(self.tmp.name, "square-F3000.ngc")
+        with open(self.program, "w") as f:
+            f.write("G0 X0 Y0 Z0\nG1 X10 F3000\nM2\n")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def bezcam(self, cycle):
+        path = os.path.join(self.tmp.name, "bezcam")
+        with open(path, "w") as f:
+            f.write(FAKE_BEZCAM % cycle)
+        os.chmod(path, 0o755)
+        return path
+
+    def reference(self, cycle, sha=None, motion=MOTION):
+        path = os.path.join(self.tmp.name, "reference.tsv")
+        anchor.write_reference(path, "2.9-test", anchor.fingerprint(motion), {
+            "square-F3000": {"program_sha256": sha or anchor.program_fingerprint(self.program),
+                             "cycle_time_s": cycle, "feed_time_s": cycle, "rapid_time_s": 0,
+                             "other_time_s": 0}})
+        return path
+
+    def check(self, bezcam_s, reference):
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            rc = anchor.main(["--check", "--bezcam", self.bezcam(bezcam_s), "--profile",
+                              self.profile, "--reference", reference, "--programs", self.tmp.name])
+        return rc, out.getvalue()
+
+    def test_the_reference_reads_back(self):
+        version, motion_fp, rows = anchor.read_reference(self.reference(3.442))
+        self.assertEqual(version, "2.9-test")
+        self.assertEqual(motion_fp, anchor.fingerprint(MOTION))
+        self.assertEqual(rows["square-F3000"]["cycle_time_s"], 3.442)
+
+    def test_within_five_per_cent_passes(self):
+        rc, out = self.check(3.40, self.reference(3.442))
+        self.assertEqual(rc, 0, out)
+        self.assertIn("1 of 1 within 2 %", out)
+
+    def test_off_by_more_fails(self):
+        rc, out = self.check(3.0, self.reference(3.442))
+        self.assertEqual(rc, 1, out)
+        self.assertIn("OFF BY MORE THAN 5 %", out)
+
+    def test_a_program_not_the_one_linuxcnc_timed_fails(self):
+        rc, out = self.check(3.442, self.reference(3.442, sha="0123456789abcdef"))
+        self.assertEqual(rc, 1, out)
+        self.assertIn("not the one LinuxCNC timed", out)
+
+    def test_another_motion_object_fails(self):
+        rc, out = self.check(3.442, self.reference(3.442, motion=dict(MOTION, lookahead_blocks=40)))
+        self.assertEqual(rc, 1, out)
+        self.assertIn("another motion object", out)
 
 
 class Limits(unittest.TestCase):
