@@ -227,7 +227,7 @@ inline constexpr ErrorId job_missing{"job.missing"};
 inline constexpr ErrorId job_not_finite{"job.not-finite"};
 /// A number that must be > 0 is not.
 inline constexpr ErrorId job_not_positive{"job.not-positive"};
-/// An unknown key, refused by the strict reading (--strict).
+/// An unknown key (not a likely typo), refused: it would otherwise be ignored.
 inline constexpr ErrorId job_unknown_key{"job.unknown-key"};
 /// A number is outside its range.
 inline constexpr ErrorId job_range{"job.range"};
@@ -413,6 +413,8 @@ inline constexpr ErrorId usage_output{"usage.output"};
 inline constexpr ErrorId usage_preview{"usage.preview"};
 /// The report would overwrite the program.
 inline constexpr ErrorId usage_report{"usage.report"};
+/// A --set names a key the job does not have.
+inline constexpr ErrorId usage_setting{"usage.setting"};
 /// stream: a program file with --abort, or none without it.
 inline constexpr ErrorId usage_stream{"usage.stream"};
 

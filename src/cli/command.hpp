@@ -74,10 +74,9 @@ void apply_tool_diameters(MachineProfile& m, const std::vector<std::string>& val
 /// "generic"; an unknown name from the file is refused naming its key.
 MachineProfile resolve_profile(const Job& job, const std::string& cli_machine);
 
-/// Reads a job file (`--strict`: every unknown key refused). When the job
-/// is refused, the warnings found before are printed first: a misspelt key
-/// is never hidden by another error.
-Job read_job(const std::string& path, bool strict);
+/// Reads a job file. When the job is refused, the warnings found before
+/// are printed first: a refusal never hides a warning.
+Job read_job(const std::string& path);
 struct ConversionOptions;
 }  // namespace bezcam::cli
 namespace bezcam::import {

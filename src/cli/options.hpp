@@ -30,7 +30,7 @@ struct ConversionOptions {
   std::string machine;           ///< --machine: a profile name or a .json file; empty: the job's, else generic
   double tolerance = 0;          ///< --tolerance: overrides the job's when > 0
   std::string output = "lines";  ///< --output: lines, arcs or nurbs
-  bool strict = false;           ///< --strict: refuse every unknown key of the job
+  bool strict = false;           ///< --strict: accepted for scripts; every unknown key is refused anyway
   std::vector<std::string> sets;    ///< --set KEY=VALUE: job settings of a drawing (.svg, .dxf)
   std::vector<std::string> layers;  ///< --layer NAME: the drawing's layers to cut (default all)
 };
@@ -53,17 +53,18 @@ inline void add_conversion_options(CLI::App* s, ConversionOptions& o, const std:
           },
           "lines|arcs|nurbs"))
       ->capture_default_str();
-  s->add_flag("--strict", o.strict, "refuse every unknown key of the job (likely typos such as \"tolerence\" are "
-                                    "always refused; other unknown keys are otherwise warnings)");
+  s->add_flag("--strict", o.strict, "accepted for scripts that pass it: every unknown key of a job is refused, with "
+                                    "or without it");
   add_drawing_options(s, o);
 }
 
 /// --set and --layer: how a drawing (.svg, .dxf) given instead of a job is
 /// read (import).
 inline void add_drawing_options(CLI::App* s, ConversionOptions& o) {
-  s->add_option("--set", o.sets, "a job setting for a drawing (.svg, .dxf), KEY=VALUE, repeatable: tolerance, units, "
-                                 "feed, plunge_feed, safe_z, cut_z, spindle_rpm, tool, coolant ... (checked as the "
-                                 "job file's keys)")
+  s->add_option("--set", o.sets, "a job setting for a drawing (.svg, .dxf), KEY=VALUE, repeatable: any key of the "
+                                 "job file's \"job\" object (feed, cut_z, side, tool_diameter ...) or tolerance, units, "
+                                 "machine; dotted keys nest (tabs.count=4), VALUE is JSON when it reads as JSON "
+                                 "(lead={\"radius\":4}), else text; an unknown key is refused")
       ->type_name("KEY=VALUE");
   s->add_option("--layer", o.layers, "a layer of the drawing to cut, repeatable (default: every layer)")
       ->type_name("NAME");

@@ -9,6 +9,7 @@
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/job/settings.hpp"
 #include "bezcam/import/read_drawing.hpp"
 #include "command.hpp"
 #include "options.hpp"
@@ -99,10 +100,9 @@ void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "bezcam: warning: " << w << "\n";
 }
 
-Job read_job(const std::string& path, bool strict) {
+Job read_job(const std::string& path) {
   std::vector<std::string> warnings;
   JobReadOptions ro;
-  ro.strict = strict;
   ro.warnings = &warnings;
   try {
     return load_job(path, ro);
@@ -126,6 +126,9 @@ std::pair<std::string, std::string> split_setting(const std::string& kv) {
 import::ImportOptions import_options(const ConversionOptions& o) {
   import::ImportOptions io;
   for (const auto& kv : o.sets) io.settings.push_back(split_setting(kv));
+  // Keys and values checked before the drawing is read: an unknown key is
+  // a mistake on the command line, whatever the drawing holds.
+  (void)settings_json(io.settings);
   io.layers = o.layers;
   return io;
 }
@@ -136,7 +139,7 @@ Job read_job(const std::string& path, const ConversionOptions& o, import::Drawin
       throw InputError(errc::import_setting, Place::at_option(o.sets.empty() ? "--layer" : "--set"),
                        path + " is a job file, which states its own settings and has no layers; --set and --layer "
                               "apply to drawings (.svg, .dxf)");
-    return read_job(path, o.strict);
+    return read_job(path);
   }
   const import::ImportOptions io = import_options(o);
   import::Drawing d = import::read_drawing(path);

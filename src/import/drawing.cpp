@@ -10,6 +10,7 @@
 #include "bezcam/flatten/nesting.hpp"
 #include "bezcam/import/conic.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/job/settings.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 
 namespace bezcam::import {
@@ -107,16 +108,6 @@ std::string numbers(const std::vector<double>& vs) {
   for (size_t i = 0; i < vs.size(); ++i) o += (i ? ", " : "") + exact(vs[i]);
   return o + "]";
 }
-// A --set value: a JSON number or literal as it is, anything else a string.
-std::string value_json(const std::string& v) {
-  if (v == "true" || v == "false" || v == "null") return v;
-  double d = 0;
-  const auto r = std::from_chars(v.data(), v.data() + v.size(), d);
-  if (r.ec == std::errc() && r.ptr == v.data() + v.size() && std::isfinite(d)) return v;
-  return quoted(v);
-}
-bool top_level_key(const std::string& k) { return k == "tolerance" || k == "units" || k == "machine"; }
-
 std::string job_text(const Drawing& d, const ImportOptions& opt, std::vector<std::string>* warnings);
 
 // A drawing's `side` "outside" is the part's outside, "inside" the
@@ -126,10 +117,11 @@ std::string job_text(const Drawing& d, const ImportOptions& opt, std::vector<std
 // those two, every entity keeps the job's side. Contours that cross each
 // other are warned about.
 std::vector<std::string> sides_by_nesting(const Drawing& d, const ImportOptions& opt, std::vector<std::string>* warnings) {
-  std::string side;
-  for (const auto& [k, v] : opt.settings)
+  std::string side;  // the value as JSON text
+  for (const auto& [k, v] : settings_json(opt.settings).job)
     if (k == "side") side = v;
-  if (side != "outside" && side != "inside") return {};
+  if (side != "\"outside\"" && side != "\"inside\"") return {};
+  side = side.substr(1, side.size() - 2);
   // The curves as the job reader builds them (B-splines and interpolations
   // included), from the geometry alone.
   ImportOptions geometry;
@@ -253,16 +245,17 @@ std::string job_text(const Drawing& d, const ImportOptions& opt, std::vector<std
                                           : "its layers are " + known));
     }
   double scale = 1;
+  bool units = false;
   std::string top, job;
-  for (const auto& [k, v] : opt.settings) {
-    if (k == "units" && v == "inch") scale = 1 / 25.4;
-    std::string& dst = top_level_key(k) ? top : job;
-    dst += (dst.empty() ? "" : ",\n    ") + quoted(k) + ": " + value_json(v);
+  const SettingsJson settings = settings_json(opt.settings);
+  for (const auto& [k, v] : settings.top) {
+    if (k == "units") units = true, scale = v == "\"inch\"" ? 1 / 25.4 : 1;
+    top += (top.empty() ? "" : ",\n    ") + quoted(k) + ": " + v;
   }
+  for (const auto& [k, v] : settings.job) job += (job.empty() ? "" : ",\n    ") + quoted(k) + ": " + v;
   std::ostringstream o;
   o << "{\n  \"bezcam\": 1,\n";
-  if (std::none_of(opt.settings.begin(), opt.settings.end(), [](const auto& kv) { return kv.first == "units"; }))
-    o << "  \"units\": \"mm\",\n";
+  if (!units) o << "  \"units\": \"mm\",\n";
   if (!top.empty()) {
     // top-level settings, one per line
     std::string t = top;
@@ -312,15 +305,32 @@ Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>*
   try {
     return parse_job(text, d.source, ro);
   } catch (const InputError& e) {
-    // A refused setting is named by the option that gave it.
+    // A refused setting is named by the option that gave it: the names
+    // the refused path and the setting's key have in common (`--set lead`
+    // for job.lead.lenght given whole, `--set tabs` for job.tabs.width
+    // missing beside --set tabs.count).
     const std::string path = e.place().json_path.value_or("");
-    for (const auto& [k, v] : opt.settings) {
-      if (path == k || path == "job." + k || (path == "job" && e.message().find(quoted(k)) != std::string::npos))
-      {
-        Place where = Place::at_setting("settings." + k);
-        where.file = d.source;
-        throw InputError(e.id(), where, e.message());
+    const auto names = [](const std::string& p) {
+      std::vector<std::string> out(1);
+      for (const char c : p) {
+        if (c == '.' || c == '[') out.emplace_back();
+        else out.back() += c;
       }
+      return out;
+    };
+    const std::vector<std::string> at = names(path.starts_with("job.") ? path.substr(4) : path);
+    std::string best;
+    for (const auto& [k, v] : opt.settings) {
+      const std::vector<std::string> key = names(k);
+      std::string common;
+      for (size_t i = 0; i < key.size() && i < at.size() && key[i] == at[i]; ++i) common += (i ? "." : "") + key[i];
+      if (common.empty() && path == "job" && e.message().find(quoted(k)) != std::string::npos) common = k;
+      if (common.size() > best.size()) best = common;
+    }
+    if (!best.empty()) {
+      Place where = Place::at_setting("settings." + best);
+      where.file = d.source;
+      throw InputError(e.id(), where, e.message());
     }
     throw;
   }

@@ -95,19 +95,12 @@ void JsonCtx::check_keys(const json& obj, const std::string& path, const std::ve
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     const std::string& key = it.key();
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    if (user_key(key)) continue;
     const std::string at = path.empty() ? key : path + "." + key;
-    auto refuse = [&](ErrorId id, const std::string& what) {
-      InputError e(id, Place::in_json(source, at), what);
-      if (!errors) throw e;
-      errors->push_back(e);
-    };
-    if (const auto like = resembled_key(key, known))
-      refuse(errc::job_key_typo, "unknown key \"" + key + "\": did you mean \"" + *like +
-                                     "\"? (a misspelt key is refused: it would otherwise take the default)");
-    else if (strict)
-      refuse(errc::job_unknown_key, "unknown key \"" + key + "\" (refused by the strict reading)");
-    else
-      warn(at, "unknown key, ignored");
+    const UnknownKey u = unknown_key(key, known);
+    InputError e(u.typo ? errc::job_key_typo : errc::job_unknown_key, Place::in_json(source, at), u.message);
+    if (!errors) throw e;
+    errors->push_back(e);
   }
 }
 const json& JsonCtx::require(const json& obj, const std::string& path, const char* key) const {
@@ -225,13 +218,6 @@ CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::
 
 namespace {
 
-// The cutting parameters, at job and entity level (docs/job-format.md).
-constexpr std::array<std::string_view, 23> kParamKeys = {
-    "feed",          "plunge_feed",    "safe_z",    "cut_z",     "spindle_rpm", "tool",         "tool_radius", "gouge",
-    "coolant",       "clearance",      "top_z",     "before",    "after",       "side",         "tool_diameter",
-    "stock_to_leave", "step_down",     "direction", "lead",      "tabs",        "compensation", "tolerance_side",
-    "order"};
-
 // One of `names` (the enum's values in order), or a refusal listing them.
 template <class E, size_t N>
 std::optional<E> choice(const JsonCtx& ctx, const json& obj, const std::string& path, const char* key,
@@ -317,7 +303,7 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   if (auto it = obj.find("lead"); it != obj.end()) {
     const std::string kp = sub("lead");
     if (!it->is_object()) ctx.expected(kp, "an object {\"radius\": R, \"length\": L}", *it);
-    ctx.check_keys(*it, kp, {"radius", "length"});
+    ctx.check_keys(*it, kp, std::vector<std::string_view>(kLeadKeys.begin(), kLeadKeys.end()));
     Lead l;
     l.radius = ctx.positive(ctx.require(*it, kp, "radius"), kp + ".radius");
     l.length = it->contains("length") ? ctx.number((*it)["length"], kp + ".length") : 0;
@@ -327,7 +313,7 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   if (auto it = obj.find("tabs"); it != obj.end()) {
     const std::string kp = sub("tabs");
     if (!it->is_object()) ctx.expected(kp, "an object {\"count\": N, \"width\": W, \"height\": H}", *it);
-    ctx.check_keys(*it, kp, {"count", "width", "height"});
+    ctx.check_keys(*it, kp, std::vector<std::string_view>(kTabsKeys.begin(), kTabsKeys.end()));
     Tabs t;
     t.count = static_cast<int>(ctx.integer(ctx.require(*it, kp, "count"), kp + ".count"));
     if (t.count < 1) ctx.fail(kp + ".count", errc::job_cut, "expected at least 1 tab, found " + std::to_string(t.count));
@@ -358,7 +344,7 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   e.params = parse_params(ctx, obj, path, true);
   auto keys = [&](std::initializer_list<const char*> own) {
     std::vector<std::string_view> all(own.begin(), own.end());
-    all.insert(all.end(), kParamKeys.begin(), kParamKeys.end());
+    all.insert(all.end(), kParamKeys.begin(), kParamKeys.end() - 1);  // `order` is the job's
     all.push_back("id");
     all.push_back("type");
     ctx.check_keys(obj, path, all);
@@ -558,7 +544,6 @@ Job parse_job(std::string_view text, const std::string& source, const JobReadOpt
   std::vector<InputError> errors;
   detail::JsonCtx ctx{source, &job.warnings};
   ctx.errors = &errors;
-  ctx.strict = opt.strict;
   try {
     parse_document(text, source, ctx, job, errors);
   } catch (const InputError& e) {

@@ -2,8 +2,10 @@
 // Shared by the job_json*.cpp files: reading typed values with errors that
 // name the JSON path, expected and found. Only the kernel's job_json files
 // know JSON.
+#include <array>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bezcam/error.hpp"
@@ -13,13 +15,23 @@ namespace bezcam::detail {
 
 using json = nlohmann::json;
 
+/// The cutting parameters, at job and entity level (docs/job-format.md);
+/// the last, `order`, is the job's only.
+inline constexpr std::array<std::string_view, 23> kParamKeys = {
+    "feed",          "plunge_feed",    "safe_z",    "cut_z",     "spindle_rpm", "tool",         "tool_radius", "gouge",
+    "coolant",       "clearance",      "top_z",     "before",    "after",       "side",         "tool_diameter",
+    "stock_to_leave", "step_down",     "direction", "lead",      "tabs",        "compensation", "tolerance_side",
+    "order"};
+/// The keys of `lead` and `tabs`.
+inline constexpr std::array<std::string_view, 2> kLeadKeys = {"radius", "length"};
+inline constexpr std::array<std::string_view, 3> kTabsKeys = {"count", "width", "height"};
+
 struct JsonCtx {
   std::string source;
   std::vector<std::string>* warnings = nullptr;
   /// Refusals recorded without stopping the reading (unknown keys), so
   /// that each is reported; parse_job throws them together.
   std::vector<InputError>* errors = nullptr;
-  bool strict = false;
   // Limits (bezcam/limits.hpp): points written in the entity being read,
   // and points of the exact Bézier form of the whole job so far.
   mutable std::size_t entity_points = 0, job_points = 0;
@@ -27,9 +39,9 @@ struct JsonCtx {
   [[noreturn]] void fail(const std::string& path, const std::string& id, const std::string& what) const;
   [[noreturn]] void expected(const std::string& path, const std::string& what, const json& found) const;
   void warn(const std::string& path, const std::string& what) const;
-  /// Keys of `obj` not in `known`: a likely typo of a known key is refused
-  /// (recorded in `errors`), another unknown key a warning (refused when
-  /// strict).
+  /// Keys of `obj` neither in `known` nor the user's own ("x-..."): each
+  /// refused (recorded in `errors`), naming the known key it resembles or
+  /// stands for.
   void check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> known) const;
   void check_keys(const json& obj, const std::string& path, const std::vector<std::string_view>& known) const;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
 #include <vector>
 
 namespace bezcam {
@@ -38,6 +39,40 @@ std::optional<std::string> resembled_key(std::string_view key, std::span<const s
     }
   }
   return best;
+}
+
+bool user_key(std::string_view key) { return key.starts_with("x-"); }
+
+namespace {
+// Words machinists and other programs use for a key bezcam names
+// otherwise: the word, and the key it stands for.
+constexpr std::pair<std::string_view, std::string_view> kKeyWords[] = {
+    {"depth", "cut_z"},          {"cut_depth", "cut_z"},      {"stock", "stock_to_leave"},
+    {"allowance", "stock_to_leave"}, {"diameter", "tool_diameter"}, {"tool_dia", "tool_diameter"},
+    {"radius", "tool_radius"},   {"rpm", "spindle_rpm"},      {"speed", "spindle_rpm"},
+    {"spindle", "spindle_rpm"},  {"feedrate", "feed"},        {"feed_rate", "feed"},
+    {"plunge", "plunge_feed"},   {"plunge_rate", "plunge_feed"}, {"pass_depth", "step_down"}};
+}  // namespace
+
+UnknownKey unknown_key(std::string_view key, std::span<const std::string_view> known, std::string_view prefix) {
+  UnknownKey u;
+  const std::string quoted = "\"" + std::string(prefix) + std::string(key) + "\"";
+  for (const auto& [word, meant] : kKeyWords)
+    if (key == word && std::find(known.begin(), known.end(), meant) != known.end()) u.meant = std::string(meant);
+  if (!u.meant) {
+    u.meant = resembled_key(key, known);
+    u.typo = u.meant.has_value();
+  }
+  if (u.typo)
+    u.message = "unknown key " + quoted + ": did you mean \"" + std::string(prefix) + *u.meant +
+                "\"? (a misspelt key is refused: it would otherwise take the default)";
+  else if (u.meant)
+    u.message = "unknown key " + quoted + ": did you mean \"" + std::string(prefix) + *u.meant +
+                "\"? (a key bezcam does not know is refused: it would otherwise be ignored)";
+  else
+    u.message = "unknown key " + quoted + " (a key bezcam does not know is refused: it would otherwise be ignored; "
+                "keys of your own start with \"x-\")";
+  return u;
 }
 
 std::optional<std::string> template_problem(std::string_view text, std::span<const std::string_view> known) {

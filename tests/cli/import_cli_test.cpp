@@ -1,7 +1,8 @@
 // End to end through the executable: `bezcam import` writes the job a
 // drawing is read as (the golden of tests/import), importing then
 // converting is converting the drawing, `--set` reaches the program,
-// `--layer` keeps layers, `check` lists what each layer held.
+// `--layer` keeps layers, `check` lists what each layer held; `--set` takes
+// dotted keys and JSON values and refuses a key the job does not have.
 #include <gtest/gtest.h>
 
 #include "support/run_process.hpp"
@@ -50,6 +51,59 @@ TEST(ImportCommand, SettingsAndLayersOfADrawing) {
   EXPECT_NE(c.out.find("layer \"HOLES\": read 4 CIRCLE, 1 LWPOLYLINE\n"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("layer \"NOTES\": read nothing; skipped 1 TEXT\n"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("layer \"OUTLINE\": read 4 ARC, 4 LINE\n"), std::string::npos) << c.out;
+}
+
+const char* kSquare = R"(<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="60mm" viewBox="0 0 60 60">
+  <rect id="part" x="10" y="10" width="40" height="40"/>
+</svg>
+)";
+
+TEST(ImportCommand, SetTakesDottedKeysAndJsonValues) {
+  // Tabs given key by key and a lead given as a JSON object reach the
+  // program: the last passes rise to cut_z + 1.5 over the tabs.
+  testproc::TempDir dir;
+  const fs::path svg = dir / "square.svg", nc = dir / "square.nc", plain = dir / "plain.nc";
+  testproc::write_file(svg, kSquare);
+  const std::vector<std::string> part = {"--set", "side=outside", "--set", "tool_diameter=6", "--set", "cut_z=-6",
+                                         "--set", "step_down=2", "-q"};
+  std::vector<std::string> args = {"convert", svg.string(), "-o", nc.string(), "--set", "tabs.count=4",
+                                   "--set", "tabs.width=5", "--set", "tabs.height=1.5", "--set",
+                                   R"(lead={"radius":4,"length":2})"};
+  args.insert(args.end(), part.begin(), part.end());
+  const auto r = bezcam(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");  // nothing ignored, nothing to warn about
+  std::vector<std::string> no_tabs = {"convert", svg.string(), "-o", plain.string()};
+  no_tabs.insert(no_tabs.end(), part.begin(), part.end());
+  ASSERT_EQ(bezcam(no_tabs).status, 0);
+  EXPECT_NE(testproc::slurp(nc).find("Z-4.5"), std::string::npos);  // over a tab: -6 + 1.5
+  EXPECT_EQ(testproc::slurp(plain).find("Z-4.5"), std::string::npos);
+  // The job import writes holds them as the job file does.
+  const auto j = bezcam({"import", svg.string(), "--set", "tabs.count=4", "--set", "tabs.width=5", "--set",
+                         "tabs.height=1.5", "--set", R"(lead={"radius":4,"length":2})"});
+  ASSERT_EQ(j.status, 0) << j.err;
+  EXPECT_NE(j.out.find(R"("tabs": {"count":4,"width":5,"height":1.5})"), std::string::npos) << j.out;
+  EXPECT_NE(j.out.find(R"("lead": {"radius":4,"length":2})"), std::string::npos) << j.out;
+}
+
+TEST(ImportCommand, SetRefusesAKeyTheJobDoesNotHave) {
+  testproc::TempDir dir;
+  const fs::path svg = dir / "square.svg", nc = dir / "square.nc";
+  testproc::write_file(svg, kSquare);
+  for (const auto& [set, first] : std::vector<std::pair<std::string, std::string>>{
+           {"depth=-6", "bezcam: error: --set depth: unknown key \"depth\": did you mean \"cut_z\"?"},
+           {"colour=red", "bezcam: error: --set colour: unknown key \"colour\" ("},
+           {"tabs.cont=4", "bezcam: error: --set tabs.cont: unknown key \"tabs.cont\": did you mean \"tabs.count\"?"}}) {
+    for (const char* command : {"convert", "check", "import"}) {
+      std::vector<std::string> args = {command, svg.string(), "--set", set};
+      if (std::string(command) != "check") args.insert(args.end(), {"-o", nc.string()});
+      const auto r = bezcam(args);
+      EXPECT_EQ(r.status, 2) << command << " " << set;
+      EXPECT_EQ(r.err_first_line().rfind(first, 0), 0u) << command << ": " << r.err;
+      EXPECT_NE(r.err.find("(error id: usage.setting)"), std::string::npos) << r.err;
+      EXPECT_FALSE(fs::exists(nc));
+    }
+  }
 }
 
 }  // namespace

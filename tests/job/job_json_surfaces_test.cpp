@@ -74,12 +74,11 @@ TEST(JobJsonSurfaces, PatchRefusalsNameThePlace) {
             "t.json: entities[0].toolpath.stepover: expected a number > 0, found 0");
 }
 
-TEST(JobJsonSurfaces, UnknownToolpathKeysWarn) {
-  const Job j = parse_job(job(R"({"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]],
-                                 "toolpath": {"stepover": 1, "angle": 30}})"),
-                          "t.json");
-  ASSERT_EQ(j.warnings.size(), 1u);
-  EXPECT_EQ(j.warnings[0], "t.json: entities[0].toolpath.angle: unknown key, ignored");
+TEST(JobJsonSurfaces, UnknownToolpathKeysAreRefused) {
+  EXPECT_EQ(refusal(job(R"({"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]],
+                            "toolpath": {"stepover": 1, "angle": 30}})")),
+            "t.json: entities[0].toolpath.angle: unknown key \"angle\" (a key bezcam does not know is refused: it "
+            "would otherwise be ignored; keys of your own start with \"x-\")");
 }
 
 const char* kCoons = R"({"id": "c", "type": "coons_patch", "blend": "quintic", "boundaries": {
@@ -109,7 +108,7 @@ TEST(JobJsonSurfaces, CoonsRefusalsNameTheBoundary) {
   EXPECT_EQ(r.substr(0, 35), "t.json: entities[0].boundaries.u1: ") << r;
   EXPECT_NE(r.find("S(1,1) = (200, 150, 4), where v1 ends, found (200, 150, 9), 5 away"), std::string::npos) << r;
   std::string missing = kCoons;
-  missing.replace(missing.find("\"u0\""), 4, "\"first\"");
+  missing.replace(missing.find("\"u0\""), 4, "\"x-first\"");  // a key of the user's own
   const std::string m = refusal(job(missing));
   EXPECT_EQ(m.substr(0, 35), "t.json: entities[0].boundaries.u0: ") << m;
   EXPECT_NE(m.find("required key"), std::string::npos) << m;

@@ -1,5 +1,5 @@
 // Reading jobs: every rule of docs/job-format.md, errors that name the JSON path,
-// expected and found, and warnings for unknown keys.
+// expected and found, and the refusal of unknown keys.
 #include "bezcam/job/job.hpp"
 
 #include <gtest/gtest.h>
@@ -79,11 +79,56 @@ TEST(JobJson, ErrorsNameThePathExpectedAndFound) {
   EXPECT_NE(syn.find("line 3"), std::string::npos) << syn;
 }
 
-TEST(JobJson, UnknownKeysWarnButDoNotFail) {
-  const Job j = parse_job(R"({"bezcam": 1, "colour": "red", "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "author": 3}]})", "w.json");
-  ASSERT_EQ(j.warnings.size(), 2u);
-  EXPECT_EQ(j.warnings[0], "w.json: colour: unknown key, ignored");
-  EXPECT_EQ(j.warnings[1], "w.json: entities[0].author: unknown key, ignored");
+TEST(JobJson, UnknownKeysAreRefusedWithTheirPath) {
+  // An unknown key would be ignored: a `stock` the reader does not know
+  // would cut the part to size. Each is refused, in the file's order.
+  try {
+    parse_job(R"({"bezcam": 1, "colour": "red", "job": {"stock": 0.2},
+                  "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "author": 3}]})",
+              "w.json");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "job.unknown-key");
+    EXPECT_EQ(std::string(e.what()), "w.json: colour: unknown key \"colour\" (a key bezcam does not know is refused: it "
+                                     "would otherwise be ignored; keys of your own start with \"x-\")");
+    ASSERT_EQ(e.more().size(), 2u) << e.what();
+    EXPECT_EQ(e.more()[0].where(), "w.json: job.stock");
+    EXPECT_NE(std::string(e.more()[0].what()).find("did you mean \"stock_to_leave\"?"), std::string::npos)
+        << e.more()[0].what();
+    EXPECT_EQ(e.more()[1].where(), "w.json: entities[0].author");
+  }
+}
+
+TEST(JobJson, AWordForAKeyNamesTheKey) {
+  // `depth` is not a key: the depth of a cut is cut_z.
+  for (const auto& [text, where, meant] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {R"({"bezcam": 1, "job": {"depth": -6}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "job.depth", "cut_z"},
+           {R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "diameter": 6}]})", "entities[0].diameter", "tool_diameter"},
+           {R"({"bezcam": 1, "job": {"rpm": 9000}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "job.rpm", "spindle_rpm"}}) {
+    try {
+      parse_job(text, "t.json");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.id(), "job.unknown-key") << e.what();
+      EXPECT_EQ(e.where(), "t.json: " + where) << e.what();
+      EXPECT_NE(std::string(e.what()).find("did you mean \"" + meant + "\"?"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(JobJson, KeysOfTheUsersOwnStartWithX) {
+  const Job j = parse_job(R"({"bezcam": 1, "x-author": "me", "job": {"x-order-no": 4711, "feed": 600},
+      "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "x-note": {"any": ["thing"]},
+                    "lead": {"radius": 1, "x-why": "clamps"}}]})",
+                          "t.json");
+  EXPECT_TRUE(j.warnings.empty());
+  EXPECT_EQ(*j.params.feed, 600);
+}
+
+TEST(JobJson, OrderIsTheJobsNotAnEntitys) {
+  EXPECT_NE(error_of(wrap(R"({"type": "bezier", "points": [[0,0],[1,1]], "order": "shortest"})"))
+                .find("job.json: entities[0].order: unknown key \"order\""),
+            std::string::npos);
 }
 
 TEST(JobJson, LikelyTyposAreRefusedNamingTheKeyTheyResemble) {
@@ -106,37 +151,22 @@ TEST(JobJson, LikelyTyposAreRefusedNamingTheKeyTheyResemble) {
 }
 
 TEST(JobJson, IndependentErrorsAreEachReported) {
-  // Two bad entities and a typo: three refusals, in the file's order, and
-  // the warnings found before reach the caller.
-  std::vector<std::string> warnings;
-  JobReadOptions ro;
-  ro.warnings = &warnings;
+  // Two bad entities and two unknown keys: four refusals, in the file's
+  // order.
   try {
     parse_job(R"({"bezcam": 1, "colour": "red", "tolerence": 0.1, "entities": [
         {"type": "bezier", "points": [[0,0]]},
         {"type": "bezier", "points": [[0,0],[1,1]]},
         {"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,1,1]}]})",
-              "t.json", ro);
+              "t.json");
     ADD_FAILURE() << "accepted";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.where(), "t.json: tolerence") << e.what();
-    ASSERT_EQ(e.more().size(), 2u) << e.what();
-    EXPECT_EQ(e.more()[0].where().rfind("t.json: entities[0]", 0), 0u) << e.more()[0].what();
-    EXPECT_EQ(e.more()[1].where().rfind("t.json: entities[2]", 0), 0u) << e.more()[1].what();
-  }
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_EQ(warnings[0], "t.json: colour: unknown key, ignored");
-}
-
-TEST(JobJson, StrictRefusesEveryUnknownKey) {
-  JobReadOptions ro;
-  ro.strict = true;
-  try {
-    parse_job(R"({"bezcam": 1, "colour": "red", "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "t.json", ro);
-    ADD_FAILURE() << "accepted";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.id(), "job.unknown-key");
-    EXPECT_EQ(e.where(), "t.json: colour");
+    EXPECT_EQ(e.where(), "t.json: colour") << e.what();
+    ASSERT_EQ(e.more().size(), 3u) << e.what();
+    EXPECT_EQ(e.more()[0].where(), "t.json: tolerence") << e.more()[0].what();
+    EXPECT_EQ(e.more()[0].id(), "job.key-typo");
+    EXPECT_EQ(e.more()[1].where().rfind("t.json: entities[0]", 0), 0u) << e.more()[1].what();
+    EXPECT_EQ(e.more()[2].where().rfind("t.json: entities[2]", 0), 0u) << e.more()[2].what();
   }
 }
 
@@ -149,6 +179,24 @@ TEST(Keys, EditDistanceAndResemblance) {
   EXPECT_EQ(resembled_key("ponts", known), "points");
   EXPECT_FALSE(resembled_key("xy", known));  // short keys: one edit at most
   EXPECT_FALSE(resembled_key("colour", known));
+}
+
+TEST(Keys, AnUnknownKeyNamesTheKeyItIsTakenFor) {
+  const std::vector<std::string_view> known{"feed", "spindle_rpm", "cut_z"};
+  // `speed` is two edits from `feed`, but it is the spindle's.
+  UnknownKey u = unknown_key("speed", known);
+  EXPECT_EQ(u.meant, "spindle_rpm");
+  EXPECT_FALSE(u.typo);
+  u = unknown_key("fed", known);
+  EXPECT_EQ(u.meant, "feed");
+  EXPECT_TRUE(u.typo);
+  // A word names its key only where that key is known.
+  EXPECT_FALSE(unknown_key("stock", known).meant);
+  EXPECT_EQ(unknown_key("cont", std::vector<std::string_view>{"count"}, "tabs.").message,
+            "unknown key \"tabs.cont\": did you mean \"tabs.count\"? (a misspelt key is refused: it would otherwise take "
+            "the default)");
+  EXPECT_TRUE(user_key("x-anything"));
+  EXPECT_FALSE(user_key("xfeed"));
 }
 
 TEST(JobJson, PathJointsAndContinuity) {

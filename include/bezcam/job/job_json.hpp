@@ -12,9 +12,6 @@ namespace bezcam {
 
 /// How a job file is read.
 struct JobReadOptions {
-  /// Refuse every unknown key (errc::job_unknown_key), not only likely
-  /// typos of known ones (errc::job_key_typo, always refused).
-  bool strict = false;
   /// Receives the job's warnings also when the job is refused, so that a
   /// program can print them beside the refusal.
   std::vector<std::string>* warnings = nullptr;
