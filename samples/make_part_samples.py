@@ -24,7 +24,9 @@ def join(segs):
     return segs
 
 # Flange: an outline of four lobes (arcs R 12 round the bolt holes) joined by
-# concave arcs R 20, four bolt holes of 8 mm, a centre bore of 30 mm.
+# concave arcs R 20, four bolt holes of 8 mm, a centre bore of 30 mm. The
+# bolt holes are cut with a 3 mm tool (T2), the bore and outline with 6 mm
+# (T1): one tool number is one diameter.
 def flange():
     segs=[]
     Rb=35  # bolt circle radius
@@ -54,7 +56,7 @@ def flange():
     for k in range(4):
         a=math.radians(45+90*k)
         h=circle(Rb*math.cos(a),Rb*math.sin(a),4)
-        h.update({"id":"bolt-%d"%(k+1),"side":"inside","tool_diameter":3,"lead":{"radius":1.2,"length":0}})
+        h.update({"id":"bolt-%d"%(k+1),"side":"inside","tool":2,"tool_diameter":3,"lead":{"radius":1.2,"length":0}})
         ents.append(h)
     bore=circle(0,0,15); bore.update({"id":"bore","side":"inside"})
     ents.append(bore)
@@ -119,7 +121,7 @@ def flange_g41():
     j["job"].update({"compensation":"controller","lead":{"radius":4,"length":4}})
     for e in j["entities"]:
         if e.get("id","").startswith("bolt-"):
-            e.update({"tool":2,"lead":{"radius":0.8,"length":1.6}})
+            e.update({"lead":{"radius":0.8,"length":1.6}})
     return j
 
 for name,f in [("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-cam-notch",cam),("part-lettering",lettering)]:
