@@ -237,6 +237,8 @@ inline constexpr ErrorId job_segment_type{"job.segment-type"};
 inline constexpr ErrorId job_surface_ref{"job.surface-ref"};
 /// A surface type bezcam does not know.
 inline constexpr ErrorId job_surface_type{"job.surface-type"};
+/// One tool number given two diameters or shapes in one job.
+inline constexpr ErrorId job_tool{"job.tool"};
 /// The job file is not valid JSON.
 inline constexpr ErrorId job_syntax{"job.syntax"};
 /// A surface tool path pattern or direction bezcam does not know.

@@ -37,13 +37,21 @@ const char* to_string(OutputMode m) {
   return "?";
 }
 
-CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
-  // Profile defaults are in mm; convert them to the job's units.
+namespace {
+// The profile's defaults in the job's units (a profile's are in mm), and
+// tool 1 where the profile names none.
+JobParams profile_defaults(const Job& job, const MachineProfile& m) {
   JobParams prof = m.defaults;
   const double k = 1.0 / mm_per_unit(job.units);
   for (auto* v : {&prof.feed, &prof.plunge_feed, &prof.safe_z, &prof.cut_z, &prof.tool_radius})
     if (*v) **v *= k;
-  const JobParams p = e.params.over(job.params.over(prof));
+  if (!prof.tool) prof.tool = 1;
+  return prof;
+}
+}  // namespace
+
+CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
+  const JobParams p = e.params.over(job.params.over(profile_defaults(job, m)));
   auto need = [&](const std::optional<double>& v, const char* key) {
     if (!v)
       throw InputError(errc::job_missing, Place::in_json(job.source, e.json_path() + "." + key),
@@ -527,6 +535,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   p.warnings = job.warnings;
   for (std::string& w : nested_outside_warnings(job)) p.warnings.push_back(std::move(w));
   p.program_number = opt.program_number ? opt.program_number : job.program_number;
+  p.tools = job_tools(job, profile_defaults(job, m));
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
 
   int cur_tool = -1;

@@ -99,7 +99,9 @@ class Writer {
   void note(const std::string& text) {
     if (m_.comments) line(comment(text));
   }
-  // The tools in the order they are loaded, each with the entities it cuts.
+  // The tools in the order they are loaded, each with its diameter and
+  // shape where the job gives them (`T1: 6 mm flat end mill: outline,
+  // bore`) and the entities it cuts: the operator loads them from this.
   void tools() {
     std::vector<std::pair<int, std::string>> list;
     for (const EntityReport& e : p_.entities) {
@@ -108,7 +110,13 @@ class Writer {
       else it->second += ", " + e.label;
     }
     if (list.empty() || (list.size() == 1 && list.front().first < 0)) return;
-    for (const auto& [tool, labels] : list) note("T" + std::to_string(tool) + ": " + labels);
+    for (const auto& [tool, labels] : list) {
+      std::string what;
+      const auto t = std::find_if(p_.tools.begin(), p_.tools.end(), [&](const JobTool& j) { return j.number == tool; });
+      if (t != p_.tools.end() && t->diameter)
+        what = format_significant(*t->diameter, 6) + (p_.units == Units::inch ? " in " : " mm ") + to_string(t->shape) + ": ";
+      note("T" + std::to_string(tool) + ": " + what + labels);
+    }
   }
   // Under the controller's compensation (G41/G42 D-), what each D register
   // must hold, next to the tools: the operator sets the tool table from it.

@@ -5,6 +5,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/keys.hpp"
+#include "bezcam/job/tools.hpp"
 #include "bezcam/limits.hpp"
 
 namespace bezcam {
@@ -143,6 +144,7 @@ Job JobBuilder::build() const {
     throw InputError(errc::job_missing, job_.source + ": entities", "expected at least one entity");
   check_params(job_.params, job_.source, "job");
   for (const Entity& e : job_.entities) check_params(e.params, job_.source, e.json_path());
+  (void)job_tools(job_);  // one diameter and shape per tool number
   return job_;
 }
 

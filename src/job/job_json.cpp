@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "bezcam/job/keys.hpp"
+#include "bezcam/job/tools.hpp"
 #include "bezcam/limits.hpp"
 #include "job_json_detail.hpp"
 #include "bezcam/job/job_json.hpp"
@@ -533,7 +534,9 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
       errors.push_back(e);
     }
   }
-  if (errors.empty()) detail::resolve_surface_references(ctx, ents, job);  // curve_on_surface naming a patch by id
+  if (!errors.empty()) return;
+  detail::resolve_surface_references(ctx, ents, job);  // curve_on_surface naming a patch by id
+  (void)job_tools(job);  // one diameter and shape per tool number
 }
 
 }  // namespace

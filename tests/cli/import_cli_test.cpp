@@ -106,4 +106,32 @@ TEST(ImportCommand, SetRefusesAKeyTheJobDoesNotHave) {
   }
 }
 
+TEST(ToolHeader, EachToolWithItsDiameterAndShape) {
+  // The operator loads the tools from the header: each number with the
+  // diameter and shape the job cuts for, in the profile's dialect.
+  const auto g = bezcam({"convert", "samples/part-flange.json", "-q"});
+  ASSERT_EQ(g.status, 0) << g.err;
+  EXPECT_NE(g.out.find("\n(T2: 3 mm flat end mill: bolt-1, bolt-4, bolt-3, bolt-2)\n(T1: 6 mm flat end mill: bore, "
+                       "outline)\n"),
+            std::string::npos)
+      << g.out.substr(0, 400);
+  const auto f = bezcam({"convert", "samples/part-flange.json", "--machine", "fanuc", "-q"});
+  ASSERT_EQ(f.status, 0) << f.err;
+  EXPECT_NE(f.out.find("\nN30 (T2: 3 mm flat end mill: bolt-1, "), std::string::npos) << f.out.substr(0, 400);
+  const auto b = bezcam({"convert", "samples/patch-coons-curved.json", "-q"});
+  ASSERT_EQ(b.status, 0) << b.err;
+  EXPECT_NE(b.out.find("\n(T2: 8 mm ball end mill: coons-panel)\n"), std::string::npos) << b.out.substr(0, 400);
+  // An inch job in inches; a job that gives no diameter names none.
+  testproc::TempDir dir;
+  const fs::path job = dir / "inch.json";
+  testproc::write_file(job, R"({"bezcam": 1, "units": "inch", "job": {"tool": 3, "cut_z": -0.1, "safe_z": 0.2},
+      "entities": [{"id": "sq", "type": "path", "closed": true, "side": "outside", "tool_diameter": 0.25,
+                    "segments": [{"type": "bezier", "points": [[0,0],[2,0]]}, {"type": "bezier", "points": [[2,0],[2,2]]},
+                                 {"type": "bezier", "points": [[2,2],[0,2]]}, {"type": "bezier", "points": [[0,2],[0,0]]}]},
+                   {"id": "line", "type": "bezier", "tool": 4, "points": [[3,0],[4,0]]}]})");
+  const auto i = bezcam({"convert", job.string(), "-q"});
+  ASSERT_EQ(i.status, 0) << i.err;
+  EXPECT_NE(i.out.find("\n(T3: 0.25 in flat end mill: sq)\n(T4: line)\n"), std::string::npos) << i.out.substr(0, 400);
+}
+
 }  // namespace

@@ -11,6 +11,7 @@
 #include "bezcam/cam/move.hpp"
 #include "bezcam/flatten/offset.hpp"
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/tools.hpp"
 #include "bezcam/cam/machine_profile.hpp"
 
 namespace bezcam {
@@ -75,6 +76,9 @@ struct Program {
   Vec3 offset;                         ///< by which the part was moved (ConvertOptions::offset, rounded)
   std::vector<Move> moves;
   std::vector<EntityReport> entities;
+  /// The tools the job uses, each with its diameter and shape (the
+  /// machine's default tool number filled in); the header lists them.
+  std::vector<JobTool> tools;
   std::vector<std::string> warnings;
   /// Extra lines for the program's header comment: how an output mode the
   /// machine lacks was replaced (also one of `warnings`), decimals raised

@@ -52,7 +52,8 @@ class JobBuilder {
   JobBuilder& path(std::string id, std::vector<Bezier> segments, bool closed = false, JobParams params = {});
 
   /// The job. Throws InputError (place: the builder's name and
-  /// `entities[i]`) when an entity's values are invalid or no entity was added.
+  /// `entities[i]`) when an entity's values are invalid, no entity was
+  /// added, or one tool number is given two diameters (job_tools()).
   Job build() const;
 
  private:
