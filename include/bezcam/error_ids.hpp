@@ -311,6 +311,8 @@ inline constexpr ErrorId link_version{"link.version"};
 inline constexpr ErrorId machine_invalid{"machine.invalid"};
 /// An unknown key of a machine profile within a few edits of a known one: refused.
 inline constexpr ErrorId machine_key_typo{"machine.key-typo"};
+/// An unknown key of a machine profile (not a likely typo): refused.
+inline constexpr ErrorId machine_unknown_key{"machine.unknown-key"};
 /// A machine profile's name is not its file's name.
 inline constexpr ErrorId machine_name{"machine.name"};
 /// A template of a machine profile names a placeholder it does not have (`{rmp}`).

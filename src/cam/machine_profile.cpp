@@ -56,19 +56,18 @@ struct Reader {
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
     throw InputError(errc::machine_invalid, Place::in_json(source, path), what);
   }
-  // Profiles follow the job's rules: a likely typo of a known key is
-  // refused naming the key it resembles; another unknown key is a warning.
+  // Profiles follow the job's rules: a key bezcam does not know is
+  // refused (it would otherwise be ignored), naming the key it resembles;
+  // keys starting with "x-" are the user's own.
   void check_keys(const json& doc) const {
     for (const auto& [object, keys] : known_keys()) {
       const json* o = object.empty() ? &doc : opt(doc, object.c_str());
       if (!o || !o->is_object()) continue;
       for (auto it = o->begin(); it != o->end(); ++it) {
-        if (std::find(keys.begin(), keys.end(), it.key()) != keys.end()) continue;
+        if (std::find(keys.begin(), keys.end(), it.key()) != keys.end() || user_key(it.key())) continue;
         const std::string at = object.empty() ? it.key() : object + "." + it.key();
-        if (const auto like = resembled_key(it.key(), keys))
-          throw InputError(errc::machine_key_typo, Place::in_json(source, at),
-                           "unknown key \"" + it.key() + "\": did you mean \"" + *like + "\"?");
-        m->warnings.push_back(source + ": " + at + ": unknown key, ignored");
+        const UnknownKey u = unknown_key(it.key(), keys);
+        throw InputError(u.typo ? errc::machine_key_typo : errc::machine_unknown_key, Place::in_json(source, at), u.message);
       }
     }
   }

@@ -40,9 +40,7 @@ const std::vector<std::filesystem::path>& profile_dirs() {
 
 MachineProfile load_profile_option(const std::string& machine) {
   try {
-    MachineProfile m = load_machine_profile(machine, profile_dirs());
-    print_warnings(m.warnings);
-    return m;
+    return load_machine_profile(machine, profile_dirs());
   } catch (const InputError& e) {
     if (e.id() != errc::machine_unknown) throw;
     throw InputError(e.id(), Place::at_option("--machine"), e.message());

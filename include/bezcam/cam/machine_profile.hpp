@@ -48,9 +48,6 @@ struct MotionModel {
 struct MachineProfile {
   std::string name;
   std::string description;
-  /// Unknown keys that are not likely typos (those are refused), for the
-  /// caller to print.
-  std::vector<std::string> warnings;
   std::vector<std::string> header;   ///< raw lines before the program
   std::vector<std::string> footer;   ///< raw lines after the final retract
   bool line_numbers = false;
