@@ -2,7 +2,7 @@
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: job-curve-on-surface.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009758 mm, proven bound 0.009999 mm, rounding included)
-N30 (T1: wing)
+N30 (T1: 10 mm ball end mill: wing)
 N40 (T2: wheel-arch)
 N50 (estimated cycle time 38 min 34 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N60 G21 G90 G17

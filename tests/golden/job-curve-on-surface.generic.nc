@@ -1,7 +1,7 @@
 %
 (bezcam 0.1.0: job-curve-on-surface.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009758 mm, proven bound 0.009999 mm, rounding included)
-(T1: wing)
+(T1: 10 mm ball end mill: wing)
 (T2: wheel-arch)
 (estimated cycle time 38 min 37 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

@@ -2,7 +2,7 @@
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: part-cam-notch.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009805 mm, proven bound 0.01 mm, rounding included)
-N30 (T1: cam-profile, notched-disc)
+N30 (T1: 8 mm flat end mill: cam-profile, notched-disc)
 N40 (estimated cycle time 1 min 20 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
 N60 G40 G49 G80 G94

@@ -1,7 +1,7 @@
 %
 (bezcam 0.1.0: part-cam-notch.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009805 mm, proven bound 0.01 mm, rounding included)
-(T1: cam-profile, notched-disc)
+(T1: 8 mm flat end mill: cam-profile, notched-disc)
 (estimated cycle time 1 min 22 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94

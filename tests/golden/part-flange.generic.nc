@@ -1,12 +1,13 @@
 %
 (bezcam 0.1.0: part-flange.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009891 mm, proven bound 0.01 mm, rounding included)
-(T1: bolt-1, bolt-4, bore, bolt-3, bolt-2, outline)
-(estimated cycle time 2 min 59 s on the motion model of machine generic [acceleration, corners, tool changes])
+(T2: 3 mm flat end mill: bolt-1, bolt-4, bolt-3, bolt-2)
+(T1: 6 mm flat end mill: bore, outline)
+(estimated cycle time 3 min 20 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 5 nested contours cut before what encloses them; rapids 176.7 mm in XY instead of 242.3 mm as written [65.6 mm saved])
 G21 G90 G17
 G40 G49 G80 G94
-T1 M06
+T2 M06
 S18000 M03
 (entity bolt-1: path, degree 2, rational, 2D)
 G00 Z5.
@@ -401,6 +402,9 @@ X22.709 Y-24.265
 X22.841 Y-24.516
 X22.985 Y-24.682
 G00 Z5.
+M05
+T1 M06
+S18000 M03
 (entity bore: path, degree 2, rational, 2D)
 X7.068 Y1.411
 G01 Z-2. F200.
@@ -759,6 +763,9 @@ X2.895 Y8.556
 X2.825 Y8.482
 X1.411 Y7.068
 G00 Z5.
+M05
+T2 M06
+S18000 M03
 (entity bolt-3: path, degree 2, rational, 2D)
 X-22.985 Y-24.682
 G01 Z-2. F200.
@@ -1151,6 +1158,9 @@ X-22.709 Y24.265
 X-22.841 Y24.516
 X-22.985 Y24.682
 G00 Z5.
+M05
+T1 M06
+S18000 M03
 (entity outline: path, degree 3, rational, 2D)
 X23.527 Y46.096
 G01 Z-2. F200.

@@ -2,7 +2,7 @@
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: patch-bonnet-bicubic.json, machine fanuc, output lines)
 N20 (tolerance 0.05 mm; largest deviation measured 0.04702 mm, proven bound 0.04801 mm, rounding included)
-N30 (T1: bonnet)
+N30 (T1: 20 mm ball end mill: bonnet)
 N40 (estimated cycle time 43 min 19 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17
 N60 G40 G49 G80 G94
