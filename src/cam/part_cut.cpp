@@ -525,6 +525,8 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   // The proven bound, known once every stretch is cut; the deferred
   // measurements read it.
   auto final_bound = std::make_shared<double>(0);
+  // The last pass of each stretch of the path, as the tool's centre goes.
+  std::vector<std::vector<Vec3>> last_paths;
   for (size_t k = 0; k < chains.size(); ++k) {
     const auto& chain = chains[k];
     double len = 0;
@@ -559,12 +561,12 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
         for (const auto* lead : {&in, &out}) {
           const auto pts = flatten(*lead, {.tolerance = 0.01 * tol, .decimals = -1, .on_curve = true}).points;
           const std::vector<std::vector<Bezier>> curves{part};
-          double near = measure_offset(curves, pts, radius, 0, tol, 0.05 * tol).min_distance + tool_r;
+          double near = measure_offset(curves, pts, {.r = radius, .resolution = 0.05 * tol}).min_distance + tool_r;
           // Under compensation the lead line's outer end is where the tool
           // centre stands before G41 and after G40: not offset.
           if (controller) {
             const Vec3 outer = lead == &in ? lead->front().front() : lead->back().back();
-            near = std::min(near, measure_offset(curves, std::vector<Vec3>{outer, outer}, radius, 0, tol, 0.05 * tol).min_distance);
+            near = std::min(near, measure_offset(curves, std::vector<Vec3>{outer, outer}, {.r = radius, .resolution = 0.05 * tol}).min_distance);
           }
           if (near < radius - tol)
             p.warnings.push_back(ent.label() + ": the lead-" + (lead == &in ? "in" : "out") +
@@ -614,7 +616,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
         // the true offset too: G01 moves that turn by less than 0.05 rad
         // are joined without a corner (LinuxCNC), which can stray further.
         const std::vector<std::vector<Bezier>> curves{part};
-        const OffsetReading m = measure_offset(curves, path, radius, side, tol, 0.01 * tol);
+        const OffsetReading m = measure_offset(curves, path, {.r = radius, .side = side, .middle = offset_by - radius, .resolution = 0.01 * tol});
         const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
         const double stray = std::max({lo - m.min_distance, m.max_distance - hi, m.coverage - tol});
         comp_reading = std::max({comp_reading, radius - m.min_distance, m.max_distance - radius, m.coverage});
@@ -627,37 +629,12 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
                                    "; a controller joins G01 moves that turn by less than 0.05 rad without a corner): use "
                                    "output \"arcs\" (arcs are compensated exactly) or compensation \"cam\"");
       }
-      // The last pass's path, measured against the part on its own.
+      // The last pass's path, measured against the part once every
+      // stretch of it is cut (below).
       if (c.measure && side != 0 && d + 1 == depths.size()) {
         const Vec3 from = quantize(s, dec);
-        auto path = controller ? compensated_path(p.moves, first_move, p.moves.size(), from, ts, te, side, tool_r, 0.001 * tol)
-                               : dense_path(p.moves, first_move, p.moves.size(), from, 0.001 * tol);
-        std::vector<std::vector<Bezier>> curves{part};
-        EntityReport probe;
-        c.measure_with(probe, [curves = std::move(curves), path = std::move(path), radius, side, tol, dev_side,
-                               label = r.label, bound = final_bound] {
-          OffsetReading m = measure_offset(curves, path, radius, side, tol, 0.01 * tol);
-          // Readings are good to the resolution: one above the proven bound
-          // is asked again ten times finer (a true excess survives).
-          auto reading = [&](const OffsetReading& x) {
-            return std::max({radius - x.min_distance, x.max_distance - radius, x.coverage});
-          };
-          if (reading(m) > *bound) {
-            const bool near = std::max(radius - m.min_distance, m.max_distance - radius) > *bound;
-            const OffsetReading f = measure_offset(curves, path, radius, side, tol, 0.001 * tol, near);
-            m.coverage = f.coverage;
-            if (near) m.min_distance = f.min_distance, m.max_distance = f.max_distance;
-          }
-          // With a one-sided band the reading is against its middle.
-          const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
-          const double slack = 0.03 * tol;  // the measurement's resolution and sampling
-          if (m.min_distance < lo - slack || m.max_distance > hi + slack || m.coverage > tol + slack)
-            throw std::logic_error("internal check failed: " + label + "'s tool path lies " + fmt_num(m.min_distance) +
-                                   " to " + fmt_num(m.max_distance) + " from the part (reaching the offset within " +
-                                   fmt_num(m.coverage) + "), outside [" + fmt_num(lo) + ", " + fmt_num(hi) + "]");
-          return reading(m);
-        });
-        r.measured = std::max(r.measured, probe.measured);
+        last_paths.push_back(controller ? compensated_path(p.moves, first_move, p.moves.size(), from, ts, te, side, tool_r, 0.001 * tol)
+                                        : dense_path(p.moves, first_move, p.moves.size(), from, 0.001 * tol));
       }
       if (controller) {
         // The lead-out's arc compensated, G40, then its line: the exit move.
@@ -678,6 +655,37 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   }
   r.bound = std::max(fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol), comp_reading);
   *final_bound = r.bound;
+  // The last pass measured against the part on its own: every stretch of
+  // the path in the band, and the true offset reached by one of them (a
+  // part whose offset falls apart is reached by its stretches together).
+  if (!last_paths.empty()) {
+    std::vector<std::vector<Bezier>> curves{part};
+    EntityReport probe;
+    c.measure_with(probe, [curves = std::move(curves), paths = std::move(last_paths), radius, side, tol, dev_side, middle = offset_by - radius,
+                           label = r.label, bound = final_bound] {
+      OffsetReading m = measure_offset(curves, paths, {.r = radius, .side = side, .middle = middle, .resolution = 0.01 * tol});
+      // Readings are good to the resolution: one above the proven bound
+      // is asked again ten times finer (a true excess survives).
+      auto reading = [&](const OffsetReading& x) {
+        return std::max({radius - x.min_distance, x.max_distance - radius, x.coverage});
+      };
+      if (reading(m) > *bound) {
+        const bool near = std::max(radius - m.min_distance, m.max_distance - radius) > *bound;
+        const OffsetReading f = measure_offset(curves, paths, {.r = radius, .side = side, .middle = middle, .resolution = 0.001 * tol, .distances = near});
+        m.coverage = f.coverage;
+        if (near) m.min_distance = f.min_distance, m.max_distance = f.max_distance;
+      }
+      // With a one-sided band the reading is against its middle.
+      const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
+      const double slack = 0.03 * tol;  // the measurement's resolution and sampling
+      if (m.min_distance < lo - slack || m.max_distance > hi + slack || m.coverage > tol + slack)
+        throw std::logic_error("internal check failed: " + label + "'s tool path lies " + fmt_num(m.min_distance) +
+                               " to " + fmt_num(m.max_distance) + " from the part (reaching the offset within " +
+                               fmt_num(m.coverage) + "), outside [" + fmt_num(lo) + ", " + fmt_num(hi) + "]");
+      return reading(m);
+    });
+    r.measured = std::max(r.measured, probe.measured);
+  }
   r.offset = radius;
   r.tool_width = cp.tool_diameter.value_or(0);
 }

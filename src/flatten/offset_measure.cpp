@@ -152,8 +152,17 @@ struct Index {
 
 }  // namespace
 
-OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const Vec3> path, double r,
-                             int side, double tolerance, double resolution, bool distances) {
+OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const Vec3> path,
+                             const OffsetMeasure& how) {
+  const std::vector<std::vector<Vec3>> one{std::vector<Vec3>(path.begin(), path.end())};
+  return measure_offset(curves, one, how);
+}
+
+OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const std::vector<Vec3>> paths,
+                             const OffsetMeasure& how) {
+  const double r = how.r, resolution = how.resolution;
+  const int side = how.side;
+  const bool distances = how.distances;
   OffsetReading out;
   std::vector<std::vector<CurveSample>> samples(curves.size());
   std::vector<std::pair<Vec3, Vec3>> segs;
@@ -192,41 +201,49 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
   auto within = [&](const Read& a, const Read& b, size_t s) {
     return std::max(curve.to(s, a.at), curve.to(s, b.at)) <= hi;
   };
-  Read prev{};
-  for (size_t i = 0; i < path.size(); ++i) {
-    const Vec3 p{path[i].x, path[i].y, 0};
-    if (i > 0) psegs.push_back({prev.at, p});
-    if (!distances) {
-      prev.at = p;
-      continue;
-    }
-    const Read cur = read(p);
-    if (i > 0 && !curve.segs.empty()) {
-      lo = std::min(lo, curve.nearest(prev.at, p));
-      todo.push_back({prev, cur});
-      while (!todo.empty()) {
-        const auto [a, b] = todo.back();
-        todo.pop_back();
-        if (dist(a.at, b.at) <= 2 * resolution || within(a, b, a.seg) || within(a, b, b.seg)) continue;
-        const Read m = read(lerp(a.at, b.at, 0.5));
-        if (within(a, b, m.seg)) continue;
-        todo.push_back({m, b});
-        todo.push_back({a, m});
+  for (const auto& path : paths) {
+    Read prev{};
+    for (size_t i = 0; i < path.size(); ++i) {
+      const Vec3 p{path[i].x, path[i].y, 0};
+      if (i > 0) psegs.push_back({prev.at, p});
+      if (!distances) {
+        prev.at = p;
+        continue;
       }
+      const Read cur = read(p);
+      if (i > 0 && !curve.segs.empty()) {
+        lo = std::min(lo, curve.nearest(prev.at, p));
+        todo.push_back({prev, cur});
+        while (!todo.empty()) {
+          const auto [a, b] = todo.back();
+          todo.pop_back();
+          if (dist(a.at, b.at) <= 2 * resolution || within(a, b, a.seg) || within(a, b, b.seg)) continue;
+          const Read m = read(lerp(a.at, b.at, 0.5));
+          if (within(a, b, m.seg)) continue;
+          todo.push_back({m, b});
+          todo.push_back({a, m});
+        }
+      }
+      prev = cur;
     }
-    prev = cur;
   }
   out.min_distance = distances ? lo : r;
   out.max_distance = distances ? hi : r;
   if (side != 0 && !curves.empty() && !psegs.empty()) {
+    // The material left: a curve point the tool reaches (its tool position
+    // at r + middle not folded away: no other stretch of the part nearer,
+    // less the sampled curve's own error) stands dist(c, path) - r from
+    // the tool's edge. Read against the part's surface, not the offset's
+    // points: where the offset turns a sharp inner corner, the path's
+    // corner may lie a little off the true offset's along the corner's
+    // bisector while the material it leaves is the same thin sliver.
     Index pg(std::move(psegs));
+    const double reach = r + how.middle;
     for (const CurveSample& s : samples[0]) {
       if (s.normal.x == 0 && s.normal.y == 0) continue;
-      const Vec3 q = s.p + s.normal * (side * r);
-      // Folded away (nearer than r to some other stretch of the part): the
-      // true offset has no point here.
-      if (curve.nearest(q) < r - tolerance) continue;
-      out.coverage = std::max(out.coverage, pg.nearest(q));
+      const Vec3 q = s.p + s.normal * (side * reach);
+      if (curve.nearest(q) < reach - 2 * resolution) continue;  // folded away
+      out.coverage = std::max(out.coverage, pg.nearest(s.p) - r);
     }
   }
   return out;

@@ -188,5 +188,40 @@ TEST(PartCut, EntityKeysOverrideTheJobs) {
   for (const auto& v : c.runs[0]) EXPECT_NEAR(dist_to_rect(v, 0, 0, 40, 30), 1, 0.0101);
 }
 
+// Letters of real artwork (tests/cam/data): the G's mouth is narrower
+// than a 6 mm tool, so outside it the offset falls apart into the outline
+// and the G's counter, cut as two stretches; the stretches together reach
+// the part wherever the tool fits, and material is said to be left where it
+// does not.
+TEST(PartCut, AnOffsetThatFallsApartIsCutWhereTheToolFits) {
+  const Job job = load_job(BEZCAM_SOURCE_DIR "/tests/cam/data/part-letter-g.json");
+  for (OutputMode mode : {OutputMode::lines, OutputMode::arcs}) {
+    ConvertOptions opt;
+    opt.output = mode;
+    Program p;
+    ASSERT_NO_THROW(p = build_program(job, load_machine_profile("generic"), opt)) << to_string(mode);
+    EXPECT_EQ(cuts(p).runs.size(), 2u);
+    bool said = false;
+    for (const auto& w : p.warnings) said = said || w.find("material is left at") != std::string::npos;
+    EXPECT_TRUE(said);
+    EXPECT_LE(p.entities[0].measured, 0.0103);
+  }
+}
+
+// An x cut inside with a 1 mm tool and the tolerance on the waste side: the
+// path's inner corners, half the tolerance away from the part, lie off the
+// true offset's corners along their bisectors by more than the tolerance
+// where the corners are sharp, while the material they leave is the
+// band's. The program is written: the independent measurement build_program
+// runs holds its path within [r, r + tolerance] of the part and the material
+// it leaves within the tolerance.
+TEST(PartCut, SharpInnerCornersOnTheWasteSideKeepTheBand) {
+  const Job job = load_job(BEZCAM_SOURCE_DIR "/tests/cam/data/part-letter-x.json");
+  Program p;
+  ASSERT_NO_THROW(p = build_program(job, load_machine_profile("generic"), ConvertOptions{}));
+  EXPECT_GT(p.entities[0].measured, 0.0);
+  EXPECT_LE(p.entities[0].measured, 0.0103);
+}
+
 }  // namespace
 }  // namespace bezcam

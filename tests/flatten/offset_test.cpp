@@ -42,7 +42,7 @@ std::vector<Vec3> dense(const OffsetResult& r, size_t chain = 0) {
 OffsetReading measure(const std::vector<Bezier>& part, const OffsetResult& res, double r, int side, double tol) {
   const std::vector<std::vector<Bezier>> curves{part};
   const auto path = dense(res);
-  return measure_offset(curves, path, r, side, tol, tol * 1e-2);
+  return measure_offset(curves, path, {.r = r, .side = side, .resolution = tol * 1e-2});
 }
 
 TEST(Offset, CircleOutsideAndInsideAreConcentricCircles) {
@@ -130,11 +130,11 @@ TEST(Offset, TheMeasurementCatchesAWrongOffset) {
   auto path = dense(res);
   for (size_t i = path.size() / 3; i < path.size() / 3 + 20; ++i) path[i] = path[i] * (23.05 / 23);
   const std::vector<std::vector<Bezier>> curves{part};
-  EXPECT_GE(measure_offset(curves, path, 3, -1, 0.01, 1e-4).deviation(3), 0.049);
+  EXPECT_GE(measure_offset(curves, path, {.r = 3, .side = -1, .resolution = 1e-4}).deviation(3), 0.049);
   // A missing stretch shows as coverage.
   auto cut = dense(res);
   cut.resize(cut.size() / 2);
-  EXPECT_GE(measure_offset(curves, cut, 3, -1, 0.01, 1e-4).coverage, 0.04);
+  EXPECT_GE(measure_offset(curves, cut, {.r = 3, .side = -1, .resolution = 1e-4}).coverage, 0.04);
 }
 
 // Long path segments, whose nearest and farthest points from the curve lie
@@ -162,7 +162,7 @@ TEST(Offset, TheMeasurementReadsLongSegmentsWithinItsResolution) {
         lo = std::min(lo, d);
         hi = std::max(hi, d);
       }
-    const OffsetReading m = measure_offset(curves, path, 3, 0, 0.1, res);
+    const OffsetReading m = measure_offset(curves, path, {.r = 3, .resolution = res});
     EXPECT_NEAR(m.min_distance, lo, 2 * res) << k;
     EXPECT_NEAR(m.max_distance, hi, 2 * res) << k;
     // A reading is a real point's distance to the sampled curve (chords within res of it).

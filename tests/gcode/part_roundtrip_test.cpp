@@ -84,6 +84,7 @@ struct Expect {
   double r = 0;
   int side = 1;
   bool waste = false, one_side = false;
+  double middle = 0;  // a one-sided band's middle, less r
 };
 
 Expect expected(const Job& job, const Entity& e, const MachineProfile& m) {
@@ -99,6 +100,10 @@ Expect expected(const Job& job, const Entity& e, const MachineProfile& m) {
   }
   x.waste = cp.tolerance_side == ToleranceSide::waste;
   x.one_side = cp.side == CutSide::on && cp.tolerance_side != ToleranceSide::both;
+  int away = x.waste || x.one_side ? 1 : 0;  // the band's side: +1 away from the part
+  if (!x.one_side && (cp.tolerance_side == ToleranceSide::left || cp.tolerance_side == ToleranceSide::right))
+    away = (cp.tolerance_side == ToleranceSide::left ? 1 : -1) == x.side ? 1 : -1;
+  x.middle = away * 0.5 * job.tolerance;
   return x;
 }
 
@@ -151,7 +156,7 @@ TEST(PartRoundTrip, EveryPartSampleInEveryModeKeepsItsBandFromThePart) {
             // Drop the plunge (straight down onto the path).
             const std::vector<MotionBlock> moves(run.begin() + 1, run.end());
             const auto path = xy_path(moves, 0.02);
-            const OffsetReading o = measure_offset(curves, path, x.r, x.side, tol, 5e-3 * tol);
+            const OffsetReading o = measure_offset(curves, path, {.r = x.r, .side = x.side, .middle = x.middle, .resolution = 5e-3 * tol});
             const double res = 1e-2 * tol;  // the reading's resolution, twice
             if (x.waste || x.one_side) {
               // Never into the part, even by the chord error.
@@ -223,7 +228,7 @@ TEST(PartRoundTrip, ControllerCompensationPutsTheToolCentreOnTheOffset) {
       ASSERT_TRUE(x.waste);
       const std::vector<std::vector<Bezier>> curves{e.curve.pieces};
       const std::vector<MotionBlock> moves(run.begin() + 1, run.end());  // not the plunge
-      const OffsetReading o = measure_offset(curves, xy_path(moves, 0.02), x.r, x.side, tol, 5e-3 * tol);
+      const OffsetReading o = measure_offset(curves, xy_path(moves, 0.02), {.r = x.r, .side = x.side, .middle = x.middle, .resolution = 5e-3 * tol});
       const double res = 1e-2 * tol;
       EXPECT_GE(o.min_distance, x.r - res) << e.label();
       EXPECT_LE(o.coverage, tol + res) << e.label();

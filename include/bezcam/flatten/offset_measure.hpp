@@ -21,20 +21,37 @@ namespace bezcam {
 struct OffsetReading {
   double min_distance = 0;  ///< smallest distance of a path point from the curve
   double max_distance = 0;  ///< largest
-  /// Largest distance from a point of the true offset (curve point + r on
-  /// the side, where that point is at least r - tolerance from the whole
-  /// curve, i.e. not folded away) to the path.
+  /// How much material the path leaves where its tool reaches the part:
+  /// the largest dist(c, path) - r over the curve's points c whose tool
+  /// position c + (r + middle) normal (on the side) is not folded away, i.e.
+  /// is at least r + middle from the whole curve (less the resolution); 0
+  /// when there is none. A stretch of the path missing, or cut short of a
+  /// corner, shows here.
   double coverage = 0;
   /// The reading against r: max(|min - r|, |max - r|, coverage).
   double deviation(double r) const;
 };
 
-/// `path`: the printed path as a dense polyline (XY). `side`: +1 left, -1
-/// right of the curve's direction (the side the true offset is on); 0: do
-/// not measure coverage. `curves`: several curves may make one part (the
-/// distances are to all of them). `distances` false: coverage only (min
-/// and max read r).
-OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const Vec3> path, double r,
-                             int side, double tolerance, double resolution, bool distances = true);
+struct OffsetMeasure {
+  double r = 0;     ///< the tool's offset from the curve
+  int side = 0;     ///< +1 left, -1 right of the curve's direction (where the tool is); 0: no coverage
+  /// Where the band of a one-sided tolerance has its middle, less r (half
+  /// the tolerance away from the part with "waste"): the tool reaches
+  /// where the offset at r + middle is not folded away. 0 for a two-sided band.
+  double middle = 0;
+  double resolution = 0;   ///< the curve's sampling and the readings' accuracy
+  bool distances = true;   ///< false: coverage only (min and max read r)
+};
+
+/// `paths`: the printed path as dense polylines (XY), one per separate
+/// stretch (the offset of a part that falls apart where it narrows): the
+/// distances of every stretch, and the material left by all of them
+/// together. `curves`: several curves may make one part (the distances are
+/// to all of them; the coverage is read along the first).
+OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const std::vector<Vec3>> paths,
+                             const OffsetMeasure& how);
+/// The same for a path in one stretch.
+OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const Vec3> path,
+                             const OffsetMeasure& how);
 
 }  // namespace bezcam
