@@ -217,6 +217,10 @@ namespace {
 struct Raw {
   ArcSeg seg;
   int source = -1;
+  /// On the other side of the curve: the offset of a primitive at -r, the
+  /// arc about a joint on that side, an open curve's end caps. Travelled so
+  /// that the curve is on the same hand as from the path's own pieces.
+  bool other = false;
 };
 
 Box3 box_of(const ArcSeg& s) {
@@ -345,6 +349,56 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
     }
   }
 
+  // The other side: where the curve doubles back on itself (a cusp, a spur
+  // of zero width, a curl) the points at r from A on the side asked include
+  // points of the other side's offsets and joints, and a piece of the path
+  // crosses from valid to invalid where it meets them. They are cut
+  // against like the rest, so that every piece is valid or invalid as a
+  // whole, and for a closed curve they are kept where they are valid and on
+  // the side's region (step 4).
+  {
+    auto other_off = [&](const ArcSeg& s) {
+      if (!s.arc) {
+        const Vec3 t = s.tangent(0), nn{t.y * side * r, -t.x * side * r, 0};
+        return ArcSeg::line(s.a + nn, s.b + nn);
+      }
+      const double k = s.sweep > 0 ? s.radius + side * r : s.radius - side * r;
+      ArcSeg o = s;
+      o.radius = std::abs(k);
+      if (k < 0) o.a0 += kPi;
+      o.a = polar(o.c, o.radius, o.a0);
+      o.b = polar(o.c, o.radius, o.a0 + o.sweep);
+      return o;
+    };
+    auto about = [&](const Vec3& v, const Vec3& from, double sweep) {
+      const Vec3 to = polar(v, r, std::atan2(from.y - v.y, from.x - v.x) + sweep);
+      ArcSeg j = ArcSeg::make_arc(from, to, v, sweep);
+      j.radius = r;
+      return j;
+    };
+    std::vector<Raw> others;
+    for (size_t i = 0; i < n; ++i) {
+      const ArcSeg o = other_off(A[i]);
+      if (o.length() > eps) others.push_back({o.reversed(), -1, true});
+      if (i + 1 < n || closed) {
+        const ArcSeg& nx = A[(i + 1) % n];
+        const Vec3 v = A[i].b, t0 = A[i].tangent(1), t1 = nx.tangent(0);
+        const double turn = std::atan2(t0.x * t1.y - t0.y * t1.x, t0.x * t1.x + t0.y * t1.y);
+        if (std::abs(turn) * r > eps) {
+          const Vec3 m{t0.y * side * r, -t0.x * side * r, 0};  // the other side's normal at the joint's start
+          others.push_back({about(v, v + m, turn).reversed(), -1, true});
+        }
+      }
+    }
+    if (!closed) {
+      // The caps round the two ends, from the other side to the side asked.
+      const Vec3 t0 = A.front().tangent(0), t1 = A.back().tangent(1);
+      others.push_back({about(A.front().a, A.front().a + Vec3{t0.y * side * r, -t0.x * side * r, 0}, -side * kPi), -1, true});
+      others.push_back({about(A.back().b, A.back().b + Vec3{-t1.y * side * r, t1.x * side * r, 0}, -side * kPi), -1, true});
+    }
+    raw.insert(raw.end(), others.begin(), others.end());
+  }
+
   // 4. Cut at every crossing (boxes sorted by x to skip far pairs).
   const size_t m = raw.size();
   std::vector<Box3> boxes(m);
@@ -386,6 +440,44 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
     return true;
   };
 
+  // The side's region of a closed curve: a valid point is at least r from
+  // A, so A's arcs may be replaced by chords with a sagitta under r / 2
+  // without moving it across; inside is a non-zero winding number (by the
+  // crossings of a ray). The region asked is the inside when the side is
+  // the left of a counter-clockwise curve or the right of a clockwise one.
+  // A curve that bounds no area has no region: the other side's pieces
+  // then cut the path and are not kept, as for an open curve.
+  std::vector<Vec3> region;
+  bool want_inside = false;
+  if (closed) {
+    for (const ArcSeg& a : A) {
+      region.push_back(a.a);
+      if (!a.arc) continue;
+      const double most = a.radius <= r / 4 ? kPi / 2 : std::min(kPi / 2, 2 * std::acos(1 - r / (2 * a.radius)));
+      const int parts = std::max(1, static_cast<int>(std::ceil(std::abs(a.sweep) / most)));
+      for (int q = 1; q < parts; ++q) region.push_back(a.point(static_cast<double>(q) / parts));
+    }
+    double area = 0;
+    for (size_t i = 0; i < region.size(); ++i) {
+      const Vec3& p = region[i];
+      const Vec3& q = region[(i + 1) % region.size()];
+      area += p.x * q.y - q.x * p.y;
+    }
+    if (std::abs(area) <= 1e-9 * scale * scale) region.clear();
+    want_inside = (side > 0) == (area > 0);
+  }
+  auto in_region = [&](const Vec3& p) {
+    int w = 0;
+    for (size_t i = 0; i < region.size(); ++i) {
+      const Vec3& a = region[i];
+      const Vec3& b = region[(i + 1) % region.size()];
+      if ((a.y > p.y) == (b.y > p.y)) continue;
+      const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+      if (x > p.x) w += b.y > a.y ? 1 : -1;
+    }
+    return (w != 0) == want_inside;
+  };
+
   struct Piece {
     ArcSeg seg;
     int source;
@@ -405,7 +497,8 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
       const double s0 = c[k], s1 = c[k + 1];
       if ((s1 - s0) * len <= eps) continue;
       const ArcSeg part = s.sub(s0, s1);
-      const bool ok = valid(part.point(0.5)) && (part.length() < 1e3 * eps || (valid(part.point(0.25)) && valid(part.point(0.75))));
+      bool ok = valid(part.point(0.5)) && (part.length() < 1e3 * eps || (valid(part.point(0.25)) && valid(part.point(0.75))));
+      if (ok) ok = region.empty() ? !raw[i].other : in_region(part.point(0.5));
       if (ok) kept.push_back({part, raw[i].source, s0, s1});
       else if (raw[i].source >= 0) clipped.push_back({raw[i].source, {s0, s1}});
     }

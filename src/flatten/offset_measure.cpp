@@ -146,6 +146,26 @@ struct Index {
     return std::sqrt(search([&](const auto& s) { return seg_seg_d2(p, q, s.first, s.second); },
                             [&](const Box3& b) { return box_box_d2(pq, b); }));
   }
+  /// The winding number about p of the closed polyline the first `count`
+  /// segments make (crossings of the ray from p towards +x), chunks whose
+  /// box the ray misses skipped.
+  int winding(const Vec3& p, size_t count) const {
+    int w = 0;
+    auto missed = [&](const Box3& b) { return b.lo.y > p.y || b.hi.y <= p.y || b.hi.x < p.x; };
+    for (size_t g = 0; g < groups.size() && g * kChunk * kChunk < count; ++g) {
+      if (missed(groups[g])) continue;
+      for (size_t c = g * kChunk; c < std::min(boxes.size(), (g + 1) * kChunk) && c * kChunk < count; ++c) {
+        if (missed(boxes[c])) continue;
+        for (size_t i = c * kChunk; i < std::min(count, (c + 1) * kChunk); ++i) {
+          const Vec3& a = segs[i].first;
+          const Vec3& b = segs[i].second;
+          if ((a.y > p.y) == (b.y > p.y)) continue;
+          if (a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x) w += b.y > a.y ? 1 : -1;
+        }
+      }
+    }
+    return w;
+  }
   /// Distance from p to segment i.
   double to(size_t i, const Vec3& p) const { return std::sqrt(seg_d2(p, segs[i].first, segs[i].second)); }
 };
@@ -166,12 +186,14 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
   OffsetReading out;
   std::vector<std::vector<CurveSample>> samples(curves.size());
   std::vector<std::pair<Vec3, Vec3>> segs;
+  size_t ring_segs = 0;  // the first curve's segments, first in the index
   for (size_t c = 0; c < curves.size(); ++c) {
     for (const Bezier& b : curves[c]) {
       const size_t first = samples[c].size();
       sample_curve(b, resolution, samples[c]);
       for (size_t i = first + 1; i < samples[c].size(); ++i) segs.push_back({samples[c][i - 1].p, samples[c][i].p});
     }
+    if (c == 0) ring_segs = segs.size();
   }
   Index curve(std::move(segs));
   // The path's distances from the curve's polyline. The smallest is exact:
@@ -239,10 +261,27 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
     // bisector while the material it leaves is the same thin sliver.
     Index pg(std::move(psegs));
     const double reach = r + how.middle;
+    // A closed curve bounds a region, and the tool is on one side of it:
+    // inside (a non-zero winding number of the sampled curve) where the side
+    // is the left of a counter-clockwise curve or the right of a clockwise
+    // one. A tool position on the other side (across a wall of the part
+    // where the curve doubles back on itself, at a cusp or a spur of zero
+    // width) is not one the tool reaches.
+    const auto& ring = samples[0];
+    const bool region = ring.size() > 2 && dist(ring.front().p, ring.back().p) <= resolution;
+    double area = 0;
+    for (size_t i = 0; region && i < ring.size(); ++i) {
+      const Vec3& a = ring[i].p;
+      const Vec3& b = ring[(i + 1) % ring.size()].p;
+      area += a.x * b.y - b.x * a.y;
+    }
+    const bool want_inside = (side > 0) == (area > 0);
+    auto inside = [&](const Vec3& q) { return curve.winding(q, ring_segs) != 0; };
     for (const CurveSample& s : samples[0]) {
       if (s.normal.x == 0 && s.normal.y == 0) continue;
       const Vec3 q = s.p + s.normal * (side * reach);
       if (curve.nearest(q) < reach - 2 * resolution) continue;  // folded away
+      if (region && area != 0 && inside(q) != want_inside) continue;  // across a wall
       out.coverage = std::max(out.coverage, pg.nearest(s.p) - r);
     }
   }
