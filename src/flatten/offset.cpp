@@ -597,6 +597,37 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
       chain.erase(chain.begin());
     }
     if (loop && !chain.empty()) chain.back().b = chain.front().a;
+    // A loop of the chain that closes on itself within the fit is cut
+    // out: at a small kink of A the two offsets overshoot their crossing,
+    // and the overshoots with the join between them are valid within the
+    // floating-point margin, so the chain ran past the crossing, back and
+    // on again. Every point taken out is a valid one, and the chain
+    // stays continuous (the loop starts and ends at one point). A closed
+    // chain is read twice, from its start and from its middle, for a loop
+    // over its start.
+    auto excise = [&](std::vector<ArcSeg>& ch) {
+      std::vector<ArcSeg> out;
+      for (ArcSeg s : ch) {
+        if (!out.empty()) s.a = out.back().b;
+        out.push_back(s);
+        double around = 0;
+        for (size_t q = out.size(); q-- > 0;) {
+          around += out[q].length();
+          if (around > opt.fit) break;
+          if (dist(out[q].a, out.back().b) <= link) {
+            out.erase(out.begin() + static_cast<std::ptrdiff_t>(q), out.end());
+            break;
+          }
+        }
+      }
+      ch = std::move(out);
+    };
+    excise(chain);
+    if (loop && chain.size() > 2) {
+      std::rotate(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(chain.size() / 2), chain.end());
+      excise(chain);
+      if (!chain.empty()) chain.back().b = chain.front().a;
+    }
     double len = 0;
     for (const auto& s : chain) len += s.length();
     // A sliver shorter than the fit is a crumb of a crossing (at a small
