@@ -19,6 +19,7 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
   Vec3 from = quantize(pieces.front().front(), c.decimals);
   if (path.empty()) path.push_back(from);
   auto push_line = [&](const Vec3& to) {
+    if (to == path.back()) return;  // a piece shorter than the rounding: the tool is there already
     LineMove l;
     l.to = cut_point(c, to);
     l.feed = c.params.feed;

@@ -223,5 +223,67 @@ TEST(PartCut, SharpInnerCornersOnTheWasteSideKeepTheBand) {
   EXPECT_LE(p.entities[0].measured, 0.0103);
 }
 
+// Wasted blocks: cutting moves that go less than the rounding unit, and
+// moves that turn back the way the previous one came (by more than 150
+// degrees where they meet). An offset part's path has neither: at a small
+// kink of its arc spline the two offsets overshoot their crossing by a
+// hair, and a path that ran past the crossing, back and on again would
+// print three moves of a micrometre or two doubling back on each other.
+struct Wasted {
+  size_t moves = 0, short_moves = 0, reversing = 0;
+};
+Wasted wasted_blocks(const Program& p, double unit) {
+  Wasted w;
+  Vec3 at, last_dir;  // where the tool is, the direction the last XY move ended in
+  bool known = false, cutting = false;
+  auto unit_dir = [](const Vec3& v) {
+    const double l = std::hypot(v.x, v.y);
+    return l > 0 ? Vec3{v.x / l, v.y / l, 0} : Vec3{};
+  };
+  for (const Move& mv : p.moves) {
+    const Motion* m = motion_of(mv);
+    if (!m) continue;
+    const bool rapid = std::holds_alternative<RapidMove>(mv.what);
+    const Vec3 d{m->to.x - at.x, m->to.y - at.y, 0};
+    if (rapid || !known || (d.x == 0 && d.y == 0)) {  // a rapid, a plunge, a tab's rise
+      cutting = cutting && !rapid && known && m->to.z == at.z;
+      if (!rapid && known && d.x == 0 && d.y == 0 && m->to.z == at.z) ++w.short_moves;  // goes nowhere
+      at = m->to;
+      known = true;
+      continue;
+    }
+    Vec3 d0 = unit_dir(d), d1 = d0;
+    if (const auto* a = std::get_if<ArcMove>(&mv.what)) {
+      const double s = a->ccw ? 1 : -1;
+      d0 = unit_dir(Vec3{-(at.y - a->center.y) * s, (at.x - a->center.x) * s, 0});
+      d1 = unit_dir(Vec3{-(a->to.y - a->center.y) * s, (a->to.x - a->center.x) * s, 0});
+    }
+    ++w.moves;
+    if (std::hypot(d.x, d.y) < unit * (1 - 1e-6)) ++w.short_moves;  // the unit itself, less the doubles' error
+    if (cutting && d0.x * last_dir.x + d0.y * last_dir.y < std::cos(150 * std::numbers::pi / 180)) ++w.reversing;
+    last_dir = d1;
+    cutting = true;
+    at = m->to;
+  }
+  return w;
+}
+
+TEST(PartCut, AnOffsetPathHasNoWastedBlocks) {
+  MachineProfile m = load_machine_profile("linuxcnc");  // 4 decimals: a unit of 0.1 micrometre
+  ASSERT_EQ(m.decimals_mm, 4);
+  for (const char* sample : {"part-cam-notch", "part-lettering", "part-flange"}) {
+    const Job job = load_job(std::string(BEZCAM_SOURCE_DIR "/samples/") + sample + ".json");
+    for (OutputMode mode : {OutputMode::lines, OutputMode::arcs}) {
+      ConvertOptions opt;
+      opt.output = mode;
+      opt.measure = false;
+      const Wasted w = wasted_blocks(build_program(job, m, opt), 1e-4);
+      EXPECT_GT(w.moves, 20u) << sample;
+      EXPECT_EQ(w.short_moves, 0u) << sample << " " << to_string(mode);
+      EXPECT_EQ(w.reversing, 0u) << sample << " " << to_string(mode);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bezcam
