@@ -527,19 +527,36 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   auto final_bound = std::make_shared<double>(0);
   // The last pass of each stretch of the path, as the tool's centre goes.
   std::vector<std::vector<Vec3>> last_paths;
-  for (size_t k = 0; k < chains.size(); ++k) {
-    const auto& chain = chains[k];
+  // Tabs go on each stretch of the path that holds them. Where the offset
+  // falls apart (a tool wider than a gap of the part), a stretch too short
+  // for them is cut without tabs and said; the tabs are refused when even
+  // the longest stretch cannot hold them.
+  std::vector<double> chain_len;
+  for (const auto& chain : chains) {
     double len = 0;
     for (const auto& b : chain) len += length(b);
+    chain_len.push_back(len);
+  }
+  const double longest = *std::max_element(chain_len.begin(), chain_len.end());
+  const double tab_span = cp.tabs ? cp.tabs->width + (cp.tool_diameter ? *cp.tool_diameter : 0) : 0;
+  if (cp.tabs && cp.tabs->count * tab_span >= longest)
+    fail("tabs", std::to_string(cp.tabs->count) + " tabs of " + fmt_num(tab_span) +
+                     " (width + tool diameter) do not fit on a path " + fmt_num(std::round(longest * 1000) / 1000) +
+                     " long" + (chains.size() > 1 ? " (the longest of its " + std::to_string(chains.size()) + " stretches)" : "") +
+                     "; use fewer or narrower tabs");
+  for (size_t k = 0; k < chains.size(); ++k) {
+    const auto& chain = chains[k];
+    const double len = chain_len[k];
     // Tabs: spans of the path where deep passes rise; the tool's centre
     // rises over the tab's width plus the tool's diameter.
     std::vector<double> cuts;
-    if (cp.tabs) {
-      const double span = cp.tabs->width + (cp.tool_diameter ? *cp.tool_diameter : 0);
-      if (cp.tabs->count * span >= len)
-        fail("tabs", std::to_string(cp.tabs->count) + " tabs of " + fmt_num(span) +
-                         " (width + tool diameter) do not fit on a path " + fmt_num(std::round(len * 1000) / 1000) +
-                         " long; use fewer or narrower tabs");
+    if (cp.tabs && cp.tabs->count * tab_span >= len) {
+      p.warnings.push_back(ent.label() + ": a stretch of the path " + fmt_num(std::round(len * 1000) / 1000) + " long from " +
+                           where(chain.front().front()) + " (the offset falls apart where the part is narrower than the tool) "
+                           "is too short for " + std::to_string(cp.tabs->count) + " tabs of " + fmt_num(tab_span) +
+                           " (width + tool diameter): it is cut without tabs");
+    } else if (cp.tabs) {
+      const double span = tab_span;
       for (int t = 0; t < cp.tabs->count; ++t) {
         const double mid = len * (t + 0.5) / cp.tabs->count;
         cuts.push_back(mid - span / 2);
@@ -586,7 +603,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       if (controller) p.moves.push_back({CompensationMove{side, cp.tool, tool_r}, entity});
       if (!in.empty()) cut(in, z, 0.5 * tol);
       const size_t first_move = p.moves.size();
-      const bool tabbed = cp.tabs && z < tab_top;
+      const bool tabbed = !cuts.empty() && z < tab_top;
       for (size_t run = 0; run < runs.size(); ++run) {
         if (runs[run].empty()) continue;
         const bool on_tab = tabbed && run % 2 == 1;

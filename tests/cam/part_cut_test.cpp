@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <fstream>
+#include <iterator>
 #include <set>
 
 #include "bezcam/cam/program.hpp"
@@ -205,6 +207,39 @@ TEST(PartCut, AnOffsetThatFallsApartIsCutWhereTheToolFits) {
     for (const auto& w : p.warnings) said = said || w.find("material is left at") != std::string::npos;
     EXPECT_TRUE(said);
     EXPECT_LE(p.entities[0].measured, 0.0103);
+  }
+}
+
+// Tabs on a part whose offset falls apart: they go on the G's outline
+// (the stretch that frees the part), and the stretch in its counter, too
+// short for them, is cut without them and said; refused only when no
+// stretch holds them, naming the longest.
+TEST(PartCut, TabsGoOnTheStretchesThatHoldThem) {
+  std::ifstream in(BEZCAM_SOURCE_DIR "/tests/cam/data/part-letter-g.json");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string side = R"("side": "outside")";
+  ASSERT_NE(text.find(side), std::string::npos);
+  auto with = [&](const std::string& tabs) {
+    std::string t = text;
+    t.replace(t.find(side), side.size(), side + R"(, "step_down": 1, "tabs": )" + tabs);
+    return parse_job(t, "part-letter-g.json");
+  };
+  const Program p = build_program(with(R"({"count": 2, "width": 4, "height": 1})"), load_machine_profile("generic"), ConvertOptions{});
+  bool said = false;
+  for (const auto& w : p.warnings) said = said || w.find("is cut without tabs") != std::string::npos;
+  EXPECT_TRUE(said);
+  const Cut c = cuts(p);
+  ASSERT_EQ(c.runs.size(), 4u);  // two passes of two stretches
+  int rises = 0;
+  for (const auto& run : c.runs)
+    for (size_t i = 1; i < run.size(); ++i) rises += run[i].z > run[i - 1].z;
+  EXPECT_EQ(rises, 2);  // the outline's last pass only
+  try {
+    (void)build_program(with(R"({"count": 20, "width": 4, "height": 1})"), load_machine_profile("generic"), ConvertOptions{});
+    ADD_FAILURE() << "20 tabs of 10 on a path of 164";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "job.cut");
+    EXPECT_NE(std::string(e.what()).find("the longest of its 2 stretches"), std::string::npos) << e.what();
   }
 }
 
