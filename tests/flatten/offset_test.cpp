@@ -2,6 +2,7 @@
 // (offset_measure.hpp), never by the code that built it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -167,6 +168,45 @@ TEST(Offset, TheMeasurementReadsLongSegmentsWithinItsResolution) {
     EXPECT_NEAR(m.max_distance, hi, 2 * res) << k;
     // A reading is a real point's distance to the sampled curve (chords within res of it).
     EXPECT_LE(m.max_distance, hi + res) << k;
+  }
+}
+
+// The smallest distance from p to the polygon's edges (closed).
+double to_polygon(const std::vector<Vec3>& poly, const Vec3& p) {
+  double best = HUGE_VAL;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Vec3 a = poly[i], b = poly[(i + 1) % poly.size()], d = b - a;
+    const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
+    best = std::min(best, dist(p, a + d * t));
+  }
+  return best;
+}
+
+// Artwork whose outline turns back on itself: a spur of zero width on the
+// top edge (the edge comes in below it, turns back at the tip, returns a
+// hair below the top, crossing the way in, and turns back again along the
+// top), the shape of a glitch in document-open-symbolic.svg. The other
+// side of the return stroke faces the pocket there, so the offset inside
+// must be cut against that side too: every point of the path within the fit
+// of r (the path used to run 0.024 inside it), one closed path.
+TEST(Offset, ASpurThatTurnsBackOnItselfKeepsThePathInTheBand) {
+  const std::vector<Vec3> pts{{0, 0},         {100, 0},        {100, 60},       {79.6, 79.13}, {73.518, 80.186},
+                              {73.373, 80.169}, {74.024, 80.193}, {51.9, 80.193}, {0, 80.193}};
+  const auto part = polygon(pts);
+  ASSERT_GT(signed_area(part), 0);
+  for (double r : {0.5, 1.5, 3.0}) {
+    const auto res = offset_curve(part, true, {r, 1, 0.0045});
+    ASSERT_EQ(res.chains.size(), 1u) << r;
+    EXPECT_TRUE(res.closed[0]) << r;
+    double lo = HUGE_VAL, hi = 0;
+    for (const ArcSeg& s : res.chains[0])
+      for (int k = 0; k <= 64; ++k) {
+        const double d = to_polygon(pts, s.point(k / 64.0));
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+      }
+    EXPECT_GE(lo, r - res.bound) << r;
+    EXPECT_LE(hi, r + res.bound) << r;
   }
 }
 
