@@ -623,6 +623,24 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
       ch = std::move(out);
     };
     excise(chain);
+    // A chain that comes back to its start and runs on into such crumbs
+    // (or starts in them) is closed where it comes back.
+    if (!loop && chain.size() > 2) {
+      double around = 0;
+      for (size_t q = chain.size() - 1; q > 1 && (around += chain[q].length()) <= opt.fit; --q)
+        if (dist(chain[q - 1].b, chain.front().a) <= link) {
+          chain.erase(chain.begin() + static_cast<std::ptrdiff_t>(q), chain.end());
+          loop = true;
+          break;
+        }
+      around = 0;
+      for (size_t q = 0; !loop && q + 2 < chain.size() && (around += chain[q].length()) <= opt.fit; ++q)
+        if (dist(chain[q + 1].a, chain.back().b) <= link) {
+          chain.erase(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(q + 1));
+          loop = true;
+        }
+      if (loop) chain.back().b = chain.front().a;
+    }
     if (loop && chain.size() > 2) {
       std::rotate(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(chain.size() / 2), chain.end());
       excise(chain);
