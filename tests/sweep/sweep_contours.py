@@ -11,8 +11,11 @@ sweep, and its job is saved under --found for a bug report.
 
 The programs written are read back (G-code words, no bezcam code) and two
 kinds of wasted block are counted: moves shorter than the rounding unit
-(1e-decimals) and moves that run back the way the previous one came (a
-turn of more than --reverse-deg degrees where the two meet).
+(1e-decimals) and moves that double back (a turn of more than
+--reverse-deg degrees where one of the two moves is at most two units
+long; between longer moves such a turn is a sharp corner, counted apart).
+The report of each program is read too: a measured deviation above the
+proven bound is counted and its job kept under --found.
 
 Drawings: SVG files under /usr/share (icons, logos, documentation figures
 of the machine's Debian packages) scaled so that their larger side is
@@ -276,8 +279,9 @@ def main():
             json.dump(job, f)
         machine = "fanuc" if out == "nurbs" else "generic"
         t = time.monotonic()
-        r = subprocess.run([args.bezcam, "convert", jf, "--output", out, "--machine", machine, "-o", nc, "-q"],
-                           capture_output=True, text=True, env=env)
+        rep = os.path.join(tmp, f"job{n}.report.json")
+        r = subprocess.run([args.bezcam, "convert", jf, "--output", out, "--machine", machine, "-o", nc, "-q",
+                            "--report", rep], capture_output=True, text=True, env=env)
         took = time.monotonic() - t
         res = {"drawing": d, "contour": i, "id": e.get("id", ""), "side": side, "tool": tool, "tolerance_side": ts,
                "output": out, "exit": r.returncode, "time": took, "stderr": r.stderr.strip()[-600:]}
@@ -287,6 +291,15 @@ def main():
             dec = 3 if units == "mm" else 4  # generic and fanuc alike
             res["short"], res["back"], res["sharp"] = wasted_blocks(text, 10.0 ** -dec, args.reverse_deg)
             os.remove(nc)
+            with open(rep) as f:
+                ent = json.load(f)["entities"][0]
+            res["measured"], res["proven"] = ent["measured_deviation"], ent["proven_bound"]
+            os.remove(rep)
+            if res["measured"] > res["proven"] and args.found:
+                name = f"above-bound-{os.path.basename(d)}-{i}-{side}-{tool:g}-{ts}-{out}.json"
+                with open(os.path.join(args.found, name), "w") as f:
+                    json.dump(dict(job, _run={"output": out, "machine": machine, "drawing": d, "contour": i,
+                                              "measured": res["measured"], "proven": res["proven"]}), f, indent=1)
         m = re.search(r"error id: ([a-z]+\.[a-z.\-]+)", r.stderr)
         res["error_id"] = m.group(1) if m else ""
         if r.returncode not in (0, 2) or (r.returncode == 2 and res["error_id"] != "job.cut"):
@@ -318,6 +331,9 @@ def main():
     for k in sorted(by_exit):
         print(f"  exit {k}: {by_exit[k]}")
     sharp = sum(r["sharp"] for r in ok)
+    above = [r for r in ok if r["measured"] > r["proven"]]
+    print(f"  measured deviation above the proven bound: {len(above)} programs"
+          + (f" (largest excess {max(r['measured'] - r['proven'] for r in above):.3g})" if above else ""))
     print(f"  programs written {len(ok)}: moves shorter than the rounding unit {short}, doubling back {back} "
           f"(in {len([r for r in ok if r['short'] + r['back']])} programs); sharp corners turning more than "
           f"{args.reverse_deg:g} degrees {sharp}")
@@ -331,7 +347,7 @@ def main():
                       f"{r['tolerance_side']} {r['output']}: {r['short']} short, {r['back']} doubling back")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"runs": len(results), "elapsed_s": elapsed, "by_exit": by_exit, "short": short, "back": back, "sharp": sharp,
+            json.dump({"runs": len(results), "elapsed_s": elapsed, "by_exit": by_exit, "short": short, "back": back, "sharp": sharp, "above_bound": above,
                        "failures": bad, "wasted": [r for r in ok if r["short"] + r["back"]]}, f, indent=1)
     failed = bool(bad) or (args.max_wasted >= 0 and bool(wasted_progs))
     return 1 if failed else 0
