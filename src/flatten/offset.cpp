@@ -297,6 +297,11 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
     return o;
   };
   const size_t n = A.size();
+  // The sweep of the arc about each joint (after A[i]; 0 where the offsets
+  // meet): the other side's arc turns the same way, so that at a joint
+  // where the curve turns back exactly (half a turn either way) the two
+  // make the whole circle.
+  std::vector<double> joint_turn(n, 0.0);
   for (size_t i = 0; i < n; ++i) {
     ArcSeg o = off(A[i]);
     if (!raw.empty()) {
@@ -309,6 +314,7 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
         ArcSeg j = ArcSeg::make_arc(e, o.a, v, wrap(a1 - a0));
         j.radius = r;
         raw.push_back({j, -1});
+        joint_turn[i - 1] = j.sweep;
       }
     }
     raw.push_back({o, static_cast<int>(i)});
@@ -346,6 +352,7 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
       ArcSeg j = ArcSeg::make_arc(e, s0, v, wrap(a1 - a0));
       j.radius = r;
       raw.push_back({j, -1});
+      joint_turn[n - 1] = j.sweep;
     }
   }
 
@@ -381,9 +388,8 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
       const ArcSeg o = other_off(A[i]);
       if (o.length() > eps) others.push_back({o.reversed(), -1, true});
       if (i + 1 < n || closed) {
-        const ArcSeg& nx = A[(i + 1) % n];
-        const Vec3 v = A[i].b, t0 = A[i].tangent(1), t1 = nx.tangent(0);
-        const double turn = std::atan2(t0.x * t1.y - t0.y * t1.x, t0.x * t1.x + t0.y * t1.y);
+        const Vec3 v = A[i].b, t0 = A[i].tangent(1);
+        const double turn = joint_turn[i];
         if (std::abs(turn) * r > eps) {
           const Vec3 m{t0.y * side * r, -t0.x * side * r, 0};  // the other side's normal at the joint's start
           others.push_back({about(v, v + m, turn).reversed(), -1, true});
