@@ -210,5 +210,38 @@ TEST(Offset, ASpurThatTurnsBackOnItselfKeepsThePathInTheBand) {
   }
 }
 
+// A rectangle whose outline holds cubics that run down a line and back up
+// it (control points on the line: the curve turns back exactly, half a
+// turn, inside the piece), as preferences-system-network-proxy-symbolic.svg
+// draws it. Outside, the path keeps its band whatever the tool.
+TEST(Offset, ACubicThatRunsBackAlongItsLineKeepsTheBand) {
+  const std::vector<Bezier> part{
+      Bezier::make({{0, 37.402}, {31.168, 37.402}}),
+      Bezier::make({{31.168, 37.402}, {31.168, 35.426}, {31.168, 39.372}, {31.168, 37.402}}),
+      Bezier::make({{31.168, 37.402}, {31.168, 0}}),
+      Bezier::make({{31.168, 0}, {0, 0}}),
+      Bezier::make({{0, 0}, {0, 0}, {0, -0.274}, {0, 0}}),
+      Bezier::make({{0, 0}, {0, 37.402}}),
+      Bezier::make({{0, 37.402}, {0, 37.676}, {0, 37.402}, {0, 37.402}}),
+  };
+  // The curve as a fine polyline (within 1e-6 of it), for the distances.
+  const std::vector<Vec3> fine = flatten(part, {1e-6, -1}).points;
+  ASSERT_LT(signed_area(part), 0);  // clockwise: the outside is on the left
+  for (double r : {0.5, 1.5, 3.0}) {
+    const auto res = offset_curve(part, true, {r, 1, 0.0045});
+    ASSERT_FALSE(res.chains.empty()) << r;
+    double lo = HUGE_VAL, hi = 0;
+    for (const auto& chain : res.chains)
+      for (const ArcSeg& s : chain)
+        for (int k = 0; k <= 64; ++k) {
+          const double d = to_polygon(fine, s.point(k / 64.0));
+          lo = std::min(lo, d);
+          hi = std::max(hi, d);
+        }
+    EXPECT_GE(lo, r - res.bound - 1e-6) << r;
+    EXPECT_LE(hi, r + res.bound + 1e-6) << r;
+  }
+}
+
 }  // namespace
 }  // namespace bezcam
