@@ -35,6 +35,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 
@@ -207,6 +208,7 @@ def main():
     ap.add_argument("--reverse-deg", type=float, default=150.0)
     ap.add_argument("--max-wasted", type=int, default=-1, help="fail when a program holds more wasted blocks (-1: count only)")
     ap.add_argument("--json", default="", help="write the figures (and every failure) here")
+    ap.add_argument("--log", default="", help="append each run's result here as it ends (one JSON line)")
     args = ap.parse_args()
 
     env = dict(os.environ, BEZCAM_MACHINES=args.machines)
@@ -260,6 +262,7 @@ def main():
                         runs.append((d, i, units, e, side, tool, ts, out))
 
     tmp = tempfile.mkdtemp(prefix="bezcam-sweep-")
+    log_lock = threading.Lock()
     if args.found:
         os.makedirs(args.found, exist_ok=True)
 
@@ -308,6 +311,9 @@ def main():
                 with open(os.path.join(args.found, name), "w") as f:
                     json.dump(dict(job, _run={"output": out, "machine": machine, "drawing": d, "contour": i}), f, indent=1)
         os.remove(jf)
+        if args.log:
+            with log_lock, open(args.log, "a") as f:
+                f.write(json.dumps(res) + "\n")
         return res
 
     with ThreadPoolExecutor(max_workers=max(1, args.workers)) as ex:
