@@ -673,8 +673,9 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   r.bound = std::max(fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol), comp_reading);
   *final_bound = r.bound;
   // The last pass measured against the part on its own: every stretch of
-  // the path in the band, and the true offset reached by one of them (a
-  // part whose offset falls apart is reached by its stretches together).
+  // the path in the band, and the material left where the tool reaches
+  // read over all of them (a part whose offset falls apart is reached by
+  // its stretches together).
   if (!last_paths.empty()) {
     std::vector<std::vector<Bezier>> curves{part};
     EntityReport probe;
@@ -697,8 +698,8 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       const double slack = 0.03 * tol;  // the measurement's resolution and sampling
       if (m.min_distance < lo - slack || m.max_distance > hi + slack || m.coverage > tol + slack)
         throw std::logic_error("internal check failed: " + label + "'s tool path lies " + fmt_num(m.min_distance) +
-                               " to " + fmt_num(m.max_distance) + " from the part (reaching the offset within " +
-                               fmt_num(m.coverage) + "), outside [" + fmt_num(lo) + ", " + fmt_num(hi) + "]");
+                               " to " + fmt_num(m.max_distance) + " from the part (leaving up to " + fmt_num(m.coverage) +
+                               " of material where it reaches), outside [" + fmt_num(lo) + ", " + fmt_num(hi) + "]");
       return reading(m);
     });
     r.measured = std::max(r.measured, probe.measured);
