@@ -6,8 +6,9 @@ and is converted by the `bezcam` program with `side` outside and inside,
 several tool diameters, `tolerance_side` both and waste, and the output
 modes asked. Every run must end with exit 0 (cut; "material is left"
 warnings allowed) or exit 2 with a refusal whose id is `job.cut` (a tool
-that fits nowhere); an internal error (exit 70) or anything else fails the
-sweep, and its job is saved under --found for a bug report.
+that fits nowhere) or `program.travel` (a drawing larger than the
+machine); an internal error (exit 70) or anything else fails the sweep,
+and its job is saved under --found for a bug report.
 
 The programs written are read back (G-code words, no bezcam code) and two
 kinds of wasted block are counted: moves shorter than the rounding unit
@@ -57,6 +58,11 @@ QUICK = [
 ]
 QUICK_TOOLS = "1,6"
 QUICK_SUBSET_EVERY = 3
+
+# The refusals a run may end in: a tool that fits nowhere on the side asked,
+# a drawing larger than the machine's travel (LibreCAD's building plans on
+# the Fanuc profile).
+REFUSALS = ("job.cut", "program.travel")
 
 LINE = re.compile(r"\(.*?\)|;.*")
 WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
@@ -305,7 +311,7 @@ def main():
                                               "measured": res["measured"], "proven": res["proven"]}), f, indent=1)
         m = re.search(r"error id: ([a-z]+\.[a-z.\-]+)", r.stderr)
         res["error_id"] = m.group(1) if m else ""
-        if r.returncode not in (0, 2) or (r.returncode == 2 and res["error_id"] != "job.cut"):
+        if r.returncode not in (0, 2) or (r.returncode == 2 and res["error_id"] not in REFUSALS):
             if args.found:
                 name = f"{os.path.basename(d)}-{i}-{side}-{tool:g}-{ts}-{out}.json"
                 with open(os.path.join(args.found, name), "w") as f:
@@ -326,7 +332,7 @@ def main():
         if res["exit"] == 2:
             key += " (refused, " + (res["error_id"] or res["stderr"][:80]) + ")"
         by_exit[key] = by_exit.get(key, 0) + 1
-    bad = [r for r in results if r["exit"] not in (0, 2) or (r["exit"] == 2 and r["error_id"] != "job.cut")]
+    bad = [r for r in results if r["exit"] not in (0, 2) or (r["exit"] == 2 and r["error_id"] not in REFUSALS)]
     ok = [r for r in results if r["exit"] == 0]
     short = sum(r["short"] for r in ok)
     back = sum(r["back"] for r in ok)
