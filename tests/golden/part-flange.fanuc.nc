@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: part-flange.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009891 mm, proven bound 0.01 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.00989 mm, proven bound 0.01 mm, rounding included)
 N30 (T2: 3 mm flat end mill: bolt-1, bolt-4, bolt-3, bolt-2)
 N40 (T1: 6 mm flat end mill: bore, outline)
 N50 (estimated cycle time 3 min 18 s on the motion model of machine fanuc [acceleration, corners, tool changes])
