@@ -401,6 +401,16 @@ inline constexpr ErrorId sim_too_large{"sim.too-large"};
 inline constexpr ErrorId sim_travel_limit{"sim.travel-limit"};
 /// Simulate needs a server address or a program.
 inline constexpr ErrorId sim_usage{"sim.usage"};
+/// A stock box is empty, inverted or not finite.
+inline constexpr ErrorId stock_box{"stock.box"};
+/// A stock's cell size is not a finite number > 0.
+inline constexpr ErrorId stock_cell{"stock.cell"};
+/// A stock grid would need more memory than the limit.
+inline constexpr ErrorId stock_memory{"stock.memory"};
+/// A move to sweep through the stock is malformed (not finite, an arc without radius, a polyline without points).
+inline constexpr ErrorId stock_move{"stock.move"};
+/// A tool's shape or dimensions are not valid (diameter, corner radius, angle).
+inline constexpr ErrorId tool_shape{"tool.shape"};
 /// The tool would gouge the surface.
 inline constexpr ErrorId surface_gouge{"surface.gouge"};
 /// The surface normal vanishes (a degenerate patch).

@@ -22,6 +22,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"base", {}},
       {"kernel", {"base"}},
       {"flatten", {"base", "kernel"}},
+      {"stock", {"base", "kernel", "flatten"}},
       {"job", {"base", "kernel"}},
       {"cam", {"base", "kernel", "flatten", "job"}},
       {"gcode", {"base", "kernel", "flatten", "job", "cam"}},
@@ -29,7 +30,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"link", {"base"}},
       {"sim", {"base", "kernel", "flatten", "job", "cam", "gcode", "link"}},
       {"import", {"base", "kernel", "flatten", "job"}},
-      {"cli", {"base", "kernel", "flatten", "job", "cam", "gcode", "report", "link", "sim", "import", "cli"}},
+      {"cli", {"base", "kernel", "flatten", "stock", "job", "cam", "gcode", "report", "link", "sim", "import", "cli"}},
   };
   return g;
 }
