@@ -66,10 +66,19 @@ DexelGrid::DexelGrid(const StockBox& box, double cell, std::size_t memory_limit)
   const double limit = static_cast<double>(memory_limit);
   if (!(s.bytes <= limit) || s.nx == 0 || s.ny == 0 || s.nx > 0x7fffffffu || s.ny > 0x7fffffffu) {
     // The cell that brings the floors within the limit (the area scales with 1 / cell^2).
-    const double fit = cell * std::sqrt(s.bytes / std::max(limit, 1.0)) * 1.001;
+    // The area scales with 1 / cell^2; rounded up to 3 significant digits
+    // and grown until the whole grid (cells rounded up) fits.
+    double fit = cell * std::sqrt(s.bytes / std::max(limit, 1.0));
+    for (int it = 0; it < 100; ++it) {
+      const double p = std::pow(10.0, std::floor(std::log10(fit)) - 2);
+      fit = std::ceil(fit / p) * p;
+      if (stock_grid_size(box, fit).bytes <= limit) break;
+      fit *= 1.001;
+    }
+    char counts[64];
+    std::snprintf(counts, sizeof counts, "%.0f x %.0f", columns(box.x1 - box.x0, cell), columns(box.y1 - box.y0, cell));
     throw InputError(errc::stock_memory, Place::at_setting("cell"),
-                     "a stock grid of " + fmt_num(std::ceil((box.x1 - box.x0) / cell)) + " x " +
-                         fmt_num(std::ceil((box.y1 - box.y0) / cell)) + " columns at a cell of " + fmt_num(cell) +
+                     std::string("a stock grid of ") + counts + " columns at a cell of " + fmt_num(cell) +
                          " needs " + mib(s.bytes) + ", above the memory limit of " + mib(limit) +
                          ": use a cell of at least " + fmt_num(fit) + " or a smaller stock");
   }
