@@ -6,6 +6,7 @@
 //
 //   build/stock_bench            100 x 100 mm, 100,000 blocks, 4 M columns
 //   build/stock_bench --quick    20 x 20 mm, 4,000 blocks (the test command's run)
+//   ... --image DIR              also writes DIR/stock_raster.png and DIR/stock_arcs.png
 #include <sys/resource.h>
 
 #include <chrono>
@@ -13,10 +14,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <numbers>
 #include <vector>
 
 #include "bezcam/stock/dexel_grid.hpp"
+#include "bezcam/stock/stock_image.hpp"
 
 using namespace bezcam;
 using Clock = std::chrono::steady_clock;
@@ -77,7 +80,12 @@ std::vector<Sweep> arcs(double size, int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  bool quick = false;
+  std::string image_dir;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    else if (std::strcmp(argv[i], "--image") == 0 && i + 1 < argc) image_dir = argv[++i];
+  }
   const double size = quick ? 20 : 100, cell = 0.05;
   const ToolShape ball = ToolShape::ball(6);
   const std::vector<Sweep> moves = raster(size, -1);
@@ -96,6 +104,7 @@ int main(int argc, char** argv) {
                 threads, threads == 1 ? " " : "s", s, cpu, static_cast<double>(grid.stats().columns) / s / 1e6, grid.nx(),
                 grid.ny(), static_cast<double>(grid.nx() * grid.ny()) / 1e6, grid.memory_bytes() / 1048576.0,
                 peak_rss_mib(), grid.removed_volume(), grid.hash_hex().c_str());
+    if (!image_dir.empty() && threads == 1) write_stock_png(grid, image_dir + "/stock_raster.png");
     if (first_hash.empty()) first_hash = grid.hash_hex();
     else if (first_hash != grid.hash_hex()) {
       std::printf("  the floors differ between thread counts\n");
@@ -129,6 +138,7 @@ int main(int argc, char** argv) {
                 static_cast<double>(st.searched_columns) / 1e6,
                 static_cast<double>(st.search_intervals) / std::max(1.0, static_cast<double>(st.searched_columns)),
                 static_cast<unsigned long long>(st.depth_limited), grid.hash_hex().c_str());
+    if (!image_dir.empty() && threads == 1) write_stock_png(grid, image_dir + "/stock_arcs.png");
   }
   std::printf("process peak %.1f MiB\n", peak_rss_mib());
   return 0;
