@@ -213,8 +213,8 @@ bool line_row_range(const LinePrep& l, double R, double y, double& xlo, double& 
 namespace {
 
 // Horizontal lines (and plunges): the floor is z + H(the squared distance to
-// the segment), one projection and one or two square roots per column, in a
-// loop the compiler vectorises.
+// the segment), one projection and one or two square roots per column. (A
+// branch-free form that GCC vectorises with SSE2 measured 15 % slower.)
 template <ToolShapeKind K>
 void flat_row(const LinePrep& l, const Profile& p, double z, double y, double x0, double C, int i0, int i1,
               double* floors) {
