@@ -585,7 +585,9 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
           last.b = s.b;
         }
       } else if (!chain.empty() && chain.back().arc == s.arc && !s.arc &&
-          std::abs(cross(chain.back().tangent(0), s.tangent(0)).z) < 1e-12) {
+                 std::abs(cross(chain.back().tangent(0), s.tangent(0)).z) < 1e-12 &&
+                 dot(chain.back().tangent(0), s.tangent(0)) > 0) {
+        // one line on (a line that turns back is a spur the tool goes into)
         chain.back().b = s.b;
       } else {
         chain.push_back(s);

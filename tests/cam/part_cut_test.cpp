@@ -210,6 +210,25 @@ TEST(PartCut, AnOffsetThatFallsApartIsCutWhereTheToolFits) {
   }
 }
 
+// A channel exactly as wide as the tool (LibreCAD's aw24.dxf): inside it
+// the offsets of its two walls coincide, and the tool runs into the
+// channel along its middle and back out. The path keeps its band and
+// reaches the channel's end wall in every mode.
+TEST(PartCut, AChannelExactlyAsWideAsTheToolIsCutAlongItsMiddle) {
+  const Job job = load_job(BEZCAM_SOURCE_DIR "/tests/cam/data/part-channel-tool-wide.json");
+  for (OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
+    ConvertOptions opt;
+    opt.output = mode;
+    Program p;
+    ASSERT_NO_THROW(p = build_program(job, load_machine_profile("generic"), opt)) << to_string(mode);
+    double reach = HUGE_VAL;  // the smallest x the tool centre reaches
+    for (const auto& run : cuts(p).runs)
+      for (const Vec3& q : run) reach = std::min(reach, q.x);
+    EXPECT_NEAR(reach, 3.0, 0.01) << to_string(mode);
+    EXPECT_LE(p.entities[0].measured, 0.0101) << to_string(mode);
+  }
+}
+
 // Tabs on a part whose offset falls apart: they go on the G's outline
 // (the stretch that frees the part), and the stretch in its counter, too
 // short for them, is cut without them and said; refused only when no

@@ -210,6 +210,22 @@ TEST(Offset, ASpurThatTurnsBackOnItselfKeepsThePathInTheBand) {
   }
 }
 
+// A channel as wide as twice the offset: the offsets of its two walls
+// coincide along its middle, and the path runs into it and back (a spur),
+// not past its mouth.
+TEST(Offset, ChannelAsWideAsTheToolKeepsItsSpur) {
+  const std::vector<Bezier> part{
+      Bezier::make({{11, 6}, {0, 6}}),   Bezier::make({{0, 6}, {0, 0}}),
+      Bezier::make({{0, 0}, {5, 0}}),    Bezier::make({{5, 0}, {5, -6}, {11, -6}}),
+      Bezier::make({{11, -6}, {17, -6}, {17, 0}}), Bezier::make({{17, 0}, {17, 6}, {11, 6}}),
+  };
+  const auto res = offset_curve(part, true, {3.0, 1, 0.005});
+  ASSERT_EQ(res.chains.size(), 1u);
+  double reach = HUGE_VAL;
+  for (const ArcSeg& s : res.chains[0]) reach = std::min({reach, s.a.x, s.b.x});
+  EXPECT_NEAR(reach, 3.0, 1e-9);
+}
+
 // A rectangle whose outline holds cubics that run down a line and back up
 // it (control points on the line: the curve turns back exactly, half a
 // turn, inside the piece), as preferences-system-network-proxy-symbolic.svg
