@@ -99,28 +99,27 @@ std::vector<Bezier> lead_out(const Vec3& e, const Vec3& t, int waste, const Lead
   return bezier_pieces(segs);
 }
 
-// The printed path of moves [from, to) as a dense XY polyline from `cur`.
-std::vector<Vec3> dense_path(const std::vector<Move>& moves, size_t from, size_t to, Vec3 cur, double sag) {
-  std::vector<Vec3> out{Vec3{cur.x, cur.y, 0}};
-  auto add = [&](const Vec3& p) { out.push_back({p.x, p.y, 0}); };
+// The printed path of moves [from, to) from `cur`, in XY, as the controller
+// draws it: lines, arcs from their printed numbers, curve blocks as their
+// Bézier pieces (Z-only moves leave nothing).
+std::vector<PathPiece> printed_path(const std::vector<Move>& moves, size_t from, size_t to, Vec3 cur) {
+  std::vector<PathPiece> out;
+  auto xy = [](const Vec3& p) { return Vec3{p.x, p.y, 0}; };
   for (size_t i = from; i < to; ++i) {
     const Move& mv = moves[i];
     if (const auto* l = std::get_if<LineMove>(&mv.what)) {
-      if (l->to.x != cur.x || l->to.y != cur.y) add(l->to);
+      if (l->to.x != cur.x || l->to.y != cur.y) out.push_back(PathPiece::line(xy(cur), xy(l->to)));
       cur = l->to;
     } else if (const auto* a = std::get_if<ArcMove>(&mv.what)) {
-      const PrintedArc arc{Vec3{cur.x, cur.y, 0}, Vec3{a->to.x, a->to.y, 0}, Vec3{a->center.x, a->center.y, 0}, a->ccw};
-      const auto pts = sample_arc(arc, sag);
-      for (size_t k = 1; k < pts.size(); ++k) add(pts[k]);
+      out.push_back(PathPiece::of(PrintedArc{xy(cur), xy(a->to), xy(a->center), a->ccw}));
       cur = a->to;
     } else if (const auto* c = std::get_if<CurveMove>(&mv.what)) {
       std::vector<Vec3> ctrl;
-      for (const auto& p : c->ctrl) ctrl.push_back({p.x, p.y, 0});
+      for (const auto& p : c->ctrl) ctrl.push_back(xy(p));
       std::vector<Bezier> pieces;
       if (c->form == CurveMove::Form::bezier) pieces.push_back(Bezier::make(ctrl, {}, 2));
       else pieces = to_bezier(NurbsCurve::make(c->order - 1, ctrl, c->knots, c->weights, 2));
-      const auto pts = flatten(pieces, {.tolerance = sag, .decimals = -1, .on_curve = true}).points;
-      for (size_t k = 1; k < pts.size(); ++k) add(pts[k]);
+      for (const Bezier& b : pieces) out.push_back(PathPiece::of(b));
       cur = c->to;
     } else if (const auto* m = motion_of(mv)) {
       cur = m->to;
@@ -131,11 +130,11 @@ std::vector<Vec3> dense_path(const std::vector<Move>& moves, size_t from, size_t
 
 // The tool centre's path under controller compensation (cutter_comp.hpp)
 // for the moves [from, to) of a stretch from `cur`, entered and left by the
-// leads, whose ends are tangent to the curve there (`ts`, `te`), as a dense
-// XY polyline: the corners the controller turns between the leads and the
-// stretch included, the leads themselves not.
-std::vector<Vec3> compensated_path(const std::vector<Move>& moves, size_t from, size_t to, Vec3 cur, const Vec3& ts,
-                                   const Vec3& te, int side, double r, double sag) {
+// leads, whose ends run along `ts` and `te`, in XY: the corners the
+// controller turns between the leads and the stretch included, the leads
+// themselves not.
+std::vector<PathPiece> compensated_path(const std::vector<Move>& moves, size_t from, size_t to, Vec3 cur,
+                                        const Vec3& ts, const Vec3& te, int side, double r) {
   Program run;
   LineMove start;
   start.to = cur;
@@ -156,10 +155,22 @@ std::vector<Vec3> compensated_path(const std::vector<Move>& moves, size_t from, 
   add(comp.push(entry));
   for (const auto& b : blocks) add(comp.push(b));
   add(comp.push(exit));  // completes the last move and its corner, holds the exit
-  std::vector<Vec3> out;
-  for (size_t i = 1; i < tool.size(); ++i)  // not the entry
-    for (const Vec3& q : sample_block(tool[i], sag))
-      if (out.empty() || q.x != out.back().x || q.y != out.back().y) out.push_back({q.x, q.y, 0});
+  std::vector<PathPiece> out;
+  auto xy = [](const Vec3& p) { return Vec3{p.x, p.y, 0}; };
+  for (size_t i = 1; i < tool.size(); ++i) {  // not the entry
+    const MotionBlock& b = tool[i];
+    if (b.kind == BlockKind::linear || b.kind == BlockKind::rapid) {
+      if (b.from.x != b.to.x || b.from.y != b.to.y) out.push_back(PathPiece::line(xy(b.from), xy(b.to)));
+    } else if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
+      out.push_back(PathPiece::of(PrintedArc{xy(b.from), xy(b.to), xy(b.center), b.kind == BlockKind::arc_ccw}));
+    } else {
+      for (Bezier piece : block_to_bezier(b)) {
+        for (Vec3& q : piece.points) q = xy(q);
+        piece.dim = 2;
+        out.push_back(PathPiece::of(piece));
+      }
+    }
+  }
   return out;
 }
 
@@ -522,11 +533,10 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   // Under controller compensation the tool path is the controller's: its
   // reading on bezcam's model of it (cutter_comp.hpp) joins the bound.
   double comp_reading = 0;
-  // The proven bound, known once every stretch is cut; the deferred
-  // measurements read it.
-  auto final_bound = std::make_shared<double>(0);
+  // The part, for the measurements.
+  const std::vector<std::vector<Bezier>> part_curves{part};
   // The last pass of each stretch of the path, as the tool's centre goes.
-  std::vector<std::vector<Vec3>> last_paths;
+  std::vector<PathPiece> last_path;
   // Tabs go on each stretch of the path that holds them. Where the offset
   // falls apart (a tool wider than a gap of the part), a stretch too short
   // for them is cut without tabs and said; the tabs are refused when even
@@ -598,6 +608,7 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       const double z = depths[d];
       const double zq = quantize(z, dec);
       measure_pass = d == 0 || d + 1 == depths.size();
+      const bool last_pass = d + 1 == depths.size();
       const Vec3 entry = quantize(in.empty() ? s : in.front().front(), dec);
       approach(p, entity, {entry.x, entry.y, zq}, safe, clear, cp.plunge_feed, ms);
       if (controller) p.moves.push_back({CompensationMove{side, cp.tool, tool_r}, entity});
@@ -620,11 +631,13 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       }
       // Whether the controller can compensate the path (a corner or a bend
       // too tight for the tool stops it), asked of the model before the
-      // program is written.
-      if (controller && d == 0) {
-        std::vector<Vec3> path;
+      // program is written, on every pass whose numbers differ (tabs split
+      // the deep ones): its reading is the bound's, and the last pass's is
+      // the measured deviation.
+      if (controller && measure_pass) {
+        std::vector<PathPiece> path;
         try {
-          path = compensated_path(p.moves, first_move, p.moves.size(), quantize(s, dec), ts, te, side, tool_r, 0.01 * tol);
+          path = compensated_path(p.moves, first_move, p.moves.size(), quantize(s, dec), ts, te, side, tool_r);
         } catch (const CompensationError& err) {
           fail("compensation", std::string("the controller cannot compensate this path: ") + err.what() +
                                    "; use compensation \"cam\" (bezcam offsets the path, trimming what the tool cannot reach)");
@@ -632,11 +645,13 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
         // Where the controller's tool goes must be within the tolerance of
         // the true offset too: G01 moves that turn by less than 0.05 rad
         // are joined without a corner (LinuxCNC), which can stray further.
-        const std::vector<std::vector<Bezier>> curves{part};
-        const OffsetReading m = measure_offset(curves, path, {.r = radius, .side = side, .middle = offset_by - radius, .resolution = 0.01 * tol});
+        const OffsetReading m =
+            measure_offset(part_curves, path, {.r = radius, .side = side, .middle = offset_by - radius, .resolution = 0.01 * tol});
         const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
         const double stray = std::max({lo - m.min_distance, m.max_distance - hi, m.coverage - tol});
-        comp_reading = std::max({comp_reading, radius - m.min_distance, m.max_distance - radius, m.coverage});
+        const double reading = std::max({radius - m.min_distance, m.max_distance - radius, m.coverage});
+        comp_reading = std::max(comp_reading, reading);
+        if (c.measure && last_pass) r.measured = std::max(r.measured, reading);
         if (stray > 0.02 * tol)
           fail("compensation", "the controller's compensation of these " + std::string(to_string(p.output)) +
                                    " strays " + fmt_num(std::round(stray * 1e5) / 1e5) + " " + to_string(job.units) +
@@ -647,11 +662,11 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
                                    "output \"arcs\" (arcs are compensated exactly) or compensation \"cam\"");
       }
       // The last pass's path, measured against the part once every
-      // stretch of it is cut (below).
-      if (c.measure && side != 0 && d + 1 == depths.size()) {
-        const Vec3 from = quantize(s, dec);
-        last_paths.push_back(controller ? compensated_path(p.moves, first_move, p.moves.size(), from, ts, te, side, tool_r, 0.001 * tol)
-                                        : dense_path(p.moves, first_move, p.moves.size(), from, 0.001 * tol));
+      // stretch of it is cut (below; the model's reading above under
+      // compensation).
+      if (c.measure && side != 0 && !controller && last_pass) {
+        const auto path = printed_path(p.moves, first_move, p.moves.size(), quantize(s, dec));
+        last_path.insert(last_path.end(), path.begin(), path.end());
       }
       if (controller) {
         // The lead-out's arc compensated, G40, then its line: the exit move.
@@ -671,36 +686,24 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
     }
   }
   r.bound = std::max(fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol), comp_reading);
-  *final_bound = r.bound;
   // The last pass measured against the part on its own: every stretch of
   // the path in the band, and the material left where the tool reaches
   // read over all of them (a part whose offset falls apart is reached by
   // its stretches together).
-  if (!last_paths.empty()) {
-    std::vector<std::vector<Bezier>> curves{part};
+  if (!last_path.empty()) {
     EntityReport probe;
-    c.measure_with(probe, [curves = std::move(curves), paths = std::move(last_paths), radius, side, tol, dev_side, middle = offset_by - radius,
-                           label = r.label, bound = final_bound] {
-      OffsetReading m = measure_offset(curves, paths, {.r = radius, .side = side, .middle = middle, .resolution = 0.01 * tol});
-      // Readings are good to the resolution: one above the proven bound
-      // is asked again ten times finer (a true excess survives).
-      auto reading = [&](const OffsetReading& x) {
-        return std::max({radius - x.min_distance, x.max_distance - radius, x.coverage});
-      };
-      if (reading(m) > *bound) {
-        const bool near = std::max(radius - m.min_distance, m.max_distance - radius) > *bound;
-        const OffsetReading f = measure_offset(curves, paths, {.r = radius, .side = side, .middle = middle, .resolution = 0.001 * tol, .distances = near});
-        m.coverage = f.coverage;
-        if (near) m.min_distance = f.min_distance, m.max_distance = f.max_distance;
-      }
+    c.measure_with(probe, [curves = part_curves, path = std::move(last_path), radius, side, tol, dev_side,
+                           middle = offset_by - radius, label = r.label] {
+      const OffsetReading m =
+          measure_offset(curves, path, {.r = radius, .side = side, .middle = middle, .resolution = 0.01 * tol});
       // With a one-sided band the reading is against its middle.
       const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
-      const double slack = 0.03 * tol;  // the measurement's resolution and sampling
+      const double slack = 0.03 * tol;  // a margin: the band is proven, the readings exact to rounding
       if (m.min_distance < lo - slack || m.max_distance > hi + slack || m.coverage > tol + slack)
         throw std::logic_error("internal check failed: " + label + "'s tool path lies " + fmt_num(m.min_distance) +
                                " to " + fmt_num(m.max_distance) + " from the part (leaving up to " + fmt_num(m.coverage) +
                                " of material where it reaches), outside [" + fmt_num(lo) + ", " + fmt_num(hi) + "]");
-      return reading(m);
+      return std::max({radius - m.min_distance, m.max_distance - radius, m.coverage});
     });
     r.measured = std::max(r.measured, probe.measured);
   }

@@ -1,9 +1,13 @@
 // Independent measurement of an offset path (offset_measure.hpp). Shares
-// nothing with offset.cpp: its own sampling of the curve, its own grid.
+// nothing with offset.cpp: its own sampling of the curve and of the path,
+// its own index, its own nearest points.
 #include "bezcam/flatten/offset_measure.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+
+#include "bezcam/kernel/minimize.hpp"
 
 namespace bezcam {
 
@@ -11,59 +15,104 @@ double OffsetReading::deviation(double r) const {
   return std::max({std::abs(min_distance - r), std::abs(max_distance - r), coverage});
 }
 
+PathPiece PathPiece::line(const Vec3& a, const Vec3& b) { return of(Bezier::make({a, b})); }
+
+PathPiece PathPiece::of(const Bezier& b) {
+  PathPiece p;
+  p.curve = b;
+  return p;
+}
+
+PathPiece PathPiece::of(const Arc& a) {
+  PathPiece p;
+  p.arc = a;
+  return p;
+}
+
 namespace {
 
-struct CurveSample {
-  Vec3 p, normal;  // unit left normal
+Vec3 xy(const Vec3& p) { return {p.x, p.y, 0}; }
+
+// One piece of the curve or of the path, evaluated in XY.
+struct Piece {
+  const Bezier* bez = nullptr;
+  std::optional<ArcPoints> arc;
+  double sweep = 0, radius = 0;  // arcs
+  Vec3 at(double t) const { return xy(arc ? arc->at(t) : evaluate(*bez, t)); }
+  // Unit left normal (curve pieces), zero where the derivative vanishes.
+  Vec3 normal(double t) const {
+    const Vec3 d = derivative(*bez, t);
+    const double l = std::hypot(d.x, d.y);
+    return l > 0 ? Vec3{-d.y / l, d.x / l, 0} : Vec3{};
+  }
 };
 
-// Samples on the curve, consecutive chords within `res` of it: a piece is
-// cut in halves until the chord's midpoint and quarter points agree with the
-// curve within res / 4 (and the span is short against the piece).
-void sample_curve(const Bezier& b, double res, std::vector<CurveSample>& out) {
-  auto at = [&](double t) {
-    const Vec3 p = evaluate(b, t), d = derivative(b, t);
-    const double l = std::hypot(d.x, d.y);
-    return CurveSample{{p.x, p.y, 0}, l > 0 ? Vec3{-d.y / l, d.x / l, 0} : Vec3{}};
-  };
+struct Sample {
+  Vec3 p;
+  double t = 0;
+};
+
+// Samples on the piece, consecutive chords within `res` / 4 of it: a line
+// is its two ends; an arc is cut into equal angles; a curve is cut in
+// halves until the chord's midpoint and quarter points agree with it
+// within res / 4 (and the span is short against the piece).
+std::vector<Sample> sample_piece(const Piece& pc, double res) {
+  std::vector<Sample> got;
+  if (pc.arc) {
+    double step = pc.sweep;
+    if (pc.radius > res / 4) step = 2 * std::acos(1 - res / 4 / pc.radius);
+    const int n = std::clamp(static_cast<int>(std::ceil(pc.sweep / std::max(step, 1e-9))), 1, 1 << 20);
+    for (int i = 0; i <= n; ++i) {
+      const double t = static_cast<double>(i) / n;
+      got.push_back({pc.at(t), t});
+    }
+    return got;
+  }
+  if (pc.bez->points.size() == 2) return {{pc.at(0), 0}, {pc.at(1), 1}};
   struct Span {
     double t0, t1;
     int depth;
   };
   std::vector<Span> stack{{0, 1, 0}};
-  std::vector<std::pair<double, CurveSample>> got{{0.0, at(0)}};
+  got.push_back({pc.at(0), 0});
   while (!stack.empty()) {
     const Span s = stack.back();
     stack.pop_back();
-    const Vec3 a = evaluate(b, s.t0), c = evaluate(b, s.t1);
+    const Vec3 a = pc.at(s.t0), c = pc.at(s.t1);
     bool flat = s.depth >= 4;
     for (double f : {0.25, 0.5, 0.75}) {
       if (!flat) break;
-      const Vec3 m = evaluate(b, s.t0 + f * (s.t1 - s.t0));
+      const Vec3 m = pc.at(s.t0 + f * (s.t1 - s.t0));
       const Vec3 q = lerp(a, c, f);
       if (std::hypot(m.x - q.x, m.y - q.y) > res / 4) flat = false;
     }
     if (flat || s.depth >= 40) {
-      got.push_back({s.t1, at(s.t1)});
+      got.push_back({c, s.t1});
       continue;
     }
     const double tm = 0.5 * (s.t0 + s.t1);
     stack.push_back({tm, s.t1, s.depth + 1});
     stack.push_back({s.t0, tm, s.depth + 1});
   }
-  std::sort(got.begin(), got.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (const auto& g : got) out.push_back(g.second);
+  std::sort(got.begin(), got.end(), [](const Sample& x, const Sample& y) { return x.t < y.t; });
+  return got;
 }
 
-// Segments in order, in chunks with boxes: the nearest distance from a
+// Chords in order, in chunks with boxes: the nearest distance from a
 // point, pruning chunks whose box is farther than the best so far (seeded by
-// the segments near the previous answer: consecutive queries are close).
+// the chords near the previous answer: consecutive queries are close). Each
+// chord knows the stretch of its piece it stands for.
 struct Index {
   static constexpr size_t kChunk = 32;
+  struct Ref {
+    uint32_t piece = 0;
+    double t0 = 0, t1 = 0;
+  };
   std::vector<std::pair<Vec3, Vec3>> segs;
+  std::vector<Ref> refs;
   std::vector<Box3> boxes, groups;  // per chunk, per kChunk chunks
   size_t hint = 0;
-  explicit Index(std::vector<std::pair<Vec3, Vec3>> s) : segs(std::move(s)) {
+  void build() {
     for (size_t k = 0; k < segs.size(); k += kChunk) {
       Box3 b;
       for (size_t i = k; i < std::min(segs.size(), k + kChunk); ++i) {
@@ -137,7 +186,8 @@ struct Index {
     return std::sqrt(search([&](const auto& s) { return seg_d2(p, s.first, s.second); },
                             [&](const Box3& b) { return box_d2(p, b); }));
   }
-  /// The smallest distance between the segment pq and any segment.
+  /// The smallest distance between the segment pq and any segment; `hint`
+  /// is then that segment.
   double nearest(const Vec3& p, const Vec3& q) {
     if (segs.empty()) return HUGE_VAL;
     Box3 pq;
@@ -145,6 +195,19 @@ struct Index {
     pq.add(q);
     return std::sqrt(search([&](const auto& s) { return seg_seg_d2(p, q, s.first, s.second); },
                             [&](const Box3& b) { return box_box_d2(pq, b); }));
+  }
+  /// Calls f(i) for every segment within `radius` of p.
+  template <class F>
+  void within(const Vec3& p, double radius, F f) const {
+    const double r2 = radius * radius;
+    for (size_t g = 0; g < groups.size(); ++g) {
+      if (box_d2(p, groups[g]) > r2) continue;
+      for (size_t c = g * kChunk; c < std::min(boxes.size(), (g + 1) * kChunk); ++c) {
+        if (box_d2(p, boxes[c]) > r2) continue;
+        for (size_t i = c * kChunk; i < std::min(segs.size(), (c + 1) * kChunk); ++i)
+          if (seg_d2(p, segs[i].first, segs[i].second) <= r2) f(i);
+      }
+    }
   }
   /// The winding number about p of the closed polyline the first `count`
   /// segments make (crossings of the ray from p towards +x), chunks whose
@@ -170,7 +233,133 @@ struct Index {
   double to(size_t i, const Vec3& p) const { return std::sqrt(seg_d2(p, segs[i].first, segs[i].second)); }
 };
 
+// The pieces of a curve or a path, their samples and the index of their
+// chords.
+struct Shape {
+  std::vector<Piece> pieces;
+  std::vector<std::vector<Sample>> samples;  // per piece
+  Index index;
+  double margin = 0;  // more than the chords' distance from the pieces
+  size_t ring_segs = 0;  // the first curve's chords, first in the index (measure_offset())
+
+  void sample(double res) {
+    margin = 2 * res;
+    samples.resize(pieces.size());
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      samples[k] = sample_piece(pieces[k], res);
+      for (size_t i = 1; i < samples[k].size(); ++i) {
+        index.segs.push_back({samples[k][i - 1].p, samples[k][i].p});
+        index.refs.push_back({static_cast<uint32_t>(k), samples[k][i - 1].t, samples[k][i].t});
+      }
+    }
+    index.build();
+  }
+
+  // The nearest point of the pieces to x and its distance: the squared
+  // distance minimised (Brent) over the stretch of each chord within the
+  // margin of the nearest one, and a chord's length either side of it.
+  std::pair<double, Vec3> nearest_point(const Vec3& x) {
+    const double d0 = index.nearest(x);
+    if (!std::isfinite(d0)) return {d0, x};
+    double best = HUGE_VAL;
+    Vec3 at = x;
+    index.within(x, d0 + margin, [&](size_t i) {
+      const Index::Ref& g = index.refs[i];
+      const Piece& pc = pieces[g.piece];
+      const double w = g.t1 - g.t0;
+      const double a = std::max(0.0, g.t0 - w), b = std::min(1.0, g.t1 + w);
+      auto f = [&](double t) {
+        const Vec3 q = pc.at(t);
+        return (q.x - x.x) * (q.x - x.x) + (q.y - x.y) * (q.y - x.y);
+      };
+      const MinimumFound m = brent_min(a, b, f, 1e-12 * std::max(w, 1e-300) + 1e-15);
+      for (const double t : {m.x, a, b}) {
+        const double d = t == m.x ? m.f : f(t);
+        if (d < best) best = d, at = pc.at(t);
+      }
+    });
+    return {std::sqrt(best), at};
+  }
+  double exact(const Vec3& x) { return nearest_point(x).first; }
+};
+
+Piece piece_of(const PathPiece& p) {
+  Piece pc;
+  if (p.arc) {
+    pc.arc.emplace(*p.arc);
+    pc.sweep = p.arc->sweep();
+    pc.radius = std::max(p.arc->r_start(), p.arc->r_end());
+  } else {
+    pc.bez = &p.curve;
+  }
+  return pc;
+}
+
+// How many of the extreme readings of the polylines are read again
+// exactly (the first is enough for the resolution; more make the reading
+// nearer the true extreme where the polylines tie).
+constexpr size_t kExactReads = 16;
+
+// The smallest distance of the drawn path from the curve: each path chord's
+// nearest approach to the curve's polyline finds where to read; the chords
+// from the nearest up are read exactly at their ends and at the point of
+// their stretch of the path where the chord comes nearest the curve's
+// polyline, while a chord could still hide a smaller true distance.
+double smallest_distance(Shape& curve, const Shape& drawn) {
+  struct Near {
+    double d;
+    size_t piece;
+    Sample a, b;
+  };
+  std::vector<Near> nears;
+  if (curve.index.segs.empty()) return HUGE_VAL;
+  for (size_t k = 0; k < drawn.pieces.size(); ++k) {
+    const auto& ss = drawn.samples[k];
+    for (size_t i = 1; i < ss.size(); ++i) nears.push_back({curve.index.nearest(ss[i - 1].p, ss[i].p), k, ss[i - 1], ss[i]});
+  }
+  std::sort(nears.begin(), nears.end(), [](const Near& x, const Near& y) { return x.d < y.d; });
+  double smallest = HUGE_VAL;
+  for (size_t i = 0; i < nears.size() && i < kExactReads; ++i) {
+    const Near& n = nears[i];
+    if (n.d - curve.margin - drawn.margin > smallest) break;
+    const Vec3 p = n.a.p, q = n.b.p;
+    curve.index.nearest(p, q);
+    const auto& s = curve.index.segs[curve.index.hint];
+    // Where on pq the nearest approach to the chord s lies (its crossing,
+    // or the foot of the nearer end of s, or an end of pq).
+    double f = 0;
+    const double o1 = Index::cross(s.first, s.second, p), o2 = Index::cross(s.first, s.second, q);
+    const double lp = dot(q - p, q - p);
+    if ((o1 < 0) != (o2 < 0) && o1 != o2) {
+      f = o1 / (o1 - o2);
+    } else if (lp > 0) {
+      const double dp = Index::seg_d2(p, s.first, s.second), dq = Index::seg_d2(q, s.first, s.second);
+      double best = std::min(dp, dq);
+      f = dp <= dq ? 0 : 1;
+      for (const Vec3& e : {s.first, s.second}) {
+        const double g = std::clamp(dot(e - p, q - p) / lp, 0.0, 1.0);
+        const Vec3 foot = lerp(p, q, g);
+        const double d2 = dot(e - foot, e - foot);
+        if (d2 < best) best = d2, f = g;
+      }
+    }
+    const double t = n.a.t + std::clamp(f, 0.0, 1.0) * (n.b.t - n.a.t);
+    smallest = std::min({smallest, curve.exact(p), curve.exact(q), curve.exact(drawn.pieces[n.piece].at(t))});
+  }
+  return smallest;
+}
+
 }  // namespace
+
+OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const std::vector<Vec3>> paths,
+                             const OffsetMeasure& how) {
+  std::vector<PathPiece> pieces;
+  for (const auto& path : paths) {
+    for (size_t i = 1; i < path.size(); ++i) pieces.push_back(PathPiece::line(xy(path[i - 1]), xy(path[i])));
+    if (path.size() == 1) pieces.push_back(PathPiece::line(xy(path[0]), xy(path[0])));
+  }
+  return measure_offset(curves, pieces, how);
+}
 
 OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const Vec3> path,
                              const OffsetMeasure& how) {
@@ -178,114 +367,183 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
   return measure_offset(curves, one, how);
 }
 
-OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const std::vector<Vec3>> paths,
+OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const PathPiece> path,
                              const OffsetMeasure& how) {
   const double r = how.r, resolution = how.resolution;
   const int side = how.side;
-  const bool distances = how.distances;
   OffsetReading out;
-  std::vector<std::vector<CurveSample>> samples(curves.size());
-  std::vector<std::pair<Vec3, Vec3>> segs;
-  size_t ring_segs = 0;  // the first curve's segments, first in the index
+  Shape curve;
+  size_t first_curve_pieces = 0;
+  std::vector<Bezier> all;
   for (size_t c = 0; c < curves.size(); ++c) {
     for (const Bezier& b : curves[c]) {
-      const size_t first = samples[c].size();
-      sample_curve(b, resolution, samples[c]);
-      for (size_t i = first + 1; i < samples[c].size(); ++i) segs.push_back({samples[c][i - 1].p, samples[c][i].p});
+      Piece pc;
+      pc.bez = &b;
+      curve.pieces.push_back(pc);
+      all.push_back(b);
     }
-    if (c == 0) ring_segs = segs.size();
+    if (c == 0) first_curve_pieces = curve.pieces.size();
   }
-  Index curve(std::move(segs));
-  // The path's distances from the curve's polyline. The smallest is exact:
-  // the nearest approach of each path segment to any curve segment. The
-  // largest is read at path points: the vertices, then the midpoints of a
-  // path segment while it could hold a larger distance than read so far.
-  // It cannot where one curve segment S is within that largest reading of
-  // both its ends (the distance to S is convex along a line, and the
-  // distance to the curve is at most the distance to S), nor where the
-  // segment is at most 2 resolution long (no point is farther than
-  // `resolution` from a read end, and the distance moves by at most the
-  // distance travelled): the largest reading is within `resolution` of the
-  // largest distance.
-  double lo = HUGE_VAL, hi = 0;
-  std::vector<std::pair<Vec3, Vec3>> psegs;
+  curve.sample(resolution);
+  for (size_t k = 0; k < first_curve_pieces; ++k) curve.ring_segs += curve.samples[k].size() - 1;
+  Shape drawn;
+  for (const PathPiece& p : path) drawn.pieces.push_back(piece_of(p));
+  drawn.sample(resolution);
+
+  // The path's distances from the curve's polyline, to find where the
+  // extremes lie. The smallest: the nearest approach of each path chord to
+  // any curve chord. The largest: read at path points, the samples, then
+  // the middle of a path chord's stretch while it could hold a larger
+  // distance than read so far. It cannot where one curve chord S is within
+  // that largest reading of both its ends (the distance to S is convex
+  // along a line, and the distance to the curve is at most the distance to
+  // S), nor where the chord is at most 2 resolution long.
+  double hi = 0;
   struct Read {
     Vec3 at;
-    size_t seg;  // the curve segment nearest to it
+    size_t seg;  // the curve chord nearest to it
+    double t;    // where on its path piece
+    double d;    // its distance from the curve's polyline
   };
-  std::vector<std::pair<Read, Read>> todo;
-  auto read = [&](const Vec3& p) {
-    const double d = curve.nearest(p);
+  std::vector<Read> reads;  // every point read, for the exact pass
+  auto read = [&](const Vec3& p, double t) {
+    const double d = curve.index.nearest(p);
     hi = std::max(hi, d);
-    lo = std::min(lo, d);
-    return Read{p, curve.hint};
+    reads.push_back({p, curve.index.hint, t, d});
+    return reads.back();
   };
   auto within = [&](const Read& a, const Read& b, size_t s) {
-    return std::max(curve.to(s, a.at), curve.to(s, b.at)) <= hi;
+    return std::max(curve.index.to(s, a.at), curve.index.to(s, b.at)) <= hi;
   };
-  for (const auto& path : paths) {
-    Read prev{};
-    for (size_t i = 0; i < path.size(); ++i) {
-      const Vec3 p{path[i].x, path[i].y, 0};
-      if (i > 0) psegs.push_back({prev.at, p});
-      if (!distances) {
-        prev.at = p;
-        continue;
-      }
-      const Read cur = read(p);
-      if (i > 0 && !curve.segs.empty()) {
-        lo = std::min(lo, curve.nearest(prev.at, p));
-        todo.push_back({prev, cur});
-        while (!todo.empty()) {
-          const auto [a, b] = todo.back();
-          todo.pop_back();
-          if (dist(a.at, b.at) <= 2 * resolution || within(a, b, a.seg) || within(a, b, b.seg)) continue;
-          const Read m = read(lerp(a.at, b.at, 0.5));
-          if (within(a, b, m.seg)) continue;
-          todo.push_back({m, b});
-          todo.push_back({a, m});
-        }
+  std::vector<std::pair<Read, Read>> todo;
+  for (size_t k = 0; how.distances && k < drawn.pieces.size() && !curve.index.segs.empty(); ++k) {
+    const auto& ss = drawn.samples[k];
+    Read prev = read(ss[0].p, ss[0].t);
+    for (size_t i = 1; i < ss.size(); ++i) {
+      const Read cur = read(ss[i].p, ss[i].t);
+      todo.push_back({prev, cur});
+      while (!todo.empty()) {
+        const auto [a, b] = todo.back();
+        todo.pop_back();
+        if (dist(a.at, b.at) <= 2 * resolution || within(a, b, a.seg) || within(a, b, b.seg)) continue;
+        const double tm = 0.5 * (a.t + b.t);
+        const Read m = read(drawn.pieces[k].at(tm), tm);
+        if (within(a, b, m.seg)) continue;
+        todo.push_back({m, b});
+        todo.push_back({a, m});
       }
       prev = cur;
     }
   }
-  out.min_distance = distances ? lo : r;
-  out.max_distance = distances ? hi : r;
-  if (side != 0 && !curves.empty() && !psegs.empty()) {
-    // The material left: a curve point the tool reaches (its tool position
-    // at r + middle not folded away: no other stretch of the part nearer,
-    // less the sampled curve's own error) stands dist(c, path) - r from
-    // the tool's edge. Read against the part's surface, not the offset's
-    // points: where the offset turns a sharp inner corner, the path's
-    // corner may lie a little off the true offset's along the corner's
-    // bisector while the material it leaves is the same thin sliver.
-    Index pg(std::move(psegs));
+
+  // The exact pass. The largest: the points read, from the largest
+  // reading down, while a reading could still hide a larger true distance
+  // (the polylines are within the margin of what they sample), at most
+  // kExactReads of them: the first alone is within twice the margin of the
+  // true largest.
+  std::sort(reads.begin(), reads.end(), [](const Read& x, const Read& y) { return x.d > y.d; });
+  double largest = reads.empty() ? 0 : -HUGE_VAL;
+  for (size_t i = 0; i < reads.size() && i < kExactReads; ++i) {
+    if (reads[i].d + curve.margin < largest) break;
+    largest = std::max(largest, curve.exact(reads[i].at));
+  }
+  out.min_distance = how.distances ? smallest_distance(curve, drawn) : r;
+  out.max_distance = how.distances ? largest : r;
+
+  // The material left: a curve point c the tool reaches (its tool position
+  // at r + middle along c's normal, on the side, no nearer the whole curve
+  // than r + middle, to rounding: else it is folded away) stands
+  // dist(c, path) - r from the tool's edge. Read against the part's
+  // surface, not the offset's points: where the offset turns a sharp inner
+  // corner, the path's corner may lie a little off the true offset's along
+  // the corner's bisector while the material it leaves is the same thin
+  // sliver. Each sample is read by its distance to the path's polyline;
+  // from the largest reading down, a point the tool reaches is read again
+  // exactly, and the largest distance sought between its neighbours.
+  if (side != 0 && first_curve_pieces > 0 && !curve.index.segs.empty() && !drawn.index.segs.empty()) {
+    const double eps = 1e-9 * std::max(1.0, control_magnitude(all));
     const double reach = r + how.middle;
     // A closed curve bounds a region, and the tool is on one side of it:
-    // inside (a non-zero winding number of the sampled curve) where the side
-    // is the left of a counter-clockwise curve or the right of a clockwise
-    // one. A tool position on the other side (across a wall of the part
-    // where the curve doubles back on itself, at a cusp or a spur of zero
-    // width) is not one the tool reaches.
-    const auto& ring = samples[0];
-    const bool region = ring.size() > 2 && dist(ring.front().p, ring.back().p) <= resolution;
+    // inside (a non-zero winding number of the sampled curve) where the
+    // side is the left of a counter-clockwise curve or the right of a
+    // clockwise one. A tool position on the other side (across a wall of
+    // the part where the curve doubles back on itself, at a cusp or a spur
+    // of zero width) is not one the tool reaches.
+    std::vector<Vec3> ring;
+    for (size_t k = 0; k < first_curve_pieces; ++k)
+      for (const Sample& x : curve.samples[k]) ring.push_back(x.p);
+    const bool region = ring.size() > 2 && dist(ring.front(), ring.back()) <= resolution;
     double area = 0;
     for (size_t i = 0; region && i < ring.size(); ++i) {
-      const Vec3& a = ring[i].p;
-      const Vec3& b = ring[(i + 1) % ring.size()].p;
+      const Vec3& a = ring[i];
+      const Vec3& b = ring[(i + 1) % ring.size()];
       area += a.x * b.y - b.x * a.y;
     }
     const bool want_inside = (side > 0) == (area > 0);
-    auto inside = [&](const Vec3& q) { return curve.winding(q, ring_segs) != 0; };
-    for (const CurveSample& s : samples[0]) {
-      if (s.normal.x == 0 && s.normal.y == 0) continue;
-      const Vec3 q = s.p + s.normal * (side * reach);
-      if (curve.nearest(q) < reach - 2 * resolution) continue;  // folded away
-      if (region && area != 0 && inside(q) != want_inside) continue;  // across a wall
-      out.coverage = std::max(out.coverage, pg.nearest(s.p) - r);
+    auto reaches = [&](size_t k, double t) {  // whether the tool reaches the curve at (k, t)
+      const Vec3 n = curve.pieces[k].normal(t);
+      if (n.x == 0 && n.y == 0) return false;
+      const Vec3 q = curve.pieces[k].at(t) + n * (side * reach);
+      if (curve.exact(q) < reach - eps) return false;
+      return !(region && area != 0 && (curve.index.winding(q, curve.ring_segs) != 0) != want_inside);
+    };
+    struct Cover {
+      double d;  // of the curve point from the path's polyline
+      size_t piece;
+      double t, lo, hi;  // its parameter, and its neighbours'
+    };
+    std::vector<Cover> cover;
+    for (size_t k = 0; k < first_curve_pieces; ++k) {
+      const auto& ss = curve.samples[k];
+      for (size_t i = 0; i < ss.size(); ++i) {
+        const Vec3 n = curve.pieces[k].normal(ss[i].t);
+        if (n.x == 0 && n.y == 0) continue;
+        const Vec3 q = ss[i].p + n * (side * reach);
+        if (curve.index.nearest(q) < reach - eps - curve.margin) continue;  // folded away for certain
+        if (region && area != 0 && (curve.index.winding(q, curve.ring_segs) != 0) != want_inside) continue;
+        cover.push_back({drawn.index.nearest(ss[i].p), k, ss[i].t, ss[i > 0 ? i - 1 : i].t, ss[i + 1 < ss.size() ? i + 1 : i].t});
+      }
+    }
+    std::sort(cover.begin(), cover.end(), [](const Cover& x, const Cover& y) { return x.d > y.d; });
+    auto left = [&](const Cover& c, double t) {  // the material left at (piece, t); 0 where the tool does not reach
+      return reaches(c.piece, t) ? drawn.exact(curve.pieces[c.piece].at(t)) - r : 0.0;
+    };
+    size_t exact = 0;
+    for (const Cover& c : cover) {
+      if (c.d - r + drawn.margin < out.coverage || exact == kExactReads) break;
+      if (!reaches(c.piece, c.t)) continue;
+      double e = left(c, c.t);
+      if (c.lo < c.hi) e = std::max(e, -brent_min(c.lo, c.hi, [&](double t) { return -left(c, t); }, 1e-9 * (c.hi - c.lo), 40).f);
+      out.coverage = std::max(out.coverage, e);
+      ++exact;
     }
   }
   return out;
+}
+
+struct PartDistance::Impl {
+  Shape curve;
+};
+
+PartDistance::PartDistance(std::span<const std::vector<Bezier>> curves, double resolution) : impl_(std::make_unique<Impl>()) {
+  for (const auto& c : curves)
+    for (const Bezier& b : c) {
+      Piece pc;
+      pc.bez = &b;
+      impl_->curve.pieces.push_back(pc);
+    }
+  impl_->curve.sample(resolution);
+}
+
+PartDistance::~PartDistance() = default;
+
+Vec3 PartDistance::nearest(const Vec3& p) { return impl_->curve.nearest_point(xy(p)).second; }
+
+double PartDistance::min_distance(std::span<const PathPiece> path) {
+  Shape drawn;
+  for (const PathPiece& p : path) drawn.pieces.push_back(piece_of(p));
+  drawn.sample(impl_->curve.margin / 2);
+  return smallest_distance(impl_->curve, drawn);
 }
 
 }  // namespace bezcam

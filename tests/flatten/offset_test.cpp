@@ -259,5 +259,29 @@ TEST(Offset, ACubicThatRunsBackAlongItsLineKeepsTheBand) {
   }
 }
 
+// Readings are distances between real points, found exactly (not read off
+// chords): a printed path that is the true offset reads r to rounding,
+// whatever the resolution, and a path farther by 0.001 over a stretch reads
+// exactly that.
+TEST(Offset, TheMeasurementReadsTrueDistancesNotChords) {
+  const auto part = circle(0, 0, 20);
+  const std::vector<std::vector<Bezier>> curves{part};
+  auto arc = [](double R, double a0, double a1) {
+    return PathPiece::of(Arc{{R * std::cos(a0), R * std::sin(a0), 0}, {R * std::cos(a1), R * std::sin(a1), 0}, {0, 0, 0}, true});
+  };
+  std::vector<PathPiece> path;
+  for (int k = 0; k < 4; ++k) path.push_back(arc(23, k * kPi / 2, (k + 1) * kPi / 2));
+  for (double res : {1e-2, 1e-4}) {
+    const OffsetReading m = measure_offset(curves, path, {.r = 3, .side = -1, .resolution = res});
+    EXPECT_NEAR(m.min_distance, 3, 1e-12) << res;
+    EXPECT_NEAR(m.max_distance, 3, 1e-12) << res;
+    EXPECT_LE(m.coverage, 1e-12) << res;
+  }
+  path[1] = arc(23.001, kPi / 2, kPi);  // a quarter 0.001 out, joined by its ends' radii
+  const OffsetReading m = measure_offset(curves, path, {.r = 3, .side = -1, .resolution = 1e-2});
+  EXPECT_NEAR(m.max_distance, 3.001, 1e-12);
+  EXPECT_NEAR(m.min_distance, 3, 1e-12);
+}
+
 }  // namespace
 }  // namespace bezcam
