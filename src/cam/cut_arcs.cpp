@@ -110,9 +110,9 @@ void emit_arcs(CutContext& c, EntityReport& r) {
   if (c.measure)
     c.measure_with(r, [pieces = std::span<const Bezier>(pieces), path = std::move(path), tol = c.tolerance,
                        bound = r.bound, label = r.label] {
-      const double m = measure_printed(pieces, path, tol, bound);
       // The sampled path lies within kSampleShare of the drawn one.
-      if (m > tol * (1 + kSampleShare))
+      const double m = measure_printed(pieces, path, tol, bound, kSampleShare * tol);
+      if (m > tol)
         throw std::logic_error("internal check failed: " + label + " deviates by " + fmt_num(m) +
                                " beyond the tolerance " + fmt_num(tol));
       return m;

@@ -96,6 +96,7 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
   }
   r.blocks = 0;
   r.bound = 0;
+  double sampled = kSampleShare * c.tolerance;  // how far the path's chords stray from the printed moves
   for (const ExactBlock& b : blocks) {
     if (b.kind == ExactKind::fallback) {
       r.bound = std::max(r.bound, append_arcs_or_lines(c, b.source, path, r.blocks) + b.snap);
@@ -105,15 +106,17 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
     r.bound = std::max(r.bound, b.bound);
     // The printed curve, densely, for the independent measurement.
     if (c.measure) {
-      const auto f = flatten(b.printed, {.tolerance = exact_sample_tolerance(b, c.tolerance), .decimals = -1, .on_curve = true}).points;
+      const double chord = exact_sample_tolerance(b, c.tolerance);
+      const auto f = flatten(b.printed, {.tolerance = chord, .decimals = -1, .on_curve = true}).points;
       path.insert(path.end(), f.begin() + 1, f.end());
+      sampled = std::max(sampled, chord);
     }
   }
   if (c.measure)
     c.measure_with(r, [pieces = std::span<const Bezier>(g.pieces), path = std::move(path), tol = c.tolerance,
-                       bound = r.bound, label = r.label] {
-      const double got = measure_printed(pieces, path, tol, bound);
-      if (got > tol * (1 + 10 * kSampleShare))
+                       bound = r.bound, sampled, label = r.label] {
+      const double got = measure_printed(pieces, path, tol, bound, sampled);
+      if (got > tol)
         throw std::logic_error("internal check failed: " + label + " deviates by " + fmt_num(got) +
                                " beyond the tolerance " + fmt_num(tol));
       return got;

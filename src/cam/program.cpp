@@ -18,6 +18,7 @@
 #include "bezcam/cam/program_limits.hpp"
 #include "bezcam/cam/cut_order.hpp"
 #include "cut_emitters.hpp"
+#include "measure_path.hpp"
 
 namespace bezcam {
 
@@ -193,9 +194,9 @@ void emit_polyline(CutContext& c, EntityReport& r, std::vector<Vec3> poly, doubl
   }
   r.blocks = poly.size() - 1;
   if (c.measure)
-    c.measure_with(r, [pieces = std::span<const Bezier>(pieces), poly = std::move(poly), tol = c.tolerance,
+    c.measure_with(r, [pieces = std::span<const Bezier>(pieces), poly = std::move(poly), tol = c.tolerance, bound,
                        label = r.label] {
-      const double m = measure_deviation(pieces, poly, tol).max();
+      const double m = measure_printed(pieces, poly, tol, bound, 0);
       if (m > tol)
         throw std::logic_error("internal check failed: " + label + " deviates by " + fmt_num(m) +
                                " beyond the tolerance " + fmt_num(tol));
