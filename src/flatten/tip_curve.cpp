@@ -285,11 +285,14 @@ namespace {
 // The smallest distance from x to point(t) for t in [lo, hi]: Brent's
 // method on the squared distance, smooth even where the distance reaches 0
 // (the distance itself grows linearly off such a minimum, which only
-// bisection-like steps pin down), located to 1e-10 of the window.
+// bisection-like steps pin down), located to 1e-10 of the window; and the
+// window's ends themselves, which Brent's method only approaches (a
+// nearest point at an end would read high by the speed times that step).
 template <class P>
 double nearest_distance(double lo, double hi, const Vec3& x, P point) {
-  const auto m = brent_min(lo, hi, [&](double t) { const Vec3 d = point(t) - x; return dot(d, d); }, 1e-10 * (hi - lo));
-  return std::sqrt(m.f);
+  const auto d2 = [&](double t) { const Vec3 d = point(t) - x; return dot(d, d); };
+  const auto m = brent_min(lo, hi, d2, 1e-10 * (hi - lo));
+  return std::sqrt(std::min({m.f, d2(lo), d2(hi)}));
 }
 
 // The largest value of f on [a, b] (bracketing a sampled peak), located to
