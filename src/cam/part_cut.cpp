@@ -26,6 +26,9 @@ namespace bezcam::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// How many of a closed path's longest stretches are tried for its start
+// where a lead fits there.
+constexpr size_t kLeadStarts = 16;
 
 Vec3 unit_tangent(const Bezier& b, double t) {
   Vec3 d = derivative(b, t);
@@ -78,6 +81,20 @@ std::vector<std::vector<Bezier>> split_at_lengths(std::span<const Bezier> pieces
     }
   }
   return runs;
+}
+
+// The direction of travel where a lead joins the path at `p`: at right
+// angles to the normal from the part's nearest point to p, which points to
+// the waste when `away` is +1 (the path runs on the waste side of the part)
+// and from it when -1; the waste (+1 left, -1 right of travel) is on the
+// tool's side. Where p lies on the part (a program's path under controller
+// compensation with no offset), the path's own direction `along`.
+Vec3 lead_direction(PartDistance& part, const Vec3& p, const Vec3& along, int waste, int away, double scale) {
+  const Vec3 q = part.nearest(p);
+  const double dx = p.x - q.x, dy = p.y - q.y, l = std::hypot(dx, dy);
+  if (!(l > 1e-6 * scale)) return along;
+  const Vec3 w{away * dx / l, away * dy / l, 0};  // towards the waste
+  return Vec3{w.y, -w.x, 0} * waste;
 }
 
 // A quarter arc and a line on the waste side (+1 left, -1 right of travel).
@@ -370,6 +387,56 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
   // is offset only by the stock to leave and the band's middle.
   const double tool_r = controller ? *cp.tool_diameter / 2 : 0;
   const double program_by = offset_by - tool_r;
+  // The lead: under controller compensation there is always one (the
+  // controller enters and leaves compensation on it), by default a quarter
+  // arc of the tool's radius after a line of its diameter; its line must be
+  // longer than the tool's radius (LinuxCNC refuses a shorter entry move).
+  std::optional<Lead> lead_used = cp.lead;
+  if (controller && !lead_used) lead_used = Lead{tool_r, 2 * tool_r};
+  if (controller && !(lead_used->length > tool_r))
+    fail("lead.length", "compensation \"controller\" enters and leaves on the lead's line, which must be longer than the "
+                        "tool's radius " + fmt_num(tool_r) + " (it is " + fmt_num(lead_used->length) + "): make it longer");
+  // The leads are designed and checked against the part itself, sampled
+  // once for all of them.
+  const std::vector<std::vector<Bezier>> part_curves{part};
+  std::optional<PartDistance> part_distance;
+  if (lead_used && side != 0) part_distance.emplace(part_curves, 0.01 * tol);
+  // A lead stays in the path's band: it is cut within half the tolerance,
+  // or what the offset's fit leaves of the path's own share where that is
+  // less, and comes no nearer the part than the band's near edge plus that
+  // (to rounding). Where it joins the path it is no nearer than the path.
+  // Both are known once the offset's fit is.
+  double lead_budget = 0, lead_clear = 0;
+  // Where the path is on the part's side of the program's path (controller
+  // compensation of a negative stock), the waste lies the other way.
+  const int away = (controller ? program_by : offset_by) < 0 ? -1 : 1;
+  // The tool centre's lead at a path end (under compensation the
+  // programmed lead is the tool's radius larger and the line's outer end,
+  // where the tool stands before G41 and after G40, is not offset).
+  auto lead_path = [&](const Vec3& at, const Vec3& t, bool lead_in_end, const Lead& x) {
+    const Vec3 w = Vec3{-t.y, t.x, 0} * waste;
+    std::vector<PathPiece> pieces;
+    for (const Bezier& b : lead_in_end ? lead_in(at + w * tool_r, t, waste, x) : lead_out(at + w * tool_r, t, waste, x))
+      pieces.push_back(PathPiece::of(b));
+    if (controller) {
+      const Lead programmed{x.radius + tool_r, x.length};
+      const auto shape = lead_in_end ? lead_in(at, t, waste, programmed) : lead_out(at, t, waste, programmed);
+      const Vec3 outer = lead_in_end ? shape.front().front() : shape.back().back();
+      pieces.push_back(PathPiece::line(outer, outer));
+    }
+    return pieces;
+  };
+  // How much room the lead leaves: how near it comes to the part, less
+  // what it must keep (lead_clear, or what the path's own end keeps where
+  // that is less: that is the path's reading, measured on its own).
+  auto room = [&](const Vec3& at, const Vec3& t, bool lead_in_end, const Lead& x) {
+    const Vec3 centre = at + Vec3{-t.y, t.x, 0} * (waste * tool_r);
+    const double own = dist(centre, part_distance->nearest(centre)) - 1e-9 * scale;
+    return part_distance->min_distance(lead_path(at, t, lead_in_end, x)) - std::min(lead_clear, own);
+  };
+  auto lead_fits = [&](const Vec3& at, const Vec3& t, const Lead& x) {
+    return room(at, t, true, x) >= 0 && room(at, t, false, x) >= 0;
+  };
   std::vector<std::vector<Bezier>> chains;
   std::vector<bool> chain_closed;
   double fit_bound = 0;
@@ -395,15 +462,26 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       prog = offset_curve(part, closed, {std::abs(program_by), program_by > 0 ? side : -side, fit});
     const OffsetResult& used = controller ? prog : o;
     fit_bound = controller ? (chains.empty() ? prog.bound : 0.0) : o.bound;
+    lead_budget = std::min(0.5 * tol, tol - fit_bound - (dev_side == 0 ? 0.0 : 0.5 * tol));
+    lead_clear = radius - (dev_side > 0 ? 0 : tol) + lead_budget - 1e-9 * scale;
     for (size_t k = 0; k < used.chains.size(); ++k) {
       std::vector<ArcSeg> chain = used.chains[k];
       // A closed path with leads starts in the middle of its longest
-      // stretch: the lead (a quarter arc back along the path) needs room,
-      // which a corner of a pocket does not give.
+      // stretch where the lead fits: the lead (a quarter arc back along the
+      // path) needs room, which a corner of a pocket does not give, nor a
+      // bend of the part tighter than the lead.
       if ((cp.lead || controller) && used.closed[k]) {
-        size_t longest = 0;
-        for (size_t i = 1; i < chain.size(); ++i)
-          if (chain[i].length() > chain[longest].length()) longest = i;
+        std::vector<size_t> order(chain.size());
+        for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return chain[x].length() > chain[y].length(); });
+        size_t longest = order.front();
+        for (size_t i = 0; part_distance && i < order.size() && i < kLeadStarts; ++i) {
+          const Vec3 at = chain[order[i]].point(0.5);
+          if (lead_fits(at, lead_direction(*part_distance, at, chain[order[i]].tangent(0.5), waste, away, scale), *lead_used)) {
+            longest = order[i];
+            break;
+          }
+        }
         std::vector<ArcSeg> turned{chain[longest].sub(0.5, 1)};
         for (size_t i = 1; i < chain.size(); ++i) turned.push_back(chain[(longest + i) % chain.size()]);
         turned.push_back(chain[longest].sub(0, 0.5));
@@ -518,25 +596,15 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
     p.moves.push_back({l, entity});
   };
 
-  // The lead: under controller compensation there is always one (the
-  // controller enters and leaves compensation on it), by default a quarter
-  // arc of the tool's radius after a line of its diameter; its line must be
-  // longer than the tool's radius (LinuxCNC refuses a shorter entry move).
-  std::optional<Lead> lead_used = cp.lead;
-  if (controller && !lead_used) lead_used = Lead{tool_r, 2 * tool_r};
-  if (controller && !(lead_used->length > tool_r))
-    fail("lead.length", "compensation \"controller\" enters and leaves on the lead's line, which must be longer than the "
-                        "tool's radius " + fmt_num(tool_r) + " (it is " + fmt_num(lead_used->length) + "): make it longer");
   r.blocks = 0;
   r.bound = 0;
-  double out_bound = 0;
+  double out_bound = 0, lead_bound = 0;
   // Under controller compensation the tool path is the controller's: its
   // reading on bezcam's model of it (cutter_comp.hpp) joins the bound.
   double comp_reading = 0;
-  // The part, for the measurements.
-  const std::vector<std::vector<Bezier>> part_curves{part};
-  // The last pass of each stretch of the path, as the tool's centre goes.
-  std::vector<PathPiece> last_path;
+  // The last pass of each stretch of the path as the tool's centre goes,
+  // and its leads.
+  std::vector<PathPiece> last_path, last_leads;
   // Tabs go on each stretch of the path that holds them. Where the offset
   // falls apart (a tool wider than a gap of the part), a stretch too short
   // for them is cut without tabs and said; the tabs are refused when even
@@ -574,34 +642,63 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       }
     }
     const Vec3 s = chain.front().front(), e = chain.back().back();
-    const Vec3 ts = unit_tangent(chain.front(), 0), te = unit_tangent(chain.back(), 1);
+    // The direction the leads join the path in: at right angles to the
+    // part's nearest point (the tool's centre stands on that normal,
+    // whatever the path's last piece does where a clipped offset ends),
+    // turned so that the waste is on the tool's side.
+    Vec3 ts = unit_tangent(chain.front(), 0), te = unit_tangent(chain.back(), 1);
+    if (part_distance) {
+      ts = lead_direction(*part_distance, s, ts, waste, away, scale);
+      te = lead_direction(*part_distance, e, te, waste, away, scale);
+    }
     std::vector<Bezier> in, out;
     if (lead_used) {
+      Lead l = *lead_used;
+      if (part_distance) {
+        // A lead that would come nearer the part than the path (a pocket
+        // too small for it, a part too near) is made shorter, its line
+        // first; one whose arc alone does not fit is refused, with the
+        // radius that fits there.
+        for (const bool lead_in_end : {true, false}) {
+          const Vec3& at = lead_in_end ? s : e;
+          const Vec3& t = lead_in_end ? ts : te;
+          if (room(at, t, lead_in_end, l) >= 0) continue;
+          if (!controller && room(at, t, lead_in_end, Lead{l.radius, 0}) >= 0) {
+            double ok = 0, bad = l.length;
+            for (int i = 0; i < 30; ++i) {
+              const double mid = 0.5 * (ok + bad);
+              (room(at, t, lead_in_end, Lead{l.radius, mid}) >= 0 ? ok : bad) = mid;
+            }
+            l.length = ok;
+            continue;
+          }
+          double ok = 0, bad = l.radius;
+          for (int i = 0; i < 30; ++i) {
+            const double mid = 0.5 * (ok + bad);
+            (room(at, t, lead_in_end, Lead{mid, controller ? l.length : 0}) >= 0 ? ok : bad) = mid;
+          }
+          const double fits = std::floor(ok * 1000) / 1000;
+          const double near = part_distance->min_distance(lead_path(at, t, lead_in_end, l));
+          fail("lead", std::string("the lead-") + (lead_in_end ? "in" : "out") + " at " + where(at) +
+                           " would cut into the part: it comes within " + fmt_num(std::round(std::max(near, 0.0) * 1000) / 1000) +
+                           " of the curve, where the path keeps at least " +
+                           fmt_num(std::round((radius - (dev_side > 0 ? 0 : tol)) * 1e4) / 1e4) +
+                           (fits > 0 ? "; a lead of radius " + fmt_num(fits) + (controller ? "" : " and no line") +
+                                           " fits there: make it smaller"
+                                     : "; no lead fits there (the path ends where the tool touches the part on both "
+                                       "sides): remove the lead from this entity"));
+        }
+        if (l.length < lead_used->length)
+          p.warnings.push_back(ent.label() + ": the lead's line is made " + fmt_num(std::floor(l.length * 1000) / 1000) +
+                               " long, not " + fmt_num(lead_used->length) + ", at " + where(s) +
+                               (k > 0 || chains.size() > 1 ? " (stretch " + std::to_string(k + 1) + ")" : std::string()) +
+                               ": a longer one would cut into the part");
+      }
       // Under compensation the programmed lead arc is the tool's radius
       // larger: the tool's centre runs on the arc of the radius asked.
-      const Lead programmed{lead_used->radius + tool_r, lead_used->length};
+      const Lead programmed{l.radius + tool_r, l.length};
       in = lead_in(s, ts, waste, programmed);
       out = lead_out(e, te, waste, programmed);
-      // A lead that reaches into the part (a pocket too small for it, a
-      // part too near) would cut it: said, with how near it comes.
-      if (side != 0) {
-        for (const auto* lead : {&in, &out}) {
-          const auto pts = flatten(*lead, {.tolerance = 0.01 * tol, .decimals = -1, .on_curve = true}).points;
-          const std::vector<std::vector<Bezier>> curves{part};
-          double near = measure_offset(curves, pts, {.r = radius, .resolution = 0.05 * tol}).min_distance + tool_r;
-          // Under compensation the lead line's outer end is where the tool
-          // centre stands before G41 and after G40: not offset.
-          if (controller) {
-            const Vec3 outer = lead == &in ? lead->front().front() : lead->back().back();
-            near = std::min(near, measure_offset(curves, std::vector<Vec3>{outer, outer}, {.r = radius, .resolution = 0.05 * tol}).min_distance);
-          }
-          if (near < radius - tol)
-            p.warnings.push_back(ent.label() + ": the lead-" + (lead == &in ? "in" : "out") +
-                                 (near < 1e-3 ? std::string(" crosses the curve") : " comes within " + fmt_num(std::round(near * 1000) / 1000) + " of the curve") +
-                                 ", nearer than the tool's radius " + fmt_num(radius) +
-                                 ": it cuts into the part; make the lead shorter or its radius smaller");
-        }
-      }
     }
     const auto runs = cuts.empty() ? std::vector<std::vector<Bezier>>{chain} : split_at_lengths(chain, cuts);
     for (size_t d = 0; d < depths.size(); ++d) {
@@ -612,7 +709,8 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       const Vec3 entry = quantize(in.empty() ? s : in.front().front(), dec);
       approach(p, entity, {entry.x, entry.y, zq}, safe, clear, cp.plunge_feed, ms);
       if (controller) p.moves.push_back({CompensationMove{side, cp.tool, tool_r}, entity});
-      if (!in.empty()) cut(in, z, 0.5 * tol);
+      const size_t in_from = p.moves.size();
+      if (!in.empty()) lead_bound = std::max(lead_bound, cut(in, z, lead_budget));
       const size_t first_move = p.moves.size();
       const bool tabbed = !cuts.empty() && z < tab_top;
       for (size_t run = 0; run < runs.size(); ++run) {
@@ -661,21 +759,27 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
                                    "; a controller joins G01 moves that turn by less than 0.05 rad without a corner): use "
                                    "output \"arcs\" (arcs are compensated exactly) or compensation \"cam\"");
       }
-      // The last pass's path, measured against the part once every
-      // stretch of it is cut (below; the model's reading above under
-      // compensation).
-      if (c.measure && side != 0 && !controller && last_pass) {
-        const auto path = printed_path(p.moves, first_move, p.moves.size(), quantize(s, dec));
-        last_path.insert(last_path.end(), path.begin(), path.end());
-      }
+      const size_t path_to = p.moves.size();
+      const Vec3 before_out = motion_of(p.moves.back())->to;
       if (controller) {
         // The lead-out's arc compensated, G40, then its line: the exit move.
-        cut(std::vector<Bezier>(out.begin(), out.end() - 1), z, 0.5 * tol);
+        lead_bound = std::max(lead_bound, cut(std::vector<Bezier>(out.begin(), out.end() - 1), z, lead_budget));
         p.moves.push_back({CompensationMove{0, cp.tool, 0}, entity});
         const Vec3 to = quantize(out.back().back(), dec);
         line_to({to.x, to.y, zq}, cp.feed);
       } else if (!out.empty()) {
-        cut(out, z, 0.5 * tol);
+        lead_bound = std::max(lead_bound, cut(out, z, lead_budget));
+      }
+      // The last pass's path and its leads, measured against the part once
+      // every stretch of it is cut (below; the model's reading above under
+      // compensation).
+      if (c.measure && side != 0 && !controller && last_pass) {
+        const auto path = printed_path(p.moves, first_move, path_to, quantize(s, dec));
+        const auto lead_in_path = printed_path(p.moves, in_from, first_move, entry);
+        const auto lead_out_path = printed_path(p.moves, path_to, p.moves.size(), before_out);
+        last_path.insert(last_path.end(), path.begin(), path.end());
+        last_leads.insert(last_leads.end(), lead_in_path.begin(), lead_in_path.end());
+        last_leads.insert(last_leads.end(), lead_out_path.begin(), lead_out_path.end());
       }
       const Vec3 last = motion_of(p.moves.back())->to;
       RapidMove up;
@@ -685,15 +789,17 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
       ms.pos_known = true;
     }
   }
-  r.bound = std::max(fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol), comp_reading);
+  // The proven bound: the path's against r, and the leads' against their
+  // own arcs and lines (their readings are in the measured deviation too).
+  r.bound = std::max({fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol), comp_reading, lead_bound});
   // The last pass measured against the part on its own: every stretch of
-  // the path in the band, and the material left where the tool reaches
-  // read over all of them (a part whose offset falls apart is reached by
-  // its stretches together).
+  // the path in the band, the material left where the tool reaches read
+  // over all of them (a part whose offset falls apart is reached by its
+  // stretches together), and its leads no nearer the part than the band.
   if (!last_path.empty()) {
     EntityReport probe;
-    c.measure_with(probe, [curves = part_curves, path = std::move(last_path), radius, side, tol, dev_side,
-                           middle = offset_by - radius, label = r.label] {
+    c.measure_with(probe, [curves = part_curves, path = std::move(last_path), leads = std::move(last_leads), radius, side,
+                           tol, dev_side, middle = offset_by - radius, label = r.label] {
       const OffsetReading m =
           measure_offset(curves, path, {.r = radius, .side = side, .middle = middle, .resolution = 0.01 * tol});
       // With a one-sided band the reading is against its middle.
@@ -703,6 +809,13 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
         throw std::logic_error("internal check failed: " + label + "'s tool path lies " + fmt_num(m.min_distance) +
                                " to " + fmt_num(m.max_distance) + " from the part (leaving up to " + fmt_num(m.coverage) +
                                " of material where it reaches), outside [" + fmt_num(lo) + ", " + fmt_num(hi) + "]");
+      if (!leads.empty()) {
+        PartDistance to_part(curves, 0.01 * tol);
+        const double near = to_part.min_distance(leads);
+        if (near < lo - slack)
+          throw std::logic_error("internal check failed: " + label + "'s leads come within " + fmt_num(near) +
+                                 " of the part, nearer than " + fmt_num(lo));
+      }
       return std::max({radius - m.min_distance, m.max_distance - radius, m.coverage});
     });
     r.measured = std::max(r.measured, probe.measured);

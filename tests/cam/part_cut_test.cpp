@@ -1,18 +1,24 @@
 // Cutting a part (cam/part_cut): passes, leads, tabs, direction and order,
 // read from the program's moves; the band from the part is measured from
-// the text in gcode/part_roundtrip_test.cpp.
+// the text in gcode/part_roundtrip_test.cpp. The leads are measured here
+// against the part by the test's own means (dense samples of the part,
+// refined by golden section), never by bezcam's measurement.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <numbers>
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <sstream>
 
+#include "bezcam/cam/motion.hpp"
 #include "bezcam/cam/program.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "support/cutting_runs.hpp"
 
 namespace bezcam {
 namespace {
@@ -91,13 +97,262 @@ TEST(PartCut, LeadsStartOnTheWasteSideAndJoinTangentially) {
   EXPECT_GE(dist_to_rect(s, 0, 0, 40, 30), 3 + 2 - 1e-3);
 }
 
-TEST(PartCut, ALeadTooBigForThePocketIsSaid) {
-  const Program p = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":8,"length":5})", rect(0, 0, 20, 15));
+// The distance from a point to the part, by the test's own means: the
+// nearest of dense samples of every piece, refined by golden section
+// between that sample's neighbours.
+class PartDistance {
+ public:
+  explicit PartDistance(std::vector<Bezier> part) : part_(std::move(part)) {
+    for (size_t k = 0; k < part_.size(); ++k)
+      for (int i = 0; i <= kN; ++i) at_.push_back({k, static_cast<double>(i) / kN, evaluate(part_[k], static_cast<double>(i) / kN)});
+  }
+  double operator()(const Vec3& p) const {
+    size_t best = 0;
+    double d = HUGE_VAL;
+    for (size_t i = 0; i < at_.size(); ++i) {
+      const double e = std::hypot(at_[i].p.x - p.x, at_[i].p.y - p.y);
+      if (e < d) d = e, best = i;
+    }
+    const Bezier& b = part_[at_[best].piece];
+    double lo = std::max(0.0, at_[best].t - 1.0 / kN), hi = std::min(1.0, at_[best].t + 1.0 / kN);
+    auto f = [&](double t) { const Vec3 q = evaluate(b, t); return std::hypot(q.x - p.x, q.y - p.y); };
+    for (int i = 0; i < 40; ++i) {
+      const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+      (f(m1) < f(m2) ? hi : lo) = f(m1) < f(m2) ? m2 : m1;
+    }
+    return std::min(d, f(0.5 * (lo + hi)));
+  }
+
+ private:
+  static constexpr int kN = 128;
+  struct At {
+    size_t piece;
+    double t;
+    Vec3 p;
+  };
+  std::vector<Bezier> part_;
+  std::vector<At> at_;
+};
+
+// Every point of every cutting move at depth (plunges and tab steps are
+// straight up and down), every 0.1 along it.
+std::vector<Vec3> cut_points(const std::vector<MotionBlock>& run) {
+  std::vector<Vec3> out;
+  for (const MotionBlock& b : run) {
+    if (b.from.x == b.to.x && b.from.y == b.to.y) continue;
+    const double len = block_length(b);
+    const int n = std::max(2, static_cast<int>(std::ceil(len / 0.1)));
+    for (int i = 0; i <= n; ++i) out.push_back(evaluate_block(b, static_cast<double>(i) / n));
+  }
+  return out;
+}
+
+std::vector<Bezier> pieces_of(const std::string& entity) {
+  return parse_job(R"({"bezcam":1,"entities":[)" + entity + "]}", "part.json").entities.at(0).curve.pieces;
+}
+
+// A circle of radius R about (cx, cy) as four rational quarters, and a
+// regular hexagon, in either winding; the teardrop sample's cubics.
+std::string circle(double cx, double cy, double R, bool ccw) {
+  std::string segs;
+  const double w = std::sqrt(0.5);
+  for (int k = 0; k < 4; ++k) {
+    const int a = ccw ? k : 4 - k, b = ccw ? k + 1 : 3 - k;
+    auto pt = [&](double ang, double rr) {
+      return "[" + std::to_string(cx + rr * std::cos(ang)) + "," + std::to_string(cy + rr * std::sin(ang)) + "]";
+    };
+    const double a0 = a * std::numbers::pi / 2, a1 = b * std::numbers::pi / 2;
+    segs += std::string(k ? "," : "") + R"({"type":"bezier","weights":[1,)" + std::to_string(w) + R"(,1],"points":[)" +
+            pt(a0, R) + "," + pt(0.5 * (a0 + a1), R / w) + "," + pt(a1, R) + "]}";
+  }
+  return R"({"type":"path","closed":true,"segments":[)" + segs + "]}";
+}
+std::string polygon(const std::vector<std::pair<double, double>>& pts, bool ccw) {
+  std::vector<std::pair<double, double>> v = pts;
+  if (!ccw) std::reverse(v.begin(), v.end());
+  std::string segs;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const auto& a = v[i];
+    const auto& b = v[(i + 1) % v.size()];
+    segs += std::string(i ? "," : "") + R"({"type":"bezier","points":[[)" + std::to_string(a.first) + "," +
+            std::to_string(a.second) + "],[" + std::to_string(b.first) + "," + std::to_string(b.second) + "]]}";
+  }
+  return R"({"type":"path","closed":true,"segments":[)" + segs + "]}";
+}
+std::string teardrop(bool ccw) {
+  const std::string a = R"({"type":"bezier","points":[[0,0],[20,10],[30,20],[30,30]]},)"
+                        R"({"type":"bezier","points":[[30,30],[30,40],[20,45],[10,40]]},)"
+                        R"({"type":"bezier","points":[[10,40],[0,35],[-10,20],[0,0]]})";
+  const std::string b = R"({"type":"bezier","points":[[0,0],[-10,20],[0,35],[10,40]]},)"
+                        R"({"type":"bezier","points":[[10,40],[20,45],[30,40],[30,30]]},)"
+                        R"({"type":"bezier","points":[[30,30],[30,20],[20,10],[0,0]]})";
+  return R"({"type":"path","closed":true,"segments":[)" + (ccw ? a : b) + "]}";
+}
+
+std::string glyph() {
+  std::ifstream in(BEZCAM_SOURCE_DIR "/tests/cam/data/script-glyph.json");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Leads on the waste side for every side, direction and winding, on curved
+// and polygonal contours, in lines and arcs output: every point the tool
+// cuts at depth (leads included) is at least r less the tolerance from the
+// part, the plunge is well away from it, and the lead-out mirrors the
+// lead-in about the part's normal through the path's start.
+TEST(PartCut, LeadsStayOnTheWasteSideForEverySideDirectionAndWinding) {
+  const double r = 3, tol = 0.01;
+  std::vector<std::pair<double, double>> hex;
+  for (int k = 0; k < 6; ++k) hex.push_back({20 * std::cos(k * std::numbers::pi / 3), 20 * std::sin(k * std::numbers::pi / 3)});
+  for (const bool ccw : {true, false}) {
+    const std::map<std::string, std::string> contours{
+        {"circle", circle(0, 0, 20, ccw)},
+        {"teardrop", teardrop(ccw)},
+        {"rectangle", polygon({{0, 0}, {40, 0}, {40, 30}, {0, 30}}, ccw)},
+        {"hexagon", polygon(hex, ccw)}};
+    for (const auto& [name, entity] : contours) {
+      const PartDistance to_part(pieces_of(entity));
+      for (const char* side : {"outside", "inside", "left", "right"})
+        for (const char* direction : {"climb", "conventional", "as-drawn"})
+          for (const char* output : {"lines", "arcs"}) {
+            SCOPED_TRACE(name + (ccw ? " ccw " : " cw ") + side + " " + direction + " " + output);
+            const std::string json = R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,"cut_z":-1,)"
+                                     R"("tool_diameter":6,"lead":{"radius":3,"length":2},"side":")" + std::string(side) +
+                                     R"(","direction":")" + direction + R"("},"entities":[)" + entity + "]}";
+            ConvertOptions opt;
+            opt.output = std::string(output) == "arcs" ? OutputMode::arcs : OutputMode::lines;
+            const Program p = build_program(parse_job(json, "leads.json"), load_machine_profile("generic"), opt);
+            for (const auto& w : p.warnings) EXPECT_EQ(w.find("lead"), std::string::npos) << w;
+            const auto runs = test::cutting_runs(program_motion(p));
+            ASSERT_EQ(runs.size(), 1u);
+            const auto& run = runs[0];
+            ASSERT_GE(run.size(), 4u);
+            double nearest = HUGE_VAL;
+            for (const Vec3& q : cut_points(run)) nearest = std::min(nearest, to_part(q));
+            EXPECT_GE(nearest, r - tol);
+            const Vec3 a = run.front().to;  // the plunge: where the lead-in starts
+            EXPECT_GE(to_part(a), r + 1);
+            if (opt.output == OutputMode::arcs) {
+              // A line, then the lead-in's arc to the path's start; the
+              // lead-out's arc then its line end the run.
+              const Vec3 s = run[2].to, b = run.back().to;
+              EXPECT_EQ(run[2].kind == BlockKind::arc_cw || run[2].kind == BlockKind::arc_ccw, true);
+              const double ds = to_part(s);
+              EXPECT_NEAR(ds, r, tol);
+              // The part's normal through s: from its nearest point (found
+              // here by stepping against the gradient of the distance).
+              const double h = 1e-4;
+              Vec3 n{to_part({s.x + h, s.y, 0}) - to_part({s.x - h, s.y, 0}), to_part({s.x, s.y + h, 0}) - to_part({s.x, s.y - h, 0}), 0};
+              n = n * (1 / std::hypot(n.x, n.y));
+              const Vec3 u = a - s, v = b - s;
+              EXPECT_NEAR(std::hypot(u.x, u.y), std::hypot(v.x, v.y), 2e-3);
+              EXPECT_NEAR(dot(u, n), dot(v, n), 2e-3);                            // as far out
+              EXPECT_NEAR(u.x * n.y - u.y * n.x, -(v.x * n.y - v.y * n.x), 2e-3);  // on either side of the normal
+            }
+          }
+    }
+  }
+}
+
+// A closed contour whose clipped offset ends in a short stretch running
+// back (a glyph of a script's logo): the lead-out leaves where the part's
+// normal says, away from the part, as the lead-in comes in; it does not
+// follow the last stretch's direction into the part.
+TEST(PartCut, ALeadOutOnAClippedOffsetTurnsAwayFromThePart) {
+  const std::string entity = glyph();
+  const PartDistance to_part(pieces_of(entity));
+  for (OutputMode mode : {OutputMode::lines, OutputMode::arcs}) {
+    SCOPED_TRACE(to_string(mode));
+    ConvertOptions opt;
+    opt.output = mode;
+    const Program p = build_program(
+        parse_job(R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,"cut_z":-1,)"
+                  R"("side":"outside","tool_diameter":6,"lead":{"radius":3,"length":2}},"entities":[)" + entity + "]}",
+                  "glyph.json"),
+        load_machine_profile("generic"), opt);
+    for (const auto& w : p.warnings) EXPECT_EQ(w.find("lead"), std::string::npos) << w;
+    const auto runs = test::cutting_runs(program_motion(p));
+    ASSERT_EQ(runs.size(), 1u);
+    double nearest = HUGE_VAL;
+    for (const Vec3& q : cut_points(runs[0])) nearest = std::min(nearest, to_part(q));
+    EXPECT_GE(nearest, 3 - 0.01);
+    EXPECT_GE(to_part(runs[0].back().to), 3 + 1);  // the lead-out ends away from the part
+  }
+}
+
+// A lead that would cut into the part is never written: its line is made
+// shorter where that is enough (said in a warning), and a lead whose arc
+// does not fit is refused, naming the key and the radius that fits.
+TEST(PartCut, ALeadTooBigForThePocketIsShortenedOrRefused) {
+  // A 20 x 15 pocket: the tool's centre keeps to a 14 x 9 rectangle, from
+  // (3, 3) to (17, 12); the lead joins the path in the middle of a long
+  // side, at (10, 3) or (10, 12), and turns into the pocket.
+  try {
+    (void)build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":8,"length":1})", rect(0, 0, 20, 15));
+    ADD_FAILURE() << "a lead arc of radius 8 from the middle of a long side reaches x = 2";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.id(), "job.cut");
+    EXPECT_EQ(e.where(), "test.json: job.lead");
+    EXPECT_NE(std::string(e.what()).find("the lead-in at (10, "), std::string::npos) << e.what();  // a long side's middle
+    EXPECT_NE(std::string(e.what()).find("would cut into the part"), std::string::npos) << e.what();
+    // Its arc reaches x = 10 - R: a radius up to 7 fits, and a little more
+    // (what the band leaves beside the lead's own chord error).
+    const std::string what = e.what();
+    const size_t at = what.find("a lead of radius ");
+    ASSERT_NE(at, std::string::npos) << what;
+    const double fits = std::stod(what.substr(at + 17));
+    EXPECT_GE(fits, 7);
+    EXPECT_LE(fits, 7.0075);
+    EXPECT_NE(what.find(" and no line fits there: make it smaller"), std::string::npos) << what;
+  }
+  // In a 20 x 20 pocket (the tool's centre in a 14 x 14 square) a lead of
+  // radius 2 fits at the middle of any side; a line of 14 after it would
+  // reach 2 beyond the opposite side: it is made 12 long.
+  const Program p = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":2,"length":14})", rect(0, 0, 20, 20));
   bool said = false;
-  for (const auto& w : p.warnings) said = said || w.find("lead-in crosses the curve") != std::string::npos;
+  for (const auto& w : p.warnings) {
+    const size_t at = w.find("the lead's line is made ");
+    if (at == std::string::npos) continue;
+    const double made = std::stod(w.substr(at + 24));
+    EXPECT_GE(made, 12) << w;
+    EXPECT_LE(made, 12.0075) << w;
+    said = w.find(" long, not 14, at (") != std::string::npos && w.find("): a longer one would cut into the part") != std::string::npos;
+  }
   EXPECT_TRUE(said);
+  const Cut c = cuts(p);
+  ASSERT_EQ(c.plunges.size(), 1u);
+  EXPECT_GE(dist_to_rect(c.plunges[0], 0, 0, 20, 20), 3 - 0.01);
+  EXPECT_LE(dist_to_rect(c.plunges[0], 0, 0, 20, 20), 3);
+  for (const auto& run : c.runs)
+    for (const auto& v : run) EXPECT_GE(dist_to_rect(v, 0, 0, 20, 20), 3 - 0.0101);
+  // Room enough: no word about the lead.
   const Program q = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":2,"length":1})", rect(0, 0, 40, 30));
   for (const auto& w : q.warnings) EXPECT_EQ(w.find("lead"), std::string::npos) << w;
+}
+
+// The entity's proven bound covers what is measured of it, its leads
+// included (their arcs and lines are read against their own geometry) and
+// the true offset where the path is clipped at inner corners (a point of it
+// is one no nearer than r to the whole part: nearer, it is folded away).
+TEST(PartCut, TheBoundCoversTheLeadsAndTheClippedCorners) {
+  for (const char* machine : {"generic", "fanuc", "linuxcnc"})
+    for (OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
+      SCOPED_TRACE(std::string(machine) + " " + to_string(mode));
+      ConvertOptions opt;
+      opt.output = mode;
+      const Program p = build_program(
+          parse_job(R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,"cut_z":-1,)"
+                    R"("side":"outside","tool_diameter":6,"lead":{"radius":3,"length":2}},"entities":[)" +
+                        rect(0, 0, 40, 30) + "," + glyph() + "]}",
+                    "bound.json"),
+          load_machine_profile(machine), opt);
+      ASSERT_EQ(p.entities.size(), 2u);
+      for (const auto& e : p.entities) {
+        EXPECT_GT(e.measured, 0) << e.label;
+        EXPECT_LE(e.measured, e.bound) << e.label;
+      }
+    }
 }
 
 TEST(PartCut, TabsRaiseOnlyThePassesBelowThem) {
