@@ -1,0 +1,120 @@
+// Every deviation the report gives is a promise kept: for every entity of
+// every sample (samples/: jobs and drawings) on the generic, fanuc and
+// linuxcnc profiles in lines, arcs and nurbs output, and of every job of
+// the fuzz corpus that converts in every output mode, the deviation
+// measured is no more than the proven bound, in the JSON report as
+// `convert --report` writes it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bezcam/error.hpp"
+#include "bezcam/gcode/convert.hpp"
+#include "bezcam/import/drawing.hpp"
+#include "bezcam/import/read_drawing.hpp"
+#include "bezcam/job/job_json.hpp"
+#include "bezcam/report/report.hpp"
+
+namespace bezcam {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Case {
+  std::string name;
+  Job job;
+};
+
+std::vector<fs::path> files_in(const fs::path& dir) {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_regular_file()) out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The sample jobs and drawings (a drawing as `convert` reads it, with no
+// settings).
+std::vector<Case> samples() {
+  std::vector<Case> out;
+  for (const fs::path& dir : {fs::path(BEZCAM_SOURCE_DIR "/samples"), fs::path(BEZCAM_SOURCE_DIR "/samples/controller-comp")})
+    for (const fs::path& f : files_in(dir)) {
+      if (f.extension() == ".json") out.push_back({f.filename().string(), load_job(f)});
+      else if (import::is_drawing(f)) out.push_back({f.filename().string(), import::to_job(import::read_drawing(f))});
+    }
+  return out;
+}
+
+// The fuzz corpus's jobs that read.
+std::vector<Case> corpus() {
+  std::vector<Case> out;
+  for (const fs::path& f : files_in(BEZCAM_SOURCE_DIR "/tests/fuzz/corpus/job")) {
+    std::ifstream in(f, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+      out.push_back({"corpus " + f.filename().string(), parse_job(text.str(), f.filename().string())});
+    } catch (const InputError&) {
+    }
+  }
+  return out;
+}
+
+struct Run {
+  const char* machine;
+  OutputMode mode;
+};
+// Every profile in every mode; lines and arcs are the same on each
+// profile but for its rounding, NURBS blocks differ (generic has none).
+const std::vector<Run> kEvery{{"generic", OutputMode::lines}, {"generic", OutputMode::arcs}, {"generic", OutputMode::nurbs},
+                              {"fanuc", OutputMode::lines},   {"fanuc", OutputMode::arcs},   {"fanuc", OutputMode::nurbs},
+                              {"linuxcnc", OutputMode::lines}, {"linuxcnc", OutputMode::arcs}, {"linuxcnc", OutputMode::nurbs}};
+const std::vector<Run> kEveryMode{{"generic", OutputMode::lines}, {"generic", OutputMode::arcs},
+                                  {"fanuc", OutputMode::nurbs}, {"linuxcnc", OutputMode::nurbs}};
+
+// Converts the case as each run asks (a refusal converts nothing); returns
+// how many converted.
+size_t expect_bound_covers_measured(const Case& c, const std::vector<Run>& runs) {
+  size_t converted = 0;
+  for (const Run& run : runs) {
+    const MachineProfile m = load_machine_profile(run.machine);
+    ConvertOptions opt;
+    opt.output = run.mode;
+    ConvertResult r;
+    try {
+      r = convert(c.job, m, opt);
+    } catch (const InputError&) {
+      continue;
+    }
+    ++converted;
+    const std::string what = c.name + " on " + run.machine + ", --output " + to_string(run.mode);
+    const auto j = nlohmann::json::parse(report_json(make_report(r.program, m, r.gcode)));
+    for (const auto& x : j["entities"])
+      EXPECT_LE(x["measured_deviation"].get<double>(), x["proven_bound"].get<double>()) << what << ": entity " << x["label"];
+    EXPECT_LE(j["max_measured_deviation"].get<double>(), j["max_proven_bound"].get<double>()) << what;
+  }
+  return converted;
+}
+
+TEST(BoundCoversMeasured, EverySampleInEveryModeOnEveryProfile) {
+  const auto cases = samples();
+  ASSERT_GE(cases.size(), 35u);
+  size_t converted = 0;
+  for (const Case& c : cases) converted += expect_bound_covers_measured(c, kEvery);
+  EXPECT_GE(converted, 3 * cases.size());  // every sample converts somewhere in every mode, most everywhere
+}
+
+TEST(BoundCoversMeasured, EveryFuzzCorpusJobThatConverts) {
+  const auto cases = corpus();
+  ASSERT_GE(cases.size(), 10u);
+  size_t converted = 0;
+  for (const Case& c : cases) converted += expect_bound_covers_measured(c, kEveryMode);
+  EXPECT_GT(converted, 0u);
+}
+
+}  // namespace
+}  // namespace bezcam
