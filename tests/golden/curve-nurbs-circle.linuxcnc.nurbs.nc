@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-nurbs-circle.json, machine linuxcnc, output nurbs)
-(tolerance 0.01 mm; largest deviation measured 6.679e-05 mm, proven bound 7.453e-05 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 6.578e-05 mm, proven bound 7.453e-05 mm, rounding included)
 (T1: circle-d80)
 (estimated cycle time 18 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: job-inch-semicircle.json, machine fanuc, output arcs)
-N20 (tolerance 0.0005 inch; largest deviation measured 0.000498 inch, proven bound 0.0005 inch, rounding included)
+N20 (tolerance 0.0005 inch; largest deviation measured 0.0004979 inch, proven bound 0.0005 inch, rounding included)
 N30 (T1: semicircle-inch)
 N40 (estimated cycle time 22 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G20 G90 G17

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: part.dxf, machine linuxcnc, output nurbs)
-(tolerance 0.01 mm; largest deviation measured 1.084e-05 mm, proven bound 1.149e-05 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 1.149e-05 mm, rounding included)
 (T1: OUTLINE:2F+7, HOLES:37, HOLES:38, HOLES:39, HOLES:3A, HOLES:3B)
 (estimated cycle time 34 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17
