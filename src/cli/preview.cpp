@@ -228,7 +228,7 @@ int run() {
   const char* u = to_string(p.units);
   in.notes.push_back("machine " + m.name + ", output " + to_string(p.output) + ", tolerance " +
                      format_significant(p.tolerance, 6) + " " + u + " (largest deviation measured " +
-                     measured_text(p.max_measured, p.tolerance, [](double v) { return format_significant(v, 3); }) +
+                     measured_text(p.max_measured, p.max_bound, p.tolerance, [](double v) { return format_significant(v, 3); }) +
                      " " + u + ", proven bound " +
                      format_significant(p.max_bound, 3) + " " + u + ")");
   const ProgramReport rep = make_report(p, m);

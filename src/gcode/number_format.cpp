@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
@@ -49,9 +50,13 @@ std::string format_significant(double v, int digits) {
   return buf;
 }
 
-std::string measured_text(double measured, double tolerance, std::string (*format)(double)) {
+std::string measured_text(double measured, double bound, double tolerance, std::string (*format)(double)) {
   const double resolution = kMeasureResolution * tolerance;
-  return measured <= resolution ? "below " + format(resolution) : format(measured);
+  if (measured > resolution) return format(measured);
+  if (bound <= 0) return "0";
+  const std::string floor = format(std::min(resolution, bound));
+  // The figure as printed must still be above what was measured.
+  return std::strtod(floor.c_str(), nullptr) > measured ? "below " + floor : format(measured);
 }
 
 }  // namespace bezcam

@@ -61,7 +61,7 @@ class Writer {
     // formatter: 5e-07 inch is not "0." (issue "Safe on the shop floor").
     const auto sig = [](double v) { return format_significant(v, 4); };
     note("tolerance " + format_significant(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
-         measured_text(p_.max_measured, p_.tolerance, sig) + " " + u + ", proven bound " + sig(p_.max_bound) + " " +
+         measured_text(p_.max_measured, p_.max_bound, p_.tolerance, sig) + " " + u + ", proven bound " + sig(p_.max_bound) + " " +
          u + ", rounding included");
     if (m_.comments) {
       tools();

@@ -243,8 +243,8 @@ std::string report_json(const ProgramReport& r) {
 
 std::string report_text(const ProgramReport& r, size_t max_entities) {
   const std::string u = std::string(" ") + to_string(r.units);
-  auto measured = [&](double m) {
-    return measured_text(m, r.tolerance, [](double v) { return format_significant(v, 3); }) + u;
+  auto measured = [&](double m, double bound) {
+    return measured_text(m, bound, r.tolerance, [](double v) { return format_significant(v, 3); }) + u;
   };
   size_t blocks = 0;
   for (const auto& e : r.entities) blocks += e.report.blocks;
@@ -256,12 +256,12 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
     const EntityReport& e = r.entities[i].report;
     s += "  " + e.label + ": " + e.type + ", degree " + std::to_string(e.degree) + ", length " +
          format_significant(e.length, 6) + u + ", " + std::to_string(e.blocks) + " block" +
-         (e.blocks == 1 ? "" : "s") + ", deviation " + measured(e.measured) + " (proven bound " +
+         (e.blocks == 1 ? "" : "s") + ", deviation " + measured(e.measured, e.bound) + " (proven bound " +
          format_significant(e.bound, 3) + u + ")\n";
   }
   if (n > max_entities)
     s += "  ... and " + std::to_string(n - max_entities) + " more entit" + (n - max_entities == 1 ? "y" : "ies") +
-         "; the largest deviation measured is " + measured(r.max_measured) + "\n";
+         "; the largest deviation measured is " + measured(r.max_measured, r.max_bound) + "\n";
   const double t = r.total.time_s();
   char tbuf[64];
   if (t < 60) std::snprintf(tbuf, sizeof tbuf, "%.1f s", t);

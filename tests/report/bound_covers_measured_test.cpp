@@ -3,13 +3,15 @@
 // linuxcnc profiles in lines, arcs and nurbs output, and of every job of
 // the fuzz corpus that converts in every output mode, the deviation
 // measured is no more than the proven bound, in the JSON report as
-// `convert --report` writes it.
+// `convert --report` writes it, and as the text report and the program's
+// header state them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 #include "bezcam/error.hpp"
@@ -76,6 +78,17 @@ const std::vector<Run> kEvery{{"generic", OutputMode::lines}, {"generic", Output
 const std::vector<Run> kEveryMode{{"generic", OutputMode::lines}, {"generic", OutputMode::arcs},
                                   {"fanuc", OutputMode::nurbs}, {"linuxcnc", OutputMode::nurbs}};
 
+// Every "deviation <figure> ... proven bound <figure>" the text states
+// (the report's lines, the program's header comment): the deviation's
+// figure, "below" one included, is never the larger of the two.
+void expect_figures_in_order(const std::string& text, const std::string& what) {
+  static const std::regex pair(R"(deviation (?:measured )?(below )?([-0-9.e+]+) (?:mm|in)[^0-9]*proven bound ([-0-9.e+]+))");
+  size_t seen = 0;
+  for (std::sregex_iterator it(text.begin(), text.end(), pair), end; it != end; ++it, ++seen)
+    EXPECT_LE(std::stod((*it)[2].str()), std::stod((*it)[3].str())) << what << ": " << it->str();
+  EXPECT_GT(seen, 0u) << what << ": no deviation stated in\n" << text;
+}
+
 // Converts the case as each run asks (a refusal converts nothing); returns
 // how many converted.
 size_t expect_bound_covers_measured(const Case& c, const std::vector<Run>& runs) {
@@ -96,6 +109,8 @@ size_t expect_bound_covers_measured(const Case& c, const std::vector<Run>& runs)
     for (const auto& x : j["entities"])
       EXPECT_LE(x["measured_deviation"].get<double>(), x["proven_bound"].get<double>()) << what << ": entity " << x["label"];
     EXPECT_LE(j["max_measured_deviation"].get<double>(), j["max_proven_bound"].get<double>()) << what;
+    expect_figures_in_order(report_text(make_report(r.program, m, r.gcode), 1000), what + ", report");
+    expect_figures_in_order(r.gcode.substr(0, r.gcode.find("proven bound") + 40), what + ", program header");
   }
   return converted;
 }

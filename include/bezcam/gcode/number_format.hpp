@@ -19,10 +19,12 @@ char* format_number_to(char* buf, double v, int decimals);
 std::string format_significant(double v, int digits);
 
 /// A measured deviation as bezcam states it (program header, report,
-/// preview): `format(measured)`, or "below " + `format(resolution)` when it
-/// is within the measurement's resolution (kMeasureResolution of the
-/// tolerance), where a figure would only show the measurement's own error,
-/// possibly above a proven bound of 0 (exact NURBS output).
-std::string measured_text(double measured, double tolerance, std::string (*format)(double));
+/// preview) beside its proven bound: `format(measured)`, or, when it is
+/// within the measurement's resolution (kMeasureResolution of the
+/// tolerance, where a figure would only show the measurement's own error),
+/// "below " the smaller of the resolution and a positive bound, so that the
+/// figure read beside the bound is never the larger; "0" when the bound is
+/// 0 (nothing to measure but the measurement's own error).
+std::string measured_text(double measured, double bound, double tolerance, std::string (*format)(double));
 
 }  // namespace bezcam
