@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-1.json, machine linuxcnc, output nurbs)
-(tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0 mm, proven bound 0 mm, rounding included)
 (T1: seed-ex-1)
 (estimated cycle time 2 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-nurbs-circle.json, machine generic, output arcs)
-(tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 2.449e-06 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured below 2.449e-06 mm, proven bound 2.449e-06 mm, rounding included)
 (T1: circle-d80)
 (estimated cycle time 24 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 (bezcam 0.1.0: path-closed-teardrop.json, machine fanuc-g063, output nurbs)
-(tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 0 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0 mm, proven bound 0 mm, rounding included)
 (T2: teardrop)
 (estimated cycle time 14 s on the motion model of machine fanuc-g063 [acceleration, corners, tool changes])
 G21 G90 G17
