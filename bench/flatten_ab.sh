@@ -6,12 +6,12 @@
 # temporary directory (the build itself is not touched).
 # Usage: bench/flatten_ab.sh BUILD_DIR VARIANT.cpp [CORPUS.json [EVERY [ROUNDS]]]
 #        (TOLS="0.1 0.01" to choose the tolerances; default corpus:
-#        shared/bench/cubics-10k.json beside the repository, every 10th curve, 61 rounds)
+#        bench/corpus/cubics-10k.json, every 10th curve, 61 rounds)
 set -euo pipefail
 src=$(cd "$(dirname "$0")/.." && pwd)
 build=$(cd "${1:?usage: flatten_ab.sh BUILD_DIR VARIANT.cpp [CORPUS [EVERY [ROUNDS]]]}" && pwd)
 variant=${2:?usage: flatten_ab.sh BUILD_DIR VARIANT.cpp [CORPUS [EVERY [ROUNDS]]]}
-corpus=${3:-$src/../shared/bench/cubics-10k.json}
+corpus=${3:-$src/bench/corpus/cubics-10k.json}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 sed -E 's/\bflatten_pieces\b/flatten_pieces_v/g; s/\bflatten_into\b/flatten_into_v/g; s/\bFlattenResult flatten\(/FlattenResult flatten_v(/; s/\bdouble (chord_deviation|band_deviation|estimate_segments)\(/double \1_v(/' \

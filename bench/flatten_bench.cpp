@@ -1,13 +1,11 @@
-// Flattening benchmark on the shared corpus (shared/bench/cubics-10k.json):
+// Flattening benchmark on the corpus (bench/corpus/cubics-10k.json):
 // for tolerances 0.1, 0.01 and 0.001 mm, prints for bezcam's flattener (the
 // band, its default, and with every vertex on the curve) and for cairo's
 // (same process, same machine, so the speed is a ratio): curves per second,
 // segments against the greedy maximal on-curve chord minimum (computed here
 // by bisection on the exact chord deviation), curves over tolerance and the
 // largest deviation as a fraction of the tolerance, both measured
-// independently (flatten/deviation.hpp). Without the corpus at its default
-// place it says so and exits 0 (a corpus named on the command line must
-// exist).
+// independently (flatten/deviation.hpp).
 //
 // Usage: flatten_bench [CORPUS.json] [--quick]   (--quick: every 10th curve)
 //        flatten_bench [--quick] --only bezcam|cairo --tol T
@@ -51,14 +49,9 @@ struct Curve {
   std::string kind;
 };
 
-std::vector<Curve> load(const std::string& path, bool quick, bool named) {
+std::vector<Curve> load(const std::string& path, bool quick) {
   std::ifstream in(path);
   if (!in) {
-    if (!named) {
-      std::printf("flatten_bench: no corpus at %s: nothing measured (name one: flatten_bench CORPUS.json)\n",
-                  path.c_str());
-      std::exit(0);
-    }
     std::fprintf(stderr, "flatten_bench: cannot read %s\n", path.c_str());
     std::exit(3);
   }
@@ -207,8 +200,8 @@ void whole_job(const std::vector<Curve>& curves) {
 }
 
 int main(int argc, char** argv) {
-  std::string corpus = std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json";
-  bool quick = false, named = false;
+  std::string corpus = BEZCAM_CORPUS;
+  bool quick = false;
   std::string only;
   double only_tol = 0.01;
   int repeat = 1;
@@ -217,9 +210,9 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
     else if (!std::strcmp(argv[i], "--tol") && i + 1 < argc) only_tol = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-    else corpus = argv[i], named = true;
+    else corpus = argv[i];
   }
-  const auto curves = load(corpus, quick, named);
+  const auto curves = load(corpus, quick);
   if (only == "hash" || only == "hash-all") {
     // A fingerprint of every vertex the band flattener emits over the
     // corpus, for tolerances and decimals: two builds that print the same

@@ -3,7 +3,7 @@
 # curves (every 10th corpus curve), counted by callgrind: a speed comparison
 # that the load of a shared machine does not change.
 # Usage: bench/flatten_instructions.sh [BUILD_DIR [CORPUS.json]]  (default corpus:
-# flatten_bench's own, shared/bench/cubics-10k.json beside the repository)
+# flatten_bench's own, bench/corpus/cubics-10k.json)
 set -euo pipefail
 build=${1:-build}
 corpus=(${2:+"$2"})

@@ -1,4 +1,4 @@
-// Whole-job throughput on the shared corpus (shared/bench/cubics-10k.json)
+// Whole-job throughput on the corpus (bench/corpus/cubics-10k.json)
 // as one job: 10,000 cubic Béziers, generic profile, lines, 0.01 mm, the
 // independent measurement on (what `bezcam convert` does). Prints curves/s
 // of each stage and of the whole process, and the peak memory (of the
@@ -93,7 +93,7 @@ void row(const char* stage, size_t curves, Lap s, const char* note = "") {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string corpus = std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json";
+  std::string corpus = BEZCAM_CORPUS;
   bool quick = false;
   std::string job_file;
   for (int i = 1; i < argc; ++i) {
@@ -103,8 +103,8 @@ int main(int argc, char** argv) {
   }
   std::ifstream in(corpus);
   if (!in) {
-    std::printf("job_throughput: corpus %s not found: benchmark skipped\n", corpus.c_str());
-    return 0;
+    std::fprintf(stderr, "job_throughput: cannot read %s\n", corpus.c_str());
+    return 3;
   }
   const nlohmann::json doc = nlohmann::json::parse(in);
   const std::string text = job_text(doc, quick ? 1000 : SIZE_MAX);

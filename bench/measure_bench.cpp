@@ -1,5 +1,5 @@
-// The independent deviation measurement alone, one thread, on the shared
-// corpus (shared/bench/cubics-10k.json): every curve flattened at each
+// The independent deviation measurement alone, one thread, on the
+// corpus (bench/corpus/cubics-10k.json): every curve flattened at each
 // tolerance (the program's polyline), then measure_deviation() timed over
 // all of them. Prints curves/s, segments/s and the largest readings.
 // Then pieces without a power form (rational, degree > 3), generated from a
@@ -86,7 +86,7 @@ void other_pieces() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string corpus = std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json";
+  std::string corpus = BEZCAM_CORPUS;
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
@@ -94,9 +94,8 @@ int main(int argc, char** argv) {
   }
   std::ifstream in(corpus);
   if (!in) {
-    std::printf("measure_bench: corpus %s not found: the corpus's table skipped\n", corpus.c_str());
-    other_pieces();
-    return 0;
+    std::fprintf(stderr, "measure_bench: cannot read %s\n", corpus.c_str());
+    return 3;
   }
   const nlohmann::json doc = nlohmann::json::parse(in);
   std::vector<bezcam::Bezier> curves;

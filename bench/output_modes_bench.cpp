@@ -4,8 +4,8 @@
 //
 //   build/output_modes_bench            # markdown table on stdout
 //   build/output_modes_bench --corpus [--quick] [CORPUS.json]
-//     arcs output's blocks on the shared corpus of cubics
-//     (shared/bench/cubics-10k.json; --quick: every 10th curve) at 0.1, 0.01
+//     arcs output's blocks on the corpus of cubics
+//     (bench/corpus/cubics-10k.json; --quick: every 10th curve) at 0.1, 0.01
 //     and 0.001 mm, as given (planar) and lifted into ramps (G01 only),
 //     with every span end on the curve and with the band
 //     (ArcFitOptions::band), and the largest deviation measured
@@ -72,8 +72,8 @@ double ratio(size_t a, size_t b) { return static_cast<double>(a) / static_cast<d
 int corpus_arcs(const std::string& path, bool quick) {
   std::ifstream in(path);
   if (!in) {
-    std::printf("output_modes_bench: no corpus at %s: nothing measured\n", path.c_str());
-    return 0;
+    std::fprintf(stderr, "output_modes_bench: cannot read %s\n", path.c_str());
+    return 3;
   }
   const nlohmann::json doc = nlohmann::json::parse(in);
   // The curves as given (planar: arcs) and lifted into ramps, control point
@@ -141,7 +141,7 @@ int corpus_arcs(const std::string& path, bool quick) {
 int main(int argc, char** argv) {
   if (argc > 1 && !std::strcmp(argv[1], "--corpus")) {
     bool quick = false;
-    std::string corpus = std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json";
+    std::string corpus = BEZCAM_CORPUS;
     for (int i = 2; i < argc; ++i) {
       if (!std::strcmp(argv[i], "--quick")) quick = true;
       else corpus = argv[i];

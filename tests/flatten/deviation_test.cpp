@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -115,11 +114,8 @@ void expect_agrees(const std::vector<Bezier>& pieces, const std::vector<Vec3>& p
 }  // namespace
 
 TEST(Deviation, AgreesWithAReferenceOnCorpusCurves) {
-  // BEZCAM_SHARED_DIR in the environment overrides the build's (a worktree's).
-  const char* env = std::getenv("BEZCAM_SHARED_DIR");
-  const std::string shared = env ? env : BEZCAM_SHARED_DIR;
-  std::ifstream in(shared + "/bench/cubics-10k.json");
-  if (!in) GTEST_SKIP() << "shared corpus not found at " << shared;
+  std::ifstream in(BEZCAM_CORPUS);
+  ASSERT_TRUE(in) << "the corpus is missing: " << BEZCAM_CORPUS;
   const auto doc = nlohmann::json::parse(in);
   std::mt19937_64 rng(15);
   std::uniform_real_distribution<double> off(-2, 2);

@@ -1,7 +1,8 @@
 // The flattener's promise, checked by independent measurement: the printed
 // polyline (vertices rounded to the decimals) is within the tolerance of the
-// true curve, both ways, on hard cases, on random curves and on the shared
-// corpus; and it stays close to the greedy maximal-chord minimum.
+// true curve, both ways, on hard cases, on random curves and on the
+// corpus (bench/corpus/); and it stays close to the greedy maximal-chord
+// minimum.
 #include "bezcam/flatten/flatten_curve.hpp"
 
 #include <gtest/gtest.h>
@@ -396,8 +397,8 @@ TEST(Flatten, TheMeasurementCatchesADroppedVertex) {
 }
 
 TEST(Flatten, NearTheGreedyMinimumOnTheSharedCorpus) {
-  std::ifstream in(std::string(BEZCAM_SHARED_DIR) + "/bench/cubics-10k.json");
-  if (!in) GTEST_SKIP() << "shared corpus not found at " << BEZCAM_SHARED_DIR;
+  std::ifstream in(BEZCAM_CORPUS);
+  ASSERT_TRUE(in) << "the corpus is missing: " << BEZCAM_CORPUS;
   const auto doc = nlohmann::json::parse(in);
   // The band (default) at most 0.85 times the greedy on-curve minimum
   // (issue 15, item 3); vertices on the curve within 10 % above it.
