@@ -71,12 +71,10 @@
 // length L grows like p(s) = a + (b - a) s / L + k s (s - L) (s - m), a and
 // b the offsets at its ends. With a = b shared by consecutive spans, the
 // best is a = 0 (on the curve); the minimax arc with a free end (errors of
-// opposite signs at its ends, about 15 % longer alone) leaves the next span
-// starting at the wrong sign. On the corpus of cubics
-// (bench/output_modes_bench --corpus --quick) free ends took 1.8, 5.7 and
-// 8.0 % more blocks at 0.1, 0.01 and 0.001 mm, and band lines between the
-// arcs of planar pieces 0.1 % more (an arc after a shifted line starts
-// off the curve, where it is shorter).
+// opposite signs at its ends, longer alone) leaves the next span starting
+// at the wrong sign, and takes more blocks in all (bench/output_modes_bench
+// --corpus). So do band lines between the arcs of planar pieces: an arc
+// after a shifted line starts off the curve, where it is shorter.
 //
 // Helical arcs (ArcFitOptions::helical; G17 in the plane's coordinates,
 // the axis h of D running linearly with the angle from h_s = S'.h to

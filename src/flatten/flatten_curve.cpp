@@ -537,8 +537,8 @@ constexpr double kBandClose = 0.97;
 // ... or once its sagitta is this share of the longest chord's: its step is
 // then at least sqrt(0.7) = 84 % of the longest. Most chords are settled by
 // their first try, aimed at kBandAim of the longest chord's sagitta; a
-// lower share accepts more first tries (fewer tries per chord: 1.7 instead
-// of 2.0 at 0.1 mm on the corpus) for 0.5-1.5 % more chords.
+// lower share accepts more first tries (fewer tries per chord) for a few
+// more chords.
 constexpr double kBandAccept = 0.70;
 constexpr double kBandAim = 0.97;
 // Without a bulge to steer by (rational or higher-degree pieces, 3D
@@ -673,10 +673,8 @@ inline void count_search(int kind, int n_tries) {
 // steered by the bulge as described above. It works on plain x and y values
 // held in locals (no z; the curve's point and tangent at t0 carried from the
 // chord that ended there; the largest sagittas computed once per search when
-// there is no rounding): about 10 % faster than the same search written
-// over Vec3 with its state reached through a lambda's references (best of 5
-// interleaved runs), vertex for vertex the same (flatten_bench --only
-// hash-all). bound_band() calls it for
+// there is no rounding), for speed: it gives the same vertices as the
+// general search (flatten_bench --only hash-all). bound_band() calls it for
 // such pieces and searches every other one itself. `A`, `Ar` (the last
 // vertex, exact and rounded) and `dispA` come in for the piece's start;
 // `Ar` leaves as the piece's last vertex; `bound` and `emitted` accumulate.
@@ -890,7 +888,7 @@ constexpr double kSpreadAim = 0.95;
 constexpr double kSpreadMax = 1 << 16;
 constexpr int kSpreadShrinks = 32;
 // Cube root for planning only (a guess refined by two Newton steps: about
-// 1e-5 relative), for x > 0: std::cbrt costs ten times more.
+// 1e-5 relative), for x > 0: far cheaper than std::cbrt.
 inline double cbrt_estimate(double x) {
   std::uint64_t i;
   std::memcpy(&i, &x, sizeof i);
@@ -948,8 +946,8 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   const double k3 = 6 / (72 * std::sqrt(3.0) * kSpreadAim * plan_budget);
   // Densities on a grid of kSpreadSamples intervals, sampled every other
   // one, then at all of them when the piece needs more than kSpreadRefine
-  // chords per interval. (Starting from every 4th saves no time, for a
-  // coarser plan: 0.4 % more chords at 0.1 mm.)
+  // chords per interval. (Starting from every 4th would make the plan
+  // coarser and save no time.)
   double D[kSpreadSamples + 1];
   // The two densities at t: the sagitta's (d) and the cubic term's cube (g).
   auto one = [&](double t, double& d, double& g) {
@@ -1040,11 +1038,9 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   // vertex on the curve at each and plans the stretches between them apart
   // (seg_end: the end of the stretch planned). A chord across an inflection
   // has its ends shifted to opposite sides, so the curve crosses it and it
-  // fits only when very short: at 0.1 mm on the corpus half of such planned
-  // chords failed. Split there, the planned chords fail less often: 7 %
-  // less time at 0.1 mm, 5 % at 0.01, 4 % at 0.001, for 3.2 %, 1.0 % and
-  // 0.6 % more chords (the vertex on the curve and each stretch's count
-  // rounded up on its own; bench/flatten_ab.sh).
+  // fits only when very short: such planned chords often fail. Split
+  // there, the planned chords fail less often, for a few more chords (the
+  // vertex on the curve, and each stretch's count rounded up on its own).
   double infl[2];
   int n_infl = 0;
   {
@@ -1229,9 +1225,7 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     // what fails is not the length but the end's side (near an inflection,
     // or a turn tighter than the band, the end shifted away from the
     // chord's bulge). The same end on the curve is tried before shortening
-    // on: at 0.1 mm on the corpus, where chords shortened 6 to 30 times
-    // crept down 5 % a try, 2 % less time and 9 fewer chords per 1,000
-    // curves (bench/flatten_ab.sh; 0.01 mm: 2 %, 26 fewer).
+    // on, rather than creeping down 5 % a try.
     const bool stuck = dev < kInf && dev + shift > 0.95 * (prev_dev + shift);
     if (!drop && v.side && stuck) {
       drop = true;
