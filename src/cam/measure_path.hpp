@@ -12,8 +12,8 @@ namespace bezcam::detail {
 /// Share of the tolerance within which a printed arc or curve is sampled
 /// into chords for the measurement: a tenth of what the measurement itself
 /// resolves (kMeasureResolution), so that the sampling does not show in it.
-/// (Finer sampling only costs time: a 900 mm arc at 1e-5 of 0.01 mm took
-/// 3000 chords per arc and a second per curve.)
+/// (Finer sampling only costs time: a long arc would take thousands of
+/// chords.)
 inline constexpr double kSampleShare = 0.1 * kMeasureResolution;
 
 /// What the independent measurement proves the deviation of printed moves

@@ -396,10 +396,10 @@ class SurfaceEmitter {
     // less than a quarter of the run's lines (half a turn round Y spreads
     // less along Z than along X, and G17 arcs follow it poorly), the two
     // other planes are tried too: the fewest moves win. A surface pass is
-    // long and worth it (patch-coons-curved: 3053 -> 2830 blocks for a
-    // third more time; a twisted arch: 203 -> 71); a curve tries them only
-    // when the first plane does not beat its lines at all (cut_arcs.cpp:
-    // on climbing cubics the wider rule cost 30 % more time for no block).
+    // long and worth the extra fits (a twisted pass can take a third of the
+    // blocks); a curve tries them only when the first plane does not beat
+    // its lines at all (cut_arcs.cpp: on climbing cubics the wider rule
+    // costs time and saves no block).
     ArcFitOptions ao;
     ao.tolerance = tol - ap->bound;
     ao.decimals = c_.decimals;

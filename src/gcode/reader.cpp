@@ -479,7 +479,7 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
                          std::to_string(kMaxLineBytes) + " bezcam reads in one line (docs/limits.md)");
   // The line runs on copies of the state, committed only when it is
   // accepted. The open NURBS block's lists are moved in, not copied (a copy
-  // per line made a block of n control points cost n^2): until a line
+  // per line would make a block of n control points cost n^2): until a line
   // clears or replaces them (Impl::save_lists() keeps them then) it only
   // appends, so a refused line is undone by cutting them back.
   const std::array<size_t, 4> sizes{more_.ctrl.size(), more_.weights.size(), more_.knots.size(),

@@ -58,7 +58,7 @@ class Writer {
     // A number the header does not print (no O word on this controller).
     if (p_.program_number && !numbered) note("program " + std::to_string(*p_.program_number));
     // Figures in comments in significant digits, never the coordinate
-    // formatter: 5e-07 inch is not "0." (issue "Safe on the shop floor").
+    // formatter: 5e-07 inch is not "0.".
     const auto sig = [](double v) { return format_significant(v, 4); };
     note("tolerance " + format_significant(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
          measured_text(p_.max_measured, p_.max_bound, p_.tolerance, sig) + " " + u + ", proven bound " + sig(p_.max_bound) + " " +

@@ -31,8 +31,8 @@ struct ProgramTotals {
 };
 
 // The totals in one pass over the blocks, no copy of them (a pass per
-// entity made a 10,000-entity job quadratic), each block measured once;
-// the sums in block order, as motion_totals() makes them.
+// entity would make a job of many entities quadratic), each block measured
+// once; the sums in block order, as motion_totals() makes them.
 ProgramTotals program_totals(const Program& p) {
   ProgramTotals r;
   const auto add = [](MotionTotals& t, const MotionTotals& one) {
