@@ -163,7 +163,7 @@ __attribute__((noinline)) size_t run_only(const std::vector<Curve>& curves, cons
   return segments;
 }
 
-// The corpus as one job (issue "A 10,000-curve job in under a second"):
+// The corpus as one job:
 // read from its JSON text, converted for the generic profile in lines at
 // 0.01 mm with the independent measurement on (as `bezcam convert` does),
 // written; wall-clock time of each step and the peak memory.

@@ -1,5 +1,4 @@
-// Benchmark of the Modbus program link (issue 5, item 7), printing its own
-// table:
+// Benchmark of the Modbus program link, printing its own table:
 //  1. round-trip time of a status read and of a full-size chunk request on
 //     loopback, and the transfer rate they allow: one request in flight,
 //     228 payload bytes per request, so at most 228 B / RTT;
@@ -208,7 +207,7 @@ int main(int argc, char** argv) {
                 small.size());
   }
 
-  // 2c. At machine pace (issue 16): short G01 blocks at the generic
+  // 2c. At machine pace: short G01 blocks at the generic
   // profile's top feed and block rate (0.333 mm at 20000 mm/min: 1000 blocks
   // per second of machine time), streamed to a controller executing at K x
   // real time; the largest K with no stall, and the rate the sender kept up.

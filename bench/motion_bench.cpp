@@ -1,4 +1,4 @@
-// Speed of the simulated controller's motion planning (issue 12, item 7):
+// Speed of the simulated controller's motion planning:
 // simulated seconds per wall-clock second for a long G01 program and for a
 // NURBS program, planned on the linuxcnc and generic motion models (the
 // interpreter's reading included, as `simulate --program --report` does),
