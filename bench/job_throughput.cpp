@@ -27,6 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/bezcam.hpp"
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"

@@ -40,13 +40,19 @@
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/import/svg_reader.hpp"
 
-// cam/: the canonical program, profiles, passes, validation
+// machine/: the controller's model: profiles, motion blocks, cutter
+// compensation, the planner
+#include "bezcam/machine/cutter_comp.hpp"
+#include "bezcam/machine/machine_profile.hpp"
+#include "bezcam/machine/motion.hpp"
+#include "bezcam/machine/planner.hpp"
+
+// cam/: the canonical program, passes, validation
 #include "bezcam/cam/gouge.hpp"
-#include "bezcam/cam/machine_profile.hpp"
-#include "bezcam/cam/motion.hpp"
 #include "bezcam/cam/pass_plan.hpp"
 #include "bezcam/cam/program.hpp"
 #include "bezcam/cam/program_limits.hpp"
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/cam/validate.hpp"
 
 // gcode/: text in the profile's dialect, and back

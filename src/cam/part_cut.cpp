@@ -10,8 +10,9 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
-#include "bezcam/cam/cutter_comp.hpp"
+#include "bezcam/machine/cutter_comp.hpp"
 #include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/exact_blocks.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/kernel/surface.hpp"
 #include <optional>
 #include <sstream>

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <system_error>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
 #include "bezcam/job/job_json.hpp"

@@ -3,7 +3,7 @@
 
 #include <iostream>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "options.hpp"
 
 namespace bezcam::cli {

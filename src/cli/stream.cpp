@@ -18,7 +18,7 @@
 
 #include <csignal>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/lint.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/link/streamer.hpp"

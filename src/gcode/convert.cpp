@@ -1,5 +1,7 @@
 #include "bezcam/gcode/convert.hpp"
 
+#include "bezcam/cam/program_motion.hpp"
+
 
 namespace bezcam {
 

@@ -1,6 +1,6 @@
 #include "bezcam/gcode/writer.hpp"
 
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "bezcam/version.hpp"
 
 #include <algorithm>
@@ -9,7 +9,8 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "bezcam/cam/motion.hpp"
+#include "bezcam/cam/program_motion.hpp"
+#include "bezcam/machine/motion.hpp"
 
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/limits.hpp"
@@ -135,7 +136,7 @@ class Writer {
     }
   }
   // The cycle time the report gives: the program planned on the machine's
-  // motion model when the profile has one (cam/planner.hpp), else feeds and
+  // motion model when the profile has one (machine/planner.hpp), else feeds and
   // rapids at their rates.
   void cycle_time() {
     auto when = [](double s) {

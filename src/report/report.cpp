@@ -7,6 +7,7 @@
 #include <future>
 #include <nlohmann/json.hpp>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/gcode/timeline.hpp"

@@ -3,7 +3,7 @@
 // tool list and cycle time in the header, the move to the tool-change
 // position, and the post options (moved part, return position, no
 // comments, modal NURBS words, precision).
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/planner.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "bezcam/cam/motion.hpp"
+#include "bezcam/cam/program_motion.hpp"
+#include "bezcam/machine/motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
@@ -136,7 +137,7 @@ TEST(Header, ProgramNumberToolListAndCycleTime) {
   const auto t = std::find_if(generic.begin(), generic.end(),
                               [](const std::string& l) { return l.rfind("(estimated cycle time ", 0) == 0; });
   ASSERT_NE(t, generic.end());
-  // The machine's motion model plans it (cam/planner.hpp): more than the
+  // The machine's motion model plans it (machine/planner.hpp): more than the
   // feeds alone, since it accelerates, stops at corners and changes tools.
   const MachineProfile g = load_machine_profile("generic");
   const ConvertResult r = convert(j, g, {});

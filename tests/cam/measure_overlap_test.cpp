@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/bezcam.hpp"
 #include "cam/cut_emitters.hpp"
 

@@ -1,6 +1,7 @@
 // A program's motion as blocks: modal axes, exact lengths of lines, arcs and
 // helices, and exact-curve blocks measured against closed forms.
-#include "bezcam/cam/motion.hpp"
+#include "bezcam/cam/program_motion.hpp"
+#include "bezcam/machine/motion.hpp"
 
 #include <gtest/gtest.h>
 

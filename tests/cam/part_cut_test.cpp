@@ -14,7 +14,8 @@
 #include <set>
 #include <sstream>
 
-#include "bezcam/cam/motion.hpp"
+#include "bezcam/cam/program_motion.hpp"
+#include "bezcam/machine/motion.hpp"
 #include "bezcam/cam/program.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/job/job_json.hpp"

@@ -24,6 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"

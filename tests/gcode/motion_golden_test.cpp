@@ -1,6 +1,6 @@
 // Golden motion summaries: every sample, converted for linuxcnc and fanuc in
 // every output mode the machine takes, planned on the machine's motion
-// model (cam/planner.hpp). One row per program in
+// model (machine/planner.hpp). One row per program in
 // tests/golden/motion/<machine>.tsv: a change that slows (or speeds) a
 // program shows in review as a changed row.
 //
@@ -17,7 +17,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/cam/program_motion.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/job/job_json.hpp"

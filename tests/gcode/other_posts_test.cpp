@@ -13,8 +13,8 @@
 #include <limits>
 #include <sstream>
 
-#include "bezcam/cam/machine_profile.hpp"
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/machine_profile.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/lint.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/gcode/timeline.hpp"

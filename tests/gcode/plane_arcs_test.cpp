@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/gcode/writer.hpp"

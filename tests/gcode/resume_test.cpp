@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/gcode/resume.hpp"
 #include "support/refusal.hpp"

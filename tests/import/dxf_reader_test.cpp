@@ -16,7 +16,7 @@
 #include <map>
 #include <sstream>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/import/read_drawing.hpp"

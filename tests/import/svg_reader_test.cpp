@@ -16,7 +16,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/import/drawing.hpp"

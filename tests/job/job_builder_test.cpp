@@ -2,7 +2,7 @@
 // from JSON, and bad values are refused naming the place.
 #include <gtest/gtest.h>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/job/job_builder.hpp"

@@ -24,13 +24,14 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"flatten", {"base", "kernel"}},
       {"stock", {"base", "kernel", "flatten"}},
       {"job", {"base", "kernel"}},
-      {"cam", {"base", "kernel", "flatten", "job"}},
-      {"gcode", {"base", "kernel", "flatten", "job", "cam"}},
-      {"report", {"base", "kernel", "flatten", "job", "cam", "gcode"}},
+      {"machine", {"base", "kernel", "flatten", "job"}},
+      {"cam", {"base", "kernel", "flatten", "job", "machine"}},
+      {"gcode", {"base", "kernel", "flatten", "job", "machine", "cam"}},
+      {"report", {"base", "kernel", "flatten", "job", "machine", "cam", "gcode"}},
       {"link", {"base"}},
-      {"sim", {"base", "kernel", "flatten", "job", "cam", "gcode", "link"}},
+      {"sim", {"base", "kernel", "flatten", "job", "machine", "gcode", "link"}},
       {"import", {"base", "kernel", "flatten", "job"}},
-      {"cli", {"base", "kernel", "flatten", "stock", "job", "cam", "gcode", "report", "link", "sim", "import", "cli"}},
+      {"cli", {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode", "report", "link", "sim", "import", "cli"}},
   };
   return g;
 }

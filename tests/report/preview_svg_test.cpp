@@ -3,6 +3,7 @@
 // the job and the program say (one group per entity with its curve, control
 // polygon and points, start and arrows; feeds and rapids told apart; a scale
 // bar whose length is true; deviations that agree with the measured ones).
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/report/preview_svg.hpp"
 
 #include <gtest/gtest.h>

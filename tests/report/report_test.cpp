@@ -1,6 +1,7 @@
 // Reports: lengths and times from the motion (closed forms on hand-made
 // programs), agreement with the program's own per-entity figures, and the
 // JSON and human forms.
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/report/report.hpp"
 
 #include <gtest/gtest.h>

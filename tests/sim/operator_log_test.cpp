@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/sim/sim_server.hpp"

@@ -4,7 +4,7 @@
 // position, spindle, the line an alarm names, the trace, DONE. Over real
 // sockets with the controller as a child process (`bezcam simulate --listen
 // 127.0.0.1:0 --time-scale K`, readiness read from its stdout, stopped by
-// its PID), compared with the whole program's plan (cam/planner.hpp).
+// its PID), compared with the whole program's plan (machine/planner.hpp).
 //
 // The time checks are one-sided so that a busy machine cannot fail them:
 // the controller's machine clock starts after the test's own clock, so at
@@ -20,7 +20,7 @@
 #include <sstream>
 #include <thread>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/resume.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/link/streamer.hpp"

@@ -13,7 +13,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/resume.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/sim/trace.hpp"

@@ -3,7 +3,7 @@
 // feed move after a rapid) and holds the feed moves up to the next rapid.
 #include <vector>
 
-#include "bezcam/cam/motion.hpp"
+#include "bezcam/machine/motion.hpp"
 
 namespace bezcam::test {
 

@@ -12,7 +12,7 @@
 #include "bezcam/flatten/offset.hpp"
 #include "bezcam/job/job.hpp"
 #include "bezcam/job/tools.hpp"
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 
 namespace bezcam {
 

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/writer.hpp"
 #include "bezcam/cam/validate.hpp"
 

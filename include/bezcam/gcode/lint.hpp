@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 
 namespace bezcam {
 

@@ -13,9 +13,9 @@
 #include <string_view>
 #include <vector>
 
-#include "bezcam/cam/cutter_comp.hpp"
-#include "bezcam/cam/machine_profile.hpp"
-#include "bezcam/cam/motion.hpp"
+#include "bezcam/machine/cutter_comp.hpp"
+#include "bezcam/machine/machine_profile.hpp"
+#include "bezcam/machine/motion.hpp"
 #include "bezcam/gcode/lint.hpp"  // GcodeFinding, lint_gcode()
 
 namespace bezcam {

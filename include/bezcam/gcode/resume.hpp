@@ -20,7 +20,7 @@
 #include <string>
 #include <string_view>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/reader.hpp"
 
 namespace bezcam {

@@ -1,12 +1,12 @@
 #pragma once
-/// A G-code program as the trajectory planner sees it (cam/planner.hpp):
+/// A G-code program as the trajectory planner sees it (machine/planner.hpp):
 /// its motion blocks, the path mode in force at each (G61, G64 P-) and the
 /// pauses between them (tool changes, spindle starts, dwells, program
 /// stops), read with the one G-code reader.
 #include <string>
 #include <string_view>
 
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/reader.hpp"
 
 namespace bezcam {

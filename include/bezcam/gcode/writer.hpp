@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/cam/program.hpp"
 
 namespace bezcam {

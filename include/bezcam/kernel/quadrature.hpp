@@ -4,7 +4,7 @@
 /// until the rule on the two halves agrees with the rule on the whole to
 /// the interval's share of the tolerance. Lengths are integrals of a speed:
 /// a Bézier curve's (kernel/bezier.hpp, `length`) and a controller's spiral
-/// arc (cam/motion.cpp) both come here.
+/// arc (machine/motion.cpp) both come here.
 ///
 /// Header-only so that the integrand is inlined: no std::function, no
 /// allocation (the recursion is at most `detail::kMaxQuadratureDepth` deep).

@@ -4,7 +4,7 @@
 /// takes its cycle time from, and the samples of `simulate --motion`.
 #include <string>
 
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/planner.hpp"
 
 namespace bezcam {
 

@@ -29,8 +29,8 @@
 #include <vector>
 
 #include "bezcam/job/job.hpp"
-#include "bezcam/cam/motion.hpp"
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/motion.hpp"
+#include "bezcam/machine/planner.hpp"
 
 namespace bezcam {
 

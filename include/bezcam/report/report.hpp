@@ -10,14 +10,14 @@
 #include <string_view>
 #include <vector>
 
-#include "bezcam/cam/motion.hpp"
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/motion.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/writer.hpp"
 #include "bezcam/gcode/number_format.hpp"
 
 namespace bezcam {
 
-// MotionTotals and motion_totals(): cam/motion.hpp.
+// MotionTotals and motion_totals(): machine/motion.hpp.
 
 struct EntitySummary {
   EntityReport report;  ///< kind (type), degree, length, blocks, measured, bound

@@ -2,7 +2,7 @@
 /// Execution at machine pace (docs/motion.md, "Streaming at machine pace"):
 /// the simulated controller's executor interprets lines ahead into a
 /// look-ahead window, and the machine takes blocks from it only as fast as
-/// the motion model (cam/planner.hpp) moves through them. Receding horizon:
+/// the motion model (machine/planner.hpp) moves through them. Receding horizon:
 /// when the machine needs work, the window (twice the look-ahead) is
 /// planned from the speed the machine has and all but the last look-ahead's
 /// worth of blocks are committed (each limited by what the planner sees
@@ -27,7 +27,7 @@
 #include <memory>
 #include <vector>
 
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/reader.hpp"
 
 namespace bezcam::sim {

@@ -30,7 +30,7 @@
 #include "bezcam/link/crc32.hpp"
 #include "bezcam/link/register_map.hpp"
 #include "bezcam/gcode/reader.hpp"
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/sim/machine_pace.hpp"
 
 namespace bezcam::sim {

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/job/job_json.hpp"

@@ -4,7 +4,7 @@
 /// its radius r on the left (G41) or the right (G42) of it, in the direction
 /// of travel. One model, used where a program becomes motion: the G-code
 /// reader (so `lint`, `simulate`, the preview and the simulated controller
-/// move the tool where a controller would) and program_motion() (so a built
+/// move the tool where a controller would) and cam/program_motion.hpp (so a built
 /// program is measured on the path the tool really takes).
 ///
 /// The model follows LinuxCNC's interpreter (and Fanuc's type C start-up):
@@ -29,7 +29,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bezcam/cam/motion.hpp"
+#include "bezcam/machine/motion.hpp"
 
 namespace bezcam {
 

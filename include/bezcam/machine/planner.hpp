@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "bezcam/cam/machine_profile.hpp"
-#include "bezcam/cam/motion.hpp"
+#include "bezcam/machine/machine_profile.hpp"
+#include "bezcam/machine/motion.hpp"
 
 namespace bezcam {
 
@@ -142,9 +142,5 @@ MotionPlan plan_motion(Timeline&& tl, const MotionModel& model, PlanDetail detai
 /// One sample per `plan.period_s` from t = 0 to the cycle's end (included):
 /// time, position and speed (units/min).
 void sample_plan(const MotionPlan& plan, const std::function<void(double t, const Vec3& p, double feed)>& out);
-
-/// The blocks and pauses of a program's motion built by bezcam (a
-/// Program): tool changes, spindle starts and dwells become pauses.
-Timeline program_timeline(const Program& p);
 
 }  // namespace bezcam

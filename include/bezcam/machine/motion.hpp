@@ -1,12 +1,12 @@
 #pragma once
-/// A program's motion as absolute blocks (MotionBlock). The canonical moves
-/// of a built Program become the same type that the G-code reader produces, so
-/// that the report and the preview measure and draw a program built from a
-/// job and a program read back from text in one way.
+/// A program's motion as the controller executes it: absolute blocks
+/// (MotionBlock). A program built from a job (cam/program_motion.hpp) and a
+/// program read back from text (gcode/reader.hpp) become the same blocks, so
+/// that the planner, the report and the preview measure and draw both in one
+/// way.
 #include <span>
 #include <vector>
 
-#include "bezcam/cam/program.hpp"
 #include "bezcam/kernel/arc.hpp"
 
 namespace bezcam {
@@ -53,14 +53,6 @@ Arc block_arc(const MotionBlock& b);
 /// Swept angle of an arc block, in (0, 2 pi] (equal ends: a full circle).
 double arc_sweep(const MotionBlock& b);
 
-
-
-/// The motion blocks of `p`, in order, in program coordinates (job units).
-/// Axis words are modal: a move that sets only some axes keeps the others.
-/// Axes no move has set yet (the first retract sets only Z) count as being
-/// already at the target, so a block never starts from an invented origin.
-/// Comments, tool changes and spindle moves produce no block.
-std::vector<MotionBlock> program_motion(const Program& p);
 
 /// Length of a block in program units: exact for lines and arcs (helical
 /// arcs included); NURBS and Bézier blocks (and arcs whose ends sit at

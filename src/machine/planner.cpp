@@ -1,4 +1,4 @@
-// The trajectory planner (cam/planner.hpp, docs/motion.md).
+// The trajectory planner (machine/planner.hpp, docs/motion.md).
 //
 // 1. Segments. Every block becomes one or more segments with a length, a
 //    top speed and a tangential acceleration: lines with the axes' limits
@@ -22,7 +22,7 @@
 //    a backward pass and a forward pass give every junction's speed; each
 //    segment is then a trapezoid (an S-curve's durations when a jerk is
 //    given), which gives its time.
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/planner.hpp"
 
 #include <algorithm>
 #include <array>
@@ -1138,29 +1138,6 @@ void sample_plan(const MotionPlan& plan, const std::function<void(double, const 
     }
     out(t, last, feed);
   }
-}
-
-Timeline program_timeline(const Program& p) {
-  Timeline tl;
-  tl.units = p.units;
-  tl.blocks = program_motion(p);
-  tl.path_tolerance.assign(tl.blocks.size(), -1);
-  size_t motions = 0;
-  for (const Move& mv : p.moves) {
-    if (motion_of(mv)) {
-      ++motions;
-      continue;
-    }
-    if (const auto* d = std::get_if<Dwell>(&mv.what))
-      tl.pauses.push_back({PlanPause::Kind::dwell, d->seconds, 0, motions});
-    else if (std::get_if<ToolChange>(&mv.what))
-      tl.pauses.push_back({PlanPause::Kind::tool_change, 0, 0, motions});
-    else if (const auto* s = std::get_if<SpindleMove>(&mv.what); s && s->rpm > 0)
-      tl.pauses.push_back({PlanPause::Kind::spindle_start, 0, 0, motions});
-    else if (std::get_if<ProgramStop>(&mv.what))
-      tl.pauses.push_back({PlanPause::Kind::program_stop, 0, 0, motions});
-  }
-  return tl;
 }
 
 }  // namespace bezcam

@@ -1,11 +1,11 @@
-// Cutter radius compensation (cam/cutter_comp.hpp): the tool-centre path a
+// Cutter radius compensation (machine/cutter_comp.hpp): the tool-centre path a
 // controller makes of a G41/G42 program. The corner rules are LinuxCNC's;
 // LinuxcncRs274 checks the whole model against LinuxCNC's own interpreter.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "bezcam/cam/cutter_comp.hpp"
+#include "bezcam/machine/cutter_comp.hpp"
 
 namespace bezcam {
 namespace {

@@ -21,7 +21,7 @@ inline constexpr double kNoTravelLimit = std::numeric_limits<double>::infinity()
 
 /// How the controller moves (key `motion`, docs/machines.md): the limits
 /// and timing its trajectory planner works with. The simulated controller
-/// and the cycle-time estimate plan with them (cam/planner.hpp).
+/// and the cycle-time estimate plan with them (machine/planner.hpp).
 struct MotionModel {
   std::array<double, 3> max_velocity_mm_min{};   ///< per axis x, y, z
   std::array<double, 3> max_acceleration_mm_s2{};

@@ -1,4 +1,4 @@
-// The trajectory planner (cam/planner.hpp): the analytic cases hold exactly,
+// The trajectory planner (machine/planner.hpp): the analytic cases hold exactly,
 // the caps and the look-ahead starve where they must, corners stay within
 // the path tolerance, samples are deterministic and respect the limits.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "bezcam/cam/planner.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/report/motion_report.hpp"
 #include "support/refusal.hpp"

@@ -1,4 +1,4 @@
-#include "bezcam/cam/machine_profile.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 
 #include <algorithm>
 #include <charconv>

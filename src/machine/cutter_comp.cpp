@@ -1,6 +1,6 @@
 // Cutter radius compensation: the tool-centre path a controller derives
 // from a G41/G42 program (see cutter_comp.hpp for the rules).
-#include "bezcam/cam/cutter_comp.hpp"
+#include "bezcam/machine/cutter_comp.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -1,0 +1,24 @@
+#pragma once
+/// A built program's motion as the controller executes it: the canonical
+/// moves of a Program become the MotionBlocks the G-code reader produces,
+/// and the timeline (blocks and pauses) the planner plans.
+#include <vector>
+
+#include "bezcam/cam/program.hpp"
+#include "bezcam/machine/motion.hpp"
+#include "bezcam/machine/planner.hpp"
+
+namespace bezcam {
+
+/// The motion blocks of `p`, in order, in program coordinates (job units).
+/// Axis words are modal: a move that sets only some axes keeps the others.
+/// Axes no move has set yet (the first retract sets only Z) count as being
+/// already at the target, so a block never starts from an invented origin.
+/// Comments, tool changes and spindle moves produce no block.
+std::vector<MotionBlock> program_motion(const Program& p);
+
+/// The blocks and pauses of a program's motion built by bezcam (a
+/// Program): tool changes, spindle starts and dwells become pauses.
+Timeline program_timeline(const Program& p);
+
+}  // namespace bezcam

@@ -1,0 +1,104 @@
+#include "bezcam/cam/program_motion.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "bezcam/machine/cutter_comp.hpp"
+
+namespace bezcam {
+
+std::vector<MotionBlock> program_motion(const Program& p) {
+  std::vector<MotionBlock> out;
+  // A block per motion (compensation may add a few): no reallocation
+  // moving every block of a long program.
+  out.reserve(static_cast<size_t>(std::count_if(p.moves.begin(), p.moves.end(), [](const Move& mv) { return motion_of(mv) != nullptr; })));
+  Vec3 pos;
+  unsigned known = 0;
+  // G41/G42: the blocks are where the tool's centre goes (cutter_comp.hpp).
+  CutterComp comp;
+  auto add = [&](std::vector<MotionBlock> blocks) {
+    for (auto& b : blocks) out.push_back(std::move(b));
+  };
+  for (const Move& mv : p.moves) {
+    if (const auto* cc = std::get_if<CompensationMove>(&mv.what)) {
+      try {
+        if (cc->side == 0) add(comp.off());
+        else comp.on(cc->side, cc->radius);
+      } catch (const CompensationError& e) {
+        throw std::logic_error(std::string("built program: ") + e.what());
+      }
+      continue;
+    }
+    const Motion* mo = motion_of(mv);
+    if (!mo) continue;  // no motion
+    MotionBlock b;
+    b.entity = mv.entity;
+    b.kind = BlockKind::linear;
+    if (is_rapid(mv)) b.kind = BlockKind::rapid;
+    if (const auto* arc = std::get_if<ArcMove>(&mv.what)) {
+      b.kind = arc->ccw ? BlockKind::arc_ccw : BlockKind::arc_cw;
+      b.center = arc->center;
+      b.plane = arc->plane;
+    }
+    if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {
+      b.kind = cv->form == CurveMove::Form::bezier ? BlockKind::bezier : BlockKind::nurbs;
+      b.ctrl = cv->ctrl;
+      b.weights = cv->weights;
+      b.knots = cv->knots;
+      b.order = cv->form == CurveMove::Form::bezier ? static_cast<int>(cv->ctrl.size()) : cv->order;
+    }
+    Vec3 to = pos;
+    for (int a = 0; a < 3; ++a)
+      if (mo->axes & (1u << a)) to[a] = mo->to[a];
+    Vec3 from = pos;
+    for (int a = 0; a < 3; ++a)
+      if (!(known & (1u << a))) from[a] = to[a];
+    b.from = from;
+    // The axes not set yet start where the machine stands (the planner
+    // takes them from Timeline::start), as the reader marks them.
+    b.from_known = known & 7u;
+    b.to = to;
+    b.feed = b.kind == BlockKind::rapid ? 0 : mo->feed;
+    pos = to;
+    known |= mo->axes;
+    if (comp.idle()) {  // no compensation: the block as it is
+      out.push_back(std::move(b));
+      continue;
+    }
+    try {
+      add(comp.push(b));
+    } catch (const CompensationError& e) {
+      throw std::logic_error(std::string("built program: ") + e.what());
+    }
+  }
+  add(comp.finish());
+  return out;
+}
+
+
+Timeline program_timeline(const Program& p) {
+  Timeline tl;
+  tl.units = p.units;
+  tl.blocks = program_motion(p);
+  tl.path_tolerance.assign(tl.blocks.size(), -1);
+  size_t motions = 0;
+  for (const Move& mv : p.moves) {
+    if (motion_of(mv)) {
+      ++motions;
+      continue;
+    }
+    if (const auto* d = std::get_if<Dwell>(&mv.what))
+      tl.pauses.push_back({PlanPause::Kind::dwell, d->seconds, 0, motions});
+    else if (std::get_if<ToolChange>(&mv.what))
+      tl.pauses.push_back({PlanPause::Kind::tool_change, 0, 0, motions});
+    else if (const auto* s = std::get_if<SpindleMove>(&mv.what); s && s->rpm > 0)
+      tl.pauses.push_back({PlanPause::Kind::spindle_start, 0, 0, motions});
+    else if (std::get_if<ProgramStop>(&mv.what))
+      tl.pauses.push_back({PlanPause::Kind::program_stop, 0, 0, motions});
+  }
+  return tl;
+}
+
+}  // namespace bezcam
