@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bezcam/error_ids.hpp"
+#include "bezcam/format.hpp"
 
 namespace bezcam {
 
@@ -116,9 +117,5 @@ public:
   ControllerError(ErrorId id, std::string where, std::string what)
       : Error(ErrorFamily::controller, id, std::move(where), std::move(what)) {}
 };
-
-/// Formats a number for messages: rounded to 10 significant digits (the
-/// last bits of arithmetic are not news), in the shortest text for that.
-std::string fmt_num(double v);
 
 }  // namespace bezcam

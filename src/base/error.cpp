@@ -1,7 +1,5 @@
 #include "bezcam/error.hpp"
 
-#include <charconv>
-
 namespace bezcam {
 
 namespace {
@@ -62,18 +60,6 @@ Error Error::with_option(std::string opt) const {
   Error e(family_, ErrorId(id_), std::move(p), message_);
   e.more_ = more_;
   return e;
-}
-
-std::string fmt_num(double v) {
-  // Rounded to what matters: 10 significant digits, so that arithmetic's
-  // last bits (0.05000000000000071) do not reach a message, then the
-  // shortest text that reads back as that rounded value.
-  char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 10);
-  double r = v;
-  std::from_chars(buf, res.ptr, r);
-  res = std::to_chars(buf, buf + sizeof buf, r);
-  return std::string(buf, res.ptr);
 }
 
 }  // namespace bezcam

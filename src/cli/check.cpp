@@ -33,14 +33,6 @@ CLI::App* add(CLI::App& app) {
   return s;
 }
 
-std::string pt(const Vec3& p, int dim) {
-  std::ostringstream s;
-  s << std::setprecision(6) << "(" << p.x << ", " << p.y;
-  if (dim == 3) s << ", " << p.z;
-  s << ")";
-  return s.str();
-}
-
 // What a drawing held, per layer: elements read (by kind) and skipped.
 void print_drawing(const import::Drawing& d) {
   const auto list = [](const std::map<std::string, size_t>& m) {
@@ -73,7 +65,7 @@ int run() {
                 << ", " << g.pieces.size() << " Bézier piece" << (g.pieces.size() == 1 ? "" : "s") << ", length "
                 << std::setprecision(6) << g.length() << " " << u;
       const Box3 b = g.bounds();
-      std::cout << ", bounds " << pt(b.lo, g.dim) << " to " << pt(b.hi, g.dim);
+      std::cout << ", bounds " << fmt_point(b.lo, g.dim, 6) << " to " << fmt_point(b.hi, g.dim, 6);
       if (g.closed) std::cout << ", closed";
     }
     if (e.surface) {  // bezier_patch, coons_patch, curve_on_surface
@@ -82,7 +74,7 @@ int run() {
       std::cout << (e.type == "curve_on_surface" ? ", on a " + s.kind : std::string()) << ", degree "
                 << s.degree_u() << " x " << s.degree_v() << (s.rational() ? ", rational" : "") << ", "
                 << s.grid.cells.size() << " Bézier cell" << (s.grid.cells.size() == 1 ? "" : "s") << ", bounds "
-                << std::setprecision(6) << pt(b.lo, 3) << " to " << pt(b.hi, 3);
+                << fmt_point(b.lo, 3, 6) << " to " << fmt_point(b.hi, 3, 6);
       if (e.type == "curve_on_surface")
         std::cout << ", curve of " << e.uv_curve.pieces.size() << " piece" << (e.uv_curve.pieces.size() == 1 ? "" : "s")
                   << " in (u, v)" << (e.uv_curve.closed ? ", closed" : "");

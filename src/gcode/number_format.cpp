@@ -40,16 +40,6 @@ std::string format_number(double v, int decimals) {
   return std::string(buf, format_number_to(buf, v, decimals));
 }
 
-std::string format_significant(double v, int digits) {
-  if (!std::isfinite(v)) return fmt_num(v);
-  if (v == 0) return "0";
-  char buf[64];
-  // %g trims trailing zeros and switches to exponents only for very small
-  // or large values, which deviations of 1e-5 and lengths of 1e4 are not.
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
-
 std::string measured_text(double measured, double bound, double tolerance, std::string (*format)(double)) {
   const double resolution = kMeasureResolution * tolerance;
   if (measured > resolution) return format(measured);

@@ -58,7 +58,6 @@ Poly<double> f1_coefficients(CoonsBlend b) {
   return c;
 }
 
-std::string pt(const Vec3& p) { return "(" + fmt_num(p.x) + ", " + fmt_num(p.y) + ", " + fmt_num(p.z) + ")"; }
 
 double magnitude(const BoundaryCurve& c) {
   double m = 0;
@@ -130,8 +129,8 @@ CoonsPatch CoonsPatch::make(BoundaryCurve v0, BoundaryCurve v1, BoundaryCurve u0
       hint = "; the other end of " + std::string(ck.ref_name) + " is there: reverse the points of " + ck.ref_name;
     throw InputError(errc::coons_corner, Place::at_json(std::string("boundaries.") + ck.name),
                      std::string("expected ") + ck.name + " to " + (ck.at_end ? "end" : "start") + " at corner " +
-                         ck.corner + " = " + pt(want) + ", where " + ck.ref_name + " " +
-                         (ck.ref_end ? "ends" : "starts") + ", found " + pt(got) + ", " + fmt_num(gap) + " away" +
+                         ck.corner + " = " + fmt_point(want) + ", where " + ck.ref_name + " " +
+                         (ck.ref_end ? "ends" : "starts") + ", found " + fmt_point(got) + ", " + fmt_num(gap) + " away" +
                          hint);
   }
   CoonsPatch s;

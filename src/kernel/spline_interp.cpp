@@ -14,9 +14,6 @@ namespace {
 
 std::string at(size_t k) { return "through[" + std::to_string(k) + "]"; }
 
-std::string pt(const Vec3& p, int dim) {
-  return "(" + fmt_num(p.x) + ", " + fmt_num(p.y) + (dim == 3 ? ", " + fmt_num(p.z) : std::string()) + ")";
-}
 
 double scale_of(std::span<const Vec3> pts) {
   double s = 0;
@@ -53,7 +50,7 @@ std::vector<double> chord_length_parameters(std::span<const Vec3> pts) {
     if (d <= 1e-12 * std::max({max_abs(p), max_abs(pts[k - 1]), 1e-300}))
       throw InputError(errc::curve_repeated_point, Place::at_json(at(k)),
                        "expected a point different from through[" + std::to_string(k - 1) + "], found the same point " +
-                           pt(p, pts[k].z != 0 || pts[k - 1].z != 0 ? 3 : 2) +
+                           fmt_point(p, pts[k].z != 0 || pts[k - 1].z != 0 ? 3 : 2) +
                            ": a repeated point gives a zero chord length, so no parameter can separate the two; "
                            "remove the duplicate");
     t[k] = t[k - 1] + d;

@@ -1,3 +1,4 @@
+#include "bezcam/format.hpp"
 #include "bezcam/stock/stock_image.hpp"
 
 #include <zlib.h>
@@ -245,24 +246,12 @@ Map render_map(const DexelGrid& g, const StockImageOptions& opt) {
   return m;
 }
 
-std::string fmt3(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3f", v == 0 ? 0.0 : v);
-  return b;
-}
-
 // A round length (1, 2 or 5 times a power of ten, in mm) near `target` mm.
 double nice_length(double target) {
   const double p = std::pow(10.0, std::floor(std::log10(target)));
   for (double m : {5.0, 2.0, 1.0})
     if (m * p <= target) return m * p;
   return p;
-}
-
-std::string fmt_len(double mm) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", mm);
-  return b;
 }
 
 struct Legend {
@@ -323,7 +312,7 @@ std::vector<std::uint8_t> stock_png(const DexelGrid& grid, const StockImageOptio
   // the height ramp, deepest to top
   int x = text(r, 10, y, "Z", ink) + 6;
   for (int i = 0; i < 160; ++i) r.rect(x + i, y, 1, kTextHeight, mix(kDeep, kTop, i / 159.0));
-  text(r, x + 172, y, fmt3(m.zlo) + " .. " + fmt3(m.zhi) + " MM", ink);
+  text(r, x + 172, y, format_fixed(m.zlo, 3) + " .. " + format_fixed(m.zhi, 3) + " MM", ink);
   // the classes
   y += 26;
   r.rect(10, y, kTextHeight, kTextHeight, kGouge);
@@ -335,7 +324,7 @@ std::vector<std::uint8_t> stock_png(const DexelGrid& grid, const StockImageOptio
   r.rect(10, y + 4, L.bar_px, 6, ink);
   r.rect(10, y, 2, kTextHeight, ink);
   r.rect(10 + L.bar_px - 2, y, 2, kTextHeight, ink);
-  text(r, 10 + L.bar_px + 12, y, fmt_len(L.bar_mm) + " MM", ink);
+  text(r, 10 + L.bar_px + 12, y, format_significant(L.bar_mm, 6) + " MM", ink);
   return encode_png(r);
 }
 
@@ -353,7 +342,7 @@ std::string stock_svg(const DexelGrid& grid, const StockImageOptions& opt) {
        std::to_string(L.width) + "\" height=\"" + std::to_string(L.height) + "\" viewBox=\"0 0 " +
        std::to_string(L.width) + " " + std::to_string(L.height) + "\">\n";
   s += "<title>machined stock: " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) +
-       " columns, cell " + fmt_len(grid.cell()) + " mm</title>\n";
+       " columns, cell " + format_significant(grid.cell(), 6) + " mm</title>\n";
   s += "<defs><linearGradient id=\"ramp\"><stop offset=\"0\" stop-color=\"" + rgb(kDeep) +
        "\"/><stop offset=\"1\" stop-color=\"" + rgb(kTop) + "\"/></linearGradient></defs>\n";
   s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -364,7 +353,7 @@ std::string stock_svg(const DexelGrid& grid, const StockImageOptions& opt) {
   int y = L.map_h + 10;
   s += "<text x=\"10\" y=\"" + std::to_string(y + 12) + "\" " + font + ">z</text>\n";
   s += "<rect x=\"24\" y=\"" + std::to_string(y) + "\" width=\"160\" height=\"14\" fill=\"url(#ramp)\"/>\n";
-  s += "<text x=\"196\" y=\"" + std::to_string(y + 12) + "\" " + font + ">" + fmt3(m.zlo) + " .. " + fmt3(m.zhi) +
+  s += "<text x=\"196\" y=\"" + std::to_string(y + 12) + "\" " + font + ">" + format_fixed(m.zlo, 3) + " .. " + format_fixed(m.zhi, 3) +
        " mm</text>\n";
   y += 26;
   s += "<rect x=\"10\" y=\"" + std::to_string(y) + "\" width=\"14\" height=\"14\" fill=\"" + rgb(kGouge) + "\"/>\n";
@@ -375,7 +364,7 @@ std::string stock_svg(const DexelGrid& grid, const StockImageOptions& opt) {
   s += "<rect x=\"10\" y=\"" + std::to_string(y + 4) + "\" width=\"" + std::to_string(L.bar_px) +
        "\" height=\"6\" fill=\"rgb(20,20,20)\"/>\n";
   s += "<text x=\"" + std::to_string(L.bar_px + 22) + "\" y=\"" + std::to_string(y + 12) + "\" " + font + ">" +
-       fmt_len(L.bar_mm) + " mm</text>\n";
+       format_significant(L.bar_mm, 6) + " mm</text>\n";
   s += "</svg>\n";
   return s;
 }

@@ -4,6 +4,8 @@
 /// The value a controller reads back is exactly quantize(v, decimals).
 #include <string>
 
+#include "bezcam/format.hpp"
+
 namespace bezcam {
 
 std::string format_number(double v, int decimals);
@@ -15,8 +17,6 @@ inline constexpr int kNumberChars = 400;
 /// the end of the text written.
 char* format_number_to(char* buf, double v, int decimals);
 
-/// `v` with `digits` significant digits, trailing zeros trimmed ("0.00987").
-std::string format_significant(double v, int digits);
 
 /// A measured deviation as bezcam states it (program header, report,
 /// preview) beside its proven bound: `format(measured)`, or, when it is

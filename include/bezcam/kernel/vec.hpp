@@ -3,6 +3,9 @@
 /// dimension on the curve, so one type serves 2D and 3D.
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "bezcam/format.hpp"
 
 namespace bezcam {
 
@@ -63,5 +66,12 @@ struct Box3 {
     return true;
   }
 };
+
+/// A point for messages: "(x, y, z)", or "(x, y)" when `dim` is 2, each
+/// coordinate as fmt_num() writes it with `digits` significant digits.
+inline std::string fmt_point(const Vec3& p, int dim = 3, int digits = 10) {
+  return "(" + fmt_num(p.x, digits) + ", " + fmt_num(p.y, digits) + (dim == 3 ? ", " + fmt_num(p.z, digits) : std::string()) +
+         ")";
+}
 
 }  // namespace bezcam
