@@ -56,8 +56,8 @@ void check_params(const JobParams& p, const std::string& source, const std::stri
 JobBuilder::JobBuilder(std::string name) { job_.source = std::move(name); }
 
 JobBuilder& JobBuilder::units(Units u) {
-  // The default tolerance is 0.01 mm in the job's units, as in a file.
-  if (job_.tolerance == 0.01 / mm_per_unit(job_.units)) job_.tolerance = 0.01 / mm_per_unit(u);
+  // The default tolerance is kDefaultToleranceMm in the job's units, as in a file.
+  if (job_.tolerance == kDefaultToleranceMm / mm_per_unit(job_.units)) job_.tolerance = kDefaultToleranceMm / mm_per_unit(u);
   job_.units = u;
   return *this;
 }

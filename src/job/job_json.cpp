@@ -499,7 +499,7 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
     else if (u == "inch") job.units = Units::inch;
     else ctx.fail("units", errc::job_units, "expected \"mm\" or \"inch\", found " + detail::describe(*it));
   }
-  job.tolerance = 0.01 / mm_per_unit(job.units);
+  job.tolerance = kDefaultToleranceMm / mm_per_unit(job.units);
   if (auto it = doc.find("tolerance"); it != doc.end()) job.tolerance = ctx.positive(*it, "tolerance");
   if (auto it = doc.find("machine"); it != doc.end()) job.machine = ctx.string(*it, "machine");
   if (auto it = doc.find("job"); it != doc.end()) {

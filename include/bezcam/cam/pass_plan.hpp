@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "bezcam/flatten/tip_curve.hpp"
+#include "bezcam/kernel/units.hpp"
 
 namespace bezcam {
 
@@ -19,7 +20,7 @@ double polyline_gap_bound(const TipPolyline& a, const TipPolyline& b, double res
 struct PassOptions {
   char direction = 'u';     ///< parameter that varies along a pass
   double stepover = 1;      ///< largest distance allowed between neighbouring passes (units)
-  double tolerance = 0.01;  ///< chord tolerance (units)
+  double tolerance = kDefaultToleranceMm;  ///< chord tolerance (units)
   int decimals = -1;        ///< printed decimals, -1 none
   double tool_radius = 0;
 };

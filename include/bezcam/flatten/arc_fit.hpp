@@ -30,6 +30,7 @@
 #include <span>
 #include <vector>
 
+#include "bezcam/kernel/units.hpp"
 #include "bezcam/kernel/arc.hpp"
 #include "bezcam/kernel/bezier.hpp"
 
@@ -37,7 +38,7 @@ namespace bezcam {
 
 struct ArcFitOptions {
   /// Largest allowed distance between the curve and the drawn path (model units).
-  double tolerance = 0.01;
+  double tolerance = kDefaultToleranceMm;
   /// Decimals the end points and I/J words are printed with; -1: no rounding.
   int decimals = -1;
   /// Largest |r_start - r_end| of a printed arc the controller accepts

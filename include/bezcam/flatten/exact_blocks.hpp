@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "bezcam/kernel/units.hpp"
 #include "bezcam/kernel/curve.hpp"
 
 namespace bezcam {
@@ -42,7 +43,7 @@ enum class NurbsDialect {
 struct ExactOptions {
   NurbsDialect dialect = NurbsDialect::fanuc;  ///< fanuc or linuxcnc
   int max_rank = 4;                            ///< Fanuc P limit (2..4)
-  double tolerance = 0.01;                     ///< model units
+  double tolerance = kDefaultToleranceMm;      ///< model units
   int decimals = 3;                            ///< coordinates (and I, J, P, Q)
   int knot_decimals = 4, weight_decimals = 4;  ///< K and R (Fanuc), P (G5.2)
 };

@@ -27,6 +27,7 @@
 #include <span>
 #include <vector>
 
+#include "bezcam/kernel/units.hpp"
 #include "bezcam/kernel/bezier.hpp"
 #include "bezcam/limits.hpp"
 
@@ -34,7 +35,7 @@ namespace bezcam {
 
 struct FlattenOptions {
   /// Largest allowed distance between curve and printed polyline (model units).
-  double tolerance = 0.01;
+  double tolerance = kDefaultToleranceMm;
   /// Decimals the vertices will be printed with; -1: no rounding.
   int decimals = -1;
   /// Most vertices one flattening may produce (limits.hpp): more is refused

@@ -11,8 +11,6 @@
 
 namespace bezcam {
 
-/// Default chord tolerance when a job gives none (mm).
-inline constexpr double kDefaultToleranceMm = 0.01;
 /// Relative share of the tolerance kept back for floating-point error in the
 /// bound computations (evaluation, root finding, parsing of printed text).
 inline constexpr double kToleranceSafety = 1e-9;

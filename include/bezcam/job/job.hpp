@@ -109,7 +109,7 @@ struct Job {
   /// `O` number (the profile's {program}), a comment elsewhere.
   std::optional<long> program_number;
   Units units = Units::mm;
-  double tolerance = 0.01;
+  double tolerance = kDefaultToleranceMm;
   std::optional<std::string> machine;
   JobParams params;
   std::vector<Entity> entities;
