@@ -21,8 +21,8 @@ namespace bezcam {
 enum class ErrorFamily { input, io, controller };
 
 /// Where an error applies. Every part is optional; to_string() composes the
-/// set parts, in the order option (or setting), file, JSON path, line,
-/// register, text, as `part: part: ...` (`job.json: entities[3].knots[7]`,
+/// set parts, in the order option (or setting), file, JSON path, line (and
+/// column), register, text, as `part: part: ...` (`job.json: entities[3].knots[7]`,
 /// `prog.nc: line 12`).
 ///
 /// The library never names an option of a program: where a value came from
@@ -36,6 +36,7 @@ struct Place {
   std::optional<std::string> file;       ///< a file (or an endpoint such as `HOST:PORT`)
   std::optional<std::string> json_path;  ///< a JSON path inside the file, e.g. `entities[3].knots[7]`
   std::optional<long long> line;         ///< a 1-based line number, printed as `line N`
+  std::optional<long long> column;       ///< a 1-based column of that line, printed as `line N, column C`
   std::optional<std::string> reg;        ///< a register or setting of a controller, e.g. `buffer`
   /// An unstructured place, printed after the parts above (places that
   /// were composed before they reached the Error).

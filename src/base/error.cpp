@@ -19,7 +19,7 @@ std::string Place::to_string() const {
   else if (setting) add(out, *setting);
   if (file) add(out, *file);
   if (json_path) add(out, *json_path);
-  if (line) add(out, "line " + std::to_string(*line));
+  if (line) add(out, "line " + std::to_string(*line) + (column ? ", column " + std::to_string(*column) : std::string()));
   if (reg) add(out, *reg);
   add(out, text);
   return out;
@@ -27,7 +27,7 @@ std::string Place::to_string() const {
 
 std::string Place::relative_path() const {
   if (json_path) return *json_path;
-  if (!option && !setting && !file && !line && !reg) return text;
+  if (!option && !setting && !file && !line && !column && !reg) return text;
   return {};
 }
 

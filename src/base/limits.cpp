@@ -21,7 +21,7 @@ std::string size_text(std::uintmax_t bytes) {
 // `size` 0: not known (a pipe), only that it is over the limit.
 [[noreturn]] void too_large(const std::filesystem::path& file, std::uintmax_t size, std::size_t max_bytes,
                             const std::string& what) {
-  throw InputError(errc::limit_file_size, file.string(),
+  throw InputError(errc::limit_file_size, Place::at_file(file.string()),
                    "the " + what + " is " + (size ? size_text(size) + ", more" : std::string("more")) +
                        " than bezcam reads (" + size_text(max_bytes) + ", docs/limits.md); split it into smaller files");
 }

@@ -79,7 +79,7 @@ JobBuilder& JobBuilder::params(const JobParams& p) {
 
 JobBuilder& JobBuilder::entity(std::string id, std::string type, CurveGeometry g, JobParams params) {
   if (job_.entities.size() >= kMaxEntities)
-    throw InputError(errc::limit_entities, job_.source + ": entities",
+    throw InputError(errc::limit_entities, Place::in_json(job_.source, "entities"),
                      "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md)");
   Entity e;
   e.id = std::move(id);
@@ -115,7 +115,7 @@ JobBuilder& JobBuilder::nurbs(std::string id, NurbsCurve curve, JobParams params
 
 JobBuilder& JobBuilder::path(std::string id, std::vector<Bezier> segments, bool closed, JobParams params) {
   if (segments.empty())
-    throw InputError(errc::job_missing, job_.source + ": entities[" + std::to_string(job_.entities.size()) + "].segments",
+    throw InputError(errc::job_missing, Place::in_json(job_.source, "entities[" + std::to_string(job_.entities.size()) + "].segments"),
                      "a path needs at least one segment");
   std::vector<CurveSegment> segs;
   int dim = 2;
@@ -141,7 +141,7 @@ JobBuilder& JobBuilder::path(std::string id, std::vector<Bezier> segments, bool 
 
 Job JobBuilder::build() const {
   if (job_.entities.empty())
-    throw InputError(errc::job_missing, job_.source + ": entities", "expected at least one entity");
+    throw InputError(errc::job_missing, Place::in_json(job_.source, "entities"), "expected at least one entity");
   check_params(job_.params, job_.source, "job");
   for (const Entity& e : job_.entities) check_params(e.params, job_.source, e.json_path());
   (void)job_tools(job_);  // one diameter and shape per tool number

@@ -437,7 +437,7 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
                     std::vector<InputError>& errors) {
   using detail::json;
   if (text.size() > kMaxJobBytes)
-    throw InputError(errc::limit_file_size, source,
+    throw InputError(errc::limit_file_size, Place::at_file(source),
                      "the job file is " + std::to_string(text.size() >> 20) + " MiB, more than bezcam reads (" +
                          std::to_string(kMaxJobBytes >> 20) + " MiB, docs/limits.md); split it into smaller files");
   json doc;
@@ -461,8 +461,10 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
     else if (what.find("unexpected") != std::string::npos && what.find("literal") != std::string::npos &&
              (what.find("expected '}'") != std::string::npos || what.find("expected ']'") != std::string::npos))
       hint = "; is a comma missing before it?";
-    throw InputError(errc::job_syntax, source + ": line " + std::to_string(line) + ", column " + std::to_string(col),
-                     "this is not valid JSON: " + what + hint);
+    Place where = Place::at_file(source);
+    where.line = static_cast<long long>(line);
+    where.column = static_cast<long long>(col);
+    throw InputError(errc::job_syntax, std::move(where), "this is not valid JSON: " + what + hint);
   } catch (const json::out_of_range& e) {
     // The only range error while parsing: a number too large for a double
     // (JSON has no NaN or infinity, so this is how non-finite values come).
@@ -478,7 +480,8 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
       }
       // The document did not parse, so its path comes from the text.
       if (std::string path = detail::json_path_at(text, at); !path.empty()) where.json_path = std::move(path);
-      where.text = "line " + std::to_string(line) + ", column " + std::to_string(col);
+      where.line = static_cast<long long>(line);
+      where.column = static_cast<long long>(col);
     }
     throw InputError(errc::job_not_finite, std::move(where),
                      "expected a finite number, found " + (token.empty() ? std::string("a number") : token) +
