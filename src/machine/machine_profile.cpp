@@ -334,7 +334,7 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    throw InputError(errc::machine_syntax, source, std::string("the machine profile is not valid JSON (") + e.what() + ")");
+    throw InputError(errc::machine_syntax, Place::at_file(source), std::string("the machine profile is not valid JSON (") + e.what() + ")");
   }
   if (!doc.is_object()) r.fail("(top level)", "expected a JSON object");
   MachineProfile m;
