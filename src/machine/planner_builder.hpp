@@ -108,6 +108,10 @@ struct Builder {
   void curved_limits(PlanSegment& s, double v, SpeedLimit why, double R, double a) const;
   // Segments of one block, appended to `out`.
   void add_block(int bi, std::vector<PlanSegment>& out);
+  // The segment of an arc block, and the segments of a curve block, of
+  // block `bi` (add_block()).
+  void add_arc_segment(int bi, PlannedBlock& pb, std::vector<PlanSegment>& out);
+  void add_curve_segments(int bi, PlannedBlock& pb, std::vector<PlanSegment>& out);
   // A segment's top speed capped by the time the controller needs to take it.
   void cap_segment_time(PlanSegment& s) const;
 

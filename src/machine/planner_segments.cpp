@@ -225,109 +225,9 @@ void Builder::add_block(int bi, std::vector<PlanSegment>& out) {
     out.push_back(std::move(s));
     pb.programmed_feed = rapid ? v * 60 : b.feed;
   } else if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) {
-    const Vec3 n = from_plane({0, 0, 1}, b.plane);  // the plane's axis
-    const double vplane = in_plane(n, lim.vmax), aplane = arc_accel(in_plane(n, lim.amax));
-    double v = b.feed / 60;
-    SpeedLimit why = SpeedLimit::programmed;
-    if (v > vplane) {
-      v = vplane;
-      why = SpeedLimit::axes;
-      pb.clamped = true;
-    }
-    Vec3 r0 = to_plane(b.from - b.center, b.plane);
-    r0.z = 0;
-    const double R = norm(r0);
-    PlanSegment s;
-    s.block = bi;
-    PlanSegment::Piece p;
-    p.shape = PlanSegment::Shape::block;
-    p.block = bi;
-    p.length = pb.length;
-    p.s = {0, pb.length};
-    p.t = {0, 1};
-    s.pieces.push_back(std::move(p));
-    s.length = pb.length;
-    curved_limits(s, v, why, R, aplane);
-    s.curved = true;
-    Vec3 c = to_plane(b.center, b.plane);
-    c.z = to_plane(b.to, b.plane).z;
-    s.center = from_plane(c, b.plane);
-    s.radius = R;
-    s.angle = arc_sweep(b);
-    out.push_back(std::move(s));
-    pb.programmed_feed = b.feed;
+    add_arc_segment(bi, pb, out);
   } else {
-    // A curve block on the true curve: pieces of the parameter range,
-    // each with the speed its tightest curvature allows.
-    const int pieces = curve_pieces(b);
-    constexpr int kSub = 12;
-    const Vec3 n{0, 0, 1};
-    bool planar = true;
-    for (const Vec3& c : b.ctrl) planar = planar && std::abs(c.z - b.from.z) < 1e-12;
-    const double vax = planar ? in_plane(n, lim.vmax) : std::min({lim.vmax.x, lim.vmax.y, lim.vmax.z});
-    const double aax = arc_accel(planar ? in_plane(n, lim.amax) : std::min({lim.amax.x, lim.amax.y, lim.amax.z}));
-    double vfeed = b.feed / 60;
-    SpeedLimit base = SpeedLimit::programmed;
-    if (vfeed > vax) {
-      vfeed = vax;
-      base = SpeedLimit::axes;
-      pb.clamped = true;
-    }
-    std::vector<Vec3> pts(static_cast<size_t>(pieces * kSub + 1));
-    const CurvePoints curve(b);
-    for (int i = 0; i <= pieces * kSub; ++i) pts[static_cast<size_t>(i)] = curve.at(static_cast<double>(i) / (pieces * kSub));
-    for (int k = 0; k < pieces; ++k) {
-      PlanSegment s;
-      s.block = bi;
-      PlanSegment::Piece p;
-      p.shape = PlanSegment::Shape::block;
-      p.block = bi;
-      if (!summary) {
-        p.s.push_back(0);
-        p.t.push_back(static_cast<double>(k * kSub) / (pieces * kSub));
-        p.pts.push_back(pts[static_cast<size_t>(k * kSub)]);
-      }
-      double len = 0, rmin = kInf;
-      for (int i = 1; i <= kSub; ++i) {
-        const size_t at = static_cast<size_t>(k * kSub + i);
-        len += dist(pts[at - 1], pts[at]);
-        if (!summary) {
-          p.s.push_back(len);
-          p.t.push_back(static_cast<double>(at) / (pieces * kSub));
-          p.pts.push_back(pts[at]);
-        }
-        if (at + 1 < pts.size()) rmin = std::min(rmin, circumradius(pts[at - 1], pts[at], pts[at + 1]));
-      }
-      p.length = len;
-      s.length = len;
-      s.pieces.push_back(std::move(p));
-      if (linuxcnc()) {
-        // LinuxCNC's interpreter follows the curve by arcs: each takes the
-        // mean curvature of its stretch (the turn over the length), not
-        // the tightest point's.
-        const size_t a0 = static_cast<size_t>(k * kSub), a1 = static_cast<size_t>((k + 1) * kSub);
-        const Vec3 t0 = unit(pts[a0 + 1] - pts[a0]), t1 = unit(pts[a1] - pts[a1 - 1]);
-        const double turn = std::acos(std::clamp(dot(t0, t1), -1.0, 1.0)) * kSub / (kSub - 1);
-        rmin = turn > 1e-12 ? len / turn : kInf;
-      }
-      const double v = vfeed;
-      s.limit = base;
-      curved_limits(s, v, s.limit, rmin, aax);
-      s.curved = true;
-      s.radius = rmin;
-      s.angle = std::isfinite(rmin) && rmin > 0 ? len / rmin : 0;
-      {
-        // The centre of the circle through the piece's last three points.
-        const size_t at = static_cast<size_t>((k + 1) * kSub);
-        const Vec3 a = pts[at - 2], m = pts[at - 1], c = pts[at];
-        const Vec3 ab = m - a, ac = c - a, nrm = cross(ab, ac);
-        const double d = 2 * dot(nrm, nrm);
-        if (d > 0) s.center = a + (cross(nrm, ab) * dot(ac, ac) + cross(ac, nrm) * dot(ab, ab)) * (1 / d);
-      }
-      pb.length += len;
-      if (len > 0) out.push_back(std::move(s));
-    }
-    pb.programmed_feed = b.feed;
+    add_curve_segments(bi, pb, out);
   }
   // The block rate: the block takes at least 1 / block_rate.
   if (model.block_rate_hz > 0 && pb.length > 0) {
@@ -339,6 +239,119 @@ void Builder::add_block(int bi, std::vector<PlanSegment>& out) {
       }
   }
   plan.blocks.push_back(pb);
+}
+
+// An arc block: one segment, its speed and acceleration shared with the
+// centripetal part.
+void Builder::add_arc_segment(int bi, PlannedBlock& pb, std::vector<PlanSegment>& out) {
+  const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
+  const Vec3 n = from_plane({0, 0, 1}, b.plane);  // the plane's axis
+  const double vplane = in_plane(n, lim.vmax), aplane = arc_accel(in_plane(n, lim.amax));
+  double v = b.feed / 60;
+  SpeedLimit why = SpeedLimit::programmed;
+  if (v > vplane) {
+    v = vplane;
+    why = SpeedLimit::axes;
+    pb.clamped = true;
+  }
+  Vec3 r0 = to_plane(b.from - b.center, b.plane);
+  r0.z = 0;
+  const double R = norm(r0);
+  PlanSegment s;
+  s.block = bi;
+  PlanSegment::Piece p;
+  p.shape = PlanSegment::Shape::block;
+  p.block = bi;
+  p.length = pb.length;
+  p.s = {0, pb.length};
+  p.t = {0, 1};
+  s.pieces.push_back(std::move(p));
+  s.length = pb.length;
+  curved_limits(s, v, why, R, aplane);
+  s.curved = true;
+  Vec3 c = to_plane(b.center, b.plane);
+  c.z = to_plane(b.to, b.plane).z;
+  s.center = from_plane(c, b.plane);
+  s.radius = R;
+  s.angle = arc_sweep(b);
+  out.push_back(std::move(s));
+  pb.programmed_feed = b.feed;
+}
+
+// A curve block on the true curve: pieces of the parameter range, each with
+// the speed its tightest curvature allows (and, in a full plan, the table
+// of points that sampling reads).
+void Builder::add_curve_segments(int bi, PlannedBlock& pb, std::vector<PlanSegment>& out) {
+  const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
+  const int pieces = curve_pieces(b);
+  constexpr int kSub = 12;
+  const Vec3 n{0, 0, 1};
+  bool planar = true;
+  for (const Vec3& c : b.ctrl) planar = planar && std::abs(c.z - b.from.z) < 1e-12;
+  const double vax = planar ? in_plane(n, lim.vmax) : std::min({lim.vmax.x, lim.vmax.y, lim.vmax.z});
+  const double aax = arc_accel(planar ? in_plane(n, lim.amax) : std::min({lim.amax.x, lim.amax.y, lim.amax.z}));
+  double vfeed = b.feed / 60;
+  SpeedLimit base = SpeedLimit::programmed;
+  if (vfeed > vax) {
+    vfeed = vax;
+    base = SpeedLimit::axes;
+    pb.clamped = true;
+  }
+  std::vector<Vec3> pts(static_cast<size_t>(pieces * kSub + 1));
+  const CurvePoints curve(b);
+  for (int i = 0; i <= pieces * kSub; ++i) pts[static_cast<size_t>(i)] = curve.at(static_cast<double>(i) / (pieces * kSub));
+  for (int k = 0; k < pieces; ++k) {
+    PlanSegment s;
+    s.block = bi;
+    PlanSegment::Piece p;
+    p.shape = PlanSegment::Shape::block;
+    p.block = bi;
+    if (!summary) {
+      p.s.push_back(0);
+      p.t.push_back(static_cast<double>(k * kSub) / (pieces * kSub));
+      p.pts.push_back(pts[static_cast<size_t>(k * kSub)]);
+    }
+    double len = 0, rmin = kInf;
+    for (int i = 1; i <= kSub; ++i) {
+      const size_t at = static_cast<size_t>(k * kSub + i);
+      len += dist(pts[at - 1], pts[at]);
+      if (!summary) {
+        p.s.push_back(len);
+        p.t.push_back(static_cast<double>(at) / (pieces * kSub));
+        p.pts.push_back(pts[at]);
+      }
+      if (at + 1 < pts.size()) rmin = std::min(rmin, circumradius(pts[at - 1], pts[at], pts[at + 1]));
+    }
+    p.length = len;
+    s.length = len;
+    s.pieces.push_back(std::move(p));
+    if (linuxcnc()) {
+      // LinuxCNC's interpreter follows the curve by arcs: each takes the
+      // mean curvature of its stretch (the turn over the length), not
+      // the tightest point's.
+      const size_t a0 = static_cast<size_t>(k * kSub), a1 = static_cast<size_t>((k + 1) * kSub);
+      const Vec3 t0 = unit(pts[a0 + 1] - pts[a0]), t1 = unit(pts[a1] - pts[a1 - 1]);
+      const double turn = std::acos(std::clamp(dot(t0, t1), -1.0, 1.0)) * kSub / (kSub - 1);
+      rmin = turn > 1e-12 ? len / turn : kInf;
+    }
+    const double v = vfeed;
+    s.limit = base;
+    curved_limits(s, v, s.limit, rmin, aax);
+    s.curved = true;
+    s.radius = rmin;
+    s.angle = std::isfinite(rmin) && rmin > 0 ? len / rmin : 0;
+    {
+      // The centre of the circle through the piece's last three points.
+      const size_t at = static_cast<size_t>((k + 1) * kSub);
+      const Vec3 a = pts[at - 2], m = pts[at - 1], c = pts[at];
+      const Vec3 ab = m - a, ac = c - a, nrm = cross(ab, ac);
+      const double d = 2 * dot(nrm, nrm);
+      if (d > 0) s.center = a + (cross(nrm, ab) * dot(ac, ac) + cross(ac, nrm) * dot(ab, ab)) * (1 / d);
+    }
+    pb.length += len;
+    if (len > 0) out.push_back(std::move(s));
+  }
+  pb.programmed_feed = b.feed;
 }
 
 void Builder::cap_segment_time(PlanSegment& s) const {
