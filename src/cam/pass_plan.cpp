@@ -147,7 +147,7 @@ std::vector<double> along_samples(const SurfaceGeometry& s, char dir) {
 
 void check_options(const PassOptions& o) {
   if (!(o.stepover >= 4 * o.tolerance))
-    throw InputError(errc::toolpath_stepover, "toolpath.stepover",
+    throw InputError(errc::toolpath_stepover, Place::at_json("toolpath.stepover"),
                      "expected a stepover of at least 4 times the tolerance (" + fmt_num(4 * o.tolerance) +
                          "), found " + fmt_num(o.stepover) +
                          ": each pass may stray from the surface by the tolerance, which the spacing must absorb");
@@ -177,7 +177,7 @@ void check_pass_segments(const SurfaceGeometry& s, const PassOptions& o, const s
   double total = 0;
   for (double c : ats) total += estimate_segments(iso_curve(s, o.direction, c, false).points, budget);
   if (total > static_cast<double>(kMaxProgramLines))
-    throw InputError(errc::limit_segments, "tolerance",
+    throw InputError(errc::limit_segments, Place::at_json("tolerance"),
                      "the patch's " + std::to_string(ats.size()) + " passes need about " +
                          (std::isfinite(total) ? fmt_num(std::round(total)) : std::string("infinitely many")) +
                          " segments within tolerance " + fmt_num(o.tolerance) + ", more than the " +
@@ -192,7 +192,7 @@ double resolution_of(const PassOptions& o) { return o.stepover / 40; }
 // inserting a pass midway where the bound exceeds the stepover.
 // Stated limit (limits.hpp): passes on one patch.
 [[noreturn]] void too_many_passes(const PassOptions& o, const std::string& found) {
-  throw InputError(errc::toolpath_too_many_passes, "toolpath.stepover",
+  throw InputError(errc::toolpath_too_many_passes, Place::at_json("toolpath.stepover"),
                    "the patch needs " + found + " passes at stepover " + fmt_num(o.stepover) + ", more than the " +
                        std::to_string(kMaxPassesPerPatch) +
                        " one patch may have (docs/limits.md); use a larger stepover or split the patch");
@@ -224,7 +224,7 @@ PassPlan build_and_verify(const SurfaceGeometry& s, const PassOptions& o, const 
     }
     const double a = plan.passes[i].at, b = plan.passes[i + 1].at;
     if (b - a < 1e-9)
-      throw InputError(errc::toolpath_stepover, "toolpath.stepover",
+      throw InputError(errc::toolpath_stepover, Place::at_json("toolpath.stepover"),
                        "neighbouring passes near " + std::string(1, o.direction == 'u' ? 'v' : 'u') + " = " +
                            fmt_num(a) + " stay " + fmt_num(g) + " apart however close their parameters are: "
                            "the tool path jumps there (a crease under a ball-end tool?); use a larger stepover or a "

@@ -121,7 +121,7 @@ class SurfaceEmitter {
     } catch (const InputError& err) {
       // The geometry layers know no file: name the entity.
       if (!err.place().empty()) throw;
-      throw InputError(err.id(), where(), err.message());
+      throw InputError(err.id(), place(), err.message());
     }
     retract();
     st_.pos_known = true;
@@ -141,6 +141,9 @@ class SurfaceEmitter {
   EntityReport rep_;
   size_t skipped_ = 0;
 
+  // The entity in its job file (`rest`: a key inside the entity).
+  Place place(const std::string& rest = {}) const { return Place::in_json(c_.job.source, e_.json_path(), rest); }
+  // The entity as warnings name it.
   std::string where() const { return c_.job.source + ": " + e_.json_path(); }
   FlattenOptions fo() const { return {c_.tolerance, c_.decimals}; }
 
@@ -149,7 +152,7 @@ class SurfaceEmitter {
     // safe Z must clear the whole patch.
     const Box3 b = bounds(s_);
     if (b.hi.z > c_.params.safe_z)
-      throw InputError(errc::job_above_safe_z, where(),
+      throw InputError(errc::job_above_safe_z, place(),
                        "the surface rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " +
                            fmt_num(c_.params.safe_z) + "; rapid moves at safe_z would cross it: raise safe_z");
     if (c_.params.tool_radius < 0) throw std::logic_error("negative tool radius");
@@ -484,7 +487,7 @@ class SurfaceEmitter {
                    : "the surface is concave there with a curvature radius of " +
                          fmt_num(std::round(g.curvature_radius * 1e4) / 1e4) + ", less than the ball-end radius " +
                          fmt_num(r_);
-    throw InputError(errc::surface_gouge, where(),
+    throw InputError(errc::surface_gouge, place(),
                      "the tool would gouge the surface on " + what + " around " + fmt_uv(g.worst_u, g.worst_v) +
                          ": " + why + "; use a smaller tool_radius, or set \"gouge\": \"skip\" (in \"job\" or on the "
                          "entity) to leave such regions uncut");
@@ -530,7 +533,7 @@ class SurfaceEmitter {
   void cut_passes() {
     const ToolpathSpec& tp = e_.toolpath;
     if (!tp.stepover)
-      throw InputError(errc::job_missing, where() + ".toolpath.stepover",
+      throw InputError(errc::job_missing, place("toolpath.stepover"),
                        "a \"" + tp.pattern + "\" toolpath needs \"stepover\": the largest distance allowed between "
                        "neighbouring passes, in file units");
     PassOptions o;
@@ -544,7 +547,7 @@ class SurfaceEmitter {
       plan = plan_passes(s_, o);
     } catch (const InputError& err) {
       if (!err.id().starts_with("toolpath.")) throw;
-      throw InputError(err.id(), where() + ".toolpath.stepover", err.message());
+      throw InputError(err.id(), place("toolpath.stepover"), err.message());
     }
     const char across = tp.direction == 'u' ? 'v' : 'u';
     const bool zigzag = tp.pattern == "zigzag";

@@ -26,14 +26,14 @@ Box3 arc_box(const Vec3& from, const Vec3& to, const ArcMove& m) {
 void validate_program(const Program& p, const MachineProfile& m) {
   const double k = 1.0 / mm_per_unit(p.units);
   const char* unit = to_string(p.units);
-  // The entity's JSON path, and its id when it has one.
+  // The job file and the entity's JSON path, with its id when it has one.
   auto where = [&](const Move& mv) {
-    if (mv.entity < 0) return p.job_name;
-    std::string w = p.job_name + ": entities[" + std::to_string(mv.entity) + "]";
+    if (mv.entity < 0) return Place::at_file(p.job_name);
+    const std::string path = "entities[" + std::to_string(mv.entity) + "]";
+    std::string shown = path;
     for (const auto& r : p.entities)
-      if (r.entity == mv.entity && r.label != "entities[" + std::to_string(mv.entity) + "]")
-        w += " (id \"" + r.label + "\")";
-    return w;
+      if (r.entity == mv.entity && r.label != path) shown += " (id \"" + r.label + "\")";
+    return Place::in_json(p.job_name, shown);
   };
   auto check_box = [&](const Move& mv, const Box3& b, unsigned axes) {
     static const char* names = "XYZ";

@@ -169,25 +169,9 @@ MotionModel parse_motion(const Reader& r, const json& v) {
   return mm;
 }
 
-}  // namespace
-
-MachineProfile parse_machine_profile(const std::string& text, const std::string& source) {
-  Reader r{source};
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw InputError(errc::machine_syntax, source, std::string("the machine profile is not valid JSON (") + e.what() + ")");
-  }
-  if (!doc.is_object()) r.fail("(top level)", "expected a JSON object");
-  MachineProfile m;
-  r.m = &m;
-  r.check_keys(doc);
-  m.name = r.str(doc.value("name", json("")), "name");
-  if (m.name.empty()) r.fail("name", "expected a non-empty profile name");
-  if (auto v = r.opt(doc, "description")) m.description = r.str(*v, "description");
-  if (auto v = r.opt(doc, "header")) m.header = r.lines(*v, "header");
-  if (auto v = r.opt(doc, "footer")) m.footer = r.lines(*v, "footer");
+// How numbers and words are printed: line numbers, decimals, the motion
+// words.
+void parse_format(const Reader& r, const json& doc, MachineProfile& m) {
   if (auto v = r.opt(doc, "line_numbers")) {
     if (!v->is_object()) r.fail("line_numbers", "expected an object");
     m.line_numbers = v->value("enabled", false);
@@ -219,6 +203,11 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
     if (auto s = r.opt(*v, "cw")) m.word_cw = r.str(*s, "words.cw");
     if (auto s = r.opt(*v, "ccw")) m.word_ccw = r.str(*s, "words.ccw");
   }
+}
+
+// The tool change: its templates, whether there is a changer, the position
+// it goes to first.
+void parse_tool_change(const Reader& r, const json& doc, MachineProfile& m) {
   if (auto v = r.opt(doc, "tool_change")) m.tool_change = r.str(*v, "tool_change");
   if (auto v = r.opt(doc, "spindle_on")) m.spindle_on = r.str(*v, "spindle_on");
   if (auto v = r.opt(doc, "spindle_off")) m.spindle_off = r.str(*v, "spindle_off");
@@ -231,6 +220,11 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   if (auto v = r.opt(doc, "tool_change_position")) m.tool_change_position = r.lines(*v, "tool_change_position");
   for (size_t i = 0; i < m.tool_change_position.size(); ++i)
     r.check_placeholders("tool_change_position[" + std::to_string(i) + "]", m.tool_change_position[i]);
+}
+
+// What the controller can do: comments, modal words, program numbers,
+// dwell, arcs, cutter compensation and its D registers.
+void parse_capabilities(const Reader& r, const json& doc, MachineProfile& m) {
   for (const auto& [key, out] : {std::pair{"comments", &m.comments}, std::pair{"modal", &m.modal}})
     if (auto v = r.opt(doc, key)) {
       if (!v->is_boolean()) r.fail(key, "expected true or false");
@@ -266,38 +260,44 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
       m.tool_diameters_mm[reg] = dia;
     }
   }
-  if (auto v = r.opt(doc, "nurbs")) {
-    if (!v->is_object()) r.fail("nurbs", "expected an object");
-    const std::string d = r.str(v->value("dialect", json("none")), "nurbs.dialect");
-    if (d == "none") m.nurbs = NurbsDialect::none;
-    else if (d == "fanuc") m.nurbs = NurbsDialect::fanuc;
-    else if (d == "linuxcnc") m.nurbs = NurbsDialect::linuxcnc;
-    else r.fail("nurbs.dialect", "expected \"none\", \"fanuc\" or \"linuxcnc\", found \"" + d + "\"");
-    if (auto s = r.opt(*v, "start_word")) m.nurbs_start_word = r.str(*s, "nurbs.start_word");
-    if (auto s = r.opt(*v, "max_rank")) m.nurbs_max_rank = r.integer(*s, "nurbs.max_rank");
-    if (auto s = r.opt(*v, "knot_decimals")) m.knot_decimals = r.integer(*s, "nurbs.knot_decimals");
-    if (auto s = r.opt(*v, "weight_decimals")) m.weight_decimals = r.integer(*s, "nurbs.weight_decimals");
-    if (auto s = r.opt(*v, "fixed_decimals")) {
-      if (!s->is_boolean()) r.fail("nurbs.fixed_decimals", "expected true or false");
-      m.nurbs_fixed_decimals = s->get<bool>();
-    }
-    if (m.knot_decimals < 0 || m.knot_decimals > 9 || m.weight_decimals < 0 || m.weight_decimals > 9)
-      r.fail("nurbs", "expected knot_decimals and weight_decimals between 0 and 9");
-    if (m.nurbs_max_rank < 2 || m.nurbs_max_rank > 4) r.fail("nurbs.max_rank", "expected a rank from 2 to 4");
+}
+
+// The `nurbs` object: the dialect of curve blocks and how they print.
+void parse_nurbs(const Reader& r, const json& v, MachineProfile& m) {
+  if (!v.is_object()) r.fail("nurbs", "expected an object");
+  const std::string d = r.str(v.value("dialect", json("none")), "nurbs.dialect");
+  if (d == "none") m.nurbs = NurbsDialect::none;
+  else if (d == "fanuc") m.nurbs = NurbsDialect::fanuc;
+  else if (d == "linuxcnc") m.nurbs = NurbsDialect::linuxcnc;
+  else r.fail("nurbs.dialect", "expected \"none\", \"fanuc\" or \"linuxcnc\", found \"" + d + "\"");
+  if (auto s = r.opt(v, "start_word")) m.nurbs_start_word = r.str(*s, "nurbs.start_word");
+  if (auto s = r.opt(v, "max_rank")) m.nurbs_max_rank = r.integer(*s, "nurbs.max_rank");
+  if (auto s = r.opt(v, "knot_decimals")) m.knot_decimals = r.integer(*s, "nurbs.knot_decimals");
+  if (auto s = r.opt(v, "weight_decimals")) m.weight_decimals = r.integer(*s, "nurbs.weight_decimals");
+  if (auto s = r.opt(v, "fixed_decimals")) {
+    if (!s->is_boolean()) r.fail("nurbs.fixed_decimals", "expected true or false");
+    m.nurbs_fixed_decimals = s->get<bool>();
   }
-  if (auto v = r.opt(doc, "travel_mm")) {
-    const char* axes[3] = {"x", "y", "z"};
-    for (int k = 0; k < 3; ++k) {
-      auto a = r.opt(*v, axes[k]);
-      if (!a) continue;
-      const std::string p = std::string("travel_mm.") + axes[k];
-      if (!a->is_array() || a->size() != 2) r.fail(p, "expected [min, max]");
-      m.travel_mm[k] = {r.num((*a)[0], p + "[0]"), r.num((*a)[1], p + "[1]")};
-      if (!(m.travel_mm[k][0] < m.travel_mm[k][1])) r.fail(p, "expected min < max");
-    }
+  if (m.knot_decimals < 0 || m.knot_decimals > 9 || m.weight_decimals < 0 || m.weight_decimals > 9)
+    r.fail("nurbs", "expected knot_decimals and weight_decimals between 0 and 9");
+  if (m.nurbs_max_rank < 2 || m.nurbs_max_rank > 4) r.fail("nurbs.max_rank", "expected a rank from 2 to 4");
+}
+
+// The `travel_mm` object: the axes' limits.
+void parse_travel(const Reader& r, const json& v, MachineProfile& m) {
+  const char* axes[3] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    auto a = r.opt(v, axes[k]);
+    if (!a) continue;
+    const std::string p = std::string("travel_mm.") + axes[k];
+    if (!a->is_array() || a->size() != 2) r.fail(p, "expected [min, max]");
+    m.travel_mm[k] = {r.num((*a)[0], p + "[0]"), r.num((*a)[1], p + "[1]")};
+    if (!(m.travel_mm[k][0] < m.travel_mm[k][1])) r.fail(p, "expected min < max");
   }
-  if (auto v = r.opt(doc, "max_feed_mm_min")) m.max_feed_mm_min = r.num(*v, "max_feed_mm_min");
-  if (auto v = r.opt(doc, "motion")) m.motion = parse_motion(r, *v);
+}
+
+// Every template's placeholders.
+void check_templates(const Reader& r, const MachineProfile& m) {
   for (size_t i = 0; i < m.header.size(); ++i) r.check_placeholders("header[" + std::to_string(i) + "]", m.header[i]);
   for (size_t i = 0; i < m.footer.size(); ++i) r.check_placeholders("footer[" + std::to_string(i) + "]", m.footer[i]);
   r.check_placeholders("tool_change", m.tool_change);
@@ -305,23 +305,55 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   r.check_placeholders("spindle_off", m.spindle_off);
   r.check_placeholders("tool_length", m.tool_length);
   for (size_t i = 0; i < m.preamble.size(); ++i) r.check_placeholders("preamble[" + std::to_string(i) + "]", m.preamble[i]);
-  if (auto v = r.opt(doc, "defaults")) {
-    auto num = [&](const char* k, std::optional<double>& out) {
-      if (auto s = r.opt(*v, k)) out = r.num(*s, std::string("defaults.") + k);
-    };
-    num("feed", m.defaults.feed);
-    num("plunge_feed", m.defaults.plunge_feed);
-    num("safe_z", m.defaults.safe_z);
-    num("cut_z", m.defaults.cut_z);
-    num("spindle_rpm", m.defaults.spindle_rpm);
-    num("tool_radius", m.defaults.tool_radius);
-    if (auto s = r.opt(*v, "tool")) m.defaults.tool = r.integer(*s, "defaults.tool");
-    if (auto s = r.opt(*v, "coolant")) {
-      const std::string c = r.str(*s, "defaults.coolant");
-      m.defaults.coolant = coolant_from(c);
-      if (!m.defaults.coolant) r.fail("defaults.coolant", "expected \"flood\", \"mist\" or \"off\", found \"" + c + "\"");
-    }
+}
+
+// The `defaults` object: job settings a job may leave to the machine.
+void parse_defaults(const Reader& r, const json& v, MachineProfile& m) {
+  auto num = [&](const char* k, std::optional<double>& out) {
+    if (auto s = r.opt(v, k)) out = r.num(*s, std::string("defaults.") + k);
+  };
+  num("feed", m.defaults.feed);
+  num("plunge_feed", m.defaults.plunge_feed);
+  num("safe_z", m.defaults.safe_z);
+  num("cut_z", m.defaults.cut_z);
+  num("spindle_rpm", m.defaults.spindle_rpm);
+  num("tool_radius", m.defaults.tool_radius);
+  if (auto s = r.opt(v, "tool")) m.defaults.tool = r.integer(*s, "defaults.tool");
+  if (auto s = r.opt(v, "coolant")) {
+    const std::string c = r.str(*s, "defaults.coolant");
+    m.defaults.coolant = coolant_from(c);
+    if (!m.defaults.coolant) r.fail("defaults.coolant", "expected \"flood\", \"mist\" or \"off\", found \"" + c + "\"");
   }
+}
+
+}  // namespace
+
+MachineProfile parse_machine_profile(const std::string& text, const std::string& source) {
+  Reader r{source};
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError(errc::machine_syntax, Place::at_file(source), std::string("the machine profile is not valid JSON (") + e.what() + ")");
+  }
+  if (!doc.is_object()) r.fail("(top level)", "expected a JSON object");
+  MachineProfile m;
+  r.m = &m;
+  r.check_keys(doc);
+  m.name = r.str(doc.value("name", json("")), "name");
+  if (m.name.empty()) r.fail("name", "expected a non-empty profile name");
+  if (auto v = r.opt(doc, "description")) m.description = r.str(*v, "description");
+  if (auto v = r.opt(doc, "header")) m.header = r.lines(*v, "header");
+  if (auto v = r.opt(doc, "footer")) m.footer = r.lines(*v, "footer");
+  parse_format(r, doc, m);
+  parse_tool_change(r, doc, m);
+  parse_capabilities(r, doc, m);
+  if (auto v = r.opt(doc, "nurbs")) parse_nurbs(r, *v, m);
+  if (auto v = r.opt(doc, "travel_mm")) parse_travel(r, *v, m);
+  if (auto v = r.opt(doc, "max_feed_mm_min")) m.max_feed_mm_min = r.num(*v, "max_feed_mm_min");
+  if (auto v = r.opt(doc, "motion")) m.motion = parse_motion(r, *v);
+  check_templates(r, m);
+  if (auto v = r.opt(doc, "defaults")) parse_defaults(r, *v, m);
   return m;
 }
 

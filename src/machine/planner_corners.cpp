@@ -1,0 +1,309 @@
+// The planner's corners (planner_builder.hpp): the segments joined in
+// order, each corner between blocks taken tangentially, blended by a
+// circular arc within the path tolerance, at the speed of an equivalent
+// blend where an arc or a curve keeps its shape, or at an exact stop.
+#include <algorithm>
+#include <cmath>
+
+#include "planner_builder.hpp"
+
+namespace bezcam::planner_detail {
+
+void Builder::build() {
+  size_t pause = 0;
+  bool stop_before = true;  // the machine is at rest
+  // Reserved once (address space only until used): no reallocation
+  // holding the segments twice while a long program grows.
+  const size_t most = most_segments + 16;
+  if (summary) lean.reserve(most);
+  else segs.reserve(most);
+  junction.reserve(most + 1);
+  plan.blocks.reserve(tl.blocks.size());
+  for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
+    bool pause_here = false;
+    while (pause < tl.pauses.size() && tl.pauses[pause].before_block <= bi) {
+      pause_here = true;
+      ++pause;
+    }
+    // Build this block's segments aside (one vector for every block),
+    // then join them.
+    std::vector<PlanSegment>& mine = mine_;
+    mine.clear();
+    add_block(static_cast<int>(bi), mine);
+    const MotionBlock& b = tl.blocks[bi];
+    // A block that does not move (its end is where it starts) takes no
+    // time and makes no corner: controllers drop it.
+    if (plan.blocks.back().length <= 1e-9) mine.clear();
+    for (size_t k = 0; k < mine.size(); ++k) {
+      PlanSegment s = std::move(mine[k]);
+      if (segs.empty() || (k == 0 && (stop_before || pause_here))) {
+        // The first move may start moving (a window of a longer program
+        // planned at machine pace: Timeline::start_speed); after a pause
+        // the machine is at rest.
+        const bool first = segs.empty() && !pause_here;
+        if (!segs.empty()) exact_stop_end(Stop::pause);
+        cap_segment_time(s);
+        junction.push_back(first ? tl.start_speed : 0);
+        segs.push_back(std::move(s));
+        continue;
+      }
+      if (k > 0) {  // inside a block: tangent pieces
+        cap_segment_time(s);
+        junction.push_back(std::min(segs.back().vmax, s.vmax));
+        segs.push_back(std::move(s));
+        continue;
+      }
+      // A corner between blocks.
+      PlanSegment& prev = segs.back();
+      const MotionBlock& pbk = tl.blocks[static_cast<size_t>(prev.block)];
+      const double tol = std::min(path_tolerance(bi), path_tolerance(static_cast<size_t>(prev.block)));
+      double vj = 0;
+      const Vec3 u1 = block_tangent(pbk, true), u2 = block_tangent(b, false);
+      const double phi = std::acos(std::clamp(dot(u1, u2), -1.0, 1.0));
+      const bool lines = prev.pieces.back().shape == PlanSegment::Shape::line &&
+                         s.pieces.front().shape == PlanSegment::Shape::line && prev.pieces.size() == 1 &&
+                         s.pieces.size() == 1;
+      double kink_scale = -1;  // LinuxCNC: the kink's share of the acceleration
+      if (tol <= 0 || phi > kPi - 2 * kPi / 180 || (prev.rapid != s.rapid && !linuxcnc())) {
+        vj = 0;  // exact stop: asked, a reversal, or a generic controller between rapid and feed
+      } else if (tangent(prev, s, u1, u2, phi, vj, kink_scale)) {
+        // vj set
+      } else if (lines) {
+        junction_pending_ = junction.back();
+        const double nominal_prev = dist(pbk.from, pbk.to), nominal_next = dist(b.from, b.to);
+        const double r = blend_lines(s, tol, nominal_prev, nominal_next, pbk.line);
+        if (r < 0) {
+          cap_segment_time(s);
+          junction.push_back(std::min(segs.back().vmax, s.vmax));
+          segs.push_back(std::move(s));
+          continue;
+        }
+        vj = r;
+      } else {
+        vj = curved_corner(prev, s, pbk, b, u1, u2, phi, tol);
+        if (vj < 0) {
+          // No blend fits (too sharp for the arcs' share): LinuxCNC takes
+          // the corner as a kink at a reduced speed; others stop.
+          vj = 0;
+          if (linuxcnc() && kink_scale > 0) {
+            vj = std::min(prev.vmax, s.vmax) * kKinkRatio / kink_scale;
+            prev.kink_reduce = std::max(prev.kink_reduce, kKinkRatio);
+            s.kink_reduce = std::max(s.kink_reduce, kKinkRatio);
+          }
+        }
+      }
+      if (vj <= 0) exact_stop_end(tol <= 0 ? Stop::exact_mode : Stop::corner);
+      cap_segment_time(s);
+      junction.push_back(vj);
+      segs.push_back(std::move(s));
+    }
+    stop_before = false;
+    if (mine.empty() && pause_here) stop_before = true;
+    // A summary needs no segment once no blend can reach it (corners
+    // change the last two): only its figures are kept, as the program goes.
+    if (summary && segs.size() > 2) {
+      for (size_t k = 0; k + 2 < segs.size(); ++k) add_lean(segs[k]);
+      segs.erase(segs.begin(), segs.end() - 2);
+    }
+  }
+  if (!segs.empty()) exact_stop_end(Stop::end);
+  junction.push_back(0);  // the end
+  for (PlanSegment& sg : segs) add_lean(sg);
+  if (summary) segs.clear();
+}
+
+// A segment that ends in a stop. LinuxCNC plans a move whose end it could
+// not blend (the program's end, a pause) with half its acceleration (and
+// an arc that no next move finalized with half of that tangentially),
+// and a move that stops in exact-stop mode (G61) with 0.9 of it (both
+// measured on LinuxCNC 2.9; docs/motion.md). A sharp corner's stop keeps
+// the whole acceleration.
+void Builder::exact_stop_end(Stop why) {
+  if (!linuxcnc() || segs.empty()) return;
+  PlanSegment& s = segs.back();
+  const bool exact = path_tolerance(static_cast<size_t>(s.block)) <= 0;
+  double f = 1;
+  if (why == Stop::exact_mode || (exact && why != Stop::corner)) f = 0.9;
+  else if (why == Stop::end || why == Stop::pause) f = 0.5;
+  if (f == 1) return;
+  s.overall_accel *= f;
+  s.accel = s.curved ? kTangentialShare * s.overall_accel : std::min(s.accel * f, s.overall_accel);
+}
+
+// Blends the corner between the last segment of segs (a line) and `next`
+// (a line), both in the same mode. Returns the speed limit at the join
+// when the corner is not blended by an arc (then the lines keep their
+// shape), or -1 when a blend arc was inserted.
+double Builder::blend_lines(PlanSegment& next, double tol, double nominal_prev, double nominal_next, int line) {
+  PlanSegment& prev = segs.back();
+  const Vec3 a = prev.pieces.back().a, c = prev.pieces.back().b, e = next.pieces.front().b;
+  const Vec3 u1 = unit(c - a), u2 = unit(e - c);
+  const double cosang = std::clamp(dot(u1, u2), -1.0, 1.0);
+  const double phi = std::acos(cosang);  // turning angle
+  if (phi > kPi - 1e-6) return 0;  // reversal: stop
+  const double theta = 0.5 * (kPi - phi);
+  const Vec3 normal = unit(cross(u1, u2));
+  const double aplane = in_plane(normal, lim.amax), vplane = in_plane(normal, lim.vmax);
+  const double an = kNormalShare * aplane;
+  const double T = std::min({tol, kToleranceFraction * nominal_prev, kToleranceFraction * nominal_next});
+  if (!(T > 0)) return 0;
+  const double d_tol = std::cos(theta) * T / (1 - std::sin(theta));
+  const double L1 = std::min(prev.pieces.back().length, kBlendFraction * nominal_prev);
+  const double L2 = kBlendFraction * next.length;
+  const double d_geom = std::min({L1, L2, d_tol});
+  const double R_geom = std::tan(theta) * d_geom;
+  const double v_goal = std::min(std::max(prev.vmax, next.vmax), vplane);
+  const double v_plan = std::min(std::sqrt(an * R_geom), v_goal);
+  // How much of the lines the blend takes: no more than a parabolic
+  // blend at half the acceleration would need to reach v_plan.
+  const double a_par = 0.5 * aplane;
+  const double v_tri = std::sqrt(2 * a_par * d_geom);
+  const double s_blend = std::min(v_tri, v_plan) / a_par * v_plan;
+  const double R_blend = std::min(s_blend / phi, R_geom);
+  const double R = std::max(v_plan * v_plan / an, R_blend);
+  const double d = std::min(R / std::tan(theta), d_geom);
+  if (R <= 1e-12 || R * phi < 1e-9) return 0;
+  // Trim the lines.
+  PlanSegment::Piece& pl = prev.pieces.back();
+  pl.b = c - u1 * d;
+  pl.length = std::max(0.0, pl.length - d);
+  prev.length = 0;
+  for (const auto& q : prev.pieces) prev.length += q.length;
+  cap_segment_time(prev);
+  PlanSegment::Piece& nl = next.pieces.front();
+  nl.a = c + u2 * d;
+  nl.length = std::max(0.0, nl.length - d);
+  next.length = nl.length;
+  // The blend arc.
+  PlanSegment blend;
+  blend.block = prev.block;
+  blend.rapid = prev.rapid;
+  PlanSegment::Piece arc;
+  arc.shape = PlanSegment::Shape::arc;
+  const Vec3 inward = unit(u2 - u1);
+  arc.center = pl.b + unit(inward - u1 * dot(inward, u1)) * R;
+  arc.u = unit(pl.b - arc.center);
+  arc.w = u1;
+  arc.radius = R;
+  arc.angle = phi;
+  arc.length = R * phi;
+  blend.pieces.push_back(arc);
+  blend.length = arc.length;
+  blend.vmax = v_plan;
+  blend.limit = v_plan < v_goal ? SpeedLimit::corner : (prev.vmax >= next.vmax ? prev.limit : next.limit);
+  blend.accel = kTangentialShare * aplane;
+  if (model.min_segment_periods > 0) {
+    const double cap = blend.length / (model.min_segment_periods * period);
+    if (cap < blend.vmax) {
+      blend.vmax = cap;
+      blend.limit = SpeedLimit::segment_time;
+    }
+  }
+  const double dev = R / std::sin(theta) - R;
+  if (dev > plan.max_path_deviation) {
+    plan.max_path_deviation = dev;
+    plan.max_deviation_line = line;
+  }
+  // A remnant of the previous line too short to run on its own is
+  // absorbed into the blend (the blend then starts where the remnant did).
+  if (prev.pieces.size() == 1 && prev.length < kGapPeriods * period * blend.vmax && segs.size() >= 1) {
+    PlanSegment::Piece remnant = prev.pieces.back();
+    blend.pieces.insert(blend.pieces.begin(), remnant);
+    blend.length += remnant.length;
+    blend.block = prev.block;
+    segs.pop_back();
+    junction.pop_back();  // the blend takes the remnant's entry
+    segs.push_back(std::move(blend));
+    junction.push_back(junction_pending_);
+  } else {
+    segs.push_back(std::move(blend));
+    junction.push_back(std::min(segs[segs.size() - 2].vmax, segs.back().vmax));
+  }
+  return -1;
+}
+
+// Whether the two moves meet tangentially enough to pass without a
+// blend, and at what speed. Generic: directions within kTangentAngle, at
+// the speed a one-period kink allows. LinuxCNC: the acceleration spike
+// of turning by the kink within one period, as a share of the axes'
+// limits (twice as much at an arc), below kKinkRatio; the moves then
+// lose that share of their acceleration. `kink_scale` receives the share.
+bool Builder::tangent(PlanSegment& prev, PlanSegment& next, const Vec3& u1, const Vec3& u2, double phi, double& vj,
+             double& kink_scale) const {
+  const double vmax = std::min(prev.vmax, next.vmax);
+  if (!linuxcnc()) {
+    if (phi >= kTangentAngle) return false;
+    const double aa = std::min(prev.accel, next.accel);
+    const double kink = phi > 0 ? kNormalShare * kKinkShare * aa * period / phi : kInf;
+    vj = std::min(vmax, kink);
+    return true;
+  }
+  const double a_inst = vmax / period + next.overall_accel;
+  const Vec3 diff = (u2 - u1) * a_inst;
+  double spike = 0;
+  for (int i = 0; i < 3; ++i) spike = std::max(spike, std::abs(diff[i]) / lim.amax[i]);
+  if (prev.curved || next.curved) spike /= kTangentialShare;
+  kink_scale = spike;
+  if (spike >= kKinkRatio) return false;
+  vj = vmax;
+  prev.kink_reduce = std::max(prev.kink_reduce, spike);
+  next.kink_reduce = std::max(next.kink_reduce, spike);
+  return true;
+}
+
+// A corner where an arc or a curve meets another move: the speed of a
+// blend arc within the tolerance between the secants of the arcs' ends
+// (each arc lends at most a part of its sweep: 2/3 of the one before,
+// 1/3 of the one after, and half of it for a line), the shape kept.
+// -1 when no blend fits.
+double Builder::curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk, const MotionBlock&,
+                     const Vec3& u1, const Vec3& u2, double phi, double tol) {
+  const Vec3 P = pbk.to;
+  const double theta_tan = 0.5 * (kPi - phi);
+  double theta = theta_tan, L1, L2;
+  if (prev.curved && std::isfinite(prev.radius)) {
+    const bool convex = dot(P - prev.center, u2) < 0;
+    const double phi_max = std::min(prev.angle * 2 / 3, convex ? theta_tan : kPi / 2);
+    if (convex) theta = std::min(theta, theta_tan - phi_max / 4);
+    L1 = convex ? std::sin(phi_max / 4) * prev.radius : phi_max * prev.radius;
+  } else {
+    L1 = std::min(prev.length, kBlendFraction * plan.blocks[static_cast<size_t>(prev.block)].length);
+  }
+  if (next.curved && std::isfinite(next.radius)) {
+    const bool convex = dot(P - next.center, u1) >= 0;
+    const double phi_max = std::min(next.angle / 3, convex ? theta_tan : kPi / 2);
+    if (convex) theta = std::min(theta, theta_tan - phi_max / 4);
+    L2 = convex ? std::sin(phi_max / 4) * next.radius : phi_max * next.radius;
+  } else {
+    L2 = kBlendFraction * next.length;
+  }
+  if (theta < kMinBlendTheta) return -1;
+  const double turn = kPi - 2 * theta;
+  if (turn <= 0) return std::min(prev.vmax, next.vmax);
+  Vec3 normal = cross(u1, u2);
+  normal = norm(normal) > 1e-9 ? unit(normal) : Vec3{0, 0, 1};
+  const double aplane = in_plane(normal, lim.amax), vplane = in_plane(normal, lim.vmax);
+  const double an = kNormalShare * aplane;
+  const double T = std::min({tol, kToleranceFraction * plan.blocks[static_cast<size_t>(prev.block)].length,
+                             kToleranceFraction * plan.blocks[static_cast<size_t>(next.block)].length});
+  if (!(T > 0)) return -1;
+  const double d_tol = std::cos(theta) * T / (1 - std::sin(theta));
+  const double d_geom = std::min({L1, L2, d_tol});
+  const double R_geom = std::tan(theta) * d_geom;
+  const double v_goal = std::min(std::max(prev.vmax, next.vmax), vplane);
+  const double v_plan = std::min(std::sqrt(an * R_geom), v_goal);
+  // The blend's own length caps it like any segment.
+  const double a_par = 0.5 * aplane;
+  const double s_blend = std::min(std::sqrt(2 * a_par * d_geom), v_plan) / a_par * v_plan;
+  const double R = std::max(v_plan * v_plan / an, std::min(s_blend / turn, R_geom));
+  double v = v_plan;
+  if (model.min_segment_periods > 0) v = std::min(v, R * turn / (model.min_segment_periods * period));
+  const double dev = R / std::sin(theta) - R;
+  if (dev > plan.max_path_deviation) {
+    plan.max_path_deviation = dev;
+    plan.max_deviation_line = pbk.line;
+  }
+  return std::min({v, prev.vmax, next.vmax});
+}
+
+}  // namespace bezcam::planner_detail

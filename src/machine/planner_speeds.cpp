@@ -1,0 +1,261 @@
+// The planner's speeds and times (planner_builder.hpp): a windowed
+// backward pass for the look-ahead, a backward and a forward pass give
+// every junction's speed; each segment is then a trapezoid (an S-curve's
+// durations with a jerk limit); the totals sum the times per block and
+// say what held each block below its feed.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+
+#include "planner_builder.hpp"
+
+namespace bezcam::planner_detail {
+
+namespace {
+
+// A speed change from v0 to v1 (either way) at acceleration a, jerk j
+// (0: none): its duration (a symmetric S-curve with jerk; its distance is
+// then the mean speed times the duration, as for a linear ramp).
+double ramp_time(double v0, double v1, double a, double j) {
+  const double dv = std::abs(v1 - v0);
+  if (dv <= 0) return 0;
+  if (j <= 0) return dv / a;
+  if (dv >= a * a / j) return dv / a + a / j;
+  return 2 * std::sqrt(dv / j);
+}
+double ramp_distance(double v0, double v1, double a, double j) { return 0.5 * (v0 + v1) * ramp_time(v0, v1, a, j); }
+
+// The same with the jerk's build-up at the ramp's start (`in`) and its
+// wind-down at the end (`out`) each counted only where the acceleration
+// really starts or ends: a ramp that continues over several segments
+// builds up its acceleration once.
+double ramp_time(double v0, double v1, double a, double j, bool in, bool out) {
+  if (j <= 0 || (in && out)) return ramp_time(v0, v1, a, j);
+  const double dv = std::abs(v1 - v0);
+  if (dv <= 0) return 0;
+  if (!in && !out) return dv / a;
+  // One end only: half of the jerk phases, limited as for a short ramp.
+  return std::max(dv / a + 0.5 * a / j * std::min(1.0, dv * j / (a * a)), 0.5 * ramp_time(v0, v1, a, j));
+}
+
+// The highest speed reachable from v0 within distance L (the inverse of
+// ramp_distance in v1, by bisection with jerk, closed form without).
+double reachable(double v0, double L, double a, double j, double cap) {
+  if (j <= 0) return std::min(cap, std::sqrt(v0 * v0 + 2 * a * L));
+  if (ramp_distance(v0, cap, a, j) <= L) return cap;
+  double lo = v0, hi = cap;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (ramp_distance(v0, mid, a, j) <= L ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+void Builder::speeds() {
+  const size_t n = lean.size();
+  const double j = lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0;
+  // junction has n + 1 entries: entering each segment, then the end.
+  std::vector<double> v(junction);
+  for (size_t i = 0; i < n; ++i) {
+    v[i] = std::min(v[i], lean[i].vmax);
+    if (i > 0) v[i] = std::min(v[i], lean[i - 1].vmax);
+  }
+  // Look-ahead: at each segment the controller must be able to stop
+  // within the segments it sees (counted in blocks).
+  const int window = std::max(1, model.lookahead_blocks);
+  std::vector<double> look(n + 1, kInf);
+  {
+    // Only where the window is short compared with a stop.
+    std::vector<double> prefix(n + 1, 0);
+    for (size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + lean[i].length;
+    std::vector<size_t> end_of(n);
+    // Window end: the segment after `window` distinct blocks.
+    size_t e = 0;
+    int last_block = -2;
+    std::vector<int> bcount(n + 1, 0);
+    for (size_t i = 0; i < n; ++i) {
+      bcount[i + 1] = bcount[i] + (lean[i].block != last_block ? 1 : 0);
+      last_block = lean[i].block;
+    }
+    for (size_t i = 0; i < n; ++i) {
+      if (e < i) e = i;
+      while (e < n && bcount[e + 1] - bcount[i] <= window) ++e;
+      end_of[i] = e;  // segments [i, e) are seen
+    }
+    // The least acceleration over each window, by a sliding minimum (both
+    // ends only move forward).
+    std::deque<size_t> mins;
+    size_t pushed = 0;
+    for (size_t i = 0; i < n; ++i) {
+      // Entering segment i, the controller is still executing segment
+      // i - 1: it sees the window that began there.
+      const size_t stop = end_of[i > 0 ? i - 1 : 0];
+      if (stop >= n) continue;  // sees the program's end: the normal passes cover it
+      for (; pushed < stop; ++pushed) {
+        while (!mins.empty() && lean[mins.back()].accel >= lean[pushed].accel) mins.pop_back();
+        mins.push_back(pushed);
+      }
+      while (!mins.empty() && mins.front() < i) mins.pop_front();
+      const double a_min = mins.empty() ? lean[i].accel : lean[mins.front()].accel;
+      // A window long enough to stop from the top speed does not limit.
+      const double dist_needed = ramp_distance(0, lean[i].vmax, a_min, 0);
+      if (prefix[stop] - prefix[i] >= dist_needed * 1.0001) continue;
+      double w = 0;
+      for (size_t k = stop; k-- > i;) w = std::min(reachable(w, lean[k].length, lean[k].accel, 0, lean[k].vmax), v[k]);
+      look[i] = w;
+    }
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (look[i] < v[i]) {
+      v[i] = look[i];
+      lookahead_limited_.resize(n, false);
+      lookahead_limited_[i] = true;
+    }
+  }
+  // Backward then forward (speeds by the acceleration; the jerk's share
+  // of a ramp is counted below, once per ramp).
+  for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], lean[i].length, lean[i].accel, 0, lean[i].vmax));
+  for (size_t i = 0; i < n; ++i)
+    v[i + 1] = std::min(v[i + 1], reachable(v[i], lean[i].length, lean[i].accel, 0, lean[i].vmax));
+  // Trapezoids, then (with a jerk limit) S-curves: a ramp's build-up and
+  // wind-down where the acceleration starts and ends, not at every joint.
+  for (size_t i = 0; i < n; ++i) profile_one(lean[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
+  if (j > 0) {
+    std::vector<char> acc_in(n, 1), acc_out(n, 1), dec_in(n, 1), dec_out(n, 1);
+    // A phase counts when it covers more than rounding would leave of the
+    // segment (1e-9 of its length, at most its peak speed times its
+    // duration): a cruise or a ramp of a few ulps, left where the speeds
+    // meet exactly on paper, must not decide whether a ramp continues into
+    // the next segment (that would move the time by a jerk's share of a
+    // ramp for a change of 1e-12 in a length).
+    auto has = [](const Lean& q, double t) { return t * q.vpeak > 1e-9 * q.length; };
+    auto ends_acc = [&](const Lean& q) { return has(q, q.t_acc) && !has(q, q.t_cruise) && !has(q, q.t_dec); };
+    auto starts_acc = [&](const Lean& q) { return has(q, q.t_acc); };
+    auto ends_dec = [&](const Lean& q) { return has(q, q.t_dec); };
+    auto starts_dec = [&](const Lean& q) { return has(q, q.t_dec) && !has(q, q.t_acc) && !has(q, q.t_cruise); };
+    for (size_t i = 0; i + 1 < n; ++i) {
+      if (ends_acc(lean[i]) && starts_acc(lean[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
+      if (ends_dec(lean[i]) && starts_dec(lean[i + 1])) dec_out[i] = dec_in[i + 1] = 0;
+    }
+    for (size_t i = 0; i < n; ++i) {
+      std::array<char, 4> f{acc_in[i], acc_out[i], dec_in[i], dec_out[i]};
+      profile_one(lean[i], v[i], v[i + 1], j, f);
+    }
+  }
+  if (!summary)
+    for (size_t i = 0; i < n; ++i) {
+      PlanSegment& sg = segs[i];
+      sg.v0 = v[i];
+      sg.v1 = v[i + 1];
+      sg.vpeak = lean[i].vpeak;
+      sg.t_acc = lean[i].t_acc;
+      sg.t_cruise = lean[i].t_cruise;
+      sg.t_dec = lean[i].t_dec;
+    }
+}
+
+// One segment from v0 to v1: the highest peak that fits its length.
+void Builder::profile_one(Lean& s, double v0, double v1, double j, std::array<char, 4> f) {
+  const double a = s.accel;
+  auto up = [&](double vp) { return ramp_time(v0, vp, a, j, f[0], f[1]); };
+  auto down = [&](double vp) { return ramp_time(vp, v1, a, j, f[2], f[3]); };
+  auto used = [&](double vp) { return 0.5 * (v0 + vp) * up(vp) + 0.5 * (vp + v1) * down(vp); };
+  double lo = std::max(v0, v1), hi = s.vmax;
+  double vp = hi;
+  if (used(hi) > s.length * (1 + 1e-12)) {
+    if (j <= 0) {
+      vp = std::clamp(std::sqrt(std::max(0.0, (2 * a * s.length + v0 * v0 + v1 * v1) / 2)), lo, hi);
+    } else {
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (used(mid) <= s.length ? lo : hi) = mid;
+      }
+      vp = lo;
+    }
+  }
+  s.vpeak = vp;
+  s.t_acc = up(vp);
+  s.t_dec = down(vp);
+  const double rest = s.length - used(vp);
+  s.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
+}
+
+void Builder::totals() {
+  double t = 0;
+  size_t pause = 0;
+  // Pauses sit before the first segment of their block.
+  std::vector<size_t> first_seg(tl.blocks.size() + 1, lean.size());
+  for (size_t i = lean.size(); i-- > 0;) first_seg[static_cast<size_t>(lean[i].block)] = i;
+  for (size_t b = tl.blocks.size(); b-- > 0;) first_seg[b] = std::min(first_seg[b], first_seg[b + 1]);
+  plan.pause_start_s.assign(tl.pauses.size(), 0);
+  // One pass over the segments, in order: the times, per block what held
+  // it below its programmed feed (the limit of its fastest segment), and
+  // the mean feed ratio over the cutting moves: the length cut over the
+  // length the programmed feeds would have cut in the same time (so each
+  // stretch of path counts by its length, blends with their block). A
+  // cutting segment's block is a cutting block, whose programmed feed
+  // add_block() took from the block as it is.
+  std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
+  std::vector<double> top(plan.blocks.size(), 0);
+  double cut = 0, at_feed = 0;
+  for (size_t i = 0; i <= lean.size(); ++i) {
+    while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, tl.blocks.size())] <= i) {
+      plan.pause_start_s[pause] = t;
+      t += tl.pauses[pause].seconds;
+      plan.pause_time_s += tl.pauses[pause].seconds;
+      ++pause;
+    }
+    if (i == lean.size()) break;
+    const Lean& s = lean[i];
+    if (!summary) segs[i].t_start = t;
+    t += s.time();
+    (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += s.time();
+    const size_t b = static_cast<size_t>(s.block);
+    PlannedBlock& pb = plan.blocks[b];
+    pb.time_s += s.time();
+    pb.peak_feed = std::max(pb.peak_feed, s.vpeak * 60);
+    SpeedLimit l = s.limit;
+    if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
+    if (s.vmax >= top[b]) {
+      top[b] = s.vmax;
+      why[b] = l;
+    }
+    if (s.rapid) continue;
+    const double want = pb.programmed_feed / 60;
+    if (!(want > 0)) continue;
+    cut += s.length;
+    at_feed += s.time() * want;
+  }
+  while (pause < tl.pauses.size()) {
+    plan.pause_start_s[pause] = t;
+    t += tl.pauses[pause].seconds;
+    plan.pause_time_s += tl.pauses[pause].seconds;
+    ++pause;
+  }
+  plan.cycle_time_s = t;
+  plan.mean_feed_ratio = at_feed > 0 ? cut / at_feed : 1;
+  // Per block (add_block() gave a cutting block its programmed feed, a
+  // rapid the axes' rate along it).
+  for (size_t b = 0; b < plan.blocks.size(); ++b) {
+    PlannedBlock& pb = plan.blocks[b];
+    const bool rapid = pb.kind == BlockKind::rapid;
+    if (pb.length <= 1e-9) {
+      if (rapid) pb.programmed_feed = 0;
+      continue;  // no move: no time, no limit
+    }
+    const double want = pb.programmed_feed;
+    if (want > 0) plan.programmed_feed_time_s += pb.length / want * 60;
+    if (pb.clamped) ++plan.clamped_blocks;
+    if (pb.peak_feed < want * (1 - 1e-6)) {
+      pb.limit = why[b];
+      if (pb.limit == SpeedLimit::programmed) pb.limit = SpeedLimit::acceleration;
+    }
+    pb.starved = pb.peak_feed < want * 0.99 && is_starvation(pb.limit);
+    if (pb.starved) ++plan.starved_blocks;
+  }
+}
+
+}  // namespace bezcam::planner_detail
