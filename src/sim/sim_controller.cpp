@@ -37,12 +37,6 @@ std::int32_t thousandths(double v) {
   return static_cast<std::int32_t>(std::clamp(t, -2147483648.0, 2147483647.0));
 }
 
-std::string hex32(std::uint32_t v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "%08X", v);
-  return b;
-}
-
 }  // namespace
 
 struct SimController::Pending {
