@@ -165,35 +165,49 @@ class Sender {
             " bytes had been acknowledged; check the machine, then stream the program again from the start");
   }
 
-  void open() {
-    const auto total = static_cast<std::uint32_t>(prog_.size());
-    const auto cmd = encode_command(Command::open, std::array<std::uint32_t, 2>{token_, total});
+  // Sends a repeatable command (OPEN with this sender's token, COMMIT)
+  // until the controller answers it. A refusal goes to `on_refusal`, which
+  // reads the status and throws why (losing the connection there counts as
+  // a loss); after a lost connection `on_loss` reconnects and says whether
+  // the state shows the command got through (true) or it is sent again.
+  template <class OnRefusal, class OnLoss>
+  void repeat_command(const std::vector<std::uint16_t>& cmd, OnRefusal on_refusal, OnLoss on_loss) {
     for (;;) {
       try {
         st_ = write_read(reg::command, cmd);
-        break;
+        return;
       } catch (const ModbusException& e) {
         try {
-          st_ = read_status();
+          on_refusal(e);
         } catch (const IoError& io) {
-          reconnect_raw(io.message());
-          continue;  // ask again
+          if (on_loss(io.message())) return;
         }
-        if (st_.last_reject == Reject::busy)
-          throw ControllerError(errc::link_busy, peer_,
-                                "the controller is busy with another sender's program (session " + hex32(st_.session) +
-                                    ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
-                                    std::to_string(st_.total_bytes) +
-                                    " bytes received); try again when it is done, or abort it there");
-        throw ControllerError(errc::link_refused, peer_,
-                              "the controller refused to open a transfer (Modbus exception " +
-                                  std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
-                                  describe(st_.last_reject) + ")");
       } catch (const IoError& e) {
-        // OPEN is repeatable with the same token: reconnect and ask again.
-        reconnect_raw(e.message());
+        if (on_loss(e.message())) return;
       }
     }
+  }
+
+  void open() {
+    const auto total = static_cast<std::uint32_t>(prog_.size());
+    const auto cmd = encode_command(Command::open, std::array<std::uint32_t, 2>{token_, total});
+    const auto refusal = [&](const ModbusException& e) {
+      st_ = read_status();
+      if (st_.last_reject == Reject::busy)
+        throw ControllerError(errc::link_busy, peer_,
+                              "the controller is busy with another sender's program (session " + hex32(st_.session) +
+                                  ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
+                                  std::to_string(st_.total_bytes) +
+                                  " bytes received); try again when it is done, or abort it there");
+      throw ControllerError(errc::link_refused, peer_,
+                            "the controller refused to open a transfer (Modbus exception " + std::to_string(e.code()) +
+                                ", reason " + to_string(st_.last_reject) + ": " + describe(st_.last_reject) + ")");
+    };
+    // OPEN is repeatable with the same token: reconnect and ask again.
+    repeat_command(cmd, refusal, [&](const std::string& why) {
+      reconnect_raw(why);
+      return false;
+    });
     session_ = st_.session;
     event("transfer opened: session " + hex32(session_) + ", controller buffer " +
           std::to_string(st_.buffer_capacity) + " bytes");
@@ -326,25 +340,17 @@ class Sender {
   void commit() {
     const auto cmd = encode_command(
         Command::commit, std::array<std::uint32_t, 4>{token_, session_, static_cast<std::uint32_t>(prog_.size()), crc_});
-    for (;;) {
-      try {
-        st_ = write_read(reg::command, cmd);
-        break;
-      } catch (const ModbusException& e) {
-        try {
-          refused(e, "COMMIT (length and CRC-32 check)");
-        } catch (const IoError& io) {
-          reconnect(io.message());
-          if (st_.state == State::finishing || st_.state == State::done) break;
-        }
-      } catch (const IoError& e) {
-        reconnect(e.message());
-        if (st_.state == State::finishing || st_.state == State::done) break;  // it got through
-        if (st_.ack_bytes != prog_.size())
-          throw ControllerError(errc::link_ack, peer_, "after reconnecting before COMMIT the controller reports " +
-                                                           position() + "; the program may be corrupted");
-      }
-    }
+    repeat_command(
+        cmd, [&](const ModbusException& e) { refused(e, "COMMIT (length and CRC-32 check)"); },
+        [&](const std::string& why) {
+          reconnect(why);
+          if (st_.state == State::finishing || st_.state == State::done) return true;  // it got through
+          if (st_.ack_bytes != prog_.size())
+            throw ControllerError(errc::link_ack, peer_,
+                                  "after reconnecting before COMMIT the controller reports " + position() +
+                                      "; the program may be corrupted");
+          return false;
+        });
     event("controller confirmed length " + std::to_string(prog_.size()) + " bytes and CRC-32 " + hex32(crc_));
     report();
   }
