@@ -132,12 +132,14 @@ class Sender {
 
   [[noreturn]] void alarm_error() {
     std::string text = read_alarm_text();
-    std::string where = st_.alarm_line > 0 ? "line " + std::to_string(st_.alarm_line) : peer_;
-    // The controller's text starts with "line N: "; the place is given separately.
+    // The line travels as a number (register alarm_line); the text, for
+    // people, starts with "line N: " (docs/modbus-register-map.md), which
+    // the place already says.
     if (const std::string prefix = "line " + std::to_string(st_.alarm_line) + ": ";
         st_.alarm_line > 0 && text.rfind(prefix, 0) == 0)
       text.erase(0, prefix.size());
-    throw ControllerError(errc::controller_alarm, where,
+    throw ControllerError(errc::controller_alarm,
+                          st_.alarm_line > 0 ? Place::at_line(st_.alarm_line) : Place::at_file(peer_),
                           std::string("the controller stopped with alarm ") + to_string(st_.alarm) + " (" +
                               std::to_string(static_cast<int>(st_.alarm)) + "): " +
                               (text.empty() ? "no message" : text) + "; " + position());
