@@ -546,7 +546,7 @@ std::vector<MotionBlock> GcodeInterpreter::finish() {
 }
 
 std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile* profile) {
-  if (const auto f = too_large(text)) throw InputError(f->id, "line 1", f->message);
+  if (const auto f = too_large(text)) throw InputError(f->id, Place::at_line(1), f->message);
   GcodeInterpreter in(profile);
   std::vector<MotionBlock> out;
   int no = 0;

@@ -92,11 +92,11 @@ class Sender {
 
   void check_identity() {
     if (st_.magic != kMagic)
-      throw IoError(errc::link_protocol, peer_,
+      throw IoError(errc::link_protocol, Place::at_file(peer_),
                     "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(st_.magic) +
                         ", expected 0000425A); check the address");
     if (st_.version != kProtocolVersion)
-      throw ControllerError(errc::link_version, peer_,
+      throw ControllerError(errc::link_version, Place::at_file(peer_),
                             "the controller speaks protocol version " + std::to_string(st_.version) +
                                 ", this sender version " + std::to_string(kProtocolVersion) + "; update one of them");
   }
@@ -150,7 +150,7 @@ class Sender {
     st_ = read_status();
     if (st_.state == State::alarm) alarm_error();
     if (st_.session != session_) restarted();
-    throw ControllerError(errc::link_refused, peer_,
+    throw ControllerError(errc::link_refused, Place::at_file(peer_),
                           std::string("the controller refused ") + doing + " (Modbus exception " +
                               std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
                               describe(st_.last_reject) + "); " + position());
@@ -158,7 +158,7 @@ class Sender {
 
   [[noreturn]] void restarted() {
     throw ControllerError(
-        errc::link_restarted, peer_,
+        errc::link_restarted, Place::at_file(peer_),
         "the controller no longer holds this transfer: session " + hex32(session_) + " was expected, it reports " +
             (st_.session == 0 ? std::string("no session") : "session " + hex32(st_.session)) + " in state " +
             to_string(st_.state) +
@@ -196,12 +196,12 @@ class Sender {
     const auto refusal = [&](const ModbusException& e) {
       st_ = read_status();
       if (st_.last_reject == Reject::busy)
-        throw ControllerError(errc::link_busy, peer_,
+        throw ControllerError(errc::link_busy, Place::at_file(peer_),
                               "the controller is busy with another sender's program (session " + hex32(st_.session) +
                                   ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
                                   std::to_string(st_.total_bytes) +
                                   " bytes received); try again when it is done, or abort it there");
-      throw ControllerError(errc::link_refused, peer_,
+      throw ControllerError(errc::link_refused, Place::at_file(peer_),
                             "the controller refused to open a transfer (Modbus exception " + std::to_string(e.code()) +
                                 ", reason " + to_string(st_.last_reject) + ": " + describe(st_.last_reject) + ")");
     };
@@ -215,7 +215,7 @@ class Sender {
           std::to_string(st_.buffer_capacity) + " bytes");
     max_chunk_ = std::min<std::uint16_t>(st_.max_chunk, kMaxChunkBytes);
     if (opt_.chunk_bytes > 0) max_chunk_ = std::min(max_chunk_, opt_.chunk_bytes);
-    if (max_chunk_ == 0) throw ControllerError(errc::link_protocol, peer_, "the controller announces chunks of 0 bytes");
+    if (max_chunk_ == 0) throw ControllerError(errc::link_protocol, Place::at_file(peer_), "the controller announces chunks of 0 bytes");
     mark_progress();
     report();
   }
@@ -236,7 +236,7 @@ class Sender {
       return;
     }
     if (Clock::now() - progress_time_ > opt_.stall_timeout)
-      throw ControllerError(errc::link_stalled, peer_,
+      throw ControllerError(errc::link_stalled, Place::at_file(peer_),
                             "the controller took no byte and executed no line for " +
                                 fmt_num(std::chrono::duration<double>(opt_.stall_timeout).count()) + " s (state " +
                                 to_string(st_.state) + "); " + position());
@@ -264,7 +264,7 @@ class Sender {
       } catch (const std::exception&) {
       }
     }
-    throw ControllerError(errc::link_cancelled, peer_,
+    throw ControllerError(errc::link_cancelled, Place::at_file(peer_),
                           "interrupted: " + sent_abort + "; " + position() + ", controller " + to_string(st_.state) +
                               (st_.state == State::alarm ? std::string(" (") + to_string(st_.alarm) + ")" : ""));
   }
@@ -304,7 +304,7 @@ class Sender {
         // The acknowledgement must account for exactly this chunk; anything
         // else means the two sides disagree about the program.
         if (st_.ack_seq != seq + 1 || st_.ack_bytes != sent + n)
-          throw ControllerError(errc::link_ack, peer_,
+          throw ControllerError(errc::link_ack, Place::at_file(peer_),
                                 "chunk " + std::to_string(seq + 1) + " was acknowledged as sequence " +
                                     std::to_string(st_.ack_seq) + " at byte " + std::to_string(st_.ack_bytes) +
                                     ", expected byte " + std::to_string(sent + n) + "; the program may be corrupted");
@@ -348,7 +348,7 @@ class Sender {
           reconnect(why);
           if (st_.state == State::finishing || st_.state == State::done) return true;  // it got through
           if (st_.ack_bytes != prog_.size())
-            throw ControllerError(errc::link_ack, peer_,
+            throw ControllerError(errc::link_ack, Place::at_file(peer_),
                                   "after reconnecting before COMMIT the controller reports " + position() +
                                       "; the program may be corrupted");
           return false;
@@ -387,7 +387,7 @@ class Sender {
     for (int attempt = 1;; ++attempt) {
       check_cancel();
       if (failures_ >= opt_.retries || Clock::now() >= deadline)
-        throw IoError(errc::link_lost, peer_,
+        throw IoError(errc::link_lost, Place::at_file(peer_),
                       "the connection was lost and could not be restored (" + std::to_string(failures_) +
                           " attempts, last: " + why + "); " + std::to_string(acked_high_) + " of " +
                           std::to_string(prog_.size()) +
@@ -419,7 +419,7 @@ class Sender {
       refused(e, "RESUME");
     }
     if (st_.ack_bytes > sent_high_)
-      throw ControllerError(errc::link_ack, peer_, "after reconnecting the controller reports " + position() +
+      throw ControllerError(errc::link_ack, Place::at_file(peer_), "after reconnecting the controller reports " + position() +
                                                        ", more than was sent; the program may be corrupted");
   }
 
@@ -478,7 +478,7 @@ ControllerReport report_of(Transport& c) {
 
 void require_bezcam(const ControllerReport& r, const Endpoint& to) {
   if (r.status.magic != kMagic)
-    throw IoError(errc::link_protocol, to.str(),
+    throw IoError(errc::link_protocol, Place::at_file(to.str()),
                   "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(r.status.magic) +
                       ")");
 }
@@ -504,7 +504,7 @@ ControllerReport abort_controller(const Endpoint& to, std::chrono::milliseconds 
   try {
     c.write_registers(reg::command, cmd);
   } catch (const ModbusException& e) {
-    throw ControllerError(errc::link_refused, to.str(), std::string("the controller refused ABORT: ") + e.what());
+    throw ControllerError(errc::link_refused, Place::at_file(to.str()), std::string("the controller refused ABORT: ") + e.what());
   }
   return report_of(c);
 }
