@@ -45,7 +45,7 @@ MGroup m_group(int c) {
 
 using namespace gcode;
 
-void GcodeInterpreter::Impl::run_modal() {
+void GcodeInterpreter::LineRun::run_modal() {
   // One code per modal group.
   std::array<std::string, kModalGroups> seen_g{};
   int motion = -999;
@@ -231,7 +231,7 @@ void GcodeInterpreter::Impl::run_modal() {
 }
 
 // Every word must mean something on this line.
-void GcodeInterpreter::Impl::check_letters(int active, const std::string& extra, bool explicit_motion, int plane) {
+void GcodeInterpreter::LineRun::check_letters(int active, const std::string& extra, bool explicit_motion, int plane) {
   std::string allowed = "FST";
   switch (active) {
     case 0: case 10: allowed += "XYZ"; break;

@@ -7,13 +7,13 @@
 /// structure): a line is checked completely before it changes the state.
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "bezcam/machine/cutter_comp.hpp"
 #include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/machine/motion.hpp"
 #include "bezcam/gcode/lint.hpp"  // GcodeFinding, lint_gcode()
@@ -130,6 +130,11 @@ class GcodeInterpreter {
   /// With a profile, travel limits and maximum feed are enforced too. The
   /// profile must outlive the interpreter.
   explicit GcodeInterpreter(const MachineProfile* profile = nullptr);
+  ~GcodeInterpreter();
+  GcodeInterpreter(const GcodeInterpreter& other);
+  GcodeInterpreter& operator=(const GcodeInterpreter& other);
+  GcodeInterpreter(GcodeInterpreter&&) noexcept;
+  GcodeInterpreter& operator=(GcodeInterpreter&&) noexcept;
 
   /// Interprets one line (`line_no` is 1-based). Returns the motion blocks
   /// the line completes (a NURBS block completes on the line that ends it).
@@ -139,13 +144,11 @@ class GcodeInterpreter {
   /// End of input: throws if a multi-line block is still open.
   std::vector<MotionBlock> finish();
 
-  const MachineState& state() const { return state_; }
+  const MachineState& state() const;
 
   /// The D registers for cutter compensation (diameters in mm), added to
   /// the profile's tool_diameters_mm (a reader without a profile has none).
-  void set_tool_diameters_mm(const std::map<int, double>& d) {
-    for (const auto& [k, v] : d) tool_diameters_mm_[k] = v;
-  }
+  void set_tool_diameters_mm(const std::map<int, double>& d);
 
   /// What the next line depends on besides state(): the multi-line block
   /// it may be inside and the words earlier lines left for it. Used to
@@ -157,48 +160,14 @@ class GcodeInterpreter {
     int selected_tool = -1;  ///< the last T word (-1: none); M06 puts it in the spindle
     int end_line = 0;        ///< the M02 / M30 line, 0 before it
   };
-  Continuation continuation() const {
-    return {more_.open, more_.open_line, more_.g5_chain, more_.selected_tool, more_.end_line};
-  }
+  Continuation continuation() const;
 
  private:
-  struct Impl;  // the interpretation of one line (src/gcode/interpreter_impl.hpp)
+  struct Impl;     // what the reader keeps between lines (src/gcode/interpreter_impl.hpp)
+  struct LineRun;  // the interpretation of one line (src/gcode/interpreter_impl.hpp)
   friend std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile& profile);
 
-  // Everything beyond MachineState that later lines depend on. A line is
-  // interpreted on copies of state_ and more_, committed only when accepted.
-  struct More {
-    ModalMotion open = ModalMotion::none;  // open multi-line block: none, a Fanuc one, G5.2
-    int open_line = 0;     // where it started
-    int order = 0;         // its rank / order
-    double open_feed = 0;  // the feed it runs at
-    std::vector<Vec3> ctrl;
-    std::vector<double> weights, knots;  // Fanuc knots; NaN where lint recovered a missing K
-    std::vector<int> knot_lines;
-    int knot_only = 0;       // Fanuc: knot-only blocks so far
-    int knot_only_line = 0;  // the first of them
-    int nurbs_mode_line = 0; // where the Fanuc NURBS mode was entered
-    int selected_tool = -1;  // last T word (-1: none)
-    bool g5_chain = false;   // the previous motion was a G5: I and J may be left out
-    Vec3 g5_next_ij;         // ... and then default to minus its P and Q
-    bool moved = false;      // a move has been made (units may no longer change)
-    bool distance_set = false, plane_set = false;
-    int end_line = 0;        // M02 / M30 seen there
-    long last_n = -1;        // last N word
-    int last_line = 0;       // last line fed
-    // Lint-only bookkeeping: findings already reported once.
-    bool noted_modes = false, noted_position = false, noted_spindle = false;
-    double feed_reported = -1;  // the excessive feed last reported
-    CutterComp comp;            // G41/G42: the tool-centre path, one move behind
-  };
-
-  const MachineProfile* profile_;
-  std::map<int, double> tool_diameters_mm_;
-  MachineState state_;
-  More more_;
-  // lint_gcode(): recoverable problems are recorded here (and the line goes
-  // on with the values as given) instead of thrown.
-  std::vector<GcodeFinding>* findings_ = nullptr;
+  std::unique_ptr<Impl> impl_;
 };
 
 /// Reads a whole program; throws at the first error (InputError, "line N").
