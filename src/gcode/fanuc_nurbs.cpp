@@ -151,7 +151,7 @@ void GcodeInterpreter::LineRun::fanuc_start(int code) {
       const double slack = 1e-12 * std::max(1.0, std::abs(st.pos[a]));
       if (std::abs(v - st.pos[a]) > slack)
         soft(errc::gcode_nurbs_start, w->text + ": the first control point of a NURBS block must be the current position (" +
-                                          (st.absolute ? axis_name(a) + " = " + fmt_num(st.pos[a])
+                                          (st.distance == DistanceMode::absolute ? axis_name(a) + " = " + fmt_num(st.pos[a])
                                                        : "in G91 (incremental distances): " + axis_name(a) + "0") +
                                           ")");
     }

@@ -42,6 +42,9 @@ inline std::string g_text(int code10) {
   return "G" + std::to_string(code10 / 10) + (code10 % 10 ? "." + std::to_string(code10 % 10) : "");
 }
 
+/// The plane a G17 / G18 / G19 code (x 10) selects.
+inline Plane plane_of(int code10) { return code10 == 170 ? Plane::xy : code10 == 180 ? Plane::zx : Plane::yz; }
+
 inline bool is_fanuc(int c) { return c == 62 || c == 63; }
 inline bool is_cutting(BlockKind k) { return k != BlockKind::rapid; }
 
@@ -197,9 +200,9 @@ struct GcodeInterpreter::LineRun {
   void run_modal();
   // Every word must mean something on this line.
   // `extra`: letters the line's non-motion codes take (G04 P, G43 H, G28 XYZ).
-  /// `plane`: the plane the line's arc is in (17, 18, 19; the line's own
-  /// G17/G18/G19 if it has one).
-  void check_letters(int active, const std::string& extra, bool explicit_motion, int plane);
+  /// `plane`: the plane the line's arc is in (the line's own G17/G18/G19
+  /// if it has one).
+  void check_letters(int active, const std::string& extra, bool explicit_motion, Plane plane);
 
   // ---- Fanuc G06.2 / G06.3 blocks (fanuc_nurbs.cpp)
   // Lines inside an open multi-line block. Returns true when consumed.

@@ -49,7 +49,7 @@ void GcodeInterpreter::LineRun::run_modal() {
   // One code per modal group.
   std::array<std::string, kModalGroups> seen_g{};
   int motion = -999;
-  int line_plane = 0;  // the G17/G18/G19 of this line, 0 for none
+  std::optional<Plane> line_plane;  // the G17/G18/G19 of this line
   int home = 0;  // G28 280, G30 300: to a reference point
   bool dwell = false, machine_coords = false, length_comp = false, blend = false, comp_d = false;
   int comp = 0;  // G40 400, G41 410, G42 420
@@ -69,8 +69,8 @@ void GcodeInterpreter::LineRun::run_modal() {
     }
     switch (c) {
       case 170: case 180: case 190:
-        line_plane = c / 10;
-        if (c != 170 && st.cutter_comp != 40)
+        line_plane = plane_of(c);
+        if (c != 170 && st.cutter_comp != CutterCompMode::off)
           fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "ZX" : "YZ") +
                                       " plane while cutter radius compensation is on: it compensates in G17 (XY) only; "
                                       "cancel it with G40 first");
@@ -126,7 +126,7 @@ void GcodeInterpreter::LineRun::run_modal() {
   if (home) extra += "XYZ";
   if (length_comp) extra += "H";
   if (comp_d) extra += "D";
-  check_letters(active, extra, motion != -999, line_plane ? line_plane : st.plane);
+  check_letters(active, extra, motion != -999, line_plane ? *line_plane : st.plane);
 
   // Execution order (RS274/NGC): F, S, T, M06, spindle, coolant, dwell,
   // plane, units, distance modes, motion, program end.
@@ -167,9 +167,9 @@ void GcodeInterpreter::LineRun::run_modal() {
   for (const auto& [c, t] : ln.g) {
     if (c == 610 || c == 611) {
       st.path_tolerance = 0;
-      st.path_mode = c == 611 ? 611 : 61;
+      st.path_mode = c == 611 ? PathMode::exact_path : PathMode::exact_stop;
     } else if (c == 640) {
-      st.path_mode = 64;
+      st.path_mode = PathMode::blend;
       // G64 P- (LinuxCNC): corners blended within P; without P, as fast as
       // the planner can (no tolerance). Q (naive-CAM merging) is accepted
       // and not modelled.
@@ -177,7 +177,7 @@ void GcodeInterpreter::LineRun::run_modal() {
       if (ln.has('Q') && !(val('Q') >= 0)) fail(errc::gcode_number, "G64's Q (merge tolerance) must be >= 0, found " + txt('Q'));
       st.path_tolerance = ln.has('P') && val('P') > 0 ? val('P') : std::numeric_limits<double>::infinity();
     } else if (c == 170 || c == 180 || c == 190) {
-      st.plane = c / 10;
+      st.plane = plane_of(c);
       mo.plane_set = true;
     } else if (c == 200 || c == 210) {
       const Units u = c == 200 ? Units::inch : Units::mm;
@@ -187,12 +187,12 @@ void GcodeInterpreter::LineRun::run_modal() {
       st.units = u;
       st.units_set = true;
     } else if (c == 900 || c == 910) {
-      st.absolute = c == 900;
+      st.distance = c == 900 ? DistanceMode::absolute : DistanceMode::incremental;
       mo.distance_set = true;
     } else if (c == 901 || c == 911) {
-      st.arc_centers_absolute = c == 901;
+      st.arc_centers = c == 901 ? ArcCenterMode::absolute : ArcCenterMode::incremental;
     } else if (c >= 540 && c <= 590 && c % 10 == 0) {
-      st.coord_system = c / 10;
+      st.coord_system = static_cast<WorkOffset>(c / 10);
     } else if (c == 430) {
       // H defaults to the tool in the spindle, as LinuxCNC does.
       int h = st.tool;
@@ -215,7 +215,7 @@ void GcodeInterpreter::LineRun::run_modal() {
                                       " cannot be used with cutter radius compensation on: cancel it with G40 first");
   // LinuxCNC refuses G53 in G91 ("cannot use G53 incremental"); Fanuc
   // ignores it there. Either way the line would not move as written.
-  if (machine_coords && !st.absolute)
+  if (machine_coords && st.distance != DistanceMode::absolute)
     fail(errc::gcode_incremental, "G53 (machine coordinates) takes absolute coordinates: it cannot be used in G91 "
                                   "(incremental distances); give G90 first");
   if (home) go_home(home);
@@ -224,18 +224,18 @@ void GcodeInterpreter::LineRun::run_modal() {
     if (c == 2 || c == 30) {
       // The end of the program turns compensation off (LinuxCNC, Fanuc).
       comp_off();
-      st.cutter_comp = 40;
+      st.cutter_comp = CutterCompMode::off;
       st.program_end = true;
       mo.end_line = line;
     }
 }
 
 // Every word must mean something on this line.
-void GcodeInterpreter::LineRun::check_letters(int active, const std::string& extra, bool explicit_motion, int plane) {
+void GcodeInterpreter::LineRun::check_letters(int active, const std::string& extra, bool explicit_motion, Plane plane) {
   std::string allowed = "FST";
   switch (active) {
     case 0: case 10: allowed += "XYZ"; break;
-    case 20: case 30: allowed += plane == 17 ? "XYZIJR" : plane == 18 ? "XYZIKR" : "XYZJKR"; break;
+    case 20: case 30: allowed += plane == Plane::xy ? "XYZIJR" : plane == Plane::zx ? "XYZIKR" : "XYZJKR"; break;
     case 50: allowed += "XYIJPQ"; break;
     case 51: allowed += "XYIJ"; break;
     case 52: allowed += "XYPL"; break;
@@ -248,9 +248,9 @@ void GcodeInterpreter::LineRun::check_letters(int active, const std::string& ext
     if (std::string_view("ABCUVW").find(w.letter) != std::string_view::npos)
       fail(errc::gcode_unsupported, "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
     if ((active == 20 || active == 30) && std::string_view("IJK").find(w.letter) != std::string_view::npos) {
-      const char* words = plane == 17 ? "I and J" : plane == 18 ? "I and K" : "J and K";
+      const char* words = plane == Plane::xy ? "I and J" : plane == Plane::zx ? "I and K" : "J and K";
       fail(errc::gcode_arc, w.text + ": " + std::string(1, w.letter) + " is not a centre word in the G" +
-                                std::to_string(plane) + " plane (some controllers refuse even " +
+                                std::to_string(g_number(plane)) + " plane (some controllers refuse even " +
                                 std::string(1, w.letter) + "0): give " + words + " only");
     }
     if (w.letter == 'Z' && (active == 50 || active == 51 || active == 52))

@@ -68,7 +68,7 @@ void GcodeInterpreter::LineRun::save_lists() {
 }
 
 double GcodeInterpreter::LineRun::coordinate(const Word& w, double from) const {
-  if (st.absolute) return w.value;
+  if (st.distance == DistanceMode::absolute) return w.value;
   const double v = from + w.value;
   // Travels that add up beyond a double must not read as infinity.
   if (!std::isfinite(v))
@@ -78,7 +78,7 @@ double GcodeInterpreter::LineRun::coordinate(const Word& w, double from) const {
 }
 
 bool GcodeInterpreter::LineRun::gives_coordinate(int a, const Word& w) const {
-  if (st.absolute || (st.known_axes & (1u << a))) return true;
+  if (st.distance == DistanceMode::absolute || (st.known_axes & (1u << a))) return true;
   // The travel from a position this program never set: the controller
   // knows where it ends, a reader does not. No travel leaves it unknown.
   if (w.value == 0) return false;
@@ -197,7 +197,7 @@ void GcodeInterpreter::LineRun::emit(const MotionBlock& b) {
 void GcodeInterpreter::LineRun::cutter_comp(int code) {
   if (code == 400) {
     comp_off();
-    st.cutter_comp = 40;
+    st.cutter_comp = CutterCompMode::off;
     st.cutter_comp_d = 0;
     st.cutter_comp_radius = 0;
     return;
@@ -206,7 +206,7 @@ void GcodeInterpreter::LineRun::cutter_comp(int code) {
   if (self.profile && !self.profile->cutter_compensation)
     fail(errc::gcode_cutter_comp, g + " (cutter radius compensation): machine \"" + self.profile->name +
                                       "\" has none; the program must describe the tool centre");
-  if (st.plane != 17) fail(errc::gcode_cutter_comp, g + " compensates in the XY plane (G17) only");
+  if (st.plane != Plane::xy) fail(errc::gcode_cutter_comp, g + " compensates in the XY plane (G17) only");
   int d = st.tool;
   if (ln.has('D')) {
     if (val('D') < 0 || val('D') != std::floor(val('D')) || val('D') > 99999)
@@ -233,7 +233,7 @@ void GcodeInterpreter::LineRun::cutter_comp(int code) {
   } else if (mo.comp.active()) {
     fail(errc::gcode_cutter_comp, g + " while cutter compensation is already on: cancel it with G40 first");
   }
-  st.cutter_comp = code / 10;
+  st.cutter_comp = code == 410 ? CutterCompMode::left : CutterCompMode::right;
   st.cutter_comp_d = d;
   st.cutter_comp_radius = radius;
 }
@@ -304,8 +304,8 @@ void GcodeInterpreter::LineRun::motion_line(int code, bool explicit_motion) {
     return;
   }
   if (self.profile && explicit_motion) check_dialect(code);
-  if (code >= 50 && code <= 52 && st.plane != 17)
-    fail(errc::gcode_plane, wt(code) + " moves in the XY plane: select it with G17 first (G" + std::to_string(st.plane) +
+  if (code >= 50 && code <= 52 && st.plane != Plane::xy)
+    fail(errc::gcode_plane, wt(code) + " moves in the XY plane: select it with G17 first (G" + std::to_string(g_number(st.plane)) +
                                 " is in force)");
   switch (code) {
     case 0: case 10: linear(code == 0); break;
@@ -397,17 +397,17 @@ void GcodeInterpreter::LineRun::arc(bool cw) {
   mo.g5_chain = false;
   // In the plane's coordinates (a, b, axis) every plane is G17's: the
   // centre words of a and b, the end words of a and b.
-  const Plane pl = static_cast<Plane>(st.plane - 17);
+  const Plane pl = st.plane;
   const int ia = world_axis(pl, 0), ib = world_axis(pl, 1);
   const char la = "IJK"[ia], lb = "IJK"[ib];
   const std::string words = std::string(1, std::min(la, lb)) + " and " + std::string(1, std::max(la, lb));
-  const std::string g = std::string(cw ? "G02" : "G03") + (pl == Plane::xy ? "" : " (G" + std::to_string(st.plane) + ")");
+  const std::string g = std::string(cw ? "G02" : "G03") + (pl == Plane::xy ? "" : " (G" + std::to_string(g_number(pl)) + ")");
   const bool ij = ln.has(la) || ln.has(lb), r = ln.has('R');
   if (ij && r) fail(errc::gcode_arc, g + ": give either " + words + " (the centre) or R (the radius), not both");
   if (!ij && !r) fail(errc::gcode_arc, g + " needs the centre offsets " + words + " (or a radius R)");
   // G90.1: the centre is a point, both its words needed (LinuxCNC: "I word
   // missing in absolute center arc").
-  if (ij && st.arc_centers_absolute && !(ln.has(la) && ln.has(lb)))
+  if (ij && st.arc_centers == ArcCenterMode::absolute && !(ln.has(la) && ln.has(lb)))
     fail(errc::gcode_arc, g + " in G90.1 (absolute arc centres) needs both " + words + ": the centre's coordinates");
   require_known(g, (1u << ia) | (1u << ib));
   require_feed(g);
@@ -415,7 +415,7 @@ void GcodeInterpreter::LineRun::arc(bool cw) {
   const Vec3 from = st.pos;
   const Vec3 lf = to_plane(from, pl), lt = to_plane(to, pl);
   Vec3 c = lf;  // the centre, in plane coordinates
-  if (ij && st.arc_centers_absolute) {
+  if (ij && st.arc_centers == ArcCenterMode::absolute) {
     c.x = val(la);
     c.y = val(lb);
   } else if (ij) {
@@ -441,7 +441,7 @@ void GcodeInterpreter::LineRun::arc(bool cw) {
   const double r0 = std::hypot(lf.x - c.x, lf.y - c.y), r1 = std::hypot(lt.x - c.x, lt.y - c.y);
   if (r0 == 0)
     fail(errc::gcode_arc, g + ": the centre coincides with the start point (" + words +
-                              (st.arc_centers_absolute ? " name the start point in G90.1)" : " are both 0)"));
+                              (st.arc_centers == ArcCenterMode::absolute ? " name the start point in G90.1)" : " are both 0)"));
   const double tol = arc_tolerance();
   const double slack = 1e-12 * std::max({1.0, max_abs(from), max_abs(to), max_abs(c)});
   if (std::abs(r0 - r1) > tol + slack)
@@ -522,7 +522,7 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
     }
     if (comp_error) {
       d.more.comp = CutterComp{};
-      d.state.cutter_comp = 40;
+      d.state.cutter_comp = CutterCompMode::off;
       d.state.cutter_comp_d = 0;
       d.state.cutter_comp_radius = 0;
     }

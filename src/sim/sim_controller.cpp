@@ -203,7 +203,7 @@ Status SimController::status_locked(ConnId c) const {
   s.spindle_rpm = static_cast<std::uint32_t>(std::clamp(std::round(m.spindle_rpm), 0.0, 4294967295.0));
   s.flags = static_cast<std::uint16_t>((m.spindle_on ? flag::spindle_on : 0) |
                                        (m.units == Units::inch ? flag::inch : 0) |
-                                       (m.absolute ? 0 : flag::incremental) |
+                                       (m.distance == DistanceMode::absolute ? 0 : flag::incremental) |
                                        (m.program_end ? flag::program_end : 0) |
                                        (owner_ != 0 ? flag::owner_attached : 0));
   s.tool = static_cast<std::uint16_t>(std::clamp(m.tool, 0, 65535));

@@ -159,7 +159,7 @@ void SimController::read_ahead_locked(const GcodeInterpreter& interp, std::uint6
   const auto cont = interp.continuation();
   long settled = no;
   if (cont.open_block != ModalMotion::none) settled = cont.open_line - 1;
-  else if (interp.state().cutter_comp != 40) settled = last_block_line_ - 1;
+  else if (interp.state().cutter_comp != CutterCompMode::off) settled = last_block_line_ - 1;
   settled_ = std::max(settled_, settled);
   ahead_.push_back({no, true, interp.state(), std::move(text)});
 }
