@@ -197,7 +197,25 @@ struct GcodeInterpreter::LineRun {
   void abandon_block();
 
   // ---- modal groups and non-motion words (modal_state.cpp)
+  // What a line's G codes ask.
+  struct Codes {
+    int motion = -999;           // the motion code (group 1) x 10, -999 for none
+    std::optional<Plane> plane;  // the line's own G17 / G18 / G19
+    int home = 0;                // G28 280, G30 300: to a reference point
+    int comp = 0;                // G40 400, G41 410, G42 420
+    bool dwell = false, machine_coords = false, length_comp = false, blend = false, comp_d = false;
+  };
   void run_modal();
+  Codes gather_codes();
+  // The motion the line's words belong to: -999 none, -1 G80, else its code.
+  int active_motion(const Codes& k) const;
+  void check_combinations(const Codes& k, int active);
+  void set_feed_speed_tool();
+  void run_m_codes();
+  void dwell();
+  void set_mode(int code, const std::string& text);
+  void blend();
+  void tool_length_on();
   // Every word must mean something on this line.
   // `extra`: letters the line's non-motion codes take (G04 P, G43 H, G28 XYZ).
   /// `plane`: the plane the line's arc is in (the line's own G17/G18/G19
