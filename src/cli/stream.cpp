@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -284,11 +283,9 @@ std::string where_to_resume(const std::string& file_text, const Endpoint& to) {
 // sent; `more` is added to the message.
 [[noreturn]] void throw_in_file_lines(const Error& e, const std::string& more) {
   const std::string message = more.empty() ? e.message() : e.message() + "; " + more;
-  if (resume.plan() && e.id() == errc::controller_alarm && e.where().rfind("line ", 0) == 0) {
-    const long line = std::atol(e.where().c_str() + 5);
-    if (line > 0) throw ControllerError(e.id(), resume.place_of(line), message);
-  }
-  if (!more.empty()) throw ControllerError(e.id(), e.where(), message);
+  if (const auto& line = e.place().line; resume.plan() && e.id() == errc::controller_alarm && line && *line > 0)
+    throw ControllerError(e.id(), resume.place_of(static_cast<long>(*line)), message);
+  if (!more.empty()) throw ControllerError(e.id(), e.place(), message);
   throw;  // called inside the handler: the error as caught
 }
 

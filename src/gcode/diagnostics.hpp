@@ -14,7 +14,7 @@ struct Diagnostics {
   int line = 0;                                   // 1-based line being read
   std::vector<GcodeFinding>* findings = nullptr;  // set under lint_gcode()
 
-  /// Refuses the line: throws InputError(id, "line N", msg).
+  /// Refuses the line: throws InputError(id, Place::at_line(line), msg).
   [[noreturn]] void fail(ErrorId id, const std::string& msg) const;
   /// A problem the line can go on from: thrown by the reader, recorded by
   /// lint (at line `at` when nonzero).

@@ -13,7 +13,7 @@ namespace bezcam {
 
 using namespace gcode;
 
-bool GcodeInterpreter::Impl::continue_block() {
+bool GcodeInterpreter::LineRun::continue_block() {
   if (mo.open == ModalMotion::nurbs_g5_2) return continue_g52();
   // Fanuc: "K- [X- Y- Z- R-]" until the P-th knot-only block.
   const bool only_block_words = ln.g.empty() && ln.m.empty() &&
@@ -58,7 +58,7 @@ bool GcodeInterpreter::Impl::continue_block() {
   return true;
 }
 
-void GcodeInterpreter::Impl::add_knot(const Word& k, bool knot_only) {
+void GcodeInterpreter::LineRun::add_knot(const Word& k, bool knot_only) {
   const double v = k.value;
   const int rank = mo.order;
   size_t prev = mo.knots.size();
@@ -108,7 +108,7 @@ void GcodeInterpreter::Impl::add_knot(const Word& k, bool knot_only) {
   mo.knot_lines.push_back(line);
 }
 
-void GcodeInterpreter::Impl::complete_fanuc() {
+void GcodeInterpreter::LineRun::complete_fanuc() {
   if (mo.ctrl.size() < static_cast<size_t>(mo.order)) {
     const std::string msg = "the NURBS block opened at line " + std::to_string(mo.open_line) + " has " +
                             std::to_string(mo.ctrl.size()) + " control points; a block of rank P" +
@@ -123,11 +123,11 @@ void GcodeInterpreter::Impl::complete_fanuc() {
   clear_block();
 }
 
-void GcodeInterpreter::Impl::fanuc_start(int code) {
+void GcodeInterpreter::LineRun::fanuc_start(int code) {
   st.motion = static_cast<ModalMotion>(code);  // 62 or 63
   mo.g5_chain = false;
   mo.nurbs_mode_line = line;
-  const int max = self.profile_ ? self.profile_->nurbs_max_rank : 4;
+  const int max = self.profile ? self.profile->nurbs_max_rank : 4;
   int rank = 4;
   if (ln.has('P')) {
     const double P = val('P');
@@ -151,7 +151,7 @@ void GcodeInterpreter::Impl::fanuc_start(int code) {
       const double slack = 1e-12 * std::max(1.0, std::abs(st.pos[a]));
       if (std::abs(v - st.pos[a]) > slack)
         soft(errc::gcode_nurbs_start, w->text + ": the first control point of a NURBS block must be the current position (" +
-                                          (st.absolute ? axis_name(a) + " = " + fmt_num(st.pos[a])
+                                          (st.distance == DistanceMode::absolute ? axis_name(a) + " = " + fmt_num(st.pos[a])
                                                        : "in G91 (incremental distances): " + axis_name(a) + "0") +
                                           ")");
     }

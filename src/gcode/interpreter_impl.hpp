@@ -1,8 +1,9 @@
 #pragma once
-// The interpretation of one G-code line (GcodeInterpreter::Impl), private
-// to src/gcode. A line is lexed into words (lexer.hpp), checked completely
-// on copies of the modal state and only then committed by feed_line().
-// Its parts live in one file per concept:
+// The reader's private parts, private to src/gcode: what it keeps between
+// lines (GcodeInterpreter::Impl) and the interpretation of one line
+// (GcodeInterpreter::LineRun). A line is lexed into words (lexer.hpp),
+// checked completely on copies of the state and only then committed by
+// feed_line(). The interpretation lives in one file per concept:
 //   reader.cpp           the line's order, plain motions (G00-G03), the
 //                        multi-line block machinery, feed_line(), read_gcode()
 //   modal_state.cpp      modal groups, the non-motion words (F S T M G17 G21 ...)
@@ -11,6 +12,7 @@
 //   lint.cpp             lint_gcode() and the checks only lint makes
 #include <array>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +21,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/reader.hpp"
+#include "bezcam/machine/cutter_comp.hpp"
 #include "diagnostics.hpp"
 #include "lexer.hpp"
 
@@ -39,6 +42,9 @@ inline std::string g_text(int code10) {
   return "G" + std::to_string(code10 / 10) + (code10 % 10 ? "." + std::to_string(code10 % 10) : "");
 }
 
+/// The plane a G17 / G18 / G19 code (x 10) selects.
+inline Plane plane_of(int code10) { return code10 == 170 ? Plane::xy : code10 == 180 ? Plane::zx : Plane::yz; }
+
 inline bool is_fanuc(int c) { return c == 62 || c == 63; }
 inline bool is_cutting(BlockKind k) { return k != BlockKind::rapid; }
 
@@ -53,10 +59,49 @@ std::optional<GcodeFinding> too_large(size_t bytes);
 
 }  // namespace gcode
 
+// Everything the reader keeps between lines.
 struct GcodeInterpreter::Impl {
-  const GcodeInterpreter& self;
+  // Everything beyond MachineState that later lines depend on. A line is
+  // interpreted on copies of `state` and `more`, committed only when accepted.
+  struct More {
+    ModalMotion open = ModalMotion::none;  // open multi-line block: none, a Fanuc one, G5.2
+    int open_line = 0;     // where it started
+    int order = 0;         // its rank / order
+    double open_feed = 0;  // the feed it runs at
+    std::vector<Vec3> ctrl;
+    std::vector<double> weights, knots;  // Fanuc knots; NaN where lint recovered a missing K
+    std::vector<int> knot_lines;
+    int knot_only = 0;       // Fanuc: knot-only blocks so far
+    int knot_only_line = 0;  // the first of them
+    int nurbs_mode_line = 0; // where the Fanuc NURBS mode was entered
+    int selected_tool = -1;  // last T word (-1: none)
+    bool g5_chain = false;   // the previous motion was a G5: I and J may be left out
+    Vec3 g5_next_ij;         // ... and then default to minus its P and Q
+    bool moved = false;      // a move has been made (units may no longer change)
+    bool distance_set = false, plane_set = false;
+    int end_line = 0;        // M02 / M30 seen there
+    long last_n = -1;        // last N word
+    int last_line = 0;       // last line fed
+    // Lint-only bookkeeping: findings already reported once.
+    bool noted_modes = false, noted_position = false, noted_spindle = false;
+    double feed_reported = -1;  // the excessive feed last reported
+    CutterComp comp;            // G41/G42: the tool-centre path, one move behind
+  };
+
+  const MachineProfile* profile = nullptr;
+  std::map<int, double> tool_diameters_mm;
+  MachineState state;
+  More more;
+  // lint_gcode(): recoverable problems are recorded here (and the line goes
+  // on with the values as given) instead of thrown.
+  std::vector<GcodeFinding>* findings = nullptr;
+};
+
+// The interpretation of one line, on copies of the reader's state.
+struct GcodeInterpreter::LineRun {
+  const Impl& self;
   MachineState st;
-  More mo;
+  Impl::More mo;
   int line;
   std::vector<MotionBlock> out;
   gcode::Line ln;
@@ -73,18 +118,18 @@ struct GcodeInterpreter::Impl {
   Lists saved{};
 
   // ---- errors: through gcode::Diagnostics (diagnostics.cpp)
-  gcode::Diagnostics diag() const { return {line, self.findings_}; }
+  gcode::Diagnostics diag() const { return {line, self.findings}; }
   [[noreturn]] void fail(ErrorId id, const std::string& msg) const { diag().fail(id, msg); }
   void soft(ErrorId id, const std::string& msg, int at = 0) const { diag().soft(id, msg, at); }
   void note(ErrorId id, const std::string& msg, int at = 0) const { diag().note(id, msg, at); }
-  bool lint() const { return self.findings_ != nullptr; }
+  bool lint() const { return self.findings != nullptr; }
 
   // ---- words and units
   // A motion code for messages: as written on this line, else canonical.
   std::string wt(int code) const { return word.empty() ? gcode::g_text(code) : word; }
   const char* unit() const { return st.units == Units::mm ? "mm" : "inch"; }
   double from_mm(double v) const { return v / mm_per_unit(st.units); }
-  std::string machine() const { return self.profile_ ? " of machine \"" + self.profile_->name + "\"" : ""; }
+  std::string machine() const { return self.profile ? " of machine \"" + self.profile->name + "\"" : ""; }
   double val(char c) const { return ln.get(c)->value; }
   std::string txt(char c) const { return ln.get(c)->text; }
 
@@ -152,12 +197,30 @@ struct GcodeInterpreter::Impl {
   void abandon_block();
 
   // ---- modal groups and non-motion words (modal_state.cpp)
+  // What a line's G codes ask.
+  struct Codes {
+    int motion = -999;           // the motion code (group 1) x 10, -999 for none
+    std::optional<Plane> plane;  // the line's own G17 / G18 / G19
+    int home = 0;                // G28 280, G30 300: to a reference point
+    int comp = 0;                // G40 400, G41 410, G42 420
+    bool dwell = false, machine_coords = false, length_comp = false, blend = false, comp_d = false;
+  };
   void run_modal();
+  Codes gather_codes();
+  // The motion the line's words belong to: -999 none, -1 G80, else its code.
+  int active_motion(const Codes& k) const;
+  void check_combinations(const Codes& k, int active);
+  void set_feed_speed_tool();
+  void run_m_codes();
+  void dwell();
+  void set_mode(int code, const std::string& text);
+  void blend();
+  void tool_length_on();
   // Every word must mean something on this line.
   // `extra`: letters the line's non-motion codes take (G04 P, G43 H, G28 XYZ).
-  /// `plane`: the plane the line's arc is in (17, 18, 19; the line's own
-  /// G17/G18/G19 if it has one).
-  void check_letters(int active, const std::string& extra, bool explicit_motion, int plane);
+  /// `plane`: the plane the line's arc is in (the line's own G17/G18/G19
+  /// if it has one).
+  void check_letters(int active, const std::string& extra, bool explicit_motion, Plane plane);
 
   // ---- Fanuc G06.2 / G06.3 blocks (fanuc_nurbs.cpp)
   // Lines inside an open multi-line block. Returns true when consumed.

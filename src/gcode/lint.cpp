@@ -13,7 +13,7 @@ namespace bezcam {
 
 using namespace gcode;
 
-void GcodeInterpreter::Impl::lint_motion(BlockKind kind, const Vec3& from, const Vec3& to, unsigned axes) {
+void GcodeInterpreter::LineRun::lint_motion(BlockKind kind, const Vec3& from, const Vec3& to, unsigned axes) {
   if (!lint()) return;
   if (!mo.noted_modes && (!st.units_set || !mo.distance_set || !mo.plane_set)) {
     std::vector<std::string> missing;
@@ -45,7 +45,7 @@ void GcodeInterpreter::Impl::lint_motion(BlockKind kind, const Vec3& from, const
   }
 }
 
-void GcodeInterpreter::Impl::lint_jumps(const MotionBlock& b) {
+void GcodeInterpreter::LineRun::lint_jumps(const MotionBlock& b) {
   const auto& U = b.knots;
   const size_t k = static_cast<size_t>(b.order);
   for (size_t i = k; i + k < U.size();) {
@@ -60,7 +60,7 @@ void GcodeInterpreter::Impl::lint_jumps(const MotionBlock& b) {
   }
 }
 
-void GcodeInterpreter::Impl::check_n() {
+void GcodeInterpreter::LineRun::check_n() {
   if (mo.last_n >= 0 && *ln.n <= mo.last_n)
     note(errc::gcode_line_number_order, "line number N" + std::to_string(*ln.n) + " does not increase (the previous was N" +
                                   std::to_string(mo.last_n) + ")");
@@ -71,7 +71,7 @@ std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile
   if (const auto f = too_large(text)) return {*f};
   std::vector<GcodeFinding> findings;
   GcodeInterpreter in(&profile);
-  in.findings_ = &findings;
+  in.impl_->findings = &findings;
   int no = 0;
   size_t pos = 0;
   while (pos < text.size()) {

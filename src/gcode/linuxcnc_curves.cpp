@@ -21,7 +21,7 @@ std::vector<double> linuxcnc_knots(size_t n_points, int order) {
   return U;
 }
 
-bool GcodeInterpreter::Impl::continue_g52() {
+bool GcodeInterpreter::LineRun::continue_g52() {
   const bool closes = ln.g.size() == 1 && ln.g[0].first == 53;
   if (closes) return false;  // run_modal() handles G5.3
   const bool only_points = ln.g.empty() && ln.m.empty() &&
@@ -41,7 +41,7 @@ bool GcodeInterpreter::Impl::continue_g52() {
   return true;
 }
 
-void GcodeInterpreter::Impl::g52_point() {
+void GcodeInterpreter::LineRun::g52_point() {
   if (ln.has('X') != ln.has('Y'))
     fail(errc::gcode_nurbs_point, std::string("a G5.2 control point needs both X and Y, found only ") + (ln.has('X') ? txt('X') : txt('Y')));
   if (!ln.has('X')) fail(errc::gcode_nurbs_point, "a G5.2 control point line needs X, Y and P (its weight)");
@@ -54,7 +54,7 @@ void GcodeInterpreter::Impl::g52_point() {
   mo.weights.push_back(w);
 }
 
-void GcodeInterpreter::Impl::g5() {
+void GcodeInterpreter::LineRun::g5() {
   st.motion = ModalMotion::cubic;
   require_xy_known("G5");
   require_feed("G5");
@@ -75,7 +75,7 @@ void GcodeInterpreter::Impl::g5() {
   mo.g5_next_ij = {-val('P'), -val('Q'), 0};
 }
 
-void GcodeInterpreter::Impl::g51() {
+void GcodeInterpreter::LineRun::g51() {
   st.motion = ModalMotion::quadratic;
   mo.g5_chain = false;
   require_xy_known("G5.1");
@@ -88,7 +88,7 @@ void GcodeInterpreter::Impl::g51() {
   curve_move(b, axes);
 }
 
-void GcodeInterpreter::Impl::curve_move(MotionBlock& b, unsigned axes) {
+void GcodeInterpreter::LineRun::curve_move(MotionBlock& b, unsigned axes) {
   lint_motion(b.kind, b.from, b.to, axes);
   Box3 box;
   for (const auto& z : block_to_bezier(b)) box.add(bounds(z));
@@ -97,7 +97,7 @@ void GcodeInterpreter::Impl::curve_move(MotionBlock& b, unsigned axes) {
   commit_move(b, axes);
 }
 
-void GcodeInterpreter::Impl::g52() {
+void GcodeInterpreter::LineRun::g52() {
   if (mo.open == ModalMotion::nurbs_g5_2)
     fail(errc::gcode_nurbs_open, "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
   require_xy_known("G5.2");
@@ -112,7 +112,7 @@ void GcodeInterpreter::Impl::g52() {
     // huge L from overflowing the int (found by fuzzing).
     else order = static_cast<int>(std::min(L, static_cast<double>(kMaxBezierDegree) + 2));
   }
-  const int max = self.profile_ ? self.profile_->nurbs_max_rank : kMaxBezierDegree + 1;
+  const int max = self.profile ? self.profile->nurbs_max_rank : kMaxBezierDegree + 1;
   if (order > max) {
     soft(errc::gcode_rank, "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
   }
@@ -136,7 +136,7 @@ void GcodeInterpreter::Impl::g52() {
   lint_motion(BlockKind::nurbs, st.pos, st.pos, 0);
 }
 
-void GcodeInterpreter::Impl::g53() {
+void GcodeInterpreter::LineRun::g53() {
   if (mo.open != ModalMotion::nurbs_g5_2) fail(errc::gcode_nurbs_start, "G5.3 ends a G5.2 block, and none is open");
   if (!ln.words.empty()) fail(errc::gcode_unexpected_word, "G5.3 takes no words, found " + ln.words.front().text);
   if (mo.ctrl.size() < static_cast<size_t>(mo.order)) {

@@ -37,9 +37,9 @@ std::optional<GcodeFinding> gcode::too_large(size_t bytes) {
 }
 
 // ---------------------------------------------------------------------------
-// GcodeInterpreter::Impl: the line and the plain motions.
+// GcodeInterpreter::LineRun: the line and the plain motions.
 
-void GcodeInterpreter::Impl::run(std::string_view text) {
+void GcodeInterpreter::LineRun::run(std::string_view text) {
   ln = lex_line(text, diag());
   if (ln.percent || ln.program_number) return;
   if (ln.empty()) {
@@ -56,7 +56,7 @@ void GcodeInterpreter::Impl::run(std::string_view text) {
   run_modal();
 }
 
-void GcodeInterpreter::Impl::save_lists() {
+void GcodeInterpreter::LineRun::save_lists() {
   if (lists_saved) return;
   lists_saved = true;
   // Before this call the line only appended: the first sizes0 elements
@@ -67,8 +67,8 @@ void GcodeInterpreter::Impl::save_lists() {
   saved.knot_lines.assign(mo.knot_lines.begin(), mo.knot_lines.begin() + static_cast<std::ptrdiff_t>(sizes0[3]));
 }
 
-double GcodeInterpreter::Impl::coordinate(const Word& w, double from) const {
-  if (st.absolute) return w.value;
+double GcodeInterpreter::LineRun::coordinate(const Word& w, double from) const {
+  if (st.distance == DistanceMode::absolute) return w.value;
   const double v = from + w.value;
   // Travels that add up beyond a double must not read as infinity.
   if (!std::isfinite(v))
@@ -77,8 +77,8 @@ double GcodeInterpreter::Impl::coordinate(const Word& w, double from) const {
   return v;
 }
 
-bool GcodeInterpreter::Impl::gives_coordinate(int a, const Word& w) const {
-  if (st.absolute || (st.known_axes & (1u << a))) return true;
+bool GcodeInterpreter::LineRun::gives_coordinate(int a, const Word& w) const {
+  if (st.distance == DistanceMode::absolute || (st.known_axes & (1u << a))) return true;
   // The travel from a position this program never set: the controller
   // knows where it ends, a reader does not. No travel leaves it unknown.
   if (w.value == 0) return false;
@@ -86,7 +86,7 @@ bool GcodeInterpreter::Impl::gives_coordinate(int a, const Word& w) const {
                                     ", which no earlier move has set: set it with an absolute (G90) move first");
 }
 
-std::pair<Vec3, unsigned> GcodeInterpreter::Impl::target() const {
+std::pair<Vec3, unsigned> GcodeInterpreter::LineRun::target() const {
   Vec3 t = st.pos;
   unsigned axes = 0;
   for (int a = 0; a < 3; ++a) {
@@ -98,21 +98,21 @@ std::pair<Vec3, unsigned> GcodeInterpreter::Impl::target() const {
   return {t, axes};
 }
 
-unsigned GcodeInterpreter::Impl::named_axes() const {
+unsigned GcodeInterpreter::LineRun::named_axes() const {
   unsigned axes = 0;
   for (int a = 0; a < 3; ++a)
     if (ln.has("XYZ"[a])) axes |= 1u << a;
   return axes;
 }
 
-Vec3 GcodeInterpreter::Impl::start_for(const Vec3& to) const {
+Vec3 GcodeInterpreter::LineRun::start_for(const Vec3& to) const {
   Vec3 f = st.pos;
   for (int a = 0; a < 3; ++a)
     if (!(st.known_axes & (1u << a))) f[a] = to[a];
   return f;
 }
 
-void GcodeInterpreter::Impl::require_known(const std::string& what, unsigned mask) const {
+void GcodeInterpreter::LineRun::require_known(const std::string& what, unsigned mask) const {
   const unsigned missing = mask & ~st.known_axes;
   if (!missing) return;
   std::string names;
@@ -121,14 +121,14 @@ void GcodeInterpreter::Impl::require_known(const std::string& what, unsigned mas
   fail(errc::gcode_position_unknown, what + " cannot start from an unknown position: no earlier move has set " + names);
 }
 
-void GcodeInterpreter::Impl::require_feed(const std::string& what) const {
+void GcodeInterpreter::LineRun::require_feed(const std::string& what) const {
   if (!(st.feed > 0))
     soft(errc::gcode_no_feed, what + " needs a feed rate, and no F word has set one (F is in " + unit() + "/min)");
 }
 
-void GcodeInterpreter::Impl::check_travel(const Box3& b, unsigned axes) const {
-  if (!self.profile_ || b.empty()) return;
-  const auto& m = *self.profile_;
+void GcodeInterpreter::LineRun::check_travel(const Box3& b, unsigned axes) const {
+  if (!self.profile || b.empty()) return;
+  const auto& m = *self.profile;
   for (int a = 0; a < 3; ++a) {
     if (!(axes & (1u << a))) continue;
     const double lo = from_mm(m.travel_mm[a][0]), hi = from_mm(m.travel_mm[a][1]);
@@ -141,9 +141,9 @@ void GcodeInterpreter::Impl::check_travel(const Box3& b, unsigned axes) const {
   }
 }
 
-void GcodeInterpreter::Impl::check_feed_limit(double feed) {
-  if (!self.profile_) return;
-  const double max = from_mm(self.profile_->max_feed_mm_min);
+void GcodeInterpreter::LineRun::check_feed_limit(double feed) {
+  if (!self.profile) return;
+  const double max = from_mm(self.profile->max_feed_mm_min);
   if (feed > max && feed != mo.feed_reported) {
     mo.feed_reported = feed;  // lint: once per feed value, not on every move at it
     soft(errc::gcode_feed_limit, "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" + machine() + ", " +
@@ -151,7 +151,7 @@ void GcodeInterpreter::Impl::check_feed_limit(double feed) {
   }
 }
 
-MotionBlock GcodeInterpreter::Impl::block(BlockKind k, const Vec3& to) const {
+MotionBlock GcodeInterpreter::LineRun::block(BlockKind k, const Vec3& to) const {
   MotionBlock b;
   b.kind = k;
   b.line = b.first_line = line;
@@ -162,18 +162,18 @@ MotionBlock GcodeInterpreter::Impl::block(BlockKind k, const Vec3& to) const {
   return b;
 }
 
-void GcodeInterpreter::Impl::commit_move(const MotionBlock& b, unsigned axes) {
+void GcodeInterpreter::LineRun::commit_move(const MotionBlock& b, unsigned axes) {
   st.pos = b.to;
   st.known_axes |= axes;
   mo.moved = true;
   emit(b);
 }
 
-void GcodeInterpreter::Impl::emit_all(std::vector<MotionBlock> blocks) {
+void GcodeInterpreter::LineRun::emit_all(std::vector<MotionBlock> blocks) {
   for (auto& b : blocks) out.push_back(std::move(b));
 }
 
-void GcodeInterpreter::Impl::comp_off() {
+void GcodeInterpreter::LineRun::comp_off() {
   try {
     emit_all(mo.comp.off());
   } catch (const CompensationError& e) {
@@ -181,7 +181,7 @@ void GcodeInterpreter::Impl::comp_off() {
   }
 }
 
-void GcodeInterpreter::Impl::emit(const MotionBlock& b) {
+void GcodeInterpreter::LineRun::emit(const MotionBlock& b) {
   if (mo.comp.idle()) {  // no compensation: the block as it is, no copy
     out.push_back(b);
     return;
@@ -194,19 +194,19 @@ void GcodeInterpreter::Impl::emit(const MotionBlock& b) {
 }
 
 // G40, G41 / G42 with D (default: the tool in the spindle, as LinuxCNC).
-void GcodeInterpreter::Impl::cutter_comp(int code) {
+void GcodeInterpreter::LineRun::cutter_comp(int code) {
   if (code == 400) {
     comp_off();
-    st.cutter_comp = 40;
+    st.cutter_comp = CutterCompMode::off;
     st.cutter_comp_d = 0;
     st.cutter_comp_radius = 0;
     return;
   }
   const std::string g = code == 410 ? "G41" : "G42";
-  if (self.profile_ && !self.profile_->cutter_compensation)
-    fail(errc::gcode_cutter_comp, g + " (cutter radius compensation): machine \"" + self.profile_->name +
+  if (self.profile && !self.profile->cutter_compensation)
+    fail(errc::gcode_cutter_comp, g + " (cutter radius compensation): machine \"" + self.profile->name +
                                       "\" has none; the program must describe the tool centre");
-  if (st.plane != 17) fail(errc::gcode_cutter_comp, g + " compensates in the XY plane (G17) only");
+  if (st.plane != Plane::xy) fail(errc::gcode_cutter_comp, g + " compensates in the XY plane (G17) only");
   int d = st.tool;
   if (ln.has('D')) {
     if (val('D') < 0 || val('D') != std::floor(val('D')) || val('D') > 99999)
@@ -215,7 +215,7 @@ void GcodeInterpreter::Impl::cutter_comp(int code) {
   }
   double radius = 0;
   if (d != 0) {
-    const auto& table = self.tool_diameters_mm_;
+    const auto& table = self.tool_diameters_mm;
     const auto it = table.find(d);
     if (it == table.end())
       fail(errc::gcode_cutter_comp, g + " D" + std::to_string(d) + ": the diameter register D" + std::to_string(d) +
@@ -233,18 +233,18 @@ void GcodeInterpreter::Impl::cutter_comp(int code) {
   } else if (mo.comp.active()) {
     fail(errc::gcode_cutter_comp, g + " while cutter compensation is already on: cancel it with G40 first");
   }
-  st.cutter_comp = code / 10;
+  st.cutter_comp = code == 410 ? CutterCompMode::left : CutterCompMode::right;
   st.cutter_comp_d = d;
   st.cutter_comp_radius = radius;
 }
 
 
-double GcodeInterpreter::Impl::weight(const Word& r) const {
+double GcodeInterpreter::LineRun::weight(const Word& r) const {
   if (!(r.value > 0)) soft(errc::gcode_weight, "weight " + r.text + ": expected a weight R > 0");
   return r.value;
 }
 
-void GcodeInterpreter::Impl::finish_nurbs_block(std::vector<double> knots) {
+void GcodeInterpreter::LineRun::finish_nurbs_block(std::vector<double> knots) {
   MotionBlock b;
   b.kind = BlockKind::nurbs;
   b.first_line = mo.open_line;
@@ -259,7 +259,7 @@ void GcodeInterpreter::Impl::finish_nurbs_block(std::vector<double> knots) {
   finish_curve_block(b);
 }
 
-void GcodeInterpreter::Impl::finish_curve_block(MotionBlock& b) {
+void GcodeInterpreter::LineRun::finish_curve_block(MotionBlock& b) {
   const bool valid = std::none_of(b.knots.begin(), b.knots.end(), [](double k) { return std::isnan(k); });
   Box3 box;
   bool exact = false;
@@ -281,7 +281,7 @@ void GcodeInterpreter::Impl::finish_curve_block(MotionBlock& b) {
   emit(b);
 }
 
-void GcodeInterpreter::Impl::clear_block() {
+void GcodeInterpreter::LineRun::clear_block() {
   save_lists();
   mo.open = ModalMotion::none;
   mo.ctrl.clear();
@@ -292,20 +292,20 @@ void GcodeInterpreter::Impl::clear_block() {
   mo.knot_only_line = 0;
 }
 
-void GcodeInterpreter::Impl::abandon_block() {
+void GcodeInterpreter::LineRun::abandon_block() {
   clear_block();
   st.motion = ModalMotion::none;
 }
 
-void GcodeInterpreter::Impl::motion_line(int code, bool explicit_motion) {
+void GcodeInterpreter::LineRun::motion_line(int code, bool explicit_motion) {
   if (code == -1) {  // G80 or no motion words
     st.motion = ModalMotion::none;
     mo.g5_chain = false;
     return;
   }
-  if (self.profile_ && explicit_motion) check_dialect(code);
-  if (code >= 50 && code <= 52 && st.plane != 17)
-    fail(errc::gcode_plane, wt(code) + " moves in the XY plane: select it with G17 first (G" + std::to_string(st.plane) +
+  if (self.profile && explicit_motion) check_dialect(code);
+  if (code >= 50 && code <= 52 && st.plane != Plane::xy)
+    fail(errc::gcode_plane, wt(code) + " moves in the XY plane: select it with G17 first (G" + std::to_string(g_number(st.plane)) +
                                 " is in force)");
   switch (code) {
     case 0: case 10: linear(code == 0); break;
@@ -322,8 +322,8 @@ void GcodeInterpreter::Impl::motion_line(int code, bool explicit_motion) {
   }
 }
 
-void GcodeInterpreter::Impl::check_dialect(int code) const {
-  const auto& m = *self.profile_;
+void GcodeInterpreter::LineRun::check_dialect(int code) const {
+  const auto& m = *self.profile;
   if ((code == 20 || code == 30) && !m.arcs)
     fail(errc::gcode_dialect, "machine \"" + m.name + "\" does not take arcs (" + wt(code) + "): use G01");
   if (code >= 50 && code <= 53 && m.nurbs != NurbsDialect::linuxcnc)
@@ -337,13 +337,13 @@ void GcodeInterpreter::Impl::check_dialect(int code) const {
   }
 }
 
-int GcodeInterpreter::Impl::start_code(const std::string& word) {
+int GcodeInterpreter::LineRun::start_code(const std::string& word) {
   double v = 0;
   if (word.size() > 1) std::from_chars(word.data() + 1, word.data() + word.size(), v);
   return static_cast<int>(std::nearbyint(v * 10));
 }
 
-void GcodeInterpreter::Impl::linear(bool rapid) {
+void GcodeInterpreter::LineRun::linear(bool rapid) {
   st.motion = rapid ? ModalMotion::rapid : ModalMotion::feed;
   mo.g5_chain = false;
   const auto [to, axes] = target();
@@ -358,9 +358,9 @@ void GcodeInterpreter::Impl::linear(bool rapid) {
   commit_move(b, axes);
 }
 
-Vec3 GcodeInterpreter::Impl::reference_point(int) const { return Vec3{0, 0, 0}; }
+Vec3 GcodeInterpreter::LineRun::reference_point(int) const { return Vec3{0, 0, 0}; }
 
-void GcodeInterpreter::Impl::go_home(int code) {
+void GcodeInterpreter::LineRun::go_home(int code) {
   mo.g5_chain = false;
   const auto [via, axes] = target();
   // An intermediate point where the tool stands is no move.
@@ -388,26 +388,26 @@ void GcodeInterpreter::Impl::go_home(int code) {
   commit_move(b, home_axes);
 }
 
-double GcodeInterpreter::Impl::arc_tolerance() const {
-  return from_mm(self.profile_ ? self.profile_->arc_tolerance_mm : kDefaultArcToleranceMm);
+double GcodeInterpreter::LineRun::arc_tolerance() const {
+  return from_mm(self.profile ? self.profile->arc_tolerance_mm : kDefaultArcToleranceMm);
 }
 
-void GcodeInterpreter::Impl::arc(bool cw) {
+void GcodeInterpreter::LineRun::arc(bool cw) {
   st.motion = cw ? ModalMotion::arc_cw : ModalMotion::arc_ccw;
   mo.g5_chain = false;
   // In the plane's coordinates (a, b, axis) every plane is G17's: the
   // centre words of a and b, the end words of a and b.
-  const Plane pl = static_cast<Plane>(st.plane - 17);
+  const Plane pl = st.plane;
   const int ia = world_axis(pl, 0), ib = world_axis(pl, 1);
   const char la = "IJK"[ia], lb = "IJK"[ib];
   const std::string words = std::string(1, std::min(la, lb)) + " and " + std::string(1, std::max(la, lb));
-  const std::string g = std::string(cw ? "G02" : "G03") + (pl == Plane::xy ? "" : " (G" + std::to_string(st.plane) + ")");
+  const std::string g = std::string(cw ? "G02" : "G03") + (pl == Plane::xy ? "" : " (G" + std::to_string(g_number(pl)) + ")");
   const bool ij = ln.has(la) || ln.has(lb), r = ln.has('R');
   if (ij && r) fail(errc::gcode_arc, g + ": give either " + words + " (the centre) or R (the radius), not both");
   if (!ij && !r) fail(errc::gcode_arc, g + " needs the centre offsets " + words + " (or a radius R)");
   // G90.1: the centre is a point, both its words needed (LinuxCNC: "I word
   // missing in absolute center arc").
-  if (ij && st.arc_centers_absolute && !(ln.has(la) && ln.has(lb)))
+  if (ij && st.arc_centers == ArcCenterMode::absolute && !(ln.has(la) && ln.has(lb)))
     fail(errc::gcode_arc, g + " in G90.1 (absolute arc centres) needs both " + words + ": the centre's coordinates");
   require_known(g, (1u << ia) | (1u << ib));
   require_feed(g);
@@ -415,7 +415,7 @@ void GcodeInterpreter::Impl::arc(bool cw) {
   const Vec3 from = st.pos;
   const Vec3 lf = to_plane(from, pl), lt = to_plane(to, pl);
   Vec3 c = lf;  // the centre, in plane coordinates
-  if (ij && st.arc_centers_absolute) {
+  if (ij && st.arc_centers == ArcCenterMode::absolute) {
     c.x = val(la);
     c.y = val(lb);
   } else if (ij) {
@@ -441,7 +441,7 @@ void GcodeInterpreter::Impl::arc(bool cw) {
   const double r0 = std::hypot(lf.x - c.x, lf.y - c.y), r1 = std::hypot(lt.x - c.x, lt.y - c.y);
   if (r0 == 0)
     fail(errc::gcode_arc, g + ": the centre coincides with the start point (" + words +
-                              (st.arc_centers_absolute ? " name the start point in G90.1)" : " are both 0)"));
+                              (st.arc_centers == ArcCenterMode::absolute ? " name the start point in G90.1)" : " are both 0)"));
   const double tol = arc_tolerance();
   const double slack = 1e-12 * std::max({1.0, max_abs(from), max_abs(to), max_abs(c)});
   if (std::abs(r0 - r1) > tol + slack)
@@ -461,12 +461,34 @@ void GcodeInterpreter::Impl::arc(bool cw) {
 
 // ---------------------------------------------------------------------------
 
-GcodeInterpreter::GcodeInterpreter(const MachineProfile* profile) : profile_(profile) {
-  if (profile) tool_diameters_mm_ = profile->tool_diameters_mm;
+GcodeInterpreter::GcodeInterpreter(const MachineProfile* profile) : impl_(std::make_unique<Impl>()) {
+  impl_->profile = profile;
+  if (profile) impl_->tool_diameters_mm = profile->tool_diameters_mm;
+}
+
+GcodeInterpreter::~GcodeInterpreter() = default;
+GcodeInterpreter::GcodeInterpreter(GcodeInterpreter&&) noexcept = default;
+GcodeInterpreter& GcodeInterpreter::operator=(GcodeInterpreter&&) noexcept = default;
+GcodeInterpreter::GcodeInterpreter(const GcodeInterpreter& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
+GcodeInterpreter& GcodeInterpreter::operator=(const GcodeInterpreter& o) {
+  if (this != &o) impl_ = std::make_unique<Impl>(*o.impl_);
+  return *this;
+}
+
+const MachineState& GcodeInterpreter::state() const { return impl_->state; }
+
+void GcodeInterpreter::set_tool_diameters_mm(const std::map<int, double>& d) {
+  for (const auto& [k, v] : d) impl_->tool_diameters_mm[k] = v;
+}
+
+GcodeInterpreter::Continuation GcodeInterpreter::continuation() const {
+  const Impl::More& m = impl_->more;
+  return {m.open, m.open_line, m.g5_chain, m.selected_tool, m.end_line};
 }
 
 std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int line_no) {
-  more_.last_line = line_no;  // bookkeeping for finish(), even if the line is refused
+  Impl& d = *impl_;
+  d.more.last_line = line_no;  // bookkeeping for finish(), even if the line is refused
   // Stated limits (limits.hpp), checked before the line is looked at.
   if (static_cast<size_t>(line_no) > kMaxReadLines)
     throw InputError(errc::gcode_program_too_long, Place::at_line(line_no),
@@ -480,11 +502,11 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
   // The line runs on copies of the state, committed only when it is
   // accepted. The open NURBS block's lists are moved in, not copied (a copy
   // per line would make a block of n control points cost n^2): until a line
-  // clears or replaces them (Impl::save_lists() keeps them then) it only
+  // clears or replaces them (LineRun::save_lists() keeps them then) it only
   // appends, so a refused line is undone by cutting them back.
-  const std::array<size_t, 4> sizes{more_.ctrl.size(), more_.weights.size(), more_.knots.size(),
-                                    more_.knot_lines.size()};
-  Impl im{*this, state_, std::move(more_), line_no, {}, {}, {}};
+  const std::array<size_t, 4> sizes{d.more.ctrl.size(), d.more.weights.size(), d.more.knots.size(),
+                                    d.more.knot_lines.size()};
+  LineRun im{d, d.state, std::move(d.more), line_no, {}, {}, {}};
   im.sizes0 = sizes;
   try {
     im.run(text);
@@ -499,13 +521,13 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
     } catch (...) {
     }
     if (comp_error) {
-      more_.comp = CutterComp{};
-      state_.cutter_comp = 40;
-      state_.cutter_comp_d = 0;
-      state_.cutter_comp_radius = 0;
+      d.more.comp = CutterComp{};
+      d.state.cutter_comp = CutterCompMode::off;
+      d.state.cutter_comp_d = 0;
+      d.state.cutter_comp_radius = 0;
     }
-    // more_ kept every scalar (moving copies them); give the lists back.
-    Impl::Lists& back = im.saved;
+    // d.more kept every scalar (moving copies them); give the lists back.
+    LineRun::Lists& back = im.saved;
     if (!im.lists_saved) {
       back.ctrl = std::move(im.mo.ctrl);
       back.weights = std::move(im.mo.weights);
@@ -516,37 +538,38 @@ std::vector<MotionBlock> GcodeInterpreter::feed_line(std::string_view text, int 
       back.knots.resize(sizes[2]);
       back.knot_lines.resize(sizes[3]);
     }
-    more_.ctrl = std::move(back.ctrl);
-    more_.weights = std::move(back.weights);
-    more_.knots = std::move(back.knots);
-    more_.knot_lines = std::move(back.knot_lines);
+    d.more.ctrl = std::move(back.ctrl);
+    d.more.weights = std::move(back.weights);
+    d.more.knots = std::move(back.knots);
+    d.more.knot_lines = std::move(back.knot_lines);
     throw;
   }
-  state_ = im.st;
-  more_ = std::move(im.mo);
+  d.state = im.st;
+  d.more = std::move(im.mo);
   return std::move(im.out);
 }
 
 std::vector<MotionBlock> GcodeInterpreter::finish() {
-  if (more_.open != ModalMotion::none) {
-    const bool fanuc = more_.open != ModalMotion::nurbs_g5_2;
+  Impl::More& more = impl_->more;
+  if (more.open != ModalMotion::none) {
+    const bool fanuc = more.open != ModalMotion::nurbs_g5_2;
     const std::string msg =
-        fanuc ? "the program ends inside the NURBS block opened at line " + std::to_string(more_.open_line) + ": it has " +
-                    std::to_string(more_.ctrl.size()) + " control points and " + std::to_string(more_.knot_only) +
-                    " of its " + std::to_string(more_.order) + " knot-only K blocks"
-              : "the program ends inside the G5.2 block opened at line " + std::to_string(more_.open_line) +
+        fanuc ? "the program ends inside the NURBS block opened at line " + std::to_string(more.open_line) + ": it has " +
+                    std::to_string(more.ctrl.size()) + " control points and " + std::to_string(more.knot_only) +
+                    " of its " + std::to_string(more.order) + " knot-only K blocks"
+              : "the program ends inside the G5.2 block opened at line " + std::to_string(more.open_line) +
                     ": close it with G5.3";
-    throw InputError(errc::gcode_nurbs_open, Place::at_line(std::max(more_.last_line, 1)), msg);
+    throw InputError(errc::gcode_nurbs_open, Place::at_line(std::max(more.last_line, 1)), msg);
   }
   try {
-    return more_.comp.finish();  // the move compensation still holds
+    return more.comp.finish();  // the move compensation still holds
   } catch (const CompensationError& e) {
-    throw InputError(errc::gcode_cutter_comp, Place::at_line(std::max(more_.last_line, 1)), e.what());
+    throw InputError(errc::gcode_cutter_comp, Place::at_line(std::max(more.last_line, 1)), e.what());
   }
 }
 
 std::vector<MotionBlock> read_gcode(std::string_view text, const MachineProfile* profile) {
-  if (const auto f = too_large(text)) throw InputError(f->id, "line 1", f->message);
+  if (const auto f = too_large(text)) throw InputError(f->id, Place::at_line(1), f->message);
   GcodeInterpreter in(profile);
   std::vector<MotionBlock> out;
   int no = 0;

@@ -76,10 +76,11 @@ std::string barrier(const MachineState& st, const GcodeInterpreter::Continuation
   if (c.open_block != ModalMotion::none)
     return "it is inside the " + motion_word(c.open_block) + " NURBS block that starts at line " +
            std::to_string(c.open_line) + ", which cannot be entered in the middle";
-  if (st.cutter_comp != 40)
-    return "cutter radius compensation (G" + std::to_string(st.cutter_comp) + " D" + std::to_string(st.cutter_comp_d) +
+  if (st.cutter_comp != CutterCompMode::off)
+    return "cutter radius compensation (G" + std::to_string(static_cast<int>(st.cutter_comp)) + " D" +
+           std::to_string(st.cutter_comp_d) +
            ") is on there: the tool's offset depends on the moves before it; resume at the lead before the G" +
-           std::to_string(st.cutter_comp) + " line";
+           std::to_string(static_cast<int>(st.cutter_comp)) + " line";
   bool names_motion = false, g5 = false;
   for (const auto& [code, text] : ln.g) {
     if (gcode::g_group(code) == GGroup::motion) names_motion = true;
@@ -104,14 +105,14 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
   const MachineState& st = s.state;
   std::vector<std::string> out;
   // The arc plane in force there (G18/G19 inside a run of surface arcs).
-  std::string modes = "G" + std::to_string(st.plane) + " G90 G94 G40";
+  std::string modes = "G" + std::to_string(g_number(st.plane)) + " G90 G94 G40";
   if (st.units_set) modes += st.units == Units::inch ? " G20" : " G21";
-  modes += " G" + std::to_string(st.coord_system);
-  if (st.path_mode == 611) modes += " G61.1";
-  else if (st.path_mode == 64 && std::isfinite(st.path_tolerance) && st.path_tolerance > 0)
+  modes += " G" + std::to_string(static_cast<int>(st.coord_system));
+  if (st.path_mode == PathMode::exact_path) modes += " G61.1";
+  else if (st.path_mode == PathMode::blend && std::isfinite(st.path_tolerance) && st.path_tolerance > 0)
     modes += " G64 P" + num(st.path_tolerance);  // the tolerance in force, not only the mode
-  else if (st.path_mode != 0) modes += " G" + std::to_string(st.path_mode);
-  if (st.arc_centers_absolute) modes += " G90.1";  // only a program that used it: not every controller knows it
+  else if (st.path_mode != PathMode::unset) modes += " G" + std::to_string(static_cast<int>(st.path_mode));
+  if (st.arc_centers == ArcCenterMode::absolute) modes += " G90.1";  // only a program that used it: not every controller knows it
   out.push_back(modes);
   if (st.tool > 0) out.push_back("T" + std::to_string(st.tool) + " M06");
   const int sel = s.cont.selected_tool;
@@ -147,7 +148,7 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
   if (st.feed != feed_now) out.push_back("F" + num(st.feed));
   if (restorable(st.motion) && st.motion != motion_now) out.push_back(motion_word(st.motion));
   // The moves above are absolute; the program goes on in its own mode.
-  if (!st.absolute) out.push_back("G91");
+  if (st.distance == DistanceMode::incremental) out.push_back("G91");
   return out;
 }
 
@@ -163,8 +164,8 @@ std::string differences(const Snapshot& want, const MachineState& got, const Gco
   for (int a = 0; a < 3; ++a)
     if (w.known_axes & (1u << a)) diff(got.pos[a] != w.pos[a], "position");
   diff(got.units != w.units || got.units_set != w.units_set, "units");
-  diff(got.absolute != w.absolute, "distance mode");
-  diff(got.arc_centers_absolute != w.arc_centers_absolute, "arc centre mode");
+  diff(got.distance != w.distance, "distance mode");
+  diff(got.arc_centers != w.arc_centers, "arc centre mode");
   diff(got.plane != w.plane, "plane");
   diff(got.coord_system != w.coord_system, "work offset");
   diff(got.path_mode != w.path_mode, "path mode");

@@ -51,7 +51,7 @@ void TimelineReader::feed(std::string_view text) {
 }
 
 Timeline TimelineReader::finish() {
-  if (const auto f = gcode::too_large(bytes_)) throw InputError(f->id, "line 1", f->message);
+  if (const auto f = gcode::too_large(bytes_)) throw InputError(f->id, Place::at_line(1), f->message);
   if (!partial_.empty()) line(partial_);  // the last line, without its newline
   partial_.clear();
   const MachineState before = in_.state();
@@ -61,7 +61,7 @@ Timeline TimelineReader::finish() {
 }
 
 Timeline read_timeline(std::string_view text, const MachineProfile* profile) {
-  if (const auto f = gcode::too_large(text)) throw InputError(f->id, "line 1", f->message);
+  if (const auto f = gcode::too_large(text)) throw InputError(f->id, Place::at_line(1), f->message);
   TimelineReader r(profile);
   r.feed(text);
   return r.finish();

@@ -1,6 +1,7 @@
 #include "bezcam/link/crc32.hpp"
 
 #include <array>
+#include <cstdio>
 
 namespace bezcam::link {
 
@@ -31,6 +32,12 @@ std::uint32_t crc32(std::string_view bytes) noexcept {
   Crc32 c;
   c.update(bytes);
   return c.value();
+}
+
+std::string hex32(std::uint32_t v) {
+  char b[16];
+  std::snprintf(b, sizeof b, "%08X", v);
+  return b;
 }
 
 }  // namespace bezcam::link

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <limits>
 #include <memory>
 #include <random>
@@ -22,12 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
-
-std::string hex32(std::uint32_t v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "%08X", v);
-  return b;
-}
 
 // One transfer, from OPEN to DONE; not reusable.
 class Sender {
@@ -99,11 +92,11 @@ class Sender {
 
   void check_identity() {
     if (st_.magic != kMagic)
-      throw IoError(errc::link_protocol, peer_,
+      throw IoError(errc::link_protocol, Place::at_file(peer_),
                     "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(st_.magic) +
                         ", expected 0000425A); check the address");
     if (st_.version != kProtocolVersion)
-      throw ControllerError(errc::link_version, peer_,
+      throw ControllerError(errc::link_version, Place::at_file(peer_),
                             "the controller speaks protocol version " + std::to_string(st_.version) +
                                 ", this sender version " + std::to_string(kProtocolVersion) + "; update one of them");
   }
@@ -139,12 +132,14 @@ class Sender {
 
   [[noreturn]] void alarm_error() {
     std::string text = read_alarm_text();
-    std::string where = st_.alarm_line > 0 ? "line " + std::to_string(st_.alarm_line) : peer_;
-    // The controller's text starts with "line N: "; the place is given separately.
+    // The line travels as a number (register alarm_line); the text, for
+    // people, starts with "line N: " (docs/modbus-register-map.md), which
+    // the place already says.
     if (const std::string prefix = "line " + std::to_string(st_.alarm_line) + ": ";
         st_.alarm_line > 0 && text.rfind(prefix, 0) == 0)
       text.erase(0, prefix.size());
-    throw ControllerError(errc::controller_alarm, where,
+    throw ControllerError(errc::controller_alarm,
+                          st_.alarm_line > 0 ? Place::at_line(st_.alarm_line) : Place::at_file(peer_),
                           std::string("the controller stopped with alarm ") + to_string(st_.alarm) + " (" +
                               std::to_string(static_cast<int>(st_.alarm)) + "): " +
                               (text.empty() ? "no message" : text) + "; " + position());
@@ -155,7 +150,7 @@ class Sender {
     st_ = read_status();
     if (st_.state == State::alarm) alarm_error();
     if (st_.session != session_) restarted();
-    throw ControllerError(errc::link_refused, peer_,
+    throw ControllerError(errc::link_refused, Place::at_file(peer_),
                           std::string("the controller refused ") + doing + " (Modbus exception " +
                               std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
                               describe(st_.last_reject) + "); " + position());
@@ -163,7 +158,7 @@ class Sender {
 
   [[noreturn]] void restarted() {
     throw ControllerError(
-        errc::link_restarted, peer_,
+        errc::link_restarted, Place::at_file(peer_),
         "the controller no longer holds this transfer: session " + hex32(session_) + " was expected, it reports " +
             (st_.session == 0 ? std::string("no session") : "session " + hex32(st_.session)) + " in state " +
             to_string(st_.state) +
@@ -172,41 +167,55 @@ class Sender {
             " bytes had been acknowledged; check the machine, then stream the program again from the start");
   }
 
-  void open() {
-    const auto total = static_cast<std::uint32_t>(prog_.size());
-    const auto cmd = encode_command(Command::open, std::array<std::uint32_t, 2>{token_, total});
+  // Sends a repeatable command (OPEN with this sender's token, COMMIT)
+  // until the controller answers it. A refusal goes to `on_refusal`, which
+  // reads the status and throws why (losing the connection there counts as
+  // a loss); after a lost connection `on_loss` reconnects and says whether
+  // the state shows the command got through (true) or it is sent again.
+  template <class OnRefusal, class OnLoss>
+  void repeat_command(const std::vector<std::uint16_t>& cmd, OnRefusal on_refusal, OnLoss on_loss) {
     for (;;) {
       try {
         st_ = write_read(reg::command, cmd);
-        break;
+        return;
       } catch (const ModbusException& e) {
         try {
-          st_ = read_status();
+          on_refusal(e);
         } catch (const IoError& io) {
-          reconnect_raw(io.message());
-          continue;  // ask again
+          if (on_loss(io.message())) return;
         }
-        if (st_.last_reject == Reject::busy)
-          throw ControllerError(errc::link_busy, peer_,
-                                "the controller is busy with another sender's program (session " + hex32(st_.session) +
-                                    ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
-                                    std::to_string(st_.total_bytes) +
-                                    " bytes received); try again when it is done, or abort it there");
-        throw ControllerError(errc::link_refused, peer_,
-                              "the controller refused to open a transfer (Modbus exception " +
-                                  std::to_string(e.code()) + ", reason " + to_string(st_.last_reject) + ": " +
-                                  describe(st_.last_reject) + ")");
       } catch (const IoError& e) {
-        // OPEN is repeatable with the same token: reconnect and ask again.
-        reconnect_raw(e.message());
+        if (on_loss(e.message())) return;
       }
     }
+  }
+
+  void open() {
+    const auto total = static_cast<std::uint32_t>(prog_.size());
+    const auto cmd = encode_command(Command::open, std::array<std::uint32_t, 2>{token_, total});
+    const auto refusal = [&](const ModbusException& e) {
+      st_ = read_status();
+      if (st_.last_reject == Reject::busy)
+        throw ControllerError(errc::link_busy, Place::at_file(peer_),
+                              "the controller is busy with another sender's program (session " + hex32(st_.session) +
+                                  ", state " + to_string(st_.state) + ", " + std::to_string(st_.ack_bytes) + " of " +
+                                  std::to_string(st_.total_bytes) +
+                                  " bytes received); try again when it is done, or abort it there");
+      throw ControllerError(errc::link_refused, Place::at_file(peer_),
+                            "the controller refused to open a transfer (Modbus exception " + std::to_string(e.code()) +
+                                ", reason " + to_string(st_.last_reject) + ": " + describe(st_.last_reject) + ")");
+    };
+    // OPEN is repeatable with the same token: reconnect and ask again.
+    repeat_command(cmd, refusal, [&](const std::string& why) {
+      reconnect_raw(why);
+      return false;
+    });
     session_ = st_.session;
     event("transfer opened: session " + hex32(session_) + ", controller buffer " +
           std::to_string(st_.buffer_capacity) + " bytes");
     max_chunk_ = std::min<std::uint16_t>(st_.max_chunk, kMaxChunkBytes);
     if (opt_.chunk_bytes > 0) max_chunk_ = std::min(max_chunk_, opt_.chunk_bytes);
-    if (max_chunk_ == 0) throw ControllerError(errc::link_protocol, peer_, "the controller announces chunks of 0 bytes");
+    if (max_chunk_ == 0) throw ControllerError(errc::link_protocol, Place::at_file(peer_), "the controller announces chunks of 0 bytes");
     mark_progress();
     report();
   }
@@ -227,7 +236,7 @@ class Sender {
       return;
     }
     if (Clock::now() - progress_time_ > opt_.stall_timeout)
-      throw ControllerError(errc::link_stalled, peer_,
+      throw ControllerError(errc::link_stalled, Place::at_file(peer_),
                             "the controller took no byte and executed no line for " +
                                 fmt_num(std::chrono::duration<double>(opt_.stall_timeout).count()) + " s (state " +
                                 to_string(st_.state) + "); " + position());
@@ -255,7 +264,7 @@ class Sender {
       } catch (const std::exception&) {
       }
     }
-    throw ControllerError(errc::link_cancelled, peer_,
+    throw ControllerError(errc::link_cancelled, Place::at_file(peer_),
                           "interrupted: " + sent_abort + "; " + position() + ", controller " + to_string(st_.state) +
                               (st_.state == State::alarm ? std::string(" (") + to_string(st_.alarm) + ")" : ""));
   }
@@ -295,7 +304,7 @@ class Sender {
         // The acknowledgement must account for exactly this chunk; anything
         // else means the two sides disagree about the program.
         if (st_.ack_seq != seq + 1 || st_.ack_bytes != sent + n)
-          throw ControllerError(errc::link_ack, peer_,
+          throw ControllerError(errc::link_ack, Place::at_file(peer_),
                                 "chunk " + std::to_string(seq + 1) + " was acknowledged as sequence " +
                                     std::to_string(st_.ack_seq) + " at byte " + std::to_string(st_.ack_bytes) +
                                     ", expected byte " + std::to_string(sent + n) + "; the program may be corrupted");
@@ -333,25 +342,17 @@ class Sender {
   void commit() {
     const auto cmd = encode_command(
         Command::commit, std::array<std::uint32_t, 4>{token_, session_, static_cast<std::uint32_t>(prog_.size()), crc_});
-    for (;;) {
-      try {
-        st_ = write_read(reg::command, cmd);
-        break;
-      } catch (const ModbusException& e) {
-        try {
-          refused(e, "COMMIT (length and CRC-32 check)");
-        } catch (const IoError& io) {
-          reconnect(io.message());
-          if (st_.state == State::finishing || st_.state == State::done) break;
-        }
-      } catch (const IoError& e) {
-        reconnect(e.message());
-        if (st_.state == State::finishing || st_.state == State::done) break;  // it got through
-        if (st_.ack_bytes != prog_.size())
-          throw ControllerError(errc::link_ack, peer_, "after reconnecting before COMMIT the controller reports " +
-                                                           position() + "; the program may be corrupted");
-      }
-    }
+    repeat_command(
+        cmd, [&](const ModbusException& e) { refused(e, "COMMIT (length and CRC-32 check)"); },
+        [&](const std::string& why) {
+          reconnect(why);
+          if (st_.state == State::finishing || st_.state == State::done) return true;  // it got through
+          if (st_.ack_bytes != prog_.size())
+            throw ControllerError(errc::link_ack, Place::at_file(peer_),
+                                  "after reconnecting before COMMIT the controller reports " + position() +
+                                      "; the program may be corrupted");
+          return false;
+        });
     event("controller confirmed length " + std::to_string(prog_.size()) + " bytes and CRC-32 " + hex32(crc_));
     report();
   }
@@ -386,7 +387,7 @@ class Sender {
     for (int attempt = 1;; ++attempt) {
       check_cancel();
       if (failures_ >= opt_.retries || Clock::now() >= deadline)
-        throw IoError(errc::link_lost, peer_,
+        throw IoError(errc::link_lost, Place::at_file(peer_),
                       "the connection was lost and could not be restored (" + std::to_string(failures_) +
                           " attempts, last: " + why + "); " + std::to_string(acked_high_) + " of " +
                           std::to_string(prog_.size()) +
@@ -418,7 +419,7 @@ class Sender {
       refused(e, "RESUME");
     }
     if (st_.ack_bytes > sent_high_)
-      throw ControllerError(errc::link_ack, peer_, "after reconnecting the controller reports " + position() +
+      throw ControllerError(errc::link_ack, Place::at_file(peer_), "after reconnecting the controller reports " + position() +
                                                        ", more than was sent; the program may be corrupted");
   }
 
@@ -477,7 +478,7 @@ ControllerReport report_of(Transport& c) {
 
 void require_bezcam(const ControllerReport& r, const Endpoint& to) {
   if (r.status.magic != kMagic)
-    throw IoError(errc::link_protocol, to.str(),
+    throw IoError(errc::link_protocol, Place::at_file(to.str()),
                   "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(r.status.magic) +
                       ")");
 }
@@ -503,7 +504,7 @@ ControllerReport abort_controller(const Endpoint& to, std::chrono::milliseconds 
   try {
     c.write_registers(reg::command, cmd);
   } catch (const ModbusException& e) {
-    throw ControllerError(errc::link_refused, to.str(), std::string("the controller refused ABORT: ") + e.what());
+    throw ControllerError(errc::link_refused, Place::at_file(to.str()), std::string("the controller refused ABORT: ") + e.what());
   }
   return report_of(c);
 }

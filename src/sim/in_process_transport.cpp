@@ -49,7 +49,7 @@ class InProcessTransport final : public link::Transport {
     const int attempt = ++s_->stats.connects;
     const auto& fails = s_->faults.failed_connects;
     if (std::find(fails.begin(), fails.end(), attempt) != fails.end())
-      throw IoError(errc::link_connection, kPeer, "cannot connect: refused by fault injection");
+      throw IoError(errc::link_connection, Place::at_file(kPeer), "cannot connect: refused by fault injection");
     id_ = s_->ctl.connection_opened();
     ++s_->stats.open;
   }
@@ -105,7 +105,7 @@ class InProcessTransport final : public link::Transport {
   // One round trip: faults, the controller's answer, and its translation
   // into the Transport contract (exception reply, lost connection, values).
   void request(std::span<const std::uint8_t> adu, std::span<std::uint16_t> out) {
-    if (id_ == 0) throw IoError(errc::link_connection, kPeer, "the connection is closed");
+    if (id_ == 0) throw IoError(errc::link_connection, Place::at_file(kPeer), "the connection is closed");
     FrameReply r;
     bool lost = false;
     {
@@ -120,13 +120,13 @@ class InProcessTransport final : public link::Transport {
     }
     if (lost) {
       close();
-      throw IoError(errc::link_connection, kPeer, "the connection was dropped");
+      throw IoError(errc::link_connection, Place::at_file(kPeer), "the connection was dropped");
     }
     if (r.exception != 0)
       throw link::ModbusException(r.exception, "Modbus exception " + std::to_string(r.exception));
     if (r.regs.size() != out.size()) {
       close();
-      throw IoError(errc::link_connection, kPeer, "a reply of the wrong length");
+      throw IoError(errc::link_connection, Place::at_file(kPeer), "a reply of the wrong length");
     }
     std::copy(r.regs.begin(), r.regs.end(), out.begin());
   }

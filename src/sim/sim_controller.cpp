@@ -37,12 +37,6 @@ std::int32_t thousandths(double v) {
   return static_cast<std::int32_t>(std::clamp(t, -2147483648.0, 2147483647.0));
 }
 
-std::string hex32(std::uint32_t v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "%08X", v);
-  return b;
-}
-
 }  // namespace
 
 struct SimController::Pending {
@@ -137,7 +131,7 @@ void SimController::open_locked(ConnId c, std::uint32_t token, std::uint32_t tot
   duplicates_ = 0;
   alarm_ = Alarm::none;
   alarm_line_ = 0;
-  alarm_text_.clear();
+  alarm_message_.clear();
   final_traced_ = false;
   line_no_ = lines_done_ = blocks_done_ = 0;
   machine_ = MachineState{};
@@ -168,14 +162,10 @@ void SimController::raise_alarm_locked(Alarm a, long line, std::string id, std::
   } else if (line == kMachineLine) {
     line = line_no_;
   }
-  state_ = State::alarm;
   // A controller in alarm stops the spindle and the coolant.
   machine_.spindle_on = false;
   machine_.coolant_mist = machine_.coolant_flood = false;
-  alarm_ = a;
-  alarm_line_ = static_cast<std::uint32_t>(std::max(0L, line));
-  alarm_text_ = (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + message;
-  log_locked(std::string("alarm ") + to_string(a) + ": " + alarm_text_);
+  record_alarm_locked(a, line, message);
   final_traced_ = false;
   pending_alarm_ =
       std::make_unique<Pending>(Pending{epoch_, done + trace_alarm(static_cast<int>(line), to_string(a), id, message)});
@@ -213,7 +203,7 @@ Status SimController::status_locked(ConnId c) const {
   s.spindle_rpm = static_cast<std::uint32_t>(std::clamp(std::round(m.spindle_rpm), 0.0, 4294967295.0));
   s.flags = static_cast<std::uint16_t>((m.spindle_on ? flag::spindle_on : 0) |
                                        (m.units == Units::inch ? flag::inch : 0) |
-                                       (m.absolute ? 0 : flag::incremental) |
+                                       (m.distance == DistanceMode::absolute ? 0 : flag::incremental) |
                                        (m.program_end ? flag::program_end : 0) |
                                        (owner_ != 0 ? flag::owner_attached : 0));
   s.tool = static_cast<std::uint16_t>(std::clamp(m.tool, 0, 65535));
@@ -238,7 +228,26 @@ Status SimController::status(ConnId c) const {
 
 std::string SimController::alarm_text() const {
   std::lock_guard lk(m_);
-  return alarm_text_;
+  return alarm_text_locked();
+}
+
+std::string SimController::alarm_message() const {
+  std::lock_guard lk(m_);
+  return alarm_message_;
+}
+
+std::string SimController::alarm_text_locked() const {
+  return (alarm_line_ > 0 ? "line " + std::to_string(alarm_line_) + ": " : std::string()) + alarm_message_;
+}
+
+// The line travels as a number (register alarm_line); only the text for
+// people (register alarm_text, the operator's log) spells it out.
+void SimController::record_alarm_locked(Alarm a, long line, std::string message) {
+  state_ = State::alarm;
+  alarm_ = a;
+  alarm_line_ = static_cast<std::uint32_t>(std::max(0L, line));
+  alarm_message_ = std::move(message);
+  log_locked(std::string("alarm ") + to_string(a) + ": " + alarm_text_locked());
 }
 
 // The readable registers are rebuilt per read from the live state, so a
@@ -247,7 +256,7 @@ std::vector<std::uint16_t> SimController::read_locked(ConnId c, std::uint16_t ad
   std::array<std::uint16_t, reg::readable_end> image{};
   const auto st = status_locked(c).encode();
   std::copy(st.begin(), st.end(), image.begin());
-  pack_text(alarm_text_, &image[reg::alarm_text], reg::alarm_text_count);
+  pack_text(alarm_text_locked(), &image[reg::alarm_text], reg::alarm_text_count);
   pack_text(cfg_.profile.name, &image[reg::machine_name], reg::machine_name_count);
   return {image.begin() + addr, image.begin() + addr + n};
 }
@@ -379,7 +388,7 @@ Reject SimController::command_locked(ConnId c, std::span<const std::uint16_t> re
       state_ = State::idle;
       alarm_ = Alarm::none;
       alarm_line_ = 0;
-      alarm_text_.clear();
+      alarm_message_.clear();
       session_ = token_ = total_ = 0;
       owner_ = 0;
       ack_seq_ = ack_bytes_ = 0;
@@ -595,11 +604,7 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
   if (state_ == State::alarm || failed) machine_.spindle_on = machine_.coolant_mist = machine_.coolant_flood = false;
   if (failed && state_ != State::alarm) {
     // Traced above already, so no pending record.
-    state_ = State::alarm;
-    alarm_ = failed->first;
-    alarm_line_ = static_cast<std::uint32_t>(no);
-    alarm_text_ = "line " + std::to_string(no) + ": " + failed->second;
-    log_locked(std::string("alarm ") + to_string(alarm_) + ": " + alarm_text_);
+    record_alarm_locked(failed->first, no, failed->second);
     final_traced_ = true;
   }
   cv_.notify_all();
@@ -634,11 +639,7 @@ void SimController::finish_program(std::unique_lock<std::mutex>& lk, GcodeInterp
   blocks_done_ = total_blocks;
   machine_ = interp.state();
   if (failed) {
-    state_ = State::alarm;
-    alarm_ = Alarm::incomplete;
-    alarm_line_ = static_cast<std::uint32_t>(lines);
-    alarm_text_ = "line " + std::to_string(lines) + ": " + failed->second;
-    log_locked(std::string("alarm ") + to_string(alarm_) + ": " + alarm_text_);
+    record_alarm_locked(Alarm::incomplete, lines, failed->second);
   } else {
     state_ = State::done;  // only now: the trace on disk is complete
     log_locked("program done: " + std::to_string(lines) + " lines, " + std::to_string(total_blocks) + " motion blocks");
@@ -722,7 +723,7 @@ void SimController::exec_loop() {
         const std::string message =
             "the line is longer than the receive buffer (" + std::to_string(cfg_.buffer_bytes) + " bytes)";
         if (pace_) {
-          failure_ = Failure{Alarm::line_too_long, line_no_ + 1, "line " + std::to_string(line_no_ + 1) + ": " + message,
+          failure_ = Failure{Alarm::line_too_long, line_no_ + 1, message,
                              trace_alarm(static_cast<int>(line_no_ + 1), to_string(Alarm::line_too_long),
                                          errc::sim_line_too_long.str(), message)};
         } else {

@@ -149,7 +149,7 @@ void SimController::read_ahead_locked(const GcodeInterpreter& interp, std::uint6
                                       const std::optional<std::pair<Alarm, std::string>>& failed, std::string text) {
   if (epoch_ != cur_epoch || state_ == State::alarm) return;  // replaced or stopped meanwhile: it never runs
   if (failed) {
-    failure_ = Failure{failed->first, no, "line " + std::to_string(no) + ": " + failed->second, std::move(text)};
+    failure_ = Failure{failed->first, no, failed->second, std::move(text)};
     return;
   }
   pace_->add(blocks, before, interp.state(), static_cast<int>(no));
@@ -159,7 +159,7 @@ void SimController::read_ahead_locked(const GcodeInterpreter& interp, std::uint6
   const auto cont = interp.continuation();
   long settled = no;
   if (cont.open_block != ModalMotion::none) settled = cont.open_line - 1;
-  else if (interp.state().cutter_comp != 40) settled = last_block_line_ - 1;
+  else if (interp.state().cutter_comp != CutterCompMode::off) settled = last_block_line_ - 1;
   settled_ = std::max(settled_, settled);
   ahead_.push_back({no, true, interp.state(), std::move(text)});
 }
@@ -185,7 +185,7 @@ void SimController::finish_interpreter(std::unique_lock<std::mutex>& lk, GcodeIn
   if (!pace_started_) pace_started_ = true, pace_origin_ = Clock::now();  // a program of no lines
   interp_finished_ = true;
   if (failed) {
-    failure_ = Failure{Alarm::incomplete, lines, "line " + std::to_string(lines) + ": " + failed->second,
+    failure_ = Failure{Alarm::incomplete, lines, failed->second,
                        trace_alarm(static_cast<int>(lines), to_string(Alarm::incomplete), failed->first, failed->second)};
     return;
   }
@@ -222,12 +222,8 @@ void SimController::raise_failure(std::unique_lock<std::mutex>& lk, std::uint64_
   emit_trace(done + f.trace, false);
   lk.lock();
   if (epoch_ != cur_epoch || state_ == State::alarm || state_ == State::done) return;
-  state_ = State::alarm;
-  alarm_ = f.alarm;
-  alarm_line_ = static_cast<std::uint32_t>(std::max(0L, f.line));
-  alarm_text_ = f.text;
   machine_.spindle_on = machine_.coolant_mist = machine_.coolant_flood = false;
-  log_locked(std::string("alarm ") + to_string(alarm_) + ": " + alarm_text_);
+  record_alarm_locked(f.alarm, f.line, f.message);
   final_traced_ = true;
   cv_.notify_all();
 }

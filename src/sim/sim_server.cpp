@@ -44,12 +44,12 @@ ModbusServer::ModbusServer(SimController& controller, ServerConfig cfg) : ctl_(c
   const std::string where = cfg_.host + ":" + std::to_string(cfg_.port);
   const std::string service = std::to_string(cfg_.port);
   modbus_t* ctx = modbus_new_tcp_pi(cfg_.host.c_str(), service.c_str());
-  if (!ctx) throw IoError(errc::sim_listen, where, std::string("cannot create a Modbus context: ") + std::strerror(errno));
+  if (!ctx) throw IoError(errc::sim_listen, Place::at_file(where), std::string("cannot create a Modbus context: ") + std::strerror(errno));
   listen_fd_ = modbus_tcp_pi_listen(ctx, 16);
   const int err = errno;
   modbus_free(ctx);
   if (listen_fd_ < 0)
-    throw IoError(errc::sim_listen, where, std::string("cannot listen: ") + std::strerror(err) +
+    throw IoError(errc::sim_listen, Place::at_file(where), std::string("cannot listen: ") + std::strerror(err) +
                                            "; choose another port (0 lets the system pick a free one)");
   // Non-blocking so that accept() never hangs when a client vanished
   // between poll() and accept().
@@ -63,7 +63,7 @@ ModbusServer::ModbusServer(SimController& controller, ServerConfig cfg) : ctl_(c
   }
   if (::pipe2(wake_, O_CLOEXEC | O_NONBLOCK) != 0) {
     ::close(listen_fd_);
-    throw IoError(errc::sim_listen, where, std::string("cannot create a pipe: ") + std::strerror(errno));
+    throw IoError(errc::sim_listen, Place::at_file(where), std::string("cannot create a pipe: ") + std::strerror(errno));
   }
 }
 

@@ -99,14 +99,16 @@ std::string trace_state(int line, const MachineState& a, const MachineState& b) 
   std::string s;
   const std::string at = "line " + std::to_string(line) + " ";
   if (a.units != b.units || a.units_set != b.units_set) s += at + "units " + to_string(b.units) + "\n";
-  if (a.absolute != b.absolute) s += at + "distance " + (b.absolute ? "absolute" : "incremental") + "\n";
+  if (a.distance != b.distance)
+    s += at + "distance " + (b.distance == DistanceMode::absolute ? "absolute" : "incremental") + "\n";
   if (a.tool != b.tool) s += at + "tool " + std::to_string(b.tool) + "\n";
   if (a.spindle_on != b.spindle_on || (b.spindle_on && a.spindle_rpm != b.spindle_rpm))
     s += at + (b.spindle_on ? "spindle on " + trace_number(b.spindle_rpm) : std::string("spindle off")) + "\n";
   if (a.coolant_mist != b.coolant_mist || a.coolant_flood != b.coolant_flood)
     s += at + "coolant " +
          (b.coolant_mist && b.coolant_flood ? "mist flood" : b.coolant_mist ? "mist" : b.coolant_flood ? "flood" : "off") + "\n";
-  if (a.coord_system != b.coord_system) s += at + "work offset G" + std::to_string(b.coord_system) + "\n";
+  if (a.coord_system != b.coord_system)
+    s += at + "work offset G" + std::to_string(static_cast<int>(b.coord_system)) + "\n";
   if (a.tool_length_comp != b.tool_length_comp || a.tool_length_h != b.tool_length_h)
     s += at + (b.tool_length_comp ? "tool length H" + std::to_string(b.tool_length_h) : std::string("tool length off")) + "\n";
   if (b.dwell_seconds != a.dwell_seconds) s += at + "dwell " + trace_number(b.dwell_seconds - a.dwell_seconds) + "\n";

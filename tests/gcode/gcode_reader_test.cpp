@@ -340,7 +340,35 @@ TEST(GcodeReader, G91MovesTravelFromWhereTheToolIs) {
   // interpreter reads it (its end is (12, 3), not (13, 4)).
   EXPECT_EQ(b[6].ctrl, (std::vector<Vec3>{{10, 3, -1}, {11, 4, -1}, {12, 3, -1}}));
   EXPECT_EQ(b[7].to, (Vec3{0, 3, -1}));
-  EXPECT_TRUE(in.state().absolute);
+  EXPECT_EQ(in.state().distance, DistanceMode::absolute);
+}
+
+// Each modal group's value is a named enum whose value is its G number.
+TEST(GcodeReader, ModalGroupsReadAsNamedValues) {
+  GcodeInterpreter in;
+  const MachineState& s = in.state();
+  EXPECT_EQ(s.plane, Plane::xy);
+  EXPECT_EQ(s.distance, DistanceMode::absolute);
+  EXPECT_EQ(s.arc_centers, ArcCenterMode::incremental);
+  EXPECT_EQ(s.coord_system, WorkOffset::g54);
+  EXPECT_EQ(s.path_mode, PathMode::unset);
+  EXPECT_EQ(s.cutter_comp, CutterCompMode::off);
+  in.feed_line("G18 G91 G90.1 G59 G61.1", 1);
+  EXPECT_EQ(s.plane, Plane::zx);
+  EXPECT_EQ(s.distance, DistanceMode::incremental);
+  EXPECT_EQ(s.arc_centers, ArcCenterMode::absolute);
+  EXPECT_EQ(s.coord_system, WorkOffset::g59);
+  EXPECT_EQ(s.path_mode, PathMode::exact_path);
+  in.feed_line("G17 G90 G64 P0.01", 2);
+  EXPECT_EQ(s.plane, Plane::xy);
+  EXPECT_EQ(s.path_mode, PathMode::blend);
+  EXPECT_EQ(s.path_tolerance, 0.01);
+  in.set_tool_diameters_mm({{3, 6.0}});
+  in.feed_line("G00 X0 Y0 Z5", 3);
+  in.feed_line("G42 D3", 4);
+  EXPECT_EQ(s.cutter_comp, CutterCompMode::right);
+  EXPECT_EQ(static_cast<int>(s.cutter_comp), 42);
+  EXPECT_EQ(s.cutter_comp_radius, 3.0);
 }
 
 TEST(GcodeReader, G91FromAPositionNoMoveHasSetIsRefusedUnlessItStaysPut) {
@@ -396,7 +424,7 @@ TEST(GcodeReader, G91G28Z0SendsZHomeStraightFromWhereItIs) {
   EXPECT_EQ(h[0].from_known, 0u);
   EXPECT_EQ(h[0].to.z, 0);
   EXPECT_EQ(in.state().known_axes, 4u);
-  EXPECT_FALSE(in.state().absolute);
+  EXPECT_EQ(in.state().distance, DistanceMode::incremental);
 }
 
 // G90.1: an arc's centre words are a point; G91.1 (the default): the

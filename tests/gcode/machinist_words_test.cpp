@@ -70,7 +70,7 @@ TEST(MachinistWords, AreReadExecutedAndTraced) {
   std::vector<MotionBlock> blocks;
   std::string trace;
   const MachineState s = run(kProgram, &blocks, &trace);
-  EXPECT_EQ(s.coord_system, 55);
+  EXPECT_EQ(s.coord_system, WorkOffset::g55);
   EXPECT_FALSE(s.tool_length_comp);
   EXPECT_TRUE(s.coolant_mist);
   EXPECT_FALSE(s.coolant_flood);

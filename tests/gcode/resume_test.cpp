@@ -59,8 +59,8 @@ void expect_same_state(const Ran& want, const Ran& got) {
   EXPECT_EQ(g.units, w.units);
   EXPECT_EQ(g.units_set, w.units_set);
   EXPECT_EQ(g.plane, w.plane);
-  EXPECT_EQ(g.absolute, w.absolute);
-  EXPECT_EQ(g.arc_centers_absolute, w.arc_centers_absolute);
+  EXPECT_EQ(g.distance, w.distance);
+  EXPECT_EQ(g.arc_centers, w.arc_centers);
   EXPECT_EQ(g.coord_system, w.coord_system);
   EXPECT_EQ(g.tool, w.tool);
   EXPECT_EQ(got.cont.selected_tool, want.cont.selected_tool);
@@ -346,8 +346,8 @@ TEST(Resume, AnIncrementalProgramResumesInItsOwnDistanceModes) {
       "G21 G90 G17\nT1 M06\nS9000 M03\nG00 X0. Y0. Z5.\nG91 G90.1\nG01 Z-6. F200.\nX10. F800.\n"
       "G02 X10. Y0. I15. J0.\nG01 Y10.\nG00 Z6.\nG90 G91.1\nM30\n";
   const ResumePlan p = check_resume_text(prog, "generic", 9, 9);
-  EXPECT_FALSE(p.state.absolute);
-  EXPECT_TRUE(p.state.arc_centers_absolute);
+  EXPECT_EQ(p.state.distance, DistanceMode::incremental);
+  EXPECT_EQ(p.state.arc_centers, ArcCenterMode::absolute);
   EXPECT_NE(p.preamble.find("G17 G90 G94 G40 G21 G54 G90.1\n"), std::string::npos) << p.preamble;
   EXPECT_EQ(p.preamble.substr(p.preamble.size() - 4), "G91\n") << p.preamble;
   // At the arc: its centre, a point, is restored with it.
@@ -362,8 +362,8 @@ TEST(Resume, ThePreambleRestoresEveryModalGroupTheReaderTracks) {
       "G20 G90 G17\nG55 G61.1\nT3 M06\nT4\nS8000 M04\nM07\nM08\nG00 Z0.5\nX1. Y1.\nG01 Z-0.05 F12.\n"
       "X2. F30.\nG00 Z0.5\nX3.\nY2.\nM05\nM09\nM30\n";
   const ResumePlan p = check_resume_text(prog, "generic", 14, 14);
-  EXPECT_EQ(p.state.coord_system, 55);
-  EXPECT_EQ(p.state.path_mode, 611);
+  EXPECT_EQ(p.state.coord_system, WorkOffset::g55);
+  EXPECT_EQ(p.state.path_mode, PathMode::exact_path);
   EXPECT_TRUE(p.state.spindle_on);
   EXPECT_TRUE(p.state.spindle_ccw);
   EXPECT_TRUE(p.state.coolant_mist && p.state.coolant_flood);

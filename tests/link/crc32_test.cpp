@@ -40,3 +40,12 @@ TEST(Crc32, DetectsEverySingleBitFlip) {
       EXPECT_NE(crc32(t), ref) << "byte " << i << " bit " << bit;
     }
 }
+
+// Messages show CRC-32s and session ids as eight upper-case hex digits,
+// leading zeros kept.
+TEST(Crc32, Hex32IsEightUpperCaseDigits) {
+  EXPECT_EQ(hex32(crc32("123456789")), "CBF43926");
+  EXPECT_EQ(hex32(0), "00000000");
+  EXPECT_EQ(hex32(0x425Au), "0000425A");
+  EXPECT_EQ(hex32(0xFFFFFFFFu), "FFFFFFFF");
+}

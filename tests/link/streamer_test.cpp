@@ -105,6 +105,26 @@ TEST(Streamer, RefusesProgramsThatAreNotText) {
   }
 }
 
+// A controller that cannot be reached, or an address that is not one, is
+// named as the place of the error (Place::file), not as unstructured text.
+TEST(Streamer, TheControllersAddressIsThePlace) {
+  try {
+    stream_program("G21\n", {"127.0.0.1", 1}, {});
+    ADD_FAILURE() << "connected to port 1";
+  } catch (const IoError& e) {
+    EXPECT_EQ(e.place().file, "127.0.0.1:1") << e.what();
+    EXPECT_TRUE(e.place().text.empty()) << e.place().text;
+    EXPECT_EQ(e.where(), "127.0.0.1:1");
+  }
+  try {
+    parse_endpoint("localhost");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.place().file, "localhost");
+    EXPECT_TRUE(e.place().text.empty()) << e.place().text;
+  }
+}
+
 TEST(StreamCommand, ExitCodesAndProgressLines) {
   test::TempDir dir;
   test::SimProcess sim(dir, {"--buffer", "1024", "--trace", (dir / "listen.trace").string(), "--fault", "drop-after:3",

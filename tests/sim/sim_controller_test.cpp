@@ -319,6 +319,9 @@ TEST(SimController, AMalformedLineRaisesAnAlarmNamingItsLine) {
   EXPECT_EQ(s.alarm, Alarm::gcode);
   EXPECT_EQ(s.alarm_line, 4u);
   EXPECT_EQ(ctl.alarm_text().rfind("line 4: ", 0), 0u) << ctl.alarm_text();
+  // The message and its line are kept apart; only the text for people joins them.
+  EXPECT_EQ(ctl.alarm_text(), "line 4: " + ctl.alarm_message());
+  EXPECT_EQ(ctl.alarm_message().find("line 4"), std::string::npos) << ctl.alarm_message();
   std::lock_guard lk(rec.m);
   // Lines after the refused one are never executed.
   EXPECT_EQ(rec.numbers, (std::vector<long>{1, 2, 3, 4}));

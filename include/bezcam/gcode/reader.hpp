@@ -7,13 +7,14 @@
 /// structure): a line is checked completely before it changes the state.
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "bezcam/machine/cutter_comp.hpp"
+#include "bezcam/kernel/arc.hpp"
 #include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/machine/motion.hpp"
 #include "bezcam/gcode/lint.hpp"  // GcodeFinding, lint_gcode()
@@ -36,19 +37,44 @@ enum class ModalMotion : int {
   nurbs_g06_3 = 63,///< G06.3 (the seeds' wording of the Fanuc block)
 };
 
+/// Distance mode (group 3): how the X Y Z words of a move are read.
+enum class DistanceMode : unsigned char {
+  absolute,     ///< G90: the end point
+  incremental,  ///< G91: the travel from where the tool is
+};
+
+/// Arc centre mode (group 4): how the centre words of G02/G03 are read.
+enum class ArcCenterMode : unsigned char {
+  incremental,  ///< G91.1 (the default): the centre's offset from the arc's start
+  absolute,     ///< G90.1: the centre as a point in program coordinates
+};
+
+/// Cutter radius compensation (group 7); the value is the G number.
+enum class CutterCompMode : int {
+  off = 40,    ///< G40
+  left = 41,   ///< G41: the tool left of the path
+  right = 42,  ///< G42: the tool right of the path
+};
+
+/// Work coordinate system (group 12), G54..G59; the value is the G number.
+enum class WorkOffset : int { g54 = 54, g55 = 55, g56 = 56, g57 = 57, g58 = 58, g59 = 59 };
+
+/// Path control mode (group 13); the value is the G number, G61.1 as 611.
+enum class PathMode : int {
+  unset = 0,         ///< no line has set it: the controller's default applies
+  exact_stop = 61,   ///< G61
+  exact_path = 611,  ///< G61.1
+  blend = 64,        ///< G64 (with its tolerance in path_tolerance)
+};
+
 struct MachineState {
   Vec3 pos;
   unsigned known_axes = 0;   ///< X 1, Y 2, Z 4: set once a word gave the axis
   Units units = Units::mm;
   bool units_set = false;
-  /// Distance mode (group 3): G90 absolute (true), G91 incremental: the
-  /// X Y Z words of a move are then its travel from where the tool is.
-  bool absolute = true;
-  /// Arc centre mode (group 4): G90.1 (true) takes an arc's centre words as
-  /// a point in program coordinates, G91.1 (the default) as its offset
-  /// from the arc's start.
-  bool arc_centers_absolute = false;
-  int plane = 17;
+  DistanceMode distance = DistanceMode::absolute;
+  ArcCenterMode arc_centers = ArcCenterMode::incremental;
+  Plane plane = Plane::xy;  ///< group 2: G17, G18, G19
   ModalMotion motion = ModalMotion::none;
   double feed = 0;
   double spindle_rpm = 0;
@@ -56,9 +82,9 @@ struct MachineState {
   bool spindle_ccw = false;  ///< the spindle was last started with M04 (M03: false)
   int tool = 0;
   bool program_end = false;  ///< M02 / M30 seen
-  /// Work coordinate system G54..G59 (54..59). The simulated controller's
-  /// work offsets are all zero: program and machine coordinates agree.
-  int coord_system = 54;
+  /// Work coordinate system. The simulated controller's work offsets are
+  /// all zero: program and machine coordinates agree.
+  WorkOffset coord_system = WorkOffset::g54;
   /// Tool length compensation G43 H- (on, with its H number) or G49 (off).
   /// The offsets are zero in the simulated controller; the state is kept so
   /// that the trace shows what the program asked.
@@ -66,18 +92,16 @@ struct MachineState {
   int tool_length_h = 0;
   bool coolant_mist = false;   ///< M07 (M09 stops both)
   bool coolant_flood = false;  ///< M08
-  /// Path control mode (group 13): 64 G64, 61 G61, 611 G61.1; 0 until a
-  /// line sets it (the controller's default then applies).
-  int path_mode = 0;
+  PathMode path_mode = PathMode::unset;
   double dwell_seconds = 0;    ///< G04 P- dwells so far, in seconds
   /// Path mode: -1 until the program sets one (the controller's default
   /// applies), 0 for exact stop (G61, G61.1), the tolerance P of G64 P-,
   /// infinity for G64 without P (corners as fast as the planner can).
   double path_tolerance = -1;
   int program_stops = 0;       ///< M00 / M01 seen so far (the operator resumes)
-  /// Cutter radius compensation: 41 (G41, tool left), 42 (G42) or 40 (off),
-  /// with its D register and the radius it holds (program units).
-  int cutter_comp = 40;
+  /// Cutter radius compensation, with its D register and the radius it
+  /// holds (program units).
+  CutterCompMode cutter_comp = CutterCompMode::off;
   int cutter_comp_d = 0;
   double cutter_comp_radius = 0;
 };
@@ -130,6 +154,11 @@ class GcodeInterpreter {
   /// With a profile, travel limits and maximum feed are enforced too. The
   /// profile must outlive the interpreter.
   explicit GcodeInterpreter(const MachineProfile* profile = nullptr);
+  ~GcodeInterpreter();
+  GcodeInterpreter(const GcodeInterpreter& other);
+  GcodeInterpreter& operator=(const GcodeInterpreter& other);
+  GcodeInterpreter(GcodeInterpreter&&) noexcept;
+  GcodeInterpreter& operator=(GcodeInterpreter&&) noexcept;
 
   /// Interprets one line (`line_no` is 1-based). Returns the motion blocks
   /// the line completes (a NURBS block completes on the line that ends it).
@@ -139,13 +168,11 @@ class GcodeInterpreter {
   /// End of input: throws if a multi-line block is still open.
   std::vector<MotionBlock> finish();
 
-  const MachineState& state() const { return state_; }
+  const MachineState& state() const;
 
   /// The D registers for cutter compensation (diameters in mm), added to
   /// the profile's tool_diameters_mm (a reader without a profile has none).
-  void set_tool_diameters_mm(const std::map<int, double>& d) {
-    for (const auto& [k, v] : d) tool_diameters_mm_[k] = v;
-  }
+  void set_tool_diameters_mm(const std::map<int, double>& d);
 
   /// What the next line depends on besides state(): the multi-line block
   /// it may be inside and the words earlier lines left for it. Used to
@@ -157,48 +184,14 @@ class GcodeInterpreter {
     int selected_tool = -1;  ///< the last T word (-1: none); M06 puts it in the spindle
     int end_line = 0;        ///< the M02 / M30 line, 0 before it
   };
-  Continuation continuation() const {
-    return {more_.open, more_.open_line, more_.g5_chain, more_.selected_tool, more_.end_line};
-  }
+  Continuation continuation() const;
 
  private:
-  struct Impl;  // the interpretation of one line (src/gcode/interpreter_impl.hpp)
+  struct Impl;     // what the reader keeps between lines (src/gcode/interpreter_impl.hpp)
+  struct LineRun;  // the interpretation of one line (src/gcode/interpreter_impl.hpp)
   friend std::vector<GcodeFinding> lint_gcode(std::string_view text, const MachineProfile& profile);
 
-  // Everything beyond MachineState that later lines depend on. A line is
-  // interpreted on copies of state_ and more_, committed only when accepted.
-  struct More {
-    ModalMotion open = ModalMotion::none;  // open multi-line block: none, a Fanuc one, G5.2
-    int open_line = 0;     // where it started
-    int order = 0;         // its rank / order
-    double open_feed = 0;  // the feed it runs at
-    std::vector<Vec3> ctrl;
-    std::vector<double> weights, knots;  // Fanuc knots; NaN where lint recovered a missing K
-    std::vector<int> knot_lines;
-    int knot_only = 0;       // Fanuc: knot-only blocks so far
-    int knot_only_line = 0;  // the first of them
-    int nurbs_mode_line = 0; // where the Fanuc NURBS mode was entered
-    int selected_tool = -1;  // last T word (-1: none)
-    bool g5_chain = false;   // the previous motion was a G5: I and J may be left out
-    Vec3 g5_next_ij;         // ... and then default to minus its P and Q
-    bool moved = false;      // a move has been made (units may no longer change)
-    bool distance_set = false, plane_set = false;
-    int end_line = 0;        // M02 / M30 seen there
-    long last_n = -1;        // last N word
-    int last_line = 0;       // last line fed
-    // Lint-only bookkeeping: findings already reported once.
-    bool noted_modes = false, noted_position = false, noted_spindle = false;
-    double feed_reported = -1;  // the excessive feed last reported
-    CutterComp comp;            // G41/G42: the tool-centre path, one move behind
-  };
-
-  const MachineProfile* profile_;
-  std::map<int, double> tool_diameters_mm_;
-  MachineState state_;
-  More more_;
-  // lint_gcode(): recoverable problems are recorded here (and the line goes
-  // on with the values as given) instead of thrown.
-  std::vector<GcodeFinding>* findings_ = nullptr;
+  std::unique_ptr<Impl> impl_;
 };
 
 /// Reads a whole program; throws at the first error (InputError, "line N").

@@ -3,6 +3,7 @@
 /// the IEEE 802.3 / zlib polynomial, reflected (0xEDB88320), initial value
 /// and final XOR 0xFFFFFFFF. Check value: crc32("123456789") == 0xCBF43926.
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace bezcam::link {
@@ -21,5 +22,9 @@ class Crc32 {
 
 /// CRC-32 of a whole byte string.
 std::uint32_t crc32(std::string_view bytes) noexcept;
+
+/// A 32-bit value as messages show CRC-32s, session ids and the magic
+/// register: eight upper-case hexadecimal digits (0xCBF43926 -> "CBF43926").
+std::string hex32(std::uint32_t v);
 
 }  // namespace bezcam::link

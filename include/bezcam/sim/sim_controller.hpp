@@ -135,8 +135,11 @@ class SimController {
 
   /// The status block as connection `c` reads it.
   Status status(ConnId c = 0) const;
-  /// The current alarm's message ("" when none).
+  /// The current alarm's text for people, as register alarm_text holds it:
+  /// "line N: " (when the alarm has a line) and the message ("" when none).
   std::string alarm_text() const;
+  /// The current alarm's message alone; its line is status().alarm_line.
+  std::string alarm_message() const;
   /// Waits until the program is DONE or in ALARM and the trace holds its
   /// final record; false after `timeout`.
   bool wait_final(std::chrono::milliseconds timeout) const;
@@ -156,6 +159,10 @@ class SimController {
   /// Stops the program at once with alarm `a` at `line` (kMachineLine:
   /// the line the machine had reached).
   void raise_alarm_locked(Alarm a, long line, std::string id, std::string message);
+  /// Enters ALARM with alarm `a` at `line` (0: none) and `message`, and
+  /// logs it; the caller sees to the trace.
+  void record_alarm_locked(Alarm a, long line, std::string message);
+  std::string alarm_text_locked() const;
   static constexpr long kMachineLine = -1;
   std::uint32_t next_session_locked();
   std::size_t buffered_locked() const { return buf_.size() - head_; }
@@ -203,7 +210,7 @@ class SimController {
   // Results of execution (guarded by m_, written by the executor).
   Alarm alarm_ = Alarm::none;
   std::uint32_t alarm_line_ = 0;
-  std::string alarm_text_;
+  std::string alarm_message_;  // without its line
   std::unique_ptr<Pending> pending_alarm_;
   bool final_traced_ = false;
   long line_no_ = 0, lines_done_ = 0, blocks_done_ = 0;
@@ -233,7 +240,7 @@ class SimController {
   struct Failure {
     Alarm alarm = Alarm::none;
     long line = 0;
-    std::string text;   // the alarm's text ("line N: ...")
+    std::string message;  // the alarm's message (its line is `line`)
     std::string trace;  // its trace record
   };
   std::optional<Failure> failure_;
