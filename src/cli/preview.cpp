@@ -123,7 +123,7 @@ int run_program(const PreviewArgs& o) {
   in.units = reader.state().units;
   const char* u = to_string(in.units);
   if (job && job->units != in.units)
-    throw InputError(errc::preview_units, o.program,
+    throw InputError(errc::preview_units, Place::at_file(o.program),
                      std::string("the program is in ") + u + " (" + (in.units == Units::mm ? "G21" : "G20") +
                          ") but the job " + job->source + " is in " + to_string(job->units) +
                          "; compare a program with the job it was made from");
@@ -197,7 +197,8 @@ int run_program(const PreviewArgs& o) {
 int run_preview(const PreviewArgs& o) {
   if (!o.program.empty()) return run_program(o);
   if (o.job.empty())
-    throw InputError(errc::usage_preview, "JOB", "give a job file to draw, or a G-code program with --program FILE.nc");
+    throw InputError(errc::usage_preview, Place::at_option("JOB"),
+                     "give a job file to draw, or a G-code program with --program FILE.nc");
   const Job job = read_job(o.job, o.conv);
   const MachineProfile m = resolve_profile(job, o.conv.machine);
   const size_t n = job.entities.size();

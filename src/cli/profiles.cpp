@@ -78,7 +78,7 @@ MachineProfile resolve_profile(const Job& job, const std::string& cli_machine) {
     } catch (const InputError& e) {
       // The name came from the file, not from the command line.
       if (e.id() != errc::machine_unknown) throw;
-      throw InputError(e.id(), job.source + ": machine",
+      throw InputError(e.id(), Place::in_json(job.source, "machine"),
                        e.message() + "; fix the file's \"machine\" or override it with --machine");
     }
   }

@@ -127,13 +127,14 @@ std::vector<std::uint64_t> parse_faults(const std::vector<std::string>& faults, 
   for (const auto& f : faults) {
     const auto colon = f.find(':');
     const std::string k = f.substr(0, colon);
+    // The place is the --fault value as given: which of them is wrong.
     if (k != "drop-before" && k != "drop-after" && k != "corrupt")
-      throw InputError(errc::sim_fault, f, "expected drop-before:N, drop-after:N or corrupt:N");
+      throw InputError(errc::sim_fault, Place::at_option(f), "expected drop-before:N, drop-after:N or corrupt:N");
     std::uint64_t n = 0;
     try {
       n = std::stoull(colon == std::string::npos ? "" : f.substr(colon + 1));
     } catch (const std::exception&) {
-      throw InputError(errc::sim_fault, f, "expected a chunk count after the colon, such as drop-after:5");
+      throw InputError(errc::sim_fault, Place::at_option(f), "expected a chunk count after the colon, such as drop-after:5");
     }
     if (k == kind) out.push_back(n);
   }
@@ -195,7 +196,7 @@ void plan_and_write(const SimulateArgs& o, const MachineProfile& profile, const 
 
 int run_simulate(const SimulateArgs& o) {
   if (o.listen.empty() && o.program.empty())
-    throw InputError(errc::sim_usage, "simulate", "give --listen HOST:PORT or --program FILE.nc");
+    throw InputError(errc::sim_usage, Place::at_option("simulate"), "give --listen HOST:PORT or --program FILE.nc");
   ControllerConfig cfg;
   cfg.profile = load_profile_option(o.machine);
   apply_tool_diameters(cfg.profile, o.tool_diameters);
