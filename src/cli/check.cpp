@@ -9,19 +9,13 @@
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/import/drawing.hpp"
-#include "command.hpp"
-#include "options.hpp"
+#include "commands.hpp"
+#include "job_input.hpp"
+#include "profiles.hpp"
 
 namespace bezcam::cli {
-namespace {
 
-struct Options {
-  std::string job;
-  ConversionOptions conv;
-  PostOptions post;
-} o;
-
-CLI::App* add(CLI::App& app) {
+CLI::App* setup_check(CLI::App& app, CheckArgs& o) {
   auto* s = app.add_subcommand("check", "Validate a job and print what it holds (entities, degrees, lengths, "
                                         "continuity at path joints); writes no G-code.");
   s->add_option("JOB", o.job, "job file (JSON)")->required();
@@ -32,6 +26,8 @@ CLI::App* add(CLI::App& app) {
             "only the program is not written.");
   return s;
 }
+
+namespace {
 
 // What a drawing held, per layer: elements read (by kind) and skipped.
 void print_drawing(const import::Drawing& d) {
@@ -50,7 +46,9 @@ void print_drawing(const import::Drawing& d) {
   }
 }
 
-int run() {
+}  // namespace
+
+int run_check(const CheckArgs& o) {
   import::Drawing drawing;
   const Job job = read_job(o.job, o.conv, &drawing);
   if (!drawing.format.empty()) print_drawing(drawing);
@@ -121,8 +119,4 @@ int run() {
   return 0;
 }
 
-Command cmd{"check", add, run};
-RegisterCommand reg(&cmd);
-
-}  // namespace
 }  // namespace bezcam::cli

@@ -7,21 +7,15 @@
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/report/report.hpp"
 #include "bezcam/job/job_json.hpp"
-#include "command.hpp"
-#include "options.hpp"
+#include "commands.hpp"
+#include "job_input.hpp"
+#include "output_file.hpp"
+#include "profiles.hpp"
 #include "progress.hpp"
 
 namespace bezcam::cli {
-namespace {
 
-struct Options {
-  std::string job, out = "-", report;
-  ConversionOptions conv;
-  PostOptions post;
-  bool quiet = false, compare = false;
-} o;
-
-CLI::App* add(CLI::App& app) {
+CLI::App* setup_convert(CLI::App& app, ConvertArgs& o) {
   auto* s = app.add_subcommand("convert", "Write the G-code program for a job (stdout when no -o).");
   s->add_option("JOB", o.job, "job file (JSON, curve-file format version 1)")->required();
   s->add_option("-o,--output-file", o.out, "program file to write; written whole or not at all");
@@ -37,6 +31,8 @@ CLI::App* add(CLI::App& app) {
   return s;
 }
 
+namespace {
+
 // One output mode's figures for --compare-outputs.
 ProgramReport::Alternative alternative(OutputMode mode, const ProgramReport& rep) {
   ProgramReport::Alternative a;
@@ -47,7 +43,9 @@ ProgramReport::Alternative alternative(OutputMode mode, const ProgramReport& rep
   return a;
 }
 
-int run() {
+}  // namespace
+
+int run_convert(const ConvertArgs& o) {
   // Both files on stdout would be one unreadable stream; one file for both
   // would lose the program.
   if (!o.report.empty() && (o.report == o.out || (o.report == "-" && o.out == "-")))
@@ -121,8 +119,4 @@ int run() {
   return 0;
 }
 
-Command cmd{"convert", add, run};
-RegisterCommand reg(&cmd);
-
-}  // namespace
 }  // namespace bezcam::cli

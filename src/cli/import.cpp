@@ -5,19 +5,13 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/import/read_drawing.hpp"
-#include "command.hpp"
-#include "options.hpp"
+#include "commands.hpp"
+#include "job_input.hpp"
+#include "output_file.hpp"
 
 namespace bezcam::cli {
-namespace {
 
-struct Options {
-  std::string drawing, out = "-";
-  ConversionOptions conv;  // --set and --layer only
-  bool quiet = false;
-} o;
-
-CLI::App* add(CLI::App& app) {
+CLI::App* setup_import(CLI::App& app, ImportArgs& o) {
   auto* s = app.add_subcommand("import", "Write the job (JSON) a drawing (.svg, .dxf) is read as: exact curves, "
                                          "ids from the drawing (stdout when no -o).");
   s->add_option("DRAWING", o.drawing, "an SVG or DXF drawing")->required();
@@ -30,7 +24,7 @@ CLI::App* add(CLI::App& app) {
   return s;
 }
 
-int run() {
+int run_import(const ImportArgs& o) {
   if (!import::is_drawing(o.drawing))
     throw InputError(errc::import_not_a_drawing, Place::at_file(o.drawing),
                      "expected a drawing named .svg or .dxf, found another name (a job file needs no import)");
@@ -51,8 +45,4 @@ int run() {
   return 0;
 }
 
-Command cmd{"import", add, run};
-RegisterCommand reg(&cmd);
-
-}  // namespace
 }  // namespace bezcam::cli

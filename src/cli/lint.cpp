@@ -10,18 +10,13 @@
 #include "bezcam/error.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/gcode/reader.hpp"
-#include "command.hpp"
+#include "commands.hpp"
+#include "exit_status.hpp"
+#include "profiles.hpp"
 
 namespace bezcam::cli {
-namespace {
 
-struct Options {
-  std::string file, machine = "generic";
-  bool quiet = false;
-  std::vector<std::string> tool_diameters;
-} o;
-
-CLI::App* add(CLI::App& app) {
+CLI::App* setup_lint(CLI::App& app, LintArgs& o) {
   auto* s = app.add_subcommand("lint", "Check a G-code program against a machine profile: syntax, NURBS block rules "
                                        "(knot order, counts, clamping, weights), arcs valid after rounding, travel "
                                        "limits, feeds. Exit 0 clean, 2 findings, 3 unreadable file.");
@@ -32,7 +27,7 @@ CLI::App* add(CLI::App& app) {
   return s;
 }
 
-int run() {
+int run_lint(const LintArgs& o) {
   MachineProfile m = load_profile_option(o.machine);
   apply_tool_diameters(m, o.tool_diameters);
   if (std::filesystem::is_directory(o.file)) throw IoError(errc::io_read, Place::at_file(o.file), "is a directory, not a G-code file");
@@ -43,11 +38,7 @@ int run() {
                                                                                      " finding" +
                                                                                      (findings.size() == 1 ? "" : "s"))
               << " for machine " << m.name << "\n";
-  return findings.empty() ? 0 : 2;
+  return findings.empty() ? exit_status::ok : exit_status::invalid;
 }
 
-Command cmd{"lint", add, run};
-RegisterCommand reg(&cmd);
-
-}  // namespace
 }  // namespace bezcam::cli

@@ -26,24 +26,16 @@
 #include "bezcam/report/preview_svg.hpp"
 #include "bezcam/report/report.hpp"
 #include "bezcam/job/job_json.hpp"
-#include "command.hpp"
-#include "options.hpp"
+#include "commands.hpp"
+#include "job_input.hpp"
+#include "output_file.hpp"
+#include "profiles.hpp"
 #include "progress.hpp"
 
 namespace bezcam::cli {
-namespace {
 
-struct Options {
-  std::string job, out, program;
-  ConversionOptions conv;
-  double width = 1200;
-  bool no_control = false, deviation = false, feed = false, quiet = false;
-  std::vector<std::string> tool_diameters;  // --tool-diameter D=MM
-} o;
-CLI::App* sub = nullptr;
-
-CLI::App* add(CLI::App& app) {
-  auto* s = sub = app.add_subcommand("preview", "Draw a job's curves, control polygons and tool path as an SVG file "
+CLI::App* setup_preview(CLI::App& app, PreviewArgs& o) {
+  auto* s = app.add_subcommand("preview", "Draw a job's curves, control polygons and tool path as an SVG file "
                                           "(top view; isometric view too for 3D work).");
   s->add_option("JOB", o.job, "job file (JSON, curve-file format version 1); optional with --program");
   s->add_option("--program", o.program,
@@ -60,8 +52,11 @@ CLI::App* add(CLI::App& app) {
   fd->excludes(s->get_option("--deviation"));
   s->add_option("--width", o.width, "width of the drawing in pixels (default 1200)")->check(CLI::Range(400.0, 20000.0));
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+  s->parse_complete_callback([s, &o] { o.output_given = s->count("--output") > 0; });
   return s;
 }
+
+namespace {
 
 std::string read_text(const std::string& path, const char* what) {
   if (std::filesystem::is_directory(path)) throw IoError(errc::io_read, Place::at_file(path), std::string("is a directory, not a ") + what);
@@ -88,8 +83,8 @@ MotionPlan feed_plan(const MachineProfile& m, const Timeline& tl, PreviewInput& 
 
 // --program: the motion of a G-code file, read line by line with progress
 // in bytes; a refusal names the file and the line.
-int run_program() {
-  if (sub->count("--output") > 0)
+int run_program(const PreviewArgs& o) {
+  if (o.output_given)
     throw InputError(errc::usage_preview, Place::at_option("--output"),
                      "--output chooses the moves of a program built from the job; it does not apply to --program, "
                      "which is drawn as written (leave one of them out)");
@@ -128,7 +123,7 @@ int run_program() {
   in.units = reader.state().units;
   const char* u = to_string(in.units);
   if (job && job->units != in.units)
-    throw InputError(errc::preview_units, o.program,
+    throw InputError(errc::preview_units, Place::at_file(o.program),
                      std::string("the program is in ") + u + " (" + (in.units == Units::mm ? "G21" : "G20") +
                          ") but the job " + job->source + " is in " + to_string(job->units) +
                          "; compare a program with the job it was made from");
@@ -197,10 +192,13 @@ int run_program() {
   return 0;
 }
 
-int run() {
-  if (!o.program.empty()) return run_program();
+}  // namespace
+
+int run_preview(const PreviewArgs& o) {
+  if (!o.program.empty()) return run_program(o);
   if (o.job.empty())
-    throw InputError(errc::usage_preview, "JOB", "give a job file to draw, or a G-code program with --program FILE.nc");
+    throw InputError(errc::usage_preview, Place::at_option("JOB"),
+                     "give a job file to draw, or a G-code program with --program FILE.nc");
   const Job job = read_job(o.job, o.conv);
   const MachineProfile m = resolve_profile(job, o.conv.machine);
   const size_t n = job.entities.size();
@@ -276,8 +274,4 @@ int run() {
   return 0;
 }
 
-Command cmd{"preview", add, run};
-RegisterCommand reg(&cmd);
-
-}  // namespace
 }  // namespace bezcam::cli

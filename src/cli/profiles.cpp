@@ -1,18 +1,13 @@
+// Where the CLI finds machine profiles, and which one a command uses.
+#include "profiles.hpp"
+
 #include <charconv>
 #include <cstdlib>
-// Where the CLI finds machine profiles, and which one a command uses.
 #include <filesystem>
-#include <iostream>
 #include <system_error>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
-#include "bezcam/job/job_json.hpp"
-#include "bezcam/job/settings.hpp"
-#include "bezcam/import/read_drawing.hpp"
-#include "command.hpp"
-#include "options.hpp"
 
 namespace bezcam::cli {
 
@@ -83,73 +78,11 @@ MachineProfile resolve_profile(const Job& job, const std::string& cli_machine) {
     } catch (const InputError& e) {
       // The name came from the file, not from the command line.
       if (e.id() != errc::machine_unknown) throw;
-      throw InputError(e.id(), job.source + ": machine",
+      throw InputError(e.id(), Place::in_json(job.source, "machine"),
                        e.message() + "; fix the file's \"machine\" or override it with --machine");
     }
   }
   return load_profile_option("generic");
-}
-
-}  // namespace bezcam::cli
-
-namespace bezcam::cli {
-
-void print_warnings(const std::vector<std::string>& warnings) {
-  for (const auto& w : warnings) std::cerr << "bezcam: warning: " << w << "\n";
-}
-
-Job read_job(const std::string& path) {
-  std::vector<std::string> warnings;
-  JobReadOptions ro;
-  ro.warnings = &warnings;
-  try {
-    return load_job(path, ro);
-  } catch (const Error&) {
-    print_warnings(warnings);
-    throw;
-  }
-}
-
-namespace {
-// KEY=VALUE of --set.
-std::pair<std::string, std::string> split_setting(const std::string& kv) {
-  const size_t eq = kv.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw InputError(errc::import_setting, Place::at_option("--set"),
-                     "expected KEY=VALUE (for example --set feed=600), found \"" + kv + "\"");
-  return {kv.substr(0, eq), kv.substr(eq + 1)};
-}
-}  // namespace
-
-import::ImportOptions import_options(const ConversionOptions& o) {
-  import::ImportOptions io;
-  for (const auto& kv : o.sets) io.settings.push_back(split_setting(kv));
-  // Keys and values checked before the drawing is read: an unknown key is
-  // a mistake on the command line, whatever the drawing holds.
-  (void)settings_json(io.settings);
-  io.layers = o.layers;
-  return io;
-}
-
-Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing) {
-  if (!import::is_drawing(path)) {
-    if (!o.sets.empty() || !o.layers.empty())
-      throw InputError(errc::import_setting, Place::at_option(o.sets.empty() ? "--layer" : "--set"),
-                       path + " is a job file, which states its own settings and has no layers; --set and --layer "
-                              "apply to drawings (.svg, .dxf)");
-    return read_job(path);
-  }
-  const import::ImportOptions io = import_options(o);
-  import::Drawing d = import::read_drawing(path);
-  if (drawing) *drawing = d;
-  std::vector<std::string> warnings;
-  try {
-    Job job = import::to_job(d, io, &warnings);
-    return job;
-  } catch (const Error&) {
-    print_warnings(warnings);
-    throw;
-  }
 }
 
 }  // namespace bezcam::cli

@@ -62,9 +62,11 @@ std::string format_duration(double seconds) {
   return std::to_string(s / 3600) + " h " + std::to_string((s / 60) % 60) + " min";
 }
 
+bool stderr_is_tty() { return ::isatty(STDERR_FILENO) == 1; }
+
 ProgressConfig progress_config(bool quiet) {
   ProgressConfig c;
-  c.style = quiet ? ProgressStyle::off : (::isatty(STDERR_FILENO) == 1 ? ProgressStyle::bar : ProgressStyle::lines);
+  c.style = quiet ? ProgressStyle::off : (stderr_is_tty() ? ProgressStyle::bar : ProgressStyle::lines);
   if (const char* s = std::getenv("BEZCAM_PROGRESS"); s && !quiet) {
     const std::string v = s;
     if (v == "bar") c.style = ProgressStyle::bar;

@@ -43,6 +43,9 @@ struct ProgressConfig {
   std::function<double()> clock;
 };
 
+/// Whether stderr is a terminal (a bar rather than plain lines).
+bool stderr_is_tty();
+
 /// The configuration for a command run: `off` when quiet, else `bar` when
 /// stderr is a terminal and `lines` when it is not. The environment can
 /// override: BEZCAM_PROGRESS = bar | lines | off, BEZCAM_PROGRESS_DELAY =

@@ -4,30 +4,30 @@
 #include <iostream>
 
 #include "bezcam/machine/machine_profile.hpp"
-#include "options.hpp"
+#include "validators.hpp"
 
 namespace bezcam::cli {
 
-void ResumeOption::add(CLI::App* cmd) {
-  auto* from = cmd->add_option("--from-line", from_line_,
+void add_resume_options(CLI::App* cmd, ResumeArgs& r) {
+  auto* from = cmd->add_option("--from-line", r.from_line,
                   "resume the program at this line (1-based): from the nearest line at or before it where a cut may "
                   "begin, after a preamble that restores the modal state there, retracts, moves over and plunges")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--safe-z", safe_z_, "with --from-line: the height (mm) the preamble retracts to (default: the "
+  cmd->add_option("--safe-z", r.safe_z, "with --from-line: the height (mm) the preamble retracts to (default: the "
                                        "profile's safe_z)")
       ->needs(from);
-  cmd->add_option("--plunge-feed", plunge_feed_,
+  cmd->add_option("--plunge-feed", r.plunge_feed,
                   "with --from-line: the feed (mm/min) the preamble plunges at (default: the profile's plunge_feed)")
       ->check(positive_number())
       ->needs(from);
 }
 
-std::string ResumeOption::apply(std::string program, const std::string& file, const MachineProfile* profile,
-                                bool quiet, const std::string& who) {
-  if (!active()) return program;  // --safe-z and --plunge-feed need --from-line (add())
+std::string Resume::apply(std::string program, const std::string& file, const MachineProfile* profile,
+                           bool quiet, const std::string& who) {
+  if (!active()) return program;  // --safe-z and --plunge-feed need --from-line (add_resume_options())
   file_ = file;
   try {
-    plan_ = plan_resume(program, profile, from_line_, ResumeSettings{safe_z_, plunge_feed_});
+    plan_ = plan_resume(program, profile, args_.from_line, ResumeSettings{args_.safe_z, args_.plunge_feed});
   } catch (const Error& e) {
     const Place& p = e.place();
     if (p.setting) throw e.with_option(*p.setting == "safe_z" ? "--safe-z" : "--plunge-feed");
@@ -48,7 +48,7 @@ std::string ResumeOption::apply(std::string program, const std::string& file, co
   return r.program;
 }
 
-Place ResumeOption::place_of(long line) const {
+Place Resume::place_of(long line) const {
   if (!plan_) return Place::at_line(line);
   Place p;
   if (const long orig = plan_->original_line(line)) {

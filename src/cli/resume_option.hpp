@@ -1,9 +1,9 @@
 #pragma once
 // --from-line N [--safe-z MM] [--plunge-feed MM/MIN] for `simulate --program`
 // and `stream`: resume a program part-way (bezcam/gcode/resume.hpp,
-// docs/resume.md). One object per command holds the options and, once
-// applied, the plan, which maps the resumed program's lines back to the
-// file's.
+// docs/resume.md). The options as given (ResumeArgs) and, once a command
+// applies them, the plan (Resume), which maps the resumed program's lines
+// back to the file's.
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
@@ -13,11 +13,20 @@
 
 namespace bezcam::cli {
 
-class ResumeOption {
+/// --from-line, --safe-z and --plunge-feed as given.
+struct ResumeArgs {
+  int from_line = 0;  ///< 0: no resume
+  std::optional<double> safe_z, plunge_feed;
+};
+
+/// Adds --from-line, --safe-z and --plunge-feed to `cmd`, bound to `r`.
+void add_resume_options(CLI::App* cmd, ResumeArgs& r);
+
+/// A command's resume: the options, and the plan once applied.
+class Resume {
  public:
-  /// Adds --from-line, --safe-z and --plunge-feed to `cmd`.
-  void add(CLI::App* cmd);
-  bool active() const { return from_line_ > 0; }
+  explicit Resume(const ResumeArgs& args) : args_(args) {}
+  bool active() const { return args_.from_line > 0; }
   /// With --from-line: plans the resume of `program` (read from `file`),
   /// says on stderr where it starts and why (unless `quiet`) and returns
   /// the resumed program; without it, `program` unchanged. Refusals name
@@ -30,8 +39,7 @@ class ResumeOption {
   const std::optional<ResumePlan>& plan() const { return plan_; }
 
  private:
-  int from_line_ = 0;
-  std::optional<double> safe_z_, plunge_feed_;
+  ResumeArgs args_;
   std::string file_;
   std::optional<ResumePlan> plan_;
 };

@@ -23,9 +23,11 @@
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/report/motion_report.hpp"
 #include "bezcam/link/transport.hpp"
-#include "command.hpp"
-#include "options.hpp"
-#include "resume_option.hpp"
+#include "commands.hpp"
+#include "exit_status.hpp"
+#include "output_file.hpp"
+#include "profiles.hpp"
+#include "validators.hpp"
 
 namespace bezcam::cli {
 namespace {
@@ -47,30 +49,19 @@ ErrorId alarm_error_id(link::Alarm a) {
   return errc::sim_gcode;
 }
 
+}  // namespace
+
 using namespace bezcam::link;
 using namespace bezcam::sim;
 
-struct Options {
-  std::string listen, program, machine = "generic", trace, report, motion;
-  std::size_t buffer = 4096;
-  int max_connections = 8;
-  double idle_timeout = 30, session_timeout = 30, exec_delay_ms = 0;
-  std::string time_scale = "1";
-  std::vector<std::string> faults;
-  std::uint32_t session_base = 0;
-  bool quiet = false;
-  std::vector<std::string> tool_diameters;  // --tool-diameter D=MM
-} o;
-ResumeOption resume;  // --from-line (resume_option.hpp)
-
-CLI::App* add(CLI::App& app) {
+CLI::App* setup_simulate(CLI::App& app, SimulateArgs& o) {
   auto* s = app.add_subcommand("simulate", "Run the simulated controller: a Modbus TCP server that accepts programs "
                                            "(--listen) or a program file executed directly (--program).");
   auto* l = s->add_option("--listen", o.listen, "HOST:PORT to listen on (port 0: a free port, printed on stdout)");
   auto* p = s->add_option("--program", o.program, "G-code file to execute directly, no network");
   l->excludes(p);
   p->excludes(l);
-  resume.add(s);
+  add_resume_options(s, o.resume);
   l->excludes("--from-line");
   s->add_option("--machine", o.machine, "machine profile: travel limits, maximum feed and motion model (default generic)");
   add_tool_diameter_option(s, o.tool_diameters);
@@ -103,6 +94,8 @@ CLI::App* add(CLI::App& app) {
   return s;
 }
 
+namespace {
+
 // Writes the trace to a file as it is produced; each piece is flushed so the
 // file is complete whenever the controller reports DONE.
 class FileSink {
@@ -129,18 +122,19 @@ class FileSink {
   std::FILE* f_ = nullptr;
 };
 
-std::vector<std::uint64_t> parse_faults(const std::string& kind) {
+std::vector<std::uint64_t> parse_faults(const std::vector<std::string>& faults, const std::string& kind) {
   std::vector<std::uint64_t> out;
-  for (const auto& f : o.faults) {
+  for (const auto& f : faults) {
     const auto colon = f.find(':');
     const std::string k = f.substr(0, colon);
+    // The place is the --fault value as given: which of them is wrong.
     if (k != "drop-before" && k != "drop-after" && k != "corrupt")
-      throw InputError(errc::sim_fault, f, "expected drop-before:N, drop-after:N or corrupt:N");
+      throw InputError(errc::sim_fault, Place::at_option(f), "expected drop-before:N, drop-after:N or corrupt:N");
     std::uint64_t n = 0;
     try {
       n = std::stoull(colon == std::string::npos ? "" : f.substr(colon + 1));
     } catch (const std::exception&) {
-      throw InputError(errc::sim_fault, f, "expected a chunk count after the colon, such as drop-after:5");
+      throw InputError(errc::sim_fault, Place::at_option(f), "expected a chunk count after the colon, such as drop-after:5");
     }
     if (k == kind) out.push_back(n);
   }
@@ -191,16 +185,18 @@ class SignalWaiter {
 
 // The planned motion of a program the controller executed (so the program
 // is known to be valid): its report and samples.
-void plan_and_write(const MachineProfile& profile, const std::string& program) {
+void plan_and_write(const SimulateArgs& o, const MachineProfile& profile, const std::string& program) {
   const MotionPlan plan = plan_motion(read_timeline(program, &profile), *profile.motion);
   if (!o.report.empty()) write_output(o.report, motion_report_json(plan, o.program, profile.name));
   if (!o.motion.empty()) write_output(o.motion, motion_samples_tsv(plan));
   if (!o.quiet) std::cerr << motion_summary_text(plan, o.program + " on " + profile.name);
 }
 
-int run() {
+}  // namespace
+
+int run_simulate(const SimulateArgs& o) {
   if (o.listen.empty() && o.program.empty())
-    throw InputError(errc::sim_usage, "simulate", "give --listen HOST:PORT or --program FILE.nc");
+    throw InputError(errc::sim_usage, Place::at_option("simulate"), "give --listen HOST:PORT or --program FILE.nc");
   ControllerConfig cfg;
   cfg.profile = load_profile_option(o.machine);
   apply_tool_diameters(cfg.profile, o.tool_diameters);
@@ -228,9 +224,9 @@ int run() {
     }
   }
   cfg.first_session = o.session_base;
-  cfg.drop_before_chunk = parse_faults("drop-before");
-  cfg.drop_after_chunk = parse_faults("drop-after");
-  cfg.corrupt_chunk = parse_faults("corrupt");
+  cfg.drop_before_chunk = parse_faults(o.faults, "drop-before");
+  cfg.drop_after_chunk = parse_faults(o.faults, "drop-after");
+  cfg.corrupt_chunk = parse_faults(o.faults, "corrupt");
   std::shared_ptr<FileSink> sink;
   if (!o.trace.empty()) {
     sink = std::make_shared<FileSink>(o.trace);
@@ -252,6 +248,7 @@ int run() {
                      "add one to plan its motion");
   if (!o.report.empty() && o.report == o.motion)
     throw InputError(errc::usage_report, Place::at_option("--report"), "the report and the motion samples cannot go to the same file");
+  Resume resume(o.resume);
   const std::string program =
       o.program.empty() ? std::string() : resume.apply(read_file(o.program), o.program, &cfg.profile, o.quiet, "simulate");
   SignalWaiter signals;  // before any thread exists, so that all inherit the mask
@@ -266,7 +263,7 @@ int run() {
       st = ctl.status();
       std::cerr << "bezcam: simulate: stopped by signal " << signals.signal() << " after " << st.lines_executed
                 << " lines; the trace is complete up to there\n";
-      return 128 + signals.signal();
+      return exit_status::signalled(signals.signal());
     }
     if (st.state == State::alarm) {
       std::string text = ctl.alarm_text();
@@ -279,7 +276,7 @@ int run() {
     if (!o.quiet)
       std::cerr << "bezcam: simulate: " << o.program << ": " << st.lines_executed << " lines, " << st.blocks_executed
                 << " motion blocks executed on machine " << o.machine << "\n";
-    if (!o.report.empty() || !o.motion.empty()) plan_and_write(profile, program);
+    if (!o.report.empty() || !o.motion.empty()) plan_and_write(o, profile, program);
     return 0;
   }
 
@@ -309,8 +306,4 @@ int run() {
   return 0;
 }
 
-Command cmd{"simulate", add, run};
-RegisterCommand registration(&cmd);
-
-}  // namespace
 }  // namespace bezcam::cli

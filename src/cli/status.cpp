@@ -4,20 +4,14 @@
 #include <iostream>
 
 #include "bezcam/link/streamer.hpp"
-#include "command.hpp"
-#include "options.hpp"
+#include "commands.hpp"
+#include "validators.hpp"
 
 namespace bezcam::cli {
-namespace {
 
 using namespace bezcam::link;
 
-struct Options {
-  std::string to;
-  double timeout = 2;
-} o;
-
-CLI::App* add(CLI::App& app) {
+CLI::App* setup_status(CLI::App& app, StatusArgs& o) {
   auto* s = app.add_subcommand("status", "Print what a controller is doing: state, lines executed, alarm and its "
                                          "line, buffer, spindle, tool and the machine profile it enforces.");
   s->add_option("--to", o.to, "controller address HOST:PORT")->required();
@@ -26,16 +20,11 @@ CLI::App* add(CLI::App& app) {
   return s;
 }
 
-int run() {
+int run_status(const StatusArgs& o) {
   const Endpoint to = parse_endpoint(o.to);
   print_controller(controller_status(to, std::chrono::milliseconds(static_cast<long long>(o.timeout * 1000.0 + 0.5))), to);
   return 0;
 }
-
-Command cmd{"status", add, run};
-RegisterCommand registration(&cmd);
-
-}  // namespace
 
 void print_controller(const ControllerReport& r, const Endpoint& to) {
   const Status& s = r.status;

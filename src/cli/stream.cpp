@@ -21,25 +21,17 @@
 #include "bezcam/gcode/lint.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/link/streamer.hpp"
-#include "command.hpp"
-#include "options.hpp"
-#include "resume_option.hpp"
+#include "commands.hpp"
+#include "exit_status.hpp"
+#include "profiles.hpp"
+#include "progress.hpp"
+#include "validators.hpp"
 
 namespace bezcam::cli {
-namespace {
 
 using namespace bezcam::link;
 
-struct Options {
-  std::string file, to, progress = "auto";
-  double timeout = 2, retry_time = 60, stall_timeout = 60;
-  int retries = 30;
-  int chunk = 0;
-  bool quiet = false, abort = false, no_preflight = false;
-} o;
-ResumeOption resume;  // --from-line (resume_option.hpp)
-
-CLI::App* add(CLI::App& app) {
+CLI::App* setup_stream(CLI::App& app, StreamArgs& o) {
   auto* s = app.add_subcommand("stream", "Send a G-code program to a controller over Modbus TCP, with progress; "
                                          "succeeds only when the controller confirms the CRC-32 and has executed it.");
   s->add_option("FILE", o.file, "G-code program (not with --abort)");
@@ -61,7 +53,7 @@ CLI::App* add(CLI::App& app) {
   s->add_option("--progress", o.progress, "auto (a bar on a terminal, plain lines otherwise), bar, lines or off")
       ->check(CLI::IsMember({"auto", "bar", "lines", "off"}));
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
-  resume.add(s);
+  add_resume_options(s, o.resume);
   s->get_option("--abort")->excludes("--from-line");
   s->footer("Ctrl-C (or SIGTERM) stops the controller at once: the sender sends ABORT and says what was "
             "acknowledged and executed (exit 130).\n"
@@ -75,6 +67,8 @@ CLI::App* add(CLI::App& app) {
             "  bezcam stream --abort --to 192.168.0.10:502");
   return s;
 }
+
+namespace {
 
 std::string human_bytes(double b) {
   char buf[32];
@@ -173,16 +167,30 @@ std::chrono::milliseconds ms(double seconds) {
 std::atomic<bool> g_interrupted{false};
 extern "C" void on_interrupt(int) { g_interrupted.store(true); }
 
+// One run of the command: its arguments and, with --from-line, the resume
+// planned for the controller.
+struct Sender {
+  const StreamArgs& o;
+  Resume resume;
+
+  int run();
+  std::string finding_place(long line) const;
+  void preflight(const std::string& program, const Endpoint& to) const;
+  std::string resume_for_controller(std::string program, const Endpoint& to);
+  std::string where_to_resume(const std::string& file_text, const Endpoint& to) const;
+  [[noreturn]] void throw_in_file_lines(const Error& e, const std::string& more) const;
+};
+
 // Where a finding is: FILE:LINE, the file's own line for a resumed program
 // (a preamble line is named as such).
-std::string finding_place(long line) {
+std::string Sender::finding_place(long line) const {
   const Place p = resume.place_of(line);
   return p.line ? o.file + ":" + std::to_string(*p.line) : p.to_string();
 }
 
 // The program against the profile the controller enforces: a program it
 // would refuse mid-cut is refused before OPEN.
-void preflight(const std::string& program, const Endpoint& to) {
+void Sender::preflight(const std::string& program, const Endpoint& to) const {
   const ControllerReport r = controller_status(to, ms(o.timeout));
   if (r.machine.empty()) return;
   MachineProfile m;
@@ -218,7 +226,7 @@ std::optional<MachineProfile> controller_profile(const ControllerReport& r) {
 
 // --from-line: the resume is planned for the profile the controller
 // enforces (its dialect, travel and feed limits, safe Z and plunge feed).
-std::string resume_for_controller(std::string program, const Endpoint& to) {
+std::string Sender::resume_for_controller(std::string program, const Endpoint& to) {
   const ControllerReport r = controller_status(to, ms(o.timeout));
   const std::optional<MachineProfile> m = controller_profile(r);
   if (!m && !o.quiet)
@@ -233,7 +241,7 @@ std::string resume_for_controller(std::string program, const Endpoint& to) {
 // numbering, and the --from-line that goes on from there: the first line
 // after the last one the machine finished that holds a block. "" when the
 // controller does not say it stopped so.
-std::string where_to_resume(const std::string& file_text, const Endpoint& to) {
+std::string Sender::where_to_resume(const std::string& file_text, const Endpoint& to) const {
   ControllerReport r;
   try {
     r = controller_status(to, ms(o.timeout));
@@ -281,7 +289,7 @@ std::string where_to_resume(const std::string& file_text, const Endpoint& to) {
 
 // A resumed program's alarm names the line of the file, not of the program
 // sent; `more` is added to the message.
-[[noreturn]] void throw_in_file_lines(const Error& e, const std::string& more) {
+[[noreturn]] void Sender::throw_in_file_lines(const Error& e, const std::string& more) const {
   const std::string message = more.empty() ? e.message() : e.message() + "; " + more;
   if (const auto& line = e.place().line; resume.plan() && e.id() == errc::controller_alarm && line && *line > 0)
     throw ControllerError(e.id(), resume.place_of(static_cast<long>(*line)), message);
@@ -289,7 +297,7 @@ std::string where_to_resume(const std::string& file_text, const Endpoint& to) {
   throw;  // called inside the handler: the error as caught
 }
 
-int run() {
+int Sender::run() {
   const Endpoint to = parse_endpoint(o.to);
   if (o.abort) {
     if (!o.file.empty()) throw InputError(errc::usage_stream, Place::at_option("--abort"), "takes no program file");
@@ -365,8 +373,11 @@ int run() {
   return 0;
 }
 
-Command cmd{"stream", add, run};
-RegisterCommand registration(&cmd);
-
 }  // namespace
+
+int run_stream(const StreamArgs& o) {
+  Sender sender{o, Resume(o.resume)};
+  return sender.run();
+}
+
 }  // namespace bezcam::cli

@@ -30,6 +30,7 @@
 #include <regex>
 #include <sstream>
 
+#include "in_process.hpp"
 #include "support/run_process.hpp"
 
 namespace {
@@ -155,7 +156,8 @@ INSTANTIATE_TEST_SUITE_P(TestsBad, BadInput, ::testing::ValuesIn(bad_inputs()), 
 // `check` runs every validation `convert` runs (issue "Safe on the shop
 // floor", bug 2): every job convert refuses, check refuses with the same
 // status and the same message, with the same --machine, --tolerance and
-// --output.
+// --output. Both run in-process: the executable's refusals are checked
+// above.
 class CheckLikeConvert : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CheckLikeConvert, RefusesWhatConvertRefuses) {
@@ -173,11 +175,11 @@ TEST_P(CheckLikeConvert, RefusesWhatConvertRefuses) {
     }
     args.push_back(x.args[i]);
   }
-  const auto c = testproc::run(BEZCAM_EXE, args, {{"BEZCAM_PROGRESS", "off"}}, BEZCAM_SOURCE_DIR);
+  const auto c = bezcam::test::run_cli(args);
   testproc::TempDir dir;
   std::vector<std::string> conv{"convert", file, "-o", (dir / "out.nc").string()};
   conv.insert(conv.end(), args.begin() + 2, args.end());
-  const auto v = testproc::run(BEZCAM_EXE, conv, {{"BEZCAM_PROGRESS", "off"}}, BEZCAM_SOURCE_DIR);
+  const auto v = bezcam::test::run_cli(conv);
   EXPECT_EQ(c.status, v.status) << "check:\n" << c.out << c.err << "convert:\n" << v.err;
   EXPECT_EQ(c.err_first_line(), v.err_first_line());
 }

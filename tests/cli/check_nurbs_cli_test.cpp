@@ -1,24 +1,23 @@
-// `bezcam check` on the B-spline, interpolation and mixed-path samples: it
-// reports what they hold; a bad bspline exits 2 naming the JSON path; the
-// Lagrange overshoot warning reaches stderr.
+// `bezcam check` (in-process) on the B-spline, interpolation and
+// mixed-path samples: it reports what they hold; a bad bspline exits 2
+// naming the JSON path; the Lagrange overshoot warning reaches stderr.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 
-#include "support/run_process.hpp"
+#include "in_process.hpp"
+#include "support/files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-using CheckRun = testproc::Result;  // stdout and stderr together in `out`
-
-CheckRun check(const std::string& file) { return testproc::shell(std::string(BEZCAM_EXE) + " check " + file + " 2>&1"); }
+// stdout and stderr together in `out`.
+testproc::Result check(const std::string& file) {
+  testproc::Result r = bezcam::test::run_cli({"check", file});
+  r.out += r.err;
+  return r;
+}
 
 std::string sample(const char* name) { return std::string(BEZCAM_SOURCE_DIR "/samples/") + name; }
 
@@ -56,23 +55,21 @@ TEST(CheckNurbsCli, ReportsTheNurbsAndInterpolationSamples) {
 }
 
 TEST(CheckNurbsCli, BadBsplineExitsTwoNamingThePath) {
-  const fs::path dir = fs::temp_directory_path() / ("bezcam-check-nurbs-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "bad.json") << R"({"bezcam": 1, "entities": [
+  bezcam::test::TempDir dir;
+  bezcam::test::write_file(dir / "bad.json", R"({"bezcam": 1, "entities": [
       {"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0],[3,1],[4,0],[5,1],[6,0],[7,1]],
-       "knots": [0,0,0,0.1,0.2,0.3,0.5,0.25,1,1,1]}]})";
+       "knots": [0,0,0,0.1,0.2,0.3,0.5,0.25,1,1,1]}]})");
   auto r = check((dir / "bad.json").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("entities[0].knots[7]: expected a knot >= 0.5 (knots must not decrease), found 0.25"),
             std::string::npos)
       << r.out;
-  std::ofstream(dir / "step.json") << R"({"bezcam": 1, "entities": [{"type": "interpolate", "method": "lagrange",
-       "through": [[0,0],[10,0],[20,0],[30,0],[40,0],[50,20],[60,20],[70,20],[80,20],[90,20],[100,20]]}]})";
+  bezcam::test::write_file(dir / "step.json", R"({"bezcam": 1, "entities": [{"type": "interpolate", "method": "lagrange",
+       "through": [[0,0],[10,0],[20,0],[30,0],[40,0],[50,20],[60,20],[70,20],[80,20],[90,20],[100,20]]}]})");
   r = check((dir / "step.json").string());
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("bezcam: warning: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("the Lagrange polynomial through these 11 points leaves their bounding box by "),
             std::string::npos)
       << r.out;
-  fs::remove_all(dir);
 }

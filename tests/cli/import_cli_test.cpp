@@ -5,6 +5,7 @@
 // dotted keys and JSON values and refuses a key the job does not have.
 #include <gtest/gtest.h>
 
+#include "in_process.hpp"
 #include "support/run_process.hpp"
 
 namespace {
@@ -97,7 +98,7 @@ TEST(ImportCommand, SetRefusesAKeyTheJobDoesNotHave) {
     for (const char* command : {"convert", "check", "import"}) {
       std::vector<std::string> args = {command, svg.string(), "--set", set};
       if (std::string(command) != "check") args.insert(args.end(), {"-o", nc.string()});
-      const auto r = bezcam(args);
+      const auto r = bezcam::test::run_cli(args);  // a refusal: no process needed
       EXPECT_EQ(r.status, 2) << command << " " << set;
       EXPECT_EQ(r.err_first_line().rfind(first, 0), 0u) << command << ": " << r.err;
       EXPECT_NE(r.err.find("(error id: usage.setting)"), std::string::npos) << r.err;

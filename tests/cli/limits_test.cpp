@@ -1,5 +1,5 @@
 // Files over the stated size limits (docs/limits.md) are refused by the
-// commands before they are read: a clear message naming the file and the
+// commands (run in-process) before they are read: a clear message naming the file and the
 // limit, exit status 2, no memory spent on them. The inputs are sparse
 // files, so they take no room on disk. "Quickly" is checked by ctest's
 // TIMEOUT for *Limits* tests (CMakeLists.txt).
@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "bezcam/limits.hpp"
+#include "in_process.hpp"
 #include "support/run_process.hpp"
 
 namespace {
@@ -39,7 +40,7 @@ TEST(Limits, CommandsRefuseOversizedFilesBeforeReadingThem) {
       {{"preview", "--program", nc, "-o", (dir / "out.svg").string()}, nc, "128 MiB"},
   };
   for (const auto& c : cases) {
-    const auto r = testproc::run(BEZCAM_EXE, c.args);
+    const auto r = bezcam::test::run_cli(c.args);
     EXPECT_EQ(r.status, 2) << c.args[0] << ": " << r.err;
     EXPECT_NE(r.err_first_line().find(c.file), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("more than bezcam reads (" + c.limit), std::string::npos) << r.err;

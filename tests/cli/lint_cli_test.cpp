@@ -1,37 +1,28 @@
-// `bezcam lint FILE.nc --machine NAME` as a user meets it: exit 0 clean,
-// 2 findings, 3 unreadable file; each finding as `FILE:LINE: message [id]`.
+// `bezcam lint FILE.nc --machine NAME` as a user meets it (in-process):
+// exit 0 clean, 2 findings, 3 unreadable file; each finding as
+// `FILE:LINE: message [id]`.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 
-#include "support/run_process.hpp"
+#include "in_process.hpp"
+#include "support/files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-using LintRun = testproc::Result;
-
-LintRun lint(const std::string& args, const fs::path& dir) {
-  const fs::path err = dir / "stderr.txt";
-  LintRun r = testproc::shell(std::string(BEZCAM_EXE) + " lint " + args + " 2>" + err.string());
-  r.err = testproc::slurp(err);
-  return r;
+testproc::Result lint(const std::vector<std::string>& args) {
+  std::vector<std::string> all{"lint"};
+  all.insert(all.end(), args.begin(), args.end());
+  return bezcam::test::run_cli(all);
 }
 
 struct Dir {
-  fs::path path = fs::temp_directory_path() / ("bezcam-lint-" + std::to_string(::getpid()) + "-" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  Dir() { fs::create_directories(path); }
-  ~Dir() { fs::remove_all(path); }
+  bezcam::test::TempDir dir;
   fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return path / name;
+    bezcam::test::write_file(dir / name, text);
+    return dir / name;
   }
 };
 
@@ -41,7 +32,7 @@ TEST(LintCli, CleanProgramExitsZero) {
   Dir d;
   const auto f = d.write("ok.nc", "%\nG21 G90 G17\nT1 M06\nS9000 M03\nG00 Z5\nG00 X0 Y0\nG01 Z-1 F300\n"
                                   "G01 X10 F900\nG03 X0 Y10 I-10 J0\nG00 Z5\nM05\nM30\n%\n");
-  const auto r = lint(f.string() + " --machine fanuc", d.path);
+  const auto r = lint({f.string(), "--machine", "fanuc"});
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_EQ(r.out, "");
   EXPECT_NE(r.err.find("no findings for machine fanuc"), std::string::npos) << r.err;
@@ -50,7 +41,7 @@ TEST(LintCli, CleanProgramExitsZero) {
 TEST(LintCli, FindingsExitTwoOnePerLine) {
   Dir d;
   const auto f = d.write("bad.nc", "%\nG21 G90 G17\nS9000 M03\nG00 X0 Y0 Z0\nG01 X900 F100\nG01 X0 Y0 Y1\nM30\n");
-  const auto r = lint(f.string() + " --machine grbl", d.path);
+  const auto r = lint({f.string(), "--machine", "grbl"});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, f.string() +
                        ":5: the move reaches X = 900 mm, outside the travel of machine \"grbl\" (X from -400 to 400 "
@@ -61,9 +52,8 @@ TEST(LintCli, FindingsExitTwoOnePerLine) {
 }
 
 TEST(LintCli, SeedsButterflyListingExitsTwoWithBothDecreasingKnots) {
-  Dir d;
   const std::string f = BEZCAM_SOURCE_DIR "/tests/bad/butterfly-g063.nc";
-  const auto r = lint(f + " --machine fanuc-g063", d.path);
+  const auto r = lint({f, "--machine", "fanuc-g063"});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find(f + ":7: K0.03118: expected a knot >= 0.04978"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(f + ":14: K0.259080: expected a knot >= 0.343467"), std::string::npos) << r.out;
@@ -71,10 +61,10 @@ TEST(LintCli, SeedsButterflyListingExitsTwoWithBothDecreasingKnots) {
 
 TEST(LintCli, UnreadableFileExitsThree) {
   Dir d;
-  auto r = lint((d.path / "missing.nc").string() + " --machine generic", d.path);
+  auto r = lint({(d.dir / "missing.nc").string(), "--machine", "generic"});
   EXPECT_EQ(r.status, 3);
   EXPECT_NE(r.err.find("cannot open the G-code file: No such file or directory"), std::string::npos) << r.err;
-  r = lint(d.path.string(), d.path);  // a directory
+  r = lint({d.dir.path().string()});  // a directory
   EXPECT_EQ(r.status, 3);
   EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
 }
@@ -82,6 +72,6 @@ TEST(LintCli, UnreadableFileExitsThree) {
 TEST(LintCli, UnknownMachineIsAUsageError) {
   Dir d;
   const auto f = d.write("ok.nc", "G21 G90 G17\nM30\n");
-  const auto r = lint(f.string() + " --machine no-such-machine", d.path);
+  const auto r = lint({f.string(), "--machine", "no-such-machine"});
   EXPECT_EQ(r.status, 2);
 }

@@ -1,0 +1,66 @@
+#pragma once
+// The bezcam command line as one object: the CLI11 app with every
+// subcommand set up (commands.hpp), each bound to its arguments struct,
+// and what main() does with argv. Tests parse and run argument vectors
+// in-process through it.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+
+namespace bezcam::cli {
+
+/// Every subcommand's arguments, as parsed.
+struct Arguments {
+  CheckArgs check;
+  ConvertArgs convert;
+  ImportArgs import_drawing;
+  LintArgs lint;
+  PreviewArgs preview;
+  SimulateArgs simulate;
+  StatusArgs status;
+  StreamArgs stream;
+};
+
+class CommandLine {
+ public:
+  /// The app with every subcommand, in the order --help lists them.
+  CommandLine();
+  CommandLine(const CommandLine&) = delete;
+  CommandLine& operator=(const CommandLine&) = delete;
+
+  /// Parses `argv` (argv[0] is the program's name, shown in --help's
+  /// usage line). Throws CLI::ParseError as CLI::App::parse does (--help
+  /// and --version too, with exit code 0).
+  void parse(const std::vector<std::string>& argv);
+  /// The subcommand parsed, or null.
+  const CLI::App* chosen() const;
+  /// Runs the subcommand parsed with its arguments: its exit status;
+  /// refusals are thrown (bezcam::Error).
+  int run() const;
+  /// The status and the messages on stderr of a command line CLI11
+  /// refused: the option meant for a misspelt one, else CLI11's sentence.
+  int usage_error(const CLI::ParseError& e);
+
+  const Arguments& args() const { return args_; }
+  CLI::App& app() { return app_; }
+
+ private:
+  struct Subcommand {
+    CLI::App* app;
+    std::function<int()> run;
+  };
+  CLI::App app_;
+  Arguments args_;
+  std::vector<Subcommand> subcommands_;
+};
+
+/// What main() does: parses `argv`, runs the subcommand and returns the
+/// exit status (exit_status.hpp). --help and --version print on stdout;
+/// usage errors and refusals on stderr as `bezcam: error: ...` with the
+/// error's id.
+int run_command_line(const std::vector<std::string>& argv);
+
+}  // namespace bezcam::cli

@@ -1,0 +1,30 @@
+#pragma once
+// Option groups shared by the subcommands that convert a job (convert,
+// check, preview) and by import: one definition of --machine, --tolerance,
+// --output, --set and --layer, so that their names, checks and help read
+// the same everywhere.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace bezcam::cli {
+
+struct ConversionOptions {
+  std::string machine;           ///< --machine: a profile name or a .json file; empty: the job's, else generic
+  double tolerance = 0;          ///< --tolerance: overrides the job's when > 0
+  std::string output = "lines";  ///< --output: lines, arcs or nurbs
+  bool strict = false;           ///< --strict: accepted for scripts; every unknown key is refused anyway
+  std::vector<std::string> sets;    ///< --set KEY=VALUE: job settings of a drawing (.svg, .dxf)
+  std::vector<std::string> layers;  ///< --layer NAME: the drawing's layers to cut (default all)
+};
+
+/// Adds --machine, --tolerance, --output, --strict, --set and --layer to
+/// `s`; `output_help` is the help of --output (what it means for this
+/// command).
+void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string& output_help);
+
+/// --set and --layer: how a drawing (.svg, .dxf) given instead of a job is
+/// read (import).
+void add_drawing_options(CLI::App* s, ConversionOptions& o);
+
+}  // namespace bezcam::cli

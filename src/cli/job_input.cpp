@@ -1,0 +1,72 @@
+// Reading the job of convert, check, preview and import: a job file or a
+// drawing with the --set and --layer options.
+#include "job_input.hpp"
+
+#include <iostream>
+
+#include "bezcam/error.hpp"
+#include "bezcam/import/read_drawing.hpp"
+#include "bezcam/job/job_json.hpp"
+#include "bezcam/job/settings.hpp"
+
+namespace bezcam::cli {
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const auto& w : warnings) std::cerr << "bezcam: warning: " << w << "\n";
+}
+
+Job read_job(const std::string& path) {
+  std::vector<std::string> warnings;
+  JobReadOptions ro;
+  ro.warnings = &warnings;
+  try {
+    return load_job(path, ro);
+  } catch (const Error&) {
+    print_warnings(warnings);
+    throw;
+  }
+}
+
+namespace {
+// KEY=VALUE of --set.
+std::pair<std::string, std::string> split_setting(const std::string& kv) {
+  const size_t eq = kv.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(errc::import_setting, Place::at_option("--set"),
+                     "expected KEY=VALUE (for example --set feed=600), found \"" + kv + "\"");
+  return {kv.substr(0, eq), kv.substr(eq + 1)};
+}
+}  // namespace
+
+import::ImportOptions import_options(const ConversionOptions& o) {
+  import::ImportOptions io;
+  for (const auto& kv : o.sets) io.settings.push_back(split_setting(kv));
+  // Keys and values checked before the drawing is read: an unknown key is
+  // a mistake on the command line, whatever the drawing holds.
+  (void)settings_json(io.settings);
+  io.layers = o.layers;
+  return io;
+}
+
+Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing) {
+  if (!import::is_drawing(path)) {
+    if (!o.sets.empty() || !o.layers.empty())
+      throw InputError(errc::import_setting, Place::at_option(o.sets.empty() ? "--layer" : "--set"),
+                       path + " is a job file, which states its own settings and has no layers; --set and --layer "
+                              "apply to drawings (.svg, .dxf)");
+    return read_job(path);
+  }
+  const import::ImportOptions io = import_options(o);
+  import::Drawing d = import::read_drawing(path);
+  if (drawing) *drawing = d;
+  std::vector<std::string> warnings;
+  try {
+    Job job = import::to_job(d, io, &warnings);
+    return job;
+  } catch (const Error&) {
+    print_warnings(warnings);
+    throw;
+  }
+}
+
+}  // namespace bezcam::cli

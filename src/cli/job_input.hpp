@@ -1,0 +1,28 @@
+#pragma once
+// The job a command reads: a job file, or a drawing (.svg, .dxf) read as
+// the job it stands for with the --set settings and --layer layers; its
+// warnings.
+#include <string>
+#include <vector>
+
+#include "bezcam/import/drawing.hpp"
+#include "bezcam/job/job.hpp"
+#include "conversion_options.hpp"
+
+namespace bezcam::cli {
+
+/// Reads a job file. When the job is refused, the warnings found before
+/// are printed first: a refusal never hides a warning.
+Job read_job(const std::string& path);
+/// Reads a job file, or a drawing (.svg, .dxf) as the job it stands for,
+/// with the options' --set settings and --layer layers (which apply to
+/// drawings only: a job file states its own settings).
+/// `drawing`, when given, receives the drawing read (check lists it).
+Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing = nullptr);
+/// The --set and --layer options as import options (KEY=VALUE checked).
+import::ImportOptions import_options(const ConversionOptions& o);
+/// Prints warnings (of reading a job, of converting it) on stderr as
+/// `bezcam: warning: ...`.
+void print_warnings(const std::vector<std::string>& warnings);
+
+}  // namespace bezcam::cli
