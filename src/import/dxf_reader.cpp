@@ -57,7 +57,9 @@ class Reader {
   Reader(std::string_view text, std::string source) : source_(std::move(source)) { split(text); }
 
   [[noreturn]] void fail(ErrorId id, size_t line, const std::string& what) const {
-    throw InputError(id, Place::at_file(source_), "line " + std::to_string(line) + ": " + what);
+    Place where = Place::at_file(source_);
+    where.line = static_cast<long long>(line);
+    throw InputError(id, std::move(where), what);
   }
   [[noreturn]] void fail(ErrorId id, const Entity& e, const Group* g, const std::string& what) const {
     const std::string h = e.handle();
