@@ -21,6 +21,8 @@
 namespace bezcam::import {
 namespace {
 
+constexpr double kTwoPi = 2 * std::numbers::pi, kDegree = std::numbers::pi / 180;
+
 struct Group {
   int code = 0;
   std::string value;
@@ -55,7 +57,9 @@ class Reader {
   Reader(std::string_view text, std::string source) : source_(std::move(source)) { split(text); }
 
   [[noreturn]] void fail(ErrorId id, size_t line, const std::string& what) const {
-    throw InputError(id, Place::at_file(source_), "line " + std::to_string(line) + ": " + what);
+    Place where = Place::at_file(source_);
+    where.line = static_cast<long long>(line);
+    throw InputError(id, std::move(where), what);
   }
   [[noreturn]] void fail(ErrorId id, const Entity& e, const Group* g, const std::string& what) const {
     const std::string h = e.handle();
@@ -141,7 +145,18 @@ class Reader {
   Entity entity();
   void header();
   void blocks();
+  // One entity as contours of `layer` (placed by `m`; `id_prefix`: the
+  // INSERTs it is drawn through), or counted as skipped; one function per
+  // kind of entity.
   void emit(const Entity& e, const Affine& m, const std::string& layer, const std::string& id_prefix);
+  void emit_line(const Entity& e, Contour c, const Affine& m);
+  void emit_arc(const Entity& e, Contour c, const Affine& m, const Vec3& ext);
+  void emit_ellipse(const Entity& e, Contour c, const Affine& m, const Vec3& ext);
+  void emit_polyline(const Entity& e, Contour c, const Affine& m, const Vec3& ext);
+  void emit_spline(const Entity& e, Contour c, const Affine& m);
+  Piece spline_piece(const Entity& e, int degree, std::vector<Vec3> cps, std::vector<double> knots,
+                     std::vector<double> weights) const;
+  void emit_insert(const Entity& e, const Affine& m, const Vec3& ext, const std::string& layer, const std::string& prefix);
   void add(Contour c, const Affine& m, const std::string& kind);
 };
 
@@ -375,150 +390,175 @@ void Reader::emit(const Entity& e, const Affine& m, const std::string& layer_in,
   c.layer = layer;
   c.id = layer + ":" + prefix + (e.handle().empty() ? "line" + std::to_string(e.line) : e.handle());
   c.element = e.type + (e.handle().empty() ? " on line " + std::to_string(e.line) : " (handle " + e.handle() + ")");
-  const double two_pi = 2 * std::numbers::pi, deg = std::numbers::pi / 180;
-  const Vec3 extrusion = vec(e, 210, {0, 0, 1});
-  if (e.type == "LINE") {
-    c.pieces.push_back(line_piece(vec(e, 10), vec(e, 11)));
-    if (c.pieces[0].points[0].x == c.pieces[0].points[1].x && c.pieces[0].points[0].y == c.pieces[0].points[1].y) {
-      d_.layers[layer].skipped["LINE of length 0"] += 1;
-      return;
-    }
-    add(std::move(c), m, e.type);
-  } else if (e.type == "CIRCLE" || e.type == "ARC") {
-    const Vec3 ctr = vec(e, 10);
-    const double r = num(e, 40);
-    double t0 = 0, sweep = two_pi;
-    if (e.type == "ARC") {
-      t0 = num(e, 50) * deg;
-      sweep = std::fmod(num(e, 51) * deg - t0, two_pi);
-      if (sweep <= 0) sweep += two_pi;
-    }
-    if (!(r > 0)) {  // a point drawn as a circle cuts nothing (LibreCAD's library has such arcs)
-      if (r < 0) fail(errc::import_dxf_syntax, e, nullptr, "expected a radius >= 0 (group code 40), found " + fmt_num(r));
-      d_.layers[layer].skipped[e.type + " of radius 0"] += 1;
-      return;
-    }
-    c.pieces = ellipse_arc({ctr.x, ctr.y, 0}, {r, 0, 0}, {0, r, 0}, t0, sweep);
-    c.closed = e.type == "CIRCLE";
-    add(std::move(c), m.after(ocs(extrusion, ctr.z)), e.type);
-  } else if (e.type == "ELLIPSE") {
-    const Vec3 ctr = vec(e, 10), major = vec(e, 11);
-    const double ratio = num(e, 40, 1), t0 = num(e, 41, 0), t1 = num(e, 42, two_pi);
-    const Vec3 n = norm(extrusion) > 0 ? extrusion / norm(extrusion) : Vec3{0, 0, 1};
-    const Vec3 minor = cross(n, major) * ratio;
-    double sweep = t1 - t0;
-    sweep = std::fmod(sweep, two_pi);
-    if (sweep <= 0) sweep += two_pi;
-    if (std::abs(t1 - t0) >= two_pi) sweep = two_pi;
-    c.closed = std::abs(sweep - two_pi) < 1e-12;
-    c.pieces = ellipse_arc(ctr, major, minor, t0, c.closed ? two_pi : sweep);
-    add(std::move(c), m, e.type);
-  } else if (e.type == "LWPOLYLINE" || e.type == "POLYLINE") {
-    std::vector<Vec3> vs;
-    std::vector<double> bulges;
-    if (e.type == "LWPOLYLINE") {
-      for (const Group& g : e.groups) {
-        if (g.code == 10) vs.push_back({number(e, g), 0, 0}), bulges.push_back(0);
-        else if (g.code == 20 && !vs.empty()) vs.back().y = number(e, g);
-        else if (g.code == 42 && !vs.empty()) bulges.back() = number(e, g);
-      }
-    } else {
-      if ((integer(e, 70, 0) & (16 | 64)) != 0) {  // meshes are not curves
-        d_.layers[layer].skipped["POLYLINE mesh"] += 1;
-        return;
-      }
-      for (const Entity& v : e.vertices) {
-        if ((integer(v, 70, 0) & 16) != 0) continue;  // a spline frame's control point
-        vs.push_back(vec(v, 10));
-        bulges.push_back(num(v, 42));
-      }
-    }
-    const bool closed = (integer(e, 70, 0) & 1) != 0;
-    for (size_t i = 0; i + 1 < vs.size() + (closed ? 1 : 0); ++i)
-      for (Piece& p : bulge_segment(vs[i], vs[(i + 1) % vs.size()], bulges[i])) c.pieces.push_back(std::move(p));
-    if (c.pieces.empty()) return;
-    c.closed = closed;
-    const double elevation = e.type == "LWPOLYLINE" ? num(e, 38) : vec(e, 10).z;
-    add(std::move(c), m.after(ocs(extrusion, elevation)), e.type);
-  } else if (e.type == "SPLINE") {
-    const int flags = integer(e, 70, 0);
-    const int degree = integer(e, 71, 3, 1, kMaxBezierDegree);
-    std::vector<Vec3> cps = points(e, 10);
-    std::vector<double> knots = all(e, 40), weights = all(e, 41);
-    if (!cps.empty()) {
-      const Group* kg = nullptr;
-      for (const Group& g : e.groups)
-        if (g.code == 40) {
-          if (kg && number(e, g) < number(e, *kg))
-            fail(errc::import_knots, e, &g, "expected a knot >= " + kg->value + " (knots must not decrease), found " + g.value);
-          kg = &g;
-        }
-      if (knots.size() != cps.size() + static_cast<size_t>(degree) + 1)
-        fail(errc::import_knots, e, nullptr, "expected " + std::to_string(cps.size() + static_cast<size_t>(degree) + 1) +
-                                                  " knots (group code 40) for " + std::to_string(cps.size()) +
-                                                  " control points of degree " + std::to_string(degree) + ", found " +
-                                                  std::to_string(knots.size()));
-      if (!weights.empty() && weights.size() != cps.size())
-        fail(errc::import_knots, e, nullptr, "expected one weight (group code 41) per control point (" +
-                                                  std::to_string(cps.size()) + "), found " + std::to_string(weights.size()));
-      if (std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights.front(); })) weights.clear();
-      Piece p;
-      p.bspline = true;
-      p.degree = degree;
-      p.points = std::move(cps);
-      p.knots = std::move(knots);
-      p.weights = std::move(weights);
-      // Everything else the job reader would refuse (degree, weights,
-      // knot multiplicity, an empty domain) is refused here, naming the entity.
-      try {
-        (void)NurbsCurve::make(p.degree, p.points, p.knots, p.weights);
-      } catch (const Error& err) {
-        fail(errc::import_knots, e, nullptr, err.where() + ": " + err.message());
-      }
-      c.pieces.push_back(std::move(p));
-      c.closed = (flags & 1) != 0 && dist(c.pieces[0].start(), c.pieces[0].end()) <= 1e-9 * (1 + max_abs(c.pieces[0].start()));
-    } else if (std::vector<Vec3> fit = points(e, 11); fit.size() >= 2 && has(e, 12) && has(e, 13) &&
-                                                         norm(vec(e, 12)) > 0 && norm(vec(e, 13)) > 0) {
-      std::optional<Piece> p = fit_spline(fit, vec(e, 12), vec(e, 13));
-      if (!p) fail(errc::import_knots, e, nullptr, "expected fit points (group code 11) that differ from one to the next, found two equal in a row");
-      c.pieces.push_back(std::move(*p));
-      c.closed = (flags & 1) != 0 && dist(fit.front(), fit.back()) <= 1e-9 * (1 + max_abs(fit.front()));
-    } else {
-      // Without both end tangents the CAD program's curve is not defined by
-      // the file: a natural cubic spline through the points (docs/import.md).
-      c.is_interpolation = true;
-      c.interpolation.through = points(e, 11);
-      c.interpolation.closed = (flags & 1) != 0;
-      if (c.interpolation.through.size() < 2)
-        fail(errc::import_knots, e, nullptr, "expected control points (group code 10) or at least 2 fit points (11), found neither");
-    }
-    add(std::move(c), m, e.type);
-  } else if (e.type == "INSERT") {
-    std::string name;
-    const Group* ng = nullptr;
-    for (const Group& g : e.groups)
-      if (g.code == 2) name = g.value, ng = &g;
-    const auto it = blocks_.find(name);
-    if (it == blocks_.end()) fail(errc::import_dxf_syntax, e, ng, "expected the name of a block, found \"" + name + "\", which no block has");
-    if (std::find(inserting_.begin(), inserting_.end(), name) != inserting_.end() || inserting_.size() > 32)
-      fail(errc::import_block_recursion, e, ng, "block \"" + name + "\" inserts itself (through " +
-                                                    std::to_string(inserting_.size()) + " level(s) of INSERT); expected a block that does not contain itself");
-    const Block& b = it->second;
-    const Vec3 ins = vec(e, 10), s{num(e, 41, 1), num(e, 42, 1), num(e, 43, 1)};
-    const double rot = num(e, 50) * deg;
-    const Affine local = ocs(extrusion, ins.z)
-                             .after(Affine{1, 0, 0, 1, ins.x, ins.y})
-                             .after(Affine{std::cos(rot), std::sin(rot), -std::sin(rot), std::cos(rot), 0, 0})
-                             .after(Affine{s.x, 0, 0, s.y, 0, 0})
-                             .after(Affine{1, 0, 0, 1, -b.base.x, -b.base.y});
-    inserting_.push_back(name);
-    d_.layers[layer].read["INSERT"] += 1;
-    const std::string h = e.handle().empty() ? "line" + std::to_string(e.line) : e.handle();
-    for (const Entity& be : b.entities) emit(be, m.after(local), layer, prefix + h + "/");
-    inserting_.pop_back();
-  } else {
-    d_.layers[layer].skipped[e.type] += 1;
+  // The extrusion direction (group codes 210, 220, 230), read and checked
+  // for every entity.
+  const Vec3 ext = vec(e, 210, {0, 0, 1});
+  if (e.type == "LINE") emit_line(e, std::move(c), m);
+  else if (e.type == "CIRCLE" || e.type == "ARC") emit_arc(e, std::move(c), m, ext);
+  else if (e.type == "ELLIPSE") emit_ellipse(e, std::move(c), m, ext);
+  else if (e.type == "LWPOLYLINE" || e.type == "POLYLINE") emit_polyline(e, std::move(c), m, ext);
+  else if (e.type == "SPLINE") emit_spline(e, std::move(c), m);
+  else if (e.type == "INSERT") emit_insert(e, m, ext, layer, prefix);
+  else d_.layers[layer].skipped[e.type] += 1;
+}
+
+void Reader::emit_line(const Entity& e, Contour c, const Affine& m) {
+  c.pieces.push_back(line_piece(vec(e, 10), vec(e, 11)));
+  if (c.pieces[0].points[0].x == c.pieces[0].points[1].x && c.pieces[0].points[0].y == c.pieces[0].points[1].y) {
+    d_.layers[c.layer].skipped["LINE of length 0"] += 1;
+    return;
   }
+  add(std::move(c), m, e.type);
+}
+
+void Reader::emit_arc(const Entity& e, Contour c, const Affine& m, const Vec3& ext) {
+  const Vec3 ctr = vec(e, 10);
+  const double r = num(e, 40);
+  double t0 = 0, sweep = kTwoPi;
+  if (e.type == "ARC") {
+    t0 = num(e, 50) * kDegree;
+    sweep = std::fmod(num(e, 51) * kDegree - t0, kTwoPi);
+    if (sweep <= 0) sweep += kTwoPi;
+  }
+  if (!(r > 0)) {  // a point drawn as a circle cuts nothing (LibreCAD's library has such arcs)
+    if (r < 0) fail(errc::import_dxf_syntax, e, nullptr, "expected a radius >= 0 (group code 40), found " + fmt_num(r));
+    d_.layers[c.layer].skipped[e.type + " of radius 0"] += 1;
+    return;
+  }
+  c.pieces = ellipse_arc({ctr.x, ctr.y, 0}, {r, 0, 0}, {0, r, 0}, t0, sweep);
+  c.closed = e.type == "CIRCLE";
+  add(std::move(c), m.after(ocs(ext, ctr.z)), e.type);
+}
+
+void Reader::emit_ellipse(const Entity& e, Contour c, const Affine& m, const Vec3& ext) {
+  const Vec3 ctr = vec(e, 10), major = vec(e, 11);
+  const double ratio = num(e, 40, 1), t0 = num(e, 41, 0), t1 = num(e, 42, kTwoPi);
+  const Vec3 n = norm(ext) > 0 ? ext / norm(ext) : Vec3{0, 0, 1};
+  const Vec3 minor = cross(n, major) * ratio;
+  double sweep = t1 - t0;
+  sweep = std::fmod(sweep, kTwoPi);
+  if (sweep <= 0) sweep += kTwoPi;
+  if (std::abs(t1 - t0) >= kTwoPi) sweep = kTwoPi;
+  c.closed = std::abs(sweep - kTwoPi) < 1e-12;
+  c.pieces = ellipse_arc(ctr, major, minor, t0, c.closed ? kTwoPi : sweep);
+  add(std::move(c), m, e.type);
+}
+
+void Reader::emit_polyline(const Entity& e, Contour c, const Affine& m, const Vec3& ext) {
+  std::vector<Vec3> vs;
+  std::vector<double> bulges;
+  if (e.type == "LWPOLYLINE") {
+    for (const Group& g : e.groups) {
+      if (g.code == 10) vs.push_back({number(e, g), 0, 0}), bulges.push_back(0);
+      else if (g.code == 20 && !vs.empty()) vs.back().y = number(e, g);
+      else if (g.code == 42 && !vs.empty()) bulges.back() = number(e, g);
+    }
+  } else {
+    if ((integer(e, 70, 0) & (16 | 64)) != 0) {  // meshes are not curves
+      d_.layers[c.layer].skipped["POLYLINE mesh"] += 1;
+      return;
+    }
+    for (const Entity& v : e.vertices) {
+      if ((integer(v, 70, 0) & 16) != 0) continue;  // a spline frame's control point
+      vs.push_back(vec(v, 10));
+      bulges.push_back(num(v, 42));
+    }
+  }
+  const bool closed = (integer(e, 70, 0) & 1) != 0;
+  for (size_t i = 0; i + 1 < vs.size() + (closed ? 1 : 0); ++i)
+    for (Piece& p : bulge_segment(vs[i], vs[(i + 1) % vs.size()], bulges[i])) c.pieces.push_back(std::move(p));
+  if (c.pieces.empty()) return;
+  c.closed = closed;
+  const double elevation = e.type == "LWPOLYLINE" ? num(e, 38) : vec(e, 10).z;
+  add(std::move(c), m.after(ocs(ext, elevation)), e.type);
+}
+
+// A SPLINE's control points, knots and weights as a B-spline piece, checked
+// as the job reader checks them (the place: the entity and its groups).
+Piece Reader::spline_piece(const Entity& e, int degree, std::vector<Vec3> cps, std::vector<double> knots,
+                           std::vector<double> weights) const {
+  const Group* kg = nullptr;
+  for (const Group& g : e.groups)
+    if (g.code == 40) {
+      if (kg && number(e, g) < number(e, *kg))
+        fail(errc::import_knots, e, &g, "expected a knot >= " + kg->value + " (knots must not decrease), found " + g.value);
+      kg = &g;
+    }
+  if (knots.size() != cps.size() + static_cast<size_t>(degree) + 1)
+    fail(errc::import_knots, e, nullptr, "expected " + std::to_string(cps.size() + static_cast<size_t>(degree) + 1) +
+                                              " knots (group code 40) for " + std::to_string(cps.size()) +
+                                              " control points of degree " + std::to_string(degree) + ", found " +
+                                              std::to_string(knots.size()));
+  if (!weights.empty() && weights.size() != cps.size())
+    fail(errc::import_knots, e, nullptr, "expected one weight (group code 41) per control point (" +
+                                              std::to_string(cps.size()) + "), found " + std::to_string(weights.size()));
+  if (std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights.front(); })) weights.clear();
+  Piece p;
+  p.bspline = true;
+  p.degree = degree;
+  p.points = std::move(cps);
+  p.knots = std::move(knots);
+  p.weights = std::move(weights);
+  // Everything else the job reader would refuse (degree, weights,
+  // knot multiplicity, an empty domain) is refused here, naming the entity.
+  try {
+    (void)NurbsCurve::make(p.degree, p.points, p.knots, p.weights);
+  } catch (const Error& err) {
+    fail(errc::import_knots, e, nullptr, err.where() + ": " + err.message());
+  }
+  return p;
+}
+
+void Reader::emit_spline(const Entity& e, Contour c, const Affine& m) {
+  const int flags = integer(e, 70, 0);
+  const int degree = integer(e, 71, 3, 1, kMaxBezierDegree);
+  std::vector<Vec3> cps = points(e, 10);
+  std::vector<double> knots = all(e, 40), weights = all(e, 41);
+  if (!cps.empty()) {
+    c.pieces.push_back(spline_piece(e, degree, std::move(cps), std::move(knots), std::move(weights)));
+    c.closed = (flags & 1) != 0 && dist(c.pieces[0].start(), c.pieces[0].end()) <= 1e-9 * (1 + max_abs(c.pieces[0].start()));
+  } else if (std::vector<Vec3> fit = points(e, 11); fit.size() >= 2 && has(e, 12) && has(e, 13) &&
+                                                       norm(vec(e, 12)) > 0 && norm(vec(e, 13)) > 0) {
+    std::optional<Piece> p = fit_spline(fit, vec(e, 12), vec(e, 13));
+    if (!p) fail(errc::import_knots, e, nullptr, "expected fit points (group code 11) that differ from one to the next, found two equal in a row");
+    c.pieces.push_back(std::move(*p));
+    c.closed = (flags & 1) != 0 && dist(fit.front(), fit.back()) <= 1e-9 * (1 + max_abs(fit.front()));
+  } else {
+    // Without both end tangents the CAD program's curve is not defined by
+    // the file: a natural cubic spline through the points (docs/import.md).
+    c.is_interpolation = true;
+    c.interpolation.through = points(e, 11);
+    c.interpolation.closed = (flags & 1) != 0;
+    if (c.interpolation.through.size() < 2)
+      fail(errc::import_knots, e, nullptr, "expected control points (group code 10) or at least 2 fit points (11), found neither");
+  }
+  add(std::move(c), m, e.type);
+}
+
+void Reader::emit_insert(const Entity& e, const Affine& m, const Vec3& ext, const std::string& layer,
+                         const std::string& prefix) {
+  std::string name;
+  const Group* ng = nullptr;
+  for (const Group& g : e.groups)
+    if (g.code == 2) name = g.value, ng = &g;
+  const auto it = blocks_.find(name);
+  if (it == blocks_.end()) fail(errc::import_dxf_syntax, e, ng, "expected the name of a block, found \"" + name + "\", which no block has");
+  if (std::find(inserting_.begin(), inserting_.end(), name) != inserting_.end() || inserting_.size() > 32)
+    fail(errc::import_block_recursion, e, ng, "block \"" + name + "\" inserts itself (through " +
+                                                  std::to_string(inserting_.size()) + " level(s) of INSERT); expected a block that does not contain itself");
+  const Block& b = it->second;
+  const Vec3 ins = vec(e, 10), s{num(e, 41, 1), num(e, 42, 1), num(e, 43, 1)};
+  const double rot = num(e, 50) * kDegree;
+  const Affine local = ocs(ext, ins.z)
+                           .after(Affine{1, 0, 0, 1, ins.x, ins.y})
+                           .after(Affine{std::cos(rot), std::sin(rot), -std::sin(rot), std::cos(rot), 0, 0})
+                           .after(Affine{s.x, 0, 0, s.y, 0, 0})
+                           .after(Affine{1, 0, 0, 1, -b.base.x, -b.base.y});
+  inserting_.push_back(name);
+  d_.layers[layer].read["INSERT"] += 1;
+  const std::string h = e.handle().empty() ? "line" + std::to_string(e.line) : e.handle();
+  for (const Entity& be : b.entities) emit(be, m.after(local), layer, prefix + h + "/");
+  inserting_.pop_back();
 }
 
 Drawing Reader::read() {

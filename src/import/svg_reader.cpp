@@ -511,9 +511,10 @@ Drawing read_svg(std::string_view text, const std::string& source) {
     const xmlError* e = xmlGetLastError();
     std::string why = e && e->message ? e->message : "not well-formed XML";
     while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
-    throw InputError(errc::import_not_a_drawing, Place::at_file(source),
-                     (e && e->line > 0 ? "line " + std::to_string(e->line) + ": " : std::string()) +
-                         "expected an SVG drawing (XML), found a file the XML parser refuses: " + why);
+    Place where = Place::at_file(source);
+    if (e && e->line > 0) where.line = e->line;
+    throw InputError(errc::import_not_a_drawing, std::move(where),
+                     "expected an SVG drawing (XML), found a file the XML parser refuses: " + why);
   }
   xmlNode* root = xmlDocGetRootElement(doc.get());
   if (!root || name_of(root) != "svg")

@@ -1,11 +1,14 @@
 // Jobs from in-memory curves: the same invariants as the JSON reader's.
 #include "bezcam/job/job_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/keys.hpp"
 #include "bezcam/job/tools.hpp"
+#include "bezcam/kernel/spline_interp.hpp"
 #include "bezcam/limits.hpp"
 
 namespace bezcam {
@@ -137,6 +140,66 @@ JobBuilder& JobBuilder::path(std::string id, std::vector<Bezier> segments, bool 
     throw InputError(e.id(), Place::in_json(job_.source, at, e.place().relative_path()), e.message());
   }
   return entity(std::move(id), "path", std::move(g), std::move(params));
+}
+
+JobBuilder& JobBuilder::path_segments(std::string id, std::vector<PathSegment> segments, bool closed, JobParams params) {
+  const std::string at = "entities[" + std::to_string(job_.entities.size()) + "]";
+  if (segments.empty())
+    throw InputError(errc::job_missing, Place::in_json(job_.source, at, "segments"), "a path needs at least one segment");
+  std::vector<CurveSegment> segs;
+  std::vector<Bezier> pieces;
+  int dim = 2;
+  for (PathSegment& sg : segments) {
+    CurveSegment s;
+    s.first_piece = pieces.size();
+    if (Bezier* b = std::get_if<Bezier>(&sg)) {
+      s.kind = "bezier";
+      s.degree = b->degree();
+      s.rational = b->rational();
+      dim = std::max(dim, b->dim);
+      pieces.push_back(std::move(*b));
+    } else {
+      NurbsCurve c = std::get<NurbsCurve>(std::move(sg));
+      // Equal weights cancel out: the curve is polynomial, and exactly so.
+      if (c.rational() && std::all_of(c.weights.begin(), c.weights.end(), [&](double w) { return w == c.weights[0]; }))
+        c.weights.clear();
+      const std::vector<Bezier> bez = to_bezier(c);
+      pieces.insert(pieces.end(), bez.begin(), bez.end());
+      s.kind = "bspline";
+      s.degree = c.degree;
+      s.rational = c.rational();
+      dim = std::max(dim, c.dim);
+      s.nurbs = std::make_shared<const NurbsCurve>(std::move(c));
+    }
+    s.piece_count = pieces.size() - s.first_piece;
+    segs.push_back(std::move(s));
+  }
+  CurveGeometry g;
+  try {
+    g = make_path(std::move(segs), std::move(pieces), closed, dim);
+  } catch (const InputError& e) {
+    throw InputError(e.id(), Place::in_json(job_.source, at, e.place().relative_path()), e.message());
+  }
+  return entity(std::move(id), "path", std::move(g), std::move(params));
+}
+
+JobBuilder& JobBuilder::interpolate(std::string id, std::vector<Vec3> through, bool closed, JobParams params) {
+  const std::string at = "entities[" + std::to_string(job_.entities.size()) + "]";
+  const int dim = std::any_of(through.begin(), through.end(), [](const Vec3& p) { return p.z != 0; }) ? 3 : 2;
+  NurbsCurve c;
+  try {
+    c = closed ? periodic_cubic_spline(through, dim) : natural_cubic_spline(through, dim);
+  } catch (const InputError& e) {
+    throw InputError(e.id(), Place::in_json(job_.source, at, e.place().relative_path()), e.message());
+  }
+  CurveSegment seg;
+  seg.kind = "interpolate";
+  seg.degree = 3;
+  std::vector<Bezier> pieces = to_bezier(c);
+  seg.nurbs = std::make_shared<const NurbsCurve>(std::move(c));
+  CurveGeometry g = make_single(seg, std::move(pieces), dim);
+  g.closed = closed;
+  return entity(std::move(id), "interpolate", std::move(g), std::move(params));
 }
 
 Job JobBuilder::build() const {

@@ -11,6 +11,8 @@
 #include "bezcam/limits.hpp"
 #include "job_json_detail.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/job/job_builder.hpp"
+#include "bezcam/job/settings.hpp"
 
 namespace bezcam {
 
@@ -433,6 +435,40 @@ const char* to_string(Coolant c) {
 
 namespace {
 
+// The job's settings: the top-level units, tolerance and machine, the
+// `job` object's cutting parameters and program number, the order.
+void read_settings(detail::JsonCtx& ctx, const detail::json& doc, Job& job) {
+  using detail::json;
+  if (auto it = doc.find("units"); it != doc.end()) {
+    const std::string u = ctx.string(*it, "units");
+    if (u == "mm") job.units = Units::mm;
+    else if (u == "inch") job.units = Units::inch;
+    else ctx.fail("units", errc::job_units, "expected \"mm\" or \"inch\", found " + detail::describe(*it));
+  }
+  job.tolerance = kDefaultToleranceMm / mm_per_unit(job.units);
+  if (auto it = doc.find("tolerance"); it != doc.end()) job.tolerance = ctx.positive(*it, "tolerance");
+  if (auto it = doc.find("machine"); it != doc.end()) job.machine = ctx.string(*it, "machine");
+  if (auto it = doc.find("job"); it != doc.end()) {
+    if (!it->is_object()) ctx.expected("job", "an object", *it);
+    job.params = detail::parse_params(ctx, *it, "job", false);
+    if (auto pn = it->find("program_number"); pn != it->end()) {
+      const long n = ctx.integer(*pn, "job.program_number");
+      if (n < 1 || n > 99999999)
+        ctx.fail("job.program_number", errc::job_range, "expected a program number from 1 to 99999999, found " + std::to_string(n));
+      job.program_number = n;
+    }
+  }
+  for (const std::string where : {"order", "job.order"}) {
+    const json* o = where == "order" ? (doc.contains("order") ? &doc["order"] : nullptr)
+                                     : (doc.contains("job") && doc["job"].contains("order") ? &doc["job"]["order"] : nullptr);
+    if (!o) continue;
+    const std::string v = ctx.string(*o, where);
+    if (v != "shortest" && v != "as-written")
+      ctx.fail(where, errc::job_cut, "expected \"as-written\" or \"shortest\", found " + detail::describe(*o));
+    job.order_shortest = v == "shortest";
+  }
+}
+
 void parse_document(std::string_view text, const std::string& source, detail::JsonCtx& ctx, Job& job,
                     std::vector<InputError>& errors) {
   using detail::json;
@@ -496,34 +532,7 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
   job.version = ctx.integer(ver, "bezcam");
   if (job.version != 1)
     ctx.fail("bezcam", errc::job_version, "expected format version 1, found " + std::to_string(job.version));
-  if (auto it = doc.find("units"); it != doc.end()) {
-    const std::string u = ctx.string(*it, "units");
-    if (u == "mm") job.units = Units::mm;
-    else if (u == "inch") job.units = Units::inch;
-    else ctx.fail("units", errc::job_units, "expected \"mm\" or \"inch\", found " + detail::describe(*it));
-  }
-  job.tolerance = kDefaultToleranceMm / mm_per_unit(job.units);
-  if (auto it = doc.find("tolerance"); it != doc.end()) job.tolerance = ctx.positive(*it, "tolerance");
-  if (auto it = doc.find("machine"); it != doc.end()) job.machine = ctx.string(*it, "machine");
-  if (auto it = doc.find("job"); it != doc.end()) {
-    if (!it->is_object()) ctx.expected("job", "an object", *it);
-    job.params = detail::parse_params(ctx, *it, "job", false);
-    if (auto pn = it->find("program_number"); pn != it->end()) {
-      const long n = ctx.integer(*pn, "job.program_number");
-      if (n < 1 || n > 99999999)
-        ctx.fail("job.program_number", errc::job_range, "expected a program number from 1 to 99999999, found " + std::to_string(n));
-      job.program_number = n;
-    }
-  }
-  for (const std::string where : {"order", "job.order"}) {
-    const json* o = where == "order" ? (doc.contains("order") ? &doc["order"] : nullptr)
-                                     : (doc.contains("job") && doc["job"].contains("order") ? &doc["job"]["order"] : nullptr);
-    if (!o) continue;
-    const std::string v = ctx.string(*o, where);
-    if (v != "shortest" && v != "as-written")
-      ctx.fail(where, errc::job_cut, "expected \"as-written\" or \"shortest\", found " + detail::describe(*o));
-    job.order_shortest = v == "shortest";
-  }
+  read_settings(ctx, doc, job);
   const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
   if (ents.size() > kMaxEntities)
     ctx.fail("entities", errc::limit_entities,
@@ -557,6 +566,40 @@ Job parse_job(std::string_view text, const std::string& source, const JobReadOpt
   }
   if (errors.empty()) return job;
   if (opt.warnings) *opt.warnings = job.warnings;
+  InputError first = errors.front();
+  for (size_t i = 1; i < errors.size(); ++i) first.add_more(errors[i]);
+  throw first;
+}
+
+JobBuilder& JobBuilder::settings(std::span<const std::pair<std::string, std::string>> settings) {
+  using detail::json;
+  const SettingsJson given = settings_json(settings);
+  // The settings as the members of a job document: each value is JSON text.
+  json doc = json::object();
+  for (const auto& [k, v] : given.top) doc[k] = json::parse(v);
+  if (!given.job.empty()) {
+    doc["job"] = json::object();
+    for (const auto& [k, v] : given.job) doc["job"][k] = json::parse(v);
+  }
+  std::vector<InputError> errors;
+  detail::JsonCtx ctx{job_.source, &job_.warnings};
+  ctx.errors = &errors;
+  const Units units = job_.units;
+  const double tolerance = job_.tolerance;
+  const JobParams params = job_.params;
+  try {
+    read_settings(ctx, doc, job_);
+  } catch (const InputError& e) {
+    errors.push_back(e);  // a refusal that stops the reading: the last one
+  }
+  if (errors.empty()) {
+    // What the settings do not give keeps its value (a default tolerance
+    // follows the units, as units() does).
+    if (!doc.contains("tolerance"))
+      job_.tolerance = tolerance == kDefaultToleranceMm / mm_per_unit(units) ? kDefaultToleranceMm / mm_per_unit(job_.units) : tolerance;
+    job_.params = job_.params.over(params);
+    return *this;
+  }
   InputError first = errors.front();
   for (size_t i = 1; i < errors.size(); ++i) first.add_more(errors[i]);
   throw first;

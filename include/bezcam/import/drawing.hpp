@@ -83,10 +83,12 @@ void join_contours(Drawing& d);
 /// layer named in `opt` is not in the drawing or nothing is left to cut.
 std::string job_json(const Drawing& d, const ImportOptions& opt = {});
 
-/// The job: job_json() read by the job reader, so that `import` then
-/// `convert` and `convert DRAWING` are the same job. A setting the reader
-/// refuses is named as `--set KEY`. `warnings` gets the reader's, and with
-/// a side inside or outside one for each pair of contours that cross.
+/// The job, built in memory (JobBuilder) from what job_json() writes: the
+/// same entities, ids, sides, settings, limits and refusals as the job
+/// reader gives that text, so that `import` then `convert` and `convert
+/// DRAWING` are the same job. A setting refused is named as `--set KEY`.
+/// `warnings` gets, with a side inside or outside, one for each pair of
+/// contours that cross (none when the job is refused).
 Job to_job(const Drawing& d, const ImportOptions& opt = {}, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace bezcam::import

@@ -11,8 +11,10 @@
 ///                 .bezier("outline", Bezier::make({{0, 0}, {10, 20}, {30, 0}}))
 ///                 .build();
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "bezcam/job/job.hpp"
@@ -50,6 +52,27 @@ class JobBuilder {
   /// ends, within 1e-9 of the coordinates' magnitude; InputError naming
   /// `segments[i]` otherwise); `closed` joins the end to the start.
   JobBuilder& path(std::string id, std::vector<Bezier> segments, bool closed = false, JobParams params = {});
+  /// One segment of a file's `path`: a Bézier, or a B-spline/NURBS (kept
+  /// exactly for NURBS output; equal weights make it polynomial, as in a
+  /// file).
+  using PathSegment = std::variant<Bezier, NurbsCurve>;
+  /// A path of Bézier and B-spline segments end to end, as a file's `path`
+  /// is read (each segment within 1e-9 of where the previous ends;
+  /// InputError naming `entities[i].segments[j]` otherwise).
+  JobBuilder& path_segments(std::string id, std::vector<PathSegment> segments, bool closed = false,
+                            JobParams params = {});
+  /// The curve through `through` (2 points or more) as a file's
+  /// `interpolate` entity with method "cubic-spline" reads it: a natural
+  /// cubic spline, periodic when `closed`. InputError naming `entities[i]`
+  /// when no such spline exists (two equal points in a row).
+  JobBuilder& interpolate(std::string id, std::vector<Vec3> through, bool closed = false, JobParams params = {});
+  /// Settings given as KEY=VALUE text (the CLI's `--set`, settings.hpp),
+  /// read as a job file's top-level keys and `job` object are read: the
+  /// units, tolerance, machine, cutting parameters, order. Throws
+  /// settings_json()'s refusal of an unknown key, or an InputError whose
+  /// place is the builder's name and the JSON path (`job.feed`), with the
+  /// further refusals in Error::more().
+  JobBuilder& settings(std::span<const std::pair<std::string, std::string>> settings);
 
   /// The job. Throws InputError (place: the builder's name and
   /// `entities[i]`) when an entity's values are invalid, no entity was
