@@ -15,6 +15,7 @@
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/degree_reduce.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/kernel/roots.hpp"
 #include "flatten/search.hpp"
 
 #if defined(__SSE2__)
@@ -32,33 +33,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kAcceptShare = 0.94;
 // Share of the budget aimed at when predicting the next step.
 constexpr double kAimShare = 0.97;
-
-// Roots in [0,1] of a + b s + c s^2 (numerically stable form).
-inline __attribute__((always_inline)) int quadratic_roots01(double a, double b, double c, double out[2]) {
-  int n = 0;
-  // (without a branch: the slot is written whether the root is kept or not;
-  // the comparisons also leave out infinities and NaN)
-  auto keep = [&](double s) {
-    out[n] = s;
-    n += int(s >= 0) & int(s <= 1);
-  };
-  const double scale = std::max(std::max(std::abs(a), std::abs(b)), std::abs(c));
-  if (scale == 0) return 0;
-  if (std::abs(c) <= 1e-14 * scale) {
-    if (b != 0) keep(-a / b);
-    return n;
-  }
-  const double disc = b * b - 4 * a * c;
-  if (disc < 0) return 0;
-  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-  if (q != 0) {
-    keep(q / c);
-    keep(a / q);
-  } else {
-    keep(0);
-  }
-  return n;
-}
 
 // Max over s in [0,1] of |f(s)|, f the cubic with Bernstein coefficients
 // (0, d1, d2, 0): f = 3 s (1-s) (d1 (1-s) + d2 s). Exact: the extremes are
@@ -355,30 +329,18 @@ double wang_step(const Bezier& b, double tol) {
   return k <= 1 ? 1.0 : 1.0 / std::ceil(k);
 }
 
-// One piece, prepared for fast repeated chord tests.
-struct Prepared {
+// One piece, prepared for fast repeated chord tests: a polynomial of
+// degree <= 3 by its power form (c0..c3, zero for other pieces).
+struct Prepared : CubicPowerForm {
   const Bezier* b = nullptr;
   bool cubic = false;         // polynomial of degree <= 3 (elevated to 3)
   bool planar = false;        // 2D
-  Vec3 c0, c1, c2, c3;        // power form of the cubic
 
   explicit Prepared(const Bezier& piece) : b(&piece) {
     if (piece.rational() || piece.degree() > 3) return;
     cubic = true;
     planar = piece.dim == 2;
-    if (piece.degree() == 3) {
-      power_form(piece.points);  // the common case: no copy
-    } else {
-      Bezier e = piece;
-      while (e.degree() < 3) e = elevate(e);
-      power_form(e.points);
-    }
-  }
-  void power_form(const std::vector<Vec3>& P) {
-    c0 = P[0];
-    c1 = (P[1] - P[0]) * 3;
-    c2 = (P[0] - P[1] * 2 + P[2]) * 3;
-    c3 = P[3] - P[0] + (P[1] - P[2]) * 3;
+    static_cast<CubicPowerForm&>(*this) = CubicPowerForm::of(piece);
   }
   Vec3 point(double t) const {
     if (t <= 0) return b->front();
@@ -1033,10 +995,10 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     while (j < m - 1 && C[j + 1] < lv) ++j;
     return (j + std::clamp((lv - C[j]) * W[j], 0.0, 1.0)) * inv_m;
   };
-  // The piece's inflections (roots of M' x M'' = 2 c1 x c2 + 6 (c1 x c3) t
-  // + 6 (c2 x c3) t^2), those not within 5 % of an end: the plan puts a
-  // vertex on the curve at each and plans the stretches between them apart
-  // (seg_end: the end of the stretch planned). A chord across an inflection
+  // The piece's inflections (CubicPowerForm::inflections()), those not
+  // within 5 % of an end, ascending: the plan puts a vertex on the curve at
+  // each and plans the stretches between them apart (seg_end: the end of
+  // the stretch planned). A chord across an inflection
   // has its ends shifted to opposite sides, so the curve crosses it and it
   // fits only when very short: such planned chords often fail. Split
   // there, the planned chords fail less often, for a few more chords (the
@@ -1045,10 +1007,9 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   int n_infl = 0;
   {
     double r[2];
-    const int n = quadratic_roots01(2 * cross(P.c1, P.c2).z, 6 * cross(P.c1, P.c3).z, 6 * cross(P.c2, P.c3).z, r);
+    const int n = P.inflections(r);
     for (int i = 0; i < n; ++i)
       if (r[i] > 0.05 && r[i] < 0.95) infl[n_infl++] = r[i];
-    if (n_infl == 2 && infl[0] > infl[1]) std::swap(infl[0], infl[1]);
   }
   double seg_end = 1.0;
   // The running integral at t (linear within its grid interval, which
