@@ -167,6 +167,12 @@ struct Piece {
     for (int j = n; j-- > 0;) r = r * t + c[j];
     return r;
   }
+  // C'(t), with a power form (n >= 0).
+  Vec3 tangent(double t) const {
+    Vec3 d{};
+    for (int j = n; j >= 1; --j) d = d * t + c[j] * double(j);
+    return d;
+  }
   // The point and its first two derivatives at t.
   void derivatives(double t, Vec3& p, Vec3& d1, Vec3& d2) const {
     if (n < 0) return general_derivatives(t, p, d1, d2);
@@ -482,7 +488,7 @@ class Measure {
     }
     q.acc = P()[q.i].acc(q.t);
   }
-  double bound(const PathPt& a, const PathPt& b, double* split) const;
+  double bound(const PathPt& a, const PathPt& b, double* split, bool* apart) const;
 
   Scratch& s_;
   std::span<const Vec3> poly_;
@@ -761,8 +767,9 @@ double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
 // segment. The chord joins the two feet (one per piece when they lie in
 // neighbouring pieces); the distance moving no faster than the point gives
 // the other bound.
-double Measure::bound(const PathPt& a, const PathPt& b, double* split) const {
+double Measure::bound(const PathPt& a, const PathPt& b, double* split, bool* apart) const {
   *split = 0.5;
+  *apart = false;
   // The bound from the distance moving no faster than the point (lip
   // below) is the one that shrinks with the stretch where the feet jump
   // (two parts of the curve equally near).
@@ -776,7 +783,25 @@ double Measure::bound(const PathPt& a, const PathPt& b, double* split) const {
     // Split where it is largest, kept off the ends.
     *split = std::clamp(l, 0.1, 0.9);
     if (ub <= std::max(a.d, b.d) + gap_) return ub;
-    return std::min(ub, 0.5 * (a.d + b.d + dist(a.x, b.x)));
+    // Without the parameter: the arc between the feet lies within its
+    // control polygon's distance s of its own chord [a.f, b.f] and, joining
+    // its ends, passes within s of every point of it; the distance to that
+    // chord is convex along the segment. So the stretch is within the ends'
+    // distances to the chord, plus s, of the curve. This is what settles a
+    // stretch near a fold of the curve (where it turns back along itself,
+    // the foot of a point moves like the square root of its distance, and
+    // the parametric bump halves only as the stretch does).
+    const PathPt& lo = a.t <= b.t ? a : b;
+    const PathPt& hi = a.t <= b.t ? b : a;
+    const double h = (hi.t - lo.t) / 3;
+    const Vec3 q1 = lo.f + pc.tangent(lo.t) * h, q2 = hi.f - pc.tangent(hi.t) * h;
+    const double geo = std::max(dist_to_segment(a.x, lo.f, hi.f), dist_to_segment(b.x, lo.f, hi.f)) +
+                       std::max(dist_to_segment(q1, lo.f, hi.f), dist_to_segment(q2, lo.f, hi.f));
+    const double lip = 0.5 * (a.d + b.d + dist(a.x, b.x));
+    // (neither bound from the curve between the feet helps: they lie on
+    // parts of it that are apart, both near the segment)
+    *apart = lip < std::min(ub, geo);
+    return std::min({ub, geo, lip});
   }
   double ub = 0.5 * (a.d + b.d + dist(a.x, b.x));
   if (a.i == b.i) {
@@ -863,7 +888,8 @@ double Measure::path_to_curve_once() {
       const PathPt a = work[work.size() - 1], b = work[work.size() - 2];
       const int dep = depth.back();
       double split = 0.5;
-      const double ub = bound(a, b, &split);
+      bool apart = false;
+      const double ub = bound(a, b, &split, &apart);
       if (done(ub, lb) || dep >= kMostDepth) {
         if (!done(ub, lb)) open = std::max(open, ub);
         work.pop_back();
@@ -873,8 +899,12 @@ double Measure::path_to_curve_once() {
       PathPt m;
       m.s = a.s + split * (b.s - a.s);
       m.x = lerp(poly_[k], poly_[k + 1], m.s - double(k));
-      // Start from the foot interpolated between the ends' when they share a piece.
-      read_path(m, a.i, a.i == b.i ? a.t + split * (b.t - a.t) : a.t);
+      // Start from the foot interpolated between the ends' when they share
+      // a piece, unless they lie on parts of it that are apart (where the
+      // curve turns back along itself, several parts may be near the
+      // segment): then from a's, so that the feet change parts at one
+      // place of the stretch, not at many.
+      read_path(m, a.i, a.i == b.i && !apart ? a.t + split * (b.t - a.t) : a.t);
       if (m.d > lb) lb = m.d, best_p_ = m;
       work.back() = m;
       work.push_back(a);

@@ -152,6 +152,81 @@ double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
   return std::max(l, cubic_within({m, bc, c, d[3]}, budget, depth - 1));
 }
 
+// sup |D|^2 |AB|^2 for the planar cubic sub-curve S against the segment
+// [A, B] when S's projection on the line AB leaves the segment, decided
+// against b2 (|AB|^2 budget^2). L(s) = A + u clamp(p(s)), p(s) the
+// projection of the cubic with control points A, S1, S2, B (u along AB),
+// runs continuously from A to B on the segment, so sup |S - L| bounds the
+// Hausdorff distance both ways (as in band_bound()). Multiplied by |AB|,
+// the cross part of D = S - L is the cubic with Bernstein coefficients c;
+// the along part is a0 (1 - s)^3 + a3 s^3 (the ends' offsets along AB)
+// plus e(p(s)) = p(s) - clamp(p(s), 0, l2), p's Bernstein coefficients
+// (0, l1, l2p, l2), all multiplied by |AB|. On an interval of s each term
+// lies between its values at the interval's ends and at its extremes
+// inside (the roots of a quadratic; e is monotone in p), which bounds
+// |D|^2 there; intervals are halved (at most 40 times) until the bound is
+// within b2 (the largest such bound is returned) or a value of |D|^2 at a
+// midpoint is over it (returned: over the budget); infinity when 40
+// halvings do not decide.
+__attribute__((noinline, cold)) double pointwise_within(const std::array<double, 4>& c, double a0, double a3, double l1, double l2p, double l2,
+                        double b2) {
+  auto cubic = [](double b0, double b1, double b2_, double b3, double s) {
+    const double u = 1 - s;
+    return u * u * (b0 * u + 3 * b1 * s) + s * s * (3 * b2_ * u + b3 * s);
+  };
+  auto cross_at = [&](double s) { return cubic(c[0], c[1], c[2], c[3], s); };
+  auto p_at = [&](double s) { return cubic(0, l1, l2p, l2, s); };
+  auto along_at = [&](double s) {
+    const double u = 1 - s;
+    return a0 * u * u * u + a3 * s * s * s;
+  };
+  auto excess = [&](double v) { return v < 0 ? v : v > l2 ? v - l2 : 0.0; };
+  // The extremes inside [0, 1]: of the cross part, of p, of the along
+  // part (a0 (1 - s)^2 = a3 s^2, where a0 and a3 have one sign).
+  double rc[2], rp[2], ra = -1;
+  const int nc = quadratic_roots01(c[1] - c[0], 2 * (c[2] - 2 * c[1] + c[0]), c[3] - 3 * c[2] + 3 * c[1] - c[0], rc);
+  const int np = quadratic_roots01(l1, 2 * (l2p - 2 * l1), 3 * l1 - 3 * l2p + l2, rp);
+  if (a0 * a3 > 0) ra = 1 / (1 + std::sqrt(a3 / a0));
+  auto value = [&](double s) {
+    const double cv = cross_at(s), av = along_at(s) + excess(p_at(s));
+    return cv * cv + av * av;
+  };
+  auto interval_bound = [&](double s0, double s1) {
+    double cl = std::min(cross_at(s0), cross_at(s1)), ch = std::max(cross_at(s0), cross_at(s1));
+    double pl = std::min(p_at(s0), p_at(s1)), ph = std::max(p_at(s0), p_at(s1));
+    double al = std::min(along_at(s0), along_at(s1)), ah = std::max(along_at(s0), along_at(s1));
+    for (int i = 0; i < nc; ++i)
+      if (rc[i] > s0 && rc[i] < s1) cl = std::min(cl, cross_at(rc[i])), ch = std::max(ch, cross_at(rc[i]));
+    for (int i = 0; i < np; ++i)
+      if (rp[i] > s0 && rp[i] < s1) pl = std::min(pl, p_at(rp[i])), ph = std::max(ph, p_at(rp[i]));
+    if (ra > s0 && ra < s1) al = std::min(al, along_at(ra)), ah = std::max(ah, along_at(ra));
+    const double lo = al + excess(pl), hi = ah + excess(ph);
+    return std::max(cl * cl, ch * ch) + std::max(lo * lo, hi * hi);
+  };
+  struct Span {
+    double s0, s1;
+    int depth;
+  };
+  Span stack[48];
+  int top = 0;
+  stack[top++] = {0, 1, 0};
+  double most = 0;
+  while (top > 0) {
+    const Span sp = stack[--top];
+    const double ub = interval_bound(sp.s0, sp.s1);
+    if (ub <= b2) {
+      most = std::max(most, ub);
+      continue;
+    }
+    const double mid = 0.5 * (sp.s0 + sp.s1), vm = value(mid);
+    if (vm > b2) return vm;
+    if (sp.depth >= 40) return kInf;
+    stack[top++] = {mid, sp.s1, sp.depth + 1};
+    stack[top++] = {sp.s0, mid, sp.depth + 1};
+  }
+  return most;
+}
+
 // The parametric distance of band_bound() for a planar polynomial cubic
 // sub-curve S (control points S[0..3]) against the segment [A, B], in
 // closed form. D = S - L has control points d0 = S0 - A, d1, d2, d3 = S3 - B;
@@ -201,7 +276,13 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Pt* S, cons
   const double c0 = cross_ab(d0x, d0y), c1 = cross_ab(w1x, w1y), c2 = cross_ab(w2x, w2y), c3 = cross_ab(d3x, d3y);
   const double l1 = dot_ab(w1x, w1y), l2p = dot_ab(w2x, w2y);
   // (one test of all five: these rarely hold, and branches on each cost more)
-  const bool clamped = !(l2 > 1e-300) | (l1 < 0) | (l1 > l2) | (l2p < 0) | (l2p > l2);
+  const bool outside = !(l2 > 1e-300) | (l1 < 0) | (l1 > l2) | (l2p < 0) | (l2p > l2);
+  // With inner points projecting outside the segment, the projection of S
+  // on the line may still stay within it (a curve that doubles back along
+  // the chord): L is then that projection unclamped, as when they project
+  // inside (overshoot() reads the projection's Bernstein coefficients, all
+  // multiplied by |AB|).
+  const bool clamped = outside && (!(l2 > 1e-300) || overshoot(l1, l2p, l2) > 0);
   const double sg = c1 + c2 >= 0 ? 1 : -1;
   if (!clamped) {
     // A sufficient test first, without roots: the cross part split at
@@ -286,11 +367,21 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Pt* S, cons
   d[0] = as_vec3(S[0]) - Av;
   d[3] = as_vec3(S[3]) - Bv;
   const Vec3 ab = Bv - Av;
+  // (L's inner points clamped to the segment only where its projection
+  // leaves it: otherwise L is the projection itself, as above)
   for (int k = 1; k < 3; ++k) {
     const Vec3 Sk = as_vec3(S[k]);
-    d[k] = Sk - (Av + ab * (l2 > 0 ? std::clamp(dot(Sk - Av, ab) / l2, 0.0, 1.0) : 0.0));
+    const double f = l2 > 0 ? dot(Sk - Av, ab) / l2 : 0.0;
+    d[k] = Sk - (Av + ab * (clamped ? std::clamp(f, 0.0, 1.0) : f));
   }
-  return cubic_within(d, budget, 40);
+  const double sub = cubic_within(d, budget, 40);
+  if (sub <= budget || !clamped || !(l2 > 1e-300)) return sub;
+  // The projection of S on the line leaves the segment (the curve passes
+  // an end of the chord, as over a tip), and L with its inner points
+  // clamped does not prove the chord: L(s) = A + u clamp(p(s)) also runs
+  // from A to B on the segment, and is often nearer (pointwise_within()).
+  const double U2 = pointwise_within({c0, c1, c2, c3}, dot_ab(d0x, d0y), dot_ab(d3x, d3y), l1, l2p, l2, b2);
+  return U2 <= b2 ? std::sqrt(U2) * inv : sub;
 }
 
 // band_deviation() on a sub-curve already cut out: L has the sub-curve's
@@ -892,6 +983,83 @@ inline __attribute__((always_inline)) void band_sufficient2(const v2d* Sx, const
 }
 #endif
 
+// Where a planar polynomial cubic turns back on itself: the parameters in
+// (0, 1) where its speed |M'| has a local minimum (a root of M' . M'', a
+// cubic in t, where it changes from negative to positive) and its radius of
+// curvature there, |M'|^2 / |M''| (M'' is across M' there), is at most
+// `radius`. That includes a cusp (M' = 0) and where a collinear cubic
+// reverses along its line (its extreme points, vertices of the shortest
+// polyline). Returns how many (at most 2, ascending).
+int planar_tips(const Prepared& P, double radius, double out[2]) {
+  auto d2 = [](const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y; };
+  const Vec3 &c1 = P.c1, &c2 = P.c2, &c3 = P.c3;
+  const double g0 = 2 * d2(c1, c2), g1 = 6 * d2(c1, c3) + 4 * d2(c2, c2), g2 = 18 * d2(c2, c3), g3 = 18 * d2(c3, c3);
+  auto g = [&](double t) { return ((g3 * t + g2) * t + g1) * t + g0; };
+  auto dg = [&](double t) { return (3 * g3 * t + 2 * g2) * t + g1; };
+  const double noise = 1e-12 * (std::abs(g0) + std::abs(g1) + std::abs(g2) + std::abs(g3));
+  // g is monotone between the roots of g'.
+  double b[4] = {0, 0, 0, 1};
+  int nb = 1 + quadratic_roots01(g1, 2 * g2, 3 * g3, b + 1);
+  if (nb == 3 && b[1] > b[2]) std::swap(b[1], b[2]);
+  b[nb] = 1;
+  int n = 0;
+  // Speed squared, and |M''| squared, at t.
+  auto speed2 = [&](double t, double& a2) {
+    const Vec3 d1 = P.tangent(t), dd = c3 * (6 * t) + c2 * 2;
+    a2 = dd.x * dd.x + dd.y * dd.y;
+    return d1.x * d1.x + d1.y * d1.y;
+  };
+  for (int i = 0; i < nb; ++i) {
+    double lo = b[i], hi = b[i + 1];
+    double glo = g(lo), ghi = g(hi);
+    // (a change of sign within rounding noise is none: the speed vanishing
+    // at an end, where the last control points coincide, is not a tip)
+    if (!(glo < -noise && ghi > noise)) continue;
+    // g rises through the bracket [lo, hi], so the speed squared, whose
+    // derivative is 2 g, is at least s2(lo) + 2 g(lo) (hi - lo) and
+    // s2(hi) - 2 g(hi) (hi - lo) there; |M''| is largest at an end. When
+    // that rules a tip out the search stops; otherwise Newton's method,
+    // kept within the bracket (bisection where it leaves it), from the
+    // secant's root, narrows it.
+    double alo, ahi;
+    double slo = speed2(lo, alo), shi = speed2(hi, ahi);
+    double t = lo - glo * (hi - lo) / (ghi - glo);
+    bool tip = true;
+    for (int it = 0; it < 60; ++it) {
+      const double w = hi - lo, least = std::max(slo + 2 * glo * w, shi - 2 * ghi * w);
+      if (least > 0 && least * least > radius * radius * std::max(alo, ahi)) {
+        tip = false;
+        break;
+      }
+      double a2;
+      const double v = g(t), d = dg(t), s2 = speed2(t, a2);
+      if (v == 0) break;
+      if (v < 0) lo = t, glo = v, slo = s2, alo = a2;
+      else hi = t, ghi = v, shi = s2, ahi = a2;
+      double nt = d > 0 ? t - v / d : 0.5 * (lo + hi);
+      if (!(nt > lo && nt < hi)) nt = 0.5 * (lo + hi);
+      const bool last = std::abs(nt - t) < 1e-14;
+      t = nt;
+      if (last) break;
+    }
+    if (!tip || !(t > 0 && t < 1)) continue;
+    // (where M' . M'' = 0, |M' x M''| = |M'| |M''|: the radius is |M'|^2 / |M''|)
+    double a2;
+    const double s2 = speed2(t, a2);
+    if (s2 * s2 <= radius * radius * a2) out[n++] = t;
+  }
+  return n;
+}
+// A tip is one where the radius of curvature is at most this share of the
+// plan's budget; an inflection within kTipAbsorb chords of the plan from a
+// tip is left to the tip's vertex; kTipShare, kTipPlan and kTipEager in
+// band_planar_spread().
+constexpr double kTipRadius = 1.0;
+constexpr double kTipAbsorb = 0.5;
+constexpr double kTipShare = 1.0;
+constexpr double kTipPlan = 8.0;
+constexpr double kTipEager = 3.0;
+
 template <class Emit>
 void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt,
                         double tol, double margin, double rounding, double shift, size_t pi, const Vec3& A, Vec3& Ar,
@@ -919,6 +1087,10 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     d = std::sqrt(std::abs(d1x * d2y - d1y * d2x) * is) * inv8H;
     g = std::abs(d1x * c3y - d1y * c3x) * is * k3;
   };
+  // Where the last control points coincide, M'(1) = 0, but c1 + 2 c2 +
+  // 3 c3 cancels to rounding noise, which the density would read as a
+  // sharp turn. (M'(0) = c1 is exact.)
+  const bool end_stationary = piece.points.back() == piece.points[piece.points.size() - 2];
   // N samples, from index `from` by `step`, two at a time with SSE2 (the
   // same arithmetic as one()); the cubic term's root, rarely needed, after.
   auto densities = [&]<int N>(std::integral_constant<int, N>, int from, int step) {
@@ -939,8 +1111,9 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     for (int k = 0; k < N; ++k) {
       const int idx = from + k * step;
       if (idx > kSpreadSamples) break;
-      // A stationary point at the sample (M' = 0, as where the first
-      // control points coincide): the density's limit, from close by.
+      // A stationary point at the sample (M' = 0, as where the first or
+      // the last control points coincide): the density's limit, from close
+      // by.
       if (!(d[k] >= 0 && g[k] >= 0)) {
         const double t = double(idx) * (1.0 / kSpreadSamples);
         one(t < 0.5 ? t + 1e-6 : t - 1e-6, d[k], g[k]);
@@ -962,6 +1135,11 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   static_assert(kSpreadSamples == 32, "the grid is refined once, from 16 intervals to 32");
   int m = 16;
   densities(std::integral_constant<int, 18>{}, 0, 2);  // (the 18th is past the end, unused)
+  if (end_stationary) {
+    double d1, g1;
+    one(1 - 1e-6, d1, g1);
+    D[kSpreadSamples] = g1 > d1 * d1 * d1 ? cbrt_estimate(g1) : d1;
+  }
   prefix(std::integral_constant<int, 16>{});
   if (16 * kSpreadRefine < C[16]) {
     densities(std::integral_constant<int, 16>{}, 1, 2);
@@ -1011,23 +1189,100 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     for (int i = 0; i < n; ++i)
       if (r[i] > 0.05 && r[i] < 0.95) infl[n_infl++] = r[i];
   }
-  double seg_end = 1.0;
   // The running integral at t (linear within its grid interval, which
   // goes to jj).
   auto integral_at = [&](double t, int& jj) {
     jj = std::min(int(t * m), m - 1);
     return C[jj] + (t * m - jj) * (C[jj + 1] - C[jj]);
   };
-  auto plan_from = [&](double from, bool from_curve) {
-    // (the stretch to the next inflection, or to the piece's end)
-    seg_end = 1.0;
-    for (int i = n_infl - 1; i >= 0; --i)
-      if (infl[i] > from + 1e-9) seg_end = infl[i];
+  // The plan's breaks, where it puts a vertex on the curve and plans the
+  // stretches on either side apart: the inflections, and the piece's tips
+  // (planar_tips(), where it turns back on itself: a chord across a tip
+  // has the curve poke past its end). The tips are looked for on pieces
+  // that need at most kTipPlan chords (beyond, a vertex more or less at a
+  // tip matters little): at once on those that need at most kTipEager (to
+  // pass over them from the start, below), else once a chord does not fit
+  // (where a tip costs). add_tips() returns whether there is one after
+  // `from`.
+  double brk[4];
+  bool brk_tip[4];  // whether the break is a tip
+  int n_brk = n_infl, n_tip = 0;
+  for (int i = 0; i < n_infl; ++i) brk_tip[i] = false, brk[i] = infl[i];
+  bool tips_known = !(total <= kTipPlan);
+  auto add_tips = [&](double from) {
+    tips_known = true;
+    double tip[2];
+    n_tip = planar_tips(P, kTipRadius * plan_budget, tip);
+    if (n_tip == 0) return false;
+    int jj;
+    double ctip[2];
+    for (int i = 0; i < n_tip; ++i) ctip[i] = integral_at(tip[i], jj);
+    // An inflection within kTipAbsorb chords of a tip is left to it.
+    n_brk = 0;
+    for (int i = 0; i < n_infl; ++i) {
+      const double ci = integral_at(infl[i], jj);
+      bool keep = true;
+      for (int k = 0; k < n_tip; ++k) keep = keep && std::abs(ci - ctip[k]) >= kTipAbsorb;
+      if (keep) brk_tip[n_brk] = false, brk[n_brk++] = infl[i];
+    }
+    for (int i = 0; i < n_tip; ++i) brk_tip[n_brk] = true, brk[n_brk++] = tip[i];
+    for (int i = 1; i < n_brk; ++i)
+      for (int k = i; k > 0 && brk[k - 1] > brk[k]; --k) std::swap(brk[k - 1], brk[k]), std::swap(brk_tip[k - 1], brk_tip[k]);
+    return tip[n_tip - 1] > from + 1e-9;
+  };
+  if (total <= kTipEager) add_tips(0);
+  double seg_end = 1.0;  // the end of the stretch planned
+  // The breaks after the plan's start: the first (k_next) and the one the
+  // stretch planned ends at (k_end; n_brk: the piece's end); whether the
+  // plan's start is on the curve; whether the chord planned is one tried
+  // before the plan proper (it falls back to that when the chord does not
+  // fit, in shrink()).
+  int k_next = 0, k_end = 0;
+  bool plan_on_curve = true, trial = false;
+  auto brk_at = [&](int k) { return k < n_brk ? brk[k] : 1.0; };
+  // A break is passed over while the stretch beyond it still needs only
+  // one chord by the plan (a curve that doubles back along its chord within
+  // it, or a short one across an inflection), not counting the share of
+  // the integral a tip itself takes (at most kTipShare: the density's
+  // integral over a turn of radius r is about pi sqrt(r / (8 H)) chords);
+  // and beside a tip, where the density's model of a chord (a small turn)
+  // does not hold, a stretch that would take two chords by the plan tries
+  // one first. From `from` (the integral c there), the stretch to break
+  // k_next (cend there) being short enough for either: sets k_end,
+  // seg_end and trial, returns the integral at seg_end.
+  auto plan_trial = [&](double from, double c, double room, double cend, int k_cap) __attribute__((noinline)) {
     int je;
-    const double cend = seg_end < 1 ? integral_at(seg_end, je) : total;
-    const double c = integral_at(from, j);
+    double allowance = room;
+    while (k_end < std::min(n_brk, k_cap)) {
+      allowance += brk_tip[k_end] ? kTipShare : 0.0;
+      const double beyond = k_end + 1 < n_brk ? integral_at(brk[k_end + 1], je) : total;
+      if (!(beyond - c <= allowance)) break;
+      ++k_end;
+      cend = beyond;
+    }
+    seg_end = brk_at(k_end);
     const double rest = cend - c;
-    if (!(rest > (from_curve ? e1 : e))) {
+    const bool at_tip = n_tip > 0 && ((k_next > 0 && brk_tip[k_next - 1] && !(brk[k_next - 1] < from - 1e-9)) ||
+                                      (k_end < n_brk && brk_tip[k_end]));
+    trial = k_end > k_next || (at_tip && rest > room && rest <= room + kTipShare);
+    return cend;
+  };
+  // The plan from `from`, passing over no break after k_cap, and trying a
+  // single chord first only when `try_one`.
+  auto plan_from = [&](double from, bool from_curve, int k_cap = 4, bool try_one = true) {
+    const double c = integral_at(from, j);
+    const double room = from_curve ? e1 : e;
+    plan_on_curve = from_curve;
+    k_next = 0;
+    while (k_next < n_brk && !(brk[k_next] > from + 1e-9)) ++k_next;
+    k_end = k_next;
+    seg_end = brk_at(k_next);
+    int je;
+    double cend = seg_end < 1 ? integral_at(seg_end, je) : total;
+    trial = false;
+    if (try_one && n_tip > 0 && cend - c <= room + n_tip * kTipShare) cend = plan_trial(from, c, room, cend, k_cap);
+    const double rest = cend - c;
+    if (trial || !(rest > room)) {
       left = 1;
       return seg_end;
     }
@@ -1176,6 +1431,19 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   // sagitta grew like the square of the step; the search takes over the
   // rest of a piece where that runs on (false: it has).
   auto shrink = [&](const Vtx& v, double dev, double budget) {
+    if (!tips_known && add_tips(t0)) {
+      // (planned again, with the tips)
+      t1 = plan_from(t0, ax == S0x && ay == S0y);
+      as_planned = true;
+      return true;
+    }
+    if (trial && v.t == seg_end) {
+      // A single chord tried first that does not fit: across one break
+      // fewer, or planned.
+      t1 = k_end > k_next ? plan_from(t0, plan_on_curve, k_end - 1) : plan_from(t0, plan_on_curve, k_next, false);
+      as_planned = true;
+      return true;
+    }
     if (++shrinks > kSpreadShrinks || !(v.t - t0 > 1e-9)) {
       band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, Vec3{ax, ay}, Ar, dA, bound, emitted, emit,
                         t0, ax == S0x && ay == S0y ? 0.0 : shift, v.t - t0);

@@ -276,3 +276,26 @@ TEST(Deviation, AgreesWithTheTrueDistanceOnHardCurves) {
     expect_agrees(path, flatten(path, {tol, 3}).points, tol, "hard curve");
   }
 }
+
+TEST(Deviation, SettlesAFoldOfTheCurve) {
+  // A cubic on a line that runs out, back and out again (turning at t =
+  // (220 -+ sqrt(13200)) / 440, at x = 12.83 and -2.83), against the
+  // polyline through its turning points, moved across the line by `across`
+  // and stopping `short_by` before each turn. Where a point of the
+  // polyline is near a fold its foot on the curve moves like the square
+  // root of its distance; the readings are still the true distances: the
+  // polyline's offset one way, and the offset and the stretch beyond each
+  // turn together the other.
+  const Bezier b = Bezier::make({{0, 0}, {40, 0}, {-30, 0}, {10, 0}}, {}, 2);
+  const double r = std::sqrt(13200.0), t1 = (220 - r) / 440, t2 = (220 + r) / 440;
+  for (double across : {0.0, 0.005})
+    for (double short_by : {0.0, 0.003}) {
+      const Vec3 up{0, across, 0}, dx{short_by, 0, 0};
+      const std::vector<Vec3> poly = {b.front(), evaluate(b, t1) + up - dx, evaluate(b, t2) + up + dx, b.back()};
+      const Deviation d = measure_deviation(std::span<const Bezier>(&b, 1), poly, 0.01);
+      // (the ends of the polyline are on the curve: from them the
+      // polyline's distance grows to `across` at the turns)
+      EXPECT_NEAR(d.path_to_curve, across, kMeasureGap * 0.01 + 1e-12) << across << " " << short_by;
+      EXPECT_NEAR(d.curve_to_path, std::hypot(across, short_by), kMeasureGap * 0.01 + 1e-12) << across << " " << short_by;
+    }
+}
