@@ -139,177 +139,65 @@ constexpr double kTipShare = 1.0;
 constexpr double kTipPlan = 8.0;
 constexpr double kTipEager = 3.0;
 
+// band_planar_spread() on one piece, stage by stage: the density's running
+// integral on the grid (grid()), the piece's breaks (inflections(),
+// add_tips()), the plan over the integral (plan_from()), and the chords
+// tried, proven and accepted (run()).
 template <class Emit>
-void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt,
-                        double tol, double margin, double rounding, double shift, size_t pi, const Vec3& A, Vec3& Ar,
-                        double dispA, double& bound, size_t& emitted, Emit& emit) {
-  const double c0x = P.c0.x, c0y = P.c0.y, c1x = P.c1.x, c1y = P.c1.y;
-  const double c2x = P.c2.x, c2y = P.c2.y, c3x = P.c3.x, c3y = P.c3.y;
-  const double plan_budget = tol - margin - std::max(rounding, dispA);
-  if (!(plan_budget > 0))
-    return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);
-  const double H2 = longest_sagitta(plan_budget, shift, shift);
-  const double inv8H = 1 / std::sqrt(8 * kSpreadAim * H2);
+struct BandSpread {
+  // The piece and the flattening (band_planar_spread()'s parameters).
+  const Bezier& piece;
+  const Prepared& P;
+  bool final_piece;
+  const FlattenOptions& opt;
+  double tol, margin, shift;
+  size_t pi;
+  Vec3& Ar;
+  double& bound;
+  size_t& emitted;
+  Emit& emit;
+  double plan_budget;
+
+  BandSpread(const Bezier& piece_, const Prepared& P_, bool final_piece_, const FlattenOptions& opt_, double tol_,
+             double margin_, double shift_, size_t pi_, Vec3& Ar_, double& bound_, size_t& emitted_, Emit& emit_,
+             double plan_budget_)
+      : piece(piece_), P(P_), final_piece(final_piece_), opt(opt_), tol(tol_), margin(margin_), shift(shift_), pi(pi_),
+        Ar(Ar_), bound(bound_), emitted(emitted_), emit(emit_), plan_budget(plan_budget_) {}
+
+  // The power form's coordinates.
+  double c0x = P.c0.x, c0y = P.c0.y, c1x = P.c1.x, c1y = P.c1.y;
+  double c2x = P.c2.x, c2y = P.c2.y, c3x = P.c3.x, c3y = P.c3.y;
+  double H2 = longest_sagitta(plan_budget, shift, shift);
+  double inv8H = 1 / std::sqrt(8 * kSpreadAim * H2);
   // The cubic term: across an inflection a chord's gap is about
   // |M' x M'''| / |M'| h^3 / (72 sqrt 3), with M''' = 6 c3.
-  const double k3 = 6 / (72 * std::sqrt(3.0) * kSpreadAim * plan_budget);
-  // Densities on a grid of kSpreadSamples intervals, sampled every other
-  // one, then at all of them when the piece needs more than kSpreadRefine
-  // chords per interval. (Starting from every 4th would make the plan
-  // coarser and save no time.)
+  double k3 = 6 / (72 * std::sqrt(3.0) * kSpreadAim * plan_budget);
+
+  // The grid: densities D on kSpreadSamples intervals, the running
+  // integral C on m of them (and its total), the intervals' inverse
+  // widths W.
   double D[kSpreadSamples + 1];
-  // The two densities at t: the sagitta's (d) and the cubic term's cube (g).
-  auto one = [&](double t, double& d, double& g) {
-    const double d1x = (c3x * (3 * t) + c2x * 2) * t + c1x, d1y = (c3y * (3 * t) + c2y * 2) * t + c1y;
-    const double d2x = c3x * (6 * t) + c2x * 2, d2y = c3y * (6 * t) + c2y * 2;
-    const double is = 1 / std::sqrt(d1x * d1x + d1y * d1y);
-    d = std::sqrt(std::abs(d1x * d2y - d1y * d2x) * is) * inv8H;
-    g = std::abs(d1x * c3y - d1y * c3x) * is * k3;
-  };
-  // Where the last control points coincide, M'(1) = 0, but c1 + 2 c2 +
-  // 3 c3 cancels to rounding noise, which the density would read as a
-  // sharp turn. (M'(0) = c1 is exact.)
-  const bool end_stationary = piece.points.back() == piece.points[piece.points.size() - 2];
-  // N samples, from index `from` by `step`, two at a time with SSE2 (the
-  // same arithmetic as one()); the cubic term's root, rarely needed, after.
-  auto densities = [&]<int N>(std::integral_constant<int, N>, int from, int step) {
-    double d[N], g[N];
-#if defined(__SSE2__)
-    for (int k = 0; k < N; k += 2) {
-      const v2d t = v2d{double(from + k * step), double(from + (k + 1) * step)} * (1.0 / kSpreadSamples);
-      const v2d d1x = (c3x * (3 * t) + c2x * 2) * t + c1x, d1y = (c3y * (3 * t) + c2y * 2) * t + c1y;
-      const v2d d2x = c3x * (6 * t) + c2x * 2, d2y = c3y * (6 * t) + c2y * 2;
-      const v2d is = 1 / vsqrt(d1x * d1x + d1y * d1y);
-      const v2d dk = vsqrt(vabs(d1x * d2y - d1y * d2x) * is) * inv8H;
-      const v2d gk = vabs(d1x * c3y - d1y * c3x) * is * k3;
-      d[k] = dk[0], d[k + 1] = dk[1], g[k] = gk[0], g[k + 1] = gk[1];
-    }
-#else
-    for (int k = 0; k < N; ++k) one(double(from + k * step) * (1.0 / kSpreadSamples), d[k], g[k]);
-#endif
-    for (int k = 0; k < N; ++k) {
-      const int idx = from + k * step;
-      if (idx > kSpreadSamples) break;
-      // A stationary point at the sample (M' = 0, as where the first or
-      // the last control points coincide): the density's limit, from close
-      // by.
-      if (!(d[k] >= 0 && g[k] >= 0)) {
-        const double t = double(idx) * (1.0 / kSpreadSamples);
-        one(t < 0.5 ? t + 1e-6 : t - 1e-6, d[k], g[k]);
-      }
-      D[idx] = g[k] > d[k] * d[k] * d[k] ? cbrt_estimate(g[k]) : d[k];
-    }
-  };
-  // The running integral (trapezoid rule) on the grid of M intervals, and
-  // the intervals' inverse widths (divisions here, two at a time, off the
-  // chords' path).
   double C[kSpreadSamples + 1];
   double W[kSpreadSamples];
-  auto prefix = [&]<int M>(std::integral_constant<int, M>) {
-    constexpr int stride = kSpreadSamples / M;
-    constexpr double inv_m = 1.0 / M;  // (a power of 2: multiplying by it divides exactly)
-    C[0] = 0;
-    for (int j = 1; j <= M; ++j) C[j] = C[j - 1] + 0.5 * (D[(j - 1) * stride] + D[j * stride]) * inv_m;
-  };
-  static_assert(kSpreadSamples == 32, "the grid is refined once, from 16 intervals to 32");
   int m = 16;
-  densities(std::integral_constant<int, 18>{}, 0, 2);  // (the 18th is past the end, unused)
-  if (end_stationary) {
-    double d1, g1;
-    one(1 - 1e-6, d1, g1);
-    D[kSpreadSamples] = g1 > d1 * d1 * d1 ? cbrt_estimate(g1) : d1;
-  }
-  prefix(std::integral_constant<int, 16>{});
-  if (16 * kSpreadRefine < C[16]) {
-    densities(std::integral_constant<int, 16>{}, 1, 2);
-    m = 32;
-    prefix(std::integral_constant<int, 32>{});
-  }
-  double total = C[m];
-  // (a density undefined even beside its sample gives infinity or NaN here)
-  if (!(total < kSpreadMax))
-    return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);
-#if defined(__SSE2__)
-  for (int j = 0; j < m; j += 2) {
-    const v2d lo = {C[j], C[j + 1]}, hi = {C[j + 1], C[j + 2]};
-    const v2d w = 1 / (hi - lo);
-    W[j] = hi[0] > lo[0] ? w[0] : 0.0;
-    W[j + 1] = hi[1] > lo[1] ? w[1] : 0.0;
-  }
-#else
-  for (int j = 0; j < m; ++j) W[j] = C[j + 1] > C[j] ? 1 / (C[j + 1] - C[j]) : 0.0;
-#endif
-  const double inv_m = 1.0 / m;
+  double total = 0, inv_m = 0;
+
   // The plan from a vertex: the rest of the integral shared among as few
   // chords as fit, the last one (and the first, from a vertex on the curve)
   // counting for e of the units (both ends on the curve: e1).
-  const double e = std::sqrt(longest_sagitta(plan_budget, 0, shift) / H2), e1 = std::sqrt(plan_budget / H2);
+  double e = 0, e1 = 0;
   int j = 0;         // the grid interval of `level`
   double level = 0;  // the integral at the planned end
   double unit = 0;   // the integral an inner chord covers
   int left = 0;      // chords left in the plan, the planned one included
-  auto at_level = [&](double lv) __attribute__((always_inline)) {
-    while (j < m - 1 && C[j + 1] < lv) ++j;
-    return (j + std::clamp((lv - C[j]) * W[j], 0.0, 1.0)) * inv_m;
-  };
-  // The piece's inflections (CubicPowerForm::inflections()), those not
-  // within 5 % of an end, ascending: the plan puts a vertex on the curve at
-  // each and plans the stretches between them apart (seg_end: the end of
-  // the stretch planned). A chord across an inflection
-  // has its ends shifted to opposite sides, so the curve crosses it and it
-  // fits only when very short: such planned chords often fail. Split
-  // there, the planned chords fail less often, for a few more chords (the
-  // vertex on the curve, and each stretch's count rounded up on its own).
+
+  // The plan's breaks (add_tips()).
   double infl[2];
   int n_infl = 0;
-  {
-    double r[2];
-    const int n = P.inflections(r);
-    for (int i = 0; i < n; ++i)
-      if (r[i] > 0.05 && r[i] < 0.95) infl[n_infl++] = r[i];
-  }
-  // The running integral at t (linear within its grid interval, which
-  // goes to jj).
-  auto integral_at = [&](double t, int& jj) {
-    jj = std::min(int(t * m), m - 1);
-    return C[jj] + (t * m - jj) * (C[jj + 1] - C[jj]);
-  };
-  // The plan's breaks, where it puts a vertex on the curve and plans the
-  // stretches on either side apart: the inflections, and the piece's tips
-  // (planar_tips(), where it turns back on itself: a chord across a tip
-  // has the curve poke past its end). The tips are looked for on pieces
-  // that need at most kTipPlan chords (beyond, a vertex more or less at a
-  // tip matters little): at once on those that need at most kTipEager (to
-  // pass over them from the start, below), else once a chord does not fit
-  // (where a tip costs). add_tips() returns whether there is one after
-  // `from`.
   double brk[4];
   bool brk_tip[4];  // whether the break is a tip
-  int n_brk = n_infl, n_tip = 0;
-  for (int i = 0; i < n_infl; ++i) brk_tip[i] = false, brk[i] = infl[i];
-  bool tips_known = !(total <= kTipPlan);
-  auto add_tips = [&](double from) {
-    tips_known = true;
-    double tip[2];
-    n_tip = planar_tips(P, kTipRadius * plan_budget, tip);
-    if (n_tip == 0) return false;
-    int jj;
-    double ctip[2];
-    for (int i = 0; i < n_tip; ++i) ctip[i] = integral_at(tip[i], jj);
-    // An inflection within kTipAbsorb chords of a tip is left to it.
-    n_brk = 0;
-    for (int i = 0; i < n_infl; ++i) {
-      const double ci = integral_at(infl[i], jj);
-      bool keep = true;
-      for (int k = 0; k < n_tip; ++k) keep = keep && std::abs(ci - ctip[k]) >= kTipAbsorb;
-      if (keep) brk_tip[n_brk] = false, brk[n_brk++] = infl[i];
-    }
-    for (int i = 0; i < n_tip; ++i) brk_tip[n_brk] = true, brk[n_brk++] = tip[i];
-    for (int i = 1; i < n_brk; ++i)
-      for (int k = i; k > 0 && brk[k - 1] > brk[k]; --k) std::swap(brk[k - 1], brk[k]), std::swap(brk_tip[k - 1], brk_tip[k]);
-    return tip[n_tip - 1] > from + 1e-9;
-  };
-  if (total <= kTipEager) add_tips(0);
+  int n_brk = 0, n_tip = 0;
+  bool tips_known = false;
   double seg_end = 1.0;  // the end of the stretch planned
   // The breaks after the plan's start: the first (k_next) and the one the
   // stretch planned ends at (k_end; n_brk: the piece's end); whether the
@@ -318,69 +206,17 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
   // fit, in shrink()).
   int k_next = 0, k_end = 0;
   bool plan_on_curve = true, trial = false;
-  auto brk_at = [&](int k) { return k < n_brk ? brk[k] : 1.0; };
-  // A break is passed over while the stretch beyond it still needs only
-  // one chord by the plan (a curve that doubles back along its chord within
-  // it, or a short one across an inflection), not counting the share of
-  // the integral a tip itself takes (at most kTipShare: the density's
-  // integral over a turn of radius r is about pi sqrt(r / (8 H)) chords);
-  // and beside a tip, where the density's model of a chord (a small turn)
-  // does not hold, a stretch that would take two chords by the plan tries
-  // one first. From `from` (the integral c there), the stretch to break
-  // k_next (cend there) being short enough for either: sets k_end,
-  // seg_end and trial, returns the integral at seg_end.
-  auto plan_trial = [&](double from, double c, double room, double cend, int k_cap) __attribute__((noinline)) {
-    int je;
-    double allowance = room;
-    while (k_end < std::min(n_brk, k_cap)) {
-      allowance += brk_tip[k_end] ? kTipShare : 0.0;
-      const double beyond = k_end + 1 < n_brk ? integral_at(brk[k_end + 1], je) : total;
-      if (!(beyond - c <= allowance)) break;
-      ++k_end;
-      cend = beyond;
-    }
-    seg_end = brk_at(k_end);
-    const double rest = cend - c;
-    const bool at_tip = n_tip > 0 && ((k_next > 0 && brk_tip[k_next - 1] && !(brk[k_next - 1] < from - 1e-9)) ||
-                                      (k_end < n_brk && brk_tip[k_end]));
-    trial = k_end > k_next || (at_tip && rest > room && rest <= room + kTipShare);
-    return cend;
-  };
-  // The plan from `from`, passing over no break after k_cap, and trying a
-  // single chord first only when `try_one`.
-  auto plan_from = [&](double from, bool from_curve, int k_cap = 4, bool try_one = true) {
-    const double c = integral_at(from, j);
-    const double room = from_curve ? e1 : e;
-    plan_on_curve = from_curve;
-    k_next = 0;
-    while (k_next < n_brk && !(brk[k_next] > from + 1e-9)) ++k_next;
-    k_end = k_next;
-    seg_end = brk_at(k_next);
-    int je;
-    double cend = seg_end < 1 ? integral_at(seg_end, je) : total;
-    trial = false;
-    if (try_one && n_tip > 0 && cend - c <= room + n_tip * kTipShare) cend = plan_trial(from, c, room, cend, k_cap);
-    const double rest = cend - c;
-    if (trial || !(rest > room)) {
-      left = 1;
-      return seg_end;
-    }
-    const double first = from_curve ? e : 1.0;
-    const double inner = std::max(0.0, std::ceil(rest - first - e - 1e-9));
-    unit = rest / (first + inner + e);
-    left = int(inner) + 2;
-    level = c + first * unit;
-    return std::max(from, at_level(level));
-  };
-  double ax = A.x, ay = A.y, dA = dispA;
-  double t0 = 0, S0x = piece.front().x, S0y = piece.front().y, T0x = c1x, T0y = c1y;
-  const double endx = piece.back().x, endy = piece.back().y;
-  const int decimals = opt.decimals;
+
+  // The current vertex: off the curve at (ax, ay), its rounding moved it
+  // by dA; on the curve at parameter t0, (S0x, S0y), tangent (T0x, T0y).
+  double ax = 0, ay = 0, dA = 0;
+  double t0 = 0, S0x = 0, S0y = 0, T0x = 0, T0y = 0;
   int shrinks = 0;
   bool drop = false;     // the next try's end on the curve (repeated failures that shortening does not cure)
   double prev_dev = kInf;
   bool as_planned = true;  // the chord tried ends where the plan put it
-  double t1 = plan_from(0, true);
+  double t1 = 0;           // the end tried next
+
   // One vertex: the curve's point and tangent at t, B shifted towards the
   // convex side (none at an inflection, a straight stretch or the end),
   // its rounding and how far that moved it.
@@ -389,176 +225,427 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     Vec3 Br;
     bool side;
   };
-  auto finish = [&](Vtx& v, double sx, double sy) __attribute__((always_inline)) {
+
+  bool grid();
+  void inflections();
+  bool add_tips(double from);
+  double plan_trial(double from, double c, double room, double cend, int k_cap) __attribute__((noinline));
+  double plan_from(double from, bool from_curve, int k_cap = 4, bool try_one = true);
+  void run(const Vec3& A, double dispA);
+
+  // The two densities at t: the sagitta's (d) and the cubic term's cube (g).
+  void one(double t, double& d, double& g) const {
+    const double d1x = (c3x * (3 * t) + c2x * 2) * t + c1x, d1y = (c3y * (3 * t) + c2y * 2) * t + c1y;
+    const double d2x = c3x * (6 * t) + c2x * 2, d2y = c3y * (6 * t) + c2y * 2;
+    const double is = 1 / std::sqrt(d1x * d1x + d1y * d1y);
+    d = std::sqrt(std::abs(d1x * d2y - d1y * d2x) * is) * inv8H;
+    g = std::abs(d1x * c3y - d1y * c3x) * is * k3;
+  }
+  template <int N>
+  void densities(int from, int step);
+  template <int M>
+  void prefix() {
+    constexpr int stride = kSpreadSamples / M;
+    constexpr double inv = 1.0 / M;  // (a power of 2: multiplying by it divides exactly)
+    C[0] = 0;
+    for (int i = 1; i <= M; ++i) C[i] = C[i - 1] + 0.5 * (D[(i - 1) * stride] + D[i * stride]) * inv;
+  }
+  inline __attribute__((always_inline)) double at_level(double lv) {
+    while (j < m - 1 && C[j + 1] < lv) ++j;
+    return (j + std::clamp((lv - C[j]) * W[j], 0.0, 1.0)) * inv_m;
+  }
+  // The running integral at t (linear within its grid interval, which
+  // goes to jj).
+  double integral_at(double t, int& jj) const {
+    jj = std::min(int(t * m), m - 1);
+    return C[jj] + (t * m - jj) * (C[jj + 1] - C[jj]);
+  }
+  double brk_at(int k) const { return k < n_brk ? brk[k] : 1.0; }
+
+  inline __attribute__((always_inline)) void finish(Vtx& v, double sx, double sy) const {
     v.Bx = v.onx + sx, v.By = v.ony + sy, v.side = sx != 0 || sy != 0;
     v.Br = Vec3{v.Bx, v.By};
     v.disp = 0;
-    if (decimals >= 0) {
-      v.Br = quantize(v.Br, decimals);
+    if (opt.decimals >= 0) {
+      v.Br = quantize(v.Br, opt.decimals);
       v.disp = std::sqrt((v.Br.x - v.Bx) * (v.Br.x - v.Bx) + (v.Br.y - v.By) * (v.Br.y - v.By));
     }
-  };
-  auto vertex = [&](double t, Vtx& v) __attribute__((always_inline)) {
-    v.t = t;
-    double sx = 0, sy = 0;
-    if (t < 1) {
-      const double t3 = 3 * t, t6 = 6 * t;
-      v.onx = ((c3x * t + c2x) * t + c1x) * t + c0x;
-      v.ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
-      v.d1x = (c3x * t3 + c2x * 2) * t + c1x;
-      v.d1y = (c3y * t3 + c2y * 2) * t + c1y;
-      const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
-      const double s2 = v.d1x * v.d1x + v.d1y * v.d1y, cr = v.d1x * d2y - v.d1y * d2x;
-      // (none at an inflection the plan stops at)
-      if (t < seg_end && planar_side(cr, s2, d2x, d2y)) {
-        const double k = std::copysign(shift, -cr) / std::sqrt(s2);  // (-shift where cr > 0, without a branch)
-        sx = -v.d1y * k, sy = v.d1x * k;
-      }
-    } else {
-      v.onx = endx, v.ony = endy;
-      v.d1x = c3x * 3 + c2x * 2 + c1x;
-      v.d1y = c3y * 3 + c2y * 2 + c1y;
-    }
-    finish(v, sx, sy);
-  };
-  // The chord from the current vertex to v: its bound (infinity: it cannot
-  // fit) and budget.
-  auto chord = [&](const Vtx& v, double& budget) __attribute__((always_inline)) {
-    budget = tol - margin - std::max(dA, v.disp);
-    const double h = (v.t - t0) * (1.0 / 3);
-    const XY S[4] = {{S0x, S0y}, {S0x + T0x * h, S0y + T0y * h}, {v.onx - v.d1x * h, v.ony - v.d1y * h}, {v.onx, v.ony}};
-#ifdef BEZCAM_FLATTEN_COUNTERS
-    ++g_counters.spread_tries;
-#endif
-    return budget > 0 ? band_cubic_planar(S, XY{ax, ay}, XY{v.Bx, v.By}, budget, nullptr) : kInf;
-  };
-  // v becomes the current vertex (its chord proven, of bound dev).
-  auto accept = [&](const Vtx& v, double dev) __attribute__((always_inline)) {
-    shrinks = 0;
-    drop = false;
-    prev_dev = kInf;
-    bound = std::max(bound, dev + std::max(dA, v.disp));
-    // A vertex that rounds onto the one before it is left out (a path keeps
-    // at least one segment), as in the search.
-    const bool final_vertex = final_piece && v.t >= 1;
-    if (!(v.Br == Ar) || (final_vertex && emitted == 0)) {
-      emit({v.Br, pi, v.t});
-      ++emitted;
-    }
-    Ar = v.Br;
-    t0 = v.t;
-    ax = v.Bx, ay = v.By, dA = v.disp;
-    S0x = v.onx, S0y = v.ony, T0x = v.d1x, T0y = v.d1y;
-  };
-  // The next end after an accepted vertex v.
-  auto next = [&](const Vtx& v) __attribute__((always_inline)) {
-    if (as_planned && --left > 1) {
-      level += unit;
-      return std::max(t0, at_level(level));
-    }
-    if (as_planned && left == 1 && v.side) return seg_end;
-    return plan_from(t0, !v.side);
-  };
+  }
+  inline __attribute__((always_inline)) void vertex(double t, Vtx& v) const;
+  inline __attribute__((always_inline)) double chord(const Vtx& v, double& budget) const;
+  inline __attribute__((always_inline)) void accept(const Vtx& v, double dev);
+  inline __attribute__((always_inline)) double next(const Vtx& v);
 #if defined(__SSE2__)
-  // vertex() at two parameters below 1 at once (the same arithmetic).
-  auto vertex2 = [&](double ta, double tb, Vtx& va, Vtx& vb) __attribute__((always_inline)) {
-    const v2d t = {ta, tb}, t3 = 3 * t, t6 = 6 * t;
-    const v2d onx = ((c3x * t + c2x) * t + c1x) * t + c0x, ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
-    const v2d d1x = (c3x * t3 + c2x * 2) * t + c1x, d1y = (c3y * t3 + c2y * 2) * t + c1y;
-    const v2d d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
-    const v2d s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
-    // (-shift where cr > 0, shift where cr < 0, without a branch: the sign
-    // of -cr on shift; where cr is 0 or not finite there is no side)
-    const v2d k = v2d(_mm_or_pd(_mm_andnot_pd(__m128d(cr), _mm_set1_pd(-0.0)), _mm_set1_pd(shift))) / vsqrt(s2);
-    // (planar_side() on both lanes)
-    const v2d q = kSideFloor * (d2x * d2x + d2y * d2y) * s2, cr2 = cr * cr;
-    Vtx* out[2] = {&va, &vb};
-    for (int i = 0; i < 2; ++i) {
-      Vtx& v = *out[i];
-      v.t = t[i], v.onx = onx[i], v.ony = ony[i], v.d1x = d1x[i], v.d1y = d1y[i];
-      const bool side = cr2[i] > q[i] && std::isfinite(cr2[i] * s2[i]);
-      finish(v, side ? -d1y[i] * k[i] : 0.0, side ? d1x[i] * k[i] : 0.0);
+  inline __attribute__((always_inline)) void vertex2(double ta, double tb, Vtx& va, Vtx& vb) const;
+  inline __attribute__((always_inline)) void chord2(const Vtx& va, const Vtx& vb, double& deva, double& ba, double& devb,
+                                             double& bb) const;
+#endif
+  bool shrink(const Vtx& v, double dev, double budget);
+};
+
+// N samples, from index `from` by `step`, two at a time with SSE2 (the
+// same arithmetic as one()); the cubic term's root, rarely needed, after.
+template <class Emit>
+template <int N>
+void BandSpread<Emit>::densities(int from, int step) {
+  double d[N], g[N];
+#if defined(__SSE2__)
+  for (int k = 0; k < N; k += 2) {
+    const v2d t = v2d{double(from + k * step), double(from + (k + 1) * step)} * (1.0 / kSpreadSamples);
+    const v2d d1x = (c3x * (3 * t) + c2x * 2) * t + c1x, d1y = (c3y * (3 * t) + c2y * 2) * t + c1y;
+    const v2d d2x = c3x * (6 * t) + c2x * 2, d2y = c3y * (6 * t) + c2y * 2;
+    const v2d is = 1 / vsqrt(d1x * d1x + d1y * d1y);
+    const v2d dk = vsqrt(vabs(d1x * d2y - d1y * d2x) * is) * inv8H;
+    const v2d gk = vabs(d1x * c3y - d1y * c3x) * is * k3;
+    d[k] = dk[0], d[k + 1] = dk[1], g[k] = gk[0], g[k + 1] = gk[1];
+  }
+#else
+  for (int k = 0; k < N; ++k) one(double(from + k * step) * (1.0 / kSpreadSamples), d[k], g[k]);
+#endif
+  for (int k = 0; k < N; ++k) {
+    const int idx = from + k * step;
+    if (idx > kSpreadSamples) break;
+    // A stationary point at the sample (M' = 0, as where the first or
+    // the last control points coincide): the density's limit, from close
+    // by.
+    if (!(d[k] >= 0 && g[k] >= 0)) {
+      const double t = double(idx) * (1.0 / kSpreadSamples);
+      one(t < 0.5 ? t + 1e-6 : t - 1e-6, d[k], g[k]);
     }
+    D[idx] = g[k] > d[k] * d[k] * d[k] ? cbrt_estimate(g[k]) : d[k];
+  }
+}
+
+// Densities on a grid of kSpreadSamples intervals, sampled every other
+// one, then at all of them when the piece needs more than kSpreadRefine
+// chords per interval (starting from every 4th would make the plan coarser
+// and save no time); their running integral (trapezoid rule) on the grid
+// of m intervals, and the intervals' inverse widths (divisions here, two
+// at a time, off the chords' path). False where the plan cannot serve.
+template <class Emit>
+bool BandSpread<Emit>::grid() {
+  // Where the last control points coincide, M'(1) = 0, but c1 + 2 c2 +
+  // 3 c3 cancels to rounding noise, which the density would read as a
+  // sharp turn. (M'(0) = c1 is exact.)
+  const bool end_stationary = piece.points.back() == piece.points[piece.points.size() - 2];
+  static_assert(kSpreadSamples == 32, "the grid is refined once, from 16 intervals to 32");
+  m = 16;
+  densities<18>(0, 2);  // (the 18th is past the end, unused)
+  if (end_stationary) {
+    double d1, g1;
+    one(1 - 1e-6, d1, g1);
+    D[kSpreadSamples] = g1 > d1 * d1 * d1 ? cbrt_estimate(g1) : d1;
+  }
+  prefix<16>();
+  if (16 * kSpreadRefine < C[16]) {
+    densities<16>(1, 2);
+    m = 32;
+    prefix<32>();
+  }
+  total = C[m];
+  // (a density undefined even beside its sample gives infinity or NaN here)
+  if (!(total < kSpreadMax)) return false;
+#if defined(__SSE2__)
+  for (int i = 0; i < m; i += 2) {
+    const v2d lo = {C[i], C[i + 1]}, hi = {C[i + 1], C[i + 2]};
+    const v2d w = 1 / (hi - lo);
+    W[i] = hi[0] > lo[0] ? w[0] : 0.0;
+    W[i + 1] = hi[1] > lo[1] ? w[1] : 0.0;
+  }
+#else
+  for (int i = 0; i < m; ++i) W[i] = C[i + 1] > C[i] ? 1 / (C[i + 1] - C[i]) : 0.0;
+#endif
+  inv_m = 1.0 / m;
+  e = std::sqrt(longest_sagitta(plan_budget, 0, shift) / H2), e1 = std::sqrt(plan_budget / H2);
+  return true;
+}
+
+// The piece's inflections (CubicPowerForm::inflections()), those not
+// within 5 % of an end, ascending: the plan puts a vertex on the curve at
+// each and plans the stretches between them apart (seg_end: the end of the
+// stretch planned). A chord across an inflection has its ends shifted to
+// opposite sides, so the curve crosses it and it fits only when very
+// short: such planned chords often fail. Split there, the planned chords
+// fail less often, for a few more chords (the vertex on the curve, and
+// each stretch's count rounded up on its own).
+//
+// The plan's breaks, where it puts a vertex on the curve and plans the
+// stretches on either side apart: the inflections, and the piece's tips
+// (planar_tips(), where it turns back on itself: a chord across a tip has
+// the curve poke past its end). The tips are looked for on pieces that
+// need at most kTipPlan chords (beyond, a vertex more or less at a tip
+// matters little): at once on those that need at most kTipEager (to pass
+// over them from the start), else once a chord does not fit (where a tip
+// costs).
+template <class Emit>
+void BandSpread<Emit>::inflections() {
+  double r[2];
+  const int n = P.inflections(r);
+  for (int i = 0; i < n; ++i)
+    if (r[i] > 0.05 && r[i] < 0.95) infl[n_infl++] = r[i];
+  n_brk = n_infl;
+  for (int i = 0; i < n_infl; ++i) brk_tip[i] = false, brk[i] = infl[i];
+  tips_known = !(total <= kTipPlan);
+  if (total <= kTipEager) add_tips(0);
+}
+
+// Adds the piece's tips to the breaks; returns whether there is one after
+// `from`.
+template <class Emit>
+bool BandSpread<Emit>::add_tips(double from) {
+  tips_known = true;
+  double tip[2];
+  n_tip = planar_tips(P, kTipRadius * plan_budget, tip);
+  if (n_tip == 0) return false;
+  int jj;
+  double ctip[2];
+  for (int i = 0; i < n_tip; ++i) ctip[i] = integral_at(tip[i], jj);
+  // An inflection within kTipAbsorb chords of a tip is left to it.
+  n_brk = 0;
+  for (int i = 0; i < n_infl; ++i) {
+    const double ci = integral_at(infl[i], jj);
+    bool keep = true;
+    for (int k = 0; k < n_tip; ++k) keep = keep && std::abs(ci - ctip[k]) >= kTipAbsorb;
+    if (keep) brk_tip[n_brk] = false, brk[n_brk++] = infl[i];
+  }
+  for (int i = 0; i < n_tip; ++i) brk_tip[n_brk] = true, brk[n_brk++] = tip[i];
+  for (int i = 1; i < n_brk; ++i)
+    for (int k = i; k > 0 && brk[k - 1] > brk[k]; --k) std::swap(brk[k - 1], brk[k]), std::swap(brk_tip[k - 1], brk_tip[k]);
+  return tip[n_tip - 1] > from + 1e-9;
+}
+
+// A break is passed over while the stretch beyond it still needs only one
+// chord by the plan (a curve that doubles back along its chord within it,
+// or a short one across an inflection), not counting the share of the
+// integral a tip itself takes (at most kTipShare: the density's integral
+// over a turn of radius r is about pi sqrt(r / (8 H)) chords); and beside
+// a tip, where the density's model of a chord (a small turn) does not
+// hold, a stretch that would take two chords by the plan tries one first.
+// From `from` (the integral c there), the stretch to break k_next (cend
+// there) being short enough for either: sets k_end, seg_end and trial,
+// returns the integral at seg_end.
+template <class Emit>
+double BandSpread<Emit>::plan_trial(double from, double c, double room, double cend, int k_cap) {
+  int je;
+  double allowance = room;
+  while (k_end < std::min(n_brk, k_cap)) {
+    allowance += brk_tip[k_end] ? kTipShare : 0.0;
+    const double beyond = k_end + 1 < n_brk ? integral_at(brk[k_end + 1], je) : total;
+    if (!(beyond - c <= allowance)) break;
+    ++k_end;
+    cend = beyond;
+  }
+  seg_end = brk_at(k_end);
+  const double rest = cend - c;
+  const bool at_tip = n_tip > 0 && ((k_next > 0 && brk_tip[k_next - 1] && !(brk[k_next - 1] < from - 1e-9)) ||
+                                    (k_end < n_brk && brk_tip[k_end]));
+  trial = k_end > k_next || (at_tip && rest > room && rest <= room + kTipShare);
+  return cend;
+}
+
+// The plan from `from`, passing over no break after k_cap, and trying a
+// single chord first only when `try_one`: returns the end of its first
+// chord.
+template <class Emit>
+double BandSpread<Emit>::plan_from(double from, bool from_curve, int k_cap, bool try_one) {
+  const double c = integral_at(from, j);
+  const double room = from_curve ? e1 : e;
+  plan_on_curve = from_curve;
+  k_next = 0;
+  while (k_next < n_brk && !(brk[k_next] > from + 1e-9)) ++k_next;
+  k_end = k_next;
+  seg_end = brk_at(k_next);
+  int je;
+  double cend = seg_end < 1 ? integral_at(seg_end, je) : total;
+  trial = false;
+  if (try_one && n_tip > 0 && cend - c <= room + n_tip * kTipShare) cend = plan_trial(from, c, room, cend, k_cap);
+  const double rest = cend - c;
+  if (trial || !(rest > room)) {
+    left = 1;
+    return seg_end;
+  }
+  const double first = from_curve ? e : 1.0;
+  const double inner = std::max(0.0, std::ceil(rest - first - e - 1e-9));
+  unit = rest / (first + inner + e);
+  left = int(inner) + 2;
+  level = c + first * unit;
+  return std::max(from, at_level(level));
+}
+
+template <class Emit>
+void BandSpread<Emit>::vertex(double t, Vtx& v) const {
+  v.t = t;
+  double sx = 0, sy = 0;
+  if (t < 1) {
+    const double t3 = 3 * t, t6 = 6 * t;
+    v.onx = ((c3x * t + c2x) * t + c1x) * t + c0x;
+    v.ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
+    v.d1x = (c3x * t3 + c2x * 2) * t + c1x;
+    v.d1y = (c3y * t3 + c2y * 2) * t + c1y;
+    const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
+    const double s2 = v.d1x * v.d1x + v.d1y * v.d1y, cr = v.d1x * d2y - v.d1y * d2x;
+    // (none at an inflection the plan stops at)
+    if (t < seg_end && planar_side(cr, s2, d2x, d2y)) {
+      const double k = std::copysign(shift, -cr) / std::sqrt(s2);  // (-shift where cr > 0, without a branch)
+      sx = -v.d1y * k, sy = v.d1x * k;
+    }
+  } else {
+    v.onx = piece.back().x, v.ony = piece.back().y;
+    v.d1x = c3x * 3 + c2x * 2 + c1x;
+    v.d1y = c3y * 3 + c2y * 2 + c1y;
+  }
+  finish(v, sx, sy);
+}
+
+// The chord from the current vertex to v: its bound (infinity: it cannot
+// fit) and budget.
+template <class Emit>
+double BandSpread<Emit>::chord(const Vtx& v, double& budget) const {
+  budget = tol - margin - std::max(dA, v.disp);
+  const double h = (v.t - t0) * (1.0 / 3);
+  const XY S[4] = {{S0x, S0y}, {S0x + T0x * h, S0y + T0y * h}, {v.onx - v.d1x * h, v.ony - v.d1y * h}, {v.onx, v.ony}};
+  count_spread_tries(1);
+  return budget > 0 ? band_cubic_planar(S, XY{ax, ay}, XY{v.Bx, v.By}, budget, nullptr) : kInf;
+}
+
+// v becomes the current vertex (its chord proven, of bound dev).
+template <class Emit>
+void BandSpread<Emit>::accept(const Vtx& v, double dev) {
+  shrinks = 0;
+  drop = false;
+  prev_dev = kInf;
+  bound = std::max(bound, dev + std::max(dA, v.disp));
+  // A vertex that rounds onto the one before it is left out (a path keeps
+  // at least one segment), as in the search.
+  const bool final_vertex = final_piece && v.t >= 1;
+  if (!(v.Br == Ar) || (final_vertex && emitted == 0)) {
+    emit({v.Br, pi, v.t});
+    ++emitted;
+  }
+  Ar = v.Br;
+  t0 = v.t;
+  ax = v.Bx, ay = v.By, dA = v.disp;
+  S0x = v.onx, S0y = v.ony, T0x = v.d1x, T0y = v.d1y;
+}
+
+// The next end after an accepted vertex v.
+template <class Emit>
+double BandSpread<Emit>::next(const Vtx& v) {
+  if (as_planned && --left > 1) {
+    level += unit;
+    return std::max(t0, at_level(level));
+  }
+  if (as_planned && left == 1 && v.side) return seg_end;
+  return plan_from(t0, !v.side);
+}
+
+#if defined(__SSE2__)
+// vertex() at two parameters below 1 at once (the same arithmetic).
+template <class Emit>
+void BandSpread<Emit>::vertex2(double ta, double tb, Vtx& va, Vtx& vb) const {
+  const v2d t = {ta, tb}, t3 = 3 * t, t6 = 6 * t;
+  const v2d onx = ((c3x * t + c2x) * t + c1x) * t + c0x, ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
+  const v2d d1x = (c3x * t3 + c2x * 2) * t + c1x, d1y = (c3y * t3 + c2y * 2) * t + c1y;
+  const v2d d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
+  const v2d s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
+  // (-shift where cr > 0, shift where cr < 0, without a branch: the sign
+  // of -cr on shift; where cr is 0 or not finite there is no side)
+  const v2d k = v2d(_mm_or_pd(_mm_andnot_pd(__m128d(cr), _mm_set1_pd(-0.0)), _mm_set1_pd(shift))) / vsqrt(s2);
+  // (planar_side() on both lanes)
+  const v2d q = kSideFloor * (d2x * d2x + d2y * d2y) * s2, cr2 = cr * cr;
+  Vtx* out[2] = {&va, &vb};
+  for (int i = 0; i < 2; ++i) {
+    Vtx& v = *out[i];
+    v.t = t[i], v.onx = onx[i], v.ony = ony[i], v.d1x = d1x[i], v.d1y = d1y[i];
+    const bool side = cr2[i] > q[i] && std::isfinite(cr2[i] * s2[i]);
+    finish(v, side ? -d1y[i] * k[i] : 0.0, side ? d1x[i] * k[i] : 0.0);
+  }
+}
+
+// chord() from the current vertex to va and from va to vb; the second
+// only matters when the first fits.
+template <class Emit>
+void BandSpread<Emit>::chord2(const Vtx& va, const Vtx& vb, double& deva, double& ba, double& devb, double& bb) const {
+  ba = tol - margin - std::max(dA, va.disp);
+  bb = tol - margin - std::max(va.disp, vb.disp);
+  const v2d h = v2d{va.t - t0, vb.t - va.t} * (1.0 / 3);
+  const v2d Sx0 = {S0x, va.onx}, Sy0 = {S0y, va.ony}, onx = {va.onx, vb.onx}, ony = {va.ony, vb.ony};
+  const v2d Sx[4] = {Sx0, Sx0 + v2d{T0x, va.d1x} * h, onx - v2d{va.d1x, vb.d1x} * h, onx};
+  const v2d Sy[4] = {Sy0, Sy0 + v2d{T0y, va.d1y} * h, ony - v2d{va.d1y, vb.d1y} * h, ony};
+  bool ok[2];
+  double dev[2];
+  band_sufficient2(Sx, Sy, v2d{ax, va.Bx}, v2d{ay, va.By}, v2d{va.Bx, vb.Bx}, v2d{va.By, vb.By}, v2d{ba, bb}, ok, dev);
+  count_spread_tries(2);
+  auto full = [&](int i, double budget) {
+    if (!(budget > 0)) return kInf;
+    const XY S[4] = {{Sx[0][i], Sy[0][i]}, {Sx[1][i], Sy[1][i]}, {Sx[2][i], Sy[2][i]}, {Sx[3][i], Sy[3][i]}};
+    return i == 0 ? band_cubic_planar(S, XY{ax, ay}, XY{va.Bx, va.By}, budget, nullptr)
+                  : band_cubic_planar(S, XY{va.Bx, va.By}, XY{vb.Bx, vb.By}, budget, nullptr);
   };
-  // chord() from the current vertex to va and from va to vb; the second
-  // only matters when the first fits.
-  auto chord2 = [&](const Vtx& va, const Vtx& vb, double& deva, double& ba, double& devb, double& bb) __attribute__((always_inline)) {
-    ba = tol - margin - std::max(dA, va.disp);
-    bb = tol - margin - std::max(va.disp, vb.disp);
-    const v2d h = v2d{va.t - t0, vb.t - va.t} * (1.0 / 3);
-    const v2d Sx0 = {S0x, va.onx}, Sy0 = {S0y, va.ony}, onx = {va.onx, vb.onx}, ony = {va.ony, vb.ony};
-    const v2d Sx[4] = {Sx0, Sx0 + v2d{T0x, va.d1x} * h, onx - v2d{va.d1x, vb.d1x} * h, onx};
-    const v2d Sy[4] = {Sy0, Sy0 + v2d{T0y, va.d1y} * h, ony - v2d{va.d1y, vb.d1y} * h, ony};
-    bool ok[2];
-    double dev[2];
-    band_sufficient2(Sx, Sy, v2d{ax, va.Bx}, v2d{ay, va.By}, v2d{va.Bx, vb.Bx}, v2d{va.By, vb.By}, v2d{ba, bb}, ok,
-                     dev);
-#ifdef BEZCAM_FLATTEN_COUNTERS
-    g_counters.spread_tries += 2;
+  deva = ok[0] && ba > 0 ? dev[0] : full(0, ba);
+  devb = !(deva <= ba) ? kInf : ok[1] && bb > 0 ? dev[1] : full(1, bb);
+}
 #endif
-    auto full = [&](int i, double budget) {
-      if (!(budget > 0)) return kInf;
-      const XY S[4] = {{Sx[0][i], Sy[0][i]}, {Sx[1][i], Sy[1][i]}, {Sx[2][i], Sy[2][i]}, {Sx[3][i], Sy[3][i]}};
-      return i == 0 ? band_cubic_planar(S, XY{ax, ay}, XY{va.Bx, va.By}, budget, nullptr)
-                    : band_cubic_planar(S, XY{va.Bx, va.By}, XY{vb.Bx, vb.By}, budget, nullptr);
-    };
-    deva = ok[0] && ba > 0 ? dev[0] : full(0, ba);
-    devb = !(deva <= ba) ? kInf : ok[1] && bb > 0 ? dev[1] : full(1, bb);
-  };
-#endif
-  // A chord to v that does not fit: the next try is shorter, as if the
-  // sagitta grew like the square of the step; the search takes over the
-  // rest of a piece where that runs on (false: it has).
-  auto shrink = [&](const Vtx& v, double dev, double budget) {
-    if (!tips_known && add_tips(t0)) {
-      // (planned again, with the tips)
-      t1 = plan_from(t0, ax == S0x && ay == S0y);
-      as_planned = true;
-      return true;
-    }
-    if (trial && v.t == seg_end) {
-      // A single chord tried first that does not fit: across one break
-      // fewer, or planned.
-      t1 = k_end > k_next ? plan_from(t0, plan_on_curve, k_end - 1) : plan_from(t0, plan_on_curve, k_next, false);
-      as_planned = true;
-      return true;
-    }
-    if (++shrinks > kSpreadShrinks || !(v.t - t0 > 1e-9)) {
-      band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, Vec3{ax, ay}, Ar, dA, bound, emitted, emit,
-                        t0, ax == S0x && ay == S0y ? 0.0 : shift, v.t - t0);
-      return false;
-    }
-    // Shortened once already, and the deviation (with the shift, what the
-    // model says falls like the square of the step) fell by less than 5 %:
-    // what fails is not the length but the end's side (near an inflection,
-    // or a turn tighter than the band, the end shifted away from the
-    // chord's bulge). The same end on the curve is tried before shortening
-    // on, rather than creeping down 5 % a try.
-    const bool stuck = dev < kInf && dev + shift > 0.95 * (prev_dev + shift);
-    if (!drop && v.side && stuck) {
-      drop = true;
-      t1 = v.t;
-      as_planned = false;
-      return true;
-    }
-    prev_dev = dev;
-    double g = dev < kInf ? std::sqrt(kSpreadAim * (budget + shift) / (dev + shift)) : 0.5;
-    // Still stuck with the end on the curve: the start vertex is what fails
-    // (shifted away from this chord's bulge), and only a much shorter chord
-    // fits: shortened by 0.7 at least rather than creeping down 5 % a try.
-    if (stuck && drop) g = std::min(g, 0.7);
-    t1 = t0 + (v.t - t0) * std::clamp(g, 0.3, 0.95);
-    as_planned = false;
-#ifdef BEZCAM_FLATTEN_COUNTERS
-    ++g_counters.spread_shrinks;
-#endif
+
+// A chord to v that does not fit: the next try is shorter, as if the
+// sagitta grew like the square of the step; the search takes over the
+// rest of a piece where that runs on (false: it has).
+template <class Emit>
+bool BandSpread<Emit>::shrink(const Vtx& v, double dev, double budget) {
+  if (!tips_known && add_tips(t0)) {
+    // (planned again, with the tips)
+    t1 = plan_from(t0, ax == S0x && ay == S0y);
+    as_planned = true;
     return true;
-  };
+  }
+  if (trial && v.t == seg_end) {
+    // A single chord tried first that does not fit: across one break
+    // fewer, or planned.
+    t1 = k_end > k_next ? plan_from(t0, plan_on_curve, k_end - 1) : plan_from(t0, plan_on_curve, k_next, false);
+    as_planned = true;
+    return true;
+  }
+  if (++shrinks > kSpreadShrinks || !(v.t - t0 > 1e-9)) {
+    band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, Vec3{ax, ay}, Ar, dA, bound, emitted, emit,
+                      t0, ax == S0x && ay == S0y ? 0.0 : shift, v.t - t0);
+    return false;
+  }
+  // Shortened once already, and the deviation (with the shift, what the
+  // model says falls like the square of the step) fell by less than 5 %:
+  // what fails is not the length but the end's side (near an inflection,
+  // or a turn tighter than the band, the end shifted away from the
+  // chord's bulge). The same end on the curve is tried before shortening
+  // on, rather than creeping down 5 % a try.
+  const bool stuck = dev < kInf && dev + shift > 0.95 * (prev_dev + shift);
+  if (!drop && v.side && stuck) {
+    drop = true;
+    t1 = v.t;
+    as_planned = false;
+    return true;
+  }
+  prev_dev = dev;
+  double g = dev < kInf ? std::sqrt(kSpreadAim * (budget + shift) / (dev + shift)) : 0.5;
+  // Still stuck with the end on the curve: the start vertex is what fails
+  // (shifted away from this chord's bulge), and only a much shorter chord
+  // fits: shortened by 0.7 at least rather than creeping down 5 % a try.
+  if (stuck && drop) g = std::min(g, 0.7);
+  t1 = t0 + (v.t - t0) * std::clamp(g, 0.3, 0.95);
+  as_planned = false;
+  count_spread_shrink();
+  return true;
+}
+
+// The chords from the piece's start (A, its rounding moved by dispA),
+// proven one by one, or two at a time where the plan gives two inner
+// vertices ahead (with SSE2; one at a time without: the same chords).
+template <class Emit>
+void BandSpread<Emit>::run(const Vec3& A, double dispA) {
+  ax = A.x, ay = A.y, dA = dispA;
+  t0 = 0, S0x = piece.front().x, S0y = piece.front().y, T0x = c1x, T0y = c1y;
+  t1 = plan_from(0, true);
   Vtx v1, v2;
   for (;;) {
 #if defined(__SSE2__)
-    // Two planned inner vertices ahead: both evaluated, and both chords
-    // tested, at once (one at a time without SSE2: the same chords).
     if (as_planned && left > 2) {
       const double t2 = std::max(t1, at_level(level + unit));
       if (t2 < seg_end) {
@@ -598,9 +685,21 @@ void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece
     t1 = next(v1);
     as_planned = true;
   }
-#ifdef BEZCAM_FLATTEN_COUNTERS
-  ++g_counters.spread_pieces;
-#endif
+  count_spread_piece();
+}
+
+template <class Emit>
+void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt,
+                        double tol, double margin, double rounding, double shift, size_t pi, const Vec3& A, Vec3& Ar,
+                        double dispA, double& bound, size_t& emitted, Emit& emit) {
+  const double plan_budget = tol - margin - std::max(rounding, dispA);
+  if (!(plan_budget > 0))
+    return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);
+  BandSpread<Emit> s(piece, P, final_piece, opt, tol, margin, shift, pi, Ar, bound, emitted, emit, plan_budget);
+  if (!s.grid())
+    return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);
+  s.inflections();
+  s.run(A, dispA);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
@@ -142,6 +143,23 @@ struct Counters {
 } g_counters;
 #endif
 
+// The counters' updates (nothing unless built with BEZCAM_FLATTEN_COUNTERS).
+inline void count_spread_tries([[maybe_unused]] long n) {
+#ifdef BEZCAM_FLATTEN_COUNTERS
+  g_counters.spread_tries += n;
+#endif
+}
+inline void count_spread_shrink() {
+#ifdef BEZCAM_FLATTEN_COUNTERS
+  ++g_counters.spread_shrinks;
+#endif
+}
+inline void count_spread_piece() {
+#ifdef BEZCAM_FLATTEN_COUNTERS
+  ++g_counters.spread_pieces;
+#endif
+}
+
 // The next step after a chord that did not fit, when no sagitta steers the
 // search: shrunk as if the deviation grew like the square of the step (by
 // 1 / (1 + step) at least, half at most), or by 1 / (1 + step) without a
@@ -159,193 +177,256 @@ inline void count_search(int kind, int n_tries) {
 }
 #endif
 
+// One try's chord: its end B (exact, rounded), its bound and budget, the
+// sub-curve's sagitta H (sagitta(); -infinity: not known), bend() at t1,
+// the cross part's largest interior extreme (-1: not known), the curve's
+// point M and tangent dM at t1, and whether B is on the curve.
+struct BandTry {
+  double t1 = 0, dev = 0, disp = 0, H = -kInf, budget = 0;
+  double Bx = 0, By = 0, Brx = 0, Bry = 0, bend = 0, inner = -1;
+  double Mx = 0, My = 0, dMx = 0, dMy = 0;
+  bool on = false;
+};
+
+// band_planar_piece() on one piece: from the current vertex, the search
+// for the next chord (search(), each try by try_chord()), then the chord
+// accepted (accept()), until the piece's end.
+template <class Emit>
+struct BandPiece {
+  // The piece and the flattening (band_planar_piece()'s parameters).
+  const Bezier& piece;
+  const Prepared& P;
+  bool final_piece;
+  const FlattenOptions& opt;
+  double tol, margin, shift;
+  size_t pi;
+  Vec3& Ar;
+  double& bound;
+  size_t& emitted;
+  Emit& emit;
+
+  // The power form's coordinates.
+  double c0x = P.c0.x, c0y = P.c0.y, c1x = P.c1.x, c1y = P.c1.y;
+  double c2x = P.c2.x, c2y = P.c2.y, c3x = P.c3.x, c3y = P.c3.y;
+  // The current vertex: off the curve at (ax, ay) by offA, its rounding
+  // moved by dispA; on the curve at t0, M(t0) = (S0x, S0y), M'(t0) =
+  // (T0x, T0y); bend() there; the step to try first.
+  double dispA = 0, offA = 0, bend0 = 0, t0 = 0, dt = 0;
+  double ax = 0, ay = 0, S0x = 0, S0y = 0, T0x = 0, T0y = 0;
+  // Two slots, the best chord so far and the one being tried, swapped by
+  // index rather than copied, kept across the piece's searches.
+  BandTry slot[2];
+  // Without rounding every try of a search has the same budget, and so the
+  // same largest sagittas (the one for B on the curve only when asked: it
+  // takes a square root).
+  double budget0 = 0, ls_shift = 0, ls_on_ = -1;
+
+  BandPiece(const Bezier& piece_, const Prepared& P_, bool final_piece_, const FlattenOptions& opt_, double tol_,
+            double margin_, double shift_, size_t pi_, Vec3& Ar_, double& bound_, size_t& emitted_, Emit& emit_)
+      : piece(piece_), P(P_), final_piece(final_piece_), opt(opt_), tol(tol_), margin(margin_), shift(shift_), pi(pi_),
+        Ar(Ar_), bound(bound_), emitted(emitted_), emit(emit_) {}
+
+  double ls_on() { return ls_on_ >= 0 ? ls_on_ : (ls_on_ = longest_sagitta(budget0, offA, 0)); }
+  void run(const Vec3& A, double dispA_start, double t_start, double offA_start, double dt_start);
+  int search(double& lo);
+  inline __attribute__((always_inline)) bool try_chord(BandTry& c, double t1, bool zero);
+  void accept(const BandTry& best, double lo);
+};
+
+// One try to t1: B shifted across the curve, then (when allowed and of
+// use, `zero`) B on the curve. Fills c; returns whether it fits.
+template <class Emit>
+bool BandPiece<Emit>::try_chord(BandTry& c, double t1, bool zero) {
+  const int decimals = opt.decimals;
+  bool ok = false;
+  double onx, ony, d1x, d1y, sx = 0, sy = 0, bend1 = 0;
+  if (t1 < 1) {
+    const double t = t1, t3 = 3 * t, t6 = 6 * t;
+    onx = ((c3x * t + c2x) * t + c1x) * t + c0x;
+    ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
+    d1x = (c3x * t3 + c2x * 2) * t + c1x;
+    d1y = (c3y * t3 + c2y * 2) * t + c1y;
+    const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
+    const double s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
+    if (planar_side(cr, s2, d2x, d2y)) {
+      const double k = std::copysign(1.0, -cr) / std::sqrt(s2);  // (-1 where cr > 0, without a branch)
+      bend1 = std::abs(cr * k);
+      sx = -d1y * k, sy = d1x * k;
+    }
+  } else {
+    onx = piece.back().x, ony = piece.back().y;
+    d1x = (c3x * (3 * t1) + c2x * 2) * t1 + c1x;
+    d1y = (c3y * (3 * t1) + c2y * 2) * t1 + c1y;
+  }
+  const double h = (t1 - t0) / 3;
+  const XY S[4] = {{S0x, S0y}, {S0x + T0x * h, S0y + T0y * h}, {onx - d1x * h, ony - d1y * h}, {onx, ony}};
+  const bool has_side = sx != 0 || sy != 0;
+  double H = -kInf;
+  for (int pass = 0; pass < 2; ++pass) {
+    const double delta = pass == 0 ? shift : 0.0;
+    if (pass == 0 ? !has_side : !zero) continue;
+    const double Bx = pass == 0 ? onx + sx * delta : onx, By = pass == 0 ? ony + sy * delta : ony;
+    double Brx = Bx, Bry = By, disp = dispA, budget = budget0;
+    if (decimals >= 0) {
+      const Vec3 Br = quantize(Vec3{Bx, By}, decimals);
+      Brx = Br.x, Bry = Br.y;
+      disp = std::max(dispA, dist(Br, Vec3{Bx, By}));
+      budget = tol - margin - disp;
+    }
+    if (!(budget > 0)) continue;
+    if (pass == 1 && H > (decimals >= 0 ? longest_sagitta(budget, offA, 0) : ls_on())) break;
+    double bulge = -kInf, inner = -1;
+    const double dev = band_cubic_planar(S, XY{ax, ay}, XY{Bx, By}, budget, &bulge, &inner);
+    H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
+    c.t1 = t1, c.dev = dev, c.disp = disp, c.H = H, c.budget = budget;
+    c.Bx = Bx, c.By = By, c.Brx = Brx, c.Bry = Bry, c.on = pass == 1, c.bend = bend1, c.inner = inner;
+    c.Mx = onx, c.My = ony, c.dMx = d1x, c.dMy = d1y;
+    if (dev <= budget) {
+      ok = true;
+      break;
+    }
+  }
+  if (!ok) c.H = H;
+  return ok;
+}
+
+// The search for the next chord from the current vertex, steered as
+// described above; returns the slot of the chord found, and in lo its step.
+template <class Emit>
+int BandPiece<Emit>::search(double& lo) {
+  lo = 0;
+  double hi = kInf;  // largest dt known to fit (lo), smallest known not to
+  // Without a bulge (chords across an inflection), the cross part's
+  // interior extreme at lo and hi steers the search.
+  CrossSearch cross;
+  bool found = false;
+  for (BandTry& c : slot) c.dev = 0, c.budget = 0, c.H = -kInf, c.on = false;
+  int cur = 0;
+  double step = kBandStep;
+  budget0 = tol - margin - dispA;
+  ls_shift = longest_sagitta(budget0, offA, shift);
+  ls_on_ = -1;
+#ifdef BEZCAM_FLATTEN_COUNTERS
+  int n_tries = 0;
+  bool unsteered = false;
+#endif
+  for (int iter = 0; iter < 200; ++iter) {
+    const bool last = dt >= 1 - t0;
+    if (last) dt = 1 - t0;
+    BandTry& c = slot[cur];
+    const double t1 = last ? 1.0 : t0 + dt;
+    const bool ok = try_chord(c, t1, !found || slot[cur ^ 1].on);
+    const bool shifted = !(ok && c.on);
+    const double ls = opt.decimals >= 0 || c.budget != budget0 ? longest_sagitta(c.budget, offA, shifted ? shift : 0)
+                      : shifted                                ? ls_shift
+                                                               : ls_on();
+    const double fill = c.H / ls;
+#ifdef BEZCAM_FLATTEN_COUNTERS
+    ++n_tries;
+    if (!std::isfinite(fill)) unsteered = true;
+#endif
+    if (ok) {
+      found = true;
+      lo = dt;
+      cur ^= 1;
+      if (last || lo >= kBandClose * hi || fill >= kBandAccept) break;
+      if (!std::isfinite(fill) && c.inner >= 0) {
+        cross.record(true, dt, c.inner, c.budget);
+        if (lo >= kCrossClose * hi || c.inner >= kCrossAccept * c.budget) break;
+        dt = cross.next(lo, hi, c.budget);
+        step = std::min(2 * step, 1.0);
+        continue;
+      }
+      double nd = !std::isfinite(fill) ? dt * (1 + step) : fill > 0 ? dt * std::min(4.0, std::sqrt(kBandAim / fill)) : 2 * dt;
+      if (nd >= hi) nd = 0.5 * (lo + hi);
+      dt = nd;
+    } else {
+      hi = dt;
+      if (found && lo >= kBandClose * hi) break;
+      if (!std::isfinite(fill) && c.inner >= 0) {
+        cross.record(false, dt, c.inner, c.budget);
+        if (found && lo >= kCrossClose * hi) break;
+        dt = cross.next(lo, hi, c.budget);
+        step = std::min(2 * step, 1.0);
+        continue;
+      }
+      double nd = std::isfinite(fill) && fill > 1 ? dt * std::clamp(std::sqrt(kBandAim / fill), 0.05, 0.99)
+                  : std::isfinite(fill)           ? 0.7 * dt
+                                                  : shrink_unsteered(dt, c.dev, c.budget, step);
+      if (found && nd <= lo) nd = 0.5 * (lo + hi);
+      dt = nd;
+    }
+    step = std::min(2 * step, 1.0);
+  }
+  if (!found) throw std::logic_error("flatten: no band chord fits (internal error)");
+#ifdef BEZCAM_FLATTEN_COUNTERS
+  count_search(slot[cur ^ 1].t1 >= 1 ? 2 : unsteered ? 1 : 0, n_tries);
+#endif
+  return cur ^ 1;
+}
+
+// The chord found (of step lo) proven: its end becomes the current vertex,
+// and the next search's first step is this one's, scaled by the room it
+// left and the change of bending.
+template <class Emit>
+void BandPiece<Emit>::accept(const BandTry& best, double lo) {
+  bound = std::max(bound, best.dev + best.disp);
+  const Vec3 Br{best.Brx, best.Bry};
+  const bool final_vertex = final_piece && best.t1 >= 1;
+  if (!(Br == Ar) || (final_vertex && emitted == 0)) {
+    emit({Br, pi, best.t1});
+    ++emitted;
+  }
+  if (best.t1 < 1) {
+    double g2 = 1;
+    const double b0 = 0.5 * (bend0 + best.bend);
+    const double b1 = std::max(best.bend + 0.5 * (best.bend - bend0), 0.25 * best.bend);
+    bend0 = best.bend;
+    if (b0 > 0 && b1 > 0) g2 = b0 / b1;
+    if (best.H > 0) g2 *= kBandAim * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H;
+    dt = lo * std::sqrt(std::clamp(g2, 1.0 / 16, 16.0));
+  }
+  t0 = best.t1;
+  ax = best.Bx, ay = best.By;
+  Ar = Br;
+  dispA = best.Brx == best.Bx && best.Bry == best.By ? 0.0 : std::sqrt((best.Brx - best.Bx) * (best.Brx - best.Bx) + (best.Bry - best.By) * (best.Bry - best.By));
+  S0x = best.Mx, S0y = best.My, T0x = best.dMx, T0y = best.dMy;
+  offA = best.on ? 0.0 : shift;
+}
+
+template <class Emit>
+void BandPiece<Emit>::run(const Vec3& A, double dispA_start, double t_start, double offA_start, double dt_start) {
+  dispA = dispA_start;
+  offA = offA_start;
+  bend0 = P.bend(t_start);
+  t0 = t_start;
+  dt = dt_start > 0 ? dt_start : P.first_step(longest_sagitta(tol - margin - dispA, 0, shift));
+  ax = A.x, ay = A.y;
+  const Vec3 T0v = P.tangent(t_start), S0v = P.point(t_start);
+  S0x = S0v.x, S0y = S0v.y, T0x = T0v.x, T0y = T0v.y;
+  while (t0 < 1) {
+    double lo;
+    const int best = search(lo);
+    accept(slot[best], lo);
+  }
+}
+
 // The band's search on one planar polynomial cubic piece (the common case),
 // steered by the bulge as described above. It works on plain x and y values
-// held in locals (no z; the curve's point and tangent at t0 carried from the
-// chord that ended there; the largest sagittas computed once per search when
-// there is no rounding), for speed: it gives the same vertices as the
-// general search (flatten_bench --only hash-all). bound_band() calls it for
-// such pieces and searches every other one itself. `A`, `Ar` (the last
-// vertex, exact and rounded) and `dispA` come in for the piece's start;
-// `Ar` leaves as the piece's last vertex; `bound` and `emitted` accumulate.
+// (no z; the curve's point and tangent at t0 carried from the chord that
+// ended there; the largest sagittas computed once per search when there is
+// no rounding), for speed: it gives the same vertices as the general
+// search (flatten_bench --only hash-all). bound_band() calls it for such
+// pieces and searches every other one itself. `A`, `Ar` (the last vertex,
+// exact and rounded) and `dispA` come in for the piece's start; `Ar` leaves
+// as the piece's last vertex; `bound` and `emitted` accumulate.
 template <class Emit>
 void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt,
                        double tol, double margin, double shift, size_t pi, const Vec3& A, Vec3& Ar, double dispA,
                        double& bound, size_t& emitted, Emit& emit, double t_start = 0, double offA_start = 0,
                        double dt_start = 0) {
-  const double c0x = P.c0.x, c0y = P.c0.y, c1x = P.c1.x, c1y = P.c1.y;
-  const double c2x = P.c2.x, c2y = P.c2.y, c3x = P.c3.x, c3y = P.c3.y;
-  const double endx = piece.back().x, endy = piece.back().y;
-  const int decimals = opt.decimals;
-  // One try's chord: its end B (exact, rounded), its bound and budget, the
-  // sub-curve's sagitta H (sagitta(); -infinity: not known), bend() at t1,
-  // the cross part's largest interior extreme (-1: not known), the curve's
-  // point M and tangent dM at t1, and whether B is on the curve.
-  struct Chord2 {
-    double t1 = 0, dev = 0, disp = 0, H = -kInf, budget = 0;
-    double Bx = 0, By = 0, Brx = 0, Bry = 0, bend = 0, inner = -1;
-    double Mx = 0, My = 0, dMx = 0, dMy = 0;
-    bool on = false;
-  };
-  double offA = offA_start;
-  double bend0 = P.bend(t_start);
-  double t0 = t_start;
-  double dt = dt_start > 0 ? dt_start : P.first_step(longest_sagitta(tol - margin - dispA, 0, shift));
-  double ax = A.x, ay = A.y;
-  const Vec3 T0v = P.tangent(t_start), S0v = P.point(t_start);
-  double S0x = S0v.x, S0y = S0v.y, T0x = T0v.x, T0y = T0v.y;  // M(t0), M'(t0)
-  // Two slots, the best chord so far and the one being tried, swapped by
-  // index rather than copied, kept across the piece's searches.
-  Chord2 slot[2];
-  while (t0 < 1) {
-    double lo = 0, hi = kInf;  // largest dt known to fit, smallest known not to
-    // Without a bulge (chords across an inflection), the cross part's
-    // interior extreme at lo and hi steers the search.
-    CrossSearch cross;
-    bool found = false;
-    for (Chord2& c : slot) c.dev = 0, c.budget = 0, c.H = -kInf, c.on = false;
-    int cur = 0;
-    double step = kBandStep;
-    // Without rounding every try of this search has the same budget, and
-    // so the same largest sagittas.
-    const double budget0 = tol - margin - dispA;
-    // (the one for B on the curve only when asked: it takes a square root).
-    const double ls_shift = longest_sagitta(budget0, offA, shift);
-    double ls_on_ = -1;
-    auto ls_on = [&] { return ls_on_ >= 0 ? ls_on_ : (ls_on_ = longest_sagitta(budget0, offA, 0)); };
-#ifdef BEZCAM_FLATTEN_COUNTERS
-    int n_tries = 0;
-    bool unsteered = false;
-#endif
-    for (int iter = 0; iter < 200; ++iter) {
-      const bool last = dt >= 1 - t0;
-      if (last) dt = 1 - t0;
-      Chord2& c = slot[cur];
-      const double t1 = last ? 1.0 : t0 + dt;
-      const bool zero = !found || slot[cur ^ 1].on;
-      // One try: B shifted across the curve, then (when allowed and of
-      // use) B on the curve.
-      bool ok = false;
-      {
-        double onx, ony, d1x, d1y, sx = 0, sy = 0, bend1 = 0;
-        if (t1 < 1) {
-          const double t = t1, t3 = 3 * t, t6 = 6 * t;
-          onx = ((c3x * t + c2x) * t + c1x) * t + c0x;
-          ony = ((c3y * t + c2y) * t + c1y) * t + c0y;
-          d1x = (c3x * t3 + c2x * 2) * t + c1x;
-          d1y = (c3y * t3 + c2y * 2) * t + c1y;
-          const double d2x = c3x * t6 + c2x * 2, d2y = c3y * t6 + c2y * 2;
-          const double s2 = d1x * d1x + d1y * d1y, cr = d1x * d2y - d1y * d2x;
-          if (planar_side(cr, s2, d2x, d2y)) {
-            const double k = std::copysign(1.0, -cr) / std::sqrt(s2);  // (-1 where cr > 0, without a branch)
-            bend1 = std::abs(cr * k);
-            sx = -d1y * k, sy = d1x * k;
-          }
-        } else {
-          onx = endx, ony = endy;
-          d1x = (c3x * (3 * t1) + c2x * 2) * t1 + c1x;
-          d1y = (c3y * (3 * t1) + c2y * 2) * t1 + c1y;
-        }
-        const double h = (t1 - t0) / 3;
-        const XY S[4] = {{S0x, S0y}, {S0x + T0x * h, S0y + T0y * h}, {onx - d1x * h, ony - d1y * h}, {onx, ony}};
-        const bool has_side = sx != 0 || sy != 0;
-        double H = -kInf;
-        for (int pass = 0; pass < 2; ++pass) {
-          const double delta = pass == 0 ? shift : 0.0;
-          if (pass == 0 ? !has_side : !zero) continue;
-          const double Bx = pass == 0 ? onx + sx * delta : onx, By = pass == 0 ? ony + sy * delta : ony;
-          double Brx = Bx, Bry = By, disp = dispA, budget = budget0;
-          if (decimals >= 0) {
-            const Vec3 Br = quantize(Vec3{Bx, By}, decimals);
-            Brx = Br.x, Bry = Br.y;
-            disp = std::max(dispA, dist(Br, Vec3{Bx, By}));
-            budget = tol - margin - disp;
-          }
-          if (!(budget > 0)) continue;
-          if (pass == 1 && H > (decimals >= 0 ? longest_sagitta(budget, offA, 0) : ls_on())) break;
-          double bulge = -kInf, inner = -1;
-          const double dev = band_cubic_planar(S, XY{ax, ay}, XY{Bx, By}, budget, &bulge, &inner);
-          H = bulge > -kInf ? sagitta(bulge, offA, delta) : -kInf;
-          c.t1 = t1, c.dev = dev, c.disp = disp, c.H = H, c.budget = budget;
-          c.Bx = Bx, c.By = By, c.Brx = Brx, c.Bry = Bry, c.on = pass == 1, c.bend = bend1, c.inner = inner;
-          c.Mx = onx, c.My = ony, c.dMx = d1x, c.dMy = d1y;
-          if (dev <= budget) {
-            ok = true;
-            break;
-          }
-        }
-        if (!ok) c.H = H;
-      }
-      const bool shifted = !(ok && c.on);
-      const double ls = decimals >= 0 || c.budget != budget0 ? longest_sagitta(c.budget, offA, shifted ? shift : 0)
-                        : shifted                           ? ls_shift
-                                                            : ls_on();
-      const double fill = c.H / ls;
-#ifdef BEZCAM_FLATTEN_COUNTERS
-      ++n_tries;
-      if (!std::isfinite(fill)) unsteered = true;
-#endif
-      if (ok) {
-        found = true;
-        lo = dt;
-        cur ^= 1;
-        if (last || lo >= kBandClose * hi || fill >= kBandAccept) break;
-        if (!std::isfinite(fill) && c.inner >= 0) {
-          cross.record(true, dt, c.inner, c.budget);
-          if (lo >= kCrossClose * hi || c.inner >= kCrossAccept * c.budget) break;
-          dt = cross.next(lo, hi, c.budget);
-          step = std::min(2 * step, 1.0);
-          continue;
-        }
-        double nd = !std::isfinite(fill) ? dt * (1 + step) : fill > 0 ? dt * std::min(4.0, std::sqrt(kBandAim / fill)) : 2 * dt;
-        if (nd >= hi) nd = 0.5 * (lo + hi);
-        dt = nd;
-      } else {
-        hi = dt;
-        if (found && lo >= kBandClose * hi) break;
-        if (!std::isfinite(fill) && c.inner >= 0) {
-          cross.record(false, dt, c.inner, c.budget);
-          if (found && lo >= kCrossClose * hi) break;
-          dt = cross.next(lo, hi, c.budget);
-          step = std::min(2 * step, 1.0);
-          continue;
-        }
-        double nd = std::isfinite(fill) && fill > 1 ? dt * std::clamp(std::sqrt(kBandAim / fill), 0.05, 0.99)
-                    : std::isfinite(fill)           ? 0.7 * dt
-                                                    : shrink_unsteered(dt, c.dev, c.budget, step);
-        if (found && nd <= lo) nd = 0.5 * (lo + hi);
-        dt = nd;
-      }
-      step = std::min(2 * step, 1.0);
-    }
-    if (!found) throw std::logic_error("flatten: no band chord fits (internal error)");
-    const Chord2& best = slot[cur ^ 1];
-#ifdef BEZCAM_FLATTEN_COUNTERS
-    count_search(best.t1 >= 1 ? 2 : unsteered ? 1 : 0, n_tries);
-#endif
-    bound = std::max(bound, best.dev + best.disp);
-    const Vec3 Br{best.Brx, best.Bry};
-    const bool final_vertex = final_piece && best.t1 >= 1;
-    if (!(Br == Ar) || (final_vertex && emitted == 0)) {
-      emit({Br, pi, best.t1});
-      ++emitted;
-    }
-    if (best.t1 < 1) {
-      double g2 = 1;
-      const double b0 = 0.5 * (bend0 + best.bend);
-      const double b1 = std::max(best.bend + 0.5 * (best.bend - bend0), 0.25 * best.bend);
-      bend0 = best.bend;
-      if (b0 > 0 && b1 > 0) g2 = b0 / b1;
-      if (best.H > 0) g2 *= kBandAim * longest_sagitta(best.budget, best.on ? 0 : shift, shift) / best.H;
-      dt = lo * std::sqrt(std::clamp(g2, 1.0 / 16, 16.0));
-    }
-    t0 = best.t1;
-    ax = best.Bx, ay = best.By;
-    Ar = Br;
-    dispA = best.Brx == best.Bx && best.Bry == best.By ? 0.0 : std::sqrt((best.Brx - best.Bx) * (best.Brx - best.Bx) + (best.Bry - best.By) * (best.Bry - best.By));
-    S0x = best.Mx, S0y = best.My, T0x = best.dMx, T0y = best.dMy;
-    offA = best.on ? 0.0 : shift;
-  }
+  BandPiece<Emit>(piece, P, final_piece, opt, tol, margin, shift, pi, Ar, bound, emitted, emit)
+      .run(A, dispA, t_start, offA_start, dt_start);
 }
 
 }  // namespace
