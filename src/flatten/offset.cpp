@@ -9,6 +9,7 @@
 
 #include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
+#include "offset_chain.hpp"
 
 namespace bezcam {
 
@@ -246,172 +247,274 @@ bool overlap(const Box3& p, const Box3& q, double eps) {
   return p.lo.x <= q.hi.x + eps && q.lo.x <= p.hi.x + eps && p.lo.y <= q.hi.y + eps && q.lo.y <= p.hi.y + eps;
 }
 
-}  // namespace
+// Indices 0..n-1 sorted by their boxes' low x (ties by index).
+std::vector<size_t> sorted_by_x(const std::vector<Box3>& boxes) {
+  std::vector<size_t> by_x(boxes.size());
+  for (size_t i = 0; i < boxes.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](size_t p, size_t q) { return boxes[p].lo.x < boxes[q].lo.x || (boxes[p].lo.x == boxes[q].lo.x && p < q); });
+  return by_x;
+}
 
-OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const OffsetOptions& opt) {
-  OffsetResult res;
-  const double r = opt.distance;
-  const int side = opt.side >= 0 ? 1 : -1;
-  // 1. The arc spline A, without rounding.
-  std::vector<ArcSeg> A;
-  {
-    ArcFitOptions ao;
-    ao.tolerance = opt.fit;
-    ao.decimals = -1;
-    ao.radius_tolerance = HUGE_VAL;
-    Vec3 from = flat(pieces.front().front());
-    const double bound = fit_arcs(pieces, ao, [&](const FitMove& f) {
-      const Vec3 to = flat(f.to);
-      if (to == from) return;
-      if (f.kind == FitKind::line) {
-        A.push_back(ArcSeg::line(from, to));
-      } else {
-        const Arc arc{from, to, f.center, f.kind == FitKind::arc_ccw};
-        A.push_back(ArcSeg::make_arc(from, to, f.center, arc.ccw ? arc.sweep() : -arc.sweep()));
-      }
-      from = to;
-    });
-    res.bound = bound;
+// The exact offset of a primitive of A at distance r on the hand `hand` of
+// its direction of travel (+1 left, -1 right): a parallel line, or the
+// concentric arc (turned inside out where the arc is tighter than r).
+ArcSeg offset_of(const ArcSeg& s, int hand, double r) {
+  if (!s.arc) {
+    const Vec3 t = s.tangent(0), n{-t.y * hand * r, t.x * hand * r, 0};
+    return ArcSeg::line(s.a + n, s.b + n);
   }
-  res.fitted = A.size();
-  if (A.empty()) return res;
-  if (closed) A.back().b = A.front().a;
-  double scale = r;
-  for (const auto& s : A) scale = std::max({scale, max_abs(s.a), max_abs(s.b)});
-  const double eps = 1e-9 * scale;  // floating-point margin of the tests below
+  // Left of a counter-clockwise arc is towards its centre.
+  const double k = s.sweep > 0 ? s.radius - hand * r : s.radius + hand * r;
+  ArcSeg o = s;
+  o.radius = std::abs(k);
+  if (k < 0) o.a0 += kPi;
+  o.a = polar(o.c, o.radius, o.a0);
+  o.b = polar(o.c, o.radius, o.a0 + o.sweep);
+  return o;
+}
 
-  // 2. and 3. Exact offsets, joined by arcs of radius r about the joints.
-  std::vector<Raw> raw;
-  auto off = [&](const ArcSeg& s) {
-    if (!s.arc) {
-      const Vec3 t = s.tangent(0), n{-t.y * side * r, t.x * side * r, 0};
-      return ArcSeg::line(s.a + n, s.b + n);
+// Whether a point is valid: at least r (less the margin) from every
+// primitive of A, the primitives sorted by their boxes' low x.
+class SplineIndex {
+ public:
+  SplineIndex(const std::vector<ArcSeg>& A, double r, double keep_at) : A_(A), r_(r), keep_at_(keep_at), boxes_(A.size()) {
+    for (size_t i = 0; i < A.size(); ++i) boxes_[i] = box_of(A[i]);
+    by_x_ = sorted_by_x(boxes_);
+    for (const auto& b : boxes_) widest_ = std::max(widest_, b.hi.x - b.lo.x);
+  }
+  bool valid(const Vec3& p) const {
+    const double lo = p.x - r_ - widest_;
+    auto it = std::lower_bound(by_x_.begin(), by_x_.end(), lo, [&](size_t k, double v) { return boxes_[k].lo.x < v; });
+    for (; it != by_x_.end() && boxes_[*it].lo.x <= p.x + r_; ++it) {
+      const Box3& b = boxes_[*it];
+      if (p.x < b.lo.x - r_ || p.x > b.hi.x + r_ || p.y < b.lo.y - r_ || p.y > b.hi.y + r_) continue;
+      if (distance(A_[*it], p) < keep_at_) return false;
     }
-    // Left of a counter-clockwise arc is towards its centre.
-    const double k = s.sweep > 0 ? s.radius - side * r : s.radius + side * r;
-    ArcSeg o = s;
-    o.radius = std::abs(k);
-    if (k < 0) o.a0 += kPi;
-    o.a = polar(o.c, o.radius, o.a0);
-    o.b = polar(o.c, o.radius, o.a0 + o.sweep);
-    return o;
-  };
-  const size_t n = A.size();
-  // The sweep of the arc about each joint (after A[i]; 0 where the offsets
-  // meet): the other side's arc turns the same way, so that at a joint
-  // where the curve turns back exactly (half a turn either way) the two
-  // make the whole circle.
-  std::vector<double> joint_turn(n, 0.0);
-  for (size_t i = 0; i < n; ++i) {
-    ArcSeg o = off(A[i]);
+    return true;
+  }
+
+ private:
+  const std::vector<ArcSeg>& A_;
+  double r_, keep_at_;
+  std::vector<Box3> boxes_;
+  std::vector<size_t> by_x_;
+  double widest_ = 0;
+};
+
+// The side's region of a closed curve: a valid point is at least r from A,
+// so A's arcs may be replaced by chords with a sagitta under r / 2 without
+// moving it across; inside is a non-zero winding number (by the crossings
+// of a ray). The region asked is the inside when the side is the left of a
+// counter-clockwise curve or the right of a clockwise one. A curve that
+// bounds no area has no region (empty()).
+class Region {
+ public:
+  Region() = default;
+  Region(const std::vector<ArcSeg>& A, double r, int side, double scale) {
+    for (const ArcSeg& a : A) {
+      ring_.push_back(a.a);
+      if (!a.arc) continue;
+      const double most = a.radius <= r / 4 ? kPi / 2 : std::min(kPi / 2, 2 * std::acos(1 - r / (2 * a.radius)));
+      const int parts = std::max(1, static_cast<int>(std::ceil(std::abs(a.sweep) / most)));
+      for (int q = 1; q < parts; ++q) ring_.push_back(a.point(static_cast<double>(q) / parts));
+    }
+    double area = 0;
+    for (size_t i = 0; i < ring_.size(); ++i) {
+      const Vec3& p = ring_[i];
+      const Vec3& q = ring_[(i + 1) % ring_.size()];
+      area += p.x * q.y - q.x * p.y;
+    }
+    if (std::abs(area) <= 1e-9 * scale * scale) ring_.clear();
+    want_inside_ = (side > 0) == (area > 0);
+  }
+  bool empty() const { return ring_.empty(); }
+  bool contains(const Vec3& p) const {
+    int w = 0;
+    for (size_t i = 0; i < ring_.size(); ++i) {
+      const Vec3& a = ring_[i];
+      const Vec3& b = ring_[(i + 1) % ring_.size()];
+      if ((a.y > p.y) == (b.y > p.y)) continue;
+      const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+      if (x > p.x) w += b.y > a.y ? 1 : -1;
+    }
+    return (w != 0) == want_inside_;
+  }
+
+ private:
+  std::vector<Vec3> ring_;
+  bool want_inside_ = false;
+};
+
+// A stretch of A's primitive `source` whose offset was cut away, on [s0, s1].
+struct Clipped {
+  int source;
+  double s0, s1;
+};
+
+// offset_curve() stage by stage (the steps of offset.hpp).
+struct OffsetBuilder {
+  OffsetBuilder(const OffsetOptions& o, bool c) : opt(o), closed(c), r(o.distance), side(o.side >= 0 ? 1 : -1) {}
+
+  const OffsetOptions& opt;
+  bool closed;
+  double r;
+  int side;
+  OffsetResult res;
+  std::vector<ArcSeg> A;  ///< the arc spline
+  double scale = 0, eps = 0;
+  std::vector<Raw> raw;
+  /// The sweep of the arc about each joint (after A[i]; 0 where the
+  /// offsets meet).
+  std::vector<double> joint_turn;
+
+  void fit_spline(std::span<const Bezier> pieces);
+  ArcSeg join(const Vec3& v, const Vec3& from, const Vec3& to) const;
+  void offset_side();
+  void round_open_ends(std::span<const Bezier> pieces);
+  void close_round();
+  void add_other_side();
+  std::vector<std::vector<double>> crossings() const;
+  std::vector<ArcSeg> keep_valid(std::vector<std::vector<double>>& cuts, std::vector<Clipped>& clipped) const;
+  std::vector<std::vector<Vec3>> mark_left(const std::vector<Clipped>& clipped);
+  void read_depths(const std::vector<std::vector<Vec3>>& probes);
+};
+
+// 1. The arc spline A, without rounding.
+void OffsetBuilder::fit_spline(std::span<const Bezier> pieces) {
+  ArcFitOptions ao;
+  ao.tolerance = opt.fit;
+  ao.decimals = -1;
+  ao.radius_tolerance = HUGE_VAL;
+  Vec3 from = flat(pieces.front().front());
+  const double bound = fit_arcs(pieces, ao, [&](const FitMove& f) {
+    const Vec3 to = flat(f.to);
+    if (to == from) return;
+    if (f.kind == FitKind::line) {
+      A.push_back(ArcSeg::line(from, to));
+    } else {
+      const Arc arc{from, to, f.center, f.kind == FitKind::arc_ccw};
+      A.push_back(ArcSeg::make_arc(from, to, f.center, arc.ccw ? arc.sweep() : -arc.sweep()));
+    }
+    from = to;
+  });
+  res.bound = bound;
+  res.fitted = A.size();
+  if (A.empty()) return;
+  if (closed) A.back().b = A.front().a;
+  scale = r;
+  for (const auto& s : A) scale = std::max({scale, max_abs(s.a), max_abs(s.b)});
+  eps = 1e-9 * scale;  // floating-point margin of the tests below
+  joint_turn.assign(A.size(), 0.0);
+}
+
+// The arc of radius r about v from `from` to `to` (both r from v).
+ArcSeg OffsetBuilder::join(const Vec3& v, const Vec3& from, const Vec3& to) const {
+  const double a0 = std::atan2(from.y - v.y, from.x - v.x), a1 = std::atan2(to.y - v.y, to.x - v.x);
+  ArcSeg j = ArcSeg::make_arc(from, to, v, wrap(a1 - a0));
+  j.radius = r;
+  return j;
+}
+
+// 2. and 3. Exact offsets, joined by arcs of radius r about the joints.
+void OffsetBuilder::offset_side() {
+  for (size_t i = 0; i < A.size(); ++i) {
+    ArcSeg o = offset_of(A[i], side, r);
     if (!raw.empty()) {
       const Vec3 v = A[i].a, e = raw.back().seg.b;
       if (dist(e, o.a) <= eps) {
         o.a = e;
         if (o.arc) o.a0 = std::atan2(o.a.y - o.c.y, o.a.x - o.c.x);
       } else {
-        const double a0 = std::atan2(e.y - v.y, e.x - v.x), a1 = std::atan2(o.a.y - v.y, o.a.x - v.x);
-        ArcSeg j = ArcSeg::make_arc(e, o.a, v, wrap(a1 - a0));
-        j.radius = r;
+        const ArcSeg j = join(v, e, o.a);
         raw.push_back({j, -1});
         joint_turn[i - 1] = j.sweep;
       }
     }
     raw.push_back({o, static_cast<int>(i)});
   }
+}
+
+// The ends of an open curve: A's end tangents may differ a little from the
+// curve's, so the path starts and ends where the true offset does, rolling
+// about the (exact) end points to there.
+void OffsetBuilder::round_open_ends(std::span<const Bezier> pieces) {
+  auto true_normal = [&](const Bezier& b, double t, const ArcSeg& fallback, double s) {
+    Vec3 d = derivative(b, t);
+    if (std::hypot(d.x, d.y) == 0) d = fallback.tangent(s);
+    const double l = std::hypot(d.x, d.y);
+    return Vec3{-d.y / l * side * r, d.x / l * side * r, 0};
+  };
+  auto roll = [&](const Vec3& v, const Vec3& from, const Vec3& to) {
+    const ArcSeg j = join(v, from, to);
+    // Its points are r from the end point; from A's first or last
+    // primitive at least r cos(sweep).
+    res.bound += r * (1 - std::cos(j.sweep));
+    return Raw{j, -1};
+  };
+  const Vec3 v0 = A.front().a, s0 = v0 + true_normal(pieces.front(), 0, A.front(), 0);
+  if (dist(s0, raw.front().seg.a) > eps) raw.insert(raw.begin(), roll(v0, s0, raw.front().seg.a));
+  const Vec3 v1 = A.back().b, e1 = v1 + true_normal(pieces.back(), 1, A.back(), 1);
+  if (dist(e1, raw.back().seg.b) > eps) raw.push_back(roll(v1, raw.back().seg.b, e1));
+}
+
+// A closed curve's path ends where it starts, joined about A's start.
+void OffsetBuilder::close_round() {
+  const Vec3 v = A.front().a, e = raw.back().seg.b, s0 = raw.front().seg.a;
+  if (dist(e, s0) <= eps) {
+    raw.back().seg.b = s0;
+  } else {
+    const ArcSeg j = join(v, e, s0);
+    raw.push_back({j, -1});
+    joint_turn[A.size() - 1] = j.sweep;
+  }
+}
+
+// The other side: where the curve doubles back on itself (a cusp, a spur of
+// zero width, a curl) the points at r from A on the side asked include
+// points of the other side's offsets and joints, and a piece of the path
+// crosses from valid to invalid where it meets them. They are cut against
+// like the rest, so that every piece is valid or invalid as a whole, and
+// for a closed curve they are kept where they are valid and on the side's
+// region (step 4). The other side's arc about a joint turns the same way as
+// the side's, so that at a joint where the curve turns back exactly (half a
+// turn either way) the two make the whole circle.
+void OffsetBuilder::add_other_side() {
+  auto about = [&](const Vec3& v, const Vec3& from, double sweep) {
+    const Vec3 to = polar(v, r, std::atan2(from.y - v.y, from.x - v.x) + sweep);
+    ArcSeg j = ArcSeg::make_arc(from, to, v, sweep);
+    j.radius = r;
+    return j;
+  };
+  const size_t n = A.size();
+  std::vector<Raw> others;
+  for (size_t i = 0; i < n; ++i) {
+    const ArcSeg o = offset_of(A[i], -side, r);
+    if (o.length() > eps) others.push_back({o.reversed(), -1, true});
+    if (i + 1 < n || closed) {
+      const Vec3 v = A[i].b, t0 = A[i].tangent(1);
+      const double turn = joint_turn[i];
+      if (std::abs(turn) * r > eps) {
+        const Vec3 m{t0.y * side * r, -t0.x * side * r, 0};  // the other side's normal at the joint's start
+        others.push_back({about(v, v + m, turn).reversed(), -1, true});
+      }
+    }
+  }
   if (!closed) {
-    // The ends of an open curve: A's end tangents may differ a little from
-    // the curve's, so the path starts and ends where the true offset does,
-    // rolling about the (exact) end points to there.
-    auto true_normal = [&](const Bezier& b, double t, const ArcSeg& fallback, double s) {
-      Vec3 d = derivative(b, t);
-      if (std::hypot(d.x, d.y) == 0) d = fallback.tangent(s);
-      const double l = std::hypot(d.x, d.y);
-      return Vec3{-d.y / l * side * r, d.x / l * side * r, 0};
-    };
-    auto roll = [&](const Vec3& v, const Vec3& from, const Vec3& to) {
-      const double a0 = std::atan2(from.y - v.y, from.x - v.x), a1 = std::atan2(to.y - v.y, to.x - v.x);
-      ArcSeg j = ArcSeg::make_arc(from, to, v, wrap(a1 - a0));
-      j.radius = r;
-      // Its points are r from the end point; from A's first or last
-      // primitive at least r cos(sweep).
-      res.bound += r * (1 - std::cos(j.sweep));
-      return Raw{j, -1};
-    };
-    const Vec3 v0 = A.front().a, s0 = v0 + true_normal(pieces.front(), 0, A.front(), 0);
-    if (dist(s0, raw.front().seg.a) > eps) raw.insert(raw.begin(), roll(v0, s0, raw.front().seg.a));
-    const Vec3 v1 = A.back().b, e1 = v1 + true_normal(pieces.back(), 1, A.back(), 1);
-    if (dist(e1, raw.back().seg.b) > eps) raw.push_back(roll(v1, raw.back().seg.b, e1));
+    // The caps round the two ends, from the other side to the side asked.
+    const Vec3 t0 = A.front().tangent(0), t1 = A.back().tangent(1);
+    others.push_back({about(A.front().a, A.front().a + Vec3{t0.y * side * r, -t0.x * side * r, 0}, -side * kPi), -1, true});
+    others.push_back({about(A.back().b, A.back().b + Vec3{-t1.y * side * r, t1.x * side * r, 0}, -side * kPi), -1, true});
   }
-  if (closed) {
-    const Vec3 v = A.front().a, e = raw.back().seg.b, s0 = raw.front().seg.a;
-    if (dist(e, s0) <= eps) {
-      raw.back().seg.b = s0;
-    } else {
-      const double a0 = std::atan2(e.y - v.y, e.x - v.x), a1 = std::atan2(s0.y - v.y, s0.x - v.x);
-      ArcSeg j = ArcSeg::make_arc(e, s0, v, wrap(a1 - a0));
-      j.radius = r;
-      raw.push_back({j, -1});
-      joint_turn[n - 1] = j.sweep;
-    }
-  }
+  raw.insert(raw.end(), others.begin(), others.end());
+}
 
-  // The other side: where the curve doubles back on itself (a cusp, a spur
-  // of zero width, a curl) the points at r from A on the side asked include
-  // points of the other side's offsets and joints, and a piece of the path
-  // crosses from valid to invalid where it meets them. They are cut
-  // against like the rest, so that every piece is valid or invalid as a
-  // whole, and for a closed curve they are kept where they are valid and on
-  // the side's region (step 4).
-  {
-    auto other_off = [&](const ArcSeg& s) {
-      if (!s.arc) {
-        const Vec3 t = s.tangent(0), nn{t.y * side * r, -t.x * side * r, 0};
-        return ArcSeg::line(s.a + nn, s.b + nn);
-      }
-      const double k = s.sweep > 0 ? s.radius + side * r : s.radius - side * r;
-      ArcSeg o = s;
-      o.radius = std::abs(k);
-      if (k < 0) o.a0 += kPi;
-      o.a = polar(o.c, o.radius, o.a0);
-      o.b = polar(o.c, o.radius, o.a0 + o.sweep);
-      return o;
-    };
-    auto about = [&](const Vec3& v, const Vec3& from, double sweep) {
-      const Vec3 to = polar(v, r, std::atan2(from.y - v.y, from.x - v.x) + sweep);
-      ArcSeg j = ArcSeg::make_arc(from, to, v, sweep);
-      j.radius = r;
-      return j;
-    };
-    std::vector<Raw> others;
-    for (size_t i = 0; i < n; ++i) {
-      const ArcSeg o = other_off(A[i]);
-      if (o.length() > eps) others.push_back({o.reversed(), -1, true});
-      if (i + 1 < n || closed) {
-        const Vec3 v = A[i].b, t0 = A[i].tangent(1);
-        const double turn = joint_turn[i];
-        if (std::abs(turn) * r > eps) {
-          const Vec3 m{t0.y * side * r, -t0.x * side * r, 0};  // the other side's normal at the joint's start
-          others.push_back({about(v, v + m, turn).reversed(), -1, true});
-        }
-      }
-    }
-    if (!closed) {
-      // The caps round the two ends, from the other side to the side asked.
-      const Vec3 t0 = A.front().tangent(0), t1 = A.back().tangent(1);
-      others.push_back({about(A.front().a, A.front().a + Vec3{t0.y * side * r, -t0.x * side * r, 0}, -side * kPi), -1, true});
-      others.push_back({about(A.back().b, A.back().b + Vec3{-t1.y * side * r, t1.x * side * r, 0}, -side * kPi), -1, true});
-    }
-    raw.insert(raw.end(), others.begin(), others.end());
-  }
-
-  // 4. Cut at every crossing (boxes sorted by x to skip far pairs).
+// 4. Where the raw path crosses itself: per raw piece, the parameters of
+// its crossings (boxes sorted by x to skip far pairs).
+std::vector<std::vector<double>> OffsetBuilder::crossings() const {
   const size_t m = raw.size();
   std::vector<Box3> boxes(m);
   for (size_t i = 0; i < m; ++i) boxes[i] = box_of(raw[i].seg);
-  std::vector<size_t> by_x(m);
-  for (size_t i = 0; i < m; ++i) by_x[i] = i;
-  std::sort(by_x.begin(), by_x.end(), [&](size_t p, size_t q) { return boxes[p].lo.x < boxes[q].lo.x || (boxes[p].lo.x == boxes[q].lo.x && p < q); });
+  const std::vector<size_t> by_x = sorted_by_x(boxes);
   std::vector<std::vector<double>> cuts(m);
   for (size_t ii = 0; ii < m; ++ii) {
     const size_t i = by_x[ii];
@@ -425,74 +528,18 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
       }
     }
   }
-  // Sorted index of A for the distance test.
-  std::vector<Box3> aboxes(n);
-  for (size_t i = 0; i < n; ++i) aboxes[i] = box_of(A[i]);
-  std::vector<size_t> a_by_x(n);
-  for (size_t i = 0; i < n; ++i) a_by_x[i] = i;
-  std::sort(a_by_x.begin(), a_by_x.end(), [&](size_t p, size_t q) { return aboxes[p].lo.x < aboxes[q].lo.x || (aboxes[p].lo.x == aboxes[q].lo.x && p < q); });
-  double widest = 0;
-  for (const auto& b : aboxes) widest = std::max(widest, b.hi.x - b.lo.x);
-  const double keep_at = r - eps;
-  auto valid = [&](const Vec3& p) {
-    // dist(p, A) >= r - eps: no primitive of A nearer.
-    const double lo = p.x - r - widest;
-    auto it = std::lower_bound(a_by_x.begin(), a_by_x.end(), lo, [&](size_t k, double v) { return aboxes[k].lo.x < v; });
-    for (; it != a_by_x.end() && aboxes[*it].lo.x <= p.x + r; ++it) {
-      const Box3& b = aboxes[*it];
-      if (p.x < b.lo.x - r || p.x > b.hi.x + r || p.y < b.lo.y - r || p.y > b.hi.y + r) continue;
-      if (distance(A[*it], p) < keep_at) return false;
-    }
-    return true;
-  };
+  return cuts;
+}
 
-  // The side's region of a closed curve: a valid point is at least r from
-  // A, so A's arcs may be replaced by chords with a sagitta under r / 2
-  // without moving it across; inside is a non-zero winding number (by the
-  // crossings of a ray). The region asked is the inside when the side is
-  // the left of a counter-clockwise curve or the right of a clockwise one.
-  // A curve that bounds no area has no region: the other side's pieces
-  // then cut the path and are not kept, as for an open curve.
-  std::vector<Vec3> region;
-  bool want_inside = false;
-  if (closed) {
-    for (const ArcSeg& a : A) {
-      region.push_back(a.a);
-      if (!a.arc) continue;
-      const double most = a.radius <= r / 4 ? kPi / 2 : std::min(kPi / 2, 2 * std::acos(1 - r / (2 * a.radius)));
-      const int parts = std::max(1, static_cast<int>(std::ceil(std::abs(a.sweep) / most)));
-      for (int q = 1; q < parts; ++q) region.push_back(a.point(static_cast<double>(q) / parts));
-    }
-    double area = 0;
-    for (size_t i = 0; i < region.size(); ++i) {
-      const Vec3& p = region[i];
-      const Vec3& q = region[(i + 1) % region.size()];
-      area += p.x * q.y - q.x * p.y;
-    }
-    if (std::abs(area) <= 1e-9 * scale * scale) region.clear();
-    want_inside = (side > 0) == (area > 0);
-  }
-  auto in_region = [&](const Vec3& p) {
-    int w = 0;
-    for (size_t i = 0; i < region.size(); ++i) {
-      const Vec3& a = region[i];
-      const Vec3& b = region[(i + 1) % region.size()];
-      if ((a.y > p.y) == (b.y > p.y)) continue;
-      const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-      if (x > p.x) w += b.y > a.y ? 1 : -1;
-    }
-    return (w != 0) == want_inside;
-  };
-
-  struct Piece {
-    ArcSeg seg;
-    int source;
-    double s0, s1;
-  };
-  std::vector<Piece> kept;
-  // Clipped stretches of the curve, in order along it.
-  std::vector<std::pair<int, std::pair<double, double>>> clipped;
-  for (size_t i = 0; i < m; ++i) {
+// The raw pieces cut at their crossings; a piece is kept when it is valid
+// (and, for a closed curve that bounds an area, in the side's region; else
+// when it is on the side asked); what is cut away from a primitive's
+// offset goes to `clipped`.
+std::vector<ArcSeg> OffsetBuilder::keep_valid(std::vector<std::vector<double>>& cuts, std::vector<Clipped>& clipped) const {
+  const SplineIndex index(A, r, r - eps);
+  const Region region = closed ? Region(A, r, side, scale) : Region();
+  std::vector<ArcSeg> kept;
+  for (size_t i = 0; i < raw.size(); ++i) {
     auto& c = cuts[i];
     c.push_back(0);
     c.push_back(1);
@@ -503,30 +550,36 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
       const double s0 = c[k], s1 = c[k + 1];
       if ((s1 - s0) * len <= eps) continue;
       const ArcSeg part = s.sub(s0, s1);
-      bool ok = valid(part.point(0.5)) && (part.length() < 1e3 * eps || (valid(part.point(0.25)) && valid(part.point(0.75))));
-      if (ok) ok = region.empty() ? !raw[i].other : in_region(part.point(0.5));
-      if (ok) kept.push_back({part, raw[i].source, s0, s1});
-      else if (raw[i].source >= 0) clipped.push_back({raw[i].source, {s0, s1}});
+      bool ok = index.valid(part.point(0.5)) &&
+                (part.length() < 1e3 * eps || (index.valid(part.point(0.25)) && index.valid(part.point(0.75))));
+      if (ok) ok = region.empty() ? !raw[i].other : region.contains(part.point(0.5));
+      if (ok) kept.push_back(part);
+      else if (raw[i].source >= 0) clipped.push_back({raw[i].source, s0, s1});
     }
   }
-  // Material left: merge clipped stretches that meet along A.
-  std::vector<std::vector<Vec3>> left_probes;
-  for (const auto& [src, range] : clipped) {
+  return kept;
+}
+
+// Material left: the clipped stretches, merged where they meet along A.
+// Returns, per stretch, the points of the curve its depth is read at.
+std::vector<std::vector<Vec3>> OffsetBuilder::mark_left(const std::vector<Clipped>& clipped) {
+  std::vector<std::vector<Vec3>> probes;
+  for (const auto& [src, s0, s1] : clipped) {
     const ArcSeg& a = A[static_cast<size_t>(src)];
-    const Vec3 f = a.point(range.first), t = a.point(range.second);
-    const double l = a.length() * (range.second - range.first);
+    const Vec3 f = a.point(s0), t = a.point(s1);
+    const double l = a.length() * (s1 - s0);
     // How deep the material stands: the curve's distance from the path,
     // less r (measured at the stretch's middle, once the path is known).
-    const Vec3 mid = a.point(0.5 * (range.first + range.second));
+    const Vec3 mid = a.point(0.5 * (s0 + s1));
     if (!res.left.empty() && dist(res.left.back().to, f) <= 1e3 * eps) {
       res.left.back().to = t;
       res.left.back().length += l;
       res.left.back().points.push_back(mid);
       res.left.back().points.push_back(t);
-      left_probes.back().push_back(mid);
+      probes.back().push_back(mid);
     } else {
       res.left.push_back({f, t, l, 0, {f, mid, t}});
-      left_probes.push_back({f, mid, t});
+      probes.push_back({f, mid, t});
     }
   }
   if (closed && res.left.size() > 1 && dist(res.left.back().to, res.left.front().from) <= 1e3 * eps) {
@@ -536,140 +589,18 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
     pts.insert(pts.end(), res.left.front().points.begin() + 1, res.left.front().points.end());
     res.left.front().points = std::move(pts);
     res.left.pop_back();
-    left_probes.front().insert(left_probes.front().end(), left_probes.back().begin(), left_probes.back().end());
-    left_probes.pop_back();
+    probes.front().insert(probes.front().end(), probes.back().begin(), probes.back().end());
+    probes.pop_back();
   }
+  return probes;
+}
 
-  // Chain the kept pieces: each continues with the kept piece that starts
-  // where it ends, the next one along the raw path first.
-  const double link = 1e-7 * scale;
-  const size_t k = kept.size();
-  std::vector<int> next(k, -1), prev(k, -1);
-  for (size_t i = 0; i < k; ++i) {
-    int best = -1;
-    double best_d = link;
-    for (size_t step = 1; step <= k; ++step) {
-      const size_t j = (i + step) % k;
-      if (!closed && j <= i) break;
-      if (prev[j] >= 0) continue;
-      const double d = dist(kept[i].seg.b, kept[j].seg.a);
-      if (d <= best_d) {
-        best = static_cast<int>(j);
-        best_d = d;
-        if (d <= eps) break;
-      }
-    }
-    if (best >= 0 && best != static_cast<int>(i)) {
-      next[i] = best;
-      prev[static_cast<size_t>(best)] = static_cast<int>(i);
-    } else if (best == static_cast<int>(i)) {
-      next[i] = best;
-      prev[i] = best;
-    }
-  }
-  std::vector<bool> used(k, false);
-  auto walk = [&](size_t from) {
-    std::vector<ArcSeg> chain;
-    size_t i = from;
-    bool loop = false;
-    while (!used[i]) {
-      used[i] = true;
-      ArcSeg s = kept[i].seg;
-      if (!chain.empty()) s.a = chain.back().b;  // the shared crossing, exactly
-      // A crumb (a kink's sliver, a touch) is absorbed by its neighbour.
-      if (!chain.empty() && s.length() <= 1e3 * eps) {
-        ArcSeg& last = chain.back();
-        if (last.arc) {
-          last = ArcSeg::make_arc(last.a, s.b, last.c, last.sweep);
-        } else {
-          last.b = s.b;
-        }
-      } else if (!chain.empty() && chain.back().arc == s.arc && !s.arc &&
-                 std::abs(cross(chain.back().tangent(0), s.tangent(0)).z) < 1e-12 &&
-                 dot(chain.back().tangent(0), s.tangent(0)) > 0) {
-        // one line on (a line that turns back is a spur the tool goes into)
-        chain.back().b = s.b;
-      } else {
-        chain.push_back(s);
-      }
-      if (next[i] < 0) break;
-      i = static_cast<size_t>(next[i]);
-      if (i == from) {
-        loop = true;
-        break;
-      }
-    }
-    if (chain.size() > 1 && chain.front().length() <= 1e3 * eps) {
-      chain[1].a = chain.front().a;
-      if (chain[1].arc) chain[1] = ArcSeg::make_arc(chain[1].a, chain[1].b, chain[1].c, chain[1].sweep);
-      chain.erase(chain.begin());
-    }
-    if (loop && !chain.empty()) chain.back().b = chain.front().a;
-    // A loop of the chain that closes on itself within the fit is cut
-    // out: at a small kink of A the two offsets overshoot their crossing,
-    // and the overshoots with the join between them are valid within the
-    // floating-point margin, so the chain ran past the crossing, back and
-    // on again. Every point taken out is a valid one, and the chain
-    // stays continuous (the loop starts and ends at one point). A closed
-    // chain is read twice, from its start and from its middle, for a loop
-    // over its start.
-    auto excise = [&](std::vector<ArcSeg>& ch) {
-      std::vector<ArcSeg> out;
-      for (ArcSeg s : ch) {
-        if (!out.empty()) s.a = out.back().b;
-        out.push_back(s);
-        double around = 0;
-        for (size_t q = out.size(); q-- > 0;) {
-          around += out[q].length();
-          if (around > opt.fit) break;
-          if (dist(out[q].a, out.back().b) <= link) {
-            out.erase(out.begin() + static_cast<std::ptrdiff_t>(q), out.end());
-            break;
-          }
-        }
-      }
-      ch = std::move(out);
-    };
-    excise(chain);
-    // A chain that comes back to its start and runs on into such crumbs
-    // (or starts in them) is closed where it comes back.
-    if (!loop && chain.size() > 2) {
-      double around = 0;
-      for (size_t q = chain.size() - 1; q > 1 && (around += chain[q].length()) <= opt.fit; --q)
-        if (dist(chain[q - 1].b, chain.front().a) <= link) {
-          chain.erase(chain.begin() + static_cast<std::ptrdiff_t>(q), chain.end());
-          loop = true;
-          break;
-        }
-      around = 0;
-      for (size_t q = 0; !loop && q + 2 < chain.size() && (around += chain[q].length()) <= opt.fit; ++q)
-        if (dist(chain[q + 1].a, chain.back().b) <= link) {
-          chain.erase(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(q + 1));
-          loop = true;
-        }
-      if (loop) chain.back().b = chain.front().a;
-    }
-    if (loop && chain.size() > 2) {
-      std::rotate(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(chain.size() / 2), chain.end());
-      excise(chain);
-      if (!chain.empty()) chain.back().b = chain.front().a;
-    }
-    double len = 0;
-    for (const auto& s : chain) len += s.length();
-    // A sliver shorter than the fit is a crumb of a crossing (at a small
-    // kink of A): every point of it is valid, but it cuts nothing.
-    if (len > std::max(1e3 * eps, opt.fit)) {
-      res.chains.push_back(std::move(chain));
-      res.closed.push_back(loop);
-    }
-  };
-  for (size_t i = 0; i < k; ++i)
-    if (prev[i] < 0 && !used[i]) walk(i);
-  for (size_t i = 0; i < k; ++i)
-    if (!used[i]) walk(i);
+// Each stretch's depth: the largest distance of its probes from the path,
+// less r.
+void OffsetBuilder::read_depths(const std::vector<std::vector<Vec3>>& probes) {
   for (size_t i = 0; i < res.left.size(); ++i) {
     double depth = 0;
-    for (const Vec3& q : left_probes[i]) {
+    for (const Vec3& q : probes[i]) {
       double near = HUGE_VAL;
       for (const auto& chain : res.chains)
         for (const auto& s : chain) near = std::min(near, distance(s, q));
@@ -677,8 +608,26 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
     }
     res.left[i].depth = depth;
   }
-  res.bound += 2 * eps;
-  return res;
+}
+
+}  // namespace
+
+OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const OffsetOptions& opt) {
+  OffsetBuilder b(opt, closed);
+  b.fit_spline(pieces);
+  if (b.A.empty()) return b.res;
+  b.offset_side();
+  if (closed) b.close_round();
+  else b.round_open_ends(pieces);
+  b.add_other_side();
+  auto cuts = b.crossings();
+  std::vector<Clipped> clipped;
+  const std::vector<ArcSeg> kept = b.keep_valid(cuts, clipped);
+  const auto probes = b.mark_left(clipped);
+  flatten_detail::chain_pieces(kept, closed, {.eps = b.eps, .link = 1e-7 * b.scale, .fit = opt.fit}, b.res);
+  b.read_depths(probes);
+  b.res.bound += 2 * b.eps;
+  return b.res;
 }
 
 }  // namespace bezcam

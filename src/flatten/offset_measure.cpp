@@ -367,37 +367,20 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
   return measure_offset(curves, one, how);
 }
 
-OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const PathPiece> path,
-                             const OffsetMeasure& how) {
-  const double r = how.r, resolution = how.resolution;
-  const int side = how.side;
-  OffsetReading out;
-  Shape curve;
-  size_t first_curve_pieces = 0;
-  std::vector<Bezier> all;
-  for (size_t c = 0; c < curves.size(); ++c) {
-    for (const Bezier& b : curves[c]) {
-      Piece pc;
-      pc.bez = &b;
-      curve.pieces.push_back(pc);
-      all.push_back(b);
-    }
-    if (c == 0) first_curve_pieces = curve.pieces.size();
-  }
-  curve.sample(resolution);
-  for (size_t k = 0; k < first_curve_pieces; ++k) curve.ring_segs += curve.samples[k].size() - 1;
-  Shape drawn;
-  for (const PathPiece& p : path) drawn.pieces.push_back(piece_of(p));
-  drawn.sample(resolution);
+namespace {
 
-  // The path's distances from the curve's polyline, to find where the
-  // extremes lie. The smallest: the nearest approach of each path chord to
-  // any curve chord. The largest: read at path points, the samples, then
-  // the middle of a path chord's stretch while it could hold a larger
-  // distance than read so far. It cannot where one curve chord S is within
-  // that largest reading of both its ends (the distance to S is convex
-  // along a line, and the distance to the curve is at most the distance to
-  // S), nor where the chord is at most 2 resolution long.
+// The largest distance of the drawn path from the curve. The path's
+// distances from the curve's polyline say where it lies: read at path
+// points, the samples, then the middle of a path chord's stretch while it
+// could hold a larger distance than read so far. It cannot where one curve
+// chord S is within that largest reading of both its ends (the distance to
+// S is convex along a line, and the distance to the curve is at most the
+// distance to S), nor where the chord is at most 2 resolution long. Then
+// the exact pass: the points read, from the largest reading down, while a
+// reading could still hide a larger true distance (the polylines are within
+// the margin of what they sample), at most kExactReads of them: the first
+// alone is within twice the margin of the true largest.
+double largest_distance(Shape& curve, const Shape& drawn, double resolution) {
   double hi = 0;
   struct Read {
     Vec3 at;
@@ -416,7 +399,7 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
     return std::max(curve.index.to(s, a.at), curve.index.to(s, b.at)) <= hi;
   };
   std::vector<std::pair<Read, Read>> todo;
-  for (size_t k = 0; how.distances && k < drawn.pieces.size() && !curve.index.segs.empty(); ++k) {
+  for (size_t k = 0; k < drawn.pieces.size() && !curve.index.segs.empty(); ++k) {
     const auto& ss = drawn.samples[k];
     Read prev = read(ss[0].p, ss[0].t);
     for (size_t i = 1; i < ss.size(); ++i) {
@@ -435,88 +418,148 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
       prev = cur;
     }
   }
-
-  // The exact pass. The largest: the points read, from the largest
-  // reading down, while a reading could still hide a larger true distance
-  // (the polylines are within the margin of what they sample), at most
-  // kExactReads of them: the first alone is within twice the margin of the
-  // true largest.
   std::sort(reads.begin(), reads.end(), [](const Read& x, const Read& y) { return x.d > y.d; });
   double largest = reads.empty() ? 0 : -HUGE_VAL;
   for (size_t i = 0; i < reads.size() && i < kExactReads; ++i) {
     if (reads[i].d + curve.margin < largest) break;
     largest = std::max(largest, curve.exact(reads[i].at));
   }
-  out.min_distance = how.distances ? smallest_distance(curve, drawn) : r;
-  out.max_distance = how.distances ? largest : r;
+  return largest;
+}
 
-  // The material left: a curve point c the tool reaches (its tool position
-  // at r + middle along c's normal, on the side, no nearer the whole curve
-  // than r + middle, to rounding: else it is folded away) stands
-  // dist(c, path) - r from the tool's edge. Read against the part's
-  // surface, not the offset's points: where the offset turns a sharp inner
-  // corner, the path's corner may lie a little off the true offset's along
-  // the corner's bisector while the material it leaves is the same thin
-  // sliver. Each sample is read by its distance to the path's polyline;
-  // from the largest reading down, a point the tool reaches is read again
-  // exactly, and the largest distance sought between its neighbours.
-  if (side != 0 && first_curve_pieces > 0 && !curve.index.segs.empty() && !drawn.index.segs.empty()) {
+// The material left: a curve point c the tool reaches (its tool position
+// at r + middle along c's normal, on the side, no nearer the whole curve
+// than r + middle, to rounding: else it is folded away) stands
+// dist(c, path) - r from the tool's edge. Read against the part's surface,
+// not the offset's points: where the offset turns a sharp inner corner,
+// the path's corner may lie a little off the true offset's along the
+// corner's bisector while the material it leaves is the same thin sliver.
+// Each sample is read by its distance to the path's polyline; from the
+// largest reading down, a point the tool reaches is read again exactly,
+// and the largest distance sought between its neighbours.
+class CoverageReader {
+ public:
+  // The curve's first `ring` pieces are the first curve, which the
+  // coverage is read along; `eps` is the rounding margin of the reach test.
+  CoverageReader(Shape& curve, Shape& drawn, const OffsetMeasure& how, size_t ring, double eps)
+      : curve_(curve), drawn_(drawn), how_(how), ring_(ring), eps_(eps), reach_(how.r + how.middle) {
+    find_region();
+  }
+  double read();
+
+ private:
+  struct Cover {
+    double d;  // of the curve point from the path's polyline
+    size_t piece;
+    double t, lo, hi;  // its parameter, and its neighbours'
+  };
+  void find_region();
+  bool on_side(const Vec3& q) const {
+    return !(region_ && area_ != 0 && (curve_.index.winding(q, curve_.ring_segs) != 0) != want_inside_);
+  }
+  bool reaches(size_t k, double t);
+  std::vector<Cover> candidates() const;
+  // The material left at (piece, t); 0 where the tool does not reach.
+  double left(const Cover& c, double t) { return reaches(c.piece, t) ? drawn_.exact(curve_.pieces[c.piece].at(t)) - how_.r : 0.0; }
+
+  Shape& curve_;
+  Shape& drawn_;
+  const OffsetMeasure& how_;
+  size_t ring_;
+  double eps_, reach_;
+  bool region_ = false, want_inside_ = false;
+  double area_ = 0;
+};
+
+// A closed curve bounds a region, and the tool is on one side of it:
+// inside (a non-zero winding number of the sampled curve) where the side
+// is the left of a counter-clockwise curve or the right of a clockwise
+// one. A tool position on the other side (across a wall of the part where
+// the curve doubles back on itself, at a cusp or a spur of zero width) is
+// not one the tool reaches.
+void CoverageReader::find_region() {
+  std::vector<Vec3> ring;
+  for (size_t k = 0; k < ring_; ++k)
+    for (const Sample& x : curve_.samples[k]) ring.push_back(x.p);
+  region_ = ring.size() > 2 && dist(ring.front(), ring.back()) <= how_.resolution;
+  for (size_t i = 0; region_ && i < ring.size(); ++i) {
+    const Vec3& a = ring[i];
+    const Vec3& b = ring[(i + 1) % ring.size()];
+    area_ += a.x * b.y - b.x * a.y;
+  }
+  want_inside_ = (how_.side > 0) == (area_ > 0);
+}
+
+// Whether the tool reaches the curve at (k, t).
+bool CoverageReader::reaches(size_t k, double t) {
+  const Vec3 n = curve_.pieces[k].normal(t);
+  if (n.x == 0 && n.y == 0) return false;
+  const Vec3 q = curve_.pieces[k].at(t) + n * (how_.side * reach_);
+  if (curve_.exact(q) < reach_ - eps_) return false;
+  return on_side(q);
+}
+
+// The curve's samples the tool may reach, read against the path's
+// polyline, from the largest reading down.
+std::vector<CoverageReader::Cover> CoverageReader::candidates() const {
+  std::vector<Cover> cover;
+  for (size_t k = 0; k < ring_; ++k) {
+    const auto& ss = curve_.samples[k];
+    for (size_t i = 0; i < ss.size(); ++i) {
+      const Vec3 n = curve_.pieces[k].normal(ss[i].t);
+      if (n.x == 0 && n.y == 0) continue;
+      const Vec3 q = ss[i].p + n * (how_.side * reach_);
+      if (curve_.index.nearest(q) < reach_ - eps_ - curve_.margin) continue;  // folded away for certain
+      if (!on_side(q)) continue;
+      cover.push_back({drawn_.index.nearest(ss[i].p), k, ss[i].t, ss[i > 0 ? i - 1 : i].t, ss[i + 1 < ss.size() ? i + 1 : i].t});
+    }
+  }
+  std::sort(cover.begin(), cover.end(), [](const Cover& x, const Cover& y) { return x.d > y.d; });
+  return cover;
+}
+
+double CoverageReader::read() {
+  double coverage = 0;
+  size_t exact = 0;
+  for (const Cover& c : candidates()) {
+    if (c.d - how_.r + drawn_.margin < coverage || exact == kExactReads) break;
+    if (!reaches(c.piece, c.t)) continue;
+    double e = left(c, c.t);
+    if (c.lo < c.hi) e = std::max(e, -brent_min(c.lo, c.hi, [&](double t) { return -left(c, t); }, 1e-9 * (c.hi - c.lo), 40).f);
+    coverage = std::max(coverage, e);
+    ++exact;
+  }
+  return coverage;
+}
+
+}  // namespace
+
+OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::span<const PathPiece> path,
+                             const OffsetMeasure& how) {
+  OffsetReading out;
+  Shape curve;
+  size_t first_curve_pieces = 0;
+  std::vector<Bezier> all;
+  for (size_t c = 0; c < curves.size(); ++c) {
+    for (const Bezier& b : curves[c]) {
+      Piece pc;
+      pc.bez = &b;
+      curve.pieces.push_back(pc);
+      all.push_back(b);
+    }
+    if (c == 0) first_curve_pieces = curve.pieces.size();
+  }
+  curve.sample(how.resolution);
+  for (size_t k = 0; k < first_curve_pieces; ++k) curve.ring_segs += curve.samples[k].size() - 1;
+  Shape drawn;
+  for (const PathPiece& p : path) drawn.pieces.push_back(piece_of(p));
+  drawn.sample(how.resolution);
+
+  out.max_distance = how.distances ? largest_distance(curve, drawn, how.resolution) : how.r;
+  out.min_distance = how.distances ? smallest_distance(curve, drawn) : how.r;
+  if (how.side != 0 && first_curve_pieces > 0 && !curve.index.segs.empty() && !drawn.index.segs.empty()) {
     const double eps = 1e-9 * std::max(1.0, control_magnitude(all));
-    const double reach = r + how.middle;
-    // A closed curve bounds a region, and the tool is on one side of it:
-    // inside (a non-zero winding number of the sampled curve) where the
-    // side is the left of a counter-clockwise curve or the right of a
-    // clockwise one. A tool position on the other side (across a wall of
-    // the part where the curve doubles back on itself, at a cusp or a spur
-    // of zero width) is not one the tool reaches.
-    std::vector<Vec3> ring;
-    for (size_t k = 0; k < first_curve_pieces; ++k)
-      for (const Sample& x : curve.samples[k]) ring.push_back(x.p);
-    const bool region = ring.size() > 2 && dist(ring.front(), ring.back()) <= resolution;
-    double area = 0;
-    for (size_t i = 0; region && i < ring.size(); ++i) {
-      const Vec3& a = ring[i];
-      const Vec3& b = ring[(i + 1) % ring.size()];
-      area += a.x * b.y - b.x * a.y;
-    }
-    const bool want_inside = (side > 0) == (area > 0);
-    auto reaches = [&](size_t k, double t) {  // whether the tool reaches the curve at (k, t)
-      const Vec3 n = curve.pieces[k].normal(t);
-      if (n.x == 0 && n.y == 0) return false;
-      const Vec3 q = curve.pieces[k].at(t) + n * (side * reach);
-      if (curve.exact(q) < reach - eps) return false;
-      return !(region && area != 0 && (curve.index.winding(q, curve.ring_segs) != 0) != want_inside);
-    };
-    struct Cover {
-      double d;  // of the curve point from the path's polyline
-      size_t piece;
-      double t, lo, hi;  // its parameter, and its neighbours'
-    };
-    std::vector<Cover> cover;
-    for (size_t k = 0; k < first_curve_pieces; ++k) {
-      const auto& ss = curve.samples[k];
-      for (size_t i = 0; i < ss.size(); ++i) {
-        const Vec3 n = curve.pieces[k].normal(ss[i].t);
-        if (n.x == 0 && n.y == 0) continue;
-        const Vec3 q = ss[i].p + n * (side * reach);
-        if (curve.index.nearest(q) < reach - eps - curve.margin) continue;  // folded away for certain
-        if (region && area != 0 && (curve.index.winding(q, curve.ring_segs) != 0) != want_inside) continue;
-        cover.push_back({drawn.index.nearest(ss[i].p), k, ss[i].t, ss[i > 0 ? i - 1 : i].t, ss[i + 1 < ss.size() ? i + 1 : i].t});
-      }
-    }
-    std::sort(cover.begin(), cover.end(), [](const Cover& x, const Cover& y) { return x.d > y.d; });
-    auto left = [&](const Cover& c, double t) {  // the material left at (piece, t); 0 where the tool does not reach
-      return reaches(c.piece, t) ? drawn.exact(curve.pieces[c.piece].at(t)) - r : 0.0;
-    };
-    size_t exact = 0;
-    for (const Cover& c : cover) {
-      if (c.d - r + drawn.margin < out.coverage || exact == kExactReads) break;
-      if (!reaches(c.piece, c.t)) continue;
-      double e = left(c, c.t);
-      if (c.lo < c.hi) e = std::max(e, -brent_min(c.lo, c.hi, [&](double t) { return -left(c, t); }, 1e-9 * (c.hi - c.lo), 40).f);
-      out.coverage = std::max(out.coverage, e);
-      ++exact;
-    }
+    out.coverage = CoverageReader(curve, drawn, how, first_curve_pieces, eps).read();
   }
   return out;
 }

@@ -7,6 +7,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/kernel/quadrature.hpp"
+#include "bezcam/kernel/roots.hpp"
 
 namespace bezcam {
 
@@ -256,6 +257,39 @@ double length(const Bezier& b) {
   double poly = 0;
   for (int i = 1; i <= b.degree(); ++i) poly += dist(b.points[i], b.points[i - 1]);
   return integrate([&](double t) { return norm(derivative(b, t)); }, 0, 1, 1e-10 * std::max(poly, 1e-300));
+}
+
+namespace {
+
+CubicPowerForm power_form(const std::vector<Vec3>& P) {
+  CubicPowerForm f;
+  f.c0 = P[0];
+  f.c1 = (P[1] - P[0]) * 3;
+  f.c2 = (P[0] - P[1] * 2 + P[2]) * 3;
+  f.c3 = P[3] - P[0] + (P[1] - P[2]) * 3;
+  return f;
+}
+
+}  // namespace
+
+CubicPowerForm CubicPowerForm::of(const Bezier& b) {
+  assert(!b.rational() && b.degree() <= 3);
+  if (b.degree() == 3) return power_form(b.points);  // the common case: no copy
+  Bezier e = b;
+  while (e.degree() < 3) e = elevate(e);
+  return power_form(e.points);
+}
+
+int CubicPowerForm::inflections(double out[2]) const {
+  const int n = quadratic_roots01(2 * cross(c1, c2).z, 6 * cross(c1, c3).z, 6 * cross(c2, c3).z, out);
+  if (n == 2 && out[0] > out[1]) std::swap(out[0], out[1]);
+  return n;
+}
+
+std::vector<double> inflections(const Bezier& b) {
+  double r[2];
+  const int n = CubicPowerForm::of(b).inflections(r);
+  return {r, r + n};
 }
 
 double binomial(int n, int k) {

@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include "bezcam/error.hpp"
 
@@ -303,4 +305,29 @@ TEST(Bezier, FactoryRefusesBadInputNamingTheIndex) {
   expect_error([] { Bezier::make(std::vector<Vec3>(kMaxBezierDegree + 2, Vec3{})); }, "curve.degree-too-high", "points");
   // Equal weights are a polynomial curve.
   EXPECT_FALSE(Bezier::make({{0, 0}, {1, 1}}, {2, 2}).rational());
+}
+
+TEST(Bezier, InflectionsOfPlanarCubics) {
+  // An S curve symmetric about its middle inflects there, exactly.
+  EXPECT_EQ(inflections(Bezier::make({{0, 0}, {1, 1}, {2, -1}, {3, 0}})), std::vector<double>{0.5});
+  // A C, a quadratic, a line: none; a straight cubic has M' x M'' = 0 exactly.
+  EXPECT_TRUE(inflections(Bezier::make({{0, 0}, {1, 0}, {2, 1}, {0, 1}})).empty());
+  EXPECT_TRUE(inflections(Bezier::make({{0, 0}, {1, 2}, {3, 0}})).empty());
+  EXPECT_TRUE(inflections(Bezier::make({{0, 0}, {3, 1}})).empty());
+  EXPECT_TRUE(inflections(Bezier::make({{0, 0}, {1, 0}, {2, 0}, {3, 0}})).empty());
+  // The inflections, ascending, where the curvature changes sign (read
+  // from the sign of M' x M'' on either side), and nowhere else.
+  for (const Bezier& b : {Bezier::make({{0, 0}, {4, 4}, {-1, 4}, {3, 0}}), Bezier::make({{0, 0}, {10, 10}, {20, -10}, {30, 0}}),
+                          Bezier::make({{0, 0}, {2, 2}, {1, 0}, {3, 1}}), Bezier::make({{0, 0}, {3, 5}, {0, -5}, {3, 0}})}) {
+    const std::vector<double> t = inflections(b);
+    auto turn = [&](double s) { return cross(derivative(b, s), second_derivative(b, s)).z; };
+    int changes = 0;
+    for (int i = 1; i <= 4000; ++i) changes += (turn((i - 1) / 4000.0) > 0) != (turn(i / 4000.0) > 0);
+    EXPECT_EQ(static_cast<int>(t.size()), changes);
+    EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
+    for (const double s : t) {
+      EXPECT_NEAR(turn(s), 0, 1e-9 * norm(derivative(b, s)) * norm(second_derivative(b, s)) + 1e-12);
+      EXPECT_LT(turn(s - 1e-4) * turn(s + 1e-4), 0);
+    }
+  }
 }

@@ -76,6 +76,27 @@ Box3 control_bounds(const Bezier& b);
 /// Arc length by adaptive Gauss-Legendre quadrature, relative accuracy 1e-10.
 double length(const Bezier& b);
 
+/// A polynomial curve of degree <= 3 in power form, M(t) = c0 + c1 t +
+/// c2 t^2 + c3 t^3 (a lower degree elevated to 3 first, exactly): the form
+/// the closed forms for cubics work on.
+struct CubicPowerForm {
+  Vec3 c0, c1, c2, c3;
+  /// Precondition: b is polynomial, of degree <= 3.
+  static CubicPowerForm of(const Bezier& b);
+  /// Where the curve inflects in the XY plane: the roots in [0, 1] of
+  /// (M' x M'').z = 2 (c1 x c2).z + 6 (c1 x c3).z t + 6 (c2 x c3).z t^2
+  /// (quadratic_roots01(), kernel/roots.hpp), ascending, written to out;
+  /// returns how many. The curvature changes sign at a simple root; it
+  /// touches 0 at a double one, which is written twice. A quadratic or a
+  /// line has none, unless its points are collinear: M' x M'' is then 0
+  /// to rounding, and so are the roots, rounding noise.
+  int inflections(double out[2]) const;
+};
+
+/// The parameters in [0, 1] where a planar polynomial curve of degree <= 3
+/// inflects (CubicPowerForm::inflections()), ascending.
+std::vector<double> inflections(const Bezier& b);
+
 // ---- The other forms of the digest (for tests and for teaching) ----------
 /// Binomial coefficient C(n, k) as a double.
 double binomial(int n, int k);
