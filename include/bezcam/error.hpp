@@ -22,7 +22,7 @@ enum class ErrorFamily { input, io, controller };
 
 /// Where an error applies. Every part is optional; to_string() composes the
 /// set parts, in the order option (or setting), file, JSON path, line (and
-/// column), register, text, as `part: part: ...` (`job.json: entities[3].knots[7]`,
+/// column), register, as `part: part: ...` (`job.json: entities[3].knots[7]`,
 /// `prog.nc: line 12`).
 ///
 /// The library never names an option of a program: where a value came from
@@ -38,16 +38,13 @@ struct Place {
   std::optional<long long> line;         ///< a 1-based line number, printed as `line N`
   std::optional<long long> column;       ///< a 1-based column of that line, printed as `line N, column C`
   std::optional<std::string> reg;        ///< a register or setting of a controller, e.g. `buffer`
-  /// An unstructured place, printed after the parts above (places that
-  /// were composed before they reached the Error).
-  std::string text;
 
   /// The place as printed in messages (empty when nothing is known).
   std::string to_string() const;
   /// True when nothing is known.
   bool empty() const { return to_string().empty(); }
-  /// The JSON path, or the unstructured text when no part is set (places
-  /// from layers that name a path relative to their caller's entity).
+  /// The JSON path (places from layers that name a path relative to their
+  /// caller's entity); empty when there is none.
   std::string relative_path() const;
 
   static Place at_line(long long n) { Place p; p.line = n; return p; }
@@ -65,8 +62,6 @@ public:
   /// `id`: the stable identifier (errc::job_knots_order); `where`: the
   /// place (may be empty); `what`: the sentence.
   Error(ErrorFamily family, ErrorId id, Place where, std::string what);
-  /// Compatibility: a place already composed as text.
-  Error(ErrorFamily family, ErrorId id, std::string where, std::string what);
 
   ErrorFamily family() const noexcept { return family_; }
   /// The dotted id, e.g. `job.knots-order`.
@@ -97,8 +92,6 @@ class InputError : public Error {
 public:
   InputError(ErrorId id, Place where, std::string what)
       : Error(ErrorFamily::input, id, std::move(where), std::move(what)) {}
-  InputError(ErrorId id, std::string where, std::string what)
-      : Error(ErrorFamily::input, id, std::move(where), std::move(what)) {}
 };
 
 /// File or connection failure.
@@ -106,16 +99,12 @@ class IoError : public Error {
 public:
   IoError(ErrorId id, Place where, std::string what)
       : Error(ErrorFamily::io, id, std::move(where), std::move(what)) {}
-  IoError(ErrorId id, std::string where, std::string what)
-      : Error(ErrorFamily::io, id, std::move(where), std::move(what)) {}
 };
 
 /// The controller refused or lost the program.
 class ControllerError : public Error {
 public:
   ControllerError(ErrorId id, Place where, std::string what)
-      : Error(ErrorFamily::controller, id, std::move(where), std::move(what)) {}
-  ControllerError(ErrorId id, std::string where, std::string what)
       : Error(ErrorFamily::controller, id, std::move(where), std::move(what)) {}
 };
 

@@ -21,15 +21,10 @@ std::string Place::to_string() const {
   if (json_path) add(out, *json_path);
   if (line) add(out, "line " + std::to_string(*line) + (column ? ", column " + std::to_string(*column) : std::string()));
   if (reg) add(out, *reg);
-  add(out, text);
   return out;
 }
 
-std::string Place::relative_path() const {
-  if (json_path) return *json_path;
-  if (!option && !setting && !file && !line && !column && !reg) return text;
-  return {};
-}
+std::string Place::relative_path() const { return json_path.value_or(std::string()); }
 
 Place Place::in_json(std::string file, const std::string& prefix, const std::string& rest) {
   Place p;
@@ -45,13 +40,6 @@ Error::Error(ErrorFamily family, ErrorId id, Place where, std::string what)
       place_(std::move(where)),
       where_(place_.to_string()),
       message_(std::move(what)) {}
-
-Error::Error(ErrorFamily family, ErrorId id, std::string where, std::string what)
-    : Error(family, id, [&] {
-        Place p;
-        p.text = std::move(where);
-        return p;
-      }(), std::move(what)) {}
 
 Error Error::with_option(std::string opt) const {
   Place p = place_;

@@ -55,7 +55,8 @@ Place Resume::place_of(long line) const {
     p.file = file_;
     p.line = orig;
   } else {
-    p.text = "line " + std::to_string(line) + " of the resume preamble";
+    p.file = kPreamble;
+    p.line = line;
   }
   return p;
 }

@@ -36,6 +36,8 @@ class Resume {
   /// The place of line `line` of the program that ran, in the file's own
   /// numbering (a preamble line is named as such).
   Place place_of(long line) const;
+  /// The file a place of place_of() names for a line of the preamble.
+  static constexpr const char* kPreamble = "the resume preamble";
   const std::optional<ResumePlan>& plan() const { return plan_; }
 
  private:

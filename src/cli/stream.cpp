@@ -185,7 +185,7 @@ struct Sender {
 // (a preamble line is named as such).
 std::string Sender::finding_place(long line) const {
   const Place p = resume.place_of(line);
-  return p.line ? o.file + ":" + std::to_string(*p.line) : p.to_string();
+  return p.file == Resume::kPreamble ? p.to_string() : o.file + ":" + std::to_string(*p.line);
 }
 
 // The program against the profile the controller enforces: a program it
