@@ -5,15 +5,11 @@
 #include <nlohmann/json.hpp>
 
 #include "bezcam/gcode/number_format.hpp"
+#include "plan_json.hpp"
 
 namespace bezcam {
 
 namespace {
-
-double round_to(double v, double q) {
-  const double r = std::round(v / q) / std::round(1 / q);
-  return r == 0 ? 0.0 : r;  // no -0
-}
 
 const char* kind_name(BlockKind k) {
   switch (k) {
@@ -50,15 +46,8 @@ std::string motion_report_json(const MotionPlan& plan, const std::string& progra
   j["machine"] = machine;
   j["units"] = to_string(plan.units);
   j["period_s"] = plan.period_s;
-  j["cycle_time_s"] = round_to(plan.cycle_time_s, 1e-6);
-  j["cutting_time_s"] = round_to(plan.cutting_time_s, 1e-6);
-  j["rapid_time_s"] = round_to(plan.rapid_time_s, 1e-6);
-  j["pause_time_s"] = round_to(plan.pause_time_s, 1e-6);
-  j["programmed_feed_time_s"] = round_to(plan.programmed_feed_time_s, 1e-6);
-  j["mean_feed_ratio"] = round_to(plan.mean_feed_ratio, 1e-6);
-  j["starved_blocks"] = plan.starved_blocks;
-  j["clamped_blocks"] = plan.clamped_blocks;
-  j["max_path_deviation_mm"] = round_to(plan.max_path_deviation * mm, 1e-6);
+  detail::put_plan_figures(j, planned_summary(plan));
+  j["max_path_deviation_mm"] = detail::round_to(plan.max_path_deviation * mm, 1e-6);
   j["max_path_deviation_line"] = plan.max_deviation_line;
   nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
   for (const PlannedBlock& b : plan.blocks) {
@@ -66,10 +55,10 @@ std::string motion_report_json(const MotionPlan& plan, const std::string& progra
     o["line"] = b.line;
     if (b.first_line != b.line) o["first_line"] = b.first_line;
     o["kind"] = kind_name(b.kind);
-    o["length"] = round_to(b.length, 1e-6);
-    o["programmed_feed"] = round_to(b.programmed_feed, 1e-3);
-    o["peak_feed"] = round_to(b.peak_feed, 1e-3);
-    o["time_s"] = round_to(b.time_s, 1e-6);
+    o["length"] = detail::round_to(b.length, 1e-6);
+    o["programmed_feed"] = detail::round_to(b.programmed_feed, 1e-3);
+    o["peak_feed"] = detail::round_to(b.peak_feed, 1e-3);
+    o["time_s"] = detail::round_to(b.time_s, 1e-6);
     if (b.peak_feed < b.programmed_feed * (1 - 1e-6)) o["limit"] = to_string(b.limit);
     if (b.starved) o["starved"] = true;
     if (b.clamped) o["clamped"] = true;

@@ -1,3 +1,4 @@
+#include "plan_json.hpp"
 #include "bezcam/report/report.hpp"
 
 #include <algorithm>
@@ -154,22 +155,10 @@ ProgramReport::Planned planned_summary(const MotionPlan& plan) {
 
 namespace {
 
-double rounded(double v, double q) {
-  const double r = std::round(v / q) / std::round(1 / q);
-  return r == 0 ? 0.0 : r;
-}
-
 nlohmann::ordered_json planned_json(const ProgramReport::Planned& q) {
   nlohmann::ordered_json j;
-  j["cycle_time_s"] = rounded(q.cycle_time_s, 1e-6);
-  j["cutting_time_s"] = rounded(q.cutting_time_s, 1e-6);
-  j["rapid_time_s"] = rounded(q.rapid_time_s, 1e-6);
-  j["pause_time_s"] = rounded(q.pause_time_s, 1e-6);
-  j["programmed_feed_time_s"] = rounded(q.programmed_feed_time_s, 1e-6);
-  j["mean_feed_ratio"] = rounded(q.mean_feed_ratio, 1e-6);
-  j["starved_blocks"] = q.starved_blocks;
-  j["clamped_blocks"] = q.clamped_blocks;
-  j["max_path_deviation"] = rounded(q.max_path_deviation, 1e-9);
+  detail::put_plan_figures(j, q);
+  j["max_path_deviation"] = detail::round_to(q.max_path_deviation, 1e-9);
   return j;
 }
 
