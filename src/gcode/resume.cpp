@@ -39,15 +39,6 @@ std::vector<std::string_view> split_lines(std::string_view text) {
   return out;
 }
 
-// The shortest fixed-point text that reads back as exactly `v` (the
-// reader's numbers have no exponent).
-std::string num(double v) {
-  char buf[400];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
-  std::string s(buf, r.ptr);
-  if (s == "-0") s = "0";
-  return s;
-}
 
 std::string motion_word(ModalMotion m) {
   switch (m) {
@@ -110,7 +101,7 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
   modes += " G" + std::to_string(static_cast<int>(st.coord_system));
   if (st.path_mode == PathMode::exact_path) modes += " G61.1";
   else if (st.path_mode == PathMode::blend && std::isfinite(st.path_tolerance) && st.path_tolerance > 0)
-    modes += " G64 P" + num(st.path_tolerance);  // the tolerance in force, not only the mode
+    modes += " G64 P" + format_exact_fixed(st.path_tolerance);  // the tolerance in force, not only the mode
   else if (st.path_mode != PathMode::unset) modes += " G" + std::to_string(static_cast<int>(st.path_mode));
   if (st.arc_centers == ArcCenterMode::absolute) modes += " G90.1";  // only a program that used it: not every controller knows it
   out.push_back(modes);
@@ -118,8 +109,8 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
   const int sel = s.cont.selected_tool;
   if (sel >= 0 && !(st.tool > 0 && sel == st.tool)) out.push_back("T" + std::to_string(sel));
   if (st.tool_length_comp) out.push_back("G43 H" + std::to_string(st.tool_length_h));
-  if (st.spindle_on) out.push_back("S" + num(st.spindle_rpm) + (st.spindle_ccw ? " M04" : " M03"));
-  else if (st.spindle_rpm != 0) out.push_back("S" + num(st.spindle_rpm));
+  if (st.spindle_on) out.push_back("S" + format_exact_fixed(st.spindle_rpm) + (st.spindle_ccw ? " M04" : " M03"));
+  else if (st.spindle_rpm != 0) out.push_back("S" + format_exact_fixed(st.spindle_rpm));
   if (st.coolant_mist) out.push_back("M07");
   if (st.coolant_flood) out.push_back("M08");
 
@@ -130,22 +121,22 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
   ModalMotion motion_now = ModalMotion::none;
   const double top = zk ? std::max(safe_z, st.pos.z) : safe_z;
   if (zk) {
-    out.push_back("G00 Z" + num(top));
+    out.push_back("G00 Z" + format_exact_fixed(top));
     motion_now = ModalMotion::rapid;
   }
   if (xk || yk) {
     std::string over = "G00";
-    if (xk) over += " X" + num(st.pos.x);
-    if (yk) over += " Y" + num(st.pos.y);
+    if (xk) over += " X" + format_exact_fixed(st.pos.x);
+    if (yk) over += " Y" + format_exact_fixed(st.pos.y);
     out.push_back(over);
     motion_now = ModalMotion::rapid;
   }
   if (zk && st.pos.z < top) {
-    out.push_back("G01 Z" + num(st.pos.z) + " F" + num(plunge));
+    out.push_back("G01 Z" + format_exact_fixed(st.pos.z) + " F" + format_exact_fixed(plunge));
     feed_now = plunge;
     motion_now = ModalMotion::feed;
   }
-  if (st.feed != feed_now) out.push_back("F" + num(st.feed));
+  if (st.feed != feed_now) out.push_back("F" + format_exact_fixed(st.feed));
   if (restorable(st.motion) && st.motion != motion_now) out.push_back(motion_word(st.motion));
   // The moves above are absolute; the program goes on in its own mode.
   if (st.distance == DistanceMode::incremental) out.push_back("G91");
