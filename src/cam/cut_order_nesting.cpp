@@ -17,15 +17,6 @@ namespace cut_order_detail {
 
 namespace {
 
-double dist_to_seg_xy(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const double abx = b.x - a.x, aby = b.y - a.y;
-  const double len2 = abx * abx + aby * aby;
-  double s = 0;
-  if (len2 > 0) s = std::clamp(((p.x - a.x) * abx + (p.y - a.y) * aby) / len2, 0.0, 1.0);
-  const double dx = a.x + abx * s - p.x, dy = a.y + aby * s - p.y;
-  return std::sqrt(dx * dx + dy * dy);
-}
-
 double ring_area(const OrderContour& c, size_t n) {
   double a = 0;
   for (size_t k = 0; k < n; ++k) {
@@ -76,7 +67,7 @@ class Ring {
       const size_t k = edges_[i];
       const Vec3& a = pts[k];
       const Vec3& c = pts[(k + 1) % n_];
-      if (dist_to_seg_xy(p, a, c) <= tol_) return Where::on;
+      if (std::sqrt(dist2_to_segment_xy(p, a, c)) <= tol_) return Where::on;
       if ((a.y > p.y) != (c.y > p.y)) {
         const double x = a.x + (p.y - a.y) * (c.x - a.x) / (c.y - a.y);
         if (p.x < x) in = !in;

@@ -18,15 +18,6 @@ std::vector<Bezier> in_xy(const std::vector<Bezier>& pieces) {
   return out;
 }
 
-double seg_dist2(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const double abx = b.x - a.x, aby = b.y - a.y;
-  const double len2 = abx * abx + aby * aby;
-  double s = 0;
-  if (len2 > 0) s = std::clamp(((p.x - a.x) * abx + (p.y - a.y) * aby) / len2, 0.0, 1.0);
-  const double dx = a.x + abx * s - p.x, dy = a.y + aby * s - p.y;
-  return dx * dx + dy * dy;
-}
-
 enum class Where { outside, on, inside };
 
 // One closed curve, flattened on demand ever finer, for locating points.
@@ -69,7 +60,7 @@ class Curve {
       for (size_t i = 0; i + 1 < l.pts.size(); ++i) {
         const Vec3& a = l.pts[i];
         const Vec3& c = l.pts[i + 1];
-        d2 = std::min(d2, seg_dist2(p, a, c));
+        d2 = std::min(d2, dist2_to_segment_xy(p, a, c));
         if ((a.y > p.y) != (c.y > p.y) && p.x < a.x + (p.y - a.y) * (c.x - a.x) / (c.y - a.y)) odd = !odd;
       }
       const double far = l.bound + margin;

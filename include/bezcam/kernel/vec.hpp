@@ -50,6 +50,17 @@ inline double dist_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return dist(p, a + ab * s);
 }
 
+/// Squared distance from p to the segment [a, b] in the xy plane (z is
+/// ignored; a point when a == b).
+inline double dist2_to_segment_xy(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const double abx = b.x - a.x, aby = b.y - a.y;
+  const double len2 = abx * abx + aby * aby;
+  double s = 0;
+  if (len2 > 0) s = std::clamp(((p.x - a.x) * abx + (p.y - a.y) * aby) / len2, 0.0, 1.0);
+  const double dx = a.x + abx * s - p.x, dy = a.y + aby * s - p.y;
+  return dx * dx + dy * dy;
+}
+
 /// Axis-aligned box.
 struct Box3 {
   Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
