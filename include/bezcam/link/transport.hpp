@@ -13,7 +13,7 @@
 
 #include "bezcam/error.hpp"
 
-typedef struct _modbus modbus_t;
+typedef struct _modbus modbus_t;  // NOLINT(bugprone-reserved-identifier): libmodbus names its type so
 
 namespace bezcam::link {
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include "bezcam/link/transport.hpp"
@@ -54,6 +55,9 @@ class InProcessLink {
   /// What a connection shares with the link (public for the connection
   /// class in the implementation file).
   struct Shared {
+    // A constructor, not an aggregate: clang 14 (clang-tidy, the fuzz
+    // build) cannot make_shared an aggregate from parenthesised arguments.
+    Shared(SimController& c, LinkFaults f) : ctl(c), faults(std::move(f)) {}
     SimController& ctl;
     LinkFaults faults;
     LinkStats stats;
