@@ -74,9 +74,11 @@ void run(const char* what, const std::vector<OrderContour>& cs) {
   const auto t0 = Clock::now();
   const CutOrder plan = plan_cut_order(cs, {-10, -10});
   const double s = std::chrono::duration<double>(Clock::now() - t0).count();
-  std::printf("%-22s %6zu contours %7zu vertices  rapid as written %10.0f  planned %8.0f (%5.1f %%)  %3zu nestings unmet  %.3f s\n",
-              what, cs.size(), vertices, plan.rapid_as_written, plan.rapid_planned,
-              100 * plan.rapid_planned / plan.rapid_as_written, plan.unmet_nesting, s);
+  std::printf(
+      "%-22s %6zu contours %7zu vertices  rapid as written %10.0f  planned %8.0f (%5.1f %%)  %3zu nestings unmet  %.3f "
+      "s\n",
+      what, cs.size(), vertices, plan.rapid_as_written, plan.rapid_planned,
+      100 * plan.rapid_planned / plan.rapid_as_written, plan.unmet_nesting, s);
 }
 
 }  // namespace

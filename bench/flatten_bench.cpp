@@ -26,14 +26,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <vector>
 
-#include <sys/resource.h>
-
 #include "bezcam/flatten/deviation.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/job/job_json.hpp"
-#include "bezcam/flatten/flatten_curve.hpp"
 
 #ifdef BEZCAM_HAVE_CAIRO
 #include <cairo.h>
@@ -174,7 +173,8 @@ void whole_job(const std::vector<Curve>& curves) {
     text += i ? ",\n" : "\n";
     text += "{\"type\": \"bezier\", \"points\": [";
     for (size_t k = 0; k < curves[i].b.points.size(); ++k) {
-      std::snprintf(buf, sizeof buf, "%s[%.17g, %.17g]", k ? ", " : "", curves[i].b.points[k].x, curves[i].b.points[k].y);
+      std::snprintf(buf, sizeof buf, "%s[%.17g, %.17g]", k ? ", " : "", curves[i].b.points[k].x,
+                    curves[i].b.points[k].y);
       text += buf;
     }
     text += "]}";
@@ -184,7 +184,8 @@ void whole_job(const std::vector<Curve>& curves) {
   const auto t0 = clk::now();
   const bezcam::Job job = bezcam::parse_job(text, "corpus.json");
   const auto t1 = clk::now();
-  const bezcam::MachineProfile m = bezcam::load_machine_profile(std::string(BEZCAM_SOURCE_DIR) + "/machines/generic.json", {});
+  const bezcam::MachineProfile m =
+      bezcam::load_machine_profile(std::string(BEZCAM_SOURCE_DIR) + "/machines/generic.json", {});
   bezcam::ConvertOptions o;
   const bezcam::ConvertResult r = bezcam::convert(job, m, o);
   const auto t2 = clk::now();
@@ -192,11 +193,12 @@ void whole_job(const std::vector<Curve>& curves) {
   const double convert_s = std::chrono::duration<double>(t2 - t1).count();
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
-  std::printf("\nwhole job: %zu curves as one job, generic, lines, 0.01 mm, measured: read %.3f s, build + measure + "
-              "write %.3f s, total %.3f s (%.0f curves/s, target < 1 s for 10,000); %zu program bytes, largest "
-              "deviation %.6f mm; peak memory %ld MB\n",
-              curves.size(), parse_s, convert_s, parse_s + convert_s, curves.size() / (parse_s + convert_s),
-              r.gcode.size(), r.program.max_measured, ru.ru_maxrss / 1024);
+  std::printf(
+      "\nwhole job: %zu curves as one job, generic, lines, 0.01 mm, measured: read %.3f s, build + measure + "
+      "write %.3f s, total %.3f s (%.0f curves/s, target < 1 s for 10,000); %zu program bytes, largest "
+      "deviation %.6f mm; peak memory %ld MB\n",
+      curves.size(), parse_s, convert_s, parse_s + convert_s, curves.size() / (parse_s + convert_s), r.gcode.size(),
+      r.program.max_measured, ru.ru_maxrss / 1024);
 }
 
 int main(int argc, char** argv) {
@@ -206,11 +208,16 @@ int main(int argc, char** argv) {
   double only_tol = 0.01;
   int repeat = 1;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--quick")) quick = true;
-    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
-    else if (!std::strcmp(argv[i], "--tol") && i + 1 < argc) only_tol = std::atof(argv[++i]);
-    else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-    else corpus = argv[i];
+    if (!std::strcmp(argv[i], "--quick"))
+      quick = true;
+    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
+      only = argv[++i];
+    else if (!std::strcmp(argv[i], "--tol") && i + 1 < argc)
+      only_tol = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc)
+      repeat = std::max(1, std::atoi(argv[++i]));
+    else
+      corpus = argv[i];
   }
   const auto curves = load(corpus, quick);
   if (only == "hash" || only == "hash-all") {
@@ -236,9 +243,15 @@ int main(int argc, char** argv) {
         if (dec == 3 && tol < 0.005) continue;
         auto run = [&](const Bezier& b) {
           const double bound = flatten_pieces(std::span<const Bezier>(&b, 1), {tol, dec}, [&](const FlatVertex& v) {
-            for (double d : {v.point.x, v.point.y, v.point.z, v.t}) { unsigned long long u; std::memcpy(&u, &d, 8); h = (h ^ u) * 1099511628211ull; }
+            for (double d : {v.point.x, v.point.y, v.point.z, v.t}) {
+              unsigned long long u;
+              std::memcpy(&u, &d, 8);
+              h = (h ^ u) * 1099511628211ull;
+            }
           });
-          unsigned long long u; std::memcpy(&u, &bound, 8); h = (h ^ u) * 1099511628211ull;
+          unsigned long long u;
+          std::memcpy(&u, &bound, 8);
+          h = (h ^ u) * 1099511628211ull;
         };
         for (const auto& c : curves) run(c.b);
         for (const auto& b : extra) run(b);
@@ -255,7 +268,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   std::printf("corpus: %s, %zu curves%s\n\n", corpus.c_str(), curves.size(), quick ? " (quick: every 10th)" : "");
-  std::printf("| tol mm | method | segments | ratio to greedy | curves over tol | max dev / tol | us per curve | curves/s | speed vs cairo |\n");
+  std::printf(
+      "| tol mm | method | segments | ratio to greedy | curves over tol | max dev / tol | us per curve | curves/s | "
+      "speed vs cairo |\n");
   std::printf("|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
   std::vector<std::string> band_lines;
   auto fmt = [](double v, const char* f = "%g") {
@@ -324,7 +339,8 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   std::printf("\nband against the on-curve greedy minimum (target <= 0.85 at 0.01 mm):\n\n");
-  std::printf("| tol mm | band segments | on-curve greedy | band / greedy | curves over tol |\n|---:|---:|---:|---:|---:|\n");
+  std::printf(
+      "| tol mm | band segments | on-curve greedy | band / greedy | curves over tol |\n|---:|---:|---:|---:|---:|\n");
   for (const auto& l : band_lines) std::printf("%s\n", l.c_str());
   whole_job(curves);
   return 0;

@@ -12,23 +12,21 @@
 //
 // --quick: the first 1,000 curves. Figures only: nothing is asserted
 // (CI runs it on machines of any speed).
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <sys/resource.h>
 #include <thread>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/bezcam.hpp"
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/report/report.hpp"
@@ -42,7 +40,8 @@ using clk = std::chrono::steady_clock;
 double cpu_s() {
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
-  return static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) + 1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+  return static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+         1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
 }
 
 double g_cpu0 = 0;
@@ -57,7 +56,8 @@ Lap since(clk::time_point t0) { return {std::chrono::duration<double>(clk::now()
 
 // The corpus as the text of one job file.
 std::string job_text(const nlohmann::json& doc, size_t most) {
-  std::string text = "{\"bezcam\": 1, \"units\": \"mm\", \"tolerance\": 0.01, \"machine\": \"generic\", \"entities\": [";
+  std::string text =
+      "{\"bezcam\": 1, \"units\": \"mm\", \"tolerance\": 0.01, \"machine\": \"generic\", \"entities\": [";
   char buf[96];
   const auto& curves = doc["curves"];
   for (size_t i = 0; i < curves.size() && i < most; ++i) {
@@ -98,9 +98,12 @@ int main(int argc, char** argv) {
   bool quick = false;
   std::string job_file;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--quick")) quick = true;
-    else if (!std::strcmp(argv[i], "--job") && i + 1 < argc) job_file = argv[++i];
-    else corpus = argv[i];
+    if (!std::strcmp(argv[i], "--quick"))
+      quick = true;
+    else if (!std::strcmp(argv[i], "--job") && i + 1 < argc)
+      job_file = argv[++i];
+    else
+      corpus = argv[i];
   }
   std::ifstream in(corpus);
   if (!in) {
@@ -178,9 +181,9 @@ int main(int argc, char** argv) {
     const bezcam::Job j = bezcam::parse_job(text, "corpus.json");
     const bezcam::ConvertResult r = bezcam::convert_program(j, m, {});
     std::ofstream f(out, std::ios::binary);
-    const bezcam::ProgramReport rep = bezcam::write_and_report(r.program, m, r.plan ? &*r.plan : nullptr, [&](std::string_view piece) {
-      f.write(piece.data(), static_cast<std::streamsize>(piece.size()));
-    });
+    const bezcam::ProgramReport rep = bezcam::write_and_report(
+        r.program, m, r.plan ? &*r.plan : nullptr,
+        [&](std::string_view piece) { f.write(piece.data(), static_cast<std::streamsize>(piece.size())); });
     if (rep.entities.size() != n || rep.gcode_lines != counts.lines()) std::printf("unexpected report\n");
   }
   const Lap whole_s = since(t);

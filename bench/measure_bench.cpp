@@ -15,11 +15,10 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
@@ -40,8 +39,8 @@ void time_row(const char* what, const std::vector<bezcam::Bezier>& pieces,
     worst.path_to_curve = std::max(worst.path_to_curve, d.path_to_curve);
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("| %s | %zu | %zu | %.3f | %.0f | %.0f | %.6g | %.6g |\n", what, pieces.size(), segs, s, pieces.size() / s,
-              segs / s, worst.curve_to_path, worst.path_to_curve);
+  std::printf("| %s | %zu | %zu | %.3f | %.0f | %.0f | %.6g | %.6g |\n", what, pieces.size(), segs, s,
+              pieces.size() / s, segs / s, worst.curve_to_path, worst.path_to_curve);
 }
 
 void other_pieces() {
@@ -49,7 +48,8 @@ void other_pieces() {
   std::uniform_real_distribution<double> u(0, 1);
   const double tol = 0.01;
   std::printf("\npieces without a power form, tolerance %g mm, one thread\n\n", tol);
-  std::printf("| pieces | count | segments | s | pieces/s | segments/s | largest curve->path | largest path->curve |\n");
+  std::printf(
+      "| pieces | count | segments | s | pieces/s | segments/s | largest curve->path | largest path->curve |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
   // Circular arcs: radius 1 to 50 mm, sweep up to 90 degrees either way.
   std::vector<bezcam::Bezier> arcs;
@@ -89,8 +89,10 @@ int main(int argc, char** argv) {
   std::string corpus = BEZCAM_CORPUS;
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--quick")) quick = true;
-    else corpus = argv[i];
+    if (!std::strcmp(argv[i], "--quick"))
+      quick = true;
+    else
+      corpus = argv[i];
   }
   std::ifstream in(corpus);
   if (!in) {
@@ -106,7 +108,8 @@ int main(int argc, char** argv) {
     curves.push_back(bezcam::Bezier::make(p));
   }
   std::printf("corpus: %s, %zu curves, one thread\n\n", corpus.c_str(), curves.size());
-  std::printf("| tolerance (mm) | segments | s | curves/s | segments/s | largest curve->path | largest path->curve |\n");
+  std::printf(
+      "| tolerance (mm) | segments | s | curves/s | segments/s | largest curve->path | largest path->curve |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
   for (double tol : {0.1, 0.01, 0.001}) {
     std::vector<std::vector<bezcam::Vec3>> polys(curves.size());

@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "bezcam/link/crc32.hpp"
-#include "bezcam/sim/sim_server.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/link/transport.hpp"
+#include "bezcam/sim/sim_server.hpp"
 
 using namespace bezcam;
 using namespace bezcam::link;
@@ -131,19 +131,22 @@ int main(int argc, char** argv) {
     rtt_full = f.median;
     rtt_full_mean = f.mean;
     std::printf("Round trip (3000 requests each)            median     mean      p99\n");
-    std::printf("  FC 03, 48 registers (12 + 105 bytes)   %7.1f us %7.1f us %7.1f us\n", s.median * 1e6,
-                s.mean * 1e6, s.p99 * 1e6);
+    std::printf("  FC 03, 48 registers (12 + 105 bytes)   %7.1f us %7.1f us %7.1f us\n", s.median * 1e6, s.mean * 1e6,
+                s.p99 * 1e6);
     std::printf("  FC 23, chunk of 228 B (259 + 105 bytes) %6.1f us %7.1f us %7.1f us\n\n", f.median * 1e6,
                 f.mean * 1e6, f.p99 * 1e6);
   }
   // One chunk in flight at a time: at most 228 payload bytes per round trip.
   const double bound = kMaxChunkBytes / rtt_full, bound_mean = kMaxChunkBytes / rtt_full_mean;
-  std::printf("Bound on the transfer rate, 228 B per round trip: %.0f KiB/s at the median RTT, %.0f KiB/s at the mean\n\n",
-              bound / 1024, bound_mean / 1024);
+  std::printf(
+      "Bound on the transfer rate, 228 B per round trip: %.0f KiB/s at the median RTT, %.0f KiB/s at the mean\n\n",
+      bound / 1024, bound_mean / 1024);
 
   // 2. Sustained transfer, executing while receiving.
   std::printf("Sustained transfer of %.1f MiB programs, executing while receiving (drip feed)\n", mib);
-  std::printf("  program                      buffer    time       rate    ratio to bound (median, mean RTT)  chunks  lines/s\n");
+  std::printf(
+      "  program                      buffer    time       rate    ratio to bound (median, mean RTT)  chunks  "
+      "lines/s\n");
   const std::string comments = comment_program(program.size());
   for (const auto* prog : {&program, &comments})
     for (std::size_t buffer : {std::size_t{4096}, std::size_t{kMaxBuffer}}) {
@@ -160,9 +163,8 @@ int main(int argc, char** argv) {
       if (r.crc != crc32(*prog)) return 1;
       const double rate = static_cast<double>(r.bytes) / t;
       std::printf("  %-27s %6zu  %6.2f s  %6.0f KiB/s      %5.2f   %5.2f                   %6llu  %7.0f\n",
-                  prog == &program ? "G01 lines (~24 B/line)" : "comment lines (203 B/line)", buffer, t,
-                  rate / 1024, rate / bound, rate / bound_mean, static_cast<unsigned long long>(r.chunks),
-                  r.lines_executed / t);
+                  prog == &program ? "G01 lines (~24 B/line)" : "comment lines (203 B/line)", buffer, t, rate / 1024,
+                  rate / bound, rate / bound_mean, static_cast<unsigned long long>(r.chunks), r.lines_executed / t);
     }
 
   // 2b. The link alone: a program that fits in an empty 64 KiB buffer, so
@@ -201,10 +203,11 @@ int main(int argc, char** argv) {
       rates.push_back(static_cast<double>(small.size()) / secs(t0, t_acked));
     }
     const Stats s = stats(rates);
-    std::printf("  %-27s %6zu  burst   %6.0f KiB/s      %5.2f   %5.2f                   %6llu   (%zu B, median of 15 runs, to the last ack)\n",
-                paused ? "G01 lines, executor paused" : "G01 lines into empty buffer", std::size_t{kMaxBuffer},
-                s.median / 1024, s.median / bound, s.median / bound_mean, static_cast<unsigned long long>(chunks),
-                small.size());
+    std::printf(
+        "  %-27s %6zu  burst   %6.0f KiB/s      %5.2f   %5.2f                   %6llu   (%zu B, median of 15 runs, to "
+        "the last ack)\n",
+        paused ? "G01 lines, executor paused" : "G01 lines into empty buffer", std::size_t{kMaxBuffer}, s.median / 1024,
+        s.median / bound, s.median / bound_mean, static_cast<unsigned long long>(chunks), small.size());
   }
 
   // 2c. At machine pace: short G01 blocks at the generic
@@ -240,10 +243,12 @@ int main(int argc, char** argv) {
       const double t = secs(t0, Clock::now());
       server.stop();
       const double rate = static_cast<double>(r.bytes) / t;
-      std::printf("  %9.0f x %7d   %9.2f   %6.2f   %10u  %6u   %10.0f   %5.2f\n", k, n, t * k, t, r.starved_ms, r.stalls,
-                  rate / 1024, rate / bound);
-      if (r.starved_ms == 0) best = k;
-      else break;
+      std::printf("  %9.0f x %7d   %9.2f   %6.2f   %10u  %6u   %10.0f   %5.2f\n", k, n, t * k, t, r.starved_ms,
+                  r.stalls, rate / 1024, rate / bound);
+      if (r.starved_ms == 0)
+        best = k;
+      else
+        break;
     }
     std::printf("  largest time scale with no stall: %.0f x real time\n", best);
   }

@@ -61,9 +61,9 @@ void run(const char* what, const std::string& program, const char* machine) {
   const auto t1 = Clock::now();
   const std::string tsv = motion_samples_tsv(plan);
   const double tsv_s = std::chrono::duration<double>(Clock::now() - t1).count();
-  std::printf("  %-26s %-9s %8zu %10.1f s %8.3f s %9.0f x   %8.3f s %7.0f x (%zu MB)\n", what, machine, plan.blocks.size(),
-              plan.cycle_time_s, plan_s, plan.cycle_time_s / plan_s, plan_s + tsv_s, plan.cycle_time_s / (plan_s + tsv_s),
-              tsv.size() >> 20);
+  std::printf("  %-26s %-9s %8zu %10.1f s %8.3f s %9.0f x   %8.3f s %7.0f x (%zu MB)\n", what, machine,
+              plan.blocks.size(), plan.cycle_time_s, plan_s, plan.cycle_time_s / plan_s, plan_s + tsv_s,
+              plan.cycle_time_s / (plan_s + tsv_s), tsv.size() >> 20);
 }
 
 }  // namespace

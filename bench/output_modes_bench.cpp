@@ -20,14 +20,13 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <cstring>
-#include <fstream>
-#include <nlohmann/json.hpp>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/arc_fit.hpp"
@@ -95,8 +94,9 @@ int corpus_arcs(const std::string& path, bool quick) {
   for (const auto* curves : {&flat, &ramps}) {
     std::printf("\n%s\n\n", curves == &flat ? "planar curves (arcs; the band leaves them as they are):"
                                             : "the same lifted into ramps (G01 only; the band's lines):");
-    std::printf("| tol mm | on-curve blocks | band blocks | band / on-curve | arcs on / band | max dev / tol on / band | "
-                "curves over tol | s on / band |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf(
+        "| tol mm | on-curve blocks | band blocks | band / on-curve | arcs on / band | max dev / tol on / band | "
+        "curves over tol | s on / band |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (double tol : {0.1, 0.01, 0.001}) {
       size_t blocks[2] = {0, 0}, arcs[2] = {0, 0}, over = 0;
       double worst[2] = {0, 0}, secs[2] = {0, 0};
@@ -128,8 +128,8 @@ int corpus_arcs(const std::string& path, bool quick) {
           worst[k] = std::max(worst[k], d / tol);
         }
       }
-      std::printf("| %g | %zu | %zu | %.3f | %zu / %zu | %.5f / %.5f | %zu | %.2f / %.2f |\n", tol, blocks[0], blocks[1],
-                  ratio(blocks[1], blocks[0]), arcs[0], arcs[1], worst[0], worst[1], over, secs[0], secs[1]);
+      std::printf("| %g | %zu | %zu | %.3f | %zu / %zu | %.5f / %.5f | %zu | %.2f / %.2f |\n", tol, blocks[0],
+                  blocks[1], ratio(blocks[1], blocks[0]), arcs[0], arcs[1], worst[0], worst[1], over, secs[0], secs[1]);
       std::fflush(stdout);
     }
   }
@@ -143,20 +143,25 @@ int main(int argc, char** argv) {
     bool quick = false;
     std::string corpus = BEZCAM_CORPUS;
     for (int i = 2; i < argc; ++i) {
-      if (!std::strcmp(argv[i], "--quick")) quick = true;
-      else corpus = argv[i];
+      if (!std::strcmp(argv[i], "--quick"))
+        quick = true;
+      else
+        corpus = argv[i];
     }
     return corpus_arcs(corpus, quick);
   }
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(BEZCAM_SOURCE_DIR "/samples")) {
     const std::string n = e.path().filename().string();
-    if (e.path().extension() == ".json" && (n.rfind("curve-", 0) == 0 || n.rfind("path-", 0) == 0)) files.push_back(e.path());
+    if (e.path().extension() == ".json" && (n.rfind("curve-", 0) == 0 || n.rfind("path-", 0) == 0))
+      files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   const char* profiles[] = {"generic", "fanuc", "linuxcnc"};
   const OutputMode modes[] = {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs};
-  std::printf("| sample | profile | lines | arcs (lines, ratio) | nurbs (lines, ratio) | bound lines / arcs / nurbs | ms lines / arcs / nurbs |\n");
+  std::printf(
+      "| sample | profile | lines | arcs (lines, ratio) | nurbs (lines, ratio) | bound lines / arcs / nurbs | ms lines "
+      "/ arcs / nurbs |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   std::map<std::string, std::array<Count, 3>> totals;
   for (const auto& f : files) {
@@ -172,8 +177,7 @@ int main(int argc, char** argv) {
         try {
           const auto t0 = std::chrono::steady_clock::now();
           const ConvertResult r = convert(job, m, o);
-          const double ms =
-              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
           c[k] = count(r.gcode, m);
           c[k].bound = r.program.max_bound;
           c[k].ms = ms;
@@ -188,15 +192,16 @@ int main(int argc, char** argv) {
         totals[p][k].ms += c[k].ms;
       }
       std::printf("| %s | %s | %zu | %zu (%zu, %.2f) | %zu (%zu, %.2f) | %.4f / %.4f / %.4f | %.1f / %.1f / %.1f |\n",
-                  f.stem().c_str(), p, c[0].lines, c[1].blocks, c[1].lines, ratio(c[1].lines, c[0].lines),
-                  c[2].blocks, c[2].lines, ratio(c[2].lines, c[0].lines), c[0].bound, c[1].bound, c[2].bound,
-                  c[0].ms, c[1].ms, c[2].ms);
+                  f.stem().c_str(), p, c[0].lines, c[1].blocks, c[1].lines, ratio(c[1].lines, c[0].lines), c[2].blocks,
+                  c[2].lines, ratio(c[2].lines, c[0].lines), c[0].bound, c[1].bound, c[2].bound, c[0].ms, c[1].ms,
+                  c[2].ms);
     }
   }
-  std::printf("\nTotals (G-code lines that cut; ratio to lines):\n\n| profile | lines | arcs | nurbs | ms lines / arcs / nurbs |\n|---|---|---|---|---|\n");
+  std::printf(
+      "\nTotals (G-code lines that cut; ratio to lines):\n\n| profile | lines | arcs | nurbs | ms lines / arcs / nurbs "
+      "|\n|---|---|---|---|---|\n");
   for (const auto& [p, t] : totals)
     std::printf("| %s | %zu | %zu (%.2f) | %zu (%.2f) | %.0f / %.0f / %.0f |\n", p.c_str(), t[0].lines, t[1].lines,
-                ratio(t[1].lines, t[0].lines), t[2].lines, ratio(t[2].lines, t[0].lines), t[0].ms, t[1].ms,
-                t[2].ms);
+                ratio(t[1].lines, t[0].lines), t[2].lines, ratio(t[2].lines, t[0].lines), t[0].ms, t[1].ms, t[2].ms);
   return 0;
 }

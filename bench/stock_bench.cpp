@@ -7,15 +7,14 @@
 //   build/stock_bench            100 x 100 mm, 100,000 blocks, 4 M columns
 //   build/stock_bench --quick    20 x 20 mm, 4,000 blocks (the test command's run)
 //   ... --image DIR              also writes DIR/stock_raster.png and DIR/stock_arcs.png
-#include <sys/resource.h>
-
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <string>
+#include <ctime>
 #include <numbers>
+#include <string>
+#include <sys/resource.h>
 #include <vector>
 
 #include "bezcam/stock/dexel_grid.hpp"
@@ -49,8 +48,10 @@ std::vector<Sweep> raster(double size, double z) {
     const double y = p + 0.5;
     for (int b = 0; b < blocks; ++b) {
       const double xa = b * 0.1, xb = (b + 1) * 0.1;
-      if (p % 2 == 0) moves.push_back(Sweep::line({xa, y, z}, {xb, y, z}));
-      else moves.push_back(Sweep::line({size - xa, y, z}, {size - xb, y, z}));
+      if (p % 2 == 0)
+        moves.push_back(Sweep::line({xa, y, z}, {xb, y, z}));
+      else
+        moves.push_back(Sweep::line({size - xa, y, z}, {size - xb, y, z}));
     }
     if (p + 1 < passes) {
       const double x = p % 2 == 0 ? size : 0;
@@ -71,7 +72,8 @@ std::vector<Sweep> arcs(double size, int n) {
     const double a0 = 0.3 * k;
     const Vec3 c{cx, cy, 0};
     const Vec3 f{r3(cx + 2 * std::cos(a0)), r3(cy + 2 * std::sin(a0)), -0.5};
-    const Vec3 t{r3(cx + 2 * std::cos(a0 + std::numbers::pi / 2)), r3(cy + 2 * std::sin(a0 + std::numbers::pi / 2)), -0.8};
+    const Vec3 t{r3(cx + 2 * std::cos(a0 + std::numbers::pi / 2)), r3(cy + 2 * std::sin(a0 + std::numbers::pi / 2)),
+                 -0.8};
     moves.push_back(Sweep::arc(Arc{f, t, c, true, Plane::xy}));
   }
   return moves;
@@ -83,8 +85,10 @@ int main(int argc, char** argv) {
   bool quick = false;
   std::string image_dir;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--quick") == 0) quick = true;
-    else if (std::strcmp(argv[i], "--image") == 0 && i + 1 < argc) image_dir = argv[++i];
+    if (std::strcmp(argv[i], "--quick") == 0)
+      quick = true;
+    else if (std::strcmp(argv[i], "--image") == 0 && i + 1 < argc)
+      image_dir = argv[++i];
   }
   const double size = quick ? 20 : 100, cell = 0.05;
   const ToolShape ball = ToolShape::ball(6);
@@ -99,13 +103,15 @@ int main(int argc, char** argv) {
     const double c0 = cpu_s();
     grid.cut(moves, ball);
     const double s = std::chrono::duration<double>(Clock::now() - t0).count(), cpu = cpu_s() - c0;
-    std::printf("  %u thread%s: %7.3f s (cpu %7.3f s)  %6.1f M columns/s  (%zu x %zu = %.2f M columns, grid %.1f MiB, "
-                "process peak %.1f MiB)  removed %.3f mm3  hash %s\n",
-                threads, threads == 1 ? " " : "s", s, cpu, static_cast<double>(grid.stats().columns) / s / 1e6, grid.nx(),
-                grid.ny(), static_cast<double>(grid.nx() * grid.ny()) / 1e6, grid.memory_bytes() / 1048576.0,
-                peak_rss_mib(), grid.removed_volume(), grid.hash_hex().c_str());
+    std::printf(
+        "  %u thread%s: %7.3f s (cpu %7.3f s)  %6.1f M columns/s  (%zu x %zu = %.2f M columns, grid %.1f MiB, "
+        "process peak %.1f MiB)  removed %.3f mm3  hash %s\n",
+        threads, threads == 1 ? " " : "s", s, cpu, static_cast<double>(grid.stats().columns) / s / 1e6, grid.nx(),
+        grid.ny(), static_cast<double>(grid.nx() * grid.ny()) / 1e6, grid.memory_bytes() / 1048576.0, peak_rss_mib(),
+        grid.removed_volume(), grid.hash_hex().c_str());
     if (!image_dir.empty() && threads == 1) write_stock_png(grid, image_dir + "/stock_raster.png");
-    if (first_hash.empty()) first_hash = grid.hash_hex();
+    if (first_hash.empty())
+      first_hash = grid.hash_hex();
     else if (first_hash != grid.hash_hex()) {
       std::printf("  the floors differ between thread counts\n");
       return 1;
@@ -132,12 +138,14 @@ int main(int argc, char** argv) {
     grid.cut(field, ball);
     const double s = std::chrono::duration<double>(Clock::now() - t0).count(), cpu = cpu_s() - c0;
     const SweepStats& st = grid.stats();
-    std::printf("  %u thread%s: %7.3f s (cpu %7.3f s)  %6.2f M columns/s  (%.2f M searched, %.1f intervals each, %llu closed at "
-                "ulp width)  hash %s\n",
-                threads, threads == 1 ? " " : "s", s, cpu, static_cast<double>(st.columns) / s / 1e6,
-                static_cast<double>(st.searched_columns) / 1e6,
-                static_cast<double>(st.search_intervals) / std::max(1.0, static_cast<double>(st.searched_columns)),
-                static_cast<unsigned long long>(st.depth_limited), grid.hash_hex().c_str());
+    std::printf(
+        "  %u thread%s: %7.3f s (cpu %7.3f s)  %6.2f M columns/s  (%.2f M searched, %.1f intervals each, %llu closed "
+        "at "
+        "ulp width)  hash %s\n",
+        threads, threads == 1 ? " " : "s", s, cpu, static_cast<double>(st.columns) / s / 1e6,
+        static_cast<double>(st.searched_columns) / 1e6,
+        static_cast<double>(st.search_intervals) / std::max(1.0, static_cast<double>(st.searched_columns)),
+        static_cast<unsigned long long>(st.depth_limited), grid.hash_hex().c_str());
     if (!image_dir.empty() && threads == 1) write_stock_png(grid, image_dir + "/stock_arcs.png");
   }
   std::printf("process peak %.1f MiB\n", peak_rss_mib());

@@ -121,7 +121,9 @@ int main(int argc, char** argv) {
   }
 
   std::printf("\nBlocks per pass by output mode (G-code lines of the surface entity's cutting moves / passes;\n");
-  std::printf("the first entity of each sample; arcs and nurbs plan their passes 4 tolerances closer, see docs/surfaces.md):\n");
+  std::printf(
+      "the first entity of each sample; arcs and nurbs plan their passes 4 tolerances closer, see "
+      "docs/surfaces.md):\n");
   std::printf("%-28s %-9s %-6s %7s %8s %9s %10s %10s\n", "sample", "machine", "mode", "passes", "blocks", "per pass",
               "measured", "bound");
   struct Mode {
@@ -144,8 +146,7 @@ int main(int argc, char** argv) {
       const EntityReport& rep = res.program.entities[0];
       size_t passes = 0;
       for (const auto& mv : res.program.moves)
-        if (const auto* c = std::get_if<Comment>(&mv.what); c && mv.entity == 0)
-          passes += c->text.starts_with("pass ");
+        if (const auto* c = std::get_if<Comment>(&mv.what); c && mv.entity == 0) passes += c->text.starts_with("pass ");
       if (passes == 0) passes = 1;
       std::printf("%-28s %-9s %-6s %7zu %8zu %9.1f %10.5f %10.5f\n", f, m.name.c_str(), md.name, passes, rep.blocks,
                   double(rep.blocks) / double(passes), rep.measured, rep.bound);

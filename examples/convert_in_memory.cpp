@@ -3,7 +3,6 @@
 //
 //   build/examples/convert_in_memory MACHINES_DIR [PROFILE]
 #include <bezcam/bezcam.hpp>
-
 #include <cstdio>
 #include <iostream>
 

@@ -3,7 +3,6 @@
 //
 //   build/examples/stream_to_simulator MACHINES_DIR
 #include <bezcam/bezcam.hpp>
-
 #include <cstdio>
 #include <mutex>
 #include <string>
@@ -33,13 +32,12 @@ int main(int argc, char** argv) {
         "%\nG21 G90 G17\nG00 Z5.\nG00 X0. Y0.\nM03 S10000\nG01 Z-0.5 F200.\n"
         "G02 X20. Y0. I10. J0. F600.\nG01 X0. Y0.\nG00 Z5.\nM05\nM30\n%\n";
     bezcam::link::StreamOptions opt;
-    const bezcam::link::StreamResult r =
-        bezcam::link::stream_program(program, {"127.0.0.1", server.port()}, opt);
+    const bezcam::link::StreamResult r = bezcam::link::stream_program(program, {"127.0.0.1", server.port()}, opt);
     server.stop();
     controller.stop();
     std::printf("sent %llu bytes in %llu chunks; the controller executed %u lines, %u blocks\n",
-                static_cast<unsigned long long>(r.bytes), static_cast<unsigned long long>(r.chunks),
-                r.lines_executed, r.blocks_executed);
+                static_cast<unsigned long long>(r.bytes), static_cast<unsigned long long>(r.chunks), r.lines_executed,
+                r.blocks_executed);
     std::lock_guard lk(mu);
     std::printf("%s", trace.c_str());
     return r.blocks_executed > 0 ? 0 : 1;

@@ -14,11 +14,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/kernel/bezier.hpp"
@@ -77,11 +76,14 @@ int main(int argc, char** argv) {
             flatten_into_v(std::span<const Bezier>(&b, 1), o, pts);
           n += pts.size() - 1;
         }
-        best[k] = std::min(best[k], std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+        best[k] =
+            std::min(best[k], std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
         segments[k] = n;
       }
-    std::printf("tol %g mm: library %.3f us/curve (%zu segments), variant %.3f us/curve (%zu segments), variant / library %.3f\n",
-                tol, best[0] / curves.size(), segments[0], best[1] / curves.size(), segments[1], best[1] / best[0]);
+    std::printf(
+        "tol %g mm: library %.3f us/curve (%zu segments), variant %.3f us/curve (%zu segments), variant / library "
+        "%.3f\n",
+        tol, best[0] / curves.size(), segments[0], best[1] / curves.size(), segments[1], best[1] / best[0]);
   }
   return 0;
 }

@@ -47,18 +47,42 @@ struct Place {
   /// caller's entity); empty when there is none.
   std::string relative_path() const;
 
-  static Place at_line(long long n) { Place p; p.line = n; return p; }
-  static Place at_json(std::string path) { Place p; p.json_path = std::move(path); return p; }
-  static Place at_option(std::string opt) { Place p; p.option = std::move(opt); return p; }
-  static Place at_setting(std::string name) { Place p; p.setting = std::move(name); return p; }
-  static Place at_file(std::string f) { Place p; p.file = std::move(f); return p; }
-  static Place at_register(std::string r) { Place p; p.reg = std::move(r); return p; }
+  static Place at_line(long long n) {
+    Place p;
+    p.line = n;
+    return p;
+  }
+  static Place at_json(std::string path) {
+    Place p;
+    p.json_path = std::move(path);
+    return p;
+  }
+  static Place at_option(std::string opt) {
+    Place p;
+    p.option = std::move(opt);
+    return p;
+  }
+  static Place at_setting(std::string name) {
+    Place p;
+    p.setting = std::move(name);
+    return p;
+  }
+  static Place at_file(std::string f) {
+    Place p;
+    p.file = std::move(f);
+    return p;
+  }
+  static Place at_register(std::string r) {
+    Place p;
+    p.reg = std::move(r);
+    return p;
+  }
   /// `file` and a JSON path (`prefix.rest`, or either alone when the other is empty).
   static Place in_json(std::string file, const std::string& prefix, const std::string& rest = {});
 };
 
 class Error : public std::runtime_error {
-public:
+ public:
   /// `id`: the stable identifier (errc::job_knots_order); `where`: the
   /// place (may be empty); `what`: the sentence.
   Error(ErrorFamily family, ErrorId id, Place where, std::string what);
@@ -79,7 +103,7 @@ public:
   const std::vector<Error>& more() const noexcept { return more_; }
   void add_more(const Error& e) { more_.push_back(e); }
 
-private:
+ private:
   ErrorFamily family_;
   std::string id_;
   Place place_;
@@ -89,21 +113,20 @@ private:
 
 /// Invalid input or usage: bad job file, bad G-code, bad profile.
 class InputError : public Error {
-public:
+ public:
   InputError(ErrorId id, Place where, std::string what)
       : Error(ErrorFamily::input, id, std::move(where), std::move(what)) {}
 };
 
 /// File or connection failure.
 class IoError : public Error {
-public:
-  IoError(ErrorId id, Place where, std::string what)
-      : Error(ErrorFamily::io, id, std::move(where), std::move(what)) {}
+ public:
+  IoError(ErrorId id, Place where, std::string what) : Error(ErrorFamily::io, id, std::move(where), std::move(what)) {}
 };
 
 /// The controller refused or lost the program.
 class ControllerError : public Error {
-public:
+ public:
   ControllerError(ErrorId id, Place where, std::string what)
       : Error(ErrorFamily::controller, id, std::move(where), std::move(what)) {}
 };

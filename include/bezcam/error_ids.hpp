@@ -16,7 +16,7 @@ namespace bezcam {
 /// (an Error's id() re-thrown with another place) converts implicitly, and
 /// the ErrorId then refers to that string, which must outlive it.
 class ErrorId {
-public:
+ public:
   constexpr explicit ErrorId(const char* dotted) : text_(dotted) {}
   constexpr explicit ErrorId(std::string_view dotted) : text_(dotted) {}
   /// An id carried in a string, e.g. `throw InputError(e.id(), place, what)`.
@@ -30,7 +30,7 @@ public:
 
   friend constexpr bool operator==(ErrorId a, ErrorId b) { return a.text_ == b.text_; }
 
-private:
+ private:
   std::string_view text_;
 };
 
@@ -432,5 +432,5 @@ inline constexpr ErrorId usage_setting{"usage.setting"};
 /// stream: a program file with --abort, or none without it.
 inline constexpr ErrorId usage_stream{"usage.stream"};
 
-}  // namespace bezcam::errc
+}  // namespace errc
 }  // namespace bezcam

@@ -15,11 +15,14 @@ void add(std::string& out, const std::string& part) {
 
 std::string Place::to_string() const {
   std::string out;
-  if (option) add(out, *option);
-  else if (setting) add(out, *setting);
+  if (option)
+    add(out, *option);
+  else if (setting)
+    add(out, *setting);
   if (file) add(out, *file);
   if (json_path) add(out, *json_path);
-  if (line) add(out, "line " + std::to_string(*line) + (column ? ", column " + std::to_string(*column) : std::string()));
+  if (line)
+    add(out, "line " + std::to_string(*line) + (column ? ", column " + std::to_string(*column) : std::string()));
   if (reg) add(out, *reg);
   return out;
 }

@@ -23,7 +23,8 @@ std::string size_text(std::uintmax_t bytes) {
                             const std::string& what) {
   throw InputError(errc::limit_file_size, Place::at_file(file.string()),
                    "the " + what + " is " + (size ? size_text(size) + ", more" : std::string("more")) +
-                       " than bezcam reads (" + size_text(max_bytes) + ", docs/limits.md); split it into smaller files");
+                       " than bezcam reads (" + size_text(max_bytes) +
+                       ", docs/limits.md); split it into smaller files");
 }
 
 }  // namespace

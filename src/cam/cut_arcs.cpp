@@ -13,8 +13,7 @@
 
 namespace bezcam::detail {
 
-double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path,
-                            size_t& blocks) {
+double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks) {
   const int entity = static_cast<int>(c.entity.index);
   Vec3 from = quantize(pieces.front().front(), c.decimals);
   if (path.empty()) path.push_back(from);

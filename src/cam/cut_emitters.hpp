@@ -82,8 +82,10 @@ struct CutContext {
   std::deque<Entity>* owned = nullptr;
   /// Runs `f` now into `r.measured`, or leaves it for later.
   void measure_with(EntityReport& r, std::function<double()> f) const {
-    if (later) later->add(report, std::move(f));
-    else r.measured = f();
+    if (later)
+      later->add(report, std::move(f));
+    else
+      r.measured = f();
   }
 };
 

@@ -4,9 +4,9 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
+#include "bezcam/flatten/exact_blocks.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
-#include "bezcam/flatten/exact_blocks.hpp"
 #include "cut_emitters.hpp"
 #include "measure_path.hpp"
 
@@ -69,8 +69,10 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
   const MachineProfile& m = c.machine;
   if (m.nurbs == NurbsDialect::none) {
     note_fallback(c);
-    if (m.arcs) emit_arcs(c, r);
-    else emit_lines(c, r);
+    if (m.arcs)
+      emit_arcs(c, r);
+    else
+      emit_lines(c, r);
     return;
   }
   const auto& g = c.entity.curve;

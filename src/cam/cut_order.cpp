@@ -29,8 +29,8 @@ namespace bezcam {
 namespace {
 
 using cut_order_detail::Box2;
-using cut_order_detail::dxy;
 using cut_order_detail::check_input;
+using cut_order_detail::dxy;
 using cut_order_detail::nesting_of;
 using cut_order_detail::tolerance_of;
 using cut_order_detail::vertex_count;
@@ -47,8 +47,14 @@ class Segment {
  public:
   Segment(std::span<const OrderContour> cs, std::vector<size_t> ids, Vec3 from, std::optional<Vec3> to,
           const std::vector<std::pair<size_t, size_t>>& local_nesting, double eps)
-      : cs_(cs), ids_(std::move(ids)), m_(ids_.size()), home_(static_cast<uint32_t>(m_)),
-        tail_(static_cast<uint32_t>(m_ + 1)), from_(from), to_(to), eps_(eps) {
+      : cs_(cs),
+        ids_(std::move(ids)),
+        m_(ids_.size()),
+        home_(static_cast<uint32_t>(m_)),
+        tail_(static_cast<uint32_t>(m_ + 1)),
+        from_(from),
+        to_(to),
+        eps_(eps) {
     preds_.resize(m_);
     succs_.resize(m_);
     for (const auto& [in, out] : local_nesting) {
@@ -316,7 +322,8 @@ class Segment {
     const double span = std::max({all.hx - all.lx, all.hy - all.ly, 1e-300});
     const double side = std::max(1.0, std::floor(std::sqrt(static_cast<double>(m_) / 2)));
     const double h = span / side;
-    const size_t nx = static_cast<size_t>((all.hx - all.lx) / h) + 1, ny = static_cast<size_t>((all.hy - all.ly) / h) + 1;
+    const size_t nx = static_cast<size_t>((all.hx - all.lx) / h) + 1,
+                 ny = static_cast<size_t>((all.hy - all.ly) / h) + 1;
     auto cell_x = [&](const Vec3& p) { return std::min(nx - 1, static_cast<size_t>((p.x - all.lx) / h)); };
     auto cell_y = [&](const Vec3& p) { return std::min(ny - 1, static_cast<size_t>((p.y - all.ly) / h)); };
     std::vector<uint32_t> big, first(nx * ny + 1, 0), items;
@@ -550,8 +557,7 @@ class Segment {
             best = delta, best_j = j, bs = s, br = r, found = true, best_flip = false;
           if (may_flip) {
             const double dr = dxy(exit(t, a), entry_r(t, l)) + to(t, exit_r(t, f), b) + inside - link(t, a, b) - gain;
-            if (dr < best && may_move(t, pos, i, L, j))
-              best = dr, best_j = j, found = true, best_flip = true;
+            if (dr < best && may_move(t, pos, i, L, j)) best = dr, best_j = j, found = true, best_flip = true;
           }
         }
         if (!found) continue;
@@ -618,8 +624,8 @@ class Segment {
         if (j > i + 1) {  // a -> cc: reverse [i+1, j]
           l = i + 1, r = j;
           const uint32_t b = t.seq[l], n = t.seq[r + 1];
-          delta = dxy(exit(t, a), entry_r(t, cc)) + to(t, exit_r(t, b), n) - link(t, a, b) - link(t, cc, n) +
-                  inside(l, r);
+          delta =
+              dxy(exit(t, a), entry_r(t, cc)) + to(t, exit_r(t, b), n) - link(t, a, b) - link(t, cc, n) + inside(l, r);
         } else if (j + 1 < i) {  // cc -> a: reverse [j, i-1]
           l = j, r = i - 1;
           const uint32_t p = t.seq[l - 1], e = t.seq[r];
@@ -631,7 +637,8 @@ class Segment {
         if (delta < best && may_reverse(t, pos, l, r)) best = delta, bl = l, br = r;
       }
       if (br == 0) continue;
-      std::reverse(t.seq.begin() + static_cast<std::ptrdiff_t>(bl), t.seq.begin() + static_cast<std::ptrdiff_t>(br + 1));
+      std::reverse(t.seq.begin() + static_cast<std::ptrdiff_t>(bl),
+                   t.seq.begin() + static_cast<std::ptrdiff_t>(br + 1));
       for (size_t k = bl; k <= br; ++k) {
         flip(t, t.seq[k]);
         pos[t.seq[k]] = k;

@@ -113,7 +113,8 @@ double tolerance_of(std::span<const OrderContour> cs, const CutOrderOptions& o) 
 
 void check_input(std::span<const OrderContour> cs) {
   for (size_t i = 0; i < cs.size(); ++i) {
-    if (cs[i].outline.empty()) throw std::invalid_argument("cut order: contour " + std::to_string(i) + " has no vertex");
+    if (cs[i].outline.empty())
+      throw std::invalid_argument("cut order: contour " + std::to_string(i) + " has no vertex");
     for (const auto& p : cs[i].outline)
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
         throw std::invalid_argument("cut order: contour " + std::to_string(i) + " has a non-finite coordinate");
@@ -140,9 +141,8 @@ std::vector<std::pair<size_t, size_t>> nesting_of(std::span<const OrderContour> 
   std::vector<size_t> outers;
   for (size_t i = 0; i < n; ++i)
     if (cs[i].closed && nv[i] >= 3 && area[i] > 0) outers.push_back(i);
-  std::sort(outers.begin(), outers.end(), [&](size_t a, size_t b) {
-    return box[a].lx != box[b].lx ? box[a].lx < box[b].lx : a < b;
-  });
+  std::sort(outers.begin(), outers.end(),
+            [&](size_t a, size_t b) { return box[a].lx != box[b].lx ? box[a].lx < box[b].lx : a < b; });
   std::vector<std::optional<Ring>> ring(n);
   std::vector<std::pair<size_t, size_t>> out;
   for (size_t a = 0; a < n; ++a) {

@@ -6,6 +6,8 @@
 // offset_measure.hpp, which shares no code with the offset.
 // The stages are PartCut's (part_cut.hpp); this file holds the side, the
 // band, the stretches, the passes and the tabs.
+#include "part_cut.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -15,7 +17,6 @@
 #include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/machine/cutter_comp.hpp"
-#include "part_cut.hpp"
 
 namespace bezcam::detail {
 
@@ -26,8 +27,10 @@ double param_at_length(const Bezier& b, double s) {
   double lo = 0, hi = 1;
   for (int i = 0; i < 60 && hi - lo > 1e-13; ++i) {
     const double mid = 0.5 * (lo + hi);
-    if (length(split(b, mid).first) < s) lo = mid;
-    else hi = mid;
+    if (length(split(b, mid).first) < s)
+      lo = mid;
+    else
+      hi = mid;
   }
   return 0.5 * (lo + hi);
 }
@@ -87,14 +90,17 @@ void PartCut::fail(const std::string& key, const std::string& why) const {
   const bool here = (top == "side" && own.side) || (top == "tool_diameter" && own.tool_diameter) ||
                     (top == "stock_to_leave" && own.stock_to_leave) || (top == "step_down" && own.step_down) ||
                     (top == "tabs" && own.tabs) || (top == "compensation" && own.controller_compensation) ||
-                    (top == "tolerance_side" && own.tolerance_side) || (top == "lead" && own.lead) || (top == "tool" && own.tool);
-  const bool in_job = !here && ((top == "side" && job.params.side) || (top == "tool_diameter" && job.params.tool_diameter) ||
-                                (top == "stock_to_leave" && job.params.stock_to_leave) ||
-                                (top == "step_down" && job.params.step_down) || (top == "tabs" && job.params.tabs) ||
-                                (top == "compensation" && job.params.controller_compensation) ||
-                                (top == "tolerance_side" && job.params.tolerance_side) || (top == "lead" && job.params.lead) ||
-                                (top == "tool" && job.params.tool));
-  throw InputError(errc::job_cut, Place::in_json(job.source, (in_job ? std::string("job") : ent.json_path()) + "." + key),
+                    (top == "tolerance_side" && own.tolerance_side) || (top == "lead" && own.lead) ||
+                    (top == "tool" && own.tool);
+  const bool in_job =
+      !here &&
+      ((top == "side" && job.params.side) || (top == "tool_diameter" && job.params.tool_diameter) ||
+       (top == "stock_to_leave" && job.params.stock_to_leave) || (top == "step_down" && job.params.step_down) ||
+       (top == "tabs" && job.params.tabs) || (top == "compensation" && job.params.controller_compensation) ||
+       (top == "tolerance_side" && job.params.tolerance_side) || (top == "lead" && job.params.lead) ||
+       (top == "tool" && job.params.tool));
+  throw InputError(errc::job_cut,
+                   Place::in_json(job.source, (in_job ? std::string("job") : ent.json_path()) + "." + key),
                    (in_job ? "for entity " + ent.label() + ": " : std::string()) + why);
 }
 
@@ -104,8 +110,9 @@ std::string PartCut::where(const Vec3& q) {
 
 void PartCut::check_curve_and_controller() {
   if (ent.curve.dim != 2)
-    fail("side", "cutting a part needs a curve in the XY plane; this one is 3D: remove the part-cutting keys (side, "
-                 "step_down, lead, tabs, ...) or give 2D points");
+    fail("side",
+         "cutting a part needs a curve in the XY plane; this one is 3D: remove the part-cutting keys (side, "
+         "step_down, lead, tabs, ...) or give 2D points");
   controller = cp.controller_compensation;
   if (!controller) return;
   // One diameter per D register: the controller reads it there.
@@ -116,14 +123,16 @@ void PartCut::check_curve_and_controller() {
                          fmt_num(2 * cc->radius) + " (D" + std::to_string(cp.tool) + "), this entity asks " +
                          fmt_num(*cp.tool_diameter) + ": give it its own tool number");
   if (!c.machine.cutter_compensation)
-    fail("compensation", "machine \"" + c.machine.name + "\" has no cutter radius compensation (G41/G42): use \"cam\" "
-                         "(the default): bezcam offsets the path itself");
+    fail("compensation", "machine \"" + c.machine.name +
+                             "\" has no cutter radius compensation (G41/G42): use \"cam\" "
+                             "(the default): bezcam offsets the path itself");
   if (p.output == OutputMode::nurbs)
-    fail("compensation", std::string("compensation \"controller\" cannot be written as NURBS blocks: ") +
-                             (c.machine.nurbs == NurbsDialect::linuxcnc
-                                  ? "LinuxCNC does not compensate G5.2 blocks (it cuts them on the programmed curve)"
-                                  : "Fanuc refuses G06.2 in G41/G42 (alarm PS1006)") +
-                             "; use output \"arcs\" or \"lines\", or compensation \"cam\" for exact NURBS blocks of the offset");
+    fail("compensation",
+         std::string("compensation \"controller\" cannot be written as NURBS blocks: ") +
+             (c.machine.nurbs == NurbsDialect::linuxcnc
+                  ? "LinuxCNC does not compensate G5.2 blocks (it cuts them on the programmed curve)"
+                  : "Fanuc refuses G06.2 in G41/G42 (alarm PS1006)") +
+             "; use output \"arcs\" or \"lines\", or compensation \"cam\" for exact NURBS blocks of the offset");
 }
 
 void PartCut::choose_side() {
@@ -144,18 +153,25 @@ void PartCut::choose_side() {
                          " apart); use \"left\" or \"right\", or close the curve");
       const double area = signed_area(g.pieces);
       if (std::abs(area) <= 1e-12 * scale * scale)
-        fail("side", "the curve bounds no area (it runs back over itself), so it has no inside; use \"left\" or \"right\"");
+        fail("side",
+             "the curve bounds no area (it runs back over itself), so it has no inside; use \"left\" or \"right\"");
       const bool ccw = area > 0;  // counter-clockwise: the region is on the left
       side = (cp.side == CutSide::inside) == ccw ? 1 : -1;
       break;
     }
   }
-  if (controller && cp.side == CutSide::on && cp.tolerance_side != ToleranceSide::left && cp.tolerance_side != ToleranceSide::right)
-    fail("compensation", "compensation \"controller\" needs a side of the curve for the tool (inside, outside, left or "
-                         "right); with side \"on\" there is nothing to compensate");
+  if (controller && cp.side == CutSide::on && cp.tolerance_side != ToleranceSide::left &&
+      cp.tolerance_side != ToleranceSide::right)
+    fail("compensation",
+         "compensation \"controller\" needs a side of the curve for the tool (inside, outside, left or "
+         "right); with side \"on\" there is nothing to compensate");
   if (side != 0) {
     if (!cp.tool_diameter)
-      fail("tool_diameter", "side \"" + std::string(cp.side == CutSide::left ? "left" : cp.side == CutSide::right ? "right" : cp.side == CutSide::inside ? "inside" : "outside") +
+      fail("tool_diameter", "side \"" +
+                                std::string(cp.side == CutSide::left     ? "left"
+                                            : cp.side == CutSide::right  ? "right"
+                                            : cp.side == CutSide::inside ? "inside"
+                                                                         : "outside") +
                                 "\" needs the tool's diameter: add \"tool_diameter\" to the entity or the job");
     radius = *cp.tool_diameter / 2 + cp.stock_to_leave;
     if (radius <= 0)
@@ -171,7 +187,8 @@ void PartCut::choose_direction() {
   part.assign(g.pieces.begin(), g.pieces.end());
   if (cp.direction == CutDirection::as_drawn) return;
   if (side == 0) {
-    const std::string w = ent.label() + ": \"direction\" needs a side of the curve (side \"on\" has no part side): cut as drawn";
+    const std::string w =
+        ent.label() + ": \"direction\" needs a side of the curve (side \"on\" has no part side): cut as drawn";
     p.warnings.push_back(w);
   } else if ((cp.direction == CutDirection::climb) != (side > 0)) {
     part = reversed(std::span<const Bezier>(part));
@@ -184,8 +201,9 @@ void PartCut::choose_band() {
     case ToleranceSide::both: break;
     case ToleranceSide::waste:
       if (side == 0)
-        fail("tolerance_side", "\"waste\" needs a side of the curve (inside, outside, left or right); side \"on\" has "
-                               "no waste side: use \"left\" or \"right\"");
+        fail("tolerance_side",
+             "\"waste\" needs a side of the curve (inside, outside, left or right); side \"on\" has "
+             "no waste side: use \"left\" or \"right\"");
       dev_side = 1;
       break;
     case ToleranceSide::left:
@@ -218,8 +236,10 @@ void PartCut::choose_lead() {
   lead_used = cp.lead;
   if (controller && !lead_used) lead_used = Lead{tool_r, 2 * tool_r};
   if (controller && !(lead_used->length > tool_r))
-    fail("lead.length", "compensation \"controller\" enters and leaves on the lead's line, which must be longer than the "
-                        "tool's radius " + fmt_num(tool_r) + " (it is " + fmt_num(lead_used->length) + "): make it longer");
+    fail("lead.length",
+         "compensation \"controller\" enters and leaves on the lead's line, which must be longer than the "
+         "tool's radius " +
+             fmt_num(tool_r) + " (it is " + fmt_num(lead_used->length) + "): make it longer");
   // The leads are designed and checked against the part itself, sampled
   // once for all of them.
   part_curves = {part};
@@ -237,14 +257,21 @@ void PartCut::build_chains() {
   if (side == 0) return;
   const OffsetResult o = offset_curve(part, closed, {offset_by, side, fit});
   if (o.chains.empty())
-    fail("tool_diameter", "a tool of diameter " + fmt_num(cp.tool_diameter.value_or(0)) + " does not fit: no point is " +
-                              fmt_num(offset_by) + " from the whole curve on the side asked (" +
-                              (cp.side == CutSide::inside ? "inside" : cp.side == CutSide::outside ? "outside" : side > 0 ? "left" : "right") +
+    fail("tool_diameter", "a tool of diameter " + fmt_num(cp.tool_diameter.value_or(0)) +
+                              " does not fit: no point is " + fmt_num(offset_by) +
+                              " from the whole curve on the side asked (" +
+                              (cp.side == CutSide::inside    ? "inside"
+                               : cp.side == CutSide::outside ? "outside"
+                               : side > 0                    ? "left"
+                                                             : "right") +
                               "); use a smaller tool");
   if (controller && o.chains.size() > 1)
-    fail("compensation", "the tool of diameter " + fmt_num(*cp.tool_diameter) + " cannot follow the whole curve in one "
-                         "path (its offset falls apart into " + std::to_string(o.chains.size()) +
-                         " pieces where the part narrows): a controller's compensation cannot cut that; use \"cam\"");
+    fail("compensation",
+         "the tool of diameter " + fmt_num(*cp.tool_diameter) +
+             " cannot follow the whole curve in one "
+             "path (its offset falls apart into " +
+             std::to_string(o.chains.size()) +
+             " pieces where the part narrows): a controller's compensation cannot cut that; use \"cam\"");
   // The program's own path under controller compensation: the stock and
   // the band's shift only (the part itself when both are zero).
   OffsetResult prog;
@@ -266,7 +293,7 @@ void PartCut::build_chains() {
   }
   if (controller && chains.size() != 1)
     fail("compensation", "the path for the controller to compensate falls apart into " + std::to_string(chains.size()) +
-                         " pieces; use \"cam\"");
+                             " pieces; use \"cam\"");
   warn_material_left(o);
 }
 
@@ -284,7 +311,8 @@ void PartCut::warn_material_left(const OffsetResult& o) {
   const std::string w = ent.label() + ": the tool (offset " + fmt_num(offset_by) + ") cannot reach " +
                         fmt_num(std::round(total * 1000) / 1000) + " " + to_string(job.units) +
                         " of the curve (inner corners and bends tighter than the tool, gaps narrower than it): "
-                        "material is left at " + places + (shown > 3 ? " and " + std::to_string(shown - 3) + " more" : "");
+                        "material is left at " +
+                        places + (shown > 3 ? " and " + std::to_string(shown - 3) + " more" : "");
   p.warnings.push_back(w);
   p.moves.push_back({Comment{"material left: " + places + (shown > 3 ? ", ..." : "")}, entity});
   r.left = o.left;
@@ -356,8 +384,10 @@ double PartCut::cut(std::vector<Bezier> pieces, double z, double budget) {
       // An offset is lines and arcs: LinuxCNC's exact form of an arc is
       // G02/G03 (one line, where G5.2 takes four); Fanuc's G06.2 takes a
       // whole run of arcs as one rational block.
-      if (c.machine.nurbs == NurbsDialect::linuxcnc && c.machine.arcs) emit_arcs(sub, part_r);
-      else emit_nurbs(sub, part_r);
+      if (c.machine.nurbs == NurbsDialect::linuxcnc && c.machine.arcs)
+        emit_arcs(sub, part_r);
+      else
+        emit_nurbs(sub, part_r);
       break;
   }
   r.blocks += part_r.blocks;
@@ -388,10 +418,11 @@ void PartCut::cut_stretches() {
   const double longest = *std::max_element(chain_len.begin(), chain_len.end());
   tab_span = cp.tabs ? cp.tabs->width + (cp.tool_diameter ? *cp.tool_diameter : 0) : 0;
   if (cp.tabs && cp.tabs->count * tab_span >= longest)
-    fail("tabs", std::to_string(cp.tabs->count) + " tabs of " + fmt_num(tab_span) +
-                     " (width + tool diameter) do not fit on a path " + fmt_num(std::round(longest * 1000) / 1000) +
-                     " long" + (chains.size() > 1 ? " (the longest of its " + std::to_string(chains.size()) + " stretches)" : "") +
-                     "; use fewer or narrower tabs");
+    fail("tabs",
+         std::to_string(cp.tabs->count) + " tabs of " + fmt_num(tab_span) +
+             " (width + tool diameter) do not fit on a path " + fmt_num(std::round(longest * 1000) / 1000) + " long" +
+             (chains.size() > 1 ? " (the longest of its " + std::to_string(chains.size()) + " stretches)" : "") +
+             "; use fewer or narrower tabs");
   for (size_t k = 0; k < chains.size(); ++k) {
     const auto& chain = chains[k];
     Stretch st;
@@ -411,9 +442,11 @@ std::vector<double> PartCut::tab_cuts(const Vec3& start, double len) {
   std::vector<double> cuts;
   if (!cp.tabs) return cuts;
   if (cp.tabs->count * tab_span >= len) {
-    p.warnings.push_back(ent.label() + ": a stretch of the path " + fmt_num(std::round(len * 1000) / 1000) + " long from " +
-                         where(start) + " (the offset falls apart where the part is narrower than the tool) "
-                         "is too short for " + std::to_string(cp.tabs->count) + " tabs of " + fmt_num(tab_span) +
+    p.warnings.push_back(ent.label() + ": a stretch of the path " + fmt_num(std::round(len * 1000) / 1000) +
+                         " long from " + where(start) +
+                         " (the offset falls apart where the part is narrower than the tool) "
+                         "is too short for " +
+                         std::to_string(cp.tabs->count) + " tabs of " + fmt_num(tab_span) +
                          " (width + tool diameter): it is cut without tabs");
     return cuts;
   }
@@ -491,27 +524,29 @@ void PartCut::check_compensation(const Stretch& st, size_t first_move, bool last
   try {
     path = compensated_path(p.moves, first_move, p.moves.size(), quantize(st.s, dec), st.ts, st.te, side, tool_r);
   } catch (const CompensationError& err) {
-    fail("compensation", std::string("the controller cannot compensate this path: ") + err.what() +
-                             "; use compensation \"cam\" (bezcam offsets the path, trimming what the tool cannot reach)");
+    fail("compensation",
+         std::string("the controller cannot compensate this path: ") + err.what() +
+             "; use compensation \"cam\" (bezcam offsets the path, trimming what the tool cannot reach)");
   }
   // Where the controller's tool goes must be within the tolerance of the
   // true offset too: G01 moves that turn by less than 0.05 rad are joined
   // without a corner (LinuxCNC), which can stray further.
-  const OffsetReading m =
-      measure_offset(part_curves, path, {.r = radius, .side = side, .middle = offset_by - radius, .resolution = 0.01 * tol});
+  const OffsetReading m = measure_offset(
+      part_curves, path, {.r = radius, .side = side, .middle = offset_by - radius, .resolution = 0.01 * tol});
   const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
   const double stray = std::max({lo - m.min_distance, m.max_distance - hi, m.coverage - tol});
   const double reading = std::max({radius - m.min_distance, m.max_distance - radius, m.coverage});
   comp_reading = std::max(comp_reading, reading);
   if (c.measure && last_pass) r.measured = std::max(r.measured, reading);
   if (stray > 0.02 * tol)
-    fail("compensation", "the controller's compensation of these " + std::string(to_string(p.output)) +
-                             " strays " + fmt_num(std::round(stray * 1e5) / 1e5) + " " + to_string(job.units) +
-                             " beyond the tolerance (its tool path lies " + fmt_num(std::round(m.min_distance * 1e5) / 1e5) +
-                             " to " + fmt_num(std::round(m.max_distance * 1e5) / 1e5) + " from the part, reaching the offset within " +
-                             fmt_num(std::round(m.coverage * 1e5) / 1e5) +
-                             "; a controller joins G01 moves that turn by less than 0.05 rad without a corner): use "
-                             "output \"arcs\" (arcs are compensated exactly) or compensation \"cam\"");
+    fail("compensation",
+         "the controller's compensation of these " + std::string(to_string(p.output)) + " strays " +
+             fmt_num(std::round(stray * 1e5) / 1e5) + " " + to_string(job.units) +
+             " beyond the tolerance (its tool path lies " + fmt_num(std::round(m.min_distance * 1e5) / 1e5) + " to " +
+             fmt_num(std::round(m.max_distance * 1e5) / 1e5) + " from the part, reaching the offset within " +
+             fmt_num(std::round(m.coverage * 1e5) / 1e5) +
+             "; a controller joins G01 moves that turn by less than 0.05 rad without a corner): use "
+             "output \"arcs\" (arcs are compensated exactly) or compensation \"cam\"");
 }
 
 // The proven bound: the path's against r, and the leads' against their own
@@ -524,27 +559,28 @@ void PartCut::finish() {
   r.bound = std::max({fit_bound + out_bound + (dev_side == 0 ? 0.0 : 0.5 * tol), comp_reading, lead_bound});
   if (!last_path.empty()) {
     EntityReport probe;
-    c.measure_with(probe, [curves = part_curves, path = std::move(last_path), leads = std::move(last_leads),
-                           radius = radius, side = side, tol = tol, dev_side = dev_side, middle = offset_by - radius,
-                           label = r.label] {
-      const OffsetReading m =
-          measure_offset(curves, path, {.r = radius, .side = side, .middle = middle, .resolution = 0.01 * tol});
-      // With a one-sided band the reading is against its middle.
-      const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
-      const double slack = 0.03 * tol;  // a margin: the band is proven, the readings exact to rounding
-      if (m.min_distance < lo - slack || m.max_distance > hi + slack || m.coverage > tol + slack)
-        throw std::logic_error("internal check failed: " + label + "'s tool path lies " + fmt_num(m.min_distance) +
-                               " to " + fmt_num(m.max_distance) + " from the part (leaving up to " + fmt_num(m.coverage) +
-                               " of material where it reaches), outside [" + fmt_num(lo) + ", " + fmt_num(hi) + "]");
-      if (!leads.empty()) {
-        PartDistance to_part(curves, 0.01 * tol);
-        const double near = to_part.min_distance(leads);
-        if (near < lo - slack)
-          throw std::logic_error("internal check failed: " + label + "'s leads come within " + fmt_num(near) +
-                                 " of the part, nearer than " + fmt_num(lo));
-      }
-      return std::max({radius - m.min_distance, m.max_distance - radius, m.coverage});
-    });
+    c.measure_with(
+        probe, [curves = part_curves, path = std::move(last_path), leads = std::move(last_leads), radius = radius,
+                side = side, tol = tol, dev_side = dev_side, middle = offset_by - radius, label = r.label] {
+          const OffsetReading m =
+              measure_offset(curves, path, {.r = radius, .side = side, .middle = middle, .resolution = 0.01 * tol});
+          // With a one-sided band the reading is against its middle.
+          const double lo = radius - (dev_side > 0 ? 0 : tol), hi = radius + (dev_side < 0 ? 0 : tol);
+          const double slack = 0.03 * tol;  // a margin: the band is proven, the readings exact to rounding
+          if (m.min_distance < lo - slack || m.max_distance > hi + slack || m.coverage > tol + slack)
+            throw std::logic_error("internal check failed: " + label + "'s tool path lies " + fmt_num(m.min_distance) +
+                                   " to " + fmt_num(m.max_distance) + " from the part (leaving up to " +
+                                   fmt_num(m.coverage) + " of material where it reaches), outside [" + fmt_num(lo) +
+                                   ", " + fmt_num(hi) + "]");
+          if (!leads.empty()) {
+            PartDistance to_part(curves, 0.01 * tol);
+            const double near = to_part.min_distance(leads);
+            if (near < lo - slack)
+              throw std::logic_error("internal check failed: " + label + "'s leads come within " + fmt_num(near) +
+                                     " of the part, nearer than " + fmt_num(lo));
+          }
+          return std::max({radius - m.min_distance, m.max_distance - radius, m.coverage});
+        });
     r.measured = std::max(r.measured, probe.measured);
   }
   r.offset = radius;

@@ -88,9 +88,9 @@ struct PartCut {
   // ---- cutting (part_cut.cpp) ----
   /// One stretch of the path as its passes cut it.
   struct Stretch {
-    Vec3 s, e;    // its ends
-    Vec3 ts, te;  // the directions its leads join it in
-    std::vector<Bezier> in, out;  // its leads (none without)
+    Vec3 s, e;                              // its ends
+    Vec3 ts, te;                            // the directions its leads join it in
+    std::vector<Bezier> in, out;            // its leads (none without)
     std::vector<std::vector<Bezier>> runs;  // split at the tabs: odd runs lie on a tab
     bool tabs = false;
   };
@@ -138,20 +138,20 @@ struct PartCut {
   double scale = 1;         // the curve's magnitude, for relative thresholds
   bool closed = false;
   double tol = 0;
-  int side = 0;        // the tool relative to travel: +1 left, -1 right, 0 on
-  double radius = 0;   // the offset asked: tool radius + stock to leave
+  int side = 0;       // the tool relative to travel: +1 left, -1 right, 0 on
+  double radius = 0;  // the offset asked: tool radius + stock to leave
   std::vector<Bezier> part;
-  int dev_side = 0;    // +1: deviation only away from the part, -1: only towards it
-  double fit = 0;      // the offset's fit tolerance
-  double offset_by = 0;  // the band's middle
-  int waste = 1;       // the waste side (+1 left, -1 right of travel)
-  double tool_r = 0;   // the controller's tool radius (its D register)
+  int dev_side = 0;       // +1: deviation only away from the part, -1: only towards it
+  double fit = 0;         // the offset's fit tolerance
+  double offset_by = 0;   // the band's middle
+  int waste = 1;          // the waste side (+1 left, -1 right of travel)
+  double tool_r = 0;      // the controller's tool radius (its D register)
   double program_by = 0;  // the program's own offset under compensation
   std::optional<Lead> lead_used;
   std::vector<std::vector<Bezier>> part_curves;
   std::optional<PartDistance> part_distance;
   double lead_budget = 0, lead_clear = 0;
-  int away = 1;        // +1: the path runs on the waste side of the part
+  int away = 1;  // +1: the path runs on the waste side of the part
   std::vector<std::vector<Bezier>> chains;
   std::vector<bool> chain_closed;
   double fit_bound = 0;

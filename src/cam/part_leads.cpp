@@ -91,11 +91,13 @@ bool PartCut::lead_fits(const Vec3& at, const Vec3& t, const Lead& x) {
 std::vector<ArcSeg> PartCut::start_where_lead_fits(std::vector<ArcSeg> chain) {
   std::vector<size_t> order(chain.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return chain[x].length() > chain[y].length(); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t x, size_t y) { return chain[x].length() > chain[y].length(); });
   size_t longest = order.front();
   for (size_t i = 0; part_distance && i < order.size() && i < kLeadStarts; ++i) {
     const Vec3 at = chain[order[i]].point(0.5);
-    if (lead_fits(at, lead_direction(*part_distance, at, chain[order[i]].tangent(0.5), waste, away, scale), *lead_used)) {
+    if (lead_fits(at, lead_direction(*part_distance, at, chain[order[i]].tangent(0.5), waste, away, scale),
+                  *lead_used)) {
       longest = order[i];
       break;
     }
@@ -134,7 +136,8 @@ Lead PartCut::fit_lead(size_t k, const Stretch& st) {
     const double fits = std::floor(ok * 1000) / 1000;
     const double near = part_distance->min_distance(lead_path(at, t, lead_in_end, l));
     fail("lead", std::string("the lead-") + (lead_in_end ? "in" : "out") + " at " + where(at) +
-                     " would cut into the part: it comes within " + fmt_num(std::round(std::max(near, 0.0) * 1000) / 1000) +
+                     " would cut into the part: it comes within " +
+                     fmt_num(std::round(std::max(near, 0.0) * 1000) / 1000) +
                      " of the curve, where the path keeps at least " +
                      fmt_num(std::round((radius - (dev_side > 0 ? 0 : tol)) * 1e4) / 1e4) +
                      (fits > 0 ? "; a lead of radius " + fmt_num(fits) + (controller ? "" : " and no line") +

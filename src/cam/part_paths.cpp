@@ -33,8 +33,10 @@ std::vector<PathPiece> printed_path(const std::vector<Move>& moves, size_t from,
       std::vector<Vec3> ctrl;
       for (const auto& p : c->ctrl) ctrl.push_back(xy(p));
       std::vector<Bezier> pieces;
-      if (c->form == CurveMove::Form::bezier) pieces.push_back(Bezier::make(ctrl, {}, 2));
-      else pieces = to_bezier(NurbsCurve::make(c->order - 1, ctrl, c->knots, c->weights, 2));
+      if (c->form == CurveMove::Form::bezier)
+        pieces.push_back(Bezier::make(ctrl, {}, 2));
+      else
+        pieces = to_bezier(NurbsCurve::make(c->order - 1, ctrl, c->knots, c->weights, 2));
       for (const Bezier& b : pieces) out.push_back(PathPiece::of(b));
       cur = c->to;
     } else if (const auto* m = motion_of(mv)) {
@@ -107,10 +109,12 @@ std::vector<Vec3> even_chords(std::span<const Bezier> pieces, double tol, int de
     const Bezier& b = pieces[k];
     std::vector<double> ts;
     std::vector<Vec3> greedy;
-    const double gb = flatten_pieces(std::span<const Bezier>(&b, 1), FlattenOptions{.tolerance = tol, .decimals = dec, .on_curve = true}, [&](const FlatVertex& v) {
-      ts.push_back(v.t);
-      greedy.push_back(v.point);
-    });
+    const double gb =
+        flatten_pieces(std::span<const Bezier>(&b, 1),
+                       FlattenOptions{.tolerance = tol, .decimals = dec, .on_curve = true}, [&](const FlatVertex& v) {
+                         ts.push_back(v.t);
+                         greedy.push_back(v.point);
+                       });
     ts.front() = 0;
     ts.back() = 1;
     const size_t n = ts.size() - 1;
@@ -126,7 +130,8 @@ std::vector<Vec3> even_chords(std::span<const Bezier> pieces, double tol, int de
       };
       for (size_t m = n; m <= n + 1; ++m) {
         std::vector<double> s(m + 1);
-        for (size_t i = 0; i <= m; ++i) s[i] = i == m ? 1.0 : at(total * static_cast<double>(i) / static_cast<double>(m));
+        for (size_t i = 0; i <= m; ++i)
+          s[i] = i == m ? 1.0 : at(total * static_cast<double>(i) / static_cast<double>(m));
         std::vector<Vec3> exact(m + 1), printed(m + 1);
         for (size_t i = 0; i <= m; ++i) {
           exact[i] = i == 0 ? b.front() : i == m ? b.back() : evaluate(b, s[i]);

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "bezcam/error.hpp"
-#include "bezcam/limits.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/limits.hpp"
 
 namespace bezcam {
 
@@ -87,9 +87,8 @@ struct TipField {
     const double l = norm(n);
     if (!(l > 0)) return {d.p, pt};
     const Vec3 N = n / l;
-    const Vec3 nt =
-        (dir == 'u' ? cross(d.suu, d.sv) + cross(d.su, d.suv) : cross(d.suv, d.sv) + cross(d.su, d.svv)) *
-        s.orientation;
+    const Vec3 nt = (dir == 'u' ? cross(d.suu, d.sv) + cross(d.su, d.suv) : cross(d.suv, d.sv) + cross(d.su, d.svv)) *
+                    s.orientation;
     const Vec3 Nt = (nt - N * dot(N, nt)) / l;
     return {d.p + (N - kZ) * r, pt + Nt * r};
   }
@@ -226,7 +225,8 @@ PassPlan build_and_verify(const SurfaceGeometry& s, const PassOptions& o, const 
     if (b - a < 1e-9)
       throw InputError(errc::toolpath_stepover, Place::at_json("toolpath.stepover"),
                        "neighbouring passes near " + std::string(1, o.direction == 'u' ? 'v' : 'u') + " = " +
-                           fmt_num(a) + " stay " + fmt_num(g) + " apart however close their parameters are: "
+                           fmt_num(a) + " stay " + fmt_num(g) +
+                           " apart however close their parameters are: "
                            "the tool path jumps there (a crease under a ball-end tool?); use a larger stepover or a "
                            "smaller tool_radius");
     if (plan.passes.size() >= kMaxPassesPerPatch) too_many_passes(o, "more than " + std::to_string(plan.passes.size()));

@@ -1,22 +1,22 @@
 #include "bezcam/cam/program.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <charconv>
 #include <atomic>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <deque>
 #include <exception>
 #include <mutex>
 #include <thread>
 
+#include "bezcam/cam/cut_order.hpp"
+#include "bezcam/cam/program_limits.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/nesting.hpp"
 #include "bezcam/flatten/tolerance.hpp"
-#include "bezcam/cam/program_limits.hpp"
-#include "bezcam/cam/cut_order.hpp"
 #include "cut_emitters.hpp"
 #include "measure_path.hpp"
 
@@ -26,7 +26,8 @@ OutputMode parse_output_mode(const std::string& s) {
   if (s == "lines") return OutputMode::lines;
   if (s == "arcs") return OutputMode::arcs;
   if (s == "nurbs") return OutputMode::nurbs;
-  throw InputError(errc::usage_output, Place::at_setting("output"), "expected lines, arcs or nurbs, found \"" + s + "\"");
+  throw InputError(errc::usage_output, Place::at_setting("output"),
+                   "expected lines, arcs or nurbs, found \"" + s + "\"");
 }
 
 const char* to_string(OutputMode m) {
@@ -85,7 +86,8 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
   if (c.clearance && c.top_z + *c.clearance <= c.cut_z && !e.surface)
     throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
                      "the clearance plane (top_z " + fmt_num(c.top_z) + " + clearance " + fmt_num(*c.clearance) +
-                         ") is not above cut_z = " + fmt_num(c.cut_z) + ": the tool would rapid into the cut; raise "
+                         ") is not above cut_z = " + fmt_num(c.cut_z) +
+                         ": the tool would rapid into the cut; raise "
                          "\"clearance\" or \"top_z\"");
   if (c.cut_z >= c.safe_z)
     throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".cut_z"),
@@ -107,15 +109,24 @@ std::string expand_entity_template(const std::string& text, const Entity& e, con
       continue;
     }
     const std::string name = text.substr(i + 1, close - i - 1);
-    if (name == "entity") out += e.label();
-    else if (name == "tool") out += std::to_string(c.tool);
-    else if (name == "rpm") out += std::to_string(std::llround(c.spindle_rpm));
-    else if (name == "feed") out += fmt_num(std::round(c.feed * 10) / 10);
-    else if (name == "plunge_feed") out += fmt_num(std::round(c.plunge_feed * 10) / 10);
-    else if (name == "cut_z") out += num(c.cut_z);
-    else if (name == "safe_z") out += num(c.safe_z);
-    else if (name == "top_z") out += num(c.top_z);
-    else throw std::logic_error("unchecked placeholder {" + name + "}");
+    if (name == "entity")
+      out += e.label();
+    else if (name == "tool")
+      out += std::to_string(c.tool);
+    else if (name == "rpm")
+      out += std::to_string(std::llround(c.spindle_rpm));
+    else if (name == "feed")
+      out += fmt_num(std::round(c.feed * 10) / 10);
+    else if (name == "plunge_feed")
+      out += fmt_num(std::round(c.plunge_feed * 10) / 10);
+    else if (name == "cut_z")
+      out += num(c.cut_z);
+    else if (name == "safe_z")
+      out += num(c.safe_z);
+    else if (name == "top_z")
+      out += num(c.top_z);
+    else
+      throw std::logic_error("unchecked placeholder {" + name + "}");
     i = close;
   }
   return out;
@@ -352,13 +363,14 @@ Program build_program_checked(const Job& job, const MachineProfile& m, const Con
     const bool tolerance = id == errc::flatten_tolerance || id == errc::flatten_tolerance_below_precision ||
                            id == errc::flatten_tolerance_below_rounding;
     if (!tolerance && !(id == errc::limit_segments && e.place().relative_path() == "tolerance")) throw;
-    throw InputError(e.id(), opt.tolerance ? Place::at_setting("tolerance") : Place::in_json(job.source, "tolerance"),
-                     e.message() + " (machine \"" + m.name + "\" prints " + std::to_string(m.decimals(job.units)) +
-                         " decimals in " + to_string(job.units) +
-                         (m.max_decimals(job.units) > m.decimals(job.units)
-                              ? ", at most " + std::to_string(m.max_decimals(job.units)) + " when the tolerance needs them"
-                              : std::string()) +
-                         ")");
+    throw InputError(
+        e.id(), opt.tolerance ? Place::at_setting("tolerance") : Place::in_json(job.source, "tolerance"),
+        e.message() + " (machine \"" + m.name + "\" prints " + std::to_string(m.decimals(job.units)) + " decimals in " +
+            to_string(job.units) +
+            (m.max_decimals(job.units) > m.decimals(job.units)
+                 ? ", at most " + std::to_string(m.max_decimals(job.units)) + " when the tolerance needs them"
+                 : std::string()) +
+            ")");
   }
 }
 
@@ -386,13 +398,15 @@ void move_part(Program& p, const Vec3& offset) {
     v.y = quantize(v.y + d.y, p.decimals);
   };
   for (Move& mv : p.moves)
-    std::visit([&](auto& x) {
-      using T = std::decay_t<decltype(x)>;
-      if constexpr (std::is_base_of_v<Motion, T>) shift(x.to);
-      if constexpr (std::is_same_v<T, ArcMove>) shift(x.center);
-      if constexpr (std::is_same_v<T, CurveMove>)
-        for (auto& c : x.ctrl) shift(c);
-    }, mv.what);
+    std::visit(
+        [&](auto& x) {
+          using T = std::decay_t<decltype(x)>;
+          if constexpr (std::is_base_of_v<Motion, T>) shift(x.to);
+          if constexpr (std::is_same_v<T, ArcMove>) shift(x.center);
+          if constexpr (std::is_same_v<T, CurveMove>)
+            for (auto& c : x.ctrl) shift(c);
+        },
+        mv.what);
   const bool rounded = d.x != offset.x || d.y != offset.y;
   p.notes.push_back("the part is moved by X" + fmt_num(d.x) + " Y" + fmt_num(d.y) +
                     (rounded ? " (the offset rounded to " + std::to_string(p.decimals) + " decimals)" : ""));
@@ -458,9 +472,9 @@ Job ordered(const Job& job, const MachineProfile& m, Program& p) {
   const std::string u = to_string(job.units);
   auto mm = [](double v) { return fmt_num(std::round(v * 10) / 10); };
   p.notes.push_back("order shortest: " + std::to_string(plan.nesting.size()) + " nested contour" +
-                    (plan.nesting.size() == 1 ? "" : "s") + " cut before what encloses them; rapids " + mm(plan.rapid_planned) +
-                    " " + u + " in XY instead of " + mm(plan.rapid_as_written) + " " + u + " as written (" +
-                    mm(plan.rapid_as_written - plan.rapid_planned) + " " + u + " saved)");
+                    (plan.nesting.size() == 1 ? "" : "s") + " cut before what encloses them; rapids " +
+                    mm(plan.rapid_planned) + " " + u + " in XY instead of " + mm(plan.rapid_as_written) + " " + u +
+                    " as written (" + mm(plan.rapid_as_written - plan.rapid_planned) + " " + u + " saved)");
   p.order_summary = p.notes.back();
   return out;
 }
@@ -497,9 +511,10 @@ std::vector<std::string> nested_outside_warnings(const Job& job) {
     const Entity& e = *es[i];
     const Entity& around = *es[*nest.parent[i]];
     const bool own = e.params.side.has_value();
-    out.push_back(name(e) + " is cut \"outside\"" + (own ? "" : " (the job's side)") + " but lies inside " + name(around) +
-                  ", also cut \"outside\": it is a hole in that part, and cut on its outside it comes out larger by the "
-                  "tool's diameter, cut into the part; give it \"side\": \"inside\"");
+    out.push_back(
+        name(e) + " is cut \"outside\"" + (own ? "" : " (the job's side)") + " but lies inside " + name(around) +
+        ", also cut \"outside\": it is a hole in that part, and cut on its outside it comes out larger by the "
+        "tool's diameter, cut into the part; give it \"side\": \"inside\"");
   }
   return out;
 }
@@ -524,7 +539,8 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
     int d = p.decimals;
     while (d < most && max_rounding_displacement(d, 3) >= 0.5 * p.tolerance) ++d;
     if (d != p.decimals)
-      p.notes.push_back("coordinates with " + std::to_string(d) + " decimals for tolerance " + [&] {
+      p.notes.push_back("coordinates with " + std::to_string(d) + " decimals for tolerance " +
+                        [&] {
                           char b[32];
                           std::snprintf(b, sizeof b, "%g", p.tolerance);
                           return std::string(b);
@@ -544,7 +560,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   Coolant cur_coolant = Coolant::off;
   Vec3 pos;
   bool pos_known = false;
-  ProgramLength length;  // stated limits (program_limits.hpp)
+  ProgramLength length;      // stated limits (program_limits.hpp)
   std::deque<Entity> owned;  // part cutting's geometry, read by `later`
   detail::Measurements later;
   for (const Entity& e : job.entities) {
@@ -579,7 +595,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
     detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known, cur_coolant};
     detail::change_tool_and_spindle(p, m, cp, safe, ms, -1);
     push({Comment{"entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
-                   (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")}});
+                  (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")}});
 
     EntityReport r;
     r.label = e.label();
@@ -596,8 +612,9 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
       clear = std::min(safe, quantize(cp.top_z + *cp.clearance, p.decimals));
       if (clear <= start.z)
         throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
-                         "the clearance plane z = " + fmt_num(clear) + " is not above the curve's start (z = " +
-                             fmt_num(start.z) + "): the tool would rapid into the cut; raise \"clearance\" or \"top_z\"");
+                         "the clearance plane z = " + fmt_num(clear) +
+                             " is not above the curve's start (z = " + fmt_num(start.z) +
+                             "): the tool would rapid into the cut; raise \"clearance\" or \"top_z\"");
       if (clear < safe) r.clear_z = clear;
     }
     for (const auto& line : cp.before) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});

@@ -42,11 +42,11 @@ void check_entity_limits(const Job& job, const Entity& e, double tolerance, int 
   if (!(budget > 0)) return;  // the flattener refuses that, naming the decimals
   const double n = estimate_segments(e.curve.pieces, budget);
   if (n > static_cast<double>(kMaxProgramLines))
-    throw InputError(errc::limit_segments, Place::in_json(job.source, e.json_path()),
-                     e.label() + " needs about " + (std::isfinite(n) ? fmt_num(std::round(n)) : std::string("infinitely many")) +
-                         " segments within tolerance " + fmt_num(tolerance) + ", more than the " +
-                         std::to_string(kMaxProgramLines) +
-                         " lines a program may hold (docs/limits.md); raise the tolerance or split the curve");
+    throw InputError(
+        errc::limit_segments, Place::in_json(job.source, e.json_path()),
+        e.label() + " needs about " + (std::isfinite(n) ? fmt_num(std::round(n)) : std::string("infinitely many")) +
+            " segments within tolerance " + fmt_num(tolerance) + ", more than the " + std::to_string(kMaxProgramLines) +
+            " lines a program may hold (docs/limits.md); raise the tolerance or split the curve");
 }
 
 std::size_t program_lines(const Program& p, std::size_t first) {
@@ -55,7 +55,8 @@ std::size_t program_lines(const Program& p, std::size_t first) {
     // Fanuc: a block per control point, then `order` knot-only blocks;
     // LinuxCNC G5.2: a line per point and G5.3.
     const auto* cv = std::get_if<CurveMove>(&p.moves[i].what);
-    n += cv && cv->form == CurveMove::Form::nurbs ? cv->ctrl.size() + static_cast<std::size_t>(std::max(cv->order, 1)) : 1;
+    n += cv && cv->form == CurveMove::Form::nurbs ? cv->ctrl.size() + static_cast<std::size_t>(std::max(cv->order, 1))
+                                                  : 1;
   }
   return n;
 }

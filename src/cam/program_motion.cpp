@@ -13,7 +13,8 @@ std::vector<MotionBlock> program_motion(const Program& p) {
   std::vector<MotionBlock> out;
   // A block per motion (compensation may add a few): no reallocation
   // moving every block of a long program.
-  out.reserve(static_cast<size_t>(std::count_if(p.moves.begin(), p.moves.end(), [](const Move& mv) { return motion_of(mv) != nullptr; })));
+  out.reserve(static_cast<size_t>(
+      std::count_if(p.moves.begin(), p.moves.end(), [](const Move& mv) { return motion_of(mv) != nullptr; })));
   Vec3 pos;
   unsigned known = 0;
   // G41/G42: the blocks are where the tool's centre goes (cutter_comp.hpp).
@@ -24,8 +25,10 @@ std::vector<MotionBlock> program_motion(const Program& p) {
   for (const Move& mv : p.moves) {
     if (const auto* cc = std::get_if<CompensationMove>(&mv.what)) {
       try {
-        if (cc->side == 0) add(comp.off());
-        else comp.on(cc->side, cc->radius);
+        if (cc->side == 0)
+          add(comp.off());
+        else
+          comp.on(cc->side, cc->radius);
       } catch (const CompensationError& e) {
         throw std::logic_error(std::string("built program: ") + e.what());
       }
@@ -76,7 +79,6 @@ std::vector<MotionBlock> program_motion(const Program& p) {
   add(comp.finish());
   return out;
 }
-
 
 Timeline program_timeline(const Program& p) {
   Timeline tl;

@@ -19,9 +19,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "bezcam/error.hpp"
 #include "bezcam/cam/gouge.hpp"
 #include "bezcam/cam/pass_plan.hpp"
+#include "bezcam/error.hpp"
 #include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/degree_reduce.hpp"
 #include "bezcam/flatten/exact_blocks.hpp"
@@ -75,12 +75,18 @@ std::vector<Run> cut_out(const TipPolyline& p, const std::vector<GougeSpan>& spa
   return runs;
 }
 
-std::string fmt_uv(double u, double v) { return "u = " + fmt_num(std::round(u * 1e6) / 1e6) + ", v = " + fmt_num(std::round(v * 1e6) / 1e6); }
+std::string fmt_uv(double u, double v) {
+  return "u = " + fmt_num(std::round(u * 1e6) / 1e6) + ", v = " + fmt_num(std::round(v * 1e6) / 1e6);
+}
 
 class SurfaceEmitter {
  public:
   SurfaceEmitter(CutContext& c, MotionState& st)
-      : c_(c), st_(st), e_(c.entity), s_(*c.entity.surface), r_(c.params.tool_radius),
+      : c_(c),
+        st_(st),
+        e_(c.entity),
+        s_(*c.entity.surface),
+        r_(c.params.tool_radius),
         safe_(quantize(c.params.safe_z, c.decimals)),
         policy_(e_.params.over(c.job.params).gouge.value_or(GougePolicy::refuse)) {
     rep_.label = e_.label();
@@ -105,7 +111,8 @@ class SurfaceEmitter {
     if (c_.params.clearance) {
       // Passes link at the clearance above the surface's top (or the
       // stock's, when higher), never lower.
-      clear_ = std::min(safe_, quantize(std::max(bounds(s_).hi.z, c_.params.top_z) + *c_.params.clearance, c_.decimals));
+      clear_ =
+          std::min(safe_, quantize(std::max(bounds(s_).hi.z, c_.params.top_z) + *c_.params.clearance, c_.decimals));
       if (clear_ < safe_) rep_.clear_z = clear_;
     } else {
       clear_ = safe_;
@@ -153,8 +160,8 @@ class SurfaceEmitter {
     const Box3 b = bounds(s_);
     if (b.hi.z > c_.params.safe_z)
       throw InputError(errc::job_above_safe_z, place(),
-                       "the surface rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " +
-                           fmt_num(c_.params.safe_z) + "; rapid moves at safe_z would cross it: raise safe_z");
+                       "the surface rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " + fmt_num(c_.params.safe_z) +
+                           "; rapid moves at safe_z would cross it: raise safe_z");
     if (c_.params.tool_radius < 0) throw std::logic_error("negative tool radius");
   }
 
@@ -163,9 +170,7 @@ class SurfaceEmitter {
     mv.entity = static_cast<int>(e_.index);
     c_.program.moves.push_back(std::move(mv));
   }
-  void comment(const std::string& text) {
-    push({Comment{text}});
-  }
+  void comment(const std::string& text) { push({Comment{text}}); }
   void begin_entity(const std::string& what) {
     change_tool_and_spindle(c_.program, c_.machine, c_.params, safe_, st_, static_cast<int>(e_.index));
     comment("entity " + e_.label() + ": " + e_.type + ", degree " + std::to_string(s_.degree_u()) + " x " +
@@ -178,8 +183,9 @@ class SurfaceEmitter {
                           "no arc fits, within the tolerance of ") +
               (r_ > 0 ? "the ball-end tip curves" : "the exact curves on the surface"));
     else if (blocks_)
-      comment(r_ > 0 ? "cut as NURBS blocks: cubic pieces within a proven distance of the ball-end tip curves"
-                     : "cut as NURBS blocks: the exact curves on the surface (reduced to cubics where of higher degree)");
+      comment(r_ > 0
+                  ? "cut as NURBS blocks: cubic pieces within a proven distance of the ball-end tip curves"
+                  : "cut as NURBS blocks: the exact curves on the surface (reduced to cubics where of higher degree)");
     const OutputMode out = c_.program.output;
     if (out != OutputMode::lines && !blocks_ && rep_.blocks == 0) {
       std::string why;
@@ -188,7 +194,8 @@ class SurfaceEmitter {
       else if (out == OutputMode::arcs)
         why = "the stepover is less than 8 tolerances, too little room for arcs beside the pass spacing";
       else if (c_.machine.nurbs == NurbsDialect::linuxcnc)
-        why = "machine " + c_.machine.name + "'s NURBS blocks (G5/G5.1/G5.2) move in X and Y only, and surface "
+        why = "machine " + c_.machine.name +
+              "'s NURBS blocks (G5/G5.1/G5.2) move in X and Y only, and surface "
               "passes move in Z too";
       else if (c_.machine.nurbs == NurbsDialect::none)
         why = "machine " + c_.machine.name + " has no NURBS words";
@@ -473,8 +480,8 @@ class SurfaceEmitter {
       am.feed = c_.params.feed;
       push({am});
       ++rep_.blocks;
-      rep_.length += std::hypot(0.5 * (m.arc.r_start() + m.arc.r_end()) * m.arc.sweep(),
-                                m.arc.to[axis] - m.arc.from[axis]);
+      rep_.length +=
+          std::hypot(0.5 * (m.arc.r_start() + m.arc.r_end()) * m.arc.sweep(), m.arc.to[axis] - m.arc.from[axis]);
       st_.pos = am.to;
     }
     return true;
@@ -482,14 +489,14 @@ class SurfaceEmitter {
 
   [[noreturn]] void refuse(const std::vector<GougeSpan>& spans, const std::string& what) {
     const GougeSpan& g = spans.front();
-    const std::string why =
-        g.undercut ? "the surface faces down there, out of reach of a tool coming from above"
-                   : "the surface is concave there with a curvature radius of " +
-                         fmt_num(std::round(g.curvature_radius * 1e4) / 1e4) + ", less than the ball-end radius " +
-                         fmt_num(r_);
+    const std::string why = g.undercut ? "the surface faces down there, out of reach of a tool coming from above"
+                                       : "the surface is concave there with a curvature radius of " +
+                                             fmt_num(std::round(g.curvature_radius * 1e4) / 1e4) +
+                                             ", less than the ball-end radius " + fmt_num(r_);
     throw InputError(errc::surface_gouge, place(),
-                     "the tool would gouge the surface on " + what + " around " + fmt_uv(g.worst_u, g.worst_v) +
-                         ": " + why + "; use a smaller tool_radius, or set \"gouge\": \"skip\" (in \"job\" or on the "
+                     "the tool would gouge the surface on " + what + " around " + fmt_uv(g.worst_u, g.worst_v) + ": " +
+                         why +
+                         "; use a smaller tool_radius, or set \"gouge\": \"skip\" (in \"job\" or on the "
                          "entity) to leave such regions uncut");
   }
 
@@ -534,8 +541,9 @@ class SurfaceEmitter {
     const ToolpathSpec& tp = e_.toolpath;
     if (!tp.stepover)
       throw InputError(errc::job_missing, place("toolpath.stepover"),
-                       "a \"" + tp.pattern + "\" toolpath needs \"stepover\": the largest distance allowed between "
-                       "neighbouring passes, in file units");
+                       "a \"" + tp.pattern +
+                           "\" toolpath needs \"stepover\": the largest distance allowed between "
+                           "neighbouring passes, in file units");
     PassOptions o;
     o.direction = tp.direction;
     o.stepover = *tp.stepover - (blocks_ ? 4 * c_.tolerance : 0);
@@ -560,7 +568,8 @@ class SurfaceEmitter {
       comment("neighbouring passes at most " +
               fmt_num(std::ceil((plan.gap_bound + 2 * (c_.tolerance + plan.bound)) * 1e4) / 1e4) +
               " apart (verified on the flattened passes, plus twice the tolerance of the printed blocks and of the "
-              "flattening; stepover " + fmt_num(*tp.stepover) + ")");
+              "flattening; stepover " +
+              fmt_num(*tp.stepover) + ")");
     else
       comment("neighbouring passes at most " + fmt_num(std::round(plan.gap_bound * 1e4) / 1e4) +
               " apart (verified on the printed passes; stepover " + fmt_num(o.stepover) + ")");
@@ -586,7 +595,8 @@ class SurfaceEmitter {
       for (size_t j = 0; j < runs.size(); ++j) {
         const Run& run = runs[j];
         const bool linkable = zigzag && j == 0 && have_prev && prev_reached_side && run.from_start;
-        if (!(linkable && link(prev_at, ps.at, prev_reversed ? 0.0 : 1.0, run.points.front()))) go_to(run.points.front());
+        if (!(linkable && link(prev_at, ps.at, prev_reversed ? 0.0 : 1.0, run.points.front())))
+          go_to(run.points.front());
         cut_run(ps.curve, ps.poly, run, rev, label);
         prev_reached_side = run.to_end;
       }

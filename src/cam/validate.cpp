@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <limits>
-#include <vector>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "bezcam/error.hpp"
 #include "bezcam/kernel/arc.hpp"
@@ -54,7 +54,8 @@ void validate_program(const Program& p, const MachineProfile& m) {
   std::vector<double> clear;
   for (const auto& r : p.entities)
     if (r.entity >= 0) {
-      if (clear.size() <= static_cast<size_t>(r.entity)) clear.resize(r.entity + 1, std::numeric_limits<double>::quiet_NaN());
+      if (clear.size() <= static_cast<size_t>(r.entity))
+        clear.resize(r.entity + 1, std::numeric_limits<double>::quiet_NaN());
       clear[r.entity] = r.clear_z;
     }
   Vec3 pos;
@@ -66,16 +67,17 @@ void validate_program(const Program& p, const MachineProfile& m) {
     if (!rapid && mo->feed > max_feed)
       throw InputError(errc::program_feed, where(mv),
                        "feed " + fmt_num(mo->feed) + " " + unit + "/min exceeds the maximum feed of machine \"" +
-                           m.name + "\" (" + fmt_num(max_feed) + " " + unit + "/min); lower \"feed\" or \"plunge_feed\"");
-    if (!rapid && !(mo->feed > 0))
-      throw std::logic_error("cutting move without a feed");
+                           m.name + "\" (" + fmt_num(max_feed) + " " + unit +
+                           "/min); lower \"feed\" or \"plunge_feed\"");
+    if (!rapid && !(mo->feed > 0)) throw std::logic_error("cutting move without a feed");
     Box3 b;
     Vec3 to = pos;
     for (int a = 0; a < 3; ++a)
       if (mo->axes & (1u << a)) to[a] = mo->to[a];
     if (const auto* arc = std::get_if<ArcMove>(&mv.what)) {
       if (!m.arcs)
-        throw InputError(errc::program_arcs, where(mv), "machine \"" + m.name + "\" does not take arcs (\"arcs\": false)");
+        throw InputError(errc::program_arcs, where(mv),
+                         "machine \"" + m.name + "\" does not take arcs (\"arcs\": false)");
       // The emitters keep printed arcs within the controller's radius check.
       const Arc printed{pos, to, arc->center, arc->ccw, arc->plane};
       const double rs = printed.r_start(), re = printed.r_end();

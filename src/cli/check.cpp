@@ -4,11 +4,11 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
-#include "bezcam/job/job.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
-#include "bezcam/job/job_json.hpp"
 #include "bezcam/import/drawing.hpp"
+#include "bezcam/job/job.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "commands.hpp"
 #include "job_input.hpp"
 #include "profiles.hpp"
@@ -16,14 +16,16 @@
 namespace bezcam::cli {
 
 CLI::App* setup_check(CLI::App& app, CheckArgs& o) {
-  auto* s = app.add_subcommand("check", "Validate a job and print what it holds (entities, degrees, lengths, "
-                                        "continuity at path joints); writes no G-code.");
+  auto* s = app.add_subcommand("check",
+                               "Validate a job and print what it holds (entities, degrees, lengths, "
+                               "continuity at path joints); writes no G-code.");
   s->add_option("JOB", o.job, "job file (JSON)")->required();
   add_post_options(s, o.post);
   add_conversion_options(s, o.conv, "the output mode convert would use: lines, arcs or nurbs");
-  s->footer("check runs every validation convert runs for the machine (the job's, --machine, else generic): "
-            "travel, feeds, safe Z, decimals against the tolerance, the proven and measured deviation; "
-            "only the program is not written.");
+  s->footer(
+      "check runs every validation convert runs for the machine (the job's, --machine, else generic): "
+      "travel, feeds, safe Z, decimals against the tolerance, the proven and measured deviation; "
+      "only the program is not written.");
   return s;
 }
 
@@ -36,8 +38,8 @@ void print_drawing(const import::Drawing& d) {
     for (const auto& [kind, n] : m) text += (text.empty() ? "" : ", ") + std::to_string(n) + " " + kind;
     return text;
   };
-  std::cout << d.source << ": " << (d.format == "svg" ? "SVG" : "DXF") << " drawing, " << d.contours.size() << " contour"
-            << (d.contours.size() == 1 ? "" : "s") << " after joining\n";
+  std::cout << d.source << ": " << (d.format == "svg" ? "SVG" : "DXF") << " drawing, " << d.contours.size()
+            << " contour" << (d.contours.size() == 1 ? "" : "s") << " after joining\n";
   for (const auto& [name, l] : d.layers) {
     std::cout << (d.format == "svg" ? std::string("  document") : "  layer \"" + name + "\"") << ": read "
               << (l.read.empty() ? std::string("nothing") : list(l.read));
@@ -53,14 +55,14 @@ int run_check(const CheckArgs& o) {
   const Job job = read_job(o.job, o.conv, &drawing);
   if (!drawing.format.empty()) print_drawing(drawing);
   const char* u = to_string(job.units);
-  std::cout << job.source << ": bezcam format " << job.version << ", units " << u << ", tolerance "
-            << job.tolerance << " " << u << (job.machine ? ", machine " + *job.machine : std::string()) << "\n";
+  std::cout << job.source << ": bezcam format " << job.version << ", units " << u << ", tolerance " << job.tolerance
+            << " " << u << (job.machine ? ", machine " + *job.machine : std::string()) << "\n";
   for (const auto& e : job.entities) {
     const auto& g = e.curve;
     std::cout << e.json_path() << (e.id.empty() ? "" : " \"" + e.id + "\"") << ": " << e.type;
     if (!g.pieces.empty()) {
-      std::cout << ", " << g.dim << "D, degree " << g.max_degree() << (g.rational() ? ", rational" : "")
-                << ", " << g.pieces.size() << " Bézier piece" << (g.pieces.size() == 1 ? "" : "s") << ", length "
+      std::cout << ", " << g.dim << "D, degree " << g.max_degree() << (g.rational() ? ", rational" : "") << ", "
+                << g.pieces.size() << " Bézier piece" << (g.pieces.size() == 1 ? "" : "s") << ", length "
                 << std::setprecision(6) << g.length() << " " << u;
       const Box3 b = g.bounds();
       std::cout << ", bounds " << fmt_point(b.lo, g.dim, 6) << " to " << fmt_point(b.hi, g.dim, 6);
@@ -69,10 +71,10 @@ int run_check(const CheckArgs& o) {
     if (e.surface) {  // bezier_patch, coons_patch, curve_on_surface
       const SurfaceGeometry& s = *e.surface;
       const Box3 b = bounds(s);
-      std::cout << (e.type == "curve_on_surface" ? ", on a " + s.kind : std::string()) << ", degree "
-                << s.degree_u() << " x " << s.degree_v() << (s.rational() ? ", rational" : "") << ", "
-                << s.grid.cells.size() << " Bézier cell" << (s.grid.cells.size() == 1 ? "" : "s") << ", bounds "
-                << fmt_point(b.lo, 3, 6) << " to " << fmt_point(b.hi, 3, 6);
+      std::cout << (e.type == "curve_on_surface" ? ", on a " + s.kind : std::string()) << ", degree " << s.degree_u()
+                << " x " << s.degree_v() << (s.rational() ? ", rational" : "") << ", " << s.grid.cells.size()
+                << " Bézier cell" << (s.grid.cells.size() == 1 ? "" : "s") << ", bounds " << fmt_point(b.lo, 3, 6)
+                << " to " << fmt_point(b.hi, 3, 6);
       if (e.type == "curve_on_surface")
         std::cout << ", curve of " << e.uv_curve.pieces.size() << " piece" << (e.uv_curve.pieces.size() == 1 ? "" : "s")
                   << " in (u, v)" << (e.uv_curve.closed ? ", closed" : "");
@@ -87,8 +89,8 @@ int run_check(const CheckArgs& o) {
                   << (g.segments[i].rational ? ", rational" : "") << "\n";
       for (size_t j = 0; j < g.joints.size(); ++j) {
         const size_t a = j, b = (j + 1) % g.segments.size();
-        std::cout << "  joint segments[" << a << "] -> segments[" << b << "]" << (j + 1 == g.segments.size() ? " (closing)" : "")
-                  << ": " << to_string(g.joints[j]) << "\n";
+        std::cout << "  joint segments[" << a << "] -> segments[" << b << "]"
+                  << (j + 1 == g.segments.size() ? " (closing)" : "") << ": " << to_string(g.joints[j]) << "\n";
       }
     }
   }
@@ -106,16 +108,16 @@ int run_check(const CheckArgs& o) {
     warnings = r.program.warnings;
     std::cout << "machine " << m.name << ", " << o.conv.output << ": " << r.program.entities.size() << " entit"
               << (r.program.entities.size() == 1 ? "y" : "ies") << " cut, deviation measured "
-              << fmt_sig(r.program.max_measured) << ", proven below " << fmt_sig(r.program.max_bound) << " "
-              << u << " (tolerance " << fmt_sig(r.program.tolerance) << ")\n";
+              << fmt_sig(r.program.max_measured) << ", proven below " << fmt_sig(r.program.max_bound) << " " << u
+              << " (tolerance " << fmt_sig(r.program.tolerance) << ")\n";
   } catch (const Error&) {
     // The job's own warnings count even when the machine refuses it.
     print_warnings(job.warnings);
     throw;
   }
   print_warnings(warnings);
-  std::cout << "ok: " << job.entities.size() << " entit" << (job.entities.size() == 1 ? "y" : "ies") << " valid for machine "
-            << m.name << "\n";
+  std::cout << "ok: " << job.entities.size() << " entit" << (job.entities.size() == 1 ? "y" : "ies")
+            << " valid for machine " << m.name << "\n";
   return 0;
 }
 

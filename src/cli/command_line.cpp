@@ -15,8 +15,9 @@
 namespace bezcam::cli {
 
 CommandLine::CommandLine()
-    : app_("bezcam: exact curves and surfaces (JSON) to CNC programs whose chord error is proven, "
-           "streamed to controllers over Modbus TCP.") {
+    : app_(
+          "bezcam: exact curves and surfaces (JSON) to CNC programs whose chord error is proven, "
+          "streamed to controllers over Modbus TCP.") {
   app_.set_version_flag("--version", std::string("bezcam ") + kVersion);
   app_.require_subcommand(1);
   // --help shows every option's default (timeouts, buffer, retries...).

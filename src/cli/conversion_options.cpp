@@ -6,8 +6,9 @@
 namespace bezcam::cli {
 
 void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string& output_help) {
-  s->add_option("--machine", o.machine, "machine profile: a name in machines/ or a .json file "
-                                        "(default: the job's \"machine\", else generic)");
+  s->add_option("--machine", o.machine,
+                "machine profile: a name in machines/ or a .json file "
+                "(default: the job's \"machine\", else generic)");
   s->add_option("--tolerance", o.tolerance, "chord tolerance in the job's units, overriding the job's")
       ->check(positive_number());
   s->add_option("--output", o.output, output_help)
@@ -21,16 +22,18 @@ void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string
           },
           "lines|arcs|nurbs"))
       ->capture_default_str();
-  s->add_flag("--strict", o.strict, "accepted for scripts that pass it: every unknown key of a job is refused, with "
-                                    "or without it");
+  s->add_flag("--strict", o.strict,
+              "accepted for scripts that pass it: every unknown key of a job is refused, with "
+              "or without it");
   add_drawing_options(s, o);
 }
 
 void add_drawing_options(CLI::App* s, ConversionOptions& o) {
-  s->add_option("--set", o.sets, "a job setting for a drawing (.svg, .dxf), KEY=VALUE, repeatable: any key of the "
-                                 "job file's \"job\" object (feed, cut_z, side, tool_diameter ...) or tolerance, units, "
-                                 "machine; dotted keys nest (tabs.count=4), VALUE is JSON when it reads as JSON "
-                                 "(lead={\"radius\":4}), else text; an unknown key is refused")
+  s->add_option("--set", o.sets,
+                "a job setting for a drawing (.svg, .dxf), KEY=VALUE, repeatable: any key of the "
+                "job file's \"job\" object (feed, cut_z, side, tool_diameter ...) or tolerance, units, "
+                "machine; dotted keys nest (tabs.count=4), VALUE is JSON when it reads as JSON "
+                "(lead={\"radius\":4}), else text; an unknown key is refused")
       ->type_name("KEY=VALUE");
   s->add_option("--layer", o.layers, "a layer of the drawing to cut, repeatable (default: every layer)")
       ->type_name("NAME");

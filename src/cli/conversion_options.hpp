@@ -10,10 +10,10 @@
 namespace bezcam::cli {
 
 struct ConversionOptions {
-  std::string machine;           ///< --machine: a profile name or a .json file; empty: the job's, else generic
-  double tolerance = 0;          ///< --tolerance: overrides the job's when > 0
-  std::string output = "lines";  ///< --output: lines, arcs or nurbs
-  bool strict = false;           ///< --strict: accepted for scripts; every unknown key is refused anyway
+  std::string machine;              ///< --machine: a profile name or a .json file; empty: the job's, else generic
+  double tolerance = 0;             ///< --tolerance: overrides the job's when > 0
+  std::string output = "lines";     ///< --output: lines, arcs or nurbs
+  bool strict = false;              ///< --strict: accepted for scripts; every unknown key is refused anyway
   std::vector<std::string> sets;    ///< --set KEY=VALUE: job settings of a drawing (.svg, .dxf)
   std::vector<std::string> layers;  ///< --layer NAME: the drawing's layers to cut (default all)
 };

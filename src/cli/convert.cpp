@@ -1,12 +1,13 @@
 // bezcam convert JOB.json [-o OUT.nc] [--machine NAME|FILE] [--tolerance T]
 //                [--output lines|arcs|nurbs] [--report FILE.json] [-q]
+#include "bezcam/gcode/convert.hpp"
+
 #include <algorithm>
 #include <iostream>
 
 #include "bezcam/error.hpp"
-#include "bezcam/gcode/convert.hpp"
-#include "bezcam/report/report.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/report/report.hpp"
 #include "commands.hpp"
 #include "job_input.hpp"
 #include "output_file.hpp"
@@ -21,9 +22,10 @@ CLI::App* setup_convert(CLI::App& app, ConvertArgs& o) {
   s->add_option("-o,--output-file", o.out, "program file to write; written whole or not at all");
   add_post_options(s, o.post);
   add_conversion_options(s, o.conv, "cutting moves: lines (G01), arcs (G02/G03) or nurbs (exact blocks)");
-  s->add_option("--report", o.report, "also write a JSON report (per entity: kind, degree, length, blocks, "
-                                      "deviation measured and proven; lengths and estimated time); written only "
-                                      "with the program");
+  s->add_option("--report", o.report,
+                "also write a JSON report (per entity: kind, degree, length, blocks, "
+                "deviation measured and proven; lengths and estimated time); written only "
+                "with the program");
   s->add_flag("--compare-outputs", o.compare,
               "also convert the job in the other output modes the machine takes (lines, arcs, nurbs) and compare "
               "their cycle times on its motion model, in the summary and the report");
@@ -50,7 +52,8 @@ int run_convert(const ConvertArgs& o) {
   // would lose the program.
   if (!o.report.empty() && (o.report == o.out || (o.report == "-" && o.out == "-")))
     throw InputError(errc::usage_report, Place::at_option("--report"),
-                     "the report cannot go to the same place as the program (" + (o.out == "-" ? std::string("standard output") : o.out) +
+                     "the report cannot go to the same place as the program (" +
+                         (o.out == "-" ? std::string("standard output") : o.out) +
                          "); give --report another file name, or write the program with -o FILE");
   const Job job = read_job(o.job, o.conv);
   MachineProfile m = [&] {
@@ -86,14 +89,16 @@ int run_convert(const ConvertArgs& o) {
   if (o.compare) {
     if (!m.motion)
       throw InputError(errc::usage_option, Place::at_option("--compare-outputs"),
-                       "machine \"" + m.name + "\" has no motion model (key \"motion\", docs/machines.md) to compare cycle times with");
+                       "machine \"" + m.name +
+                           "\" has no motion model (key \"motion\", docs/machines.md) to compare cycle times with");
     for (OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
       if (mode == opt.output || !takes(mode)) continue;
       ConvertOptions other = opt;
       other.output = mode;
       other.on_entity = nullptr;
       const ConvertResult r2 = convert_program(job, m, other);
-      const ProgramReport rep2 = write_and_report(r2.program, m, r2.plan ? &*r2.plan : nullptr, [](std::string_view) {});
+      const ProgramReport rep2 =
+          write_and_report(r2.program, m, r2.plan ? &*r2.plan : nullptr, [](std::string_view) {});
       if (!rep2.planned) continue;
       others.push_back(alternative(mode, rep2));
     }
@@ -114,7 +119,8 @@ int run_convert(const ConvertArgs& o) {
     for (const auto& w : r.program.warnings) std::cerr << "bezcam: warning: " << w << "\n";
     if (!r.program.order_summary.empty()) std::cerr << "bezcam: " << r.program.order_summary << "\n";
     std::cerr << report_text(rep);
-    if (o.out != "-") std::cerr << "bezcam: wrote " << o.out << (o.report.empty() || o.report == "-" ? "" : " and " + o.report) << "\n";
+    if (o.out != "-")
+      std::cerr << "bezcam: wrote " << o.out << (o.report.empty() || o.report == "-" ? "" : " and " + o.report) << "\n";
   }
   return 0;
 }

@@ -12,15 +12,17 @@
 namespace bezcam::cli {
 
 CLI::App* setup_import(CLI::App& app, ImportArgs& o) {
-  auto* s = app.add_subcommand("import", "Write the job (JSON) a drawing (.svg, .dxf) is read as: exact curves, "
-                                         "ids from the drawing (stdout when no -o).");
+  auto* s = app.add_subcommand("import",
+                               "Write the job (JSON) a drawing (.svg, .dxf) is read as: exact curves, "
+                               "ids from the drawing (stdout when no -o).");
   s->add_option("DRAWING", o.drawing, "an SVG or DXF drawing")->required();
   s->add_option("-o,--output-file", o.out, "job file to write; written whole or not at all");
   add_drawing_options(s, o.conv);
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
-  s->footer("SVG: path commands and shapes, transforms applied, lengths in mm (96 user units per inch), y up. "
-            "DXF: LINE, ARC, CIRCLE, ELLIPSE, (LW)POLYLINE with bulges, SPLINE, INSERT; $INSUNITS; entities "
-            "meeting end to end are joined into one path. See docs/import.md.");
+  s->footer(
+      "SVG: path commands and shapes, transforms applied, lengths in mm (96 user units per inch), y up. "
+      "DXF: LINE, ARC, CIRCLE, ELLIPSE, (LW)POLYLINE with bulges, SPLINE, INSERT; $INSUNITS; entities "
+      "meeting end to end are joined into one path. See docs/import.md.");
   return s;
 }
 

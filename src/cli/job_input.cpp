@@ -38,22 +38,22 @@ std::pair<std::string, std::string> split_setting(const std::string& kv) {
 }
 }  // namespace
 
-import::ImportOptions import_options(const ConversionOptions& o) {
-  import::ImportOptions io;
-  for (const auto& kv : o.sets) io.settings.push_back(split_setting(kv));
-  // Keys and values checked before the drawing is read: an unknown key is
-  // a mistake on the command line, whatever the drawing holds.
-  (void)settings_json(io.settings);
-  io.layers = o.layers;
-  return io;
-}
+import::ImportOptions import_options(const ConversionOptions& o){import::ImportOptions io;
+for (const auto& kv : o.sets) io.settings.push_back(split_setting(kv));
+// Keys and values checked before the drawing is read: an unknown key is
+// a mistake on the command line, whatever the drawing holds.
+(void)settings_json(io.settings);
+io.layers = o.layers;
+return io;
+}  // namespace bezcam::cli
 
 Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing) {
   if (!import::is_drawing(path)) {
     if (!o.sets.empty() || !o.layers.empty())
       throw InputError(errc::import_setting, Place::at_option(o.sets.empty() ? "--layer" : "--set"),
-                       path + " is a job file, which states its own settings and has no layers; --set and --layer "
-                              "apply to drawings (.svg, .dxf)");
+                       path +
+                           " is a job file, which states its own settings and has no layers; --set and --layer "
+                           "apply to drawings (.svg, .dxf)");
     return read_job(path);
   }
   const import::ImportOptions io = import_options(o);

@@ -8,6 +8,4 @@
 
 #include "command_line.hpp"
 
-int main(int argc, char** argv) {
-  return bezcam::cli::run_command_line(std::vector<std::string>(argv, argv + argc));
-}
+int main(int argc, char** argv) { return bezcam::cli::run_command_line(std::vector<std::string>(argv, argv + argc)); }

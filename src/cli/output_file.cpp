@@ -2,15 +2,13 @@
 // symbolic links, devices and FIFOs, or to standard output.
 #include "output_file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <sys/stat.h>
-
 #include <cerrno>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <iostream>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "bezcam/error.hpp"
 
@@ -116,10 +114,12 @@ void write_output(const std::string& path, const OutputProducer& produce) {
   if (path == "-" || path.empty()) {
     produce([](std::string_view piece) {
       std::cout.write(piece.data(), static_cast<std::streamsize>(piece.size()));
-      if (!std::cout) throw IoError(errc::io_write, Place::at_file("stdout"), "cannot write the program to standard output");
+      if (!std::cout)
+        throw IoError(errc::io_write, Place::at_file("stdout"), "cannot write the program to standard output");
     });
     std::cout.flush();
-    if (!std::cout) throw IoError(errc::io_write, Place::at_file("stdout"), "cannot write the program to standard output");
+    if (!std::cout)
+      throw IoError(errc::io_write, Place::at_file("stdout"), "cannot write the program to standard output");
     return;
   }
   const std::filesystem::path target = resolve_links(path);
@@ -129,9 +129,12 @@ void write_output(const std::string& path, const OutputProducer& produce) {
     replace_regular(path, target, nullptr, produce);
     return;
   }
-  if (S_ISDIR(st.st_mode)) throw IoError(errc::io_write, Place::at_file(path), "is a directory; give a file name for the output");
-  if (S_ISREG(st.st_mode)) replace_regular(path, target, &st, produce);
-  else write_through(path, target, produce);
+  if (S_ISDIR(st.st_mode))
+    throw IoError(errc::io_write, Place::at_file(path), "is a directory; give a file name for the output");
+  if (S_ISREG(st.st_mode))
+    replace_regular(path, target, &st, produce);
+  else
+    write_through(path, target, produce);
 }
 
 void write_output(const std::string& path, const std::string& data) {

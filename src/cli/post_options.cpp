@@ -23,24 +23,28 @@ void add_post_options(CLI::App* s, PostOptions& o) {
                 "lines at the end, replacing the profile's footer (a closing % is kept); {safe_z} and {program} "
                 "are replaced")
       ->group(g);
-  s->add_option("--precision", o.precision, "coordinate decimals, replacing the profile's (the proven bound "
-                                            "includes their rounding)")
+  s->add_option("--precision", o.precision,
+                "coordinate decimals, replacing the profile's (the proven bound "
+                "includes their rounding)")
       ->check(CLI::Range(0, 9))
       ->default_str("")
       ->group(g);
   s->add_flag("--no-comments", o.no_comments, "no comments in the program (an M00's message to the operator stays)")
       ->group(g);
-  s->add_flag("--modal", o.modal, "no repeated words in NURBS blocks (a G06.2 point omits Z and R equal to the "
-                                  "previous point's or 1)")
+  s->add_flag("--modal", o.modal,
+              "no repeated words in NURBS blocks (a G06.2 point omits Z and R equal to the "
+              "previous point's or 1)")
       ->group(g);
   s->add_option("--return-to", o.return_to, "X,Y,Z where the tool goes at the end (across at safe Z, then down)")
       ->group(g);
-  s->add_option("--origin", o.origin, "the drawing's point that becomes program zero: X,Y, lower-left or center "
-                                      "(of the job's extent)")
+  s->add_option("--origin", o.origin,
+                "the drawing's point that becomes program zero: X,Y, lower-left or center "
+                "(of the job's extent)")
       ->group(g);
   s->add_option("--offset", o.offset, "X,Y added to every coordinate (moves the part)")->group(g);
-  s->add_option("--program-number", o.program_number, "program number (Fanuc O word; a comment elsewhere), "
-                                                      "replacing the job's")
+  s->add_option("--program-number", o.program_number,
+                "program number (Fanuc O word; a comment elsewhere), "
+                "replacing the job's")
       ->check(CLI::Range(1L, 99999999L))
       ->default_str("")
       ->group(g);
@@ -49,8 +53,7 @@ void add_post_options(CLI::App* s, PostOptions& o) {
 
 namespace {
 
-std::vector<double> numbers_option(const std::string& text, size_t count, const char* option,
-                                          const char* form) {
+std::vector<double> numbers_option(const std::string& text, size_t count, const char* option, const char* form) {
   std::vector<double> v;
   size_t at = 0;
   while (at <= text.size()) {
@@ -123,8 +126,10 @@ void apply_post_options(const PostOptions& o, const Job& job, MachineProfile& m,
     if (o.origin == "lower-left" || o.origin == "center") {
       Box3 b;
       for (const Entity& e : job.entities) {
-        if (e.surface) b.add(bounds(*e.surface));
-        else if (!e.curve.pieces.empty()) b.add(e.curve.bounds());
+        if (e.surface)
+          b.add(bounds(*e.surface));
+        else if (!e.curve.pieces.empty())
+          b.add(e.curve.bounds());
       }
       if (b.lo.x > b.hi.x)
         throw InputError(errc::usage_option, Place::at_option("--origin"),

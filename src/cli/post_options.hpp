@@ -17,9 +17,9 @@ struct PostOptions {
   std::string preamble, postamble;  ///< replace the profile's (lines split at "\n")
   int precision = -1;               ///< coordinate decimals; -1: the profile's
   bool no_comments = false, modal = false;
-  std::string return_to;            ///< "X,Y,Z"
-  std::string origin, offset;       ///< "X,Y" (origin also lower-left, center)
-  long program_number = 0;          ///< 0: the job's or the profile's
+  std::string return_to;       ///< "X,Y,Z"
+  std::string origin, offset;  ///< "X,Y" (origin also lower-left, center)
+  long program_number = 0;     ///< 0: the job's or the profile's
 };
 
 /// Adds the options above to `s`, in the help group "Program".

@@ -5,27 +5,26 @@
 // `convert` would write with the same options, or the motion of any G-code
 // program the reader understands (top view, plus an isometric view for 3D
 // work), as a self-contained SVG file.
-#include <filesystem>
-#include <fstream>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
-
-#include "bezcam/cam/program_motion.hpp"
-#include "bezcam/kernel/surface.hpp"
 #include <optional>
 #include <sstream>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
-#include "bezcam/gcode/timeline.hpp"
-#include "bezcam/report/motion_report.hpp"
-#include "bezcam/limits.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
+#include "bezcam/gcode/timeline.hpp"
+#include "bezcam/job/job_json.hpp"
+#include "bezcam/kernel/surface.hpp"
+#include "bezcam/limits.hpp"
+#include "bezcam/report/motion_report.hpp"
 #include "bezcam/report/preview_svg.hpp"
 #include "bezcam/report/report.hpp"
-#include "bezcam/job/job_json.hpp"
 #include "commands.hpp"
 #include "job_input.hpp"
 #include "output_file.hpp"
@@ -35,8 +34,9 @@
 namespace bezcam::cli {
 
 CLI::App* setup_preview(CLI::App& app, PreviewArgs& o) {
-  auto* s = app.add_subcommand("preview", "Draw a job's curves, control polygons and tool path as an SVG file "
-                                          "(top view; isometric view too for 3D work).");
+  auto* s = app.add_subcommand("preview",
+                               "Draw a job's curves, control polygons and tool path as an SVG file "
+                               "(top view; isometric view too for 3D work).");
   s->add_option("JOB", o.job, "job file (JSON, curve-file format version 1); optional with --program");
   s->add_option("--program", o.program,
                 "draw this G-code program instead of building one (with JOB: against the job's curves)");
@@ -59,7 +59,8 @@ CLI::App* setup_preview(CLI::App& app, PreviewArgs& o) {
 namespace {
 
 std::string read_text(const std::string& path, const char* what) {
-  if (std::filesystem::is_directory(path)) throw IoError(errc::io_read, Place::at_file(path), std::string("is a directory, not a ") + what);
+  if (std::filesystem::is_directory(path))
+    throw IoError(errc::io_read, Place::at_file(path), std::string("is a directory, not a ") + what);
   return read_bounded(path, kMaxProgramBytes, what);  // refused before it is read when too large (limits.hpp)
 }
 
@@ -68,16 +69,17 @@ std::string read_text(const std::string& path, const char* what) {
 // caller keeps it (set again by the caller's copy).
 MotionPlan feed_plan(const MachineProfile& m, const Timeline& tl, PreviewInput& in) {
   if (!m.motion)
-    throw InputError(errc::usage_option, Place::at_option("--feed"),
-                     "machine \"" + m.name + "\" has no motion model (key \"motion\", docs/machines.md) to plan the feed with");
+    throw InputError(
+        errc::usage_option, Place::at_option("--feed"),
+        "machine \"" + m.name + "\" has no motion model (key \"motion\", docs/machines.md) to plan the feed with");
   MotionPlan plan = plan_motion(tl, *m.motion);
   in.machine = m.name;
   char b[200];
   std::snprintf(b, sizeof b, "; mean feed %.0f %% of programmed; %zu starved block%s", plan.mean_feed_ratio * 100,
                 plan.starved_blocks, plan.starved_blocks == 1 ? "" : "s");
-  in.notes.push_back("planned on the motion model of machine " + m.name + ": cycle " + format_seconds(plan.cycle_time_s) +
-                     " (cutting " + format_seconds(plan.cutting_time_s) + ", rapids " + format_seconds(plan.rapid_time_s) +
-                     ")" + b);
+  in.notes.push_back("planned on the motion model of machine " + m.name + ": cycle " +
+                     format_seconds(plan.cycle_time_s) + " (cutting " + format_seconds(plan.cutting_time_s) +
+                     ", rapids " + format_seconds(plan.rapid_time_s) + ")" + b);
   return plan;
 }
 
@@ -94,7 +96,8 @@ int run_program(const PreviewArgs& o) {
   // The machine, when named, is checked by lint (its findings are shown,
   // not fatal: seeing the path helps to fix it) and gives the rapid rate.
   const bool named = !o.conv.machine.empty() || (job && job->machine);
-  MachineProfile m = job ? resolve_profile(*job, o.conv.machine) : load_profile_option(o.conv.machine.empty() ? "generic" : o.conv.machine);
+  MachineProfile m = job ? resolve_profile(*job, o.conv.machine)
+                         : load_profile_option(o.conv.machine.empty() ? "generic" : o.conv.machine);
   apply_tool_diameters(m, o.tool_diameters);
   Progress progress("preview", "bytes", text.size(), progress_config(o.quiet));
   GcodeInterpreter reader;
@@ -116,8 +119,9 @@ int run_program(const PreviewArgs& o) {
     Place at = e.place();
     at.file = o.program;
     throw InputError(e.id(), std::move(at),
-                     e.message() + "; the preview draws only programs the reader accepts (bezcam lint lists every "
-                                   "finding)");
+                     e.message() +
+                         "; the preview draws only programs the reader accepts (bezcam lint lists every "
+                         "finding)");
   }
   progress.finish();
   in.units = reader.state().units;
@@ -136,8 +140,10 @@ int run_program(const PreviewArgs& o) {
     // for another job) would be drawn beside it and measured as wrong.
     Box3 jb, pb;
     for (const Entity& e : job->entities) {
-      if (e.surface) jb.add(bounds(*e.surface));
-      else if (!e.curve.pieces.empty()) jb.add(e.curve.bounds());
+      if (e.surface)
+        jb.add(bounds(*e.surface));
+      else if (!e.curve.pieces.empty())
+        jb.add(e.curve.bounds());
     }
     for (const auto& tm : in.motion)
       if (is_feed(tm)) pb.add(tm.to);
@@ -188,7 +194,10 @@ int run_program(const PreviewArgs& o) {
   write_output(o.out, svg);
   if (!o.quiet)
     std::cerr << "bezcam: wrote " << o.out << ": " << in.motion.size() << " motion blocks from " << o.program
-              << (o.deviation ? ", coloured by deviation" : o.feed ? ", coloured by feed" : "") << "\n";
+              << (o.deviation ? ", coloured by deviation"
+                  : o.feed    ? ", coloured by feed"
+                              : "")
+              << "\n";
   return 0;
 }
 
@@ -225,11 +234,11 @@ int run_preview(const PreviewArgs& o) {
   add_part_cutting(in, p, job.entities.size());  // tool widths, material left
   in.title = "bezcam preview: " + job.source;
   const char* u = to_string(p.units);
-  in.notes.push_back("machine " + m.name + ", output " + to_string(p.output) + ", tolerance " +
-                     format_significant(p.tolerance, 6) + " " + u + " (largest deviation measured " +
-                     measured_text(p.max_measured, p.max_bound, p.tolerance, [](double v) { return format_significant(v, 3); }) +
-                     " " + u + ", proven bound " +
-                     format_significant(p.max_bound, 3) + " " + u + ")");
+  in.notes.push_back(
+      "machine " + m.name + ", output " + to_string(p.output) + ", tolerance " + format_significant(p.tolerance, 6) +
+      " " + u + " (largest deviation measured " +
+      measured_text(p.max_measured, p.max_bound, p.tolerance, [](double v) { return format_significant(v, 3); }) + " " +
+      u + ", proven bound " + format_significant(p.max_bound, 3) + " " + u + ")");
   const ProgramReport rep = make_report(p, m);
   size_t blocks = 0;
   for (const auto& e : p.entities) blocks += e.blocks;
@@ -269,7 +278,10 @@ int run_preview(const PreviewArgs& o) {
     for (const auto& w : p.warnings) std::cerr << "bezcam: warning: " << w << "\n";
     std::cerr << "bezcam: wrote " << o.out << ": " << n << (n == 1 ? " entity, " : " entities, ") << blocks
               << " cutting blocks for machine " << m.name
-              << (o.deviation ? ", coloured by deviation" : o.feed ? ", coloured by feed" : "") << "\n";
+              << (o.deviation ? ", coloured by deviation"
+                  : o.feed    ? ", coloured by feed"
+                              : "")
+              << "\n";
   }
   return 0;
 }

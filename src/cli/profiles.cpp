@@ -64,8 +64,9 @@ void apply_tool_diameters(MachineProfile& m, const std::vector<std::string>& val
       ok = ok && !rhs.empty() && *end == '\0' && mm >= 0 && mm < 1e4;
     }
     if (!ok)
-      throw InputError(errc::usage_option, Place::at_option("--tool-diameter"),
-                       "expected D=DIAMETER_MM (a register 0 to 99999 and a diameter from 0 to 10000 mm), found \"" + v + "\"");
+      throw InputError(
+          errc::usage_option, Place::at_option("--tool-diameter"),
+          "expected D=DIAMETER_MM (a register 0 to 99999 and a diameter from 0 to 10000 mm), found \"" + v + "\"");
     m.tool_diameters_mm[d] = mm;
   }
 }

@@ -1,13 +1,12 @@
 #include "progress.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <unistd.h>
 
 namespace bezcam::cli {
 
@@ -69,9 +68,12 @@ ProgressConfig progress_config(bool quiet) {
   c.style = quiet ? ProgressStyle::off : (stderr_is_tty() ? ProgressStyle::bar : ProgressStyle::lines);
   if (const char* s = std::getenv("BEZCAM_PROGRESS"); s && !quiet) {
     const std::string v = s;
-    if (v == "bar") c.style = ProgressStyle::bar;
-    else if (v == "lines") c.style = ProgressStyle::lines;
-    else if (v == "off") c.style = ProgressStyle::off;
+    if (v == "bar")
+      c.style = ProgressStyle::bar;
+    else if (v == "lines")
+      c.style = ProgressStyle::lines;
+    else if (v == "off")
+      c.style = ProgressStyle::off;
   }
   if (const char* s = std::getenv("BEZCAM_PROGRESS_DELAY"); s && *s) {
     char* end = nullptr;
@@ -201,8 +203,10 @@ std::string Progress::render(bool final_line) const {
   std::string tail = "  " + counts;
   if (!pct.empty()) tail += "  " + pct;
   if (!rate_s.empty()) tail += "  " + rate_s;
-  if (final_line) tail += "  in " + format_duration(elapsed);
-  else if (eta_known) tail += "  " + format_clock(eta) + " left";
+  if (final_line)
+    tail += "  in " + format_duration(elapsed);
+  else if (eta_known)
+    tail += "  " + format_clock(eta) + " left";
   const size_t width = static_cast<size_t>(std::max(20, cfg_.width)) - 1;  // never touch the last column
   std::string s = task_;
   if (total_ > 0) {

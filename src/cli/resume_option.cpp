@@ -9,12 +9,15 @@
 namespace bezcam::cli {
 
 void add_resume_options(CLI::App* cmd, ResumeArgs& r) {
-  auto* from = cmd->add_option("--from-line", r.from_line,
-                  "resume the program at this line (1-based): from the nearest line at or before it where a cut may "
-                  "begin, after a preamble that restores the modal state there, retracts, moves over and plunges")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--safe-z", r.safe_z, "with --from-line: the height (mm) the preamble retracts to (default: the "
-                                       "profile's safe_z)")
+  auto* from =
+      cmd->add_option(
+             "--from-line", r.from_line,
+             "resume the program at this line (1-based): from the nearest line at or before it where a cut may "
+             "begin, after a preamble that restores the modal state there, retracts, moves over and plunges")
+          ->check(CLI::PositiveNumber);
+  cmd->add_option("--safe-z", r.safe_z,
+                  "with --from-line: the height (mm) the preamble retracts to (default: the "
+                  "profile's safe_z)")
       ->needs(from);
   cmd->add_option("--plunge-feed", r.plunge_feed,
                   "with --from-line: the feed (mm/min) the preamble plunges at (default: the profile's plunge_feed)")
@@ -22,8 +25,8 @@ void add_resume_options(CLI::App* cmd, ResumeArgs& r) {
       ->needs(from);
 }
 
-std::string Resume::apply(std::string program, const std::string& file, const MachineProfile* profile,
-                           bool quiet, const std::string& who) {
+std::string Resume::apply(std::string program, const std::string& file, const MachineProfile* profile, bool quiet,
+                          const std::string& who) {
   if (!active()) return program;  // --safe-z and --plunge-feed need --from-line (add_resume_options())
   file_ = file;
   try {
@@ -40,9 +43,10 @@ std::string Resume::apply(std::string program, const std::string& file, const Ma
     std::cerr << "bezcam: " << who << ": resuming " << file << " at line " << r.start_line;
     if (!r.reason.empty()) std::cerr << ", not " << r.asked_line << " as asked: " << r.reason;
     std::cerr << "\nbezcam: " << who << ": a " << r.preamble_lines << "-line preamble restores the modal state of line "
-              << r.start_line << ", retracts to Z" << fmt_num(r.safe_z) << ", moves over the resume point and plunges at F"
-              << fmt_num(r.plunge_feed) << "; the controller numbers the resumed program's lines from 1: line "
-              << r.preamble_lines + 1 << " is line " << r.start_line << " of " << file << " (add " << r.line_offset()
+              << r.start_line << ", retracts to Z" << fmt_num(r.safe_z)
+              << ", moves over the resume point and plunges at F" << fmt_num(r.plunge_feed)
+              << "; the controller numbers the resumed program's lines from 1: line " << r.preamble_lines + 1
+              << " is line " << r.start_line << " of " << file << " (add " << r.line_offset()
               << " to the line numbers after " << r.preamble_lines << ")\n";
   }
   return r.program;

@@ -6,23 +6,22 @@
 // it cleanly: the executor finishes the line in progress (at machine pace
 // the machine stops where it is) and the trace is flushed before the
 // process exits.
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <iostream>
 #include <pthread.h>
 #include <signal.h>
-
-#include <cstdio>
-#include <fstream>
-#include <ctime>
-#include <iostream>
 #include <sstream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/gcode/timeline.hpp"
 #include "bezcam/limits.hpp"
+#include "bezcam/link/transport.hpp"
+#include "bezcam/report/motion_report.hpp"
 #include "bezcam/sim/sim_controller.hpp"
 #include "bezcam/sim/sim_server.hpp"
 #include "bezcam/sim/trace.hpp"
-#include "bezcam/gcode/timeline.hpp"
-#include "bezcam/report/motion_report.hpp"
-#include "bezcam/link/transport.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
 #include "output_file.hpp"
@@ -55,20 +54,23 @@ using namespace bezcam::link;
 using namespace bezcam::sim;
 
 CLI::App* setup_simulate(CLI::App& app, SimulateArgs& o) {
-  auto* s = app.add_subcommand("simulate", "Run the simulated controller: a Modbus TCP server that accepts programs "
-                                           "(--listen) or a program file executed directly (--program).");
+  auto* s = app.add_subcommand("simulate",
+                               "Run the simulated controller: a Modbus TCP server that accepts programs "
+                               "(--listen) or a program file executed directly (--program).");
   auto* l = s->add_option("--listen", o.listen, "HOST:PORT to listen on (port 0: a free port, printed on stdout)");
   auto* p = s->add_option("--program", o.program, "G-code file to execute directly, no network");
   l->excludes(p);
   p->excludes(l);
   add_resume_options(s, o.resume);
   l->excludes("--from-line");
-  s->add_option("--machine", o.machine, "machine profile: travel limits, maximum feed and motion model (default generic)");
+  s->add_option("--machine", o.machine,
+                "machine profile: travel limits, maximum feed and motion model (default generic)");
   add_tool_diameter_option(s, o.tool_diameters);
   auto* rep = s->add_option("--report", o.report,
                             "with --program: plan the motion on the machine's motion model and write its report "
                             "(cycle time, achieved feed, starved blocks, path deviation, per block) as JSON");
-  auto* mot = s->add_option("--motion", o.motion, "with --program: write the planned motion, one row per period: t x y z feed (TSV)");
+  auto* mot = s->add_option("--motion", o.motion,
+                            "with --program: write the planned motion, one row per period: t x y z feed (TSV)");
   rep->needs(p);
   mot->needs(p);
   s->add_option("--trace", o.trace, "write the trace here (\"-\" for stdout); restarted for each program");
@@ -90,7 +92,8 @@ CLI::App* setup_simulate(CLI::App& app, SimulateArgs& o) {
                 "write, before or after applying it; corrupt:N alters a digit of the N-th chunk once it is "
                 "accepted (repeatable)");
   s->add_option("--session-base", o.session_base, "first session id (tests and documentation; default random)");
-  s->add_flag("-q,--quiet", o.quiet, "print nothing but the listening line and errors (no log of connections, programs and alarms)");
+  s->add_flag("-q,--quiet", o.quiet,
+              "print nothing but the listening line and errors (no log of connections, programs and alarms)");
   return s;
 }
 
@@ -134,7 +137,8 @@ std::vector<std::uint64_t> parse_faults(const std::vector<std::string>& faults, 
     try {
       n = std::stoull(colon == std::string::npos ? "" : f.substr(colon + 1));
     } catch (const std::exception&) {
-      throw InputError(errc::sim_fault, Place::at_option(f), "expected a chunk count after the colon, such as drop-after:5");
+      throw InputError(errc::sim_fault, Place::at_option(f),
+                       "expected a chunk count after the colon, such as drop-after:5");
     }
     if (k == kind) out.push_back(n);
   }
@@ -214,12 +218,14 @@ int run_simulate(const SimulateArgs& o) {
         k = -1;
       }
       if (!(k >= 0.01 && k <= 100000))
-        throw InputError(errc::usage_option, Place::at_option("--time-scale"),
-                         "expected a multiple of real time from 0.01 to 100000, or max; found \"" + o.time_scale + "\"");
+        throw InputError(
+            errc::usage_option, Place::at_option("--time-scale"),
+            "expected a multiple of real time from 0.01 to 100000, or max; found \"" + o.time_scale + "\"");
       if (!cfg.profile.motion)
         throw InputError(errc::sim_no_motion_model, Place::at_option("--machine"),
-                         "machine \"" + cfg.profile.name + "\" has no motion model (key \"motion\", docs/machines.md) to "
-                         "execute at machine pace; add one, or give --time-scale max");
+                         "machine \"" + cfg.profile.name +
+                             "\" has no motion model (key \"motion\", docs/machines.md) to "
+                             "execute at machine pace; add one, or give --time-scale max");
       cfg.time_scale = k;
     }
   }
@@ -244,13 +250,16 @@ int run_simulate(const SimulateArgs& o) {
   const MachineProfile profile = cfg.profile;
   if ((!o.report.empty() || !o.motion.empty()) && !profile.motion)
     throw InputError(errc::sim_no_motion_model, Place::at_option("--machine"),
-                     "machine \"" + profile.name + "\" has no motion model (key \"motion\", docs/machines.md): "
-                     "add one to plan its motion");
+                     "machine \"" + profile.name +
+                         "\" has no motion model (key \"motion\", docs/machines.md): "
+                         "add one to plan its motion");
   if (!o.report.empty() && o.report == o.motion)
-    throw InputError(errc::usage_report, Place::at_option("--report"), "the report and the motion samples cannot go to the same file");
+    throw InputError(errc::usage_report, Place::at_option("--report"),
+                     "the report and the motion samples cannot go to the same file");
   Resume resume(o.resume);
-  const std::string program =
-      o.program.empty() ? std::string() : resume.apply(read_file(o.program), o.program, &cfg.profile, o.quiet, "simulate");
+  const std::string program = o.program.empty()
+                                  ? std::string()
+                                  : resume.apply(read_file(o.program), o.program, &cfg.profile, o.quiet, "simulate");
   SignalWaiter signals;  // before any thread exists, so that all inherit the mask
   SimController ctl(std::move(cfg));
 
@@ -289,19 +298,20 @@ int run_simulate(const SimulateArgs& o) {
   ModbusServer server(ctl, scfg);
   signals.start([&server] { server.stop(); });
   // The readiness line: tests and scripts wait for it (never a sleep).
-  std::cout << "bezcam simulate: listening on " << Endpoint{ep.host, server.port()}.str() << " (machine "
-            << o.machine << ", buffer " << o.buffer << " bytes, at most " << o.max_connections << " connections, "
+  std::cout << "bezcam simulate: listening on " << Endpoint{ep.host, server.port()}.str() << " (machine " << o.machine
+            << ", buffer " << o.buffer << " bytes, at most " << o.max_connections << " connections, "
             << (o.time_scale == "max" ? std::string("as fast as possible")
-                                      : o.time_scale == "1" ? std::string("real time")
-                                                            : o.time_scale + " x real time")
+                : o.time_scale == "1" ? std::string("real time")
+                                      : o.time_scale + " x real time")
             << ")" << std::endl;
   server.run();
   signals.finish();
   ctl.stop();  // the trace is flushed, up to the last line the machine finished
   if (!o.quiet) {
     const Status st = ctl.status();
-    std::cerr << "bezcam: simulate: stopped" << (signals.signal() ? " by signal " + std::to_string(signals.signal()) : "")
-              << "; last program " << to_string(st.state) << ", " << st.lines_executed << " lines executed\n";
+    std::cerr << "bezcam: simulate: stopped"
+              << (signals.signal() ? " by signal " + std::to_string(signals.signal()) : "") << "; last program "
+              << to_string(st.state) << ", " << st.lines_executed << " lines executed\n";
   }
   return 0;
 }

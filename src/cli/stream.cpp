@@ -9,18 +9,17 @@
 // refused or lost the program.
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
 
-#include <csignal>
-
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/lint.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/link/streamer.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
 #include "profiles.hpp"
@@ -32,12 +31,14 @@ namespace bezcam::cli {
 using namespace bezcam::link;
 
 CLI::App* setup_stream(CLI::App& app, StreamArgs& o) {
-  auto* s = app.add_subcommand("stream", "Send a G-code program to a controller over Modbus TCP, with progress; "
-                                         "succeeds only when the controller confirms the CRC-32 and has executed it.");
+  auto* s = app.add_subcommand("stream",
+                               "Send a G-code program to a controller over Modbus TCP, with progress; "
+                               "succeeds only when the controller confirms the CRC-32 and has executed it.");
   s->add_option("FILE", o.file, "G-code program (not with --abort)");
   s->add_option("--to", o.to, "controller address HOST:PORT")->required();
-  s->add_flag("--abort", o.abort, "stop the transfer the controller holds, whoever sent it (the operator's stop: "
-                                  "alarm \"aborted\", spindle off), and print its state");
+  s->add_flag("--abort", o.abort,
+              "stop the transfer the controller holds, whoever sent it (the operator's stop: "
+              "alarm \"aborted\", spindle off), and print its state");
   s->add_flag("--no-preflight", o.no_preflight,
               "send without first linting the program against the profile the controller enforces");
   s->add_option("--timeout", o.timeout, "seconds to wait for each reply before taking the connection as lost")
@@ -55,16 +56,17 @@ CLI::App* setup_stream(CLI::App& app, StreamArgs& o) {
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   add_resume_options(s, o.resume);
   s->get_option("--abort")->excludes("--from-line");
-  s->footer("Ctrl-C (or SIGTERM) stops the controller at once: the sender sends ABORT and says what was "
-            "acknowledged and executed (exit 130).\n"
-            "Before sending, the program is linted against the profile the controller enforces (its name is in "
-            "the controller's registers); findings refuse it (exit 2) unless --no-preflight.\n"
-            "With --from-line N the program is resumed part-way (docs/resume.md): from the nearest line at or "
-            "before N where a cut may begin, after a preamble built for the profile the controller enforces.\n\n"
-            "Examples:\n"
-            "  bezcam stream part.nc --to 127.0.0.1:5020\n"
-            "  bezcam stream part.nc --to 127.0.0.1:5020 --from-line 120\n"
-            "  bezcam stream --abort --to 192.168.0.10:502");
+  s->footer(
+      "Ctrl-C (or SIGTERM) stops the controller at once: the sender sends ABORT and says what was "
+      "acknowledged and executed (exit 130).\n"
+      "Before sending, the program is linted against the profile the controller enforces (its name is in "
+      "the controller's registers); findings refuse it (exit 2) unless --no-preflight.\n"
+      "With --from-line N the program is resumed part-way (docs/resume.md): from the nearest line at or "
+      "before N where a cut may begin, after a preamble built for the profile the controller enforces.\n\n"
+      "Examples:\n"
+      "  bezcam stream part.nc --to 127.0.0.1:5020\n"
+      "  bezcam stream part.nc --to 127.0.0.1:5020 --from-line 120\n"
+      "  bezcam stream --abort --to 192.168.0.10:502");
   return s;
 }
 
@@ -72,9 +74,12 @@ namespace {
 
 std::string human_bytes(double b) {
   char buf[32];
-  if (b < 1024) std::snprintf(buf, sizeof buf, "%.0f B", b);
-  else if (b < 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f KiB", b / 1024);
-  else std::snprintf(buf, sizeof buf, "%.1f MiB", b / (1024 * 1024));
+  if (b < 1024)
+    std::snprintf(buf, sizeof buf, "%.0f B", b);
+  else if (b < 1024 * 1024)
+    std::snprintf(buf, sizeof buf, "%.1f KiB", b / 1024);
+  else
+    std::snprintf(buf, sizeof buf, "%.1f MiB", b / (1024 * 1024));
   return buf;
 }
 
@@ -208,11 +213,11 @@ void Sender::preflight(const std::string& program, const Endpoint& to) const {
   for (size_t i = 0; i < findings.size() && i < 10; ++i)
     list += "\n  " + finding_place(findings[i].line) + ": " + findings[i].message + " [" + findings[i].id + "]";
   if (findings.size() > 10) list += "\n  ... and " + std::to_string(findings.size() - 10) + " more";
-  throw InputError(errc::link_preflight, Place::at_file(o.file),
-                   std::to_string(findings.size()) + " finding" + (findings.size() == 1 ? "" : "s") +
-                       " for machine \"" + m.name + "\", the profile the controller at " + to.str() +
-                       " enforces; it would stop the program mid-cut. Nothing was sent (--no-preflight sends anyway):" +
-                       list);
+  throw InputError(
+      errc::link_preflight, Place::at_file(o.file),
+      std::to_string(findings.size()) + " finding" + (findings.size() == 1 ? "" : "s") + " for machine \"" + m.name +
+          "\", the profile the controller at " + to.str() +
+          " enforces; it would stop the program mid-cut. Nothing was sent (--no-preflight sends anyway):" + list);
 }
 
 // The profile a controller enforces, when it is known here.
@@ -312,14 +317,17 @@ int Sender::run() {
     print_controller(after, to);
     return 0;
   }
-  if (o.file.empty()) throw InputError(errc::usage_stream, Place::at_option("FILE"), "give the program to send (or --abort)");
+  if (o.file.empty())
+    throw InputError(errc::usage_stream, Place::at_option("FILE"), "give the program to send (or --abort)");
   const std::string file_text = read_file(o.file);
   std::string program = file_text;
   if (resume.active()) program = resume_for_controller(std::move(program), to);
   if (!o.no_preflight) preflight(program, to);
   Display::Style style = Display::Style::lines;
-  if (o.quiet || o.progress == "off") style = Display::Style::off;
-  else if (o.progress == "bar" || (o.progress == "auto" && stderr_is_tty())) style = Display::Style::bar;
+  if (o.quiet || o.progress == "off")
+    style = Display::Style::off;
+  else if (o.progress == "bar" || (o.progress == "auto" && stderr_is_tty()))
+    style = Display::Style::bar;
   Display display(style);
 
   StreamOptions opt;
@@ -362,11 +370,11 @@ int Sender::run() {
               << (resume.plan() ? " from line " + std::to_string(resume.plan()->start_line) + " with a " +
                                       std::to_string(resume.plan()->preamble_lines) + "-line preamble"
                                 : std::string())
-              << " (" << r.bytes << " bytes, " << r.lines << " lines, "
-              << r.chunks << " chunks) to " << to.str() << " in " << rate << "; the controller confirmed CRC-32 "
-              << crc << " and executed " << r.lines_executed << " lines (" << r.blocks_executed << " motion blocks)"
-              << (r.reconnects ? "; " + std::to_string(r.reconnects) + " reconnections" : std::string())
-              << "; starved " << r.starved_ms << " ms"
+              << " (" << r.bytes << " bytes, " << r.lines << " lines, " << r.chunks << " chunks) to " << to.str()
+              << " in " << rate << "; the controller confirmed CRC-32 " << crc << " and executed " << r.lines_executed
+              << " lines (" << r.blocks_executed << " motion blocks)"
+              << (r.reconnects ? "; " + std::to_string(r.reconnects) + " reconnections" : std::string()) << "; starved "
+              << r.starved_ms << " ms"
               << (r.stalls ? " (" + std::to_string(r.stalls) + (r.stalls == 1 ? " stall)" : " stalls)") : std::string())
               << "\n";
   }

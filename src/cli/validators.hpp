@@ -14,7 +14,8 @@ inline CLI::Validator positive_number() {
       [](std::string& s) -> std::string {
         char* end = nullptr;
         const double v = std::strtod(s.c_str(), &end);
-        if (end == s.c_str() || *end != '\0' || !(v > 0) || !std::isfinite(v)) return "expected a number > 0, found " + s;
+        if (end == s.c_str() || *end != '\0' || !(v > 0) || !std::isfinite(v))
+          return "expected a number > 0, found " + s;
         return {};
       },
       "NUMBER > 0");

@@ -6,9 +6,9 @@
 #include <limits>
 #include <numbers>
 #include <optional>
-#include <tuple>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
@@ -322,7 +322,8 @@ std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, do
   double lo = std::clamp(0.6 * std::abs(b3), bmin, bmax), hi = std::clamp(1.4 * std::abs(b3), bmin, bmax);
   if (!(hi > lo)) return std::nullopt;
   {
-    const auto g = flatten_detail::golden_section(lo, hi, [&](double x) { return misfit(sgn * x); }, 40, 1e-12 * L);
+    const auto g = flatten_detail::golden_section(
+        lo, hi, [&](double x) { return misfit(sgn * x); }, 40, 1e-12 * L);
     lo = g.a;
     hi = g.b;
   }
@@ -526,8 +527,13 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
           // Report a tight bound, not merely the accepted one.
           const double tight = span_deviation(b, t0, found_t1, found->arc, -1, 1e-4 * tol, opt.helical);
           const double B = std::hypot(std::min(found->bound_xy, tight), dz);
-          best = {found->arc.ccw ? FitKind::arc_ccw : FitKind::arc_cw, found->arc.to, found->arc.center, found->ij,
-                  pi, found_t1, B};
+          best = {found->arc.ccw ? FitKind::arc_ccw : FitKind::arc_cw,
+                  found->arc.to,
+                  found->arc.center,
+                  found->ij,
+                  pi,
+                  found_t1,
+                  B};
           best.center.z = opt.helical ? Sr.z : best.to.z;
           bestE = foundE;
         }

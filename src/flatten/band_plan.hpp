@@ -61,7 +61,6 @@ inline double cbrt_estimate(double x) {
   return (2 * y + x / (y * y)) * (1.0 / 3);
 }
 
-
 // Where a planar polynomial cubic turns back on itself: the parameters in
 // (0, 1) where its speed |M'| has a local minimum (a root of M' . M'', a
 // cubic in t, where it changes from negative to positive) and its radius of
@@ -113,8 +112,10 @@ int planar_tips(const Prepared& P, double radius, double out[2]) {
       double a2;
       const double v = g(t), d = dg(t), s2 = speed2(t, a2);
       if (v == 0) break;
-      if (v < 0) lo = t, glo = v, slo = s2, alo = a2;
-      else hi = t, ghi = v, shi = s2, ahi = a2;
+      if (v < 0)
+        lo = t, glo = v, slo = s2, alo = a2;
+      else
+        hi = t, ghi = v, shi = s2, ahi = a2;
       double nt = d > 0 ? t - v / d : 0.5 * (lo + hi);
       if (!(nt > lo && nt < hi)) nt = 0.5 * (lo + hi);
       const bool last = std::abs(nt - t) < 1e-14;
@@ -161,8 +162,19 @@ struct BandSpread {
   BandSpread(const Bezier& piece_, const Prepared& P_, bool final_piece_, const FlattenOptions& opt_, double tol_,
              double margin_, double shift_, size_t pi_, Vec3& Ar_, double& bound_, size_t& emitted_, Emit& emit_,
              double plan_budget_)
-      : piece(piece_), P(P_), final_piece(final_piece_), opt(opt_), tol(tol_), margin(margin_), shift(shift_), pi(pi_),
-        Ar(Ar_), bound(bound_), emitted(emitted_), emit(emit_), plan_budget(plan_budget_) {}
+      : piece(piece_),
+        P(P_),
+        final_piece(final_piece_),
+        opt(opt_),
+        tol(tol_),
+        margin(margin_),
+        shift(shift_),
+        pi(pi_),
+        Ar(Ar_),
+        bound(bound_),
+        emitted(emitted_),
+        emit(emit_),
+        plan_budget(plan_budget_) {}
 
   // The power form's coordinates.
   double c0x = P.c0.x, c0y = P.c0.y, c1x = P.c1.x, c1y = P.c1.y;
@@ -212,7 +224,7 @@ struct BandSpread {
   double ax = 0, ay = 0, dA = 0;
   double t0 = 0, S0x = 0, S0y = 0, T0x = 0, T0y = 0;
   int shrinks = 0;
-  bool drop = false;     // the next try's end on the curve (repeated failures that shortening does not cure)
+  bool drop = false;  // the next try's end on the curve (repeated failures that shortening does not cure)
   double prev_dev = kInf;
   bool as_planned = true;  // the chord tried ends where the plan put it
   double t1 = 0;           // the end tried next
@@ -277,8 +289,8 @@ struct BandSpread {
   inline __attribute__((always_inline)) double next(const Vtx& v);
 #if defined(__SSE2__)
   inline __attribute__((always_inline)) void vertex2(double ta, double tb, Vtx& va, Vtx& vb) const;
-  inline __attribute__((always_inline)) void chord2(const Vtx& va, const Vtx& vb, double& deva, double& ba, double& devb,
-                                             double& bb) const;
+  inline __attribute__((always_inline)) void chord2(const Vtx& va, const Vtx& vb, double& deva, double& ba,
+                                                    double& devb, double& bb) const;
 #endif
   bool shrink(const Vtx& v, double dev, double budget);
 };
@@ -410,7 +422,8 @@ bool BandSpread<Emit>::add_tips(double from) {
   }
   for (int i = 0; i < n_tip; ++i) brk_tip[n_brk] = true, brk[n_brk++] = tip[i];
   for (int i = 1; i < n_brk; ++i)
-    for (int k = i; k > 0 && brk[k - 1] > brk[k]; --k) std::swap(brk[k - 1], brk[k]), std::swap(brk_tip[k - 1], brk_tip[k]);
+    for (int k = i; k > 0 && brk[k - 1] > brk[k]; --k)
+      std::swap(brk[k - 1], brk[k]), std::swap(brk_tip[k - 1], brk_tip[k]);
   return tip[n_tip - 1] > from + 1e-9;
 }
 
@@ -689,9 +702,9 @@ void BandSpread<Emit>::run(const Vec3& A, double dispA) {
 }
 
 template <class Emit>
-void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt,
-                        double tol, double margin, double rounding, double shift, size_t pi, const Vec3& A, Vec3& Ar,
-                        double dispA, double& bound, size_t& emitted, Emit& emit) {
+void band_planar_spread(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt, double tol,
+                        double margin, double rounding, double shift, size_t pi, const Vec3& A, Vec3& Ar, double dispA,
+                        double& bound, size_t& emitted, Emit& emit) {
   const double plan_budget = tol - margin - std::max(rounding, dispA);
   if (!(plan_budget > 0))
     return band_planar_piece(piece, P, final_piece, opt, tol, margin, shift, pi, A, Ar, dispA, bound, emitted, emit);

@@ -83,10 +83,11 @@ constexpr double kCrossClose = 0.93;
 // (the extreme near an end shifted off the curve hardly changes with the
 // step, and a cube law would then creep).
 struct CrossSearch {
-  double f_lo = kInf, f_hi = kInf;  // f at lo and hi; infinity: not known
-  int last = 0;                     // which end moved last: -1 lo, +1 hi
+  double f_lo = kInf, f_hi = kInf;                              // f at lo and hi; infinity: not known
+  int last = 0;                                                 // which end moved last: -1 lo, +1 hi
   double dt_last = 0, in_last = -1, dt_prev = 0, in_prev = -1;  // the last two tries on the side `last`
-  double aim_budget = -1, aim_cbrt = 0;  // cbrt(kBandAim budget) for the last budget seen (the same for every try without rounding)
+  double aim_budget = -1,
+         aim_cbrt = 0;  // cbrt(kBandAim budget) for the last budget seen (the same for every try without rounding)
   // Records a try of step dt whose extreme is `inner` (fitting or not).
   void record(bool ok, double dt, double inner, double budget) {
     if (budget != aim_budget) aim_budget = budget, aim_cbrt = std::cbrt(kBandAim * budget);
@@ -132,10 +133,12 @@ struct Counters {
   long searches[3] = {}, tries[3] = {}, hist[3][8] = {};
   long spread_pieces = 0, spread_tries = 0, spread_shrinks = 0;
   ~Counters() {
-    std::fprintf(stderr, "planned    pieces %ld tries %ld shortened %ld\n", spread_pieces, spread_tries, spread_shrinks);
+    std::fprintf(stderr, "planned    pieces %ld tries %ld shortened %ld\n", spread_pieces, spread_tries,
+                 spread_shrinks);
     const char* names[3] = {"steered", "inflection", "last"};
     for (int k = 0; k < 3; ++k) {
-      std::fprintf(stderr, "%-10s searches %ld tries %ld (%.2f)", names[k], searches[k], tries[k], searches[k] ? double(tries[k]) / searches[k] : 0.0);
+      std::fprintf(stderr, "%-10s searches %ld tries %ld (%.2f)", names[k], searches[k], tries[k],
+                   searches[k] ? double(tries[k]) / searches[k] : 0.0);
       for (int i = 0; i < 8; ++i) std::fprintf(stderr, " %ld", hist[k][i]);
       std::fprintf(stderr, "\n");
     }
@@ -223,8 +226,18 @@ struct BandPiece {
 
   BandPiece(const Bezier& piece_, const Prepared& P_, bool final_piece_, const FlattenOptions& opt_, double tol_,
             double margin_, double shift_, size_t pi_, Vec3& Ar_, double& bound_, size_t& emitted_, Emit& emit_)
-      : piece(piece_), P(P_), final_piece(final_piece_), opt(opt_), tol(tol_), margin(margin_), shift(shift_), pi(pi_),
-        Ar(Ar_), bound(bound_), emitted(emitted_), emit(emit_) {}
+      : piece(piece_),
+        P(P_),
+        final_piece(final_piece_),
+        opt(opt_),
+        tol(tol_),
+        margin(margin_),
+        shift(shift_),
+        pi(pi_),
+        Ar(Ar_),
+        bound(bound_),
+        emitted(emitted_),
+        emit(emit_) {}
 
   double ls_on() { return ls_on_ >= 0 ? ls_on_ : (ls_on_ = longest_sagitta(budget0, offA, 0)); }
   void run(const Vec3& A, double dispA_start, double t_start, double offA_start, double dt_start);
@@ -337,7 +350,9 @@ int BandPiece<Emit>::search(double& lo) {
         step = std::min(2 * step, 1.0);
         continue;
       }
-      double nd = !std::isfinite(fill) ? dt * (1 + step) : fill > 0 ? dt * std::min(4.0, std::sqrt(kBandAim / fill)) : 2 * dt;
+      double nd = !std::isfinite(fill) ? dt * (1 + step)
+                  : fill > 0           ? dt * std::min(4.0, std::sqrt(kBandAim / fill))
+                                       : 2 * dt;
       if (nd >= hi) nd = 0.5 * (lo + hi);
       dt = nd;
     } else {
@@ -389,7 +404,9 @@ void BandPiece<Emit>::accept(const BandTry& best, double lo) {
   t0 = best.t1;
   ax = best.Bx, ay = best.By;
   Ar = Br;
-  dispA = best.Brx == best.Bx && best.Bry == best.By ? 0.0 : std::sqrt((best.Brx - best.Bx) * (best.Brx - best.Bx) + (best.Bry - best.By) * (best.Bry - best.By));
+  dispA = best.Brx == best.Bx && best.Bry == best.By
+              ? 0.0
+              : std::sqrt((best.Brx - best.Bx) * (best.Brx - best.Bx) + (best.Bry - best.By) * (best.Bry - best.By));
   S0x = best.Mx, S0y = best.My, T0x = best.dMx, T0y = best.dMy;
   offA = best.on ? 0.0 : shift;
 }
@@ -421,10 +438,9 @@ void BandPiece<Emit>::run(const Vec3& A, double dispA_start, double t_start, dou
 // exact and rounded) and `dispA` come in for the piece's start; `Ar` leaves
 // as the piece's last vertex; `bound` and `emitted` accumulate.
 template <class Emit>
-void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt,
-                       double tol, double margin, double shift, size_t pi, const Vec3& A, Vec3& Ar, double dispA,
-                       double& bound, size_t& emitted, Emit& emit, double t_start = 0, double offA_start = 0,
-                       double dt_start = 0) {
+void band_planar_piece(const Bezier& piece, const Prepared& P, bool final_piece, const FlattenOptions& opt, double tol,
+                       double margin, double shift, size_t pi, const Vec3& A, Vec3& Ar, double dispA, double& bound,
+                       size_t& emitted, Emit& emit, double t_start = 0, double offA_start = 0, double dt_start = 0) {
   BandPiece<Emit>(piece, P, final_piece, opt, tol, margin, shift, pi, Ar, bound, emitted, emit)
       .run(A, dispA, t_start, offA_start, dt_start);
 }

@@ -20,8 +20,8 @@ inline v2d vsqrt(v2d x) { return v2d(_mm_sqrt_pd(__m128d(x))); }
 // band_cubic_planar()'s sufficient test (the one without roots) on two
 // chords at once, lane by lane the same arithmetic: ok[i] when it settles
 // chord i (it fits, of bound dev[i]); otherwise band_cubic_planar() decides.
-inline __attribute__((always_inline)) void band_sufficient2(const v2d* Sx, const v2d* Sy, v2d Ax, v2d Ay, v2d Bx, v2d By, v2d budget, bool ok[2],
-                             double dev[2]) {
+inline __attribute__((always_inline)) void band_sufficient2(const v2d* Sx, const v2d* Sy, v2d Ax, v2d Ay, v2d Bx,
+                                                            v2d By, v2d budget, bool ok[2], double dev[2]) {
   const v2d abx = Bx - Ax, aby = By - Ay;
   const v2d l2 = abx * abx + aby * aby;
   auto cross_ab = [&](v2d x, v2d y) { return abx * y - aby * x; };

@@ -162,8 +162,8 @@ double cubic_within(const std::array<Vec3, 4>& d, double budget, int depth) {
 // within b2 (the largest such bound is returned) or a value of |D|^2 at a
 // midpoint is over it (returned: over the budget); infinity when 40
 // halvings do not decide.
-__attribute__((noinline, cold)) double pointwise_within(const std::array<double, 4>& c, double a0, double a3, double l1, double l2p, double l2,
-                        double b2) {
+__attribute__((noinline, cold)) double pointwise_within(const std::array<double, 4>& c, double a0, double a3, double l1,
+                                                        double l2p, double l2, double b2) {
   auto cubic = [](double b0, double b1, double b2_, double b3, double s) {
     const double u = 1 - s;
     return u * u * (b0 * u + 3 * b1 * s) + s * s * (3 * b2_ * u + b3 * s);
@@ -287,7 +287,8 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Pt* S, cons
     // past the ends steer the search, a little on the safe side).
     const double a = 0.5 * (c0 + c1), b = 0.5 * (c1 + c2), c = 0.5 * (c2 + c3);
     const double ab = 0.5 * (a + b), bc = 0.5 * (b + c), m = 0.5 * (ab + bc);
-    const double hin = std::max(std::max(std::max(std::abs(a), std::abs(ab)), std::max(std::abs(m), std::abs(bc))), std::abs(c));
+    const double hin =
+        std::max(std::max(std::max(std::abs(a), std::abs(ab)), std::max(std::abs(m), std::abs(bc))), std::abs(c));
     const double hb = std::max(hin, std::max(std::abs(c0), std::abs(c3)));
     const double a0 = dot_ab(d0x, d0y), a3 = dot_ab(d3x, d3y);
     const double U2 = hb * hb + std::max(a0 * a0, a3 * a3);
@@ -297,8 +298,10 @@ inline __attribute__((always_inline)) double band_cubic_planar(const Pt* S, cons
       if (bulge && sg * c0 <= 0 && sg * c3 <= 0) {
         // The peak of the parabola through the values at 1/4, 1/2 and 3/4
         // (a near-symmetric bump's top, for steering only), at most the hull's.
-        const double w1 = sg * (27 * (c0 + c1) + 9 * c2 + c3) / 64, w2 = sg * m, w3 = sg * (c0 + 9 * c1 + 27 * (c2 + c3)) / 64;
-        const double den = 2 * w2 - w1 - w3, top = std::max(std::max(sg * a, sg * ab), std::max(std::max(w2, sg * bc), sg * c));
+        const double w1 = sg * (27 * (c0 + c1) + 9 * c2 + c3) / 64, w2 = sg * m,
+                     w3 = sg * (c0 + 9 * c1 + 27 * (c2 + c3)) / 64;
+        const double den = 2 * w2 - w1 - w3,
+                     top = std::max(std::max(sg * a, sg * ab), std::max(std::max(w2, sg * bc), sg * c));
         *bulge = (den > 0 ? std::min(top, w2 + (w3 - w1) * (w3 - w1) / (8 * den)) : top) * inv;
       }
       if (inner) *inner = hin * inv;
@@ -418,8 +421,8 @@ double wang_step(const Bezier& b, double tol) {
 // degree <= 3 by its power form (c0..c3, zero for other pieces).
 struct Prepared : CubicPowerForm {
   const Bezier* b = nullptr;
-  bool cubic = false;         // polynomial of degree <= 3 (elevated to 3)
-  bool planar = false;        // 2D
+  bool cubic = false;   // polynomial of degree <= 3 (elevated to 3)
+  bool planar = false;  // 2D
 
   explicit Prepared(const Bezier& piece) : b(&piece) {
     if (piece.rational() || piece.degree() > 3) return;

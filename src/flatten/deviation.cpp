@@ -71,7 +71,7 @@ struct PathPt {
   size_t i;
   double t;
   double acc;  // Piece::acc(t) of piece i
-  Vec3 f;  // the curve point
+  Vec3 f;      // the curve point
   double d;
 };
 
@@ -87,13 +87,13 @@ struct Arc {
 // measurement once the first has grown them.
 struct Scratch {
   std::vector<Piece> pieces;
-  std::vector<H> hom;            // the pieces' general forms
+  std::vector<H> hom;  // the pieces' general forms
   std::vector<CurvePt> cpts;
   std::vector<PathPt> ppts;
-  std::vector<size_t> first;     // per piece: its first coarse point
-  std::vector<CurvePt> workc;    // the B&B's stacks of points
+  std::vector<size_t> first;   // per piece: its first coarse point
+  std::vector<CurvePt> workc;  // the B&B's stacks of points
   std::vector<PathPt> workp;
-  std::vector<int> depth;        // halvings of each arc on the stack
+  std::vector<int> depth;  // halvings of each arc on the stack
   std::vector<Arc> arcs;
   ChainIndex index;
   static constexpr size_t kKeep = size_t{1} << 20;
@@ -218,7 +218,7 @@ class Measure {
   bool done(double ub, double lb) const { return ub <= lb + gap_; }
   bool indexed_ = false;
   bool planar_ = false;  // curve and polyline in the plane z = 0
-  CurvePt best_c_{};         // the largest reading of each direction
+  CurvePt best_c_{};     // the largest reading of each direction
   PathPt best_p_{};
   double curve_to_path_once();
   double path_to_curve_once();
@@ -455,8 +455,10 @@ double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
     if (d < best) {
       q.x = x;
       foot(q, a.i, tm);
-      if (q.d < d) best = q.d, bi = q.i, bt = q.t;
-      else best = d, bi = a.i, bt = tm;
+      if (q.d < d)
+        best = q.d, bi = q.i, bt = q.t;
+      else
+        best = d, bi = a.i, bt = tm;
     }
     // An arc this close to its chord is within 2 tiny of what it can give,
     // once read near the chord's point nearest to x (the midpoint need not
@@ -497,7 +499,8 @@ double Measure::bound(const PathPt& a, const PathPt& b, double* split, bool* apa
     // plus at most the bump 4 s l (1 - l).
     const Piece& pc = P()[a.i];
     double l = 0.5;
-    const double ub = max_line_bump(a.d, b.d, pc.sag(std::min(a.t, b.t), std::max(a.t, b.t), a.acc, b.acc, a.f, b.f), 0, 1, &l);
+    const double ub =
+        max_line_bump(a.d, b.d, pc.sag(std::min(a.t, b.t), std::max(a.t, b.t), a.acc, b.acc, a.f, b.f), 0, 1, &l);
     // Split where it is largest, kept off the ends.
     *split = std::clamp(l, 0.1, 0.9);
     if (ub <= std::max(a.d, b.d) + gap_) return ub;

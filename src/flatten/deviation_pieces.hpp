@@ -131,10 +131,10 @@ struct Piece {
   const Bezier* b = nullptr;
   int n = -1;  // degree of the power form; -1: none
   Vec3 c[4];
-  int deg = 0;           // the general form's degree
+  int deg = 0;            // the general form's degree
   const H* hp = nullptr;  // its deg + 1 homogeneous control points (n < 0)
-  double sag01 = -1;     // sag() over the whole piece (-1: not known yet)
-  Vec3 e0, e1;           // its ends
+  double sag01 = -1;      // sag() over the whole piece (-1: not known yet)
+  Vec3 e0, e1;            // its ends
 
   // `hom`: room for the general form's points (n < 0), filled here.
   Piece(const Bezier& bz, H* hom) : b(&bz), deg(bz.degree()) {
@@ -268,7 +268,8 @@ struct Piece {
       const double len2 = dot(e, e), l = len2 > 0 ? dot(m, e) / len2 : -1;
       if (l >= 0 && l <= 1) {
         const double w = q[1].w / std::sqrt(q[0].w * q[2].w), d = norm(m - e * l);
-        const double ends = std::max(dist_to_segment(q[0].p / q[0].w, p0, p1), dist_to_segment(q[2].p / q[2].w, p0, p1));
+        const double ends =
+            std::max(dist_to_segment(q[0].p / q[0].w, p0, p1), dist_to_segment(q[2].p / q[2].w, p0, p1));
         s = std::min(s, std::max(w * d / (1 + w), ends));
       }
     }

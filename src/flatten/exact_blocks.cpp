@@ -37,8 +37,7 @@ class Planner {
     cur_ = quantize(g_.pieces.front().front(), o_.decimals);
     cur_true_ = g_.pieces.front().front();
     for (const auto& seg : g_.segments) {
-      if (o_.dialect == NurbsDialect::fanuc && seg.nurbs && seg.nurbs->degree <= maxdeg_ && source_block(seg))
-        continue;
+      if (o_.dialect == NurbsDialect::fanuc && seg.nurbs && seg.nurbs->degree <= maxdeg_ && source_block(seg)) continue;
       for (size_t k = 0; k < seg.piece_count; ++k) piece(g_.pieces[seg.first_piece + k]);
     }
     close_chain();
@@ -113,8 +112,8 @@ class Planner {
     const bool lcnc = o_.dialect == NurbsDialect::linuxcnc;
     if (b.degree() == 1) return line(b);
     if (lcnc && !planar_xy(b)) return fallback(b, "z varies, and G5/G5.2 move in X and Y only");
-    const bool direct = lcnc ? (!b.rational() || b.degree() + 1 <= o_.max_rank) && b.degree() <= 3
-                             : b.degree() <= maxdeg_;
+    const bool direct =
+        lcnc ? (!b.rational() || b.degree() + 1 <= o_.max_rank) && b.degree() <= 3 : b.degree() <= maxdeg_;
     if (direct) {
       if (auto pp = print(standard_form(b))) return exact(*pp, b);
       return fallback(b, "rounding of its weights does not fit the tolerance");
@@ -123,8 +122,9 @@ class Planner {
     const int target = maxdeg_;
     std::optional<std::vector<ReducedPiece>> red;
     if (target >= 2) red = reduce_degree(b, target, budget_ - rmax_);
-    if (!red) return fallback(b, "degree " + std::to_string(b.degree()) + (b.rational() ? " rational" : "") +
-                                     " does not reduce to degree " + std::to_string(target) + " within the tolerance");
+    if (!red)
+      return fallback(b, "degree " + std::to_string(b.degree()) + (b.rational() ? " rational" : "") +
+                             " does not reduce to degree " + std::to_string(target) + " within the tolerance");
     note_ = "degree " + std::to_string(b.degree()) + (b.rational() ? " rational" : "") + " reduced to " +
             std::to_string(red->size()) + (red->size() == 1 ? " piece" : " pieces") + " of degree " +
             std::to_string(target);
@@ -155,8 +155,7 @@ class Planner {
     if (lcnc && !t.rational()) {
       // G5 / G5.1: I, J relative to the start, P, Q relative to the end.
       auto rel = [&](const Vec3& base, const Vec3& p) {
-        return Vec3{base.x + quantize(p.x - base.x, o_.decimals), base.y + quantize(p.y - base.y, o_.decimals),
-                    cur_.z};
+        return Vec3{base.x + quantize(p.x - base.x, o_.decimals), base.y + quantize(p.y - base.y, o_.decimals), cur_.z};
       };
       pts[n] = {quantize(t.points[n].x, o_.decimals), quantize(t.points[n].y, o_.decimals), cur_.z};
       pts[1] = rel(cur_, t.points[1]);
@@ -291,8 +290,6 @@ class Planner {
 
 }  // namespace
 
-std::vector<ExactBlock> plan_exact_blocks(const CurveGeometry& g, const ExactOptions& o) {
-  return Planner(g, o).run();
-}
+std::vector<ExactBlock> plan_exact_blocks(const CurveGeometry& g, const ExactOptions& o) { return Planner(g, o).run(); }
 
 }  // namespace bezcam

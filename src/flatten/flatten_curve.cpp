@@ -214,13 +214,15 @@ double flatten_with(std::span<const Bezier> pieces, const FlattenOptions& opt, S
                                 ? wang
                                 : estimate_segments(pieces, (opt.on_curve ? 1 : 2) * (tol - rmax));
     if (estimate > static_cast<double>(opt.max_vertices))
-      throw too_many("about " + (std::isfinite(estimate) ? fmt_num(std::round(estimate)) : std::string("infinitely many")));
+      throw too_many("about " +
+                     (std::isfinite(estimate) ? fmt_num(std::round(estimate)) : std::string("infinitely many")));
   }
   std::size_t emitted = 0;
   // (the refusal out of line: the sink stays inlined with the flattener)
   auto refuse = [&]() __attribute__((noinline, cold)) { throw too_many("at least " + std::to_string(emitted)); };
   auto emit_counted = [&](const FlatVertex& v) __attribute__((always_inline)) {
-    if (++emitted > opt.max_vertices) [[unlikely]] refuse();
+    if (++emitted > opt.max_vertices) [[unlikely]]
+      refuse();
     emit(v);
   };
 

@@ -135,7 +135,9 @@ Nesting nest_closed_curves(std::span<const std::vector<Bezier>> curves) {
   out.crossing.erase(std::unique(out.crossing.begin(), out.crossing.end()), out.crossing.end());
   // Two curves each inside the other (self-crossing curves): the smaller
   // one is the inner.
-  const auto has = [&](size_t a, size_t b) { return std::find(around[a].begin(), around[a].end(), b) != around[a].end(); };
+  const auto has = [&](size_t a, size_t b) {
+    return std::find(around[a].begin(), around[a].end(), b) != around[a].end();
+  };
   for (size_t i = 0; i < n; ++i)
     for (size_t k = 0; k < around[i].size();) {
       const size_t j = around[i][k];

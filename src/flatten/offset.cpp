@@ -112,8 +112,10 @@ std::optional<double> arc_param(const ArcSeg& s, const Vec3& p) {
   const double w = std::abs(s.sweep), slack = 1e-12;
   if (u < -slack) u += 2 * kPi;
   if (u > w + slack) {
-    if (u - 2 * kPi >= -slack) u -= 2 * kPi;
-    else return std::nullopt;
+    if (u - 2 * kPi >= -slack)
+      u -= 2 * kPi;
+    else
+      return std::nullopt;
   }
   return std::clamp(u / w, 0.0, 1.0);
 }
@@ -167,9 +169,12 @@ std::vector<std::pair<double, double>> intersections(const ArcSeg& p, const ArcS
     if (t < 0 || t > 1 || u < 0 || u > 1) return {};
     return {{t, u}};
   }
-  if (p.arc && q.arc) cand = circle_circle(p.c, p.radius, q.c, q.radius);
-  else if (p.arc) cand = line_circle(q.a, q.b - q.a, p.c, p.radius);
-  else cand = line_circle(p.a, p.b - p.a, q.c, q.radius);
+  if (p.arc && q.arc)
+    cand = circle_circle(p.c, p.radius, q.c, q.radius);
+  else if (p.arc)
+    cand = line_circle(q.a, q.b - q.a, p.c, p.radius);
+  else
+    cand = line_circle(p.a, p.b - p.a, q.c, q.radius);
   std::vector<std::pair<double, double>> out;
   for (const Vec3& x : cand) {
     const auto s = param_on(p, x), t = param_on(q, x);
@@ -204,7 +209,8 @@ double signed_area(std::span<const Bezier> pieces) {
   for (const auto& b : pieces)
     for (const auto& p : b.points) box.add(p);
   const double size = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y);
-  const auto poly = flatten(pieces, {.tolerance = std::max(size * 1e-5, 1e-9), .decimals = -1, .on_curve = true}).points;
+  const auto poly =
+      flatten(pieces, {.tolerance = std::max(size * 1e-5, 1e-9), .decimals = -1, .on_curve = true}).points;
   double a = 0;
   for (size_t i = 0; i + 1 < poly.size(); ++i) a += poly[i].x * poly[i + 1].y - poly[i + 1].x * poly[i].y;
   if (!poly.empty()) a += poly.back().x * poly.front().y - poly.front().x * poly.back().y;
@@ -251,7 +257,9 @@ bool overlap(const Box3& p, const Box3& q, double eps) {
 std::vector<size_t> sorted_by_x(const std::vector<Box3>& boxes) {
   std::vector<size_t> by_x(boxes.size());
   for (size_t i = 0; i < boxes.size(); ++i) by_x[i] = i;
-  std::sort(by_x.begin(), by_x.end(), [&](size_t p, size_t q) { return boxes[p].lo.x < boxes[q].lo.x || (boxes[p].lo.x == boxes[q].lo.x && p < q); });
+  std::sort(by_x.begin(), by_x.end(), [&](size_t p, size_t q) {
+    return boxes[p].lo.x < boxes[q].lo.x || (boxes[p].lo.x == boxes[q].lo.x && p < q);
+  });
   return by_x;
 }
 
@@ -277,7 +285,8 @@ ArcSeg offset_of(const ArcSeg& s, int hand, double r) {
 // primitive of A, the primitives sorted by their boxes' low x.
 class SplineIndex {
  public:
-  SplineIndex(const std::vector<ArcSeg>& A, double r, double keep_at) : A_(A), r_(r), keep_at_(keep_at), boxes_(A.size()) {
+  SplineIndex(const std::vector<ArcSeg>& A, double r, double keep_at)
+      : A_(A), r_(r), keep_at_(keep_at), boxes_(A.size()) {
     for (size_t i = 0; i < A.size(); ++i) boxes_[i] = box_of(A[i]);
     by_x_ = sorted_by_x(boxes_);
     for (const auto& b : boxes_) widest_ = std::max(widest_, b.hi.x - b.lo.x);
@@ -502,8 +511,10 @@ void OffsetBuilder::add_other_side() {
   if (!closed) {
     // The caps round the two ends, from the other side to the side asked.
     const Vec3 t0 = A.front().tangent(0), t1 = A.back().tangent(1);
-    others.push_back({about(A.front().a, A.front().a + Vec3{t0.y * side * r, -t0.x * side * r, 0}, -side * kPi), -1, true});
-    others.push_back({about(A.back().b, A.back().b + Vec3{-t1.y * side * r, t1.x * side * r, 0}, -side * kPi), -1, true});
+    others.push_back(
+        {about(A.front().a, A.front().a + Vec3{t0.y * side * r, -t0.x * side * r, 0}, -side * kPi), -1, true});
+    others.push_back(
+        {about(A.back().b, A.back().b + Vec3{-t1.y * side * r, t1.x * side * r, 0}, -side * kPi), -1, true});
   }
   raw.insert(raw.end(), others.begin(), others.end());
 }
@@ -535,7 +546,8 @@ std::vector<std::vector<double>> OffsetBuilder::crossings() const {
 // (and, for a closed curve that bounds an area, in the side's region; else
 // when it is on the side asked); what is cut away from a primitive's
 // offset goes to `clipped`.
-std::vector<ArcSeg> OffsetBuilder::keep_valid(std::vector<std::vector<double>>& cuts, std::vector<Clipped>& clipped) const {
+std::vector<ArcSeg> OffsetBuilder::keep_valid(std::vector<std::vector<double>>& cuts,
+                                              std::vector<Clipped>& clipped) const {
   const SplineIndex index(A, r, r - eps);
   const Region region = closed ? Region(A, r, side, scale) : Region();
   std::vector<ArcSeg> kept;
@@ -553,8 +565,10 @@ std::vector<ArcSeg> OffsetBuilder::keep_valid(std::vector<std::vector<double>>& 
       bool ok = index.valid(part.point(0.5)) &&
                 (part.length() < 1e3 * eps || (index.valid(part.point(0.25)) && index.valid(part.point(0.75))));
       if (ok) ok = region.empty() ? !raw[i].other : region.contains(part.point(0.5));
-      if (ok) kept.push_back(part);
-      else if (raw[i].source >= 0) clipped.push_back({raw[i].source, s0, s1});
+      if (ok)
+        kept.push_back(part);
+      else if (raw[i].source >= 0)
+        clipped.push_back({raw[i].source, s0, s1});
     }
   }
   return kept;
@@ -617,8 +631,10 @@ OffsetResult offset_curve(std::span<const Bezier> pieces, bool closed, const Off
   b.fit_spline(pieces);
   if (b.A.empty()) return b.res;
   b.offset_side();
-  if (closed) b.close_round();
-  else b.round_open_ends(pieces);
+  if (closed)
+    b.close_round();
+  else
+    b.round_open_ends(pieces);
   b.add_other_side();
   auto cuts = b.crossings();
   std::vector<Clipped> clipped;

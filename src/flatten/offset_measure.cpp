@@ -239,7 +239,7 @@ struct Shape {
   std::vector<Piece> pieces;
   std::vector<std::vector<Sample>> samples;  // per piece
   Index index;
-  double margin = 0;  // more than the chords' distance from the pieces
+  double margin = 0;     // more than the chords' distance from the pieces
   size_t ring_segs = 0;  // the first curve's chords, first in the index (measure_offset())
 
   void sample(double res) {
@@ -315,7 +315,8 @@ double smallest_distance(Shape& curve, const Shape& drawn) {
   if (curve.index.segs.empty()) return HUGE_VAL;
   for (size_t k = 0; k < drawn.pieces.size(); ++k) {
     const auto& ss = drawn.samples[k];
-    for (size_t i = 1; i < ss.size(); ++i) nears.push_back({curve.index.nearest(ss[i - 1].p, ss[i].p), k, ss[i - 1], ss[i]});
+    for (size_t i = 1; i < ss.size(); ++i)
+      nears.push_back({curve.index.nearest(ss[i - 1].p, ss[i].p), k, ss[i - 1], ss[i]});
   }
   std::sort(nears.begin(), nears.end(), [](const Near& x, const Near& y) { return x.d < y.d; });
   double smallest = HUGE_VAL;
@@ -460,7 +461,9 @@ class CoverageReader {
   bool reaches(size_t k, double t);
   std::vector<Cover> candidates() const;
   // The material left at (piece, t); 0 where the tool does not reach.
-  double left(const Cover& c, double t) { return reaches(c.piece, t) ? drawn_.exact(curve_.pieces[c.piece].at(t)) - how_.r : 0.0; }
+  double left(const Cover& c, double t) {
+    return reaches(c.piece, t) ? drawn_.exact(curve_.pieces[c.piece].at(t)) - how_.r : 0.0;
+  }
 
   Shape& curve_;
   Shape& drawn_;
@@ -511,7 +514,8 @@ std::vector<CoverageReader::Cover> CoverageReader::candidates() const {
       const Vec3 q = ss[i].p + n * (how_.side * reach_);
       if (curve_.index.nearest(q) < reach_ - eps_ - curve_.margin) continue;  // folded away for certain
       if (!on_side(q)) continue;
-      cover.push_back({drawn_.index.nearest(ss[i].p), k, ss[i].t, ss[i > 0 ? i - 1 : i].t, ss[i + 1 < ss.size() ? i + 1 : i].t});
+      cover.push_back(
+          {drawn_.index.nearest(ss[i].p), k, ss[i].t, ss[i > 0 ? i - 1 : i].t, ss[i + 1 < ss.size() ? i + 1 : i].t});
     }
   }
   std::sort(cover.begin(), cover.end(), [](const Cover& x, const Cover& y) { return x.d > y.d; });
@@ -525,7 +529,10 @@ double CoverageReader::read() {
     if (c.d - how_.r + drawn_.margin < coverage || exact == kExactReads) break;
     if (!reaches(c.piece, c.t)) continue;
     double e = left(c, c.t);
-    if (c.lo < c.hi) e = std::max(e, -brent_min(c.lo, c.hi, [&](double t) { return -left(c, t); }, 1e-9 * (c.hi - c.lo), 40).f);
+    if (c.lo < c.hi)
+      e = std::max(e, -brent_min(
+                           c.lo, c.hi, [&](double t) { return -left(c, t); }, 1e-9 * (c.hi - c.lo), 40)
+                           .f);
     coverage = std::max(coverage, e);
     ++exact;
   }
@@ -568,7 +575,8 @@ struct PartDistance::Impl {
   Shape curve;
 };
 
-PartDistance::PartDistance(std::span<const std::vector<Bezier>> curves, double resolution) : impl_(std::make_unique<Impl>()) {
+PartDistance::PartDistance(std::span<const std::vector<Bezier>> curves, double resolution)
+    : impl_(std::make_unique<Impl>()) {
   for (const auto& c : curves)
     for (const Bezier& b : c) {
       Piece pc;

@@ -22,7 +22,8 @@ namespace {
 // flattening of `pieces` on the curve, each sent to `emit`; returns the
 // bound. `margin`: the tolerance's floating-point margin (ToleranceBudget).
 template <class Emit>
-double on_curve_search(std::span<const Bezier> pieces, const FlattenOptions& opt, double margin, Vec3 Ar, Emit& emit_counted) {
+double on_curve_search(std::span<const Bezier> pieces, const FlattenOptions& opt, double margin, Vec3 Ar,
+                       Emit& emit_counted) {
   const double tol = opt.tolerance;
   double bound = 0;
   double dt_hint = -1;

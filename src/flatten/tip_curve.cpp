@@ -7,9 +7,9 @@
 #include <string>
 
 #include "bezcam/error.hpp"
+#include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/kernel/minimize.hpp"
 #include "bezcam/limits.hpp"
-#include "bezcam/flatten/tolerance.hpp"
 #include "flatten/search.hpp"
 #include "kernel/bernstein_ops.hpp"
 
@@ -290,7 +290,10 @@ namespace {
 // nearest point at an end would read high by the speed times that step).
 template <class P>
 double nearest_distance(double lo, double hi, const Vec3& x, P point) {
-  const auto d2 = [&](double t) { const Vec3 d = point(t) - x; return dot(d, d); };
+  const auto d2 = [&](double t) {
+    const Vec3 d = point(t) - x;
+    return dot(d, d);
+  };
   const auto m = brent_min(lo, hi, d2, 1e-10 * (hi - lo));
   return std::sqrt(std::min({m.f, d2(lo), d2(hi)}));
 }
@@ -299,7 +302,9 @@ double nearest_distance(double lo, double hi, const Vec3& x, P point) {
 // 1e-7 of the window.
 template <class F>
 double peak_value(double a, double b, F f) {
-  return -brent_min(a, b, [&](double s) { return -f(s); }, 1e-7 * (b - a)).f;
+  return -brent_min(
+              a, b, [&](double s) { return -f(s); }, 1e-7 * (b - a))
+              .f;
 }
 
 }  // namespace
@@ -312,7 +317,8 @@ Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p
   auto tip = [&](double t) { return tip_point(c, radius, std::clamp(t, 0.0, 1.0)); };
   auto dist_poly = [&](const Vec3& x, size_t i) {  // to segments i-1 .. i+1
     double m = kInf;
-    for (size_t j = i > 0 ? i - 1 : 0; j <= i + 1 && j + 1 < V.size(); ++j) m = std::min(m, dist_to_segment(x, V[j], V[j + 1]));
+    for (size_t j = i > 0 ? i - 1 : 0; j <= i + 1 && j + 1 < V.size(); ++j)
+      m = std::min(m, dist_to_segment(x, V[j], V[j + 1]));
     return m;
   };
   constexpr int kSamples = 8;
@@ -326,7 +332,8 @@ Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p
       if (e > best) best = e, bt = t;
     }
     const double h = (b - a) / kSamples;
-    best = std::max(best, peak_value(std::max(a, bt - h), std::min(b, bt + h), [&](double t) { return dist_poly(tip(t), i); }));
+    best = std::max(
+        best, peak_value(std::max(a, bt - h), std::min(b, bt + h), [&](double t) { return dist_poly(tip(t), i); }));
     d.curve_to_path = std::max(d.curve_to_path, best);
     // Polyline -> curve: chord points to their nearest curve point, searched
     // over the vertices' parameter range widened by half a segment each side.

@@ -76,7 +76,8 @@ std::string advice_num(double v) {
 
 ToleranceBudget check_tolerance(double tol, int decimals, int dim, double scale) {
   if (!(tol > 0) || !std::isfinite(tol))
-    throw InputError(errc::flatten_tolerance, Place::at_json("tolerance"), "expected a finite tolerance > 0, found " + fmt_num(tol));
+    throw InputError(errc::flatten_tolerance, Place::at_json("tolerance"),
+                     "expected a finite tolerance > 0, found " + fmt_num(tol));
   ToleranceBudget b;
   b.rounding = max_rounding_displacement(decimals, dim);
   if (b.rounding >= 0.9 * tol)

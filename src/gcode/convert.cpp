@@ -2,7 +2,6 @@
 
 #include "bezcam/cam/program_motion.hpp"
 
-
 namespace bezcam {
 
 namespace {

@@ -4,9 +4,7 @@
 
 namespace bezcam::gcode {
 
-void Diagnostics::fail(ErrorId id, const std::string& msg) const {
-  throw InputError(id, Place::at_line(line), msg);
-}
+void Diagnostics::fail(ErrorId id, const std::string& msg) const { throw InputError(id, Place::at_line(line), msg); }
 
 void Diagnostics::soft(ErrorId id, const std::string& msg, int at) const {
   if (!findings) fail(id, msg);

@@ -65,23 +65,23 @@ struct GcodeInterpreter::Impl {
   // interpreted on copies of `state` and `more`, committed only when accepted.
   struct More {
     ModalMotion open = ModalMotion::none;  // open multi-line block: none, a Fanuc one, G5.2
-    int open_line = 0;     // where it started
-    int order = 0;         // its rank / order
-    double open_feed = 0;  // the feed it runs at
+    int open_line = 0;                     // where it started
+    int order = 0;                         // its rank / order
+    double open_feed = 0;                  // the feed it runs at
     std::vector<Vec3> ctrl;
     std::vector<double> weights, knots;  // Fanuc knots; NaN where lint recovered a missing K
     std::vector<int> knot_lines;
-    int knot_only = 0;       // Fanuc: knot-only blocks so far
-    int knot_only_line = 0;  // the first of them
-    int nurbs_mode_line = 0; // where the Fanuc NURBS mode was entered
-    int selected_tool = -1;  // last T word (-1: none)
-    bool g5_chain = false;   // the previous motion was a G5: I and J may be left out
-    Vec3 g5_next_ij;         // ... and then default to minus its P and Q
-    bool moved = false;      // a move has been made (units may no longer change)
+    int knot_only = 0;        // Fanuc: knot-only blocks so far
+    int knot_only_line = 0;   // the first of them
+    int nurbs_mode_line = 0;  // where the Fanuc NURBS mode was entered
+    int selected_tool = -1;   // last T word (-1: none)
+    bool g5_chain = false;    // the previous motion was a G5: I and J may be left out
+    Vec3 g5_next_ij;          // ... and then default to minus its P and Q
+    bool moved = false;       // a move has been made (units may no longer change)
     bool distance_set = false, plane_set = false;
-    int end_line = 0;        // M02 / M30 seen there
-    long last_n = -1;        // last N word
-    int last_line = 0;       // last line fed
+    int end_line = 0;   // M02 / M30 seen there
+    long last_n = -1;   // last N word
+    int last_line = 0;  // last line fed
     // Lint-only bookkeeping: findings already reported once.
     bool noted_modes = false, noted_position = false, noted_spindle = false;
     double feed_reported = -1;  // the excessive feed last reported

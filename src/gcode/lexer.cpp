@@ -21,10 +21,14 @@ void add(Line& ln, Word w, const Diagnostics& d) {
     ln.n = static_cast<long>(w.value);
     return;
   }
-  if (ln.program_number) d.fail(errc::gcode_syntax, "a program-number line (O...) may hold nothing but comments, found " + w.text);
+  if (ln.program_number)
+    d.fail(errc::gcode_syntax, "a program-number line (O...) may hold nothing but comments, found " + w.text);
   if (w.letter == 'O') {
-    if (!first_word || ln.n) d.fail(errc::gcode_unsupported, "O words (" + w.text + ") are only understood as a program number alone on its line");
-    if (w.value < 0 || w.value != std::floor(w.value)) d.fail(errc::gcode_syntax, "expected a whole program number after O, found " + w.text);
+    if (!first_word || ln.n)
+      d.fail(errc::gcode_unsupported,
+             "O words (" + w.text + ") are only understood as a program number alone on its line");
+    if (w.value < 0 || w.value != std::floor(w.value))
+      d.fail(errc::gcode_syntax, "expected a whole program number after O, found " + w.text);
     ln.program_number = true;
     return;
   }
@@ -46,8 +50,8 @@ void add(Line& ln, Word w, const Diagnostics& d) {
     if (o.letter == w.letter) {
       // Controllers differ (LinuxCNC and Grbl refuse, others keep the
       // last): refuse. Lint goes on with the first one.
-      d.soft(errc::gcode_repeated_word, std::string(1, w.letter) + " appears twice on the line (" + o.text + " and " + w.text +
-                                "); a block gives each address once");
+      d.soft(errc::gcode_repeated_word, std::string(1, w.letter) + " appears twice on the line (" + o.text + " and " +
+                                            w.text + "); a block gives each address once");
       return;
     }
   ln.words.push_back(std::move(w));
@@ -73,21 +77,34 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
     ln.percent = true;
     ++i;
     while (i < n) {
-      if (is_space(text[i])) ++i;
-      else if (text[i] == '(') skip_comment();
-      else if (text[i] == ';') break;
-      else d.fail(errc::gcode_syntax, "a '%' line may hold nothing but comments, found '" + std::string(1, text[i]) + "'");
+      if (is_space(text[i]))
+        ++i;
+      else if (text[i] == '(')
+        skip_comment();
+      else if (text[i] == ';')
+        break;
+      else
+        d.fail(errc::gcode_syntax, "a '%' line may hold nothing but comments, found '" + std::string(1, text[i]) + "'");
     }
     return ln;
   }
-  if (i < n && text[i] == '/') d.fail(errc::gcode_unsupported, "block delete ('/' at the start of a line) is not supported: remove it or the line");
+  if (i < n && text[i] == '/')
+    d.fail(errc::gcode_unsupported,
+           "block delete ('/' at the start of a line) is not supported: remove it or the line");
   while (i < n) {
     const char c = text[i];
-    if (is_space(c)) { ++i; continue; }
-    if (c == '(') { skip_comment(); continue; }
+    if (is_space(c)) {
+      ++i;
+      continue;
+    }
+    if (c == '(') {
+      skip_comment();
+      continue;
+    }
     if (c == ';') break;
     if (!std::isalpha(static_cast<unsigned char>(c)))
-      d.fail(errc::gcode_syntax, "unexpected character '" + std::string(1, c) + "': expected a word (a letter and a number)");
+      d.fail(errc::gcode_syntax,
+             "unexpected character '" + std::string(1, c) + "': expected a word (a letter and a number)");
     const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     ++i;
     // RS274/NGC reads a line with its blanks taken out (comments aside), so
@@ -120,8 +137,10 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
       } else if (is_space(ch)) {
         size_t j = i;
         while (j < n && is_space(text[j])) ++j;
-        if (j < n && (std::isdigit(static_cast<unsigned char>(text[j])) || (text[j] == '.' && !point))) i = j;
-        else break;
+        if (j < n && (std::isdigit(static_cast<unsigned char>(text[j])) || (text[j] == '.' && !point)))
+          i = j;
+        else
+          break;
       } else {
         break;
       }
@@ -131,7 +150,7 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
       while (e < n && !is_space(text[e]) && text[e] != '(' && text[e] != ';') ++e;
       const std::string found(text.substr(start, e - start));
       d.fail(errc::gcode_syntax, std::string("expected a number after '") + letter + "', found " +
-                         (found.empty() ? std::string("nothing") : "'" + found + "'"));
+                                     (found.empty() ? std::string("nothing") : "'" + found + "'"));
     }
     Word w;
     w.letter = letter;
@@ -142,7 +161,7 @@ Line lex_line(std::string_view text, const Diagnostics& d) {
     // leaves the value alone then): that would be a different program.
     if (fc.ec != std::errc() || !std::isfinite(w.value))
       d.fail(errc::gcode_number, std::string("the number after '") + letter + "' is too large to read (" +
-                         std::to_string(num.size()) + " digits): expected at most about 1e308");
+                                     std::to_string(num.size()) + " digits): expected at most about 1e308");
     add(ln, std::move(w), d);
   }
   for (size_t k = 0; k < ln.words.size(); ++k) {

@@ -26,13 +26,13 @@ struct Word {
 /// A parsed line: its words (N and O apart), G and M codes, and the first
 /// word of each other letter.
 struct Line {
-  bool percent = false;         ///< a '%' line (tape start / end)
-  bool program_number = false;  ///< an O1234 line
-  std::optional<long> n;        ///< the N word
-  std::vector<Word> words;      ///< every word but N, O, G and M
+  bool percent = false;                        ///< a '%' line (tape start / end)
+  bool program_number = false;                 ///< an O1234 line
+  std::optional<long> n;                       ///< the N word
+  std::vector<Word> words;                     ///< every word but N, O, G and M
   std::vector<std::pair<int, std::string>> g;  ///< G code x 10 (G06.2 -> 62), text
   std::vector<std::pair<int, std::string>> m;  ///< M code, text
-  std::array<int, 26> first{};  ///< 1 + index into words of the first word of a letter, 0 if none
+  std::array<int, 26> first{};                 ///< 1 + index into words of the first word of a letter, 0 if none
 
   const Word* get(char c) const {
     const int i = first[static_cast<size_t>(c - 'A')];

@@ -24,10 +24,10 @@ std::vector<double> linuxcnc_knots(size_t n_points, int order) {
 bool GcodeInterpreter::LineRun::continue_g52() {
   const bool closes = ln.g.size() == 1 && ln.g[0].first == 53;
   if (closes) return false;  // run_modal() handles G5.3
-  const bool only_points = ln.g.empty() && ln.m.empty() &&
-                           std::all_of(ln.words.begin(), ln.words.end(), [](const Word& w) {
-                             return std::string_view("XYP").find(w.letter) != std::string_view::npos;
-                           });
+  const bool only_points =
+      ln.g.empty() && ln.m.empty() && std::all_of(ln.words.begin(), ln.words.end(), [](const Word& w) {
+        return std::string_view("XYP").find(w.letter) != std::string_view::npos;
+      });
   if (!only_points) {
     std::string msg = "the G5.2 block opened at line " + std::to_string(mo.open_line) +
                       " is still open: only control points 'X- Y- P-' may follow until G5.3";
@@ -43,11 +43,14 @@ bool GcodeInterpreter::LineRun::continue_g52() {
 
 void GcodeInterpreter::LineRun::g52_point() {
   if (ln.has('X') != ln.has('Y'))
-    fail(errc::gcode_nurbs_point, std::string("a G5.2 control point needs both X and Y, found only ") + (ln.has('X') ? txt('X') : txt('Y')));
+    fail(errc::gcode_nurbs_point,
+         std::string("a G5.2 control point needs both X and Y, found only ") + (ln.has('X') ? txt('X') : txt('Y')));
   if (!ln.has('X')) fail(errc::gcode_nurbs_point, "a G5.2 control point line needs X, Y and P (its weight)");
   double w = 1;
-  if (!ln.has('P')) soft(errc::gcode_weight, "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)");
-  else w = weight(*ln.get('P'));
+  if (!ln.has('P'))
+    soft(errc::gcode_weight, "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)");
+  else
+    w = weight(*ln.get('P'));
   // In G91 LinuxCNC's interpreter measures every point of the block from
   // where the block began (the current position until G5.3).
   mo.ctrl.push_back({coordinate(*ln.get('X'), st.pos.x), coordinate(*ln.get('Y'), st.pos.y), st.pos.z});
@@ -62,9 +65,13 @@ void GcodeInterpreter::LineRun::g5() {
   if (!ln.has('P') || !ln.has('Q'))
     fail(errc::gcode_bezier, "G5 needs both P and Q (the second control point's offset from the end point)");
   Vec3 ij;
-  if (ln.has('I')) ij = {val('I'), val('J'), 0};
-  else if (mo.g5_chain) ij = mo.g5_next_ij;
-  else fail(errc::gcode_bezier, "G5 without I and J continues the tangent of a G5 just before it, and there is none: give I and J");
+  if (ln.has('I'))
+    ij = {val('I'), val('J'), 0};
+  else if (mo.g5_chain)
+    ij = mo.g5_next_ij;
+  else
+    fail(errc::gcode_bezier,
+         "G5 without I and J continues the tangent of a G5 just before it, and there is none: give I and J");
   const auto [to, axes] = target();
   const Vec3 from = st.pos;
   MotionBlock b = block(BlockKind::bezier, to);
@@ -80,7 +87,8 @@ void GcodeInterpreter::LineRun::g51() {
   mo.g5_chain = false;
   require_xy_known("G5.1");
   require_feed("G5.1");
-  if (!ln.has('I') || !ln.has('J')) fail(errc::gcode_bezier, "G5.1 needs both I and J (the middle control point's offset from the start)");
+  if (!ln.has('I') || !ln.has('J'))
+    fail(errc::gcode_bezier, "G5.1 needs both I and J (the middle control point's offset from the start)");
   const auto [to, axes] = target();
   MotionBlock b = block(BlockKind::bezier, to);
   b.order = 3;
@@ -99,7 +107,8 @@ void GcodeInterpreter::LineRun::curve_move(MotionBlock& b, unsigned axes) {
 
 void GcodeInterpreter::LineRun::g52() {
   if (mo.open == ModalMotion::nurbs_g5_2)
-    fail(errc::gcode_nurbs_open, "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
+    fail(errc::gcode_nurbs_open,
+         "a G5.2 block is already open since line " + std::to_string(mo.open_line) + ": close it with G5.3 first");
   require_xy_known("G5.2");
   require_feed("G5.2");
   mo.g5_chain = false;
@@ -107,14 +116,17 @@ void GcodeInterpreter::LineRun::g52() {
   if (ln.has('L')) {
     const double L = val('L');
     if (L != std::floor(L) || L < 3)
-      soft(errc::gcode_rank, "G5.2 order " + txt('L') + ": LinuxCNC ignores an order below 3 (it then uses 3); give L3 or more");
+      soft(errc::gcode_rank,
+           "G5.2 order " + txt('L') + ": LinuxCNC ignores an order below 3 (it then uses 3); give L3 or more");
     // Any order above the largest is refused below; one past it keeps a
     // huge L from overflowing the int (found by fuzzing).
-    else order = static_cast<int>(std::min(L, static_cast<double>(kMaxBezierDegree) + 2));
+    else
+      order = static_cast<int>(std::min(L, static_cast<double>(kMaxBezierDegree) + 2));
   }
   const int max = self.profile ? self.profile->nurbs_max_rank : kMaxBezierDegree + 1;
   if (order > max) {
-    soft(errc::gcode_rank, "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
+    soft(errc::gcode_rank,
+         "G5.2 order " + txt('L') + " exceeds the largest order" + machine() + ", " + std::to_string(max));
   }
   mo.open = ModalMotion::nurbs_g5_2;
   mo.open_line = line;
@@ -127,8 +139,9 @@ void GcodeInterpreter::LineRun::g52() {
     // LinuxCNC: the current position gets weight 1, the point its P.
     g52_point();
   } else if (!ln.has('P')) {
-    soft(errc::gcode_weight, "the G5.2 line needs P, the weight of its first control point (the current position): "
-                   "without it the weight differs between LinuxCNC versions");
+    soft(errc::gcode_weight,
+         "the G5.2 line needs P, the weight of its first control point (the current position): "
+         "without it the weight differs between LinuxCNC versions");
   } else {
     mo.weights[0] = weight(*ln.get('P'));
   }

@@ -15,28 +15,64 @@ namespace gcode {
 
 GGroup g_group(int c) {
   switch (c) {
-    case 0: case 10: case 20: case 30: case 50: case 51: case 52: case 53: case 62: case 63: case 800:
-      return GGroup::motion;
-    case 40: case 280: case 300: case 530: return GGroup::non_modal;
-    case 170: case 180: case 190: return GGroup::plane;
-    case 900: case 910: return GGroup::distance;
-    case 901: case 911: return GGroup::arc_distance;
-    case 930: case 940: case 950: return GGroup::feed_mode;
-    case 200: case 210: return GGroup::units;
-    case 400: case 410: case 420: return GGroup::cutter_comp;
-    case 430: case 490: return GGroup::tool_length;
-    case 540: case 550: case 560: case 570: case 580: case 590: return GGroup::coord_system;
-    case 610: case 611: case 640: return GGroup::path_mode;
+    case 0:
+    case 10:
+    case 20:
+    case 30:
+    case 50:
+    case 51:
+    case 52:
+    case 53:
+    case 62:
+    case 63:
+    case 800: return GGroup::motion;
+    case 40:
+    case 280:
+    case 300:
+    case 530: return GGroup::non_modal;
+    case 170:
+    case 180:
+    case 190: return GGroup::plane;
+    case 900:
+    case 910: return GGroup::distance;
+    case 901:
+    case 911: return GGroup::arc_distance;
+    case 930:
+    case 940:
+    case 950: return GGroup::feed_mode;
+    case 200:
+    case 210: return GGroup::units;
+    case 400:
+    case 410:
+    case 420: return GGroup::cutter_comp;
+    case 430:
+    case 490: return GGroup::tool_length;
+    case 540:
+    case 550:
+    case 560:
+    case 570:
+    case 580:
+    case 590: return GGroup::coord_system;
+    case 610:
+    case 611:
+    case 640: return GGroup::path_mode;
     default: return GGroup::unsupported;
   }
 }
 
 MGroup m_group(int c) {
   switch (c) {
-    case 0: case 1: case 2: case 30: return MGroup::stopping;
-    case 3: case 4: case 5: return MGroup::spindle;
+    case 0:
+    case 1:
+    case 2:
+    case 30: return MGroup::stopping;
+    case 3:
+    case 4:
+    case 5: return MGroup::spindle;
     case 6: return MGroup::tool_change;
-    case 7: case 8: case 9: return MGroup::coolant;
+    case 7:
+    case 8:
+    case 9: return MGroup::coolant;
     default: return MGroup::unsupported;
   }
 }
@@ -48,7 +84,8 @@ using namespace gcode;
 void GcodeInterpreter::LineRun::run_modal() {
   const Codes codes = gather_codes();
   if (mo.open == ModalMotion::nurbs_g5_2 && codes.motion != 53)
-    fail(errc::gcode_nurbs_open, "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
+    fail(errc::gcode_nurbs_open,
+         "the G5.2 block opened at line " + std::to_string(mo.open_line) + " is still open: close it with G5.3");
   const int active = active_motion(codes);
   check_combinations(codes, active);
 
@@ -66,8 +103,9 @@ void GcodeInterpreter::LineRun::run_modal() {
   // LinuxCNC refuses G53 in G91 ("cannot use G53 incremental"); Fanuc
   // ignores it there. Either way the line would not move as written.
   if (codes.machine_coords && st.distance != DistanceMode::absolute)
-    fail(errc::gcode_incremental, "G53 (machine coordinates) takes absolute coordinates: it cannot be used in G91 "
-                                  "(incremental distances); give G90 first");
+    fail(errc::gcode_incremental,
+         "G53 (machine coordinates) takes absolute coordinates: it cannot be used in G91 "
+         "(incremental distances); give G90 first");
   if (codes.home) go_home(codes.home);
   if (active != -999) motion_line(active, codes.motion != -999);
   for (const auto& [c, t] : ln.m)
@@ -91,30 +129,35 @@ GcodeInterpreter::LineRun::Codes GcodeInterpreter::LineRun::gather_codes() {
     if (grp == GGroup::unsupported) fail(errc::gcode_unsupported, "G-code " + t + " is not supported by this reader");
     if (grp != GGroup::non_modal) {
       std::string& seen = seen_g[static_cast<size_t>(grp)];
-      if (!seen.empty())
-        fail(errc::gcode_modal_group, seen + " and " + t + " are in the same modal group: give one");
+      if (!seen.empty()) fail(errc::gcode_modal_group, seen + " and " + t + " are in the same modal group: give one");
       seen = t;
     } else {
       if (!non_modal.empty())
-        fail(errc::gcode_modal_group, non_modal + " and " + t + " are both non-modal codes (group 0): give one per line");
+        fail(errc::gcode_modal_group,
+             non_modal + " and " + t + " are both non-modal codes (group 0): give one per line");
       non_modal = t;
     }
     switch (c) {
-      case 170: case 180: case 190:
+      case 170:
+      case 180:
+      case 190:
         k.plane = plane_of(c);
         if (c != 170 && st.cutter_comp != CutterCompMode::off)
           fail(errc::gcode_plane, t + " selects the " + std::string(c == 180 ? "ZX" : "YZ") +
                                       " plane while cutter radius compensation is on: it compensates in G17 (XY) only; "
                                       "cancel it with G40 first");
         break;
-      case 930: case 950:
+      case 930:
+      case 950:
         fail(errc::gcode_unsupported, t + std::string(c == 930 ? " (inverse-time feed)" : " (feed per revolution)") +
-                                " is not supported by this reader: use G94 (units per minute)");
-      case 410: case 420: k.comp_d = true; break;
+                                          " is not supported by this reader: use G94 (units per minute)");
+      case 410:
+      case 420: k.comp_d = true; break;
       case 430: k.length_comp = true; break;
       case 40: k.dwell = true; break;
       case 640: k.blend = true; break;
-      case 280: case 300: k.home = c; break;
+      case 280:
+      case 300: k.home = c; break;
       case 530: k.machine_coords = true; break;
       default: break;
     }
@@ -129,8 +172,7 @@ GcodeInterpreter::LineRun::Codes GcodeInterpreter::LineRun::gather_codes() {
     const MGroup grp = m_group(c);
     if (grp == MGroup::unsupported) fail(errc::gcode_unsupported, "M-code " + t + " is not supported by this reader");
     std::string& seen = seen_m[static_cast<size_t>(grp)];
-    if (!seen.empty())
-      fail(errc::gcode_modal_group, seen + " and " + t + " are in the same modal group: give one");
+    if (!seen.empty()) fail(errc::gcode_modal_group, seen + " and " + t + " are in the same modal group: give one");
     seen = t;
   }
   return k;
@@ -156,8 +198,8 @@ void GcodeInterpreter::LineRun::check_combinations(const Codes& k, int active) {
   if (k.dwell && (has_axes || k.motion != -999))
     fail(errc::gcode_modal_group, "G04 (dwell) cannot share a line with a motion: put it on its own line");
   if (k.home && k.motion != -999)
-    fail(errc::gcode_modal_group, g_text(k.home) + " uses the line's axis words for its intermediate point: put " + word +
-                                      " on another line");
+    fail(errc::gcode_modal_group,
+         g_text(k.home) + " uses the line's axis words for its intermediate point: put " + word + " on another line");
   if (k.machine_coords && !(active == 0 || active == 10))
     fail(errc::gcode_unsupported, "G53 (machine coordinates) applies to a G00 or G01 move on the same line; found " +
                                       (active >= 0 ? wt(active) : std::string("no motion")));
@@ -227,7 +269,7 @@ void GcodeInterpreter::LineRun::set_mode(int c, const std::string& t) {
     const Units u = c == 200 ? Units::inch : Units::mm;
     if (mo.moved && u != st.units)
       fail(errc::gcode_units_change, t + " changes the units after the first move: positions would change meaning; set "
-                               "the units once, before any move");
+                                         "the units once, before any move");
     st.units = u;
     st.units_set = true;
   } else if (c == 900 || c == 910) {
@@ -251,7 +293,8 @@ void GcodeInterpreter::LineRun::set_mode(int c, const std::string& t) {
 void GcodeInterpreter::LineRun::blend() {
   st.path_mode = PathMode::blend;
   if (ln.has('P') && !(val('P') >= 0)) fail(errc::gcode_number, "G64 needs a path tolerance P >= 0, found " + txt('P'));
-  if (ln.has('Q') && !(val('Q') >= 0)) fail(errc::gcode_number, "G64's Q (merge tolerance) must be >= 0, found " + txt('Q'));
+  if (ln.has('Q') && !(val('Q') >= 0))
+    fail(errc::gcode_number, "G64's Q (merge tolerance) must be >= 0, found " + txt('Q'));
   st.path_tolerance = ln.has('P') && val('P') > 0 ? val('P') : std::numeric_limits<double>::infinity();
 }
 
@@ -271,19 +314,23 @@ void GcodeInterpreter::LineRun::tool_length_on() {
 void GcodeInterpreter::LineRun::check_letters(int active, const std::string& extra, bool explicit_motion, Plane plane) {
   std::string allowed = "FST";
   switch (active) {
-    case 0: case 10: allowed += "XYZ"; break;
-    case 20: case 30: allowed += plane == Plane::xy ? "XYZIJR" : plane == Plane::zx ? "XYZIKR" : "XYZJKR"; break;
+    case 0:
+    case 10: allowed += "XYZ"; break;
+    case 20:
+    case 30: allowed += plane == Plane::xy ? "XYZIJR" : plane == Plane::zx ? "XYZIKR" : "XYZJKR"; break;
     case 50: allowed += "XYIJPQ"; break;
     case 51: allowed += "XYIJ"; break;
     case 52: allowed += "XYPL"; break;
-    case 62: case 63: allowed += explicit_motion ? "XYZKRP" : ""; break;
+    case 62:
+    case 63: allowed += explicit_motion ? "XYZKRP" : ""; break;
     default: break;
   }
   allowed += extra;
   for (const Word& w : ln.words) {
     if (allowed.find(w.letter) != std::string::npos) continue;
     if (std::string_view("ABCUVW").find(w.letter) != std::string_view::npos)
-      fail(errc::gcode_unsupported, "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
+      fail(errc::gcode_unsupported,
+           "axis " + std::string(1, w.letter) + " (" + w.text + ") is not supported by this reader: X, Y and Z only");
     if ((active == 20 || active == 30) && std::string_view("IJK").find(w.letter) != std::string_view::npos) {
       const char* words = plane == Plane::xy ? "I and J" : plane == Plane::zx ? "I and K" : "J and K";
       fail(errc::gcode_arc, w.text + ": " + std::string(1, w.letter) + " is not a centre word in the G" +
@@ -295,17 +342,18 @@ void GcodeInterpreter::LineRun::check_letters(int active, const std::string& ext
     if ((active == 62 || active == 63) && !explicit_motion) {
       if (w.letter == 'K')
         fail(errc::gcode_nurbs_start, "K word outside a NURBS block (the last one ended at line " +
-                                std::to_string(mo.nurbs_mode_line) + "): a block starts with " + g_text(active) +
-                                " P- K- X- Y- Z-");
-      fail(errc::gcode_nurbs_mode, w.text + " in NURBS mode (" + g_text(active) + " since line " +
-                             std::to_string(mo.nurbs_mode_line) + ") outside a block: start a new block with " +
-                             g_text(active) + ", or leave the mode with G00 or G01");
+                                          std::to_string(mo.nurbs_mode_line) + "): a block starts with " +
+                                          g_text(active) + " P- K- X- Y- Z-");
+      fail(errc::gcode_nurbs_mode,
+           w.text + " in NURBS mode (" + g_text(active) + " since line " + std::to_string(mo.nurbs_mode_line) +
+               ") outside a block: start a new block with " + g_text(active) + ", or leave the mode with G00 or G01");
     }
     if (std::string_view("XYZ").find(w.letter) != std::string_view::npos)
       fail(errc::gcode_no_motion, w.text + ": axis words without a motion mode (none is active): give G00 or G01");
-    if (w.letter == 'K') fail(errc::gcode_nurbs_start, "K word outside a NURBS block: a block starts with G06.2 P- K- X- Y- Z-");
+    if (w.letter == 'K')
+      fail(errc::gcode_nurbs_start, "K word outside a NURBS block: a block starts with G06.2 P- K- X- Y- Z-");
     fail(errc::gcode_unexpected_word, "word " + w.text + " has no meaning on this line" +
-                                (active >= 0 ? " (" + wt(active) + ")" : std::string()) + ": remove it");
+                                          (active >= 0 ? " (" + wt(active) + ")" : std::string()) + ": remove it");
   }
 }
 

@@ -22,7 +22,8 @@ char* format_number_to(char* buf, double v, int decimals) {
     if (units < 0) *end++ = '-';
     char digits[24];
     int len = 0;
-    for (auto n = static_cast<std::uint64_t>(std::abs(units)); n > 0 || len <= d; n /= 10) digits[len++] = char('0' + n % 10);
+    for (auto n = static_cast<std::uint64_t>(std::abs(units)); n > 0 || len <= d; n /= 10)
+      digits[len++] = char('0' + n % 10);
     while (len > d) *end++ = digits[--len];
     if (d > 0) *end++ = '.';
     while (len > 0) *end++ = digits[--len];

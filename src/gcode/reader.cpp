@@ -48,7 +48,7 @@ void GcodeInterpreter::LineRun::run(std::string_view text) {
   }
   if (mo.end_line)
     fail(errc::gcode_after_end, "the program ended at line " + std::to_string(mo.end_line) +
-                          " (M02/M30): nothing after it runs; remove this line or move the end");
+                                    " (M02/M30): nothing after it runs; remove this line or move the end");
   if (ln.n) check_n();
   if (mo.open != ModalMotion::none) {
     if (continue_block()) return;
@@ -135,8 +135,8 @@ void GcodeInterpreter::LineRun::check_travel(const Box3& b, unsigned axes) const
     if (b.lo[a] < lo || b.hi[a] > hi) {
       const double v = b.lo[a] < lo ? b.lo[a] : b.hi[a];
       soft(errc::gcode_travel, "the move reaches " + axis_name(a) + " = " + fmt_num(v) + " " + unit() +
-                         ", outside the travel of machine \"" + m.name + "\" (" + axis_name(a) + " from " +
-                         fmt_num(lo) + " to " + fmt_num(hi) + " " + unit() + ")");
+                                   ", outside the travel of machine \"" + m.name + "\" (" + axis_name(a) + " from " +
+                                   fmt_num(lo) + " to " + fmt_num(hi) + " " + unit() + ")");
     }
   }
 }
@@ -146,8 +146,8 @@ void GcodeInterpreter::LineRun::check_feed_limit(double feed) {
   const double max = from_mm(self.profile->max_feed_mm_min);
   if (feed > max && feed != mo.feed_reported) {
     mo.feed_reported = feed;  // lint: once per feed value, not on every move at it
-    soft(errc::gcode_feed_limit, "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" + machine() + ", " +
-                     fmt_num(max) + " " + unit() + "/min");
+    soft(errc::gcode_feed_limit, "feed F" + fmt_num(feed) + " (" + unit() + "/min) exceeds the maximum feed" +
+                                     machine() + ", " + fmt_num(max) + " " + unit() + "/min");
   }
 }
 
@@ -238,7 +238,6 @@ void GcodeInterpreter::LineRun::cutter_comp(int code) {
   st.cutter_comp_radius = radius;
 }
 
-
 double GcodeInterpreter::LineRun::weight(const Word& r) const {
   if (!(r.value > 0)) soft(errc::gcode_weight, "weight " + r.text + ": expected a weight R > 0");
   return r.value;
@@ -305,16 +304,19 @@ void GcodeInterpreter::LineRun::motion_line(int code, bool explicit_motion) {
   }
   if (self.profile && explicit_motion) check_dialect(code);
   if (code >= 50 && code <= 52 && st.plane != Plane::xy)
-    fail(errc::gcode_plane, wt(code) + " moves in the XY plane: select it with G17 first (G" + std::to_string(g_number(st.plane)) +
-                                " is in force)");
+    fail(errc::gcode_plane, wt(code) + " moves in the XY plane: select it with G17 first (G" +
+                                std::to_string(g_number(st.plane)) + " is in force)");
   switch (code) {
-    case 0: case 10: linear(code == 0); break;
-    case 20: case 30: arc(code == 20); break;
+    case 0:
+    case 10: linear(code == 0); break;
+    case 20:
+    case 30: arc(code == 20); break;
     case 50: g5(); break;
     case 51: g51(); break;
     case 52: g52(); break;
     case 53: g53(); break;
-    case 62: case 63:
+    case 62:
+    case 63:
       if (!explicit_motion) break;  // K lines are handled by continue_block()
       fanuc_start(code);
       break;
@@ -332,8 +334,8 @@ void GcodeInterpreter::LineRun::check_dialect(int code) const {
     if (m.nurbs != NurbsDialect::fanuc)
       fail(errc::gcode_dialect, "machine \"" + m.name + "\" does not take Fanuc-style NURBS blocks (" + wt(code) + ")");
     if (code != start_code(m.nurbs_start_word))
-      fail(errc::gcode_dialect, "machine \"" + m.name + "\" starts a NURBS block with " + m.nurbs_start_word + ", not " +
-                          wt(code));
+      fail(errc::gcode_dialect,
+           "machine \"" + m.name + "\" starts a NURBS block with " + m.nurbs_start_word + ", not " + wt(code));
   }
 }
 
@@ -401,7 +403,8 @@ void GcodeInterpreter::LineRun::arc(bool cw) {
   const int ia = world_axis(pl, 0), ib = world_axis(pl, 1);
   const char la = "IJK"[ia], lb = "IJK"[ib];
   const std::string words = std::string(1, std::min(la, lb)) + " and " + std::string(1, std::max(la, lb));
-  const std::string g = std::string(cw ? "G02" : "G03") + (pl == Plane::xy ? "" : " (G" + std::to_string(g_number(pl)) + ")");
+  const std::string g =
+      std::string(cw ? "G02" : "G03") + (pl == Plane::xy ? "" : " (G" + std::to_string(g_number(pl)) + ")");
   const bool ij = ln.has(la) || ln.has(lb), r = ln.has('R');
   if (ij && r) fail(errc::gcode_arc, g + ": give either " + words + " (the centre) or R (the radius), not both");
   if (!ij && !r) fail(errc::gcode_arc, g + " needs the centre offsets " + words + " (or a radius R)");
@@ -427,11 +430,12 @@ void GcodeInterpreter::LineRun::arc(bool cw) {
                                 " (a full circle needs " + words + ")");
     const double dx = lt.x - lf.x, dy = lt.y - lf.y, d = std::hypot(dx, dy);
     const double R = val('R');
-    if (d == 0) fail(errc::gcode_arc, g + " with R: the end point equals the start point; give a full circle with I and J");
+    if (d == 0)
+      fail(errc::gcode_arc, g + " with R: the end point equals the start point; give a full circle with I and J");
     const double tol = arc_tolerance();
     if (std::abs(R) < d / 2 - tol)
       fail(errc::gcode_arc, txt('R') + " is too small for the chord of " + fmt_num(d) + " " + unit() +
-                      " between start and end (the radius must be at least half of it)");
+                                " between start and end (the radius must be at least half of it)");
     const double h = std::sqrt(std::max(0.0, R * R - d * d / 4));
     // Centre left of the chord for a minor CCW arc or a major CW one.
     const double side = ((!cw) == (R > 0)) ? 1.0 : -1.0;
@@ -440,16 +444,18 @@ void GcodeInterpreter::LineRun::arc(bool cw) {
   }
   const double r0 = std::hypot(lf.x - c.x, lf.y - c.y), r1 = std::hypot(lt.x - c.x, lt.y - c.y);
   if (r0 == 0)
-    fail(errc::gcode_arc, g + ": the centre coincides with the start point (" + words +
-                              (st.arc_centers == ArcCenterMode::absolute ? " name the start point in G90.1)" : " are both 0)"));
+    fail(errc::gcode_arc,
+         g + ": the centre coincides with the start point (" + words +
+             (st.arc_centers == ArcCenterMode::absolute ? " name the start point in G90.1)" : " are both 0)"));
   const double tol = arc_tolerance();
   const double slack = 1e-12 * std::max({1.0, max_abs(from), max_abs(to), max_abs(c)});
   if (std::abs(r0 - r1) > tol + slack)
     soft(errc::gcode_arc_radius, g + ": the centre (" + fmt_num(from_plane(c, pl)[std::min(ia, ib)]) + ", " +
                                      fmt_num(from_plane(c, pl)[std::max(ia, ib)]) + ") is " + fmt_num(r0) +
-                           " from the start and " + fmt_num(r1) + " from the end; they differ by " +
-                           fmt_num(std::abs(r0 - r1)) + " " + unit() + ", more than the arc tolerance" + machine() +
-                           " (" + fmt_num(tol) + " " + unit() + "): the end point or the centre is wrong");
+                                     " from the start and " + fmt_num(r1) + " from the end; they differ by " +
+                                     fmt_num(std::abs(r0 - r1)) + " " + unit() + ", more than the arc tolerance" +
+                                     machine() + " (" + fmt_num(tol) + " " + unit() +
+                                     "): the end point or the centre is wrong");
   MotionBlock b = block(cw ? BlockKind::arc_cw : BlockKind::arc_ccw, to);
   b.center = from_plane(c, pl);  // along the plane's axis: the start's
   b.plane = pl;
@@ -554,9 +560,9 @@ std::vector<MotionBlock> GcodeInterpreter::finish() {
   if (more.open != ModalMotion::none) {
     const bool fanuc = more.open != ModalMotion::nurbs_g5_2;
     const std::string msg =
-        fanuc ? "the program ends inside the NURBS block opened at line " + std::to_string(more.open_line) + ": it has " +
-                    std::to_string(more.ctrl.size()) + " control points and " + std::to_string(more.knot_only) +
-                    " of its " + std::to_string(more.order) + " knot-only K blocks"
+        fanuc ? "the program ends inside the NURBS block opened at line " + std::to_string(more.open_line) +
+                    ": it has " + std::to_string(more.ctrl.size()) + " control points and " +
+                    std::to_string(more.knot_only) + " of its " + std::to_string(more.order) + " knot-only K blocks"
               : "the program ends inside the G5.2 block opened at line " + std::to_string(more.open_line) +
                     ": close it with G5.3";
     throw InputError(errc::gcode_nurbs_open, Place::at_line(std::max(more.last_line, 1)), msg);

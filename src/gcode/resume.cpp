@@ -39,7 +39,6 @@ std::vector<std::string_view> split_lines(std::string_view text) {
   return out;
 }
 
-
 std::string motion_word(ModalMotion m) {
   switch (m) {
     case ModalMotion::none: return "G80";
@@ -57,9 +56,7 @@ std::string motion_word(ModalMotion m) {
 }
 
 // The motions a preamble restores with a word alone, without moving.
-bool restorable(ModalMotion m) {
-  return m == ModalMotion::none || m == ModalMotion::rapid || m == ModalMotion::feed;
-}
+bool restorable(ModalMotion m) { return m == ModalMotion::none || m == ModalMotion::rapid || m == ModalMotion::feed; }
 
 // Why a cut may not begin at a line (lexed as `ln`) with the reader in
 // `st` / `c` before it; "" when it may.
@@ -99,18 +96,23 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
   std::string modes = "G" + std::to_string(g_number(st.plane)) + " G90 G94 G40";
   if (st.units_set) modes += st.units == Units::inch ? " G20" : " G21";
   modes += " G" + std::to_string(static_cast<int>(st.coord_system));
-  if (st.path_mode == PathMode::exact_path) modes += " G61.1";
+  if (st.path_mode == PathMode::exact_path)
+    modes += " G61.1";
   else if (st.path_mode == PathMode::blend && std::isfinite(st.path_tolerance) && st.path_tolerance > 0)
     modes += " G64 P" + format_exact_fixed(st.path_tolerance);  // the tolerance in force, not only the mode
-  else if (st.path_mode != PathMode::unset) modes += " G" + std::to_string(static_cast<int>(st.path_mode));
-  if (st.arc_centers == ArcCenterMode::absolute) modes += " G90.1";  // only a program that used it: not every controller knows it
+  else if (st.path_mode != PathMode::unset)
+    modes += " G" + std::to_string(static_cast<int>(st.path_mode));
+  if (st.arc_centers == ArcCenterMode::absolute)
+    modes += " G90.1";  // only a program that used it: not every controller knows it
   out.push_back(modes);
   if (st.tool > 0) out.push_back("T" + std::to_string(st.tool) + " M06");
   const int sel = s.cont.selected_tool;
   if (sel >= 0 && !(st.tool > 0 && sel == st.tool)) out.push_back("T" + std::to_string(sel));
   if (st.tool_length_comp) out.push_back("G43 H" + std::to_string(st.tool_length_h));
-  if (st.spindle_on) out.push_back("S" + format_exact_fixed(st.spindle_rpm) + (st.spindle_ccw ? " M04" : " M03"));
-  else if (st.spindle_rpm != 0) out.push_back("S" + format_exact_fixed(st.spindle_rpm));
+  if (st.spindle_on)
+    out.push_back("S" + format_exact_fixed(st.spindle_rpm) + (st.spindle_ccw ? " M04" : " M03"));
+  else if (st.spindle_rpm != 0)
+    out.push_back("S" + format_exact_fixed(st.spindle_rpm));
   if (st.coolant_mist) out.push_back("M07");
   if (st.coolant_flood) out.push_back("M08");
 
@@ -189,11 +191,15 @@ ResumePlan plan_resume(std::string_view program, const MachineProfile* profile, 
   if (!safe_mm && profile) safe_mm = profile->defaults.safe_z;
   if (!plunge_mm && profile) plunge_mm = profile->defaults.plunge_feed;
   const std::string from_where = profile ? ", and machine \"" + profile->name + "\" has no default" : "";
-  if (!safe_mm) throw InputError(errc::resume_setting, Place::at_setting("safe_z"), "the safe height to retract to is not given" + from_where);
+  if (!safe_mm)
+    throw InputError(errc::resume_setting, Place::at_setting("safe_z"),
+                     "the safe height to retract to is not given" + from_where);
   if (!plunge_mm)
-    throw InputError(errc::resume_setting, Place::at_setting("plunge_feed"), "the plunge feed is not given" + from_where);
+    throw InputError(errc::resume_setting, Place::at_setting("plunge_feed"),
+                     "the plunge feed is not given" + from_where);
   if (!std::isfinite(*safe_mm))
-    throw InputError(errc::resume_setting, Place::at_setting("safe_z"), "expected a finite safe height, found " + fmt_num(*safe_mm));
+    throw InputError(errc::resume_setting, Place::at_setting("safe_z"),
+                     "expected a finite safe height, found " + fmt_num(*safe_mm));
   if (!(*plunge_mm > 0) || !std::isfinite(*plunge_mm))
     throw InputError(errc::resume_setting, Place::at_setting("plunge_feed"),
                      "expected a plunge feed > 0 mm/min, found " + fmt_num(*plunge_mm));
@@ -211,8 +217,8 @@ ResumePlan plan_resume(std::string_view program, const MachineProfile* profile, 
     } catch (const InputError& e) {
       if (l == line) throw;  // the asked line itself cannot be read
       throw InputError(errc::resume_state_unknown, Place::at_line(l),
-                       "cannot resume at line " + std::to_string(line) + ": the modal state before it cannot be known: " +
-                           e.message() + " [" + e.id() + "]");
+                       "cannot resume at line " + std::to_string(line) +
+                           ": the modal state before it cannot be known: " + e.message() + " [" + e.id() + "]");
     }
     const bool code = !(ln.percent || ln.program_number || ln.empty());
     if (l == line && !code)
@@ -276,7 +282,8 @@ ResumePlan plan_resume(std::string_view program, const MachineProfile* profile, 
                            ": " + d);
 
   // The tail: the original text from the start line on, byte for byte.
-  const std::size_t offset = static_cast<std::size_t>(lines[static_cast<size_t>(snap.line - 1)].data() - program.data());
+  const std::size_t offset =
+      static_cast<std::size_t>(lines[static_cast<size_t>(snap.line - 1)].data() - program.data());
   plan.program = plan.preamble;
   plan.program.append(program.substr(offset));
   return plan;

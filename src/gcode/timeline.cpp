@@ -16,7 +16,8 @@ void add_to_timeline(Timeline& tl, const std::vector<MotionBlock>& blocks, const
   auto pause = [&](PlanPause::Kind k, double s) { tl.pauses.push_back({k, s, line_no, tl.blocks.size()}); };
   if (after.tool != before.tool) pause(PlanPause::Kind::tool_change, 0);
   if (after.spindle_on && !before.spindle_on) pause(PlanPause::Kind::spindle_start, 0);
-  if (after.dwell_seconds > before.dwell_seconds) pause(PlanPause::Kind::dwell, after.dwell_seconds - before.dwell_seconds);
+  if (after.dwell_seconds > before.dwell_seconds)
+    pause(PlanPause::Kind::dwell, after.dwell_seconds - before.dwell_seconds);
   for (const MotionBlock& b : blocks) {
     tl.blocks.push_back(b);
     tl.path_tolerance.push_back(after.path_tolerance);

@@ -1,8 +1,5 @@
 #include "bezcam/gcode/writer.hpp"
 
-#include "bezcam/machine/planner.hpp"
-#include "bezcam/version.hpp"
-
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -10,11 +7,11 @@
 #include <stdexcept>
 
 #include "bezcam/cam/program_motion.hpp"
-#include "bezcam/machine/motion.hpp"
-
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/limits.hpp"
-
+#include "bezcam/machine/motion.hpp"
+#include "bezcam/machine/planner.hpp"
+#include "bezcam/version.hpp"
 
 namespace bezcam {
 
@@ -32,10 +29,14 @@ std::string comment(const std::string& text) {
   // A long id must not make a line longer than a reader takes (limits.hpp).
   const bool cut = text.size() > kMaxCommentBytes;
   for (unsigned char ch : cut ? text.substr(0, kMaxCommentBytes - 3) + "..." : text) {
-    if (ch == '(') s += '[';
-    else if (ch == ')') s += ']';
-    else if (ch < 32 || ch > 126) s += '?';
-    else s += static_cast<char>(ch);
+    if (ch == '(')
+      s += '[';
+    else if (ch == ')')
+      s += ']';
+    else if (ch < 32 || ch > 126)
+      s += '?';
+    else
+      s += static_cast<char>(ch);
   }
   return "(" + s + ")";
 }
@@ -62,8 +63,8 @@ class Writer {
     // formatter: 5e-07 inch is not "0.".
     const auto sig = [](double v) { return format_significant(v, 4); };
     note("tolerance " + format_significant(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
-         measured_text(p_.max_measured, p_.max_bound, p_.tolerance, sig) + " " + u + ", proven bound " + sig(p_.max_bound) + " " +
-         u + ", rounding included");
+         measured_text(p_.max_measured, p_.max_bound, p_.tolerance, sig) + " " + u + ", proven bound " +
+         sig(p_.max_bound) + " " + u + ", rounding included");
     if (m_.comments) {
       tools();
       registers();
@@ -75,8 +76,10 @@ class Writer {
     for (const Move& mv : p_.moves) move(mv);
     plane(Plane::xy);  // the program ends in G17, as it began
     for (const auto& f : m_.footer) {
-      if (!f.empty() && f[0] == '%') raw(subst(f));
-      else line(subst(f));
+      if (!f.empty() && f[0] == '%')
+        raw(subst(f));
+      else
+        line(subst(f));
     }
     if (sink_) {
       (*sink_)(out_);
@@ -107,15 +110,18 @@ class Writer {
     std::vector<std::pair<int, std::string>> list;
     for (const EntityReport& e : p_.entities) {
       auto it = std::find_if(list.begin(), list.end(), [&](const auto& t) { return t.first == e.tool; });
-      if (it == list.end()) list.push_back({e.tool, e.label});
-      else it->second += ", " + e.label;
+      if (it == list.end())
+        list.push_back({e.tool, e.label});
+      else
+        it->second += ", " + e.label;
     }
     if (list.empty() || (list.size() == 1 && list.front().first < 0)) return;
     for (const auto& [tool, labels] : list) {
       std::string what;
       const auto t = std::find_if(p_.tools.begin(), p_.tools.end(), [&](const JobTool& j) { return j.number == tool; });
       if (t != p_.tools.end() && t->diameter)
-        what = format_significant(*t->diameter, 6) + (p_.units == Units::inch ? " in " : " mm ") + to_string(t->shape) + ": ";
+        what = format_significant(*t->diameter, 6) + (p_.units == Units::inch ? " in " : " mm ") + to_string(t->shape) +
+               ": ";
       note("T" + std::to_string(tool) + ": " + what + labels);
     }
   }
@@ -124,14 +130,15 @@ class Writer {
   void registers() {
     std::vector<std::pair<int, double>> regs;  // D, radius, in the order first used
     for (const Move& mv : p_.moves)
-      if (const auto* cc = std::get_if<CompensationMove>(&mv.what); cc && cc->side != 0 &&
+      if (const auto* cc = std::get_if<CompensationMove>(&mv.what);
+          cc && cc->side != 0 &&
           std::none_of(regs.begin(), regs.end(), [&](const auto& r) { return r.first == cc->d; }))
         regs.push_back({cc->d, cc->radius});
     const char* unit = p_.units == Units::inch ? " in" : " mm";
     for (const auto& [d, r] : regs) {
       char b[128];
-      std::snprintf(b, sizeof b, "D%d: tool radius %s%s (diameter %s%s) for G41/G42", d, format_significant(r, 6).c_str(),
-                    unit, format_significant(2 * r, 6).c_str(), unit);
+      std::snprintf(b, sizeof b, "D%d: tool radius %s%s (diameter %s%s) for G41/G42", d,
+                    format_significant(r, 6).c_str(), unit, format_significant(2 * r, 6).c_str(), unit);
       note(b);
     }
   }
@@ -142,14 +149,17 @@ class Writer {
     auto when = [](double s) {
       char b[96];
       const long whole = s > 0 ? std::max(1L, std::lround(s)) : 0L;
-      if (whole >= 3600) std::snprintf(b, sizeof b, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60, whole % 60);
-      else if (whole >= 60) std::snprintf(b, sizeof b, "%ld min %02ld s", whole / 60, whole % 60);
-      else std::snprintf(b, sizeof b, "%ld s", whole);
+      if (whole >= 3600)
+        std::snprintf(b, sizeof b, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60, whole % 60);
+      else if (whole >= 60)
+        std::snprintf(b, sizeof b, "%ld min %02ld s", whole / 60, whole % 60);
+      else
+        std::snprintf(b, sizeof b, "%ld s", whole);
       return std::string(b);
     };
     if (m_.motion) {
-      const double cycle = plan_ ? plan_->cycle_time_s
-                                 : plan_motion(program_timeline(p_), *m_.motion, PlanDetail::summary).cycle_time_s;
+      const double cycle =
+          plan_ ? plan_->cycle_time_s : plan_motion(program_timeline(p_), *m_.motion, PlanDetail::summary).cycle_time_s;
       note("estimated cycle time " + when(cycle) + " on the motion model of machine " + m_.name +
            " (acceleration, corners, tool changes)");
       return;
@@ -262,7 +272,9 @@ class Writer {
     } else if (const auto* d = std::get_if<Dwell>(&mv.what)) {
       line(word("G4", "G04") + " P" + format_number(d->seconds, 3));
     } else if (const auto* cl = std::get_if<CoolantMove>(&mv.what)) {
-      line(cl->mode == Coolant::flood ? word("M8", "M08") : cl->mode == Coolant::mist ? word("M7", "M07") : word("M9", "M09"));
+      line(cl->mode == Coolant::flood  ? word("M8", "M08")
+           : cl->mode == Coolant::mist ? word("M7", "M07")
+                                       : word("M9", "M09"));
     } else if (const auto* st = std::get_if<ProgramStop>(&mv.what)) {
       line(word("M0", "M00") + " " + comment(st->message));  // the operator's message, even without comments
     } else if (const auto* cc = std::get_if<CompensationMove>(&mv.what)) {
@@ -348,9 +360,7 @@ class Writer {
   void fanuc_block(const CurveMove& mv) {
     const bool fx = m_.nurbs_fixed_decimals;
     auto coord = [&](double v) { return fx ? fixed(v, p_.decimals) : num(v); };
-    auto knot = [&](double k) {
-      return "K" + (fx ? fixed(k, m_.knot_decimals) : format_number(k, m_.knot_decimals));
-    };
+    auto knot = [&](double k) { return "K" + (fx ? fixed(k, m_.knot_decimals) : format_number(k, m_.knot_decimals)); };
     auto point = [&](size_t i) {
       const Vec3& p = mv.ctrl[i];
       const double w = mv.weights.empty() ? 1.0 : mv.weights[i];
@@ -376,10 +386,11 @@ class Writer {
   // weight and the order on the G5.2 line; X Y P per further point (P
   // always: older versions do not default it to 1).
   void g52_block(const CurveMove& mv) {
-    auto w = [&](size_t i) { return "P" + format_number(mv.weights.empty() ? 1.0 : mv.weights[i], m_.weight_decimals); };
+    auto w = [&](size_t i) {
+      return "P" + format_number(mv.weights.empty() ? 1.0 : mv.weights[i], m_.weight_decimals);
+    };
     line(join({"G5.2", w(0), "L" + std::to_string(mv.order), feed(mv.feed)}));
-    for (size_t i = 1; i < mv.ctrl.size(); ++i)
-      line(join({"X" + num(mv.ctrl[i].x), "Y" + num(mv.ctrl[i].y), w(i)}));
+    for (size_t i = 1; i < mv.ctrl.size(); ++i) line(join({"X" + num(mv.ctrl[i].x), "Y" + num(mv.ctrl[i].y), w(i)}));
     line("G5.3");
     motion_.clear();
     arrived({mv.ctrl.back().x, mv.ctrl.back().y, pos_.z});
@@ -406,7 +417,7 @@ class Writer {
   std::string out_, line_;
   int n_ = m_.line_start;
   std::string axis_[3], motion_, feed_;
-  Vec3 pos_;  // current position as printed
+  Vec3 pos_;                 // current position as printed
   Plane plane_ = Plane::xy;  // the arc plane in force (the units line sets G17)
 };
 

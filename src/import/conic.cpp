@@ -8,8 +8,8 @@ namespace bezcam::import {
 
 Affine Affine::after(const Affine& o) const {
   // this * o, as 3x3 matrices [a c e; b d f; 0 0 1].
-  return {a * o.a + c * o.b, b * o.a + d * o.b, a * o.c + c * o.d, b * o.c + d * o.d, a * o.e + c * o.f + e,
-          b * o.e + d * o.f + f};
+  return {a * o.a + c * o.b, b * o.a + d * o.b,     a * o.c + c * o.d,
+          b * o.c + d * o.d, a * o.e + c * o.f + e, b * o.e + d * o.f + f};
 }
 
 Piece line_piece(const Vec3& a, const Vec3& b) {
@@ -58,7 +58,8 @@ std::vector<Piece> ellipse_arc(const Vec3& center, const Vec3& u, const Vec3& v,
     out.push_back(std::move(p));
   }
   // Shared ends are the same double, so consecutive pieces meet exactly.
-  for (int i = 1; i < n; ++i) out[static_cast<size_t>(i)].points.front() = out[static_cast<size_t>(i) - 1].points.back();
+  for (int i = 1; i < n; ++i)
+    out[static_cast<size_t>(i)].points.front() = out[static_cast<size_t>(i) - 1].points.back();
   return out;
 }
 

@@ -70,7 +70,8 @@ void meet(std::vector<Piece>& pieces, size_t i) {
 
 Vec3 Piece::end() const {
   if (!bspline || clamped_end(*this)) return points.back();
-  return evaluate(NurbsCurve::make(degree, points, knots, weights), knots[knots.size() - 1 - static_cast<size_t>(degree)]);
+  return evaluate(NurbsCurve::make(degree, points, knots, weights),
+                  knots[knots.size() - 1 - static_cast<size_t>(degree)]);
 }
 
 double Drawing::size() const {

@@ -135,8 +135,9 @@ void add_entity(JobBuilder& b, const Contour& c, std::size_t index, double scale
     const std::string path = e.place().json_path.value_or("");
     if (!path.starts_with("entities[")) throw;
     const std::size_t dot = path.find('.', std::string("entities[").size());
-    throw InputError(e.id(), Place::in_json(source, "entities[" + std::to_string(index) + "]",
-                                            dot == std::string::npos ? std::string() : path.substr(dot + 1)),
+    throw InputError(e.id(),
+                     Place::in_json(source, "entities[" + std::to_string(index) + "]",
+                                    dot == std::string::npos ? std::string() : path.substr(dot + 1)),
                      e.message());
   }
 }
@@ -181,8 +182,9 @@ void add_geometry(JobBuilder& b, const std::vector<const Contour*>& kept, double
                   const std::vector<std::string>& sides, const std::string& source) {
   if (kept.size() > kMaxEntities)
     throw InputError(errc::limit_entities, Place::in_json(source, "entities"),
-                     "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md), found " +
-                         std::to_string(kept.size()) + "; split the job into several files");
+                     "expected at most " + std::to_string(kMaxEntities) +
+                         " entities in one job (docs/limits.md), found " + std::to_string(kept.size()) +
+                         "; split the job into several files");
   PointLimits limits{source};
   std::vector<InputError> errors;
   for (std::size_t k = 0; k < kept.size(); ++k) {
@@ -245,8 +247,10 @@ std::string refused_setting(const InputError& e, const ImportOptions& opt) {
   const auto names = [](const std::string& p) {
     std::vector<std::string> out(1);
     for (const char c : p) {
-      if (c == '.' || c == '[') out.emplace_back();
-      else out.back() += c;
+      if (c == '.' || c == '[')
+        out.emplace_back();
+      else
+        out.back() += c;
     }
     return out;
   };

@@ -14,9 +14,9 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/import/conic.hpp"
-#include "bezcam/limits.hpp"
 #include "bezcam/kernel/knot_vector.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
+#include "bezcam/limits.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -64,8 +64,10 @@ class Reader {
   [[noreturn]] void fail(ErrorId id, const Entity& e, const Group* g, const std::string& what) const {
     const std::string h = e.handle();
     std::string where = e.type + (h.empty() ? "" : " (handle " + h + ")");
-    if (g) where += ", group code " + std::to_string(g->code) + " on line " + std::to_string(g->line);
-    else where += " on line " + std::to_string(e.line);
+    if (g)
+      where += ", group code " + std::to_string(g->code) + " on line " + std::to_string(g->line);
+    else
+      where += " on line " + std::to_string(e.line);
     throw InputError(id, Place::at_file(source_), where + ": " + what);
   }
 
@@ -97,8 +99,9 @@ class Reader {
       if (g.code == code) {
         const double v = number(e, g);
         if (v != std::floor(v) || v < lo || v > hi)
-          fail(errc::import_dxf_syntax, e, &g, "expected a whole number from " + std::to_string(lo) + " to " +
-                                                   std::to_string(hi) + ", found " + g.value);
+          fail(errc::import_dxf_syntax, e, &g,
+               "expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " +
+                   g.value);
         return static_cast<int>(v);
       }
     return dflt;
@@ -119,9 +122,12 @@ class Reader {
   std::vector<Vec3> points(const Entity& e, int code) const {
     std::vector<Vec3> v;
     for (const Group& g : e.groups) {
-      if (g.code == code) v.push_back({number(e, g), 0, 0});
-      else if (g.code == code + 10 && !v.empty()) v.back().y = number(e, g);
-      else if (g.code == code + 20 && !v.empty()) v.back().z = number(e, g);
+      if (g.code == code)
+        v.push_back({number(e, g), 0, 0});
+      else if (g.code == code + 10 && !v.empty())
+        v.back().y = number(e, g);
+      else if (g.code == code + 20 && !v.empty())
+        v.back().z = number(e, g);
     }
     return v;
   }
@@ -156,7 +162,8 @@ class Reader {
   void emit_spline(const Entity& e, Contour c, const Affine& m);
   Piece spline_piece(const Entity& e, int degree, std::vector<Vec3> cps, std::vector<double> knots,
                      std::vector<double> weights) const;
-  void emit_insert(const Entity& e, const Affine& m, const Vec3& ext, const std::string& layer, const std::string& prefix);
+  void emit_insert(const Entity& e, const Affine& m, const Vec3& ext, const std::string& layer,
+                   const std::string& prefix);
   void add(Contour c, const Affine& m, const std::string& kind);
 };
 
@@ -188,10 +195,12 @@ void Reader::split(std::string_view text) {
         throw InputError(errc::import_not_a_drawing, Place::at_file(source_),
                          "expected a DXF drawing (group code 0, then SECTION), found \"" +
                              std::string(c.substr(0, 20)) + "\" on line " + std::to_string(lines[i].second));
-      fail(errc::import_dxf_syntax, lines[i].second, "expected a group code (an integer), found \"" + std::string(c.substr(0, 20)) + "\"");
+      fail(errc::import_dxf_syntax, lines[i].second,
+           "expected a group code (an integer), found \"" + std::string(c.substr(0, 20)) + "\"");
     }
     if (i + 1 >= lines.size())
-      fail(errc::import_dxf_syntax, lines[i].second, "the file ends after group code " + std::to_string(code) + ", before its value (truncated?)");
+      fail(errc::import_dxf_syntax, lines[i].second,
+           "the file ends after group code " + std::to_string(code) + ", before its value (truncated?)");
     std::string_view v = lines[i + 1].first;
     if (code == 999) continue;  // a comment (LibreCAD writes its name there)
     // Strings keep their spaces; numbers and names are trimmed.
@@ -203,9 +212,9 @@ void Reader::split(std::string_view text) {
                          (groups_.empty() ? std::string("no groups") : "\"" + groups_[0].value.substr(0, 20) + "\""));
   const Group& last = groups_.back();
   if (!(last.code == 0 && last.value == "EOF"))
-    fail(errc::import_dxf_syntax, last.line, "expected the file to end with group 0 EOF, found group code " +
-                                                 std::to_string(last.code) + " \"" + last.value.substr(0, 20) +
-                                                 "\" (the file is truncated)");
+    fail(errc::import_dxf_syntax, last.line,
+         "expected the file to end with group 0 EOF, found group code " + std::to_string(last.code) + " \"" +
+             last.value.substr(0, 20) + "\" (the file is truncated)");
 }
 
 Entity Reader::entity() {
@@ -225,14 +234,14 @@ void Reader::header() {
     if (groups_[at_].code == 9 && groups_[at_].value == "$INSUNITS" && at_ + 1 < groups_.size()) {
       const Group& g = groups_[at_ + 1];
       static const std::map<std::string, double> mm = {
-          {"0", 1},     {"1", 25.4},    {"2", 304.8}, {"3", 1609344}, {"4", 1},      {"5", 10},    {"6", 1000},
-          {"7", 1e6},   {"8", 2.54e-5}, {"9", 0.0254}, {"10", 914.4}, {"11", 1e-7},  {"12", 1e-6}, {"13", 1e-3},
-          {"14", 100},  {"15", 1e4},    {"16", 1e5}};
+          {"0", 1},     {"1", 25.4},  {"2", 304.8},   {"3", 1609344}, {"4", 1},      {"5", 10},
+          {"6", 1000},  {"7", 1e6},   {"8", 2.54e-5}, {"9", 0.0254},  {"10", 914.4}, {"11", 1e-7},
+          {"12", 1e-6}, {"13", 1e-3}, {"14", 100},    {"15", 1e4},    {"16", 1e5}};
       const auto it = mm.find(g.value);
       if (g.code != 70 || it == mm.end())
-        fail(errc::import_units, g.line, "$INSUNITS, group code " + std::to_string(g.code) +
-                                             ": expected units 0 to 16 (0 unitless, 1 inch, 4 mm, 5 cm, 6 m ...), found \"" +
-                                             g.value + "\"");
+        fail(errc::import_units, g.line,
+             "$INSUNITS, group code " + std::to_string(g.code) +
+                 ": expected units 0 to 16 (0 unitless, 1 inch, 4 mm, 5 cm, 6 m ...), found \"" + g.value + "\"");
       unit_ = it->second;
     }
   }
@@ -295,7 +304,8 @@ void Reader::add(Contour c, const Affine& m, const std::string& kind) {
   // Joints meet exactly.
   for (size_t i = 1; i < c.pieces.size(); ++i)
     if (!c.pieces[i].bspline) c.pieces[i].points.front() = c.pieces[i - 1].end();
-  if (c.closed && !c.pieces.empty() && !c.pieces.back().bspline) c.pieces.back().points.back() = c.pieces.front().start();
+  if (c.closed && !c.pieces.empty() && !c.pieces.back().bspline)
+    c.pieces.back().points.back() = c.pieces.front().start();
   d_.layers[c.layer].read[kind] += 1;
   d_.contours.push_back(std::move(c));
 }
@@ -346,7 +356,9 @@ std::optional<Piece> fit_spline(const std::vector<Vec3>& q, Vec3 t0, Vec3 t1) {
   std::vector<std::array<double, 2 * w + 1>> a(rows);
   for (auto& r : a) r.fill(0);
   std::vector<Vec3> b(rows);
-  const auto at = [&](size_t r, size_t c) -> double& { return a[r][static_cast<size_t>(static_cast<long>(c) - static_cast<long>(r) + w)]; };
+  const auto at = [&](size_t r, size_t c) -> double& {
+    return a[r][static_cast<size_t>(static_cast<long>(c) - static_cast<long>(r) + w)];
+  };
   at(0, 0) = 1, b[0] = q[0];
   at(1, 0) = -1, at(1, 1) = 1, b[1] = d0 * (u[4] / 3);
   for (size_t k = 1; k < n; ++k) {
@@ -393,13 +405,20 @@ void Reader::emit(const Entity& e, const Affine& m, const std::string& layer_in,
   // The extrusion direction (group codes 210, 220, 230), read and checked
   // for every entity.
   const Vec3 ext = vec(e, 210, {0, 0, 1});
-  if (e.type == "LINE") emit_line(e, std::move(c), m);
-  else if (e.type == "CIRCLE" || e.type == "ARC") emit_arc(e, std::move(c), m, ext);
-  else if (e.type == "ELLIPSE") emit_ellipse(e, std::move(c), m, ext);
-  else if (e.type == "LWPOLYLINE" || e.type == "POLYLINE") emit_polyline(e, std::move(c), m, ext);
-  else if (e.type == "SPLINE") emit_spline(e, std::move(c), m);
-  else if (e.type == "INSERT") emit_insert(e, m, ext, layer, prefix);
-  else d_.layers[layer].skipped[e.type] += 1;
+  if (e.type == "LINE")
+    emit_line(e, std::move(c), m);
+  else if (e.type == "CIRCLE" || e.type == "ARC")
+    emit_arc(e, std::move(c), m, ext);
+  else if (e.type == "ELLIPSE")
+    emit_ellipse(e, std::move(c), m, ext);
+  else if (e.type == "LWPOLYLINE" || e.type == "POLYLINE")
+    emit_polyline(e, std::move(c), m, ext);
+  else if (e.type == "SPLINE")
+    emit_spline(e, std::move(c), m);
+  else if (e.type == "INSERT")
+    emit_insert(e, m, ext, layer, prefix);
+  else
+    d_.layers[layer].skipped[e.type] += 1;
 }
 
 void Reader::emit_line(const Entity& e, Contour c, const Affine& m) {
@@ -449,9 +468,12 @@ void Reader::emit_polyline(const Entity& e, Contour c, const Affine& m, const Ve
   std::vector<double> bulges;
   if (e.type == "LWPOLYLINE") {
     for (const Group& g : e.groups) {
-      if (g.code == 10) vs.push_back({number(e, g), 0, 0}), bulges.push_back(0);
-      else if (g.code == 20 && !vs.empty()) vs.back().y = number(e, g);
-      else if (g.code == 42 && !vs.empty()) bulges.back() = number(e, g);
+      if (g.code == 10)
+        vs.push_back({number(e, g), 0, 0}), bulges.push_back(0);
+      else if (g.code == 20 && !vs.empty())
+        vs.back().y = number(e, g);
+      else if (g.code == 42 && !vs.empty())
+        bulges.back() = number(e, g);
     }
   } else {
     if ((integer(e, 70, 0) & (16 | 64)) != 0) {  // meshes are not curves
@@ -481,17 +503,19 @@ Piece Reader::spline_piece(const Entity& e, int degree, std::vector<Vec3> cps, s
   for (const Group& g : e.groups)
     if (g.code == 40) {
       if (kg && number(e, g) < number(e, *kg))
-        fail(errc::import_knots, e, &g, "expected a knot >= " + kg->value + " (knots must not decrease), found " + g.value);
+        fail(errc::import_knots, e, &g,
+             "expected a knot >= " + kg->value + " (knots must not decrease), found " + g.value);
       kg = &g;
     }
   if (knots.size() != cps.size() + static_cast<size_t>(degree) + 1)
-    fail(errc::import_knots, e, nullptr, "expected " + std::to_string(cps.size() + static_cast<size_t>(degree) + 1) +
-                                              " knots (group code 40) for " + std::to_string(cps.size()) +
-                                              " control points of degree " + std::to_string(degree) + ", found " +
-                                              std::to_string(knots.size()));
+    fail(errc::import_knots, e, nullptr,
+         "expected " + std::to_string(cps.size() + static_cast<size_t>(degree) + 1) + " knots (group code 40) for " +
+             std::to_string(cps.size()) + " control points of degree " + std::to_string(degree) + ", found " +
+             std::to_string(knots.size()));
   if (!weights.empty() && weights.size() != cps.size())
-    fail(errc::import_knots, e, nullptr, "expected one weight (group code 41) per control point (" +
-                                              std::to_string(cps.size()) + "), found " + std::to_string(weights.size()));
+    fail(errc::import_knots, e, nullptr,
+         "expected one weight (group code 41) per control point (" + std::to_string(cps.size()) + "), found " +
+             std::to_string(weights.size()));
   if (std::all_of(weights.begin(), weights.end(), [&](double w) { return w == weights.front(); })) weights.clear();
   Piece p;
   p.bspline = true;
@@ -516,11 +540,14 @@ void Reader::emit_spline(const Entity& e, Contour c, const Affine& m) {
   std::vector<double> knots = all(e, 40), weights = all(e, 41);
   if (!cps.empty()) {
     c.pieces.push_back(spline_piece(e, degree, std::move(cps), std::move(knots), std::move(weights)));
-    c.closed = (flags & 1) != 0 && dist(c.pieces[0].start(), c.pieces[0].end()) <= 1e-9 * (1 + max_abs(c.pieces[0].start()));
-  } else if (std::vector<Vec3> fit = points(e, 11); fit.size() >= 2 && has(e, 12) && has(e, 13) &&
-                                                       norm(vec(e, 12)) > 0 && norm(vec(e, 13)) > 0) {
+    c.closed =
+        (flags & 1) != 0 && dist(c.pieces[0].start(), c.pieces[0].end()) <= 1e-9 * (1 + max_abs(c.pieces[0].start()));
+  } else if (std::vector<Vec3> fit = points(e, 11);
+             fit.size() >= 2 && has(e, 12) && has(e, 13) && norm(vec(e, 12)) > 0 && norm(vec(e, 13)) > 0) {
     std::optional<Piece> p = fit_spline(fit, vec(e, 12), vec(e, 13));
-    if (!p) fail(errc::import_knots, e, nullptr, "expected fit points (group code 11) that differ from one to the next, found two equal in a row");
+    if (!p)
+      fail(errc::import_knots, e, nullptr,
+           "expected fit points (group code 11) that differ from one to the next, found two equal in a row");
     c.pieces.push_back(std::move(*p));
     c.closed = (flags & 1) != 0 && dist(fit.front(), fit.back()) <= 1e-9 * (1 + max_abs(fit.front()));
   } else {
@@ -530,7 +557,8 @@ void Reader::emit_spline(const Entity& e, Contour c, const Affine& m) {
     c.interpolation.through = points(e, 11);
     c.interpolation.closed = (flags & 1) != 0;
     if (c.interpolation.through.size() < 2)
-      fail(errc::import_knots, e, nullptr, "expected control points (group code 10) or at least 2 fit points (11), found neither");
+      fail(errc::import_knots, e, nullptr,
+           "expected control points (group code 10) or at least 2 fit points (11), found neither");
   }
   add(std::move(c), m, e.type);
 }
@@ -542,10 +570,12 @@ void Reader::emit_insert(const Entity& e, const Affine& m, const Vec3& ext, cons
   for (const Group& g : e.groups)
     if (g.code == 2) name = g.value, ng = &g;
   const auto it = blocks_.find(name);
-  if (it == blocks_.end()) fail(errc::import_dxf_syntax, e, ng, "expected the name of a block, found \"" + name + "\", which no block has");
+  if (it == blocks_.end())
+    fail(errc::import_dxf_syntax, e, ng, "expected the name of a block, found \"" + name + "\", which no block has");
   if (std::find(inserting_.begin(), inserting_.end(), name) != inserting_.end() || inserting_.size() > 32)
-    fail(errc::import_block_recursion, e, ng, "block \"" + name + "\" inserts itself (through " +
-                                                  std::to_string(inserting_.size()) + " level(s) of INSERT); expected a block that does not contain itself");
+    fail(errc::import_block_recursion, e, ng,
+         "block \"" + name + "\" inserts itself (through " + std::to_string(inserting_.size()) +
+             " level(s) of INSERT); expected a block that does not contain itself");
   const Block& b = it->second;
   const Vec3 ins = vec(e, 10), s{num(e, 41, 1), num(e, 42, 1), num(e, 43, 1)};
   const double rot = num(e, 50) * kDegree;
@@ -568,12 +598,16 @@ Drawing Reader::read() {
     if (at(0, "SECTION") && at_ + 1 < groups_.size() && groups_[at_ + 1].code == 2) {
       const std::string name = groups_[at_ + 1].value;
       at_ += 2;
-      if (name == "HEADER") header();
-      else if (name == "BLOCKS") blocks();
+      if (name == "HEADER")
+        header();
+      else if (name == "BLOCKS")
+        blocks();
       else if (name == "ENTITIES")
         while (at_ < groups_.size() && !at(0, "ENDSEC")) {
-          if (groups_[at_].code == 0) entities_.push_back(entity());
-          else ++at_;
+          if (groups_[at_].code == 0)
+            entities_.push_back(entity());
+          else
+            ++at_;
         }
       else
         while (at_ < groups_.size() && !at(0, "ENDSEC")) ++at_;
@@ -582,8 +616,9 @@ Drawing Reader::read() {
   }
   for (const Entity& e : entities_) emit(e, Affine{}, e.layer(), "");
   if (d_.contours.empty())
-    throw InputError(errc::import_empty, Place::at_file(source_),
-                     "expected geometry (LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE, POLYLINE, SPLINE, INSERT), found none");
+    throw InputError(
+        errc::import_empty, Place::at_file(source_),
+        "expected geometry (LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE, POLYLINE, SPLINE, INSERT), found none");
   return std::move(d_);
 }
 

@@ -6,23 +6,21 @@
 // Everything else here is done in double precision on the control points.
 #include "bezcam/import/svg_reader.hpp"
 
-#include <libxml/parser.h>
-#include <libxml/tree.h>
-
+#include <algorithm>
 #include <boost/mpl/fold.hpp>
 #include <boost/mpl/insert.hpp>
 #include <boost/mpl/joint_view.hpp>
 #include <boost/mpl/protect.hpp>
 #include <boost/mpl/set.hpp>
-#include <svgpp/policy/xml/libxml2.hpp>
-#include <svgpp/svgpp.hpp>
-
-#include <algorithm>
 #include <cmath>
+#include <libxml/parser.h>
+#include <libxml/tree.h>
 #include <limits>
 #include <map>
 #include <memory>
 #include <set>
+#include <svgpp/policy/xml/libxml2.hpp>
+#include <svgpp/svgpp.hpp>
 
 #include "bezcam/error.hpp"
 #include "bezcam/import/conic.hpp"
@@ -57,13 +55,13 @@ struct Shared {
   std::string source;
   Drawing* out = nullptr;
   const xmlNode* current = nullptr;
-  double page_h_px = 0;                 // the outermost viewport's height
+  double page_h_px = 0;  // the outermost viewport's height
   bool have_page = false;
-  double ref_w = 0, ref_h = 0;          // reference viewport when the root has no width/height
-  std::map<std::string, int> id_uses;   // ids given out, to keep them unique
+  double ref_w = 0, ref_h = 0;                  // reference viewport when the root has no width/height
+  std::map<std::string, int> id_uses;           // ids given out, to keep them unique
   std::map<std::string, const xmlNode*> by_id;  // every element with an id, for `use`
-  std::vector<const xmlNode*> using_;   // the `use` elements being expanded, outermost first
-  size_t instances = 0;                 // elements drawn through `use`
+  std::vector<const xmlNode*> using_;           // the `use` elements being expanded, outermost first
+  size_t instances = 0;                         // elements drawn through `use`
   [[noreturn]] void fail(ErrorId id, const std::string& what) const {
     throw InputError(id, Place::at_file(source), describe(current) + ": " + what);
   }
@@ -82,8 +80,14 @@ struct Context {
     if (s.ref_w > 0 && s.ref_h > 0) lengths_.set_viewport_size(s.ref_w, s.ref_h);
   }
   Context(Context& parent, const xmlNode* node)
-      : s_(parent.s_), ctm_(parent.ctm_), lengths_(parent.lengths_), node_(node), depth_(parent.depth_ + 1),
-        id_(attr_of(node, "id")), prefix_(parent.prefix_), via_(parent.via_) {
+      : s_(parent.s_),
+        ctm_(parent.ctm_),
+        lengths_(parent.lengths_),
+        node_(node),
+        depth_(parent.depth_ + 1),
+        id_(attr_of(node, "id")),
+        prefix_(parent.prefix_),
+        via_(parent.via_) {
     s_->current = node;
   }
 
@@ -113,7 +117,7 @@ struct Context {
   // ---- `use`: x and y (its transform comes through the transform events)
   void set(tag::attribute::x, double v) { use_x_ = v; }
   void set(tag::attribute::y, double v) { use_y_ = v; }
-  void set(tag::attribute::width, double) {}   // a use's size matters only for a symbol or svg it draws
+  void set(tag::attribute::width, double) {}  // a use's size matters only for a symbol or svg it draws
   void set(tag::attribute::height, double) {}
 
   // ---- path events, as written
@@ -229,8 +233,9 @@ struct Context {
       char* end = nullptr;
       const double x = std::strtod(p, &end);
       if (end == p)
-        s_->fail(errc::import_svg_syntax, "points: expected a number at character " + std::to_string(p - text.c_str() + 1) +
-                                              ", found \"" + std::string(p).substr(0, 12) + "\"");
+        s_->fail(errc::import_svg_syntax, "points: expected a number at character " +
+                                              std::to_string(p - text.c_str() + 1) + ", found \"" +
+                                              std::string(p).substr(0, 12) + "\"");
       v.push_back(x);
       p = end;
     }
@@ -270,28 +275,34 @@ struct Context {
   void use() {
     if (hidden_) return;
     const std::string href = attr_of(node_, "href");  // xlink:href, or SVG 2's href
-    if (href.empty()) return;                          // references nothing: draws nothing
+    if (href.empty()) return;                         // references nothing: draws nothing
     if (href[0] != '#')
-      s_->current = node_, s_->fail(errc::import_svg_syntax, "href \"" + href +
-                                                             "\": expected a reference to an element of this drawing (#id); "
-                                                             "other files are not read");
+      s_->current = node_,
+      s_->fail(errc::import_svg_syntax, "href \"" + href +
+                                            "\": expected a reference to an element of this drawing (#id); "
+                                            "other files are not read");
     const auto it = s_->by_id.find(href.substr(1));
     if (it == s_->by_id.end())
-      s_->current = node_, s_->fail(errc::import_svg_syntax, "href \"" + href + "\": no element has the id \"" +
-                                                             href.substr(1) + "\"");
-    static const std::set<std::string> usable = {"g", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon", "use"};
+      s_->current = node_,
+      s_->fail(errc::import_svg_syntax, "href \"" + href + "\": no element has the id \"" + href.substr(1) + "\"");
+    static const std::set<std::string> usable = {"g",    "path",     "rect",    "circle", "ellipse",
+                                                 "line", "polyline", "polygon", "use"};
     if (!usable.count(name_of(it->second))) {
       s_->out->layers[""].skipped["use"] += 1;  // a symbol, svg, text or image: not geometry bezcam reads through use
       return;
     }
     for (const xmlNode* n = it->second; n; n = n->parent)
-      if (n == node_) s_->current = node_, s_->fail(errc::import_block_recursion, "href \"" + href + "\" references an element that contains this use");
+      if (n == node_)
+        s_->current = node_,
+        s_->fail(errc::import_block_recursion, "href \"" + href + "\" references an element that contains this use");
     if (std::find(s_->using_.begin(), s_->using_.end(), it->second) != s_->using_.end() ||
         std::find(s_->using_.begin(), s_->using_.end(), node_) != s_->using_.end())
-      s_->current = node_, s_->fail(errc::import_block_recursion, "href \"" + href + "\": the use references itself through other uses");
+      s_->current = node_,
+      s_->fail(errc::import_block_recursion, "href \"" + href + "\": the use references itself through other uses");
     if (++s_->instances > kMaxEntities)
-      s_->current = node_, s_->fail(errc::limit_entities, "use elements draw more than " + std::to_string(kMaxEntities) +
-                                                          " elements (the most entities of a job)");
+      s_->current = node_,
+      s_->fail(errc::limit_entities, "use elements draw more than " + std::to_string(kMaxEntities) +
+                                         " elements (the most entities of a job)");
     ctm_ = ctm_.after(Affine{1, 0, 0, 1, use_x_, use_y_});
     prefix_ += (id_.empty() ? "use@line " + std::to_string(line_of(node_)) : id_) + "/";
     via_ += " through " + describe(node_);
@@ -319,7 +330,8 @@ struct Context {
         for (Vec3& q : p.points) {
           q = m.apply(q);
           if (!std::isfinite(q.x) || !std::isfinite(q.y))
-            s_->current = node_, s_->fail(errc::import_not_finite, "expected finite coordinates once transformed and scaled, found " +
+            s_->current = node_,
+            s_->fail(errc::import_not_finite, "expected finite coordinates once transformed and scaled, found " +
                                                   fmt_num(q.x) + ", " + fmt_num(q.y));
         }
         c.pieces.push_back(std::move(p));
@@ -361,35 +373,40 @@ struct ChildContextFactories {
   };
 };
 
-using ProcessedElements =
-    boost::mpl::set<tag::element::svg, tag::element::g, tag::element::path, tag::element::rect, tag::element::circle,
-                    tag::element::ellipse, tag::element::line, tag::element::polyline, tag::element::polygon,
-                    tag::element::use_>::type;
+using ProcessedElements = boost::mpl::set<tag::element::svg, tag::element::g, tag::element::path, tag::element::rect,
+                                          tag::element::circle, tag::element::ellipse, tag::element::line,
+                                          tag::element::polyline, tag::element::polygon, tag::element::use_>::type;
 // What a `use` draws: geometry, groups and further uses (a referenced svg
 // or symbol, which would set a viewport of its own, is counted as skipped).
-using UsableElements =
-    boost::mpl::set<tag::element::g, tag::element::path, tag::element::rect, tag::element::circle, tag::element::ellipse,
-                    tag::element::line, tag::element::polyline, tag::element::polygon, tag::element::use_>::type;
+using UsableElements = boost::mpl::set<tag::element::g, tag::element::path, tag::element::rect, tag::element::circle,
+                                       tag::element::ellipse, tag::element::line, tag::element::polyline,
+                                       tag::element::polygon, tag::element::use_>::type;
 
 // polyline and polygon `points` are read here (points_of()): SVG++'s
 // list-of-points parser does not compile with GCC 12 (it binds a const
 // context to a non-const reference); the other shapes become path commands.
 using ShapeAttributes = boost::mpl::set<
     boost::mpl::pair<tag::element::path, tag::attribute::d>, boost::mpl::pair<tag::element::rect, tag::attribute::x>,
-    boost::mpl::pair<tag::element::rect, tag::attribute::y>, boost::mpl::pair<tag::element::rect, tag::attribute::width>,
-    boost::mpl::pair<tag::element::rect, tag::attribute::height>, boost::mpl::pair<tag::element::rect, tag::attribute::rx>,
-    boost::mpl::pair<tag::element::rect, tag::attribute::ry>, boost::mpl::pair<tag::element::circle, tag::attribute::cx>,
-    boost::mpl::pair<tag::element::circle, tag::attribute::cy>, boost::mpl::pair<tag::element::circle, tag::attribute::r>,
-    boost::mpl::pair<tag::element::ellipse, tag::attribute::cx>, boost::mpl::pair<tag::element::ellipse, tag::attribute::cy>,
-    boost::mpl::pair<tag::element::ellipse, tag::attribute::rx>, boost::mpl::pair<tag::element::ellipse, tag::attribute::ry>,
+    boost::mpl::pair<tag::element::rect, tag::attribute::y>,
+    boost::mpl::pair<tag::element::rect, tag::attribute::width>,
+    boost::mpl::pair<tag::element::rect, tag::attribute::height>,
+    boost::mpl::pair<tag::element::rect, tag::attribute::rx>, boost::mpl::pair<tag::element::rect, tag::attribute::ry>,
+    boost::mpl::pair<tag::element::circle, tag::attribute::cx>,
+    boost::mpl::pair<tag::element::circle, tag::attribute::cy>,
+    boost::mpl::pair<tag::element::circle, tag::attribute::r>,
+    boost::mpl::pair<tag::element::ellipse, tag::attribute::cx>,
+    boost::mpl::pair<tag::element::ellipse, tag::attribute::cy>,
+    boost::mpl::pair<tag::element::ellipse, tag::attribute::rx>,
+    boost::mpl::pair<tag::element::ellipse, tag::attribute::ry>,
     boost::mpl::pair<tag::element::line, tag::attribute::x1>, boost::mpl::pair<tag::element::line, tag::attribute::y1>,
     boost::mpl::pair<tag::element::line, tag::attribute::x2>, boost::mpl::pair<tag::element::line, tag::attribute::y2>,
-    boost::mpl::pair<tag::element::use_, tag::attribute::x>, boost::mpl::pair<tag::element::use_, tag::attribute::y>>::type;
+    boost::mpl::pair<tag::element::use_, tag::attribute::x>,
+    boost::mpl::pair<tag::element::use_, tag::attribute::y>>::type;
 
-using ProcessedAttributes = boost::mpl::fold<
-    boost::mpl::protect<boost::mpl::joint_view<ShapeAttributes, svgpp::traits::viewport_attributes>>,
-    boost::mpl::set<tag::attribute::transform>::type,
-    boost::mpl::insert<boost::mpl::_1, boost::mpl::_2>>::type;
+using ProcessedAttributes =
+    boost::mpl::fold<boost::mpl::protect<boost::mpl::joint_view<ShapeAttributes, svgpp::traits::viewport_attributes>>,
+                     boost::mpl::set<tag::attribute::transform>::type,
+                     boost::mpl::insert<boost::mpl::_1, boost::mpl::_2>>::type;
 
 struct ShapesPolicy {
   using convert_to_path =
@@ -430,7 +447,8 @@ struct LenientErrors : svgpp::policy::error::raise_exception<Ctx> {
 // SVG++ takes at most 8 policies as parameters of document_traversal; the
 // error policy is given by specialising its default for bezcam's context.
 template <>
-struct svgpp::policy::error::default_policy<bezcam::import::Context> : bezcam::import::LenientErrors<bezcam::import::Context> {};
+struct svgpp::policy::error::default_policy<bezcam::import::Context>
+    : bezcam::import::LenientErrors<bezcam::import::Context> {};
 
 namespace bezcam::import {
 namespace {
@@ -461,18 +479,17 @@ void index_ids(const xmlNode* n, std::map<std::string, const xmlNode*>& by_id) {
   }
 }
 
-using Traversal = svgpp::document_traversal<svgpp::processed_elements<ProcessedElements>,
-                                            svgpp::processed_attributes<ProcessedAttributes>,
-                                            svgpp::viewport_policy<svgpp::policy::viewport::as_transform>,
-                                            svgpp::context_factories<ChildContextFactories>,
-                                            svgpp::path_policy<svgpp::policy::path::raw>,
-                                            svgpp::basic_shapes_policy<ShapesPolicy>,
-                                            svgpp::length_policy<svgpp::policy::length::forward_to_method<Context>>>;
+using Traversal = svgpp::document_traversal<
+    svgpp::processed_elements<ProcessedElements>, svgpp::processed_attributes<ProcessedAttributes>,
+    svgpp::viewport_policy<svgpp::policy::viewport::as_transform>, svgpp::context_factories<ChildContextFactories>,
+    svgpp::path_policy<svgpp::policy::path::raw>, svgpp::basic_shapes_policy<ShapesPolicy>,
+    svgpp::length_policy<svgpp::policy::length::forward_to_method<Context>>>;
 
 void load_used(const xmlNode* target, Context& use) {
   Traversal::load_referenced_element<svgpp::referencing_element<tag::element::use_>,
                                      svgpp::expected_elements<UsableElements>,
-                                     svgpp::processed_elements<UsableElements>>::load(const_cast<xmlNode*>(target), use);
+                                     svgpp::processed_elements<UsableElements>>::load(const_cast<xmlNode*>(target),
+                                                                                      use);
 }
 
 struct DocFree {
@@ -505,7 +522,8 @@ Drawing read_svg(std::string_view text, const std::string& source) {
   if (text.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
     throw InputError(errc::import_not_a_drawing, Place::at_file(source), "the file is too large to be read as XML");
   // No network, no entity expansion beyond the document itself.
-  std::unique_ptr<xmlDoc, DocFree> doc(xmlReadMemory(text.data(), static_cast<int>(text.size()), source.c_str(), nullptr,
+  std::unique_ptr<xmlDoc, DocFree> doc(xmlReadMemory(text.data(), static_cast<int>(text.size()), source.c_str(),
+                                                     nullptr,
                                                      XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
   if (!doc) {
     const xmlError* e = xmlGetLastError();
@@ -518,9 +536,10 @@ Drawing read_svg(std::string_view text, const std::string& source) {
   }
   xmlNode* root = xmlDocGetRootElement(doc.get());
   if (!root || name_of(root) != "svg")
-    throw InputError(errc::import_not_a_drawing, Place::at_file(source),
-                     "expected an SVG drawing (root element <svg>), found " +
-                         (root ? "<" + name_of(root) + "> on line " + std::to_string(line_of(root)) : std::string("no element")));
+    throw InputError(
+        errc::import_not_a_drawing, Place::at_file(source),
+        "expected an SVG drawing (root element <svg>), found " +
+            (root ? "<" + name_of(root) + "> on line " + std::to_string(line_of(root)) : std::string("no element")));
   Shared s;
   s.source = source;
   s.out = &d;
@@ -542,8 +561,9 @@ Drawing read_svg(std::string_view text, const std::string& source) {
     static const std::set<std::string> known = {"", "px", "in", "cm", "mm", "pt", "pc", "em", "ex", "%"};
     if (end != v.c_str() && !known.count(unit))
       throw InputError(errc::import_units, Place::at_file(source),
-                       describe(root) + ": " + a + ": expected a length in px, in, cm, mm, pt or pc (or none: 96 per inch), found \"" +
-                           v + "\"");
+                       describe(root) + ": " + a +
+                           ": expected a length in px, in, cm, mm, pt or pc (or none: 96 per inch), found \"" + v +
+                           "\"");
   }
   index_ids(root, s.by_id);
   Context ctx(s);

@@ -18,12 +18,15 @@ namespace {
 // The checks the JSON reader makes of a number that must be positive.
 double positive(double v, const std::string& source, const std::string& key) {
   if (!std::isfinite(v) || v <= 0)
-    throw InputError(errc::job_not_positive, Place::in_json(source, key), "expected a finite number > 0, found " + fmt_num(v));
+    throw InputError(errc::job_not_positive, Place::in_json(source, key),
+                     "expected a finite number > 0, found " + fmt_num(v));
   return v;
 }
 
 double finite(double v, const std::string& source, const std::string& key) {
-  if (!std::isfinite(v)) throw InputError(errc::job_not_finite, Place::in_json(source, key), "expected a finite number, found " + fmt_num(v));
+  if (!std::isfinite(v))
+    throw InputError(errc::job_not_finite, Place::in_json(source, key),
+                     "expected a finite number, found " + fmt_num(v));
   return v;
 }
 
@@ -51,7 +54,8 @@ void check_params(const JobParams& p, const std::string& source, const std::stri
         throw InputError(errc::job_template, Place::in_json(source, key + "[" + std::to_string(i) + "]"), *why);
   }
   if (p.tool && *p.tool < 0)
-    throw InputError(errc::job_not_positive, Place::in_json(source, at + "tool"), "expected a tool number >= 0, found " + std::to_string(*p.tool));
+    throw InputError(errc::job_not_positive, Place::in_json(source, at + "tool"),
+                     "expected a tool number >= 0, found " + std::to_string(*p.tool));
 }
 
 }  // namespace
@@ -60,7 +64,8 @@ JobBuilder::JobBuilder(std::string name) { job_.source = std::move(name); }
 
 JobBuilder& JobBuilder::units(Units u) {
   // The default tolerance is kDefaultToleranceMm in the job's units, as in a file.
-  if (job_.tolerance == kDefaultToleranceMm / mm_per_unit(job_.units)) job_.tolerance = kDefaultToleranceMm / mm_per_unit(u);
+  if (job_.tolerance == kDefaultToleranceMm / mm_per_unit(job_.units))
+    job_.tolerance = kDefaultToleranceMm / mm_per_unit(u);
   job_.units = u;
   return *this;
 }
@@ -118,7 +123,8 @@ JobBuilder& JobBuilder::nurbs(std::string id, NurbsCurve curve, JobParams params
 
 JobBuilder& JobBuilder::path(std::string id, std::vector<Bezier> segments, bool closed, JobParams params) {
   if (segments.empty())
-    throw InputError(errc::job_missing, Place::in_json(job_.source, "entities[" + std::to_string(job_.entities.size()) + "].segments"),
+    throw InputError(errc::job_missing,
+                     Place::in_json(job_.source, "entities[" + std::to_string(job_.entities.size()) + "].segments"),
                      "a path needs at least one segment");
   std::vector<CurveSegment> segs;
   int dim = 2;
@@ -142,10 +148,12 @@ JobBuilder& JobBuilder::path(std::string id, std::vector<Bezier> segments, bool 
   return entity(std::move(id), "path", std::move(g), std::move(params));
 }
 
-JobBuilder& JobBuilder::path_segments(std::string id, std::vector<PathSegment> segments, bool closed, JobParams params) {
+JobBuilder& JobBuilder::path_segments(std::string id, std::vector<PathSegment> segments, bool closed,
+                                      JobParams params) {
   const std::string at = "entities[" + std::to_string(job_.entities.size()) + "]";
   if (segments.empty())
-    throw InputError(errc::job_missing, Place::in_json(job_.source, at, "segments"), "a path needs at least one segment");
+    throw InputError(errc::job_missing, Place::in_json(job_.source, at, "segments"),
+                     "a path needs at least one segment");
   std::vector<CurveSegment> segs;
   std::vector<Bezier> pieces;
   int dim = 2;

@@ -1,18 +1,19 @@
 // The only kernel file family that knows JSON: reads a version-1 curve file
 // (docs/job-format.md) into a validated Job.
+#include "bezcam/job/job_json.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/keys.hpp"
+#include "bezcam/job/settings.hpp"
 #include "bezcam/job/tools.hpp"
 #include "bezcam/limits.hpp"
 #include "job_json_detail.hpp"
-#include "bezcam/job/job_json.hpp"
-#include "bezcam/job/job_builder.hpp"
-#include "bezcam/job/settings.hpp"
 
 namespace bezcam {
 
@@ -49,14 +50,18 @@ std::string json_path_at(std::string_view text, size_t at) {
     } else if ((c == '}' || c == ']') && !levels.empty()) {
       levels.pop_back();
     } else if (c == ',' && !levels.empty()) {
-      if (levels.back().array) ++levels.back().index;
-      else key_next = true;
+      if (levels.back().array)
+        ++levels.back().index;
+      else
+        key_next = true;
     }
   }
   std::string path;
   for (const auto& l : levels) {
-    if (l.array) path += "[" + std::to_string(l.index) + "]";
-    else path += (path.empty() ? "" : ".") + l.key;
+    if (l.array)
+      path += "[" + std::to_string(l.index) + "]";
+    else
+      path += (path.empty() ? "" : ".") + l.key;
   }
   return path;
 }
@@ -258,9 +263,12 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   if (auto it = obj.find("gouge"); it != obj.end()) {
     const std::string kp = path.empty() ? "gouge" : path + ".gouge";
     const std::string g = ctx.string(*it, kp);
-    if (g == "refuse") p.gouge = GougePolicy::refuse;
-    else if (g == "skip") p.gouge = GougePolicy::skip;
-    else ctx.fail(kp, errc::job_gouge, "expected \"refuse\" or \"skip\", found " + describe(*it));
+    if (g == "refuse")
+      p.gouge = GougePolicy::refuse;
+    else if (g == "skip")
+      p.gouge = GougePolicy::skip;
+    else
+      ctx.fail(kp, errc::job_gouge, "expected \"refuse\" or \"skip\", found " + describe(*it));
   }
   if (auto it = obj.find("coolant"); it != obj.end()) {
     const std::string kp = path.empty() ? "coolant" : path + ".coolant";
@@ -269,12 +277,14 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   }
   if (auto it = obj.find("tool"); it != obj.end()) {
     p.tool = ctx.integer(*it, path + ".tool");
-    if (*p.tool < 0) ctx.fail(path + ".tool", errc::job_range, "expected a tool number >= 0, found " + std::to_string(*p.tool));
+    if (*p.tool < 0)
+      ctx.fail(path + ".tool", errc::job_range, "expected a tool number >= 0, found " + std::to_string(*p.tool));
   }
   num("clearance", p.clearance, false);
   num("top_z", p.top_z, false);
   if (p.clearance && *p.clearance < 0)
-    ctx.fail(path + ".clearance", errc::job_range, "expected a height >= 0 above top_z, found " + fmt_num(*p.clearance));
+    ctx.fail(path + ".clearance", errc::job_range,
+             "expected a height >= 0 above top_z, found " + fmt_num(*p.clearance));
   auto sequence = [&](const char* key, std::optional<std::vector<std::string>>& out) {
     auto it = obj.find(key);
     if (it == obj.end()) return;
@@ -297,8 +307,10 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   // Part cutting (docs/job-format.md, "Cutting a part, not only a curve").
   p.side = choice<CutSide>(ctx, obj, path, "side", std::array{"on", "left", "right", "inside", "outside"});
   p.direction = choice<CutDirection>(ctx, obj, path, "direction", std::array{"as-drawn", "climb", "conventional"});
-  p.tolerance_side = choice<ToleranceSide>(ctx, obj, path, "tolerance_side", std::array{"both", "left", "right", "waste"});
-  if (auto c = choice<int>(ctx, obj, path, "compensation", std::array{"cam", "controller"})) p.controller_compensation = *c == 1;
+  p.tolerance_side =
+      choice<ToleranceSide>(ctx, obj, path, "tolerance_side", std::array{"both", "left", "right", "waste"});
+  if (auto c = choice<int>(ctx, obj, path, "compensation", std::array{"cam", "controller"}))
+    p.controller_compensation = *c == 1;
   num("tool_diameter", p.tool_diameter, true);
   num("stock_to_leave", p.stock_to_leave, false);
   num("step_down", p.step_down, true);
@@ -319,7 +331,8 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
     ctx.check_keys(*it, kp, std::vector<std::string_view>(kTabsKeys.begin(), kTabsKeys.end()));
     Tabs t;
     t.count = static_cast<int>(ctx.integer(ctx.require(*it, kp, "count"), kp + ".count"));
-    if (t.count < 1) ctx.fail(kp + ".count", errc::job_cut, "expected at least 1 tab, found " + std::to_string(t.count));
+    if (t.count < 1)
+      ctx.fail(kp + ".count", errc::job_cut, "expected at least 1 tab, found " + std::to_string(t.count));
     t.width = ctx.positive(ctx.require(*it, kp, "width"), kp + ".width");
     t.height = ctx.positive(ctx.require(*it, kp, "height"), kp + ".height");
     p.tabs = t;
@@ -383,7 +396,8 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   } else {
     ctx.fail(path + ".type", errc::job_entity_type,
              "expected one of \"bezier\", \"bspline\", \"path\", \"interpolate\", \"bezier_patch\", "
-             "\"coons_patch\", \"curve_on_surface\", found " + describe(obj["type"]));
+             "\"coons_patch\", \"curve_on_surface\", found " +
+                 describe(obj["type"]));
   }
   return e;
 }
@@ -441,9 +455,12 @@ void read_settings(detail::JsonCtx& ctx, const detail::json& doc, Job& job) {
   using detail::json;
   if (auto it = doc.find("units"); it != doc.end()) {
     const std::string u = ctx.string(*it, "units");
-    if (u == "mm") job.units = Units::mm;
-    else if (u == "inch") job.units = Units::inch;
-    else ctx.fail("units", errc::job_units, "expected \"mm\" or \"inch\", found " + detail::describe(*it));
+    if (u == "mm")
+      job.units = Units::mm;
+    else if (u == "inch")
+      job.units = Units::inch;
+    else
+      ctx.fail("units", errc::job_units, "expected \"mm\" or \"inch\", found " + detail::describe(*it));
   }
   job.tolerance = kDefaultToleranceMm / mm_per_unit(job.units);
   if (auto it = doc.find("tolerance"); it != doc.end()) job.tolerance = ctx.positive(*it, "tolerance");
@@ -454,13 +471,15 @@ void read_settings(detail::JsonCtx& ctx, const detail::json& doc, Job& job) {
     if (auto pn = it->find("program_number"); pn != it->end()) {
       const long n = ctx.integer(*pn, "job.program_number");
       if (n < 1 || n > 99999999)
-        ctx.fail("job.program_number", errc::job_range, "expected a program number from 1 to 99999999, found " + std::to_string(n));
+        ctx.fail("job.program_number", errc::job_range,
+                 "expected a program number from 1 to 99999999, found " + std::to_string(n));
       job.program_number = n;
     }
   }
   for (const std::string where : {"order", "job.order"}) {
-    const json* o = where == "order" ? (doc.contains("order") ? &doc["order"] : nullptr)
-                                     : (doc.contains("job") && doc["job"].contains("order") ? &doc["job"]["order"] : nullptr);
+    const json* o = where == "order"
+                        ? (doc.contains("order") ? &doc["order"] : nullptr)
+                        : (doc.contains("job") && doc["job"].contains("order") ? &doc["job"]["order"] : nullptr);
     if (!o) continue;
     const std::string v = ctx.string(*o, where);
     if (v != "shortest" && v != "as-written")
@@ -483,15 +502,18 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
     // Turn the byte offset into line and column.
     size_t line = 1, col = 1;
     for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') ++line, col = 1;
-      else ++col;
+      if (text[i] == '\n')
+        ++line, col = 1;
+      else
+        ++col;
     }
     // nlohmann's text repeats the line and column: keep what follows them.
     std::string what = e.what();
     if (auto p = what.find("column "); p != std::string::npos && what.find(": ", p) != std::string::npos)
       what = what.substr(what.find(": ", p) + 2);
     std::string hint;
-    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) hint = "; the file is empty";
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+      hint = "; the file is empty";
     else if (what.find("unexpected end of input") != std::string::npos)
       hint = "; the file ends too early (is a closing bracket or brace missing?)";
     else if (what.find("unexpected") != std::string::npos && what.find("literal") != std::string::npos &&
@@ -511,8 +533,10 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
     if (const size_t at = token.empty() ? std::string_view::npos : text.find(token); at != std::string_view::npos) {
       size_t line = 1, col = 1;
       for (size_t i = 0; i < at; ++i) {
-        if (text[i] == '\n') ++line, col = 1;
-        else ++col;
+        if (text[i] == '\n')
+          ++line, col = 1;
+        else
+          ++col;
       }
       // The document did not parse, so its path comes from the text.
       if (std::string path = detail::json_path_at(text, at); !path.empty()) where.json_path = std::move(path);
@@ -548,7 +572,7 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
   }
   if (!errors.empty()) return;
   detail::resolve_surface_references(ctx, ents, job);  // curve_on_surface naming a patch by id
-  (void)job_tools(job);  // one diameter and shape per tool number
+  (void)job_tools(job);                                // one diameter and shape per tool number
 }
 
 }  // namespace
@@ -596,7 +620,9 @@ JobBuilder& JobBuilder::settings(std::span<const std::pair<std::string, std::str
     // What the settings do not give keeps its value (a default tolerance
     // follows the units, as units() does).
     if (!doc.contains("tolerance"))
-      job_.tolerance = tolerance == kDefaultToleranceMm / mm_per_unit(units) ? kDefaultToleranceMm / mm_per_unit(job_.units) : tolerance;
+      job_.tolerance = tolerance == kDefaultToleranceMm / mm_per_unit(units)
+                           ? kDefaultToleranceMm / mm_per_unit(job_.units)
+                           : tolerance;
     job_.params = job_.params.over(params);
     return *this;
   }

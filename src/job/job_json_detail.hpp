@@ -18,10 +18,9 @@ using json = nlohmann::json;
 /// The cutting parameters, at job and entity level (docs/job-format.md);
 /// the last, `order`, is the job's only.
 inline constexpr std::array<std::string_view, 23> kParamKeys = {
-    "feed",          "plunge_feed",    "safe_z",    "cut_z",     "spindle_rpm", "tool",         "tool_radius", "gouge",
-    "coolant",       "clearance",      "top_z",     "before",    "after",       "side",         "tool_diameter",
-    "stock_to_leave", "step_down",     "direction", "lead",      "tabs",        "compensation", "tolerance_side",
-    "order"};
+    "feed",      "plunge_feed", "safe_z", "cut_z",  "spindle_rpm",  "tool",           "tool_radius",   "gouge",
+    "coolant",   "clearance",   "top_z",  "before", "after",        "side",           "tool_diameter", "stock_to_leave",
+    "step_down", "direction",   "lead",   "tabs",   "compensation", "tolerance_side", "order"};
 /// The keys of `lead` and `tabs`.
 inline constexpr std::array<std::string_view, 2> kLeadKeys = {"radius", "length"};
 inline constexpr std::array<std::string_view, 3> kTabsKeys = {"count", "width", "height"};

@@ -57,7 +57,8 @@ void parse_interpolate_entity(const JsonCtx& ctx, const json& obj, const std::st
                "expected one tangent per point of \"through\" (" + std::to_string(through.size()) + "), found " +
                    std::to_string(tangents.size()));
   } else if (obj.contains("tangents")) {
-    ctx.fail(path + ".tangents", errc::job_method, "\"tangents\" belong to method \"hermite\"; add \"method\": \"hermite\"");
+    ctx.fail(path + ".tangents", errc::job_method,
+             "\"tangents\" belong to method \"hermite\"; add \"method\": \"hermite\"");
   }
   std::optional<std::pair<Vec3, Vec3>> end_tangents;
   if (obj.contains("end_tangents")) {

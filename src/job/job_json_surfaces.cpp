@@ -80,7 +80,8 @@ BoundaryCurve parse_boundary(const JsonCtx& ctx, const json& obj, const std::str
   return ctx.at(path, [&] { return BoundaryCurve::make(std::move(pieces)); });
 }
 
-std::shared_ptr<const SurfaceGeometry> parse_bezier_patch(const JsonCtx& ctx, const json& obj, const std::string& path) {
+std::shared_ptr<const SurfaceGeometry> parse_bezier_patch(const JsonCtx& ctx, const json& obj,
+                                                          const std::string& path) {
   const json& pts = ctx.array(ctx.require(obj, path, "points"), path + ".points", 2);
   std::vector<std::vector<Vec3>> rows;
   for (size_t i = 0; i < pts.size(); ++i) rows.push_back(points3(ctx, pts[i], idx(path + ".points", i), 2));
@@ -104,13 +105,19 @@ std::shared_ptr<const SurfaceGeometry> parse_coons_patch(const JsonCtx& ctx, con
   CoonsBlend blend = CoonsBlend::cubic;
   if (auto it = obj.find("blend"); it != obj.end()) {
     const std::string s = ctx.string(*it, path + ".blend");
-    if (s == "linear") blend = CoonsBlend::linear;
-    else if (s == "cubic") blend = CoonsBlend::cubic;
-    else if (s == "quintic") blend = CoonsBlend::quintic;
-    else ctx.fail(path + ".blend", errc::job_blend, "expected \"linear\", \"cubic\" or \"quintic\", found " + describe(*it));
+    if (s == "linear")
+      blend = CoonsBlend::linear;
+    else if (s == "cubic")
+      blend = CoonsBlend::cubic;
+    else if (s == "quintic")
+      blend = CoonsBlend::quintic;
+    else
+      ctx.fail(path + ".blend", errc::job_blend,
+               "expected \"linear\", \"cubic\" or \"quintic\", found " + describe(*it));
   }
   return ctx.at(path, [&] {
-    return SurfaceGeometry::make(CoonsPatch::make(std::move(c[0]), std::move(c[1]), std::move(c[2]), std::move(c[3]), blend));
+    return SurfaceGeometry::make(
+        CoonsPatch::make(std::move(c[0]), std::move(c[1]), std::move(c[2]), std::move(c[3]), blend));
   });
 }
 
@@ -205,8 +212,7 @@ void resolve_surface_references(const JsonCtx& ctx, const json& entities, Job& j
     }
     if (!found)
       ctx.fail(sp, errc::job_surface_ref,
-               "expected the id of a bezier_patch or coons_patch entity, found \"" + name +
-                   "\", which no entity has");
+               "expected the id of a bezier_patch or coons_patch entity, found \"" + name + "\", which no entity has");
     if (!found->surface || found->type == "curve_on_surface")
       ctx.fail(sp, errc::job_surface_ref,
                "expected the id of a bezier_patch or coons_patch entity, found \"" + name + "\", a " + found->type);

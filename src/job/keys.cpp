@@ -18,7 +18,8 @@ int edit_distance(std::string_view a, std::string_view b) {
     for (size_t j = 1; j <= m; ++j) {
       const int cost = a[i - 1] == b[j - 1] ? 0 : 1;
       d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   return d[n][m];
 }
@@ -31,7 +32,8 @@ std::optional<std::string> resembled_key(std::string_view key, std::span<const s
   for (std::string_view k : known) {
     // Case alone is a typo too ("Tolerance").
     std::string lower(key);
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     const int d = lower == k ? 1 : edit_distance(key, k);
     if (d < best_d) {
       best_d = d;
@@ -46,12 +48,21 @@ bool user_key(std::string_view key) { return key.starts_with("x-"); }
 namespace {
 // Words machinists and other programs use for a key bezcam names
 // otherwise: the word, and the key it stands for.
-constexpr std::pair<std::string_view, std::string_view> kKeyWords[] = {
-    {"depth", "cut_z"},          {"cut_depth", "cut_z"},      {"stock", "stock_to_leave"},
-    {"allowance", "stock_to_leave"}, {"diameter", "tool_diameter"}, {"tool_dia", "tool_diameter"},
-    {"radius", "tool_radius"},   {"rpm", "spindle_rpm"},      {"speed", "spindle_rpm"},
-    {"spindle", "spindle_rpm"},  {"feedrate", "feed"},        {"feed_rate", "feed"},
-    {"plunge", "plunge_feed"},   {"plunge_rate", "plunge_feed"}, {"pass_depth", "step_down"}};
+constexpr std::pair<std::string_view, std::string_view> kKeyWords[] = {{"depth", "cut_z"},
+                                                                       {"cut_depth", "cut_z"},
+                                                                       {"stock", "stock_to_leave"},
+                                                                       {"allowance", "stock_to_leave"},
+                                                                       {"diameter", "tool_diameter"},
+                                                                       {"tool_dia", "tool_diameter"},
+                                                                       {"radius", "tool_radius"},
+                                                                       {"rpm", "spindle_rpm"},
+                                                                       {"speed", "spindle_rpm"},
+                                                                       {"spindle", "spindle_rpm"},
+                                                                       {"feedrate", "feed"},
+                                                                       {"feed_rate", "feed"},
+                                                                       {"plunge", "plunge_feed"},
+                                                                       {"plunge_rate", "plunge_feed"},
+                                                                       {"pass_depth", "step_down"}};
 }  // namespace
 
 UnknownKey unknown_key(std::string_view key, std::span<const std::string_view> known, std::string_view prefix) {
@@ -70,7 +81,8 @@ UnknownKey unknown_key(std::string_view key, std::span<const std::string_view> k
     u.message = "unknown key " + quoted + ": did you mean \"" + std::string(prefix) + *u.meant +
                 "\"? (a key bezcam does not know is refused: it would otherwise be ignored)";
   else
-    u.message = "unknown key " + quoted + " (a key bezcam does not know is refused: it would otherwise be ignored; "
+    u.message = "unknown key " + quoted +
+                " (a key bezcam does not know is refused: it would otherwise be ignored; "
                 "keys of your own start with \"x-\")";
   return u;
 }
@@ -88,7 +100,10 @@ std::optional<std::string> template_problem(std::string_view text, std::span<con
     for (auto k : known) list += (list.empty() ? "{" : ", {") + std::string(k) + "}";
     const auto like = resembled_key(name, known);
     return "unknown placeholder {" + std::string(name) + "} in \"" + std::string(text) +
-           "\" (it would be printed as it is); " + (like ? "did you mean {" + *like + "}?" : list.empty() ? std::string("these lines take no placeholder") : "the lines take " + list);
+           "\" (it would be printed as it is); " +
+           (like           ? "did you mean {" + *like + "}?"
+            : list.empty() ? std::string("these lines take no placeholder")
+                           : "the lines take " + list);
   }
   return std::nullopt;
 }

@@ -31,7 +31,8 @@ std::vector<std::string> names_of(const std::string& key) {
     const size_t dot = key.find('.', at);
     out.push_back(key.substr(at, dot == std::string::npos ? std::string::npos : dot - at));
     if (out.back().empty())
-      refuse(key, "expected KEY=VALUE with KEY a name or names joined by dots (tabs.count), found the key \"" + key + "\"");
+      refuse(key,
+             "expected KEY=VALUE with KEY a name or names joined by dots (tabs.count), found the key \"" + key + "\"");
     if (dot == std::string::npos) return out;
     at = dot + 1;
   }
@@ -52,12 +53,16 @@ void check_names(const std::string& key, const std::vector<std::string>& names) 
   if (std::find(known.begin(), known.end(), first) == known.end()) unknown(first, known, "");
   if (names.size() == 1) return;
   std::span<const std::string_view> sub;
-  if (first == "lead") sub = detail::kLeadKeys;
-  else if (first == "tabs") sub = detail::kTabsKeys;
-  else refuse(key, "\"" + first + "\" takes a value, not keys; give it as " + first + "=VALUE");
+  if (first == "lead")
+    sub = detail::kLeadKeys;
+  else if (first == "tabs")
+    sub = detail::kTabsKeys;
+  else
+    refuse(key, "\"" + first + "\" takes a value, not keys; give it as " + first + "=VALUE");
   if (std::find(sub.begin(), sub.end(), names[1]) == sub.end()) unknown(names[1], sub, first + ".");
   if (names.size() > 2)
-    refuse(key, "\"" + first + "." + names[1] + "\" takes a value, not keys; give it as " + first + "." + names[1] + "=VALUE");
+    refuse(key, "\"" + first + "." + names[1] + "\" takes a value, not keys; give it as " + first + "." + names[1] +
+                    "=VALUE");
 }
 
 // VALUE as JSON, a number written the C way, or else the text itself. A
@@ -79,8 +84,10 @@ ojson value_of(const std::string& key, const std::string& text) {
     }
     double d = 0;
     const auto r = std::from_chars(text.data(), text.data() + text.size(), d);
-    if (!text.empty() && r.ec == std::errc() && r.ptr == text.data() + text.size() && std::isfinite(d)) v = d;
-    else v = text;
+    if (!text.empty() && r.ec == std::errc() && r.ptr == text.data() + text.size() && std::isfinite(d))
+      v = d;
+    else
+      v = text;
   }
   try {
     (void)v.dump();

@@ -85,11 +85,14 @@ std::vector<JobTool> job_tools(const Job& job, const JobParams& defaults) {
       return fmt_num(k.diameter) + " " + u + (k.shape ? std::string(" ") + to_string(*k.shape) : std::string()) +
              " for " + job.entities[k.entity].label() + " (" + k.where + ")";
     };
-    const std::string tool = number < 0 ? std::string("the default tool (no \"tool\" given)") : "tool " + std::to_string(number);
+    const std::string tool =
+        number < 0 ? std::string("the default tool (no \"tool\" given)") : "tool " + std::to_string(number);
     throw InputError(errc::job_tool, Place::in_json(job.source, e.json_path()),
-                     tool + " is given two " + (diameters ? "diameters: " : "shapes: ") + told(*f) + " and " + told(*c) +
+                     tool + " is given two " + (diameters ? "diameters: " : "shapes: ") + told(*f) + " and " +
+                         told(*c) +
                          "; one tool number is one tool, and whichever is loaded cuts one of them wrong: give each "
-                         "its own \"tool\" number, or both one " + (diameters ? "diameter" : "shape"));
+                         "its own \"tool\" number, or both one " +
+                         (diameters ? "diameter" : "shape"));
   }
   return tools;
 }

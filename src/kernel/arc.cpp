@@ -17,9 +17,7 @@ int world_axis(Plane pl, int k) {
   return (k + 3 - static_cast<int>(pl)) % 3;
 }
 
-Vec3 to_plane(const Vec3& p, Plane pl) {
-  return {p[world_axis(pl, 0)], p[world_axis(pl, 1)], p[world_axis(pl, 2)]};
-}
+Vec3 to_plane(const Vec3& p, Plane pl) { return {p[world_axis(pl, 0)], p[world_axis(pl, 1)], p[world_axis(pl, 2)]}; }
 
 Vec3 from_plane(const Vec3& q, Plane pl) {
   Vec3 p;
@@ -31,7 +29,8 @@ namespace {
 // The ends and the centre in plane coordinates.
 struct Local {
   Vec3 f, t, c;
-  explicit Local(const Arc& a) : f(to_plane(a.from, a.plane)), t(to_plane(a.to, a.plane)), c(to_plane(a.center, a.plane)) {}
+  explicit Local(const Arc& a)
+      : f(to_plane(a.from, a.plane)), t(to_plane(a.to, a.plane)), c(to_plane(a.center, a.plane)) {}
 };
 }  // namespace
 
@@ -70,7 +69,13 @@ Vec3 Arc::point(double s) const {
 }
 
 ArcPoints::ArcPoints(const Arc& a)
-    : from_(a.from), to_(a.to), a0_(a.start_angle()), w_(a.sweep()), r0_(a.r_start()), r1_(a.r_end()), ccw_(a.ccw),
+    : from_(a.from),
+      to_(a.to),
+      a0_(a.start_angle()),
+      w_(a.sweep()),
+      r0_(a.r_start()),
+      r1_(a.r_end()),
+      ccw_(a.ccw),
       plane_(a.plane) {
   const Local l(a);
   c_ = l.c;

@@ -30,14 +30,20 @@ struct Hom {
   Hom operator+(const Hom& o) const { return {p + o.p, w + o.w}; }
   Hom operator-(const Hom& o) const { return {p - o.p, w - o.w}; }
   Hom operator*(double s) const { return {p * s, w * s}; }
-  Hom& operator+=(const Hom& o) { p += o.p; w += o.w; return *this; }
+  Hom& operator+=(const Hom& o) {
+    p += o.p;
+    w += o.w;
+    return *this;
+  }
 };
 
 template <class T>
 using Poly = std::vector<T>;
 
 template <class T>
-int degree_of(const Poly<T>& c) { return static_cast<int>(c.size()) - 1; }
+int degree_of(const Poly<T>& c) {
+  return static_cast<int>(c.size()) - 1;
+}
 
 /// Value at t by de Casteljau's cascade.
 template <class T>
@@ -85,12 +91,16 @@ Poly<T> bern_split(const Poly<T>& c, double t, bool left) {
   Poly<T> q = c, out(c.size());
   const size_t n = c.size() - 1;
   const double s = 1 - t;
-  if (left) out[0] = q[0];
-  else out[n] = q[n];
+  if (left)
+    out[0] = q[0];
+  else
+    out[n] = q[n];
   for (size_t r = 1; r <= n; ++r) {
     for (size_t i = 0; i + r <= n; ++i) q[i] = q[i] * s + q[i + 1] * t;
-    if (left) out[r] = q[0];
-    else out[n - r] = q[n - r];
+    if (left)
+      out[r] = q[0];
+    else
+      out[n - r] = q[n - r];
   }
   return out;
 }

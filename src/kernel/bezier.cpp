@@ -36,8 +36,14 @@ H cascade(const Bezier& b, double t, std::vector<H>* left = nullptr, std::vector
     const double w = b.weight(i);
     q[i] = {b.points[i] * w, w};
   }
-  if (left) { left->resize(n + 1); (*left)[0] = q[0]; }
-  if (right) { right->resize(n + 1); (*right)[n] = q[n]; }
+  if (left) {
+    left->resize(n + 1);
+    (*left)[0] = q[0];
+  }
+  if (right) {
+    right->resize(n + 1);
+    (*right)[n] = q[n];
+  }
   const double s = 1 - t;
   for (int r = 1; r <= n; ++r) {
     for (int i = 0; i <= n - r; ++i) {
@@ -67,9 +73,12 @@ Bezier from_homogeneous(const std::vector<H>& hs, const Bezier& like) {
 
 void validate_control_points(std::span<const Vec3> pts, std::span<const double> w, int dim) {
   for (size_t i = 0; i < pts.size(); ++i) {
-    if (!finite(pts[i])) throw InputError(errc::curve_not_finite, Place::at_json("points[" + std::to_string(i) + "]"), "expected finite coordinates");
+    if (!finite(pts[i]))
+      throw InputError(errc::curve_not_finite, Place::at_json("points[" + std::to_string(i) + "]"),
+                       "expected finite coordinates");
     if (dim == 2 && pts[i].z != 0)
-      throw InputError(errc::curve_dimension, Place::at_json("points[" + std::to_string(i) + "]"), "2D curve with a z coordinate");
+      throw InputError(errc::curve_dimension, Place::at_json("points[" + std::to_string(i) + "]"),
+                       "2D curve with a z coordinate");
   }
   if (w.empty()) return;
   if (w.size() != pts.size())
@@ -90,7 +99,8 @@ double control_magnitude(std::span<const Bezier> pieces) {
 }
 
 Bezier Bezier::make(std::vector<Vec3> pts, std::vector<double> w, int d) {
-  if (d != 2 && d != 3) throw InputError(errc::curve_dimension, Place{}, "expected dimension 2 or 3, found " + std::to_string(d));
+  if (d != 2 && d != 3)
+    throw InputError(errc::curve_dimension, Place{}, "expected dimension 2 or 3, found " + std::to_string(d));
   if (pts.size() < 2)
     throw InputError(errc::curve_too_few_points, Place::at_json("points"),
                      "expected at least 2 control points, found " + std::to_string(pts.size()));
@@ -300,9 +310,7 @@ double binomial(int n, int k) {
   return r;
 }
 
-double bernstein(int n, int k, double t) {
-  return binomial(n, k) * std::pow(t, k) * std::pow(1 - t, n - k);
-}
+double bernstein(int n, int k, double t) { return binomial(n, k) * std::pow(t, k) * std::pow(1 - t, n - k); }
 
 Vec3 evaluate_bernstein(const Bezier& b, double t) {
   Vec3 num;

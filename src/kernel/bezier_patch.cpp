@@ -87,7 +87,8 @@ BezierPatch BezierPatch::make(const std::vector<std::vector<Vec3>>& rows,
                        "expected a row of " + std::to_string(m1) + " points like points[0], found " +
                            std::to_string(rows[i].size()) + "; every row of the net has the same length");
     for (size_t j = 0; j < m1; ++j)
-      if (!finite(rows[i][j])) throw InputError(errc::patch_not_finite, Place::at_json("points" + ij(i, j)), "expected finite coordinates");
+      if (!finite(rows[i][j]))
+        throw InputError(errc::patch_not_finite, Place::at_json("points" + ij(i, j)), "expected finite coordinates");
   }
   const int nu = static_cast<int>(rows.size()) - 1, nv = static_cast<int>(m1) - 1;
   if (nu > kMaxBezierDegree || nv > kMaxBezierDegree)
@@ -101,8 +102,8 @@ BezierPatch BezierPatch::make(const std::vector<std::vector<Vec3>>& rows,
   if (!weights.empty()) {
     if (weights.size() != rows.size())
       throw InputError(errc::patch_weights_shape, Place::at_json("weights"),
-                       "expected one row of weights per row of points (" + std::to_string(rows.size()) +
-                           "), found " + std::to_string(weights.size()));
+                       "expected one row of weights per row of points (" + std::to_string(rows.size()) + "), found " +
+                           std::to_string(weights.size()));
     bool all_equal = true;
     for (size_t i = 0; i < weights.size(); ++i) {
       if (weights[i].size() != m1)
@@ -112,7 +113,8 @@ BezierPatch BezierPatch::make(const std::vector<std::vector<Vec3>>& rows,
       for (size_t j = 0; j < m1; ++j) {
         const double w = weights[i][j];
         if (!(w > 0) || !std::isfinite(w))
-          throw InputError(errc::patch_weight, Place::at_json("weights" + ij(i, j)), "expected a finite weight > 0, found " + fmt_num(w));
+          throw InputError(errc::patch_weight, Place::at_json("weights" + ij(i, j)),
+                           "expected a finite weight > 0, found " + fmt_num(w));
         all_equal = all_equal && w == weights[0][0];
         s.weights.push_back(w);
       }

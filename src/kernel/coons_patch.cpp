@@ -58,7 +58,6 @@ Poly<double> f1_coefficients(CoonsBlend b) {
   return c;
 }
 
-
 double magnitude(const BoundaryCurve& c) {
   double m = 0;
   for (const auto& b : c.pieces)
@@ -78,7 +77,8 @@ BoundaryCurve BoundaryCurve::make(std::vector<Bezier> pieces, std::vector<double
     if (!(breaks[k + 1] > breaks[k]))
       throw InputError(errc::coons_boundary_partition, Place{}, "internal: breaks are not strictly increasing");
   for (const auto& b : pieces)
-    if (b.dim != 3) throw InputError(errc::coons_dimension, Place{}, "expected a 3D curve (points [x, y, z]), found a 2D one");
+    if (b.dim != 3)
+      throw InputError(errc::coons_dimension, Place{}, "expected a 3D curve (points [x, y, z]), found a 2D one");
   BoundaryCurve c;
   c.pieces = std::move(pieces);
   c.breaks = std::move(breaks);
@@ -103,11 +103,11 @@ CoonsPatch CoonsPatch::make(BoundaryCurve v0, BoundaryCurve v1, BoundaryCurve u0
   const double tol = 1e-9 * scale;
   // v0 and v1 fix the corners; u0 and u1 must run between them.
   struct Check {
-    const char* name;       // the u-boundary checked
+    const char* name;  // the u-boundary checked
     const BoundaryCurve* c;
-    bool at_end;            // which end of it
+    bool at_end;  // which end of it
     const char* corner;
-    const char* ref_name;   // the v-boundary that fixes the corner
+    const char* ref_name;  // the v-boundary that fixes the corner
     const BoundaryCurve* ref;
     bool ref_end;
   };
@@ -130,8 +130,8 @@ CoonsPatch CoonsPatch::make(BoundaryCurve v0, BoundaryCurve v1, BoundaryCurve u0
     throw InputError(errc::coons_corner, Place::at_json(std::string("boundaries.") + ck.name),
                      std::string("expected ") + ck.name + " to " + (ck.at_end ? "end" : "start") + " at corner " +
                          ck.corner + " = " + fmt_point(want) + ", where " + ck.ref_name + " " +
-                         (ck.ref_end ? "ends" : "starts") + ", found " + fmt_point(got) + ", " + fmt_num(gap) + " away" +
-                         hint);
+                         (ck.ref_end ? "ends" : "starts") + ", found " + fmt_point(got) + ", " + fmt_num(gap) +
+                         " away" + hint);
   }
   CoonsPatch s;
   s.v0 = std::move(v0);
@@ -148,8 +148,8 @@ namespace {
 Vec3 coons_mixed(const CoonsPatch& s, double u, double v, int p, int q) {
   const CoonsBlend b = s.blend;
   const double f0u = blend_f0(b, u, p), f1u = blend_f1(b, u, p), f0v = blend_f0(b, v, q), f1v = blend_f1(b, v, q);
-  Vec3 r = evaluate(s.v0, u, p) * f0v + evaluate(s.v1, u, p) * f1v + evaluate(s.u0, v, q) * f0u +
-           evaluate(s.u1, v, q) * f1u;
+  Vec3 r =
+      evaluate(s.v0, u, p) * f0v + evaluate(s.v1, u, p) * f1v + evaluate(s.u0, v, q) * f0u + evaluate(s.u1, v, q) * f1u;
   r -= s.corner(0, 0) * (f0u * f0v) + s.corner(0, 1) * (f0u * f1v) + s.corner(1, 0) * (f1u * f0v) +
        s.corner(1, 1) * (f1u * f1v);
   return r;

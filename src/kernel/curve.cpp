@@ -97,8 +97,8 @@ CurveGeometry make_path(std::vector<CurveSegment> segs, std::vector<Bezier> piec
         return "(" + fmt_num(p.x) + ", " + fmt_num(p.y) + (dim == 3 ? ", " + fmt_num(p.z) : std::string()) + ")";
       };
       throw InputError(errc::path_not_closed, Place::at_json("closed"),
-                       "the path is marked closed but its last segment ends at " + pt(a) + ", " +
-                           fmt_num(dist(a, b)) + " away from the start of segments[0] at " + pt(b) +
+                       "the path is marked closed but its last segment ends at " + pt(a) + ", " + fmt_num(dist(a, b)) +
+                           " away from the start of segments[0] at " + pt(b) +
                            "; make them meet, or set \"closed\": false");
     }
     g.joints.push_back(c);

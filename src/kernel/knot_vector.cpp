@@ -13,23 +13,26 @@ std::string at(size_t i) { return "knots[" + std::to_string(i) + "]"; }
 }  // namespace
 
 void validate_knots(std::span<const double> knots, int degree, size_t n_points) {
-  if (degree < 1) throw InputError(errc::curve_degree, Place::at_json("degree"), "expected a degree >= 1, found " + std::to_string(degree));
+  if (degree < 1)
+    throw InputError(errc::curve_degree, Place::at_json("degree"),
+                     "expected a degree >= 1, found " + std::to_string(degree));
   if (n_points < static_cast<size_t>(degree) + 1)
     throw InputError(errc::curve_too_few_points, Place::at_json("degree"),
                      "a curve of degree " + std::to_string(degree) + " needs at least " + std::to_string(degree + 1) +
-                         " control points, found " + std::to_string(n_points) +
-                         "; lower the degree or add points");
+                         " control points, found " + std::to_string(n_points) + "; lower the degree or add points");
   const size_t want = n_points + static_cast<size_t>(degree) + 1;
   if (knots.size() != want)
     throw InputError(errc::curve_knot_count, Place::at_json("knots"),
                      "expected " + std::to_string(want) + " knots (" + std::to_string(n_points) + " points + degree " +
                          std::to_string(degree) + " + 1), found " + std::to_string(knots.size()));
   for (size_t i = 0; i < knots.size(); ++i) {
-    if (!std::isfinite(knots[i])) throw InputError(errc::curve_not_finite, Place::at_json(at(i)), "expected a finite knot, found " + fmt_num(knots[i]));
+    if (!std::isfinite(knots[i]))
+      throw InputError(errc::curve_not_finite, Place::at_json(at(i)),
+                       "expected a finite knot, found " + fmt_num(knots[i]));
     if (i > 0 && knots[i] < knots[i - 1])
-      throw InputError(errc::curve_knot_order, Place::at_json(at(i)),
-                       "expected a knot >= " + fmt_num(knots[i - 1]) + " (knots must not decrease), found " +
-                           fmt_num(knots[i]));
+      throw InputError(
+          errc::curve_knot_order, Place::at_json(at(i)),
+          "expected a knot >= " + fmt_num(knots[i - 1]) + " (knots must not decrease), found " + fmt_num(knots[i]));
   }
   const size_t p = static_cast<size_t>(degree), m = knots.size() - 1;
   const double a = knots[p], b = knots[m - p];
@@ -73,8 +76,10 @@ int find_span(std::span<const double> U, int p, double u) {
   int lo = p, hi = n + 1;
   int mid = (lo + hi) / 2;
   while (u < U[mid] || u >= U[mid + 1]) {
-    if (u < U[mid]) hi = mid;
-    else lo = mid;
+    if (u < U[mid])
+      hi = mid;
+    else
+      lo = mid;
     mid = (lo + hi) / 2;
   }
   return mid;

@@ -44,19 +44,18 @@ NurbsCurve from_homogeneous(const NurbsCurve& like, const std::vector<H>& hs, st
   return out;
 }
 
-double clamp_to_domain(const NurbsCurve& c, double u) {
-  return std::clamp(u, c.domain_start(), c.domain_end());
-}
+double clamp_to_domain(const NurbsCurve& c, double u) { return std::clamp(u, c.domain_start(), c.domain_end()); }
 
 }  // namespace
 
 NurbsCurve NurbsCurve::make(int degree, std::vector<Vec3> pts, std::vector<double> knots, std::vector<double> w,
                             int dim) {
-  if (dim != 2 && dim != 3) throw InputError(errc::curve_dimension, Place{}, "expected dimension 2 or 3, found " + std::to_string(dim));
+  if (dim != 2 && dim != 3)
+    throw InputError(errc::curve_dimension, Place{}, "expected dimension 2 or 3, found " + std::to_string(dim));
   if (degree > kMaxBezierDegree)
-    throw InputError(errc::curve_degree_too_high, Place::at_json("degree"),
-                     "expected a degree of at most " + std::to_string(kMaxBezierDegree) + ", found " +
-                         std::to_string(degree));
+    throw InputError(
+        errc::curve_degree_too_high, Place::at_json("degree"),
+        "expected a degree of at most " + std::to_string(kMaxBezierDegree) + ", found " + std::to_string(degree));
   validate_control_points(pts, w, dim);
   validate_knots(knots, degree, pts.size());
   NurbsCurve c;

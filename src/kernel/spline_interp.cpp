@@ -14,7 +14,6 @@ namespace {
 
 std::string at(size_t k) { return "through[" + std::to_string(k) + "]"; }
 
-
 double scale_of(std::span<const Vec3> pts) {
   double s = 0;
   for (const auto& p : pts) s = std::max(s, max_abs(p));
@@ -26,13 +25,15 @@ Eigen::MatrixXd solve(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixX
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   lu.compute(A);
   if (lu.info() != Eigen::Success)
-    throw InputError(errc::curve_ill_conditioned, Place::at_json("through"), "the interpolation system is singular; check the points");
+    throw InputError(errc::curve_ill_conditioned, Place::at_json("through"),
+                     "the interpolation system is singular; check the points");
   return lu.solve(B);
 }
 
 std::vector<Vec3> rows_to_points(const Eigen::MatrixXd& X, int dim) {
   std::vector<Vec3> out(static_cast<size_t>(X.rows()));
-  for (Eigen::Index i = 0; i < X.rows(); ++i) out[static_cast<size_t>(i)] = {X(i, 0), X(i, 1), dim == 3 ? X(i, 2) : 0.0};
+  for (Eigen::Index i = 0; i < X.rows(); ++i)
+    out[static_cast<size_t>(i)] = {X(i, 0), X(i, 1), dim == 3 ? X(i, 2) : 0.0};
   return out;
 }
 
@@ -80,8 +81,7 @@ NurbsCurve cubic_spline(std::span<const Vec3> pts, int dim, const std::pair<Vec3
     const int span = find_span(U, 3, u);
     const auto d = basis_derivatives(U, 3, span, u, deriv);
     for (int j = 0; j <= 3; ++j)
-      if (d[deriv][j] != 0)
-        trip.emplace_back(static_cast<int>(row), span - 3 + j, d[deriv][j] * weight);
+      if (d[deriv][j] != 0) trip.emplace_back(static_cast<int>(row), span - 3 + j, d[deriv][j] * weight);
   };
   // Derivative rows are scaled by the end spans (squared for the second
   // derivative) so that all rows have entries of order one (the

@@ -231,8 +231,11 @@ struct Mapper {
 }  // namespace
 
 SurfaceCurve map_curve(const SurfaceGeometry& s, const CurveGeometry& uv, bool with_normals) {
-  Mapper m{s, with_normals, std::vector<BezierPatch>(s.grid.cells.size()),
-           std::vector<bool>(s.grid.cells.size(), false), {}};
+  Mapper m{s,
+           with_normals,
+           std::vector<BezierPatch>(s.grid.cells.size()),
+           std::vector<bool>(s.grid.cells.size(), false),
+           {}};
   m.out.breaks.push_back(0);
   const double K = static_cast<double>(uv.pieces.size());
   for (size_t k = 0; k < uv.pieces.size(); ++k) {

@@ -25,8 +25,7 @@ using std::chrono::milliseconds;
 // One transfer, from OPEN to DONE; not reusable.
 class Sender {
  public:
-  Sender(std::string_view program, const TransportFactory& connect, const std::string& peer,
-         const StreamOptions& opt)
+  Sender(std::string_view program, const TransportFactory& connect, const std::string& peer, const StreamOptions& opt)
       : prog_(program), connect_(connect), peer_(peer), opt_(opt), crc_(crc32(program)) {
     // Line ends, to turn acknowledged bytes into lines for progress.
     for (std::size_t i = 0; i < prog_.size(); ++i)
@@ -35,7 +34,8 @@ class Sender {
     // The token proves, after a reconnection, that this sender opened the
     // transfer; the session id alone is readable by anyone.
     std::random_device rd;
-    do token_ = static_cast<std::uint32_t>(rd()); while (token_ == 0);
+    do token_ = static_cast<std::uint32_t>(rd());
+    while (token_ == 0);
   }
 
   StreamResult run() {
@@ -124,7 +124,8 @@ class Sender {
   }
 
   std::string position() const {
-    const auto line = std::lower_bound(newlines_.begin(), newlines_.end(), std::size_t{st_.ack_bytes}) - newlines_.begin();
+    const auto line =
+        std::lower_bound(newlines_.begin(), newlines_.end(), std::size_t{st_.ack_bytes}) - newlines_.begin();
     return std::to_string(st_.ack_bytes) + " of " + std::to_string(prog_.size()) + " bytes acknowledged (" +
            std::to_string(line) + " of " + std::to_string(lines_total_) + " lines), " +
            std::to_string(st_.lines_executed) + " lines executed";
@@ -141,8 +142,8 @@ class Sender {
     throw ControllerError(errc::controller_alarm,
                           st_.alarm_line > 0 ? Place::at_line(st_.alarm_line) : Place::at_file(peer_),
                           std::string("the controller stopped with alarm ") + to_string(st_.alarm) + " (" +
-                              std::to_string(static_cast<int>(st_.alarm)) + "): " +
-                              (text.empty() ? "no message" : text) + "; " + position());
+                              std::to_string(static_cast<int>(st_.alarm)) +
+                              "): " + (text.empty() ? "no message" : text) + "; " + position());
   }
 
   // A request was refused with a Modbus exception: the status says why.
@@ -211,11 +212,12 @@ class Sender {
       return false;
     });
     session_ = st_.session;
-    event("transfer opened: session " + hex32(session_) + ", controller buffer " +
-          std::to_string(st_.buffer_capacity) + " bytes");
+    event("transfer opened: session " + hex32(session_) + ", controller buffer " + std::to_string(st_.buffer_capacity) +
+          " bytes");
     max_chunk_ = std::min<std::uint16_t>(st_.max_chunk, kMaxChunkBytes);
     if (opt_.chunk_bytes > 0) max_chunk_ = std::min(max_chunk_, opt_.chunk_bytes);
-    if (max_chunk_ == 0) throw ControllerError(errc::link_protocol, Place::at_file(peer_), "the controller announces chunks of 0 bytes");
+    if (max_chunk_ == 0)
+      throw ControllerError(errc::link_protocol, Place::at_file(peer_), "the controller announces chunks of 0 bytes");
     mark_progress();
     report();
   }
@@ -340,8 +342,9 @@ class Sender {
   // lost is either visible in the state after reconnecting (FINISHING or
   // DONE) or simply sent again.
   void commit() {
-    const auto cmd = encode_command(
-        Command::commit, std::array<std::uint32_t, 4>{token_, session_, static_cast<std::uint32_t>(prog_.size()), crc_});
+    const auto cmd =
+        encode_command(Command::commit,
+                       std::array<std::uint32_t, 4>{token_, session_, static_cast<std::uint32_t>(prog_.size()), crc_});
     repeat_command(
         cmd, [&](const ModbusException& e) { refused(e, "COMMIT (length and CRC-32 check)"); },
         [&](const std::string& why) {
@@ -396,8 +399,8 @@ class Sender {
       ++failures_;
       if (attempt > 1) {  // back off: 50, 100, 200 ... 1000 ms, within the deadline
         const auto wait = milliseconds(std::min(1000, 50 << std::min(attempt - 2, 5)));
-        std::this_thread::sleep_for(std::min<milliseconds>(wait, std::chrono::duration_cast<milliseconds>(
-                                                                     deadline - Clock::now())));
+        std::this_thread::sleep_for(
+            std::min<milliseconds>(wait, std::chrono::duration_cast<milliseconds>(deadline - Clock::now())));
       }
       try {
         client_ = connect_(opt_.timeout);
@@ -419,8 +422,9 @@ class Sender {
       refused(e, "RESUME");
     }
     if (st_.ack_bytes > sent_high_)
-      throw ControllerError(errc::link_ack, Place::at_file(peer_), "after reconnecting the controller reports " + position() +
-                                                       ", more than was sent; the program may be corrupted");
+      throw ControllerError(errc::link_ack, Place::at_file(peer_),
+                            "after reconnecting the controller reports " + position() +
+                                ", more than was sent; the program may be corrupted");
   }
 
   // Reconnect, then decide: the same session is resumed from the
@@ -478,9 +482,9 @@ ControllerReport report_of(Transport& c) {
 
 void require_bezcam(const ControllerReport& r, const Endpoint& to) {
   if (r.status.magic != kMagic)
-    throw IoError(errc::link_protocol, Place::at_file(to.str()),
-                  "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(r.status.magic) +
-                      ")");
+    throw IoError(
+        errc::link_protocol, Place::at_file(to.str()),
+        "this Modbus server is not a bezcam program controller (register 0 reads " + hex32(r.status.magic) + ")");
 }
 
 }  // namespace
@@ -504,7 +508,8 @@ ControllerReport abort_controller(const Endpoint& to, std::chrono::milliseconds 
   try {
     c.write_registers(reg::command, cmd);
   } catch (const ModbusException& e) {
-    throw ControllerError(errc::link_refused, Place::at_file(to.str()), std::string("the controller refused ABORT: ") + e.what());
+    throw ControllerError(errc::link_refused, Place::at_file(to.str()),
+                          std::string("the controller refused ABORT: ") + e.what());
   }
   return report_of(c);
 }

@@ -1,10 +1,9 @@
 #include "bezcam/link/transport.hpp"
 
-#include <modbus/modbus.h>
-
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <modbus/modbus.h>
 
 namespace bezcam::link {
 
@@ -18,7 +17,8 @@ std::string Endpoint::str() const {
 Endpoint parse_endpoint(std::string_view text, bool allow_zero) {
   const std::string shown(text);
   auto bad = [&](const std::string& why) -> InputError {
-    return InputError(errc::link_endpoint, Place::at_file(shown), "expected HOST:PORT (for example 127.0.0.1:5020); " + why);
+    return InputError(errc::link_endpoint, Place::at_file(shown),
+                      "expected HOST:PORT (for example 127.0.0.1:5020); " + why);
   };
   Endpoint e;
   std::string_view port_text = text;
@@ -49,7 +49,9 @@ ModbusClient::ModbusClient(const Endpoint& to, std::chrono::milliseconds timeout
   const std::string service = std::to_string(to.port);
   // The _pi variant resolves host names and IPv6 as well as dotted quads.
   ctx_ = modbus_new_tcp_pi(to.host.c_str(), service.c_str());
-  if (!ctx_) throw IoError(errc::link_connection, Place::at_file(to.str()), std::string("cannot create a Modbus context: ") + std::strerror(errno));
+  if (!ctx_)
+    throw IoError(errc::link_connection, Place::at_file(to.str()),
+                  std::string("cannot create a Modbus context: ") + std::strerror(errno));
   const auto ms = std::max<long long>(1, timeout.count());
   modbus_set_response_timeout(ctx_, static_cast<uint32_t>(ms / 1000), static_cast<uint32_t>((ms % 1000) * 1000));
   // A reply's bytes arrive together on TCP; the same bound per byte is generous.
@@ -83,7 +85,8 @@ void ModbusClient::fail(const char* what) {
     throw ModbusException(err - MODBUS_ENOBASE, std::string(what) + ": " + modbus_strerror(err));
   // Anything else leaves the stream in an unknown state: drop the socket.
   close();
-  throw IoError(errc::link_connection, Place::at_file(to_.str()), std::string(what) + " failed: " + modbus_strerror(err));
+  throw IoError(errc::link_connection, Place::at_file(to_.str()),
+                std::string(what) + " failed: " + modbus_strerror(err));
 }
 
 namespace {
@@ -91,15 +94,17 @@ namespace {
 // out of range is a bug here, not something the controller should see.
 void check_count(std::size_t n, std::size_t max, const Endpoint& to) {
   if (n == 0 || n > max)
-    throw IoError(errc::link_request, Place::at_file(to.str()), "a request of " + std::to_string(n) + " registers is outside 1.." +
-                                                std::to_string(max) + " (program bug)");
+    throw IoError(
+        errc::link_request, Place::at_file(to.str()),
+        "a request of " + std::to_string(n) + " registers is outside 1.." + std::to_string(max) + " (program bug)");
 }
 }  // namespace
 
 void ModbusClient::read_holding(std::uint16_t addr, std::span<std::uint16_t> out) {
   if (!ctx_) throw IoError(errc::link_connection, Place::at_file(to_.str()), "the connection is closed");
   check_count(out.size(), MODBUS_MAX_READ_REGISTERS, to_);
-  if (modbus_read_registers(ctx_, addr, static_cast<int>(out.size()), out.data()) == -1) fail("reading holding registers");
+  if (modbus_read_registers(ctx_, addr, static_cast<int>(out.size()), out.data()) == -1)
+    fail("reading holding registers");
 }
 
 void ModbusClient::read_input(std::uint16_t addr, std::span<std::uint16_t> out) {

@@ -25,7 +25,9 @@ Vec3 unit2(const Vec3& v) {
 }
 double len2(const Vec3& v) { return std::hypot(v.x, v.y); }
 std::string line_of(const MotionBlock& b) { return b.line > 0 ? " (line " + std::to_string(b.line) + ")" : ""; }
-std::string xy_text(const Vec3& p) { return "X" + fmt_num(std::round(p.x * 1e4) / 1e4) + " Y" + fmt_num(std::round(p.y * 1e4) / 1e4); }
+std::string xy_text(const Vec3& p) {
+  return "X" + fmt_num(std::round(p.x * 1e4) / 1e4) + " Y" + fmt_num(std::round(p.y * 1e4) / 1e4);
+}
 
 // Unit tangent of a line or arc at its start or end (XY).
 Vec3 tangent(const MotionBlock& b, bool at_end) {
@@ -44,8 +46,8 @@ double radius_change(const MotionBlock& b, int side, double r) {
 // or a circle (centre, radius).
 struct Prim {
   bool circle = false;
-  Vec3 p, d;   // line
-  Vec3 c;      // circle
+  Vec3 p, d;  // line
+  Vec3 c;     // circle
   double R = 0;
 };
 
@@ -126,7 +128,8 @@ void CutterComp::on(int side, double radius) {
   if (side_ != 0)
     throw CompensationError(std::string(side > 0 ? "G41" : "G42") +
                             " while cutter compensation is already on: cancel it with G40 first");
-  if (!(radius > 0)) throw CompensationError("the tool radius for cutter compensation is " + fmt_num(radius) + ", not positive");
+  if (!(radius > 0))
+    throw CompensationError("the tool radius for cutter compensation is " + fmt_num(radius) + ", not positive");
   side_ = side;
   r_ = radius;
   entering_ = true;
@@ -197,20 +200,21 @@ std::vector<MotionBlock> CutterComp::release(const MotionBlock* next) {
   const Vec3 start = flat(pending_start_);
   if (!is_arc(p)) {
     if (dot2(end - start, t1) <= 0 && len2(end - start) > 1e-9 * std::max(1.0, r_))
-      throw CompensationError("cutter compensation would gouge: the move to " + xy_text(p.to) +
-                              line_of(p) + " is too short for the tool radius " + fmt_num(r_) + " on the inside of its corners");
+      throw CompensationError("cutter compensation would gouge: the move to " + xy_text(p.to) + line_of(p) +
+                              " is too short for the tool radius " + fmt_num(r_) + " on the inside of its corners");
   } else {
     const double rad = len2(flat(p.to) - flat(p.center)) + radius_change(p, side_, r_);
     if (rad <= 1e-9 * std::max(1.0, r_))
-      throw CompensationError("the arc to " + xy_text(p.to) + line_of(p) + " has a radius not larger than the tool radius " + fmt_num(r_) +
+      throw CompensationError("the arc to " + xy_text(p.to) + line_of(p) +
+                              " has a radius not larger than the tool radius " + fmt_num(r_) +
                               " on its inside: the tool cannot follow it");
     const double want = programmed_sweep(p);
     const double got = sweep_between(p, start, end);
     // Past its programmed end only by the wrap of a reversal (a start a
     // hair off the arc's own start angle is the controller's to absorb).
     if (got > want + 1e-6 && got > 0.5 * (want + kTwoPi) && len2(end - start) > 1e-9 * std::max(1.0, r_))
-      throw CompensationError("cutter compensation would gouge: the arc to " + xy_text(p.to) +
-                              line_of(p) + " is too short for the tool radius " + fmt_num(r_) + " on the inside of its corners");
+      throw CompensationError("cutter compensation would gouge: the arc to " + xy_text(p.to) + line_of(p) +
+                              " is too short for the tool radius " + fmt_num(r_) + " on the inside of its corners");
   }
   p.from = {start.x, start.y, p.from.z};
   p.to = {end.x, end.y, p.to.z};
@@ -248,8 +252,9 @@ std::vector<MotionBlock> CutterComp::push(const MotionBlock& b) {
     return {x};
   }
   if (b.kind == BlockKind::nurbs || b.kind == BlockKind::bezier)
-    throw CompensationError("a NURBS or spline block cannot be cut in cutter compensation (G41/G42): "
-                            "cancel it with G40, or let the CAM offset the path");
+    throw CompensationError(
+        "a NURBS or spline block cannot be cut in cutter compensation (G41/G42): "
+        "cancel it with G40, or let the CAM offset the path");
   if (!xy) {
     if (pending_) {
       held_.push_back(b);
@@ -261,7 +266,8 @@ std::vector<MotionBlock> CutterComp::push(const MotionBlock& b) {
   }
   if (entering_) {
     if (is_arc(b))
-      throw CompensationError("the move after G41/G42 enters cutter compensation and must be a straight line, not an arc");
+      throw CompensationError(
+          "the move after G41/G42 enters cutter compensation and must be a straight line, not an arc");
     Vec3 from = b.from;
     if (exit_from_) from.x = exit_from_->x, from.y = exit_from_->y;
     if (len2(b.to - from) <= r_)

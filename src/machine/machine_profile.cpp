@@ -12,7 +12,6 @@
 #include "bezcam/error.hpp"
 #include "bezcam/job/keys.hpp"
 
-
 namespace bezcam {
 
 namespace {
@@ -22,13 +21,39 @@ using json = nlohmann::json;
 // The keys a profile may hold, per object (docs/machines.md).
 const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_keys() {
   static const std::vector<std::pair<std::string, std::vector<std::string_view>>> k = {
-      {"", {"name", "description", "header", "footer", "line_numbers", "decimals", "max_decimals", "feed_decimals", "words",
-            "tool_change", "spindle_on", "spindle_off", "preamble", "tool_length", "tool_changer", "spindle_dwell_s",
-            "comments", "modal", "program_number", "tool_change_position",
-            "arcs", "arc_tolerance_mm", "cutter_compensation", "tool_diameters_mm", "nurbs", "travel_mm", "max_feed_mm_min", "defaults", "motion"}},
-      {"motion", {"max_velocity_mm_min", "max_acceleration_mm_s2", "max_jerk_mm_s3", "period_s", "min_segment_periods",
-                  "block_rate_hz", "lookahead_blocks", "blend_tolerance_mm", "tool_change_s", "spindle_start_s",
-                  "planner"}},
+      {"",
+       {"name",
+        "description",
+        "header",
+        "footer",
+        "line_numbers",
+        "decimals",
+        "max_decimals",
+        "feed_decimals",
+        "words",
+        "tool_change",
+        "spindle_on",
+        "spindle_off",
+        "preamble",
+        "tool_length",
+        "tool_changer",
+        "spindle_dwell_s",
+        "comments",
+        "modal",
+        "program_number",
+        "tool_change_position",
+        "arcs",
+        "arc_tolerance_mm",
+        "cutter_compensation",
+        "tool_diameters_mm",
+        "nurbs",
+        "travel_mm",
+        "max_feed_mm_min",
+        "defaults",
+        "motion"}},
+      {"motion",
+       {"max_velocity_mm_min", "max_acceleration_mm_s2", "max_jerk_mm_s3", "period_s", "min_segment_periods",
+        "block_rate_hz", "lookahead_blocks", "blend_tolerance_mm", "tool_change_s", "spindle_start_s", "planner"}},
       {"line_numbers", {"enabled", "start", "step"}},
       {"decimals", {"mm", "inch"}},
       {"max_decimals", {"mm", "inch"}},
@@ -43,9 +68,14 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
 // The placeholders each template may use (the writer replaces them).
 const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_placeholders() {
   static const std::vector<std::pair<std::string, std::vector<std::string_view>>> p = {
-      {"header", {"safe_z", "program"}},  {"footer", {"safe_z", "program"}},     {"tool_change", {"tool"}},
-      {"spindle_on", {"rpm"}}, {"spindle_off", {}},     {"preamble", {}},
-      {"tool_length", {"tool"}}, {"tool_change_position", {}},
+      {"header", {"safe_z", "program"}},
+      {"footer", {"safe_z", "program"}},
+      {"tool_change", {"tool"}},
+      {"spindle_on", {"rpm"}},
+      {"spindle_off", {}},
+      {"preamble", {}},
+      {"tool_length", {"tool"}},
+      {"tool_change_position", {}},
   };
   return p;
 }
@@ -67,7 +97,8 @@ struct Reader {
         if (std::find(keys.begin(), keys.end(), it.key()) != keys.end() || user_key(it.key())) continue;
         const std::string at = object.empty() ? it.key() : object + "." + it.key();
         const UnknownKey u = unknown_key(it.key(), keys);
-        throw InputError(u.typo ? errc::machine_key_typo : errc::machine_unknown_key, Place::in_json(source, at), u.message);
+        throw InputError(u.typo ? errc::machine_key_typo : errc::machine_unknown_key, Place::in_json(source, at),
+                         u.message);
       }
     }
   }
@@ -81,13 +112,15 @@ struct Reader {
     for (auto a : allowed) list += (list.empty() ? "{" : ", {") + std::string(a) + "}";
     for (size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open + 1)) {
       const size_t close = text.find('}', open);
-      if (close == std::string::npos) fail(path, "\"" + text + "\": a '{' with no '}' (placeholders are written {name})");
+      if (close == std::string::npos)
+        fail(path, "\"" + text + "\": a '{' with no '}' (placeholders are written {name})");
       const std::string name = text.substr(open + 1, close - open - 1);
       if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
         std::string hint = list.empty() ? "this template takes no placeholder" : "this template takes " + list;
         if (const auto like = resembled_key(name, allowed)) hint = "did you mean {" + *like + "}?";
-        throw InputError(errc::machine_placeholder, Place::in_json(source, path),
-                         "unknown placeholder {" + name + "} in \"" + text + "\" (it would be printed as it is); " + hint);
+        throw InputError(
+            errc::machine_placeholder, Place::in_json(source, path),
+            "unknown placeholder {" + name + "} in \"" + text + "\" (it would be printed as it is); " + hint);
       }
     }
   }
@@ -144,11 +177,13 @@ MotionModel parse_motion(const Reader& r, const json& v) {
       if (!(out[i] > lo && out[i] <= hi)) r.fail(p + "." + names[i], std::string("expected ") + what);
     }
     for (auto it = o.begin(); it != o.end(); ++it)
-      if (it.key() != "x" && it.key() != "y" && it.key() != "z") r.fail(p + "." + it.key(), "unknown axis: expected x, y and z");
+      if (it.key() != "x" && it.key() != "y" && it.key() != "z")
+        r.fail(p + "." + it.key(), "unknown axis: expected x, y and z");
     return out;
   };
   mm.max_velocity_mm_min = axes("max_velocity_mm_min", 0, 1e6, "a velocity above 0 and at most 1000000 mm/min");
-  mm.max_acceleration_mm_s2 = axes("max_acceleration_mm_s2", 0, 1e6, "an acceleration above 0 and at most 1000000 mm/s^2");
+  mm.max_acceleration_mm_s2 =
+      axes("max_acceleration_mm_s2", 0, 1e6, "an acceleration above 0 and at most 1000000 mm/s^2");
   if (v.contains("max_jerk_mm_s3"))
     mm.max_jerk_mm_s3 = axes("max_jerk_mm_s3", 0, 1e9, "a jerk above 0 and at most 1e9 mm/s^3");
   mm.period_s = ranged("period_s", 1e-5, 0.1, "a period from 0.00001 to 0.1 s");
@@ -162,9 +197,12 @@ MotionModel parse_motion(const Reader& r, const json& v) {
   if (v.contains("spindle_start_s")) mm.spindle_start_s = ranged("spindle_start_s", 0, 3600, "from 0 to 3600 s");
   if (v.contains("planner")) {
     const std::string p = r.str(v["planner"], "motion.planner");
-    if (p == "generic") mm.planner = MotionModel::Planner::generic;
-    else if (p == "linuxcnc") mm.planner = MotionModel::Planner::linuxcnc;
-    else r.fail("motion.planner", "expected \"generic\" or \"linuxcnc\", found \"" + p + "\"");
+    if (p == "generic")
+      mm.planner = MotionModel::Planner::generic;
+    else if (p == "linuxcnc")
+      mm.planner = MotionModel::Planner::linuxcnc;
+    else
+      r.fail("motion.planner", "expected \"generic\" or \"linuxcnc\", found \"" + p + "\"");
   }
   return mm;
 }
@@ -189,8 +227,7 @@ void parse_format(const Reader& r, const json& doc, MachineProfile& m) {
     if (!v->is_object()) r.fail("max_decimals", "expected an object {\"mm\": N, \"inch\": N}");
     if (auto s = r.opt(*v, "mm")) m.max_decimals_mm = r.integer(*s, "max_decimals.mm");
     if (auto s = r.opt(*v, "inch")) m.max_decimals_inch = r.integer(*s, "max_decimals.inch");
-    if (m.max_decimals_mm > 9 || m.max_decimals_inch > 9)
-      r.fail("max_decimals", "expected at most 9 decimals");
+    if (m.max_decimals_mm > 9 || m.max_decimals_inch > 9) r.fail("max_decimals", "expected at most 9 decimals");
     if ((m.max_decimals_mm >= 0 && m.max_decimals_mm < m.decimals_mm) ||
         (m.max_decimals_inch >= 0 && m.max_decimals_inch < m.decimals_inch))
       r.fail("max_decimals", "expected at least the profile's decimals (" + std::to_string(m.decimals_mm) + " mm, " +
@@ -237,7 +274,8 @@ void parse_capabilities(const Reader& r, const json& doc, MachineProfile& m) {
   }
   if (auto v = r.opt(doc, "spindle_dwell_s")) {
     m.spindle_dwell_s = r.num(*v, "spindle_dwell_s");
-    if (!(m.spindle_dwell_s >= 0 && m.spindle_dwell_s <= 60)) r.fail("spindle_dwell_s", "expected seconds from 0 to 60");
+    if (!(m.spindle_dwell_s >= 0 && m.spindle_dwell_s <= 60))
+      r.fail("spindle_dwell_s", "expected seconds from 0 to 60");
   }
   if (auto v = r.opt(doc, "arcs")) {
     if (!v->is_boolean()) r.fail("arcs", "expected true or false");
@@ -249,12 +287,14 @@ void parse_capabilities(const Reader& r, const json& doc, MachineProfile& m) {
     m.cutter_compensation = v->get<bool>();
   }
   if (auto v = r.opt(doc, "tool_diameters_mm")) {
-    if (!v->is_object()) r.fail("tool_diameters_mm", "expected an object {\"1\": 6.0, ...}: D register -> diameter in mm");
+    if (!v->is_object())
+      r.fail("tool_diameters_mm", "expected an object {\"1\": 6.0, ...}: D register -> diameter in mm");
     for (const auto& [k, d] : v->items()) {
       const std::string p = "tool_diameters_mm." + k;
       int reg = -1;
       const auto [end, ec] = std::from_chars(k.data(), k.data() + k.size(), reg);
-      if (ec != std::errc() || end != k.data() + k.size() || reg < 0 || reg > 99999) r.fail(p, "expected a register number 0 to 99999 as the key");
+      if (ec != std::errc() || end != k.data() + k.size() || reg < 0 || reg > 99999)
+        r.fail(p, "expected a register number 0 to 99999 as the key");
       const double dia = r.num(d, p);
       if (!(dia >= 0 && dia < 1e4)) r.fail(p, "expected a diameter from 0 to 10000 mm");
       m.tool_diameters_mm[reg] = dia;
@@ -266,10 +306,14 @@ void parse_capabilities(const Reader& r, const json& doc, MachineProfile& m) {
 void parse_nurbs(const Reader& r, const json& v, MachineProfile& m) {
   if (!v.is_object()) r.fail("nurbs", "expected an object");
   const std::string d = r.str(v.value("dialect", json("none")), "nurbs.dialect");
-  if (d == "none") m.nurbs = NurbsDialect::none;
-  else if (d == "fanuc") m.nurbs = NurbsDialect::fanuc;
-  else if (d == "linuxcnc") m.nurbs = NurbsDialect::linuxcnc;
-  else r.fail("nurbs.dialect", "expected \"none\", \"fanuc\" or \"linuxcnc\", found \"" + d + "\"");
+  if (d == "none")
+    m.nurbs = NurbsDialect::none;
+  else if (d == "fanuc")
+    m.nurbs = NurbsDialect::fanuc;
+  else if (d == "linuxcnc")
+    m.nurbs = NurbsDialect::linuxcnc;
+  else
+    r.fail("nurbs.dialect", "expected \"none\", \"fanuc\" or \"linuxcnc\", found \"" + d + "\"");
   if (auto s = r.opt(v, "start_word")) m.nurbs_start_word = r.str(*s, "nurbs.start_word");
   if (auto s = r.opt(v, "max_rank")) m.nurbs_max_rank = r.integer(*s, "nurbs.max_rank");
   if (auto s = r.opt(v, "knot_decimals")) m.knot_decimals = r.integer(*s, "nurbs.knot_decimals");
@@ -304,7 +348,8 @@ void check_templates(const Reader& r, const MachineProfile& m) {
   r.check_placeholders("spindle_on", m.spindle_on);
   r.check_placeholders("spindle_off", m.spindle_off);
   r.check_placeholders("tool_length", m.tool_length);
-  for (size_t i = 0; i < m.preamble.size(); ++i) r.check_placeholders("preamble[" + std::to_string(i) + "]", m.preamble[i]);
+  for (size_t i = 0; i < m.preamble.size(); ++i)
+    r.check_placeholders("preamble[" + std::to_string(i) + "]", m.preamble[i]);
 }
 
 // The `defaults` object: job settings a job may leave to the machine.
@@ -334,7 +379,8 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    throw InputError(errc::machine_syntax, Place::at_file(source), std::string("the machine profile is not valid JSON (") + e.what() + ")");
+    throw InputError(errc::machine_syntax, Place::at_file(source),
+                     std::string("the machine profile is not valid JSON (") + e.what() + ")");
   }
   if (!doc.is_object()) r.fail("(top level)", "expected a JSON object");
   MachineProfile m;
@@ -386,8 +432,8 @@ std::vector<std::string> machine_profile_names(const std::vector<std::filesystem
 
 MachineProfile load_machine_profile(const std::string& name_or_file, const std::vector<std::filesystem::path>& dirs) {
   std::filesystem::path file;
-  const bool is_file = name_or_file.find('/') != std::string::npos ||
-                       (name_or_file.size() > 5 && name_or_file.ends_with(".json"));
+  const bool is_file =
+      name_or_file.find('/') != std::string::npos || (name_or_file.size() > 5 && name_or_file.ends_with(".json"));
   if (is_file) {
     file = name_or_file;
   } else {
@@ -417,8 +463,8 @@ MachineProfile load_machine_profile(const std::string& name_or_file, const std::
   // profile: it must be the one the file is found by.
   if (const std::string stem = file.stem().string(); m.name != stem)
     throw InputError(errc::machine_name, Place::in_json(file.string(), "name"),
-                     "expected \"" + stem + "\" (the file's name, " + file.filename().string() + "), found \"" + m.name +
-                         "\"; a profile is known by its file name: rename one or the other");
+                     "expected \"" + stem + "\" (the file's name, " + file.filename().string() + "), found \"" +
+                         m.name + "\"; a profile is known by its file name: rename one or the other");
   return m;
 }
 

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "bezcam/kernel/knot_vector.hpp"
-#include "bezcam/kernel/quadrature.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
+#include "bezcam/kernel/quadrature.hpp"
 
 namespace bezcam {
 
@@ -36,8 +36,7 @@ void refine(const BlockCurve& c, double t0, const Vec3& p0, double t1, const Vec
   const double tm = 0.5 * (t0 + t1);
   const Vec3 pm = c.at(tm);
   const Vec3 pq = c.at(0.5 * (t0 + tm)), pr = c.at(0.5 * (tm + t1));
-  const double err =
-      std::max({dist_to_segment(pm, p0, p1), dist_to_segment(pq, p0, p1), dist_to_segment(pr, p0, p1)});
+  const double err = std::max({dist_to_segment(pm, p0, p1), dist_to_segment(pq, p0, p1), dist_to_segment(pr, p0, p1)});
   if (err <= chord || depth >= 24) {
     out.push_back(p1);
     return;
@@ -196,8 +195,8 @@ std::vector<Bezier> block_to_bezier(const MotionBlock& b) {
         for (double w : c.weights)
           if (!(w > 0)) throw std::invalid_argument("weight <= 0");
       } catch (const std::exception& e) {
-        throw std::invalid_argument(std::string("block_to_bezier: NURBS block of line ") + std::to_string(b.first_line) +
-                                    " cannot be decomposed: " + e.what());
+        throw std::invalid_argument(std::string("block_to_bezier: NURBS block of line ") +
+                                    std::to_string(b.first_line) + " cannot be decomposed: " + e.what());
       }
       return to_bezier(c);
     }

@@ -123,7 +123,8 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
       if (!mb.ctrl.empty()) mb.ctrl.front() = mb.from;
     }
     pos = mb.to;
-    most += 1 + (mb.kind == BlockKind::nurbs || mb.kind == BlockKind::bezier ? static_cast<size_t>(curve_pieces(mb)) : 1);
+    most +=
+        1 + (mb.kind == BlockKind::nurbs || mb.kind == BlockKind::bezier ? static_cast<size_t>(curve_pieces(mb)) : 1);
   }
   // Tool changes and spindle starts take the machine's time.
   for (PlanPause& p : timed.pauses) {
@@ -182,9 +183,12 @@ void sample_plan(const MotionPlan& plan, const std::function<void(double, const 
       const double tau = t - s.t_start;
       last = s.point_at(s.distance_at(tau), plan.motion);
       // Speed at tau.
-      if (tau < s.t_acc) feed = s.v0 + (s.vpeak - s.v0) * (s.t_acc > 0 ? tau / s.t_acc : 1);
-      else if (tau < s.t_acc + s.t_cruise) feed = s.vpeak;
-      else feed = s.vpeak + (s.v1 - s.vpeak) * (s.t_dec > 0 ? (tau - s.t_acc - s.t_cruise) / s.t_dec : 1);
+      if (tau < s.t_acc)
+        feed = s.v0 + (s.vpeak - s.v0) * (s.t_acc > 0 ? tau / s.t_acc : 1);
+      else if (tau < s.t_acc + s.t_cruise)
+        feed = s.vpeak;
+      else
+        feed = s.vpeak + (s.v1 - s.vpeak) * (s.t_dec > 0 ? (tau - s.t_acc - s.t_cruise) / s.t_dec : 1);
       feed *= 60;
     } else if (seg > 0 && seg <= plan.segments.size()) {
       const PlanSegment& s = plan.segments[seg - 1];

@@ -35,9 +35,9 @@ inline constexpr double kKinkRatio = 0.1;
 inline constexpr double kMinBlendTheta = kPi / 12;
 
 struct Limits {
-  Vec3 vmax;   // units/s per axis
-  Vec3 amax;   // units/s^2
-  Vec3 jmax;   // units/s^3 (0: none)
+  Vec3 vmax;  // units/s per axis
+  Vec3 amax;  // units/s^2
+  Vec3 jmax;  // units/s^3 (0: none)
   bool jerk = false;
 };
 
@@ -78,7 +78,7 @@ struct Builder {
   double period;
   double scale;  // mm per program unit
   std::vector<PlanSegment> segs;
-  std::vector<double> junction;   // junction[i]: largest speed entering segs[i] (0: stop)
+  std::vector<double> junction;    // junction[i]: largest speed entering segs[i] (0: stop)
   std::vector<PlanSegment> mine_;  // build(): the block's segments before they join segs
   // Every segment's speed figures, in order (speeds(), totals()). A summary
   // moves a segment here once no blend can reach it and drops it from

@@ -15,8 +15,10 @@ void Builder::build() {
   // Reserved once (address space only until used): no reallocation
   // holding the segments twice while a long program grows.
   const size_t most = most_segments + 16;
-  if (summary) lean.reserve(most);
-  else segs.reserve(most);
+  if (summary)
+    lean.reserve(most);
+  else
+    segs.reserve(most);
   junction.reserve(most + 1);
   plan.blocks.reserve(tl.blocks.size());
   for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
@@ -123,8 +125,10 @@ void Builder::exact_stop_end(Stop why) {
   PlanSegment& s = segs.back();
   const bool exact = path_tolerance(static_cast<size_t>(s.block)) <= 0;
   double f = 1;
-  if (why == Stop::exact_mode || (exact && why != Stop::corner)) f = 0.9;
-  else if (why == Stop::end || why == Stop::pause) f = 0.5;
+  if (why == Stop::exact_mode || (exact && why != Stop::corner))
+    f = 0.9;
+  else if (why == Stop::end || why == Stop::pause)
+    f = 0.5;
   if (f == 1) return;
   s.overall_accel *= f;
   s.accel = s.curved ? kTangentialShare * s.overall_accel : std::min(s.accel * f, s.overall_accel);
@@ -140,7 +144,7 @@ double Builder::blend_lines(PlanSegment& next, double tol, double nominal_prev, 
   const Vec3 u1 = unit(c - a), u2 = unit(e - c);
   const double cosang = std::clamp(dot(u1, u2), -1.0, 1.0);
   const double phi = std::acos(cosang);  // turning angle
-  if (phi > kPi - 1e-6) return 0;  // reversal: stop
+  if (phi > kPi - 1e-6) return 0;        // reversal: stop
   const double theta = 0.5 * (kPi - phi);
   const Vec3 normal = unit(cross(u1, u2));
   const double aplane = in_plane(normal, lim.amax), vplane = in_plane(normal, lim.vmax);
@@ -229,7 +233,7 @@ double Builder::blend_lines(PlanSegment& next, double tol, double nominal_prev, 
 // limits (twice as much at an arc), below kKinkRatio; the moves then
 // lose that share of their acceleration. `kink_scale` receives the share.
 bool Builder::tangent(PlanSegment& prev, PlanSegment& next, const Vec3& u1, const Vec3& u2, double phi, double& vj,
-             double& kink_scale) const {
+                      double& kink_scale) const {
   const double vmax = std::min(prev.vmax, next.vmax);
   if (!linuxcnc()) {
     if (phi >= kTangentAngle) return false;
@@ -256,8 +260,8 @@ bool Builder::tangent(PlanSegment& prev, PlanSegment& next, const Vec3& u1, cons
 // (each arc lends at most a part of its sweep: 2/3 of the one before,
 // 1/3 of the one after, and half of it for a line), the shape kept.
 // -1 when no blend fits.
-double Builder::curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk, const MotionBlock&,
-                     const Vec3& u1, const Vec3& u2, double phi, double tol) {
+double Builder::curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk,
+                              const MotionBlock&, const Vec3& u1, const Vec3& u2, double phi, double tol) {
   const Vec3 P = pbk.to;
   const double theta_tan = 0.5 * (kPi - phi);
   double theta = theta_tan, L1, L2;

@@ -40,7 +40,8 @@ class CurvePoints {
     if (t >= 1) return b_.to;
     const double u = breaks_.front() + t * (breaks_.back() - breaks_.front());
     const auto it = std::upper_bound(breaks_.begin(), breaks_.end(), u);
-    const size_t j = static_cast<size_t>(std::clamp<long>(it - breaks_.begin() - 1, 0, static_cast<long>(pieces_.size()) - 1));
+    const size_t j =
+        static_cast<size_t>(std::clamp<long>(it - breaks_.begin() - 1, 0, static_cast<long>(pieces_.size()) - 1));
     const double w = breaks_[j + 1] - breaks_[j];
     return evaluate(pieces_[j], w > 0 ? (u - breaks_[j]) / w : 0);
   }
@@ -99,7 +100,8 @@ Vec3 block_tangent(const MotionBlock& b, bool end) {
     }
     default: {
       const double h = 1e-6;
-      return end ? unit(evaluate_block(b, 1) - evaluate_block(b, 1 - h)) : unit(evaluate_block(b, h) - evaluate_block(b, 0));
+      return end ? unit(evaluate_block(b, 1) - evaluate_block(b, 1 - h))
+                 : unit(evaluate_block(b, h) - evaluate_block(b, 0));
     }
   }
 }
@@ -299,7 +301,8 @@ void Builder::add_curve_segments(int bi, PlannedBlock& pb, std::vector<PlanSegme
   }
   std::vector<Vec3> pts(static_cast<size_t>(pieces * kSub + 1));
   const CurvePoints curve(b);
-  for (int i = 0; i <= pieces * kSub; ++i) pts[static_cast<size_t>(i)] = curve.at(static_cast<double>(i) / (pieces * kSub));
+  for (int i = 0; i <= pieces * kSub; ++i)
+    pts[static_cast<size_t>(i)] = curve.at(static_cast<double>(i) / (pieces * kSub));
   for (int k = 0; k < pieces; ++k) {
     PlanSegment s;
     s.block = bi;

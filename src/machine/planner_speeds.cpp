@@ -117,7 +117,8 @@ void Builder::speeds() {
   }
   // Backward then forward (speeds by the acceleration; the jerk's share
   // of a ramp is counted below, once per ramp).
-  for (size_t i = n; i-- > 0;) v[i] = std::min(v[i], reachable(v[i + 1], lean[i].length, lean[i].accel, 0, lean[i].vmax));
+  for (size_t i = n; i-- > 0;)
+    v[i] = std::min(v[i], reachable(v[i + 1], lean[i].length, lean[i].accel, 0, lean[i].vmax));
   for (size_t i = 0; i < n; ++i)
     v[i + 1] = std::min(v[i + 1], reachable(v[i], lean[i].length, lean[i].accel, 0, lean[i].vmax));
   // Trapezoids, then (with a jerk limit) S-curves: a ramp's build-up and

@@ -75,7 +75,8 @@ std::string motion_summary_text(const MotionPlan& plan, const std::string& what)
   if (plan.pause_time_s > 0) s += ", pauses " + format_seconds(plan.pause_time_s);
   s += "); at the programmed feeds with no acceleration " + format_seconds(plan.programmed_feed_time_s) + "\n";
   char b[256];
-  std::snprintf(b, sizeof b, "  mean feed %.0f %% of programmed; %zu starved block%s; corners within %.4f mm of the program\n",
+  std::snprintf(b, sizeof b,
+                "  mean feed %.0f %% of programmed; %zu starved block%s; corners within %.4f mm of the program\n",
                 plan.mean_feed_ratio * 100, plan.starved_blocks, plan.starved_blocks == 1 ? "" : "s",
                 plan.max_path_deviation * mm);
   s += b;

@@ -144,7 +144,9 @@ bool beside_its_curve(const Job& job, const Entity& e) {
 
 std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const MotionBlock> motion, double tolerance,
                                              const EntityProgress& on_entity) {
-  if (!(tolerance > 0)) throw InputError(errc::preview_tolerance, Place::at_setting("deviation"), "needs a tolerance > 0 to measure against");
+  if (!(tolerance > 0))
+    throw InputError(errc::preview_tolerance, Place::at_setting("deviation"),
+                     "needs a tolerance > 0 to measure against");
   std::vector<BlockDeviation> out;
   const size_t total = job.entities.size();
   bool tagged = false;

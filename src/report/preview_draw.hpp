@@ -71,7 +71,7 @@ struct View {
   std::string id, title;
   bool iso = false;
   double minx = HUGE_VAL, maxx = -HUGE_VAL, miny = HUGE_VAL, maxy = -HUGE_VAL;
-  double s = 1, ox = 0, oy = 0;    // scale (px per unit) and origin
+  double s = 1, ox = 0, oy = 0;           // scale (px per unit) and origin
   double px = 0, py = 0, pw = 0, ph = 0;  // panel rectangle
 
   // Isometric drawing: the three axes at 120 degrees, lengths along them

@@ -2,8 +2,8 @@
 // start point, direction arrows and label.
 #include <algorithm>
 
-#include "bezcam/kernel/surface.hpp"
 #include "bezcam/error.hpp"
+#include "bezcam/kernel/surface.hpp"
 #include "bezcam/report/motion_report.hpp"
 #include "bezcam/report/report.hpp"
 #include "preview_draw.hpp"
@@ -42,10 +42,9 @@ void svg_entity(std::string& o, const View& v, const PreviewInput& in, const Ent
     // A surface's border lines (the first and last of each direction)
     // are drawn heavier than its inner iso lines.
     const bool border = !sh.surface || c < 2 || c + 2 >= pts.size();
-    o += "<path class=\"curve" + std::string(sh.surface ? " iso-line" : "") + "\" d=\"" +
-         path_d(v, pts[c]) + "\" fill=\"none\" stroke=\"" + kCurveColour + "\" stroke-width=\"" +
-         (border ? "1.2" : "0.6") + "\" stroke-linejoin=\"round\"" + (border ? "" : " stroke-opacity=\"0.6\"") +
-         "/>\n";
+    o += "<path class=\"curve" + std::string(sh.surface ? " iso-line" : "") + "\" d=\"" + path_d(v, pts[c]) +
+         "\" fill=\"none\" stroke=\"" + kCurveColour + "\" stroke-width=\"" + (border ? "1.2" : "0.6") +
+         "\" stroke-linejoin=\"round\"" + (border ? "" : " stroke-opacity=\"0.6\"") + "/>\n";
   }
   // Start point and direction: an arrow leaving the start, another at
   // the middle of the curve. A surface's are those of its first cut.
@@ -63,8 +62,7 @@ void svg_entity(std::string& o, const View& v, const PreviewInput& in, const Ent
   } else {
     for (size_t i = 0; i < in.motion.size() && !have_start; ++i) {
       const auto& b = in.motion[i];
-      if (in.motion[i].entity != static_cast<int>(e.index) || !is_feed(b) || is_plunge(in.motion, i) ||
-          b.from == b.to)
+      if (in.motion[i].entity != static_cast<int>(e.index) || !is_feed(b) || is_plunge(in.motion, i) || b.from == b.to)
         continue;
       start = b.from;
       start_dir = msamples[i][1] - msamples[i][0];

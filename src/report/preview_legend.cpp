@@ -11,7 +11,6 @@
 
 namespace bezcam::preview {
 
-
 // The top view's coordinates: ticks with their values along the bottom and
 // the left of the drawing, and the origin (0, 0) marked where it is in view
 // (said in a corner where it is not).
@@ -39,14 +38,25 @@ void svg_axes(std::string& o, const View& v) {
   if (v.minx - slack <= 0 && 0 <= v.maxx + slack && v.miny - slack <= 0 && 0 <= v.maxy + slack) {
     const P2 c = v.screen(Vec3{0, 0, 0});
     o += "<g class=\"origin\" stroke=\"#000000\" stroke-width=\"1.2\">"
-         "<circle cx=\"" + n3(c.x) + "\" cy=\"" + n3(c.y) + "\" r=\"5\" fill=\"none\"/>"
-         "<path d=\"M" + n3(c.x) + " " + n3(c.y) + " L" + n3(c.x + 24) + " " + n3(c.y) + " M" + n3(c.x) + " " +
-         n3(c.y) + " L" + n3(c.x) + " " + n3(c.y - 24) + "\"/>"
-         "<path d=\"" + arrow_d({c.x + 28, c.y}, {1, 0}, 7, 3) + " " + arrow_d({c.x, c.y - 28}, {0, -1}, 7, 3) +
+         "<circle cx=\"" +
+         n3(c.x) + "\" cy=\"" + n3(c.y) +
+         "\" r=\"5\" fill=\"none\"/>"
+         "<path d=\"M" +
+         n3(c.x) + " " + n3(c.y) + " L" + n3(c.x + 24) + " " + n3(c.y) + " M" + n3(c.x) + " " + n3(c.y) + " L" +
+         n3(c.x) + " " + n3(c.y - 24) +
+         "\"/>"
+         "<path d=\"" +
+         arrow_d({c.x + 28, c.y}, {1, 0}, 7, 3) + " " + arrow_d({c.x, c.y - 28}, {0, -1}, 7, 3) +
          "\" fill=\"#000000\" stroke=\"none\"/>"
-         "<text x=\"" + n3(c.x + 31) + "\" y=\"" + n3(c.y + 4) + "\" stroke=\"none\" font-size=\"10\">X</text>"
-         "<text x=\"" + n3(c.x - 3) + "\" y=\"" + n3(c.y - 32) + "\" stroke=\"none\" font-size=\"10\">Y</text>"
-         "<text x=\"" + n3(c.x - 8) + "\" y=\"" + n3(c.y + 16) + "\" stroke=\"none\" font-size=\"10\" "
+         "<text x=\"" +
+         n3(c.x + 31) + "\" y=\"" + n3(c.y + 4) +
+         "\" stroke=\"none\" font-size=\"10\">X</text>"
+         "<text x=\"" +
+         n3(c.x - 3) + "\" y=\"" + n3(c.y - 32) +
+         "\" stroke=\"none\" font-size=\"10\">Y</text>"
+         "<text x=\"" +
+         n3(c.x - 8) + "\" y=\"" + n3(c.y + 16) +
+         "\" stroke=\"none\" font-size=\"10\" "
          "text-anchor=\"end\">0, 0</text></g>\n";
   } else {
     o += "<text class=\"origin-off-view\" x=\"" + n3(v.px + v.pw - 8) + "\" y=\"" + n3(v.py + 16) +
@@ -104,8 +114,9 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
   if (opt.control) key("key-control", line(kControlColour, 0.8, ""), "control polygon");
   if (in.plan) {
     key("key-feed", line(preview_feed_colour(1, 1), 3, ""), "feed, coloured by the speed reached");
-    key("key-starved", "<path d=\"M" + n3(lx) + " " + n3(ly) + " L" + n3(lx + 28) + " " + n3(ly) + "\" stroke=\"" +
-                           kOverColour + "\" stroke-opacity=\"0.45\" stroke-width=\"9\" fill=\"none\"/>",
+    key("key-starved",
+        "<path d=\"M" + n3(lx) + " " + n3(ly) + " L" + n3(lx + 28) + " " + n3(ly) + "\" stroke=\"" + kOverColour +
+            "\" stroke-opacity=\"0.45\" stroke-width=\"9\" fill=\"none\"/>",
         "starved blocks (red halo)");
   } else if (opt.deviation) {
     key("key-feed", line(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
@@ -127,19 +138,22 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
   auto fits = [&](const std::string& label) { return lx + 44 + 6.8 * double(label.size()) <= opt.width - margin; };
   if (swept && fits("tool's width")) key("key-swept", line("#9ecae1", 9, ""), "tool's width");
   if (swept && o.find("class=\"tab\"") != std::string::npos && fits("holding tab"))
-    key("key-tab", "<rect x=\"" + n3(lx + 10) + "\" y=\"" + n3(ly - 4) + "\" width=\"8\" height=\"8\" fill=\"#ff9f1c\" stroke=\"#7a4a00\"/>",
+    key("key-tab",
+        "<rect x=\"" + n3(lx + 10) + "\" y=\"" + n3(ly - 4) +
+            "\" width=\"8\" height=\"8\" fill=\"#ff9f1c\" stroke=\"#7a4a00\"/>",
         "holding tab");
   if (left && fits("material left")) key("key-material-left", line("#d62728", 7, ""), "material left");
-  key("key-start", "<circle cx=\"" + n3(lx + 6) + "\" cy=\"" + n3(ly) + "\" r=\"3.5\" fill=\"" + kCurveColour +
-                       "\"/><path d=\"" + arrow_d({lx + 26, ly}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>",
+  key("key-start",
+      "<circle cx=\"" + n3(lx + 6) + "\" cy=\"" + n3(ly) + "\" r=\"3.5\" fill=\"" + kCurveColour + "\"/><path d=\"" +
+          arrow_d({lx + 26, ly}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>",
       "start and direction");
   if (in.plan) {
     const MotionPlan& plan = *in.plan;
     const double top = feed_scale_top(plan);
     const double gy = ly + 30, gx = margin, gw = 320;
     o += "<g class=\"feed-scale\" data-max=\"" + fmt_num(top) + "\">\n";
-    o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(gy - 6) + "\">feed reached on machine " + esc(in.machine) + ", " + unit +
-         "/min (cycle " + esc(format_seconds(plan.cycle_time_s)) + ", mean " +
+    o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(gy - 6) + "\">feed reached on machine " + esc(in.machine) + ", " +
+         unit + "/min (cycle " + esc(format_seconds(plan.cycle_time_s)) + ", mean " +
          format_significant(100 * plan.mean_feed_ratio, 3) + " % of the programmed feed)</text>\n";
     o += "<rect x=\"" + n3(gx) + "\" y=\"" + n3(gy) + "\" width=\"" + n3(gw) +
          "\" height=\"12\" fill=\"url(#feed-gradient)\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
@@ -155,7 +169,8 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
          (plan.starved_blocks ? " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"" : "") +
          ">starved blocks (red halo): " +
          (plan.starved_blocks ? std::to_string(plan.starved_blocks) + " of " + std::to_string(plan.blocks.size())
-                              : std::string("none")) + "</text>\n";
+                              : std::string("none")) +
+         "</text>\n";
     o += "</g>\n";
   } else if (opt.deviation) {
     const double gy = ly + 30, gx = margin, gw = 240;
@@ -182,13 +197,16 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
       o += "<path d=\"M" + n3(x) + " " + n3(gy + 12) + " L" + n3(x) + " " + n3(gy + 16) +
            "\" stroke=\"#000000\" stroke-width=\"1\"/>";
       o += "<text x=\"" + n3(x) + "\" y=\"" + n3(gy + 28) + "\" text-anchor=\"middle\" font-size=\"11\">" +
-           (f == 0 ? std::string("0") : f == 0.5 ? std::string("50 %") : "100 % = " + format_significant(in.tolerance, 4)) +
+           (f == 0     ? std::string("0")
+            : f == 0.5 ? std::string("50 %")
+                       : "100 % = " + format_significant(in.tolerance, 4)) +
            "</text>\n";
     }
     const double sx = gx + gw + 90;
     o += "<rect x=\"" + n3(sx) + "\" y=\"" + n3(gy - 2) + "\" width=\"24\" height=\"16\" fill=\"" + kOverColour +
          "\"/><text class=\"over-tolerance-count\" x=\"" + n3(sx + 30) + "\" y=\"" + n3(gy + 10) + "\"" +
-         (over ? " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"" : "") + ">above the tolerance (ringed): " +
+         (over ? " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"" : "") +
+         ">above the tolerance (ringed): " +
          (over ? std::to_string(over) + " block" + (over == 1 ? "" : "s") : std::string("none")) + "</text>\n";
     o += "</g>\n";
   }

@@ -35,8 +35,9 @@ Shape entity_shape(const Entity& e) {
         s.polygons.push_back(seg.nurbs->points);
         add_points(seg.nurbs->points);
       } else {
-        add_polygons(std::vector<Bezier>(e.curve.pieces.begin() + static_cast<long>(seg.first_piece),
-                                         e.curve.pieces.begin() + static_cast<long>(seg.first_piece + seg.piece_count)));
+        add_polygons(
+            std::vector<Bezier>(e.curve.pieces.begin() + static_cast<long>(seg.first_piece),
+                                e.curve.pieces.begin() + static_cast<long>(seg.first_piece + seg.piece_count)));
       }
     }
   } else if (e.surface && !e.uv_curve.pieces.empty()) {

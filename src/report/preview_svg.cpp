@@ -150,7 +150,8 @@ void svg_document_head(std::string& o, const Page& pg, const PreviewInput& in, c
        "\" viewBox=\"0 0 " + n3(W) + " " + n3(H) + "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   o += "<title>" + esc(in.title.empty() ? "bezcam preview" : in.title) + "</title>\n";
   o += "<desc>Drawn by bezcam: true curves from their exact Bézier pieces, control polygons, the tool path (feeds "
-       "solid, rapids dashed). Units: " + unit + ".</desc>\n";
+       "solid, rapids dashed). Units: " +
+       unit + ".</desc>\n";
   if (in.plan) {
     o += "<defs><linearGradient id=\"feed-gradient\" x1=\"0\" x2=\"1\" y1=\"0\" y2=\"0\">";
     for (double f : {0.0, 0.25, 0.5, 0.75, 1.0})
@@ -159,10 +160,11 @@ void svg_document_head(std::string& o, const Page& pg, const PreviewInput& in, c
   }
   if (opt.deviation)
     o += "<defs><linearGradient id=\"deviation-gradient\" x1=\"0\" x2=\"1\" y1=\"0\" y2=\"0\">"
-         "<stop offset=\"0\" stop-color=\"" + deviation_colour(0, 1) + "\"/><stop offset=\"0.5\" stop-color=\"" +
-         deviation_colour(0.5, 1) + "\"/><stop offset=\"1\" stop-color=\"" + deviation_colour(1, 1) +
-         "\"/></linearGradient></defs>\n";
-  o += "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" + n3(W) + "\" height=\"" + n3(H) + "\" fill=\"#ffffff\"/>\n";
+         "<stop offset=\"0\" stop-color=\"" +
+         deviation_colour(0, 1) + "\"/><stop offset=\"0.5\" stop-color=\"" + deviation_colour(0.5, 1) +
+         "\"/><stop offset=\"1\" stop-color=\"" + deviation_colour(1, 1) + "\"/></linearGradient></defs>\n";
+  o += "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" + n3(W) + "\" height=\"" + n3(H) +
+       "\" fill=\"#ffffff\"/>\n";
 }
 
 // The header: the title, the units, the notes, the warnings in red.
@@ -176,12 +178,13 @@ void svg_header(std::string& o, const Page& pg, const PreviewInput& in, const st
        "</text>\n";
   for (const auto& nline : in.notes) {
     ty += 17;
-    o += "<text class=\"note\" x=\"" + n3(margin) + "\" y=\"" + n3(ty) + "\" fill=\"#333333\">" + esc(nline) + "</text>\n";
+    o += "<text class=\"note\" x=\"" + n3(margin) + "\" y=\"" + n3(ty) + "\" fill=\"#333333\">" + esc(nline) +
+         "</text>\n";
   }
   for (const auto& w : pg.warn_lines) {
     ty += 17;
-    o += "<text class=\"warning\" x=\"" + n3(margin) + "\" y=\"" + n3(ty) + "\" fill=\"#b00000\" font-weight=\"bold\">" +
-         esc(w) + "</text>\n";
+    o += "<text class=\"warning\" x=\"" + n3(margin) + "\" y=\"" + n3(ty) +
+         "\" fill=\"#b00000\" font-weight=\"bold\">" + esc(w) + "</text>\n";
   }
   o += "</g>\n";
 }
@@ -232,7 +235,8 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   const Job* job = in.job;
   const bool has_entities = job && !job->entities.empty();
   if (!has_entities && in.motion.empty())
-    throw InputError(errc::preview_empty, Place{}, "nothing to draw: the job has no entities and there is no tool path");
+    throw InputError(errc::preview_empty, Place{},
+                     "nothing to draw: the job has no entities and there is no tool path");
   if (opt.deviation && in.plan)
     throw InputError(errc::preview_deviation, Place::at_setting("deviation"),
                      "a preview is coloured by deviation or by feed, not both: choose one");

@@ -22,8 +22,10 @@ std::string esc(std::string_view s) {
       case '\'': o += "&apos;"; break;
       default:
         // Control characters are not allowed in XML 1.0.
-        if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\n') o += '?';
-        else o += ch;
+        if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\n')
+          o += '?';
+        else
+          o += ch;
     }
   }
   return o;
@@ -56,7 +58,9 @@ std::string rgb(double r, double g, double b) {
 std::string deviation_colour(double d, double tol) {
   if (over_tolerance(d, tol)) return kOverColour;
   const double t = std::clamp(d / tol, 0.0, 1.0);
-  struct C { double r, g, b; };
+  struct C {
+    double r, g, b;
+  };
   const C lo{49, 54, 149}, mid{33, 145, 140}, hi{94, 201, 98};
   const C& a = t < 0.5 ? lo : mid;
   const C& b = t < 0.5 ? mid : hi;

@@ -35,8 +35,8 @@ void svg_feed_path(std::string& o, const View& v, const PreviewInput& in, const 
   auto flush = [&] {
     if (!cur_d.empty())
       coloured += "<path class=\"feed feed-speed\" data-feed-step=\"" + std::to_string(cur_step) + "\" d=\"" + cur_d +
-           "\" fill=\"none\" stroke=\"" + cur_colour +
-           "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\"/>\n";
+                  "\" fill=\"none\" stroke=\"" + cur_colour +
+                  "\" stroke-width=\"3\" stroke-linecap=\"round\" stroke-linejoin=\"round\"/>\n";
     cur_d.clear();
   };
   std::string starved_d;
@@ -51,7 +51,8 @@ void svg_feed_path(std::string& o, const View& v, const PreviewInput& in, const 
       const double s0 = sg.length * k / n, s1 = sg.length * (k + 1) / n, sm = 0.5 * (s0 + s1);
       // Speed at distance sm: the trapezoid's, by distance.
       const double a = sg.accel;
-      double sp = std::min({sg.vpeak, std::sqrt(sg.v0 * sg.v0 + 2 * a * sm), std::sqrt(sg.v1 * sg.v1 + 2 * a * (sg.length - sm))});
+      double sp = std::min(
+          {sg.vpeak, std::sqrt(sg.v0 * sg.v0 + 2 * a * sm), std::sqrt(sg.v1 * sg.v1 + 2 * a * (sg.length - sm))});
       const int step = std::clamp(static_cast<int>(std::lround(sp * 60 / top * kSteps)), 0, kSteps);
       const P2 p0 = v.screen(sg.point_at(s0, plan.motion)), p1 = v.screen(sg.point_at(s1, plan.motion));
       if (step != cur_step || cur_d.empty() || std::hypot(p0.x - last.x, p0.y - last.y) > 1e-6) {
@@ -64,7 +65,8 @@ void svg_feed_path(std::string& o, const View& v, const PreviewInput& in, const 
       }
       cur_d += " L" + n3(p1.x) + " " + n3(p1.y);
       last = p1;
-      if (starved) seg_d += (seg_d.empty() ? "M" + n3(p0.x) + " " + n3(p0.y) : std::string()) + " L" + n3(p1.x) + " " + n3(p1.y);
+      if (starved)
+        seg_d += (seg_d.empty() ? "M" + n3(p0.x) + " " + n3(p0.y) : std::string()) + " L" + n3(p1.x) + " " + n3(p1.y);
     }
     if (!seg_d.empty()) starved_d += (starved_d.empty() ? "" : " ") + seg_d;
   }
@@ -73,7 +75,8 @@ void svg_feed_path(std::string& o, const View& v, const PreviewInput& in, const 
   // speed stays readable on top of it.
   if (!starved_d.empty())
     o += "<path class=\"starved\" d=\"" + starved_d + "\" fill=\"none\" stroke=\"" + std::string(kOverColour) +
-         "\" stroke-opacity=\"0.45\" stroke-width=\"9\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>starved: "
+         "\" stroke-opacity=\"0.45\" stroke-width=\"9\" stroke-linecap=\"round\" "
+         "stroke-linejoin=\"round\"><title>starved: "
          "the controller could not feed these blocks fast enough (block rate, minimum segment time or look-ahead)"
          "</title></path>\n";
   o += coloured;
@@ -122,7 +125,8 @@ void svg_toolpath(std::string& o, const View& v, const PreviewInput& in, const s
           if (m.from.z == z && m.to.z > z && i + 1 < in.motion.size() && in.motion[i + 1].kind != BlockKind::rapid) {
             const P2 q = v.screen(m.to);
             marks += "<rect class=\"tab\" x=\"" + n3(q.x - 4) + "\" y=\"" + n3(q.y - 4) +
-                     "\" width=\"8\" height=\"8\" fill=\"#ff9f1c\" stroke=\"#7a4a00\"><title>holding tab: the pass rises to z " +
+                     "\" width=\"8\" height=\"8\" fill=\"#ff9f1c\" stroke=\"#7a4a00\"><title>holding tab: the pass "
+                     "rises to z " +
                      fmt_num(m.to.z) + "</title></rect>\n";
           }
           continue;
@@ -134,7 +138,8 @@ void svg_toolpath(std::string& o, const View& v, const PreviewInput& in, const s
       if (!d.empty())
         o += "<path class=\"swept\" data-entity=\"" + std::to_string(entity) + "\" d=\"" + d +
              "\" fill=\"none\" stroke=\"#9ecae1\" stroke-opacity=\"0.45\" stroke-width=\"" + n3(w) +
-             "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>the tool's width on its deepest pass (diameter " +
+             "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>the tool's width on its deepest pass "
+             "(diameter " +
              fmt_num(2 * in.entity_tool_radius[static_cast<size_t>(entity)]) + " " + unit + ")</title></path>\n";
       o += marks;
     }
@@ -142,7 +147,8 @@ void svg_toolpath(std::string& o, const View& v, const PreviewInput& in, const s
       for (const MaterialLeft& l : in.entity_left[e]) {
         const std::vector<Vec3> pts = l.points.empty() ? std::vector<Vec3>{l.from, l.to} : l.points;
         o += "<path class=\"material-left\" data-entity=\"" + std::to_string(e) + "\" d=\"" + path_d(v, pts) +
-             "\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"7\" stroke-opacity=\"0.8\" stroke-linecap=\"round\"><title>material left: the tool cannot reach " +
+             "\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"7\" stroke-opacity=\"0.8\" "
+             "stroke-linecap=\"round\"><title>material left: the tool cannot reach " +
              fmt_num(std::round(l.length * 1000) / 1000) + " " + unit + " of the curve here (" +
              fmt_num(std::round(l.depth * 1000) / 1000) + " " + unit + " deep)</title></path>\n";
       }

@@ -1,18 +1,18 @@
-#include "plan_json.hpp"
 #include "bezcam/report/report.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <future>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/report/motion_report.hpp"
+#include "plan_json.hpp"
 
 namespace bezcam {
 
@@ -114,8 +114,8 @@ ProgramReport report_of(const Program& p, const MachineProfile& m, const GcodeCo
   // The profile has no rapid rate of its own: its maximum feed is the
   // fastest the machine is known to move.
   r.rapid_rate = m.max_feed_mm_min / mm_per_unit(p.units);
-  r.rapid_rate_basis = "the maximum feed of machine \"" + m.name + "\" (max_feed_mm_min " +
-                       fmt_num(m.max_feed_mm_min) + "); the controller's true rapid rate may differ";
+  r.rapid_rate_basis = "the maximum feed of machine \"" + m.name + "\" (max_feed_mm_min " + fmt_num(m.max_feed_mm_min) +
+                       "); the controller's true rapid rate may differ";
   r.total = totals.total;
   const std::vector<MotionTotals>& by_entity = totals.by_entity;
   const auto timed = [&](MotionTotals t) {
@@ -124,13 +124,14 @@ ProgramReport report_of(const Program& p, const MachineProfile& m, const GcodeCo
   };
   r.total = timed(r.total);
   for (const EntityReport& e : p.entities)
-    r.entities.push_back({e, timed(e.entity >= 0 && static_cast<size_t>(e.entity) < by_entity.size()
-                                       ? by_entity[e.entity]
-                                       : MotionTotals{})});
+    r.entities.push_back(
+        {e, timed(e.entity >= 0 && static_cast<size_t>(e.entity) < by_entity.size() ? by_entity[e.entity]
+                                                                                    : MotionTotals{})});
   if (m.motion && plan) {
     r.planned = planned_summary(*plan);  // the program's one plan (convert())
   } else if (m.motion) {
-    r.planned = planned_summary(read_back ? plan_motion(*read_back, *m.motion) : plan_motion(program_timeline(p), *m.motion));
+    r.planned =
+        planned_summary(read_back ? plan_motion(*read_back, *m.motion) : plan_motion(program_timeline(p), *m.motion));
   }
   r.gcode_bytes = text.bytes;
   r.gcode_lines = text.lines();
@@ -245,18 +246,21 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
   for (size_t i = 0; i < n && i < max_entities; ++i) {
     const EntityReport& e = r.entities[i].report;
     s += "  " + e.label + ": " + e.type + ", degree " + std::to_string(e.degree) + ", length " +
-         format_significant(e.length, 6) + u + ", " + std::to_string(e.blocks) + " block" +
-         (e.blocks == 1 ? "" : "s") + ", deviation " + measured(e.measured, e.bound) + " (proven bound " +
-         format_significant(e.bound, 3) + u + ")\n";
+         format_significant(e.length, 6) + u + ", " + std::to_string(e.blocks) + " block" + (e.blocks == 1 ? "" : "s") +
+         ", deviation " + measured(e.measured, e.bound) + " (proven bound " + format_significant(e.bound, 3) + u +
+         ")\n";
   }
   if (n > max_entities)
     s += "  ... and " + std::to_string(n - max_entities) + " more entit" + (n - max_entities == 1 ? "y" : "ies") +
          "; the largest deviation measured is " + measured(r.max_measured, r.max_bound) + "\n";
   const double t = r.total.time_s();
   char tbuf[64];
-  if (t < 60) std::snprintf(tbuf, sizeof tbuf, "%.1f s", t);
-  else if (t < 3600) std::snprintf(tbuf, sizeof tbuf, "%d min %02d s", int(t / 60), int(std::fmod(t, 60)));
-  else std::snprintf(tbuf, sizeof tbuf, "%d h %02d min", int(t / 3600), int(std::fmod(t, 3600) / 60));
+  if (t < 60)
+    std::snprintf(tbuf, sizeof tbuf, "%.1f s", t);
+  else if (t < 3600)
+    std::snprintf(tbuf, sizeof tbuf, "%d min %02d s", int(t / 60), int(std::fmod(t, 60)));
+  else
+    std::snprintf(tbuf, sizeof tbuf, "%d h %02d min", int(t / 3600), int(std::fmod(t, 3600) / 60));
   s += "  program: " + format_significant(r.total.feed_length, 6) + u + " at feed, " +
        format_significant(r.total.rapid_length, 6) + u + " rapid";
   if (r.planned) {

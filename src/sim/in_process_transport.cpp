@@ -122,8 +122,7 @@ class InProcessTransport final : public link::Transport {
       close();
       throw IoError(errc::link_connection, Place::at_file(kPeer), "the connection was dropped");
     }
-    if (r.exception != 0)
-      throw link::ModbusException(r.exception, "Modbus exception " + std::to_string(r.exception));
+    if (r.exception != 0) throw link::ModbusException(r.exception, "Modbus exception " + std::to_string(r.exception));
     if (r.regs.size() != out.size()) {
       close();
       throw IoError(errc::link_connection, Place::at_file(kPeer), "a reply of the wrong length");
@@ -146,7 +145,9 @@ link::TransportFactory InProcessLink::factory() const {
   };
 }
 
-std::unique_ptr<link::Transport> InProcessLink::connect() const { return std::make_unique<InProcessTransport>(shared_); }
+std::unique_ptr<link::Transport> InProcessLink::connect() const {
+  return std::make_unique<InProcessTransport>(shared_);
+}
 
 LinkStats InProcessLink::stats() const {
   std::lock_guard lk(shared_->m);

@@ -13,9 +13,7 @@ int first_line_of(const MotionBlock& b) { return b.first_line > 0 ? b.first_line
 }  // namespace
 
 MachinePace::MachinePace(const MotionModel& model)
-    : model_(model),
-      look_(static_cast<std::size_t>(std::max(1, model.lookahead_blocks))),
-      window_(2 * look_) {}
+    : model_(model), look_(static_cast<std::size_t>(std::max(1, model.lookahead_blocks))), window_(2 * look_) {}
 
 void MachinePace::add(const std::vector<MotionBlock>& blocks, const MachineState& before, const MachineState& after,
                       int line) {
@@ -82,7 +80,8 @@ void MachinePace::commit(bool dry) {
   until_ += t1;
   if (take > 0) start_ = pending_.blocks[take - 1].to;
   pending_.blocks.erase(pending_.blocks.begin(), pending_.blocks.begin() + static_cast<long>(take));
-  pending_.path_tolerance.erase(pending_.path_tolerance.begin(), pending_.path_tolerance.begin() + static_cast<long>(take));
+  pending_.path_tolerance.erase(pending_.path_tolerance.begin(),
+                                pending_.path_tolerance.begin() + static_cast<long>(take));
   std::vector<PlanPause> left;
   for (PlanPause q : pending_.pauses)
     if (!dry && q.before_block >= take) {
@@ -116,8 +115,10 @@ MachinePace::Progress MachinePace::progress(double t) const {
   Progress p;
   p.blocks_done = blocks_forgotten_;
   for (const Item& i : items_) {
-    if (i.end <= t) p.blocks_done += i.block ? 1 : 0;
-    else p.open_line = std::min(p.open_line, i.line);
+    if (i.end <= t)
+      p.blocks_done += i.block ? 1 : 0;
+    else
+      p.open_line = std::min(p.open_line, i.line);
   }
   for (const MotionBlock& b : pending_.blocks) p.open_line = std::min(p.open_line, first_line_of(b));
   for (const PlanPause& q : pending_.pauses) p.open_line = std::min(p.open_line, q.line);

@@ -18,7 +18,7 @@ namespace bezcam::sim {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr std::size_t kRecentChunks = 64;  // retransmissions are checked against this many
+constexpr std::size_t kRecentChunks = 64;                      // retransmissions are checked against this many
 constexpr ConnId kLocal = std::numeric_limits<ConnId>::max();  // run_program's "connection"
 
 // The interpreter's error ids say what kind of refusal it was; the alarm
@@ -46,12 +46,12 @@ struct SimController::Pending {
 
 SimController::SimController(ControllerConfig cfg) : cfg_(std::move(cfg)) {
   if (cfg_.buffer_bytes < kMinBuffer || cfg_.buffer_bytes > kMaxBuffer)
-    throw InputError(errc::sim_config, Place::at_register("buffer"), "the receive buffer must hold " + std::to_string(kMinBuffer) + " to " +
-                                                 std::to_string(kMaxBuffer) + " bytes, found " +
-                                                 std::to_string(cfg_.buffer_bytes));
+    throw InputError(errc::sim_config, Place::at_register("buffer"),
+                     "the receive buffer must hold " + std::to_string(kMinBuffer) + " to " +
+                         std::to_string(kMaxBuffer) + " bytes, found " + std::to_string(cfg_.buffer_bytes));
   if (cfg_.session_timeout.count() <= 0)
-    throw InputError(errc::sim_config, Place::at_register("session timeout"), "must be positive, found " +
-                                                          std::to_string(cfg_.session_timeout.count()) + " ms");
+    throw InputError(errc::sim_config, Place::at_register("session timeout"),
+                     "must be positive, found " + std::to_string(cfg_.session_timeout.count()) + " ms");
   buf_.reserve(cfg_.buffer_bytes);
   exec_ = std::thread([this] { exec_loop(); });
 }
@@ -104,7 +104,8 @@ std::uint32_t SimController::next_session_locked() {
     // lost, or a sender could resume into a different program: 32 random
     // bits make that a one-in-four-billion event.
     std::random_device rd;
-    do s = static_cast<std::uint32_t>(rd()); while (s == 0 || s == last_session_);
+    do s = static_cast<std::uint32_t>(rd());
+    while (s == 0 || s == last_session_);
   }
   last_session_ = s;
   return s;
@@ -201,17 +202,16 @@ Status SimController::status_locked(ConnId c) const {
   for (int a = 0; a < 3; ++a) s.pos[a] = thousandths(m.pos[a]);
   s.feed_tenths = static_cast<std::uint32_t>(std::clamp(std::round(m.feed * 10.0), 0.0, 4294967295.0));
   s.spindle_rpm = static_cast<std::uint32_t>(std::clamp(std::round(m.spindle_rpm), 0.0, 4294967295.0));
-  s.flags = static_cast<std::uint16_t>((m.spindle_on ? flag::spindle_on : 0) |
-                                       (m.units == Units::inch ? flag::inch : 0) |
-                                       (m.distance == DistanceMode::absolute ? 0 : flag::incremental) |
-                                       (m.program_end ? flag::program_end : 0) |
-                                       (owner_ != 0 ? flag::owner_attached : 0));
+  s.flags =
+      static_cast<std::uint16_t>((m.spindle_on ? flag::spindle_on : 0) | (m.units == Units::inch ? flag::inch : 0) |
+                                 (m.distance == DistanceMode::absolute ? 0 : flag::incremental) |
+                                 (m.program_end ? flag::program_end : 0) | (owner_ != 0 ? flag::owner_attached : 0));
   s.tool = static_cast<std::uint16_t>(std::clamp(m.tool, 0, 65535));
   // Register 34 (docs/modbus-register-map.md): 0-3 for G00-G03, the G
   // number x 10 for curve modes (G5.2 -> 52), 0xFFFF none.
   const int code10 = static_cast<int>(m.motion);
   s.motion = m.motion == ModalMotion::none ? std::uint16_t{0xFFFF}
-                                                   : static_cast<std::uint16_t>(code10 <= 30 ? code10 / 10 : code10);
+                                           : static_cast<std::uint16_t>(code10 <= 30 ? code10 / 10 : code10);
   s.connections = static_cast<std::uint16_t>(std::min<std::size_t>(connections_, 65535));
   s.duplicates = duplicates_;
   s.rejects = rejects_;
@@ -360,8 +360,9 @@ Reject SimController::command_locked(ConnId c, std::span<const std::uint16_t> re
         return Reject::in_alarm;
       }
       if (crc != crc_.value()) {
-        raise_alarm_locked(Alarm::crc_mismatch, 0, errc::link_crc_mismatch,
-                           "CRC-32 of the received program is " + hex32(crc_.value()) + ", the sender's is " + hex32(crc));
+        raise_alarm_locked(
+            Alarm::crc_mismatch, 0, errc::link_crc_mismatch,
+            "CRC-32 of the received program is " + hex32(crc_.value()) + ", the sender's is " + hex32(crc));
         return Reject::in_alarm;
       }
       committed_ = true;
@@ -378,9 +379,10 @@ Reject SimController::command_locked(ConnId c, std::span<const std::uint16_t> re
       const bool operator_stop = arg(0) == 0;
       if (!operator_stop && arg(0) != token_) return Reject::bad_token;
       if (active)
-        raise_alarm_locked(Alarm::aborted, kMachineLine, errc::link_aborted,
-                           (operator_stop ? "the operator stopped the transfer after " : "the sender aborted the transfer after ") +
-                               std::to_string(ack_bytes_) + " bytes");
+        raise_alarm_locked(
+            Alarm::aborted, kMachineLine, errc::link_aborted,
+            (operator_stop ? "the operator stopped the transfer after " : "the sender aborted the transfer after ") +
+                std::to_string(ack_bytes_) + " bytes");
       return Reject::none;
     }
     case Command::reset: {
@@ -531,10 +533,9 @@ Status SimController::run_program(std::string_view program) {
     off += n;
   }
   if (!stop_ && state_ == State::receiving && off == program.size()) {
-    const std::vector<std::uint16_t> commit =
-        encode_command(Command::commit, std::array<std::uint32_t, 4>{kToken, session_,
-                                                                     static_cast<std::uint32_t>(program.size()),
-                                                                     crc32(program)});
+    const std::vector<std::uint16_t> commit = encode_command(
+        Command::commit,
+        std::array<std::uint32_t, 4>{kToken, session_, static_cast<std::uint32_t>(program.size()), crc32(program)});
     command_locked(kLocal, commit);
   }
   cv_.wait(lk, [&] {
@@ -598,7 +599,7 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
   emit_trace(text, false);
   lk.lock();
   if (epoch_ != cur_epoch) return;  // the program was replaced meanwhile
-  if (!failed) ++lines_done_;  // a refused line changed nothing: it was not executed
+  if (!failed) ++lines_done_;       // a refused line changed nothing: it was not executed
   blocks_done_ += static_cast<long>(nblocks);
   machine_ = interp.state();
   if (state_ == State::alarm || failed) machine_.spindle_on = machine_.coolant_mist = machine_.coolant_flood = false;

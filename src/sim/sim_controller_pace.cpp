@@ -122,8 +122,8 @@ bool SimController::machine_step(std::unique_lock<std::mutex>& lk, std::uint64_t
   // stands: a stall (or, after a refused line, the alarm).
   const double now = pace_now();
   if (pace_->committed_until() > now) {
-    wake = pace_origin_ +
-           std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(pace_->committed_until() / cfg_.time_scale));
+    wake = pace_origin_ + std::chrono::duration_cast<Clock::duration>(
+                              std::chrono::duration<double>(pace_->committed_until() / cfg_.time_scale));
     return false;
   }
   if (pace_->pending() > 0) {
@@ -158,8 +158,10 @@ void SimController::read_ahead_locked(const GcodeInterpreter& interp, std::uint6
   // line, and cutter compensation holds a move until the next one.
   const auto cont = interp.continuation();
   long settled = no;
-  if (cont.open_block != ModalMotion::none) settled = cont.open_line - 1;
-  else if (interp.state().cutter_comp != CutterCompMode::off) settled = last_block_line_ - 1;
+  if (cont.open_block != ModalMotion::none)
+    settled = cont.open_line - 1;
+  else if (interp.state().cutter_comp != CutterCompMode::off)
+    settled = last_block_line_ - 1;
   settled_ = std::max(settled_, settled);
   ahead_.push_back({no, true, interp.state(), std::move(text)});
 }
@@ -185,8 +187,9 @@ void SimController::finish_interpreter(std::unique_lock<std::mutex>& lk, GcodeIn
   if (!pace_started_) pace_started_ = true, pace_origin_ = Clock::now();  // a program of no lines
   interp_finished_ = true;
   if (failed) {
-    failure_ = Failure{Alarm::incomplete, lines, failed->second,
-                       trace_alarm(static_cast<int>(lines), to_string(Alarm::incomplete), failed->first, failed->second)};
+    failure_ =
+        Failure{Alarm::incomplete, lines, failed->second,
+                trace_alarm(static_cast<int>(lines), to_string(Alarm::incomplete), failed->first, failed->second)};
     return;
   }
   pace_->add(blocks, interp.state(), interp.state(), static_cast<int>(lines));

@@ -1,19 +1,18 @@
 #include "bezcam/sim/sim_server.hpp"
 
-#include <fcntl.h>
-#include <modbus/modbus.h>
-#include <netinet/in.h>
-#include <netinet/tcp.h>
-#include <poll.h>
-#include <linux/sockios.h>
-#include <sys/ioctl.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <fcntl.h>
+#include <linux/sockios.h>
+#include <modbus/modbus.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/ioctl.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include "bezcam/error.hpp"
 
@@ -44,13 +43,16 @@ ModbusServer::ModbusServer(SimController& controller, ServerConfig cfg) : ctl_(c
   const std::string where = cfg_.host + ":" + std::to_string(cfg_.port);
   const std::string service = std::to_string(cfg_.port);
   modbus_t* ctx = modbus_new_tcp_pi(cfg_.host.c_str(), service.c_str());
-  if (!ctx) throw IoError(errc::sim_listen, Place::at_file(where), std::string("cannot create a Modbus context: ") + std::strerror(errno));
+  if (!ctx)
+    throw IoError(errc::sim_listen, Place::at_file(where),
+                  std::string("cannot create a Modbus context: ") + std::strerror(errno));
   listen_fd_ = modbus_tcp_pi_listen(ctx, 16);
   const int err = errno;
   modbus_free(ctx);
   if (listen_fd_ < 0)
-    throw IoError(errc::sim_listen, Place::at_file(where), std::string("cannot listen: ") + std::strerror(err) +
-                                           "; choose another port (0 lets the system pick a free one)");
+    throw IoError(errc::sim_listen, Place::at_file(where),
+                  std::string("cannot listen: ") + std::strerror(err) +
+                      "; choose another port (0 lets the system pick a free one)");
   // Non-blocking so that accept() never hangs when a client vanished
   // between poll() and accept().
   ::fcntl(listen_fd_, F_SETFL, ::fcntl(listen_fd_, F_GETFL) | O_NONBLOCK);
@@ -63,7 +65,8 @@ ModbusServer::ModbusServer(SimController& controller, ServerConfig cfg) : ctl_(c
   }
   if (::pipe2(wake_, O_CLOEXEC | O_NONBLOCK) != 0) {
     ::close(listen_fd_);
-    throw IoError(errc::sim_listen, Place::at_file(where), std::string("cannot create a pipe: ") + std::strerror(errno));
+    throw IoError(errc::sim_listen, Place::at_file(where),
+                  std::string("cannot create a pipe: ") + std::strerror(errno));
   }
 }
 
@@ -170,8 +173,8 @@ void ModbusServer::run() {
 void serve_connection(SimController& ctl, ConnId id, int fd, const ServerConfig& cfg, const std::atomic<bool>& stop,
                       const std::function<void()>& on_request) {
   modbus_t* ctx = modbus_new_tcp("127.0.0.1", 502);  // address unused: the socket is given
-  modbus_mapping_t* map = ctx ? modbus_mapping_new_start_address(0, 0, 0, 0, 0, kHoldingRegs, 0, reg::readable_end)
-                              : nullptr;
+  modbus_mapping_t* map =
+      ctx ? modbus_mapping_new_start_address(0, 0, 0, 0, 0, kHoldingRegs, 0, reg::readable_end) : nullptr;
   if (ctx && map) {
     modbus_set_socket(ctx, fd);
     // Indication timeout: how long a request may take to start (idle

@@ -20,9 +20,7 @@ std::string trace_number(double v) {
 
 namespace {
 
-std::string xyz(const Vec3& p) {
-  return trace_number(p.x) + " " + trace_number(p.y) + " " + trace_number(p.z);
-}
+std::string xyz(const Vec3& p) { return trace_number(p.x) + " " + trace_number(p.y) + " " + trace_number(p.z); }
 
 const char* kind_name(BlockKind k) {
   switch (k) {
@@ -56,9 +54,7 @@ std::string line_ref(const MotionBlock& b) {
 
 }  // namespace
 
-std::string trace_header(std::string_view machine) {
-  return "bezcam-trace 1 machine " + std::string(machine) + "\n";
-}
+std::string trace_header(std::string_view machine) { return "bezcam-trace 1 machine " + std::string(machine) + "\n"; }
 
 int trace_sample_count(const MotionBlock& b) {
   switch (b.kind) {
@@ -106,11 +102,17 @@ std::string trace_state(int line, const MachineState& a, const MachineState& b) 
     s += at + (b.spindle_on ? "spindle on " + trace_number(b.spindle_rpm) : std::string("spindle off")) + "\n";
   if (a.coolant_mist != b.coolant_mist || a.coolant_flood != b.coolant_flood)
     s += at + "coolant " +
-         (b.coolant_mist && b.coolant_flood ? "mist flood" : b.coolant_mist ? "mist" : b.coolant_flood ? "flood" : "off") + "\n";
+         (b.coolant_mist && b.coolant_flood ? "mist flood"
+          : b.coolant_mist                  ? "mist"
+          : b.coolant_flood                 ? "flood"
+                                            : "off") +
+         "\n";
   if (a.coord_system != b.coord_system)
     s += at + "work offset G" + std::to_string(static_cast<int>(b.coord_system)) + "\n";
   if (a.tool_length_comp != b.tool_length_comp || a.tool_length_h != b.tool_length_h)
-    s += at + (b.tool_length_comp ? "tool length H" + std::to_string(b.tool_length_h) : std::string("tool length off")) + "\n";
+    s += at +
+         (b.tool_length_comp ? "tool length H" + std::to_string(b.tool_length_h) : std::string("tool length off")) +
+         "\n";
   if (b.dwell_seconds != a.dwell_seconds) s += at + "dwell " + trace_number(b.dwell_seconds - a.dwell_seconds) + "\n";
   if (b.program_stops != a.program_stops) s += at + "program stop (the operator resumes)\n";
   if (a.program_end != b.program_end && b.program_end) s += at + "program end\n";
@@ -173,8 +175,7 @@ std::optional<TraceMismatch> compare_traces(std::string_view expected, std::stri
       const auto x = as_number(et[k]), y = as_number(at[k]);
       if (x && y && std::abs(*x - *y) <= tolerance) continue;
       return TraceMismatch{i + 1, std::string(e), std::string(a),
-                           "field " + std::to_string(k + 1) + ": " + std::string(et[k]) + " vs " +
-                               std::string(at[k]) +
+                           "field " + std::to_string(k + 1) + ": " + std::string(et[k]) + " vs " + std::string(at[k]) +
                                (x && y ? " (differ by more than " + trace_number(tolerance) + ")" : "")};
     }
   }

@@ -78,9 +78,9 @@ DexelGrid::DexelGrid(const StockBox& box, double cell, std::size_t memory_limit)
     char counts[64];
     std::snprintf(counts, sizeof counts, "%.0f x %.0f", columns(box.x1 - box.x0, cell), columns(box.y1 - box.y0, cell));
     throw InputError(errc::stock_memory, Place::at_setting("cell"),
-                     std::string("a stock grid of ") + counts + " columns at a cell of " + fmt_num(cell) +
-                         " needs " + mib(s.bytes) + ", above the memory limit of " + mib(limit) +
-                         ": use a cell of at least " + fmt_num(fit) + " or a smaller stock");
+                     std::string("a stock grid of ") + counts + " columns at a cell of " + fmt_num(cell) + " needs " +
+                         mib(s.bytes) + ", above the memory limit of " + mib(limit) + ": use a cell of at least " +
+                         fmt_num(fit) + " or a smaller stock");
   }
   nx_ = s.nx;
   ny_ = s.ny;
@@ -88,9 +88,7 @@ DexelGrid::DexelGrid(const StockBox& box, double cell, std::size_t memory_limit)
   set_threads(0);
 }
 
-void DexelGrid::set_threads(unsigned n) {
-  threads_ = n == 0 ? std::max(1u, std::thread::hardware_concurrency()) : n;
-}
+void DexelGrid::set_threads(unsigned n) { threads_ = n == 0 ? std::max(1u, std::thread::hardware_concurrency()) : n; }
 
 double DexelGrid::memory_bytes() const {
   return static_cast<double>(floors_.capacity() * sizeof(double) + ny_ * sizeof(void*) + sizeof(DexelGrid));
@@ -145,18 +143,23 @@ void DexelGrid::cut(std::span<const Sweep> moves, const ToolShape& tool) {
     double xlo = 0, xhi = 0;
     const bool hit = std::visit(
         [&](const auto& g) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(g)>, LinePrep>) return line_row_range(g, R, y, xlo, xhi);
-          else return arc_row_range(g, R, y, xlo, xhi);
+          if constexpr (std::is_same_v<std::decay_t<decltype(g)>, LinePrep>)
+            return line_row_range(g, R, y, xlo, xhi);
+          else
+            return arc_row_range(g, R, y, xlo, xhi);
         },
         p.geom);
     if (!hit) return;
     const double f0 = std::ceil((xlo - x0) / C - 0.5), f1 = std::floor((xhi - x0) / C - 0.5);
     if (f1 < 0 || f0 > static_cast<double>(nx - 1)) return;
-    const int i0 = static_cast<int>(std::max(0.0, f0)), i1 = static_cast<int>(std::min(static_cast<double>(nx - 1), f1));
+    const int i0 = static_cast<int>(std::max(0.0, f0)),
+              i1 = static_cast<int>(std::min(static_cast<double>(nx - 1), f1));
     if (i0 > i1) return;
     double* row = floors_.data() + j * nx;
-    if (const auto* l = std::get_if<LinePrep>(&p.geom)) line_row(*l, prof, y, x0, C, i0, i1, row, st);
-    else arc_row(std::get<ArcPrep>(p.geom), prof, y, x0, C, i0, i1, row, st);
+    if (const auto* l = std::get_if<LinePrep>(&p.geom))
+      line_row(*l, prof, y, x0, C, i0, i1, row, st);
+    else
+      arc_row(std::get<ArcPrep>(p.geom), prof, y, x0, C, i0, i1, row, st);
     for (int i = i0; i <= i1; ++i) row[i] = std::max(row[i], z0);
   };
 

@@ -122,7 +122,10 @@ double bull_line_min(const Profile& p, double m, double e2, double slo, double s
     const double D = e2 + s * s;
     const double f = g1(s);
     if (f == 0) return s;
-    if (f < 0) lo = s; else hi = s;
+    if (f < 0)
+      lo = s;
+    else
+      hi = s;
     const double h1 = p.H1(D), h2 = p.H2(D);
     const double fp = 2 * h1 + 4 * s * s * h2;
     double next = (std::isfinite(fp) && fp > 0) ? s - f / fp : 0.5 * (lo + hi);
@@ -155,8 +158,10 @@ double line_floor(const LinePrep& l, const Profile& p, double px, double py) {
     case ToolShapeKind::vee:
     case ToolShapeKind::drill: {
       const double am = std::abs(m);
-      if (am < p.k) s = -std::copysign(am * e / std::sqrt((p.k - am) * (p.k + am)), m);
-      else s = m > 0 ? -kInf : kInf;
+      if (am < p.k)
+        s = -std::copysign(am * e / std::sqrt((p.k - am) * (p.k + am)), m);
+      else
+        s = m > 0 ? -kInf : kInf;
       break;
     }
     case ToolShapeKind::bull: s = m == 0 ? 0 : bull_line_min(p, m, e * e, slo, shi); break;
@@ -188,7 +193,10 @@ bool line_row_range(const LinePrep& l, double R, double y, double& xlo, double& 
     const double dy = y - l.ay;
     auto clip = [&](double coef, double off, double vmin, double vmax) {  // vmin <= coef x + off <= vmax
       if (coef == 0) {
-        if (off < vmin || off > vmax) { blo = kInf; bhi = -kInf; }
+        if (off < vmin || off > vmax) {
+          blo = kInf;
+          bhi = -kInf;
+        }
         return;
       }
       double a = (vmin - off) / coef, b = (vmax - off) / coef;
@@ -298,8 +306,14 @@ ArcPrep prepare_arc(const Arc& a) {
   const Box3 b = arc_extent(a);
   const double dr = r.rmax - r.rmin;
   r.xlo = b.lo.x, r.xhi = b.hi.x, r.ylo = b.lo.y, r.yhi = b.hi.y, r.zmin = b.lo.z;
-  if (r.ix != 2) { r.xlo -= dr; r.xhi += dr; }
-  if (r.iy != 2) { r.ylo -= dr; r.yhi += dr; }
+  if (r.ix != 2) {
+    r.xlo -= dr;
+    r.xhi += dr;
+  }
+  if (r.iy != 2) {
+    r.ylo -= dr;
+    r.yhi += dr;
+  }
   if (r.iz != 2) r.zmin -= dr;
   return r;
 }
@@ -488,7 +502,8 @@ struct Pt {
 
 class Search {
  public:
-  Search(const ArcPrep& a, const Profile& p, double px, double py, FloorStats& st) : a_(a), p_(p), px_(px), py_(py), st_(st) {}
+  Search(const ArcPrep& a, const Profile& p, double px, double py, FloorStats& st)
+      : a_(a), p_(p), px_(px), py_(py), st_(st) {}
 
   double run(double best) {
     best_ = best;
@@ -568,7 +583,10 @@ class Search {
     for (int it = 0; it < 200; ++it) {
       const double f = f1(t);
       if (f == 0) return t;
-      if (f < 0) lo = t; else hi = t;
+      if (f < 0)
+        lo = t;
+      else
+        hi = t;
       const double d = f2(t);
       double next = (std::isfinite(d) && d > 0 && std::isfinite(f)) ? t - f / d : 0.5 * (lo + hi);
       if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -595,8 +613,8 @@ class Search {
     const Iv P0[3] = {rC + a_.ca, rS + a_.cb, Iv{std::min(ha, hb), std::max(ha, hb)}};
     const Iv P1[3] = {scale(C, e) + scale(rS, -d), scale(S, e) + scale(rC, d), Iv{a_.kappa, a_.kappa}};
     const Iv P2[3] = {scale(S, -2 * d * e) + scale(rC, -1), scale(C, 2 * d * e) + scale(rS, -1), Iv{0, 0}};
-    const double scale_xy = std::abs(a_.ca) + std::abs(a_.cb) + a_.rmax + std::abs(px_) + std::abs(py_) +
-                            std::abs(a_.h0) + std::abs(a_.h1);
+    const double scale_xy =
+        std::abs(a_.ca) + std::abs(a_.cb) + a_.rmax + std::abs(px_) + std::abs(py_) + std::abs(a_.h0) + std::abs(a_.h1);
     const Iv X = widen(P0[a_.ix] + (-px_), scale_xy), Y = widen(P0[a_.iy] + (-py_), scale_xy);
     const Iv X1 = P1[a_.ix], Y1 = P1[a_.iy], X2 = P2[a_.ix], Y2 = P2[a_.iy];
     Encl E;
@@ -660,8 +678,8 @@ class Search {
       }
       if (E.D2.lo > 0) {  // D convex: split at its minimum into monotone parts
         if (!(a.D1 < 0 && b.D1 > 0)) return split(a, b, depth);
-        const double t = convex_root(a.tau, b.tau, [&](double u) { return point(u).D1; },
-                                     [&](double u) { return point(u).D2; });
+        const double t = convex_root(
+            a.tau, b.tau, [&](double u) { return point(u).D1; }, [&](double u) { return point(u).D2; });
         const Pt m = point(t);
         consider(m);
         if (!m.feasible) return;  // the closest approach is out of reach
@@ -680,11 +698,12 @@ class Search {
                         mag(E.Z2) + mag(h2) * mag(E.D1) * mag(E.D1) + mag(h1) * mag(E.D2));
     if (G2.lo >= 0) {  // convex: the minimum is at an end or where g' = 0
       if (!(a.g1 < 0 && b.g1 > 0)) return;
-      const double t = convex_root(a.tau, b.tau, [&](double u) { return point(u).g1; },
-                                   [&](double u) {
-                                     const Pt q = point(u);
-                                     return q.Z2 + p_.H2(q.D) * q.D1 * q.D1 + p_.H1(q.D) * q.D2;
-                                   });
+      const double t = convex_root(
+          a.tau, b.tau, [&](double u) { return point(u).g1; },
+          [&](double u) {
+            const Pt q = point(u);
+            return q.Z2 + p_.H2(q.D) * q.D1 * q.D1 + p_.H1(q.D) * q.D2;
+          });
       consider(point(t));
       return;
     }

@@ -18,10 +18,10 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 // The tool's height as a function of the squared distance D = rho^2.
 struct Profile {
   ToolShapeKind kind = ToolShapeKind::flat;
-  double R = 0, R2 = 0;   // radius, radius squared
-  double a0 = 0;          // bull: radius of the flat part (R - rc)
-  double rc = 0, rc2 = 0; // bull: corner radius
-  double k = 0;           // vee, drill: slope 1 / tan(angle / 2)
+  double R = 0, R2 = 0;    // radius, radius squared
+  double a0 = 0;           // bull: radius of the flat part (R - rc)
+  double rc = 0, rc2 = 0;  // bull: corner radius
+  double k = 0;            // vee, drill: slope 1 / tan(angle / 2)
   explicit Profile(const ToolShape& t);
   bool cone() const { return kind == ToolShapeKind::vee || kind == ToolShapeKind::drill; }
   double H(double D) const;   // h(sqrt(D)), D clamped to [0, R2]
@@ -31,7 +31,7 @@ struct Profile {
 
 // Counters of the work done (benchmarks, docs): summed per thread.
 struct FloorStats {
-  std::uint64_t columns = 0;        // column evaluations (all paths)
+  std::uint64_t columns = 0;  // column evaluations (all paths)
   std::uint64_t generic_columns = 0;
   std::uint64_t generic_nodes = 0;  // intervals examined by the certified search
   std::uint64_t depth_limited = 0;  // intervals closed at the depth limit (ulp-wide)
@@ -57,12 +57,12 @@ void line_row(const LinePrep& l, const Profile& p, double y, double x0, double C
 
 struct ArcPrep {
   Arc arc;
-  int ix = 0, iy = 1, iz = 2;  // which plane coordinate (a, b, h) is world x, y, z
-  double ca = 0, cb = 0;       // centre in the plane
-  double th0 = 0, dir = 1, T = 0;  // start angle, direction (+1 ccw), sweep (rad)
-  double r0 = 0, r1 = 0, eps = 0;  // radii at the ends, dr / dtau
+  int ix = 0, iy = 1, iz = 2;        // which plane coordinate (a, b, h) is world x, y, z
+  double ca = 0, cb = 0;             // centre in the plane
+  double th0 = 0, dir = 1, T = 0;    // start angle, direction (+1 ccw), sweep (rad)
+  double r0 = 0, r1 = 0, eps = 0;    // radii at the ends, dr / dtau
   double h0 = 0, h1 = 0, kappa = 0;  // the plane's axis at the ends, dh / dtau
-  bool circle = false;             // G17 and one radius: closed forms apply
+  bool circle = false;               // G17 and one radius: closed forms apply
   double rmin = 0, rmax = 0;
   double xlo = 0, xhi = 0, ylo = 0, yhi = 0, zmin = 0;  // box of the tip's path
 };

@@ -1,7 +1,4 @@
-#include "bezcam/format.hpp"
 #include "bezcam/stock/stock_image.hpp"
-
-#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +8,10 @@
 #include <fstream>
 #include <numbers>
 #include <stdexcept>
+#include <zlib.h>
 
 #include "bezcam/error.hpp"
+#include "bezcam/format.hpp"
 
 namespace bezcam {
 
@@ -98,8 +97,8 @@ const char* const* glyph(char c) {
   }
 }
 
-constexpr int kFont = 2;                 // pixels per glyph dot
-constexpr int kAdvance = 6 * kFont;      // glyph width and its gap
+constexpr int kFont = 2;             // pixels per glyph dot
+constexpr int kAdvance = 6 * kFont;  // glyph width and its gap
 constexpr int kTextHeight = 7 * kFont;
 
 int text(Raster& r, int x, int y, const std::string& s, Rgb c) {
@@ -150,10 +149,14 @@ std::vector<std::uint8_t> encode_png(const Raster& r) {
       for (std::size_t i = 0; i < stride; ++i) {
         const int a = i >= 3 ? cur[i - 3] : 0, b = up[i], c = i >= 3 ? up[i - 3] : 0;
         int pred = 0;
-        if (f == 1) pred = a;
-        else if (f == 2) pred = b;
-        else if (f == 3) pred = (a + b) / 2;
-        else if (f == 4) pred = paeth(a, b, c);
+        if (f == 1)
+          pred = a;
+        else if (f == 2)
+          pred = b;
+        else if (f == 3)
+          pred = (a + b) / 2;
+        else if (f == 4)
+          pred = paeth(a, b, c);
         const auto v = static_cast<std::uint8_t>(cur[i] - pred);
         cand[i] = v;
         cost += v < 128 ? v : 256 - v;
@@ -186,9 +189,9 @@ std::vector<std::uint8_t> encode_png(const Raster& r) {
 // ---- the map --------------------------------------------------------------------
 
 struct Map {
-  int mw = 0, mh = 0;   // blocks of columns
-  int block = 1;        // columns per block side
-  int zoom = 1;         // pixels per block side
+  int mw = 0, mh = 0;  // blocks of columns
+  int block = 1;       // columns per block side
+  int zoom = 1;        // pixels per block side
   double zlo = 0, zhi = 0;
   Raster image{0, 0, {0, 0, 0}};
 };
@@ -341,8 +344,8 @@ std::string stock_svg(const DexelGrid& grid, const StockImageOptions& opt) {
   s += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"" +
        std::to_string(L.width) + "\" height=\"" + std::to_string(L.height) + "\" viewBox=\"0 0 " +
        std::to_string(L.width) + " " + std::to_string(L.height) + "\">\n";
-  s += "<title>machined stock: " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) +
-       " columns, cell " + format_significant(grid.cell(), 6) + " mm</title>\n";
+  s += "<title>machined stock: " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) + " columns, cell " +
+       format_significant(grid.cell(), 6) + " mm</title>\n";
   s += "<defs><linearGradient id=\"ramp\"><stop offset=\"0\" stop-color=\"" + rgb(kDeep) +
        "\"/><stop offset=\"1\" stop-color=\"" + rgb(kTop) + "\"/></linearGradient></defs>\n";
   s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -353,8 +356,8 @@ std::string stock_svg(const DexelGrid& grid, const StockImageOptions& opt) {
   int y = L.map_h + 10;
   s += "<text x=\"10\" y=\"" + std::to_string(y + 12) + "\" " + font + ">z</text>\n";
   s += "<rect x=\"24\" y=\"" + std::to_string(y) + "\" width=\"160\" height=\"14\" fill=\"url(#ramp)\"/>\n";
-  s += "<text x=\"196\" y=\"" + std::to_string(y + 12) + "\" " + font + ">" + format_fixed(m.zlo, 3) + " .. " + format_fixed(m.zhi, 3) +
-       " mm</text>\n";
+  s += "<text x=\"196\" y=\"" + std::to_string(y + 12) + "\" " + font + ">" + format_fixed(m.zlo, 3) + " .. " +
+       format_fixed(m.zhi, 3) + " mm</text>\n";
   y += 26;
   s += "<rect x=\"10\" y=\"" + std::to_string(y) + "\" width=\"14\" height=\"14\" fill=\"" + rgb(kGouge) + "\"/>\n";
   s += "<text x=\"32\" y=\"" + std::to_string(y + 12) + "\" " + font + ">gouge</text>\n";

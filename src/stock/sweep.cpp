@@ -48,7 +48,8 @@ Sweep Sweep::polyline(std::vector<Vec3> points, double bound) {
   if (points.empty()) refuse("a polyline needs at least one point");
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!finite(points[i])) refuse("a polyline's point " + std::to_string(i) + " is not finite: " + str(points[i]));
-  if (!std::isfinite(bound) || bound < 0) refuse("a polyline's bound must be a finite number >= 0, not " + fmt_num(bound));
+  if (!std::isfinite(bound) || bound < 0)
+    refuse("a polyline's bound must be a finite number >= 0, not " + fmt_num(bound));
   Sweep s;
   s.kind_ = SweepKind::polyline;
   s.from_ = points.front();

@@ -18,8 +18,9 @@ void check_diameter(double d) {
 
 void check_angle(double a, const char* setting) {
   if (!std::isfinite(a) || a <= 0 || a >= 180)
-    throw InputError(errc::tool_shape, Place::at_setting(setting),
-                     std::string("a tool's ") + setting + " must lie strictly between 0 and 180 degrees, not " + fmt_num(a));
+    throw InputError(
+        errc::tool_shape, Place::at_setting(setting),
+        std::string("a tool's ") + setting + " must lie strictly between 0 and 180 degrees, not " + fmt_num(a));
 }
 
 }  // namespace
@@ -37,8 +38,7 @@ const char* to_string(ToolShapeKind k) {
 
 ToolShape::ToolShape(ToolShapeKind k, double r, double corner, double angle_deg)
     : kind_(k), radius_(r), corner_(corner), angle_deg_(angle_deg) {
-  if (k == ToolShapeKind::vee || k == ToolShapeKind::drill)
-    slope_ = 1 / std::tan(angle_deg * std::numbers::pi / 360);
+  if (k == ToolShapeKind::vee || k == ToolShapeKind::drill) slope_ = 1 / std::tan(angle_deg * std::numbers::pi / 360);
 }
 
 ToolShape ToolShape::flat(double diameter) {

@@ -4,18 +4,17 @@
 // independent point-in-polygon, determinism, never worse than the written
 // order, near-optimality against exhaustive search on small instances, the
 // rapid saved on a scrambled grid, and validity at scale.
-#include <gtest/gtest.h>
+#include "bezcam/cam/cut_order.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <random>
 #include <set>
 #include <stdexcept>
 #include <utility>
 #include <vector>
-
-#include "bezcam/cam/cut_order.hpp"
 
 using namespace bezcam;
 
@@ -127,8 +126,8 @@ TEST(CutOrder, HolesAreCutBeforeTheOutlineThatHoldsThem) {
   EXPECT_FALSE(plan.kept_as_written);
   // The written order cuts the outline first: the valid baseline moves it
   // last and keeps the rest (written starts).
-  EXPECT_DOUBLE_EQ(plan.rapid_baseline, rapid(cs, {{1, 0, false}, {2, 0, false}, {3, 0, false}, {4, 0, false},
-                                                   {0, 0, false}}, home));
+  EXPECT_DOUBLE_EQ(plan.rapid_baseline,
+                   rapid(cs, {{1, 0, false}, {2, 0, false}, {3, 0, false}, {4, 0, false}, {0, 0, false}}, home));
   for (size_t h = 1; h <= 4; ++h) EXPECT_LT(at[h], at[0]);
 }
 
@@ -153,10 +152,9 @@ TEST(CutOrder, ThreeLevelsAndMoreCutInnermostFirst) {
 }
 
 TEST(CutOrder, OpenContoursInsideAClosedOneAreCutFirst) {
-  std::vector<OrderContour> cs = {rect(0, 0, 50, 50),
-                                  open_line({{10, 10}, {40, 10}, {40, 40}}),      // inside
-                                  open_line({{45, 25}, {70, 25}}),                // crosses the outline
-                                  open_line({{0, 50}, {25, 50}, {50, 50}})};      // wholly on the top edge
+  std::vector<OrderContour> cs = {rect(0, 0, 50, 50), open_line({{10, 10}, {40, 10}, {40, 40}}),  // inside
+                                  open_line({{45, 25}, {70, 25}}),                                // crosses the outline
+                                  open_line({{0, 50}, {25, 50}, {50, 50}})};  // wholly on the top edge
   const CutOrder plan = plan_cut_order(cs, {100, 100});
   const auto at = check_plan(cs, plan, {100, 100});
   EXPECT_EQ(plan.nesting, (std::vector<std::pair<size_t, size_t>>{{1, 0}, {3, 0}}));
@@ -166,11 +164,10 @@ TEST(CutOrder, OpenContoursInsideAClosedOneAreCutFirst) {
 
 TEST(CutOrder, TouchingAndIdenticalContours) {
   std::vector<OrderContour> cs = {
-      rect(0, 0, 100, 100),
-      rect(0, 20, 30, 40),      // inside, sharing part of the left edge
-      rect(100, 40, 130, 60),   // outside, touching the right edge
-      polygon(50, 90, 10, 4, pi / 2),  // inside, one corner on the top edge
-      rect(60, 0, 100, 30),     // inside, in the corner (two edges shared)
+      rect(0, 0, 100, 100),           rect(0, 20, 30, 40),  // inside, sharing part of the left edge
+      rect(100, 40, 130, 60),                               // outside, touching the right edge
+      polygon(50, 90, 10, 4, pi / 2),                       // inside, one corner on the top edge
+      rect(60, 0, 100, 30),                                 // inside, in the corner (two edges shared)
   };
   const auto nest = find_nesting(cs);
   EXPECT_EQ(nest, (std::vector<std::pair<size_t, size_t>>{{1, 0}, {3, 0}, {4, 0}}));
@@ -495,8 +492,7 @@ TEST(CutOrder, AScrambledGridOfCirclesNeedsAFractionOfTheRapids) {
   // The lower bound: 99 gaps of at least 20 - 2 r = 12 between circles.
   EXPECT_GE(plan.rapid_planned, 99 * 12.0);
   // Measured: as written 10167.7, planned 1557.4 (ratio 0.153).
-  EXPECT_LT(plan.rapid_planned, 0.17 * plan.rapid_as_written)
-      << plan.rapid_planned << " vs " << plan.rapid_as_written;
+  EXPECT_LT(plan.rapid_planned, 0.17 * plan.rapid_as_written) << plan.rapid_planned << " vs " << plan.rapid_as_written;
   RecordProperty("rapid_as_written", std::to_string(plan.rapid_as_written));
   RecordProperty("rapid_planned", std::to_string(plan.rapid_planned));
 }
@@ -564,6 +560,5 @@ TEST(CutOrder, TwoThousandContoursPlanValidly) {
   for (const auto& [in, out] : expected) EXPECT_LT(at[in], at[out]);
   EXPECT_EQ(plan.unmet_nesting, 0u);
   // Measured: as written 228154, baseline 212872, planned 47585 (ratio 0.224).
-  EXPECT_LT(plan.rapid_planned, 0.26 * plan.rapid_baseline)
-      << plan.rapid_planned << " vs " << plan.rapid_baseline;
+  EXPECT_LT(plan.rapid_planned, 0.26 * plan.rapid_baseline) << plan.rapid_planned << " vs " << plan.rapid_baseline;
 }

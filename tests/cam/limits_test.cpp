@@ -2,18 +2,18 @@
 // (limits.hpp, docs/limits.md): pathological but valid inputs finish or are
 // refused quickly, with an error naming the place. "Quickly" is checked by
 // ctest's TIMEOUT for *Limits* tests (CMakeLists.txt), not by assertions.
-#include <gtest/gtest.h>
+#include "bezcam/limits.hpp"
 
 #include <cmath>
 #include <functional>
+#include <gtest/gtest.h>
 #include <string>
 
+#include "bezcam/cam/program_limits.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
-#include "bezcam/limits.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
-#include "bezcam/cam/program_limits.hpp"
 #include "bezcam/job/job_json.hpp"
 
 using namespace bezcam;
@@ -111,8 +111,7 @@ TEST(Limits, ALongSmoothCurveAtAMicronFinishes) {
            fmt_num(y0) + "],[" + fmt_num(x1) + "," + fmt_num(y1) + "],[" + fmt_num(x2) + "," + fmt_num(y2) + "]]}";
   };
   const std::string circle = R"({"type": "path", "closed": true, "segments": [)" + q(R, 0, R, R, 0, R) + "," +
-                             q(0, R, -R, R, -R, 0) + "," + q(-R, 0, -R, -R, 0, -R) + "," + q(0, -R, R, -R, R, 0) +
-                             "]}";
+                             q(0, R, -R, R, -R, 0) + "," + q(-R, 0, -R, -R, 0, -R) + "," + q(0, -R, R, -R, R, 0) + "]}";
   const Job j = parse_job(job(R"("tolerance": 0.001, )", circle), "job.json");
   const Program p = build_program(j, generic(), {});
   EXPECT_LE(p.max_bound, 0.001);
@@ -123,7 +122,8 @@ TEST(Limits, ALongSmoothCurveAtAMicronFinishes) {
 
 TEST(Limits, DegreeSixtyConvertsToLinesAndArcs) {
   std::string pts;
-  for (int k = 0; k <= 60; ++k) pts += (k ? ",[" : "[") + std::to_string(k) + "," + fmt_num(10 * std::sin(0.7 * k)) + "]";
+  for (int k = 0; k <= 60; ++k)
+    pts += (k ? ",[" : "[") + std::to_string(k) + "," + fmt_num(10 * std::sin(0.7 * k)) + "]";
   const Job j = parse_job(job("", R"({"type": "bezier", "points": [)" + pts + "]}"), "job.json");
   for (const OutputMode mode : {OutputMode::lines, OutputMode::arcs}) {
     ConvertOptions opt;
@@ -247,8 +247,8 @@ TEST(Limits, ARefusedLineInsideANurbsBlockLeavesTheBlockAsItWas) {
   const MachineProfile fanuc = load_machine_profile("fanuc");
   GcodeInterpreter f(&fanuc);
   int no = 0;
-  for (const char* l : {"G21 G90 G17", "G00 X0. Y0. Z0.", "G01 F100.", "G06.2 P4 K0. X0. Y0. Z0. R1.", "K0. X1. Y1.",
-                        "K0. X2. Y0."})
+  for (const char* l :
+       {"G21 G90 G17", "G00 X0. Y0. Z0.", "G01 F100.", "G06.2 P4 K0. X0. Y0. Z0. R1.", "K0. X1. Y1.", "K0. X2. Y0."})
     f.feed_line(l, ++no);
   // A point whose knot decreases: refused after its point was appended.
   EXPECT_EQ(refusal_of([&] { f.feed_line("K-1. X3. Y1.", ++no); }).id, "gcode.knot-order");

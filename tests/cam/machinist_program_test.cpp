@@ -3,20 +3,19 @@
 // tool list and cycle time in the header, the move to the tool-change
 // position, and the post options (moved part, return position, no
 // comments, modal NURBS words, precision).
-#include "bezcam/machine/planner.hpp"
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "bezcam/cam/program_motion.hpp"
-#include "bezcam/machine/motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/machine/motion.hpp"
+#include "bezcam/machine/planner.hpp"
 #include "support/refusal.hpp"
 
 namespace {
@@ -51,7 +50,7 @@ TEST(Clearance, RapidsDownToTheClearancePlaneAndFeedsOnlyTheLastStretch) {
   const auto lines = lines_of(convert(j, load_machine_profile("generic"), {}).gcode);
   const size_t over = index_of(lines, "X0. Y0.");  // the rapid over the start (G00 is modal)
   ASSERT_LT(over + 2, lines.size());
-  EXPECT_EQ(lines[over + 1], "Z3.");            // rapid down to top_z + clearance
+  EXPECT_EQ(lines[over + 1], "Z3.");             // rapid down to top_z + clearance
   EXPECT_EQ(lines[over + 2], "G01 Z-1. F200.");  // feed from there
   // Without clearance: the plunge feeds from safe Z.
   const auto plain = lines_of(convert(job_of("", kCurve), load_machine_profile("generic"), {}).gcode);
@@ -98,16 +97,17 @@ TEST(Clearance, SurfacePassesLinkAtTheClearanceAboveTheSurfaceNotAtSafeZ) {
 }
 
 TEST(EntityLines, BeforeAndAfterArePrintedAroundTheEntityWithPlaceholdersReplaced) {
-  const Job j = job_of(R"J(, "spindle_rpm": 9000, "before": ["(start {entity} with T{tool} at {rpm} rpm, Z{cut_z})", "M62 P1"],
+  const Job j =
+      job_of(R"J(, "spindle_rpm": 9000, "before": ["(start {entity} with T{tool} at {rpm} rpm, Z{cut_z})", "M62 P1"],
                          "after": "M63 P1")J",
-                       kCurve);
+             kCurve);
   const auto lines = lines_of(convert(j, load_machine_profile("generic"), {}).gcode);
   const size_t b = index_of(lines, "(start s with T1 at 9000 rpm, Z-1)");
   const size_t a = index_of(lines, "M63 P1");
   ASSERT_LT(b, lines.size());
   ASSERT_LT(a, lines.size());
   EXPECT_EQ(lines[b + 1], "M62 P1");
-  EXPECT_EQ(lines[b + 2], "G00 Z5.");  // then the approach
+  EXPECT_EQ(lines[b + 2], "G00 Z5.");                               // then the approach
   EXPECT_EQ(lines[a - 1].rfind("G00 Z5.", 0), 0u) << lines[a - 1];  // after the retract
 }
 

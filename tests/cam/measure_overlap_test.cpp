@@ -2,16 +2,15 @@
 // while_measuring sees the final moves while the pool still measures, the
 // pool reports its earliest-added failure, and convert_program() plans the
 // program it returns.
-#include <gtest/gtest.h>
-
 #include <atomic>
 #include <chrono>
+#include <gtest/gtest.h>
 #include <stdexcept>
 #include <string>
 #include <thread>
 
-#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/bezcam.hpp"
+#include "bezcam/cam/program_motion.hpp"
 #include "cam/cut_emitters.hpp"
 
 namespace bezcam {

@@ -1,12 +1,12 @@
 // A program's motion as blocks: modal axes, exact lengths of lines, arcs and
 // helices, and exact-curve blocks measured against closed forms.
-#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/machine/motion.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
+
+#include "bezcam/cam/program_motion.hpp"
 
 namespace bezcam {
 namespace {
@@ -74,8 +74,8 @@ TEST(BlockLength, ArcsByDirectionFullCircleAndHelix) {
   // Equal ends: a full circle.
   EXPECT_NEAR(block_length(arc_block(BlockKind::arc_cw, {3, 0, 0}, {3, 0, 0}, {0, 0, 0})), 6 * kPi, 1e-12);
   // A helix: half a turn of radius 2 rising 4.
-  EXPECT_NEAR(block_length(arc_block(BlockKind::arc_ccw, {2, 0, 0}, {-2, 0, 4}, {0, 0, 0})),
-              std::hypot(2 * kPi, 4.0), 1e-12);
+  EXPECT_NEAR(block_length(arc_block(BlockKind::arc_ccw, {2, 0, 0}, {-2, 0, 4}, {0, 0, 0})), std::hypot(2 * kPi, 4.0),
+              1e-12);
 }
 
 // Arcs whose ends lie at different radii (rounding; the controllers run
@@ -166,8 +166,10 @@ TEST(BlockLength, ExactCurveBlocksAgreeWithTheKernel) {
     double a = std::max(0.0, best_t - 1e-3), b = std::min(1.0, best_t + 1e-3);
     for (int it = 0; it < 100; ++it) {
       const double m1 = a + (b - a) / 3, m2 = b - (b - a) / 3;
-      if (dist(evaluate(bz, m1), p) < dist(evaluate(bz, m2), p)) b = m2;
-      else a = m1;
+      if (dist(evaluate(bz, m1), p) < dist(evaluate(bz, m2), p))
+        b = m2;
+      else
+        a = m1;
     }
     EXPECT_LT(dist(evaluate(bz, (a + b) / 2), p), 1e-12);
   }

@@ -1,9 +1,8 @@
 // --output arcs and --output nurbs end to end: job -> program -> text, per
 // dialect (the words, their order and decimals), fallbacks and refusals.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <regex>
 #include <sstream>
 
@@ -17,7 +16,8 @@ namespace {
 Job job_of(const std::string& entity, const std::string& extra = "") {
   return parse_job(R"({"bezcam": 1, "tolerance": 0.01, )" + extra +
                        R"("job": {"feed": 600, "plunge_feed": 200, "safe_z": 5, "cut_z": -0.5},
-                           "entities": [)" + entity + "]}",
+                           "entities": [)" +
+                       entity + "]}",
                    "t.json");
 }
 const std::string kSemicircle = R"({"id": "semi", "type": "bezier", "points": [[-3,0],[-3,4],[3,4],[3,0]]})";
@@ -82,7 +82,8 @@ TEST(OutputArcs, NonPlanarCurveTakesHelicalArcsOnlyWhereTheySaveBlocks) {
   // fewer blocks than helical arcs would, and are written.
   const auto r = run(job_of(kTwisted), "generic", OutputMode::arcs);
   EXPECT_EQ(count_matching(r.gcode, std::regex(R"(G0?[23] )")), 0u);
-  EXPECT_LE(run(job_of(kTwisted), "generic", OutputMode::lines).program.entities[0].blocks, r.program.entities[0].blocks);
+  EXPECT_LE(run(job_of(kTwisted), "generic", OutputMode::lines).program.entities[0].blocks,
+            r.program.entities[0].blocks);
   // A ramp round a quarter circle (z falling 2 over it) is nearly a
   // helix: helical arcs (G02/G03 with Z), a handful where lines need dozens,
   // within the tolerance by the independent measurement.
@@ -91,7 +92,8 @@ TEST(OutputArcs, NonPlanarCurveTakesHelicalArcsOnlyWhereTheySaveBlocks) {
   for (const char* m : {"generic", "fanuc", "linuxcnc", "grbl"}) {
     SCOPED_TRACE(m);
     const auto a = run(job_of(ramp), m, OutputMode::arcs), l = run(job_of(ramp), m, OutputMode::lines);
-    const size_t helical = count_matching(a.gcode, std::regex(R"((^|\s)G0?3 X-?[0-9.]+ Y-?[0-9.]+ Z-?[0-9.]+ I-?[0-9.]+ J-?[0-9.]+)"));
+    const size_t helical =
+        count_matching(a.gcode, std::regex(R"((^|\s)G0?3 X-?[0-9.]+ Y-?[0-9.]+ Z-?[0-9.]+ I-?[0-9.]+ J-?[0-9.]+)"));
     EXPECT_GE(helical, 1u) << a.gcode;
     EXPECT_LT(a.program.entities[0].blocks * 3, l.program.entities[0].blocks)
         << a.program.entities[0].blocks << " vs " << l.program.entities[0].blocks;
@@ -115,8 +117,9 @@ const std::regex kG18(R"(^(N\d+ )?G18$)"), kG19(R"(^(N\d+ )?G19$)"), kG17(R"(^(N
 void expect_arcs_in_plane(const ConvertResult& a, const ConvertResult& l, int g) {
   const auto ls = lines_of(a.gcode);
   const std::regex arc(R"((^|\s)G0?[23] )");
-  const std::regex words(g == 18 ? R"((^|\s)G0?[23] X-?[0-9.]+ Y-?[0-9.]+ Z-?[0-9.]+ I-?[0-9.]+ K-?[0-9.]+( F[0-9.]+)?$)"
-                                 : R"((^|\s)G0?[23] Y-?[0-9.]+ Z-?[0-9.]+ J-?[0-9.]+ K-?[0-9.]+( F[0-9.]+)?$)");
+  const std::regex words(g == 18
+                             ? R"((^|\s)G0?[23] X-?[0-9.]+ Y-?[0-9.]+ Z-?[0-9.]+ I-?[0-9.]+ K-?[0-9.]+( F[0-9.]+)?$)"
+                             : R"((^|\s)G0?[23] Y-?[0-9.]+ Z-?[0-9.]+ J-?[0-9.]+ K-?[0-9.]+( F[0-9.]+)?$)");
   const std::regex& plane_word = g == 18 ? kG18 : kG19;
   size_t first = ls.size(), last = 0, arcs = 0;
   for (size_t i = 0; i < ls.size(); ++i)
@@ -170,7 +173,8 @@ TEST(OutputArcs, CurveInAPlaneXConstTakesG19Arcs) {
 TEST(OutputNurbs, FanucBlockIsWordedAsTheDialectPageSays) {
   const auto r = run(job_of(kSemicircle), "fanuc", OutputMode::nurbs);
   const auto ls = lines_of(r.gcode);
-  auto at = std::find_if(ls.begin(), ls.end(), [](const std::string& l) { return l.find("G06.2") != std::string::npos; });
+  auto at =
+      std::find_if(ls.begin(), ls.end(), [](const std::string& l) { return l.find("G06.2") != std::string::npos; });
   ASSERT_NE(at, ls.end());
   // Line numbers, start word, rank, the first point (= the current position)
   // with its knot and weight, then the feed.
@@ -180,7 +184,7 @@ TEST(OutputNurbs, FanucBlockIsWordedAsTheDialectPageSays) {
   for (int k = 4; k < 8; ++k) EXPECT_TRUE(std::regex_match(at[k], std::regex(R"(N\d+ K1\.)"))) << at[k];
   // The move after the block names its word (any G00/G01 ends the mode).
   EXPECT_TRUE(std::regex_match(at[8], std::regex(R"(N\d+ G00 Z5\.)"))) << at[8];
-  EXPECT_LT(r.program.max_bound, 1e-12);  // exact: integer points, only floating point
+  EXPECT_LT(r.program.max_bound, 1e-12);        // exact: integer points, only floating point
   EXPECT_EQ(r.program.entities[0].blocks, 8u);  // 4 points + 4 knots
 }
 

@@ -3,22 +3,20 @@
 // the text in gcode/part_roundtrip_test.cpp. The leads are measured here
 // against the part by the test's own means (dense samples of the part,
 // refined by golden section), never by bezcam's measurement.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
+#include <iterator>
 #include <map>
 #include <numbers>
-#include <fstream>
-#include <iterator>
 #include <set>
 #include <sstream>
 
-#include "bezcam/cam/program_motion.hpp"
-#include "bezcam/machine/motion.hpp"
 #include "bezcam/cam/program.hpp"
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/machine/motion.hpp"
 #include "support/cutting_runs.hpp"
 
 namespace bezcam {
@@ -34,13 +32,14 @@ std::string rect(double x0, double y0, double w, double h, const std::string& ex
 }
 
 Program build(const std::string& job_params, const std::string& entities, const std::string& top = "") {
-  const std::string json = R"({"bezcam":1,"tolerance":0.01,)" + top + R"("job":{"feed":600,"plunge_feed":100,"safe_z":5,)" +
-                           job_params + R"(},"entities":[)" + entities + "]}";
+  const std::string json = R"({"bezcam":1,"tolerance":0.01,)" + top +
+                           R"("job":{"feed":600,"plunge_feed":100,"safe_z":5,)" + job_params + R"(},"entities":[)" +
+                           entities + "]}";
   return build_program(parse_job(json, "test.json"), load_machine_profile("generic"), ConvertOptions{});
 }
 
 struct Cut {
-  std::vector<Vec3> plunges;          // where each plunge ends
+  std::vector<Vec3> plunges;            // where each plunge ends
   std::vector<std::vector<Vec3>> runs;  // feed moves between rapids
 };
 Cut cuts(const Program& p, int entity = -1) {
@@ -72,7 +71,8 @@ double dist_to_rect(const Vec3& p, double x0, double y0, double w, double h) {
 }
 
 TEST(PartCut, EqualStepsFromTopZDownToCutZ) {
-  const Program p = build(R"("side":"outside","tool_diameter":6,"top_z":0,"cut_z":-5,"step_down":2)", rect(0, 0, 40, 30));
+  const Program p =
+      build(R"("side":"outside","tool_diameter":6,"top_z":0,"cut_z":-5,"step_down":2)", rect(0, 0, 40, 30));
   const Cut c = cuts(p);
   ASSERT_EQ(c.plunges.size(), 3u);  // ceil(5 / 2) passes of 5/3 each
   EXPECT_NEAR(c.plunges[0].z, -1.667, 1e-9);
@@ -83,15 +83,15 @@ TEST(PartCut, EqualStepsFromTopZDownToCutZ) {
 }
 
 TEST(PartCut, LeadsStartOnTheWasteSideAndJoinTangentially) {
-  const Program p = build(R"("side":"outside","tool_diameter":6,"cut_z":-1,"lead":{"radius":4,"length":2})",
-                          rect(0, 0, 40, 30));
+  const Program p =
+      build(R"("side":"outside","tool_diameter":6,"cut_z":-1,"lead":{"radius":4,"length":2})", rect(0, 0, 40, 30));
   const Cut c = cuts(p);
   ASSERT_EQ(c.plunges.size(), 1u);
   // The plunge is off the part: at least r + length from it, never on it.
   EXPECT_GE(dist_to_rect(c.plunges[0], 0, 0, 40, 30), 3 + 2 - 1e-3);
   // Inside: the same on the other side.
-  const Program q = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":4,"length":2})",
-                          rect(0, 0, 40, 30));
+  const Program q =
+      build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":4,"length":2})", rect(0, 0, 40, 30));
   const Cut d = cuts(q);
   const Vec3 s = d.plunges[0];
   EXPECT_TRUE(s.x > 0 && s.x < 40 && s.y > 0 && s.y < 30);
@@ -105,7 +105,8 @@ class PartDistance {
  public:
   explicit PartDistance(std::vector<Bezier> part) : part_(std::move(part)) {
     for (size_t k = 0; k < part_.size(); ++k)
-      for (int i = 0; i <= kN; ++i) at_.push_back({k, static_cast<double>(i) / kN, evaluate(part_[k], static_cast<double>(i) / kN)});
+      for (int i = 0; i <= kN; ++i)
+        at_.push_back({k, static_cast<double>(i) / kN, evaluate(part_[k], static_cast<double>(i) / kN)});
   }
   double operator()(const Vec3& p) const {
     size_t best = 0;
@@ -116,7 +117,10 @@ class PartDistance {
     }
     const Bezier& b = part_[at_[best].piece];
     double lo = std::max(0.0, at_[best].t - 1.0 / kN), hi = std::min(1.0, at_[best].t + 1.0 / kN);
-    auto f = [&](double t) { const Vec3 q = evaluate(b, t); return std::hypot(q.x - p.x, q.y - p.y); };
+    auto f = [&](double t) {
+      const Vec3 q = evaluate(b, t);
+      return std::hypot(q.x - p.x, q.y - p.y);
+    };
     for (int i = 0; i < 40; ++i) {
       const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
       (f(m1) < f(m2) ? hi : lo) = f(m1) < f(m2) ? m2 : m1;
@@ -205,22 +209,23 @@ std::string glyph() {
 TEST(PartCut, LeadsStayOnTheWasteSideForEverySideDirectionAndWinding) {
   const double r = 3, tol = 0.01;
   std::vector<std::pair<double, double>> hex;
-  for (int k = 0; k < 6; ++k) hex.push_back({20 * std::cos(k * std::numbers::pi / 3), 20 * std::sin(k * std::numbers::pi / 3)});
+  for (int k = 0; k < 6; ++k)
+    hex.push_back({20 * std::cos(k * std::numbers::pi / 3), 20 * std::sin(k * std::numbers::pi / 3)});
   for (const bool ccw : {true, false}) {
-    const std::map<std::string, std::string> contours{
-        {"circle", circle(0, 0, 20, ccw)},
-        {"teardrop", teardrop(ccw)},
-        {"rectangle", polygon({{0, 0}, {40, 0}, {40, 30}, {0, 30}}, ccw)},
-        {"hexagon", polygon(hex, ccw)}};
+    const std::map<std::string, std::string> contours{{"circle", circle(0, 0, 20, ccw)},
+                                                      {"teardrop", teardrop(ccw)},
+                                                      {"rectangle", polygon({{0, 0}, {40, 0}, {40, 30}, {0, 30}}, ccw)},
+                                                      {"hexagon", polygon(hex, ccw)}};
     for (const auto& [name, entity] : contours) {
       const PartDistance to_part(pieces_of(entity));
       for (const char* side : {"outside", "inside", "left", "right"})
         for (const char* direction : {"climb", "conventional", "as-drawn"})
           for (const char* output : {"lines", "arcs"}) {
             SCOPED_TRACE(name + (ccw ? " ccw " : " cw ") + side + " " + direction + " " + output);
-            const std::string json = R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,"cut_z":-1,)"
-                                     R"("tool_diameter":6,"lead":{"radius":3,"length":2},"side":")" + std::string(side) +
-                                     R"(","direction":")" + direction + R"("},"entities":[)" + entity + "]}";
+            const std::string json =
+                R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,"cut_z":-1,)"
+                R"("tool_diameter":6,"lead":{"radius":3,"length":2},"side":")" +
+                std::string(side) + R"(","direction":")" + direction + R"("},"entities":[)" + entity + "]}";
             ConvertOptions opt;
             opt.output = std::string(output) == "arcs" ? OutputMode::arcs : OutputMode::lines;
             const Program p = build_program(parse_job(json, "leads.json"), load_machine_profile("generic"), opt);
@@ -244,11 +249,12 @@ TEST(PartCut, LeadsStayOnTheWasteSideForEverySideDirectionAndWinding) {
               // The part's normal through s: from its nearest point (found
               // here by stepping against the gradient of the distance).
               const double h = 1e-4;
-              Vec3 n{to_part({s.x + h, s.y, 0}) - to_part({s.x - h, s.y, 0}), to_part({s.x, s.y + h, 0}) - to_part({s.x, s.y - h, 0}), 0};
+              Vec3 n{to_part({s.x + h, s.y, 0}) - to_part({s.x - h, s.y, 0}),
+                     to_part({s.x, s.y + h, 0}) - to_part({s.x, s.y - h, 0}), 0};
               n = n * (1 / std::hypot(n.x, n.y));
               const Vec3 u = a - s, v = b - s;
               EXPECT_NEAR(std::hypot(u.x, u.y), std::hypot(v.x, v.y), 2e-3);
-              EXPECT_NEAR(dot(u, n), dot(v, n), 2e-3);                            // as far out
+              EXPECT_NEAR(dot(u, n), dot(v, n), 2e-3);                             // as far out
               EXPECT_NEAR(u.x * n.y - u.y * n.x, -(v.x * n.y - v.y * n.x), 2e-3);  // on either side of the normal
             }
           }
@@ -269,7 +275,8 @@ TEST(PartCut, ALeadOutOnAClippedOffsetTurnsAwayFromThePart) {
     opt.output = mode;
     const Program p = build_program(
         parse_job(R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,"cut_z":-1,)"
-                  R"("side":"outside","tool_diameter":6,"lead":{"radius":3,"length":2}},"entities":[)" + entity + "]}",
+                  R"("side":"outside","tool_diameter":6,"lead":{"radius":3,"length":2}},"entities":[)" +
+                      entity + "]}",
                   "glyph.json"),
         load_machine_profile("generic"), opt);
     for (const auto& w : p.warnings) EXPECT_EQ(w.find("lead"), std::string::npos) << w;
@@ -295,7 +302,8 @@ TEST(PartCut, ALeadTooBigForThePocketIsShortenedOrRefused) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.id(), "job.cut");
     EXPECT_EQ(e.where(), "test.json: job.lead");
-    EXPECT_NE(std::string(e.what()).find("the lead-in at (10, "), std::string::npos) << e.what();  // a long side's middle
+    EXPECT_NE(std::string(e.what()).find("the lead-in at (10, "), std::string::npos)
+        << e.what();  // a long side's middle
     EXPECT_NE(std::string(e.what()).find("would cut into the part"), std::string::npos) << e.what();
     // Its arc reaches x = 10 - R: a radius up to 7 fits, and a little more
     // (what the band leaves beside the lead's own chord error).
@@ -310,7 +318,8 @@ TEST(PartCut, ALeadTooBigForThePocketIsShortenedOrRefused) {
   // In a 20 x 20 pocket (the tool's centre in a 14 x 14 square) a lead of
   // radius 2 fits at the middle of any side; a line of 14 after it would
   // reach 2 beyond the opposite side: it is made 12 long.
-  const Program p = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":2,"length":14})", rect(0, 0, 20, 20));
+  const Program p =
+      build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":2,"length":14})", rect(0, 0, 20, 20));
   bool said = false;
   for (const auto& w : p.warnings) {
     const size_t at = w.find("the lead's line is made ");
@@ -318,7 +327,8 @@ TEST(PartCut, ALeadTooBigForThePocketIsShortenedOrRefused) {
     const double made = std::stod(w.substr(at + 24));
     EXPECT_GE(made, 12) << w;
     EXPECT_LE(made, 12.0075) << w;
-    said = w.find(" long, not 14, at (") != std::string::npos && w.find("): a longer one would cut into the part") != std::string::npos;
+    said = w.find(" long, not 14, at (") != std::string::npos &&
+           w.find("): a longer one would cut into the part") != std::string::npos;
   }
   EXPECT_TRUE(said);
   const Cut c = cuts(p);
@@ -328,7 +338,8 @@ TEST(PartCut, ALeadTooBigForThePocketIsShortenedOrRefused) {
   for (const auto& run : c.runs)
     for (const auto& v : run) EXPECT_GE(dist_to_rect(v, 0, 0, 20, 20), 3 - 0.0101);
   // Room enough: no word about the lead.
-  const Program q = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":2,"length":1})", rect(0, 0, 40, 30));
+  const Program q =
+      build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"lead":{"radius":2,"length":1})", rect(0, 0, 40, 30));
   for (const auto& w : q.warnings) EXPECT_EQ(w.find("lead"), std::string::npos) << w;
 }
 
@@ -387,8 +398,8 @@ TEST(PartCut, ClimbGoesClockwiseOutsideAndCounterClockwiseInside) {
   EXPECT_LT(turning(cuts(out).runs[0]), 0);  // clockwise
   const Program in = build(R"("side":"inside","tool_diameter":6,"cut_z":-1,"direction":"climb")", rect(0, 0, 40, 30));
   EXPECT_GT(turning(cuts(in).runs[0]), 0);
-  const Program conv = build(R"("side":"outside","tool_diameter":6,"cut_z":-1,"direction":"conventional")",
-                             rect(0, 0, 40, 30));
+  const Program conv =
+      build(R"("side":"outside","tool_diameter":6,"cut_z":-1,"direction":"conventional")", rect(0, 0, 40, 30));
   EXPECT_GT(turning(cuts(conv).runs[0]), 0);
   // The same whichever way the rectangle is drawn: a clockwise copy.
   const std::string cw = R"({"type":"path","closed":true,"segments":[{"type":"bezier","points":[[0,0],[0,30]]},)"
@@ -401,7 +412,8 @@ TEST(PartCut, ClimbGoesClockwiseOutsideAndCounterClockwiseInside) {
 }
 
 TEST(PartCut, WasteSideNeverComesNearerThanTheRadius) {
-  const Program p = build(R"("side":"outside","tool_diameter":6,"cut_z":-1,"tolerance_side":"waste")", rect(0, 0, 40, 30));
+  const Program p =
+      build(R"("side":"outside","tool_diameter":6,"cut_z":-1,"tolerance_side":"waste")", rect(0, 0, 40, 30));
   const Cut c = cuts(p);
   for (const auto& run : c.runs)
     for (const auto& v : run) {
@@ -440,8 +452,8 @@ TEST(PartCut, StockToLeaveMovesThePathOut) {
 }
 
 TEST(PartCut, EntityKeysOverrideTheJobs) {
-  const Program p = build(R"("side":"outside","tool_diameter":6,"cut_z":-1)",
-                          rect(0, 0, 40, 30, R"(,"tool_diameter":2)"));
+  const Program p =
+      build(R"("side":"outside","tool_diameter":6,"cut_z":-1)", rect(0, 0, 40, 30, R"(,"tool_diameter":2)"));
   const Cut c = cuts(p);
   for (const auto& v : c.runs[0]) EXPECT_NEAR(dist_to_rect(v, 0, 0, 40, 30), 1, 0.0101);
 }
@@ -499,7 +511,8 @@ TEST(PartCut, TabsGoOnTheStretchesThatHoldThem) {
     t.replace(t.find(side), side.size(), side + R"(, "step_down": 1, "tabs": )" + tabs);
     return parse_job(t, "part-letter-g.json");
   };
-  const Program p = build_program(with(R"({"count": 2, "width": 4, "height": 1})"), load_machine_profile("generic"), ConvertOptions{});
+  const Program p = build_program(with(R"({"count": 2, "width": 4, "height": 1})"), load_machine_profile("generic"),
+                                  ConvertOptions{});
   bool said = false;
   for (const auto& w : p.warnings) said = said || w.find("is cut without tabs") != std::string::npos;
   EXPECT_TRUE(said);
@@ -510,7 +523,8 @@ TEST(PartCut, TabsGoOnTheStretchesThatHoldThem) {
     for (size_t i = 1; i < run.size(); ++i) rises += run[i].z > run[i - 1].z;
   EXPECT_EQ(rises, 2);  // the outline's last pass only
   try {
-    (void)build_program(with(R"({"count": 20, "width": 4, "height": 1})"), load_machine_profile("generic"), ConvertOptions{});
+    (void)build_program(with(R"({"count": 20, "width": 4, "height": 1})"), load_machine_profile("generic"),
+                        ConvertOptions{});
     ADD_FAILURE() << "20 tabs of 10 on a path of 164";
   } catch (const InputError& e) {
     EXPECT_EQ(e.id(), "job.cut");

@@ -2,7 +2,6 @@
 // the writer's program structure (docs/cli.md "What every program looks like").
 #include <algorithm>
 #include <gtest/gtest.h>
-
 #include <sstream>
 
 #include "bezcam/error.hpp"
@@ -45,9 +44,12 @@ TEST(MachineProfiles, AllShippedProfilesLoad) {
 
 namespace {
 Job job_of(const std::string& entities, const std::string& extra = "") {
-  return parse_job(R"({"bezcam": 1, )" + extra + R"( "job": {"feed": 800, "plunge_feed": 200, "safe_z": 5, "cut_z": -1, "spindle_rpm": 9000, "tool": 3},
-                    "entities": [)" + entities + "]}",
-                   "t.json");
+  return parse_job(
+      R"({"bezcam": 1, )" + extra +
+          R"( "job": {"feed": 800, "plunge_feed": 200, "safe_z": 5, "cut_z": -1, "spindle_rpm": 9000, "tool": 3},
+                    "entities": [)" +
+          entities + "]}",
+      "t.json");
 }
 }  // namespace
 
@@ -74,7 +76,8 @@ TEST(Program, StructureOfEveryProgram) {
   // One retract at the end, then the spindle stops: not two retracts.
   EXPECT_EQ(lines[lines.size() - 3], "M05");
   EXPECT_EQ(lines[lines.size() - 4].rfind("G00 Z", 0), 0u) << lines[lines.size() - 4];
-  EXPECT_EQ(std::count_if(lines.end() - 6, lines.end(), [](const std::string& l) { return l.rfind("G00 Z", 0) == 0; }), 1);
+  EXPECT_EQ(std::count_if(lines.end() - 6, lines.end(), [](const std::string& l) { return l.rfind("G00 Z", 0) == 0; }),
+            1);
   EXPECT_NE(r.gcode.find("(entity a: bezier, degree 2, 2D)"), std::string::npos);
   EXPECT_NE(r.gcode.find("(entity b: bezier, degree 2, 3D)"), std::string::npos);
   // Every G00 after the first XY move happens at safe Z; plunges at the plunge feed.
@@ -101,21 +104,24 @@ TEST(Program, LineNumbersAndDecimalsFromTheProfile) {
     for (size_t p = l.find_first_of("XY"); p != std::string::npos; p = l.find_first_of("XY", p + 1)) {
       const auto dot = l.find('.', p);
       const auto end = l.find(' ', p);
-      if (dot != std::string::npos && dot < end) EXPECT_LE((end == std::string::npos ? l.size() : end) - dot - 1, 2u) << l;
+      if (dot != std::string::npos && dot < end)
+        EXPECT_LE((end == std::string::npos ? l.size() : end) - dot - 1, 2u) << l;
     }
   }
 }
 
 TEST(Program, InchJobsPrintG20AndConvertTheLimits) {
-  const Job j = parse_job(R"({"bezcam": 1, "units": "inch", "tolerance": 0.0005, "job": {"feed": 100, "plunge_feed": 20, "safe_z": 0.2, "cut_z": -0.05},
+  const Job j = parse_job(
+      R"({"bezcam": 1, "units": "inch", "tolerance": 0.0005, "job": {"feed": 100, "plunge_feed": 20, "safe_z": 0.2, "cut_z": -0.05},
                             "entities": [{"type": "bezier", "points": [[0,0],[1,1],[2,0]]}]})",
-                          "i.json");
+      "i.json");
   const ConvertResult r = convert(j, load_machine_profile("generic"), {});
   EXPECT_NE(r.gcode.find("G20 G90 G17"), std::string::npos);
   // grbl's 5000 mm/min is 196.85 inch/min: a 200 inch/min feed is refused.
-  const Job fast = parse_job(R"({"bezcam": 1, "units": "inch", "job": {"feed": 200, "plunge_feed": 20, "safe_z": 0.2, "cut_z": -0.05},
+  const Job fast = parse_job(
+      R"({"bezcam": 1, "units": "inch", "job": {"feed": 200, "plunge_feed": 20, "safe_z": 0.2, "cut_z": -0.05},
                             "entities": [{"type": "bezier", "points": [[0,0],[1,1],[2,0]]}]})",
-                             "i.json");
+      "i.json");
   EXPECT_THROW(convert(fast, load_machine_profile("grbl"), {}), InputError);
   EXPECT_NO_THROW(convert(j, load_machine_profile("grbl"), {}));
 }

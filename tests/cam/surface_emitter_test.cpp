@@ -6,11 +6,10 @@
 // upper side), neighbouring passes are never farther apart than the
 // stepover, zigzag passes are the raster passes linked, the curve on a
 // surface follows the mapped curve, and gouges are refused or skipped.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <tuple>
 
 #include "bezcam/error.hpp"
@@ -381,11 +380,11 @@ void expect_saddle_raster_within_stepover(const char* machine, OutputMode mode) 
   const Job saddle = as_raster(load_job(kSamples + "patch-saddle.json"), 0);
   const Read x = convert_and_read(saddle, machine, mode);
   const double stepover = *saddle.entities[0].toolpath.stepover, chord = 0.01;
-  const auto runs =
-      runs_of(x, quantize(cut_params(saddle, saddle.entities[0], x.m).feed, x.m.feed_decimals), chord);
+  const auto runs = runs_of(x, quantize(cut_params(saddle, saddle.entities[0], x.m).feed, x.m.feed_decimals), chord);
   ASSERT_GE(runs.size(), 10u);
   double worst = 0;
-  for (size_t i = 0; i + 1 < runs.size(); i += 3) worst = std::max(worst, brute_gap(runs[i], runs[i + 1], stepover / 20));
+  for (size_t i = 0; i + 1 < runs.size(); i += 3)
+    worst = std::max(worst, brute_gap(runs[i], runs[i + 1], stepover / 20));
   EXPECT_LE(worst, stepover + 2 * chord);
 }
 
@@ -510,8 +509,8 @@ TEST(SurfaceProgram, APassTurningRoundYTakesG18ArcsThoughItSpreadsLeastAlongZ) {
       [[-20, 50, 0], [-20, 58, 0]]],
       "toolpath": {"pattern": "zigzag", "direction": "u", "stepover": 4}}]})";
   const Job job = parse_job(text, "twisted-arch.json");
-  ASSERT_EQ(least_climb_plane(std::vector<Bezier>{Bezier::make(
-                {{20, 0, 0}, {20, 16.6667, 26.6667}, {-20, 33.3333, 26.6667}, {-20, 50, 0}}, {}, 3)}),
+  ASSERT_EQ(least_climb_plane(std::vector<Bezier>{
+                Bezier::make({{20, 0, 0}, {20, 16.6667, 26.6667}, {-20, 33.3333, 26.6667}, {-20, 50, 0}}, {}, 3)}),
             Plane::xy);
   const Read lines = convert_and_read(job, "generic", OutputMode::lines);
   const Read arcs = convert_and_read(job, "generic", OutputMode::arcs);
@@ -539,9 +538,8 @@ TEST(SurfaceProgram, APassTurningRoundYTakesG18ArcsThoughItSpreadsLeastAlongZ) {
 // why, once per entity.
 TEST(SurfaceProgram, LinesWhereNoBlockCanCarryAPassAndSaidSo) {
   const Job job = load_job(kSamples + "patch-saddle.json");
-  for (auto [machine, mode, why] :
-       {std::tuple{"linuxcnc", OutputMode::nurbs, "move in X and Y only"},
-        std::tuple{"generic", OutputMode::nurbs, "has no NURBS words"}}) {
+  for (auto [machine, mode, why] : {std::tuple{"linuxcnc", OutputMode::nurbs, "move in X and Y only"},
+                                    std::tuple{"generic", OutputMode::nurbs, "has no NURBS words"}}) {
     SCOPED_TRACE(machine);
     const Read x = convert_and_read(job, machine, mode);
     size_t said = 0;

@@ -2,13 +2,11 @@
 // measurement (the tip recomputed from the surface's own derivatives, not
 // from the exact normal pieces), closed-form offsets, pass spacing measured
 // on the polylines, adaptivity against the uniform baseline, gouges.
-#include "bezcam/cam/gouge.hpp"
-#include "bezcam/cam/pass_plan.hpp"
-
 #include <gtest/gtest.h>
-
 #include <random>
 
+#include "bezcam/cam/gouge.hpp"
+#include "bezcam/cam/pass_plan.hpp"
 #include "bezcam/error.hpp"
 #include "support/surface_fixtures.hpp"
 

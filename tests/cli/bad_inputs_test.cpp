@@ -20,12 +20,10 @@
 //   NAME.expected (the G-code reader tests' format): one line `line N: MSG`,
 //     the reader's refusal; here lint must exit 2 and print `{file}:N: MSG`
 //     as its first finding.
-#include <gtest/gtest.h>
-
 #include <algorithm>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -79,12 +77,17 @@ Expectation read_expectation(const std::string& name) {
     for (std::string line; std::getline(in, line);) {
       if (line.empty() || line[0] == '#') continue;
       const size_t colon = line.find(": ");
-      if (colon == std::string::npos) throw std::runtime_error(expect.string() + ": expected `key: value`, found " + line);
+      if (colon == std::string::npos)
+        throw std::runtime_error(expect.string() + ": expected `key: value`, found " + line);
       const std::string key = line.substr(0, colon), value = line.substr(colon + 2);
-      if (key == "args") args = value;
-      else if (key == "exit") x.exit = std::stoi(value);
-      else if (key == "stderr" || key == "stderr-regex" || key == "stdout" || key == "stdout-regex") x.checks[key] = value;
-      else throw std::runtime_error(expect.string() + ": unknown key " + key);
+      if (key == "args")
+        args = value;
+      else if (key == "exit")
+        x.exit = std::stoi(value);
+      else if (key == "stderr" || key == "stderr-regex" || key == "stdout" || key == "stdout-regex")
+        x.checks[key] = value;
+      else
+        throw std::runtime_error(expect.string() + ": unknown key " + key);
     }
   } else if (fs::exists(expected)) {
     std::ifstream in(expected);
@@ -115,8 +118,8 @@ TEST_P(BadInput, IsRefusedWithItsMessageAndWritesNothing) {
   const std::string file = "tests/bad/" + name;
   std::vector<std::string> args;
   for (const auto& a : x.args)
-    args.push_back(replace_all(replace_all(replace_all(a, "{file}", file), "{out}", out.string()), "{report}",
-                               report.string()));
+    args.push_back(
+        replace_all(replace_all(replace_all(a, "{file}", file), "{out}", out.string()), "{report}", report.string()));
   // No progress lines before the message, whatever the machine's load.
   const auto r = testproc::run(BEZCAM_EXE, args, {{"BEZCAM_PROGRESS", "off"}}, BEZCAM_SOURCE_DIR);
 
@@ -164,7 +167,8 @@ TEST_P(CheckLikeConvert, RefusesWhatConvertRefuses) {
   const std::string name = GetParam();
   const Expectation x = read_expectation(name);
   if (x.args.empty() || x.args[0] != "convert" || x.exit == 0) GTEST_SKIP() << "not a convert refusal";
-  if (std::find(x.args.begin(), x.args.end(), "--report") != x.args.end()) GTEST_SKIP() << "a usage refusal of convert's";
+  if (std::find(x.args.begin(), x.args.end(), "--report") != x.args.end())
+    GTEST_SKIP() << "a usage refusal of convert's";
   const std::string file = "tests/bad/" + name;
   std::vector<std::string> args{"check", file};
   // Every option convert was given, but where its program goes.
@@ -184,15 +188,13 @@ TEST_P(CheckLikeConvert, RefusesWhatConvertRefuses) {
   EXPECT_EQ(c.err_first_line(), v.err_first_line());
 }
 
-INSTANTIATE_TEST_SUITE_P(TestsBad, CheckLikeConvert,
-                         ::testing::ValuesIn([] {
+INSTANTIATE_TEST_SUITE_P(TestsBad, CheckLikeConvert, ::testing::ValuesIn([] {
                            std::vector<std::string> jobs;
                            for (const auto& n : bad_inputs())
                              if (n.ends_with(".json") || n.ends_with(".svg") || n.ends_with(".dxf")) jobs.push_back(n);
                            return jobs;
                          }()),
                          test_name);
-
 
 // The runner itself: the directory holds both kinds of input and every one
 // has its sidecar (a new file without one fails above, loudly).

@@ -1,9 +1,8 @@
 // bezcam as a user meets it: exit codes (docs/cli.md), messages that name
 // the place, and no output file created or truncated on refusal. What
 // writes files runs the executable; the rest runs in-process.
-#include <gtest/gtest.h>
-
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <sstream>
 
 #include "bezcam/gcode/convert.hpp"
@@ -49,9 +48,9 @@ TEST(Cli, HelpListsTheSubcommands) {
   EXPECT_EQ(r.status, 0);
   for (const char* c : {"convert", "check"}) EXPECT_NE(r.out.find(c), std::string::npos) << r.out;
   EXPECT_EQ(run_here("convert --help").status, 0);
-  EXPECT_EQ(run_here("").status, 2);                // no subcommand
-  EXPECT_EQ(run_here("convert").status, 2);         // missing JOB
-  EXPECT_EQ(run_here("frobnicate x").status, 2);    // unknown subcommand
+  EXPECT_EQ(run_here("").status, 2);              // no subcommand
+  EXPECT_EQ(run_here("convert").status, 2);       // missing JOB
+  EXPECT_EQ(run_here("frobnicate x").status, 2);  // unknown subcommand
 }
 
 TEST(Cli, ConvertWritesTheSameProgramAsTheLibrary) {
@@ -74,7 +73,8 @@ TEST(Cli, ConvertToStdoutAndSummaryOnStderr) {
 TEST(Cli, InvalidJsonIsRefusedWithItsPlaceAndNoFileIsTouched) {
   TempDir t;
   const fs::path out = write(t, "keep.nc", "previous program\n");
-  const fs::path bad = write(t, "bad.json", "{\"bezcam\": 1,\n \"entities\": [ {\"type\": \"bezier\", \"points\": [[0,0],[1,\"a\"]]} ]}");
+  const fs::path bad = write(
+      t, "bad.json", "{\"bezcam\": 1,\n \"entities\": [ {\"type\": \"bezier\", \"points\": [[0,0],[1,\"a\"]]} ]}");
   auto r = run("convert " + bad.string() + " -o " + out.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("entities[0].points[1][1]"), std::string::npos) << r.out;

@@ -15,8 +15,8 @@ using bezcam::test::run_cli;
 const std::string kSemicircle = std::string(BEZCAM_SOURCE_DIR) + "/samples/curve-semicircle.json";
 
 TEST(CliParse, EachSubcommandBindsItsArguments) {
-  auto a = parse_cli({"convert", "job.json", "-o", "out.nc", "--tolerance", "0.05", "--output", "arcs",
-                      "--precision", "4", "--origin", "center", "--compare-outputs", "-q"});
+  auto a = parse_cli({"convert", "job.json", "-o", "out.nc", "--tolerance", "0.05", "--output", "arcs", "--precision",
+                      "4", "--origin", "center", "--compare-outputs", "-q"});
   EXPECT_EQ(a.convert.job, "job.json");
   EXPECT_EQ(a.convert.out, "out.nc");
   EXPECT_DOUBLE_EQ(a.convert.conv.tolerance, 0.05);
@@ -45,8 +45,8 @@ TEST(CliParse, EachSubcommandBindsItsArguments) {
   EXPECT_EQ(a.stream.resume.safe_z, 12.0);
   EXPECT_FALSE(a.stream.resume.plunge_feed);
 
-  a = parse_cli({"simulate", "--listen", "127.0.0.1:0", "--fault", "drop-after:3", "--fault", "corrupt:5",
-                 "--buffer", "8192"});
+  a = parse_cli(
+      {"simulate", "--listen", "127.0.0.1:0", "--fault", "drop-after:3", "--fault", "corrupt:5", "--buffer", "8192"});
   EXPECT_EQ(a.simulate.faults, (std::vector<std::string>{"drop-after:3", "corrupt:5"}));
   EXPECT_EQ(a.simulate.buffer, 8192u);
   EXPECT_EQ(a.simulate.time_scale, "1");
@@ -109,12 +109,12 @@ TEST(CliInProcess, HelpIsTheExecutables) {
 
 TEST(CliInProcess, RefusalsAreTheExecutables) {
   const std::vector<std::vector<std::string>> lines = {
-      {},                                                          // no subcommand: usage, 2
-      {"convert", kSemicircle, "--tol", "0.1"},                    // a misspelt option, 2
-      {"convert", kSemicircle, "--machine", "nosuch"},             // an unknown profile, 2
-      {"convert", std::string(BEZCAM_SOURCE_DIR) + "/no-such.json"},  // a missing file, 3
+      {},                                                                            // no subcommand: usage, 2
+      {"convert", kSemicircle, "--tol", "0.1"},                                      // a misspelt option, 2
+      {"convert", kSemicircle, "--machine", "nosuch"},                               // an unknown profile, 2
+      {"convert", std::string(BEZCAM_SOURCE_DIR) + "/no-such.json"},                 // a missing file, 3
       {"check", std::string(BEZCAM_SOURCE_DIR) + "/tests/bad/path-joint-gap.json"},  // a bad job, 2
-      {"simulate"},                                                // neither --listen nor --program, 2
+      {"simulate"},  // neither --listen nor --program, 2
   };
   for (const auto& args : lines) {
     const auto exe = testproc::run(BEZCAM_EXE, args, {{"BEZCAM_PROGRESS", "off"}});

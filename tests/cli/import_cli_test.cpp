@@ -66,10 +66,10 @@ TEST(ImportCommand, SetTakesDottedKeysAndJsonValues) {
   const fs::path svg = dir / "square.svg", nc = dir / "square.nc", plain = dir / "plain.nc";
   testproc::write_file(svg, kSquare);
   const std::vector<std::string> part = {"--set", "side=outside", "--set", "tool_diameter=6", "--set", "cut_z=-6",
-                                         "--set", "step_down=2", "-q"};
-  std::vector<std::string> args = {"convert", svg.string(), "-o", nc.string(), "--set", "tabs.count=4",
-                                   "--set", "tabs.width=5", "--set", "tabs.height=1.5", "--set",
-                                   R"(lead={"radius":4,"length":2})"};
+                                         "--set", "step_down=2",  "-q"};
+  std::vector<std::string> args = {"convert", svg.string(),      "-o",    nc.string(),
+                                   "--set",   "tabs.count=4",    "--set", "tabs.width=5",
+                                   "--set",   "tabs.height=1.5", "--set", R"(lead={"radius":4,"length":2})"};
   args.insert(args.end(), part.begin(), part.end());
   const auto r = bezcam(args);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -94,7 +94,8 @@ TEST(ImportCommand, SetRefusesAKeyTheJobDoesNotHave) {
   for (const auto& [set, first] : std::vector<std::pair<std::string, std::string>>{
            {"depth=-6", "bezcam: error: --set depth: unknown key \"depth\": did you mean \"cut_z\"?"},
            {"colour=red", "bezcam: error: --set colour: unknown key \"colour\" ("},
-           {"tabs.cont=4", "bezcam: error: --set tabs.cont: unknown key \"tabs.cont\": did you mean \"tabs.count\"?"}}) {
+           {"tabs.cont=4",
+            "bezcam: error: --set tabs.cont: unknown key \"tabs.cont\": did you mean \"tabs.count\"?"}}) {
     for (const char* command : {"convert", "check", "import"}) {
       std::vector<std::string> args = {command, svg.string(), "--set", set};
       if (std::string(command) != "check") args.insert(args.end(), {"-o", nc.string()});

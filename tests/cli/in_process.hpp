@@ -39,8 +39,10 @@ inline testproc::Result run_cli(const std::vector<std::string>& args, const std:
       std::cerr.rdbuf(old_err);
       std::cout.clear();
       std::cerr.clear();
-      if (old_progress) ::setenv("BEZCAM_PROGRESS", old_progress->c_str(), 1);
-      else ::unsetenv("BEZCAM_PROGRESS");
+      if (old_progress)
+        ::setenv("BEZCAM_PROGRESS", old_progress->c_str(), 1);
+      else
+        ::unsetenv("BEZCAM_PROGRESS");
     }
   };
   std::vector<std::string> argv{program};

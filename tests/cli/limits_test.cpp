@@ -3,11 +3,12 @@
 // limit, exit status 2, no memory spent on them. The inputs are sparse
 // files, so they take no room on disk. "Quickly" is checked by ctest's
 // TIMEOUT for *Limits* tests (CMakeLists.txt).
+#include "bezcam/limits.hpp"
+
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "bezcam/limits.hpp"
 #include "in_process.hpp"
 #include "support/run_process.hpp"
 

@@ -1,9 +1,8 @@
 // `bezcam lint FILE.nc --machine NAME` as a user meets it (in-process):
 // exit 0 clean, 2 findings, 3 unreadable file; each finding as
 // `FILE:LINE: message [id]`.
-#include <gtest/gtest.h>
-
 #include <filesystem>
+#include <gtest/gtest.h>
 
 #include "in_process.hpp"
 #include "support/files.hpp"
@@ -30,8 +29,9 @@ struct Dir {
 
 TEST(LintCli, CleanProgramExitsZero) {
   Dir d;
-  const auto f = d.write("ok.nc", "%\nG21 G90 G17\nT1 M06\nS9000 M03\nG00 Z5\nG00 X0 Y0\nG01 Z-1 F300\n"
-                                  "G01 X10 F900\nG03 X0 Y10 I-10 J0\nG00 Z5\nM05\nM30\n%\n");
+  const auto f = d.write("ok.nc",
+                         "%\nG21 G90 G17\nT1 M06\nS9000 M03\nG00 Z5\nG00 X0 Y0\nG01 Z-1 F300\n"
+                         "G01 X10 F900\nG03 X0 Y10 I-10 J0\nG00 Z5\nM05\nM30\n%\n");
   const auto r = lint({f.string(), "--machine", "fanuc"});
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_EQ(r.out, "");
@@ -46,8 +46,9 @@ TEST(LintCli, FindingsExitTwoOnePerLine) {
   EXPECT_EQ(r.out, f.string() +
                        ":5: the move reaches X = 900 mm, outside the travel of machine \"grbl\" (X from -400 to 400 "
                        "mm) [gcode.travel]\n" +
-                       f.string() + ":6: Y appears twice on the line (Y0 and Y1); a block gives each address once "
-                                    "[gcode.repeated-word]\n");
+                       f.string() +
+                       ":6: Y appears twice on the line (Y0 and Y1); a block gives each address once "
+                       "[gcode.repeated-word]\n");
   EXPECT_NE(r.err.find("2 findings for machine grbl"), std::string::npos) << r.err;
 }
 

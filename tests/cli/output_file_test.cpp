@@ -3,13 +3,12 @@
 // link is written through to its target and stays a link, a FIFO or a
 // device is written through and stays what it was, and a failed write to a
 // device is exit 3 naming the cause.
-#include <gtest/gtest.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <filesystem>
 #include <future>
+#include <gtest/gtest.h>
 #include <string>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "support/files.hpp"
 #include "support/run_process.hpp"
@@ -22,7 +21,9 @@ namespace {
 
 const std::string kJob = std::string(BEZCAM_SOURCE_DIR) + "/samples/curve-semicircle.json";
 
-testproc::Result convert_to(const fs::path& out) { return testproc::run(BEZCAM_EXE, {"convert", kJob, "-o", out.string()}); }
+testproc::Result convert_to(const fs::path& out) {
+  return testproc::run(BEZCAM_EXE, {"convert", kJob, "-o", out.string()});
+}
 
 std::string expected_program() {
   const auto r = testproc::run(BEZCAM_EXE, {"convert", kJob, "-o", "-"});

@@ -4,7 +4,6 @@
 // the JSON report beside an unchanged program and a short summary on
 // stderr; progress appears as plain lines or as a bar when asked for.
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include "support/mini_xml.hpp"
@@ -17,7 +16,8 @@ using testproc::run;
 
 const std::map<std::string, std::string> kQuietProgress{{"BEZCAM_PROGRESS", "off"}};
 
-testproc::Result bezcam(const std::vector<std::string>& args, const std::map<std::string, std::string>& env = kQuietProgress) {
+testproc::Result bezcam(const std::vector<std::string>& args,
+                        const std::map<std::string, std::string>& env = kQuietProgress) {
   return run(BEZCAM_EXE, args, env, BEZCAM_SOURCE_DIR);
 }
 
@@ -55,8 +55,8 @@ TEST(PreviewCommand, DrawsAGcodeProgramAgainstItsJobWithDeviations) {
   testproc::TempDir dir;
   const fs::path nc = dir / "t.nc", svg = dir / "t.svg";
   ASSERT_EQ(bezcam({"convert", "samples/job-exercises-all.json", "-o", nc.string(), "-q"}).status, 0);
-  const auto r = bezcam({"preview", "samples/job-exercises-all.json", "--program", nc.string(), "-o", svg.string(),
-                         "--deviation"});
+  const auto r = bezcam(
+      {"preview", "samples/job-exercises-all.json", "--program", nc.string(), "-o", svg.string(), "--deviation"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto root = testxml::parse(testproc::slurp(svg));
   EXPECT_EQ(root.by_class("entity").size(), 9u);
@@ -109,7 +109,8 @@ TEST(ConvertReport, WritesTheReportBesideAnUnchangedProgram) {
   EXPECT_NE(r.err.find("bezcam: wrote " + nc.string() + " and " + rep.string() + "\n"), std::string::npos);
   // --quiet: nothing on stderr, the report still written.
   fs::remove(rep);
-  const auto q = bezcam({"convert", "samples/job-exercises-all.json", "-o", nc.string(), "--report", rep.string(), "-q"});
+  const auto q =
+      bezcam({"convert", "samples/job-exercises-all.json", "-o", nc.string(), "--report", rep.string(), "-q"});
   EXPECT_EQ(q.status, 0);
   EXPECT_EQ(q.err, "");
   EXPECT_TRUE(fs::exists(rep));

@@ -3,10 +3,9 @@
 // counts, percentage, rate and time left; finished with one last line.
 #include "cli/progress.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstdlib>
+#include <gtest/gtest.h>
 #include <sstream>
 
 namespace bezcam::cli {
@@ -53,7 +52,8 @@ TEST(Progress, PlainLinesAfterTheFirstSecondAtMostEveryFiveSeconds) {
   k.t += 5;
   p.set(30);
   const std::string s = k.out.str();
-  EXPECT_NE(s.find("bezcam: convert: 30/40 entities (75%), 4.0 entities/s, about 2.5 s left\n"), std::string::npos) << s;
+  EXPECT_NE(s.find("bezcam: convert: 30/40 entities (75%), 4.0 entities/s, about 2.5 s left\n"), std::string::npos)
+      << s;
   p.set(40);
   p.finish();
   EXPECT_NE(k.out.str().find("bezcam: convert: done, 40/40 entities in 7.5 s\n"), std::string::npos) << k.out.str();

@@ -4,10 +4,9 @@
 // holding the samples, exits 0. Lines that need what a test cannot give
 // them are left out and counted: a placeholder job (JOB.json), a server in
 // the background (&) or a controller to talk to (--to, --listen).
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 #include <vector>

@@ -1,10 +1,9 @@
 // fit_arcs() with the band (ArcFitOptions::band): span ends inside a piece
 // may leave the curve. Every result is checked against a brute-force
 // two-sided distance between dense points of the drawn path and of the curve.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 
 #include "bezcam/flatten/arc_fit.hpp"
@@ -143,9 +142,9 @@ TEST(ArcFitBand, PiecesThatAreNotPlanarGetLongerLines) {
 
 TEST(ArcFitBand, InflectionNearStraightAndRationalPieces) {
   const std::vector<Bezier> cases{
-      Bezier::make({{0, 0}, {10, 10}, {20, -10}, {30, 0}}),        // inflection
-      Bezier::make({{0, 0}, {10, 0.01}, {20, -0.01}, {30, 0}}),    // near straight, inflected
-      Bezier::make({{0, 0}, {10, 0.2}, {20, 0.2}, {30, 0}}),       // near straight
+      Bezier::make({{0, 0}, {10, 10}, {20, -10}, {30, 0}}),                  // inflection
+      Bezier::make({{0, 0}, {10, 0.01}, {20, -0.01}, {30, 0}}),              // near straight, inflected
+      Bezier::make({{0, 0}, {10, 0.2}, {20, 0.2}, {30, 0}}),                 // near straight
       Bezier::make({{0, 0}, {0, 20}, {40, 20}, {40, 0}}, {1, 0.4, 2.5, 1}),  // rational
       Bezier::make({{0, 0}, {5, 30}, {10, -30}, {15, 30}, {20, 0}}),         // degree 4, wavy
   };

@@ -1,8 +1,7 @@
 #include "bezcam/flatten/arc_fit.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <optional>
 #include <random>

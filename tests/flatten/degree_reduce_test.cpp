@@ -1,8 +1,7 @@
 #include "bezcam/flatten/degree_reduce.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 
 #include "bezcam/flatten/deviation.hpp"

@@ -5,10 +5,9 @@
 // that miss). Also: several pieces, rational and high-degree ones.
 #include "bezcam/flatten/deviation.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -39,8 +38,10 @@ double golden(double a, double b, F&& f, bool maximize) {
   double x1 = a + g * (b - a), x2 = b - g * (b - a), f1 = f(x1), f2 = f(x2);
   double best = maximize ? std::max(f1, f2) : std::min(f1, f2);
   for (int i = 0; i < 100 && b - a > 1e-12; ++i) {
-    if (maximize ? f1 >= f2 : f1 <= f2) b = x2, x2 = x1, f2 = f1, x1 = a + g * (b - a), f1 = f(x1);
-    else a = x1, x1 = x2, f1 = f2, x2 = b - g * (b - a), f2 = f(x2);
+    if (maximize ? f1 >= f2 : f1 <= f2)
+      b = x2, x2 = x1, f2 = f1, x1 = a + g * (b - a), f1 = f(x1);
+    else
+      a = x1, x1 = x2, f1 = f2, x2 = b - g * (b - a), f2 = f(x2);
     best = maximize ? std::max({best, f1, f2}) : std::min({best, f1, f2});
   }
   return best;
@@ -55,8 +56,9 @@ double to_curve(const Vec3& x, const std::vector<Bezier>& pieces, const std::vec
   double best = near[0].first;
   for (size_t r = 0; r < std::min<size_t>(3, near.size()); ++r) {
     const double u = double(near[r].second) / double(m), h = 1.0 / double(m);
-    best = std::min(best, golden(std::max(0.0, u - h), std::min(double(pieces.size()), u + h),
-                                 [&](double v) { return dist(x, at(pieces, v)); }, false));
+    best = std::min(best, golden(
+                              std::max(0.0, u - h), std::min(double(pieces.size()), u + h),
+                              [&](double v) { return dist(x, at(pieces, v)); }, false));
   }
   return best;
 }
@@ -74,8 +76,9 @@ Deviation reference(const std::vector<Bezier>& pieces, const std::vector<Vec3>& 
     d.curve_to_path = std::max(d.curve_to_path, c[j]);
     if ((j == 0 || c[j] >= c[j - 1]) && (j == n || c[j] >= c[j + 1])) {
       const double u = double(j) / double(m), h = 1.0 / double(m);
-      d.curve_to_path = std::max(d.curve_to_path, golden(std::max(0.0, u - h), std::min(double(pieces.size()), u + h),
-                                                         [&](double v) { return to_path(at(pieces, v), poly); }, true));
+      d.curve_to_path = std::max(d.curve_to_path, golden(
+                                                      std::max(0.0, u - h), std::min(double(pieces.size()), u + h),
+                                                      [&](double v) { return to_path(at(pieces, v), poly); }, true));
     }
   }
   // Path -> curve against a coarser chain (each nearest point is refined).
@@ -91,9 +94,10 @@ Deviation reference(const std::vector<Bezier>& pieces, const std::vector<Vec3>& 
       d.path_to_curve = std::max(d.path_to_curve, e[i]);
       if ((i == 0 || e[i] >= e[i - 1]) && (i == kSteps || e[i] >= e[i + 1])) {
         const double s = double(i) / kSteps, h = 1.0 / kSteps;
-        d.path_to_curve = std::max(d.path_to_curve, golden(std::max(0.0, s - h), std::min(1.0, s + h),
-                                                           [&](double v) { return to_curve(lerp(a, b, v), pieces, chain, m2); },
-                                                           true));
+        d.path_to_curve =
+            std::max(d.path_to_curve, golden(
+                                          std::max(0.0, s - h), std::min(1.0, s + h),
+                                          [&](double v) { return to_curve(lerp(a, b, v), pieces, chain, m2); }, true));
       }
     }
     if (poly.size() == 1) break;
@@ -142,7 +146,7 @@ TEST(Deviation, AgreesWithAReferenceOnPathsOfSeveralKindsOfPieces) {
   const double w = std::sqrt(0.5);
   const std::vector<Bezier> path = {
       Bezier::make({{0, 0}, {20, 10}, {30, 20}, {30, 30}}),
-      Bezier::make({{30, 30}, {30, 40}, {20, 40}}, {1, w, 1}),  // a quarter circle
+      Bezier::make({{30, 30}, {30, 40}, {20, 40}}, {1, w, 1}),                  // a quarter circle
       Bezier::make({{20, 40}, {10, 40}, {0, 60}, {-10, 30}, {5, 20}, {0, 0}}),  // degree 5
   };
   for (double tol : {0.1, 0.01}) {
@@ -184,7 +188,8 @@ Bezier random_piece(std::mt19937_64& rng, int n, bool rational) {
 
 // Flattened, vertices moved at random, every other vertex left out: each
 // against the reference.
-void expect_agrees_three_ways(const std::vector<Bezier>& path, double tol, std::mt19937_64& rng, const std::string& what) {
+void expect_agrees_three_ways(const std::vector<Bezier>& path, double tol, std::mt19937_64& rng,
+                              const std::string& what) {
   std::uniform_real_distribution<double> off(-2, 2);
   const std::vector<Vec3> poly = flatten(path, {tol, -1}).points;
   expect_agrees(path, poly, tol, (what + ", flattened").c_str());
@@ -221,7 +226,8 @@ TEST(Deviation, AgreesWithAReferenceOnRationalPieces) {
   // at corners (a foot passes over a corner to the next arc).
   auto arc = [](Vec3 c, double r, double a0, double sweep) {
     auto on = [&](double a, double rr) { return c + Vec3{std::cos(a), std::sin(a)} * rr; };
-    return Bezier::make({on(a0, r), on(a0 + sweep / 2, r / std::cos(sweep / 2)), on(a0 + sweep, r)}, {1, std::cos(sweep / 2), 1});
+    return Bezier::make({on(a0, r), on(a0 + sweep / 2, r / std::cos(sweep / 2)), on(a0 + sweep, r)},
+                        {1, std::cos(sweep / 2), 1});
   };
   const double deg = M_PI / 180;
   std::vector<Bezier> path = {arc({0, 5}, 5, -90 * deg, 90 * deg), arc({5, 7}, 2, -90 * deg, -120 * deg)};
@@ -269,9 +275,9 @@ TEST(Deviation, AgreesWithTheTrueDistanceOnHardCurves) {
   // cusp): points outside a convex stretch are farther from its chords
   // than from it.
   const double tol = 0.01;
-  for (const Bezier& b : {Bezier::make({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),
-                          Bezier::make({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),
-                          Bezier::make({{0, 0}, {300, 700}, {700, -300}, {1000, 0}})}) {
+  for (const Bezier& b :
+       {Bezier::make({{0, 0}, {60, 40}, {0, 40}, {60, 0}}), Bezier::make({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),
+        Bezier::make({{0, 0}, {300, 700}, {700, -300}, {1000, 0}})}) {
     const std::vector<Bezier> path = {b};
     expect_agrees(path, flatten(path, {tol, 3}).points, tol, "hard curve");
   }
@@ -296,6 +302,7 @@ TEST(Deviation, SettlesAFoldOfTheCurve) {
       // (the ends of the polyline are on the curve: from them the
       // polyline's distance grows to `across` at the turns)
       EXPECT_NEAR(d.path_to_curve, across, kMeasureGap * 0.01 + 1e-12) << across << " " << short_by;
-      EXPECT_NEAR(d.curve_to_path, std::hypot(across, short_by), kMeasureGap * 0.01 + 1e-12) << across << " " << short_by;
+      EXPECT_NEAR(d.curve_to_path, std::hypot(across, short_by), kMeasureGap * 0.01 + 1e-12)
+          << across << " " << short_by;
     }
 }

@@ -1,8 +1,7 @@
 #include "bezcam/flatten/exact_blocks.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <memory>
 #include <random>
 
@@ -113,8 +112,7 @@ void check_plan(const CurveGeometry& g, const ExactOptions& o, const std::vector
       const auto pieces = to_bezier(n);
       ASSERT_EQ(pieces.size(), b.printed.size());
       for (size_t k = 0; k < pieces.size(); ++k)
-        for (double t : {0.1, 0.5, 0.9})
-          EXPECT_LT(dist(evaluate(pieces[k], t), evaluate(b.printed[k], t)), 1e-9);
+        for (double t : {0.1, 0.5, 0.9}) EXPECT_LT(dist(evaluate(pieces[k], t), evaluate(b.printed[k], t)), 1e-9);
     }
     if (b.kind == ExactKind::bezier) EXPECT_TRUE(b.ctrl.size() == 3 || b.ctrl.size() == 4);
     if (o.dialect == NurbsDialect::linuxcnc)
@@ -290,8 +288,8 @@ TEST(NurbsBlocks, LinuxcncPlanarPieceAtConstantZCountsTheRoundedZ) {
 
 TEST(NurbsBlocks, BsplineSourceIsOneBlockWithItsOwnKnots) {
   // Degree 3, 6 points, uniform interior knots: spans map to 0, 1, 2, 3.
-  const auto c = NurbsCurve::make(3, {{0, 0}, {1, 2}, {3, 3}, {5, 1}, {7, 2}, {8, 0}},
-                                  {10, 10, 10, 10, 12, 14, 16, 16, 16, 16});
+  const auto c =
+      NurbsCurve::make(3, {{0, 0}, {1, 2}, {3, 3}, {5, 1}, {7, 2}, {8, 0}}, {10, 10, 10, 10, 12, 14, 16, 16, 16, 16});
   const auto g = bspline(c);
   const auto blocks = plan_exact_blocks(g, fanuc());
   ASSERT_EQ(blocks.size(), 1u);

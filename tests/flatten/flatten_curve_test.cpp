@@ -5,10 +5,9 @@
 // minimum.
 #include "bezcam/flatten/flatten_curve.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -45,7 +44,9 @@ double flatten_and_measure(const std::vector<Bezier>& pieces, double tol, int de
   return d;
 }
 
-Bezier bz(std::vector<Vec3> p, std::vector<double> w = {}, int dim = 2) { return Bezier::make(std::move(p), std::move(w), dim); }
+Bezier bz(std::vector<Vec3> p, std::vector<double> w = {}, int dim = 2) {
+  return Bezier::make(std::move(p), std::move(w), dim);
+}
 
 // Greedy maximal chords by bisection on the exact chord deviation.
 size_t greedy_count(const Bezier& b, double tol) {
@@ -89,9 +90,12 @@ TEST(ChordDeviation, ExactForCubicsAgainstBruteForce) {
     }
     const double exact = chord_deviation(b, t0, t1);
     EXPECT_GE(exact, brute - 1e-9) << "the bound must never be below the truth";
-    if (dim == 2 && inside_slab) EXPECT_NEAR(exact, brute, 1e-6 * std::max(1.0, brute)) << "planar bound is exact";
-    else if (dim == 2) EXPECT_LE(exact, brute * 1.003 + 1e-9) << "hull bound past the chord's ends";
-    else EXPECT_LE(exact, 1.5 * brute + 1e-9) << "3D bound stays tight";
+    if (dim == 2 && inside_slab)
+      EXPECT_NEAR(exact, brute, 1e-6 * std::max(1.0, brute)) << "planar bound is exact";
+    else if (dim == 2)
+      EXPECT_LE(exact, brute * 1.003 + 1e-9) << "hull bound past the chord's ends";
+    else
+      EXPECT_LE(exact, 1.5 * brute + 1e-9) << "3D bound stays tight";
   }
 }
 
@@ -106,7 +110,8 @@ TEST(ChordDeviation, HullBoundForRationalAndHighDegreeIsSafeAndTight) {
     const Bezier b = bz(p, i % 2 ? ws : std::vector<double>{}, 3);
     const Vec3 A = evaluate(b, 0.2), B = evaluate(b, 0.45);
     double brute = 0;
-    for (int k = 0; k <= 20000; ++k) brute = std::max(brute, dist_to_segment(evaluate(b, 0.2 + 0.25 * k / 20000.0), A, B));
+    for (int k = 0; k <= 20000; ++k)
+      brute = std::max(brute, dist_to_segment(evaluate(b, 0.2 + 0.25 * k / 20000.0), A, B));
     const double bound = chord_deviation(b, 0.2, 0.45);
     EXPECT_GE(bound, brute - 1e-9);
     EXPECT_LE(bound, brute * 1.01 + 1e-9);
@@ -182,7 +187,8 @@ TEST(Flatten, RandomCurvesOfEveryKindWithRounding) {
 TEST(Flatten, CallbackAndCollectingFormsAgree) {
   const Bezier b = bz({{0, 0}, {30, 20}, {-10, 20}, {20, 0}});
   std::vector<FlatVertex> seen;
-  const double bound = flatten_pieces(std::span<const Bezier>(&b, 1), {0.01, 3}, [&](const FlatVertex& v) { seen.push_back(v); });
+  const double bound =
+      flatten_pieces(std::span<const Bezier>(&b, 1), {0.01, 3}, [&](const FlatVertex& v) { seen.push_back(v); });
   const FlattenResult r = flatten(b, {0.01, 3});
   ASSERT_EQ(seen.size(), r.points.size());
   for (size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i].point, r.points[i]);
@@ -206,12 +212,14 @@ TEST(Flatten, AppendingFormAgreesWithTheCallback) {
     for (int k = 0; k < 1 + i % 3; ++k) {
       std::vector<Vec3> p{start};
       std::vector<double> ws{1};
-      for (int q = 1; q <= n; ++q) p.push_back({c(rng), c(rng), dim == 3 ? c(rng) : 0}), ws.push_back(q == n ? 1 : w(rng));
+      for (int q = 1; q <= n; ++q)
+        p.push_back({c(rng), c(rng), dim == 3 ? c(rng) : 0}), ws.push_back(q == n ? 1 : w(rng));
       path.push_back(bz(p, i % 7 == 5 ? ws : std::vector<double>{}, dim));
       start = p.back();
     }
-    for (const FlattenOptions& o : {FlattenOptions{.tolerance = 0.05, .decimals = 3}, FlattenOptions{.tolerance = 0.01, .decimals = -1},
-                                    FlattenOptions{.tolerance = 0.02, .decimals = 4, .on_curve = true}}) {
+    for (const FlattenOptions& o :
+         {FlattenOptions{.tolerance = 0.05, .decimals = 3}, FlattenOptions{.tolerance = 0.01, .decimals = -1},
+          FlattenOptions{.tolerance = 0.02, .decimals = 4, .on_curve = true}}) {
       std::vector<Vec3> seen;
       const double bound = flatten_pieces(path, o, [&](const FlatVertex& v) { seen.push_back(v.point); });
       std::vector<Vec3> out{{1, 2, 3}};
@@ -307,17 +315,18 @@ Deviation brute_deviation(const Bezier& b, const std::vector<Vec3>& poly) {
     d.curve_to_path = std::max(d.curve_to_path, m);
   }
   for (size_t k = 0; k + 1 < poly.size(); ++k)
-    for (int i = 0; i <= 400; ++i) d.path_to_curve = std::max(d.path_to_curve, chain.nearest(lerp(poly[k], poly[k + 1], i / 400.0)));
+    for (int i = 0; i <= 400; ++i)
+      d.path_to_curve = std::max(d.path_to_curve, chain.nearest(lerp(poly[k], poly[k + 1], i / 400.0)));
   return d;
 }
 
 // Curves of the kinds the corpus names hard: a loop, a cusp, an inflection
 // pair, a curve that doubles back along its chord, a long one.
 std::vector<Bezier> hard_curves() {
-  return {bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),         // loop
-          bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),            // cusp-like
-          bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),          // two inflections
-          bz({{0, 0}, {80, 0}, {-20, 0.5}, {60, 0}}),          // doubles back along its chord
+  return {bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),        // loop
+          bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),           // cusp-like
+          bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),         // two inflections
+          bz({{0, 0}, {80, 0}, {-20, 0.5}, {60, 0}}),         // doubles back along its chord
           bz({{0, 0}, {300, 700}, {700, -300}, {1000, 0}})};  // long
 }
 
@@ -505,7 +514,8 @@ TEST(Band, VerticesReallyLeaveTheCurveButEndsAndJointsStayExact) {
   const Vec3 centre{100, 0};
   for (size_t k = 1; k + 1 < r.points.size(); ++k) EXPECT_GT(dist(r.points[k], centre), 99.9) << k;
   // A path of pieces: every joint is a vertex, exactly (within rounding).
-  const std::vector<Bezier> path = {bz({{0, 0}, {10, 20}, {30, 20}, {40, 0}}), bz({{40, 0}, {50, -20}, {70, -20}, {80, 0}})};
+  const std::vector<Bezier> path = {bz({{0, 0}, {10, 20}, {30, 20}, {40, 0}}),
+                                    bz({{40, 0}, {50, -20}, {70, -20}, {80, 0}})};
   std::vector<FlatVertex> seen;
   flatten_pieces(path, {tol, 3}, [&](const FlatVertex& v) { seen.push_back(v); });
   size_t joints = 0;
@@ -523,8 +533,9 @@ TEST(Band, BeatsTheOnCurveGreedyMinimumOnACircle) {
   // quarter circle of radius 100: the band needs at least 20 % fewer
   // chords than the greedy maximal on-curve chords (asymptotically 29 %).
   const double tol = 0.01, s = std::sqrt(0.5);
-  const std::vector<Bezier> circle = {bz({{50, 0}, {50, 50}, {0, 50}}, {1, s, 1}), bz({{0, 50}, {-50, 50}, {-50, 0}}, {1, s, 1}),
-                                      bz({{-50, 0}, {-50, -50}, {0, -50}}, {1, s, 1}), bz({{0, -50}, {50, -50}, {50, 0}}, {1, s, 1})};
+  const std::vector<Bezier> circle = {
+      bz({{50, 0}, {50, 50}, {0, 50}}, {1, s, 1}), bz({{0, 50}, {-50, 50}, {-50, 0}}, {1, s, 1}),
+      bz({{-50, 0}, {-50, -50}, {0, -50}}, {1, s, 1}), bz({{0, -50}, {50, -50}, {50, 0}}, {1, s, 1})};
   size_t greedy = 0;
   for (const auto& b : circle) greedy += greedy_count(b, tol);
   const size_t band = flatten(circle, {tol, -1}).points.size() - 1;
@@ -596,12 +607,12 @@ namespace {
 // random planar quadratics and cubics drawn from rng.
 std::vector<Bezier> band_test_pieces(std::mt19937_64& rng, int n) {
   std::uniform_real_distribution<double> c(-30, 30);
-  std::vector<Bezier> pieces = {bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),         // two inflections
-                                bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),           // cusp
-                                bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),        // loop
-                                bz({{0, 0}, {10, 1e-4}, {20, -1e-4}, {30, 0}}),     // near-straight
-                                bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}}),   // quarter circle
-                                bz({{0, 0}, {20, 35}, {40, 0}})};                   // degree 2
+  std::vector<Bezier> pieces = {bz({{0, 0}, {30, 60}, {60, -60}, {90, 0}}),        // two inflections
+                                bz({{0, 0}, {60, 40}, {0, 40}, {60, 0}}),          // cusp
+                                bz({{0, 0}, {100, 60}, {-40, 60}, {60, 0}}),       // loop
+                                bz({{0, 0}, {10, 1e-4}, {20, -1e-4}, {30, 0}}),    // near-straight
+                                bz({{0, 0}, {0, 55.2}, {44.8, 100}, {100, 100}}),  // quarter circle
+                                bz({{0, 0}, {20, 35}, {40, 0}})};                  // degree 2
   for (int i = 0; i < n; ++i) {
     std::vector<Vec3> p;
     for (int k = 0; k <= (i % 4 == 0 ? 2 : 3); ++k) p.push_back({c(rng), c(rng)});
@@ -693,7 +704,8 @@ TEST(Band, RootFreeAcceptTestIsAnUpperBound) {
       const Bezier sub = subcurve(e, t0, t1);
       // The sub-curve's own sagitta sets the scale of the ends' offsets.
       double sag = 0;
-      for (int k = 0; k <= 200; ++k) sag = std::max(sag, dist_to_segment(evaluate(sub, k / 200.0), sub.front(), sub.back()));
+      for (int k = 0; k <= 200; ++k)
+        sag = std::max(sag, dist_to_segment(evaluate(sub, k / 200.0), sub.front(), sub.back()));
       const double size = 0.6 * sag + 1e-6;
       const Vec3 A = sub.front() + Vec3{off(rng), off(rng)} * size, B = sub.back() + Vec3{off(rng), off(rng)} * size;
       const double truth = dense_parametric_distance(sub, A, B);
@@ -720,7 +732,7 @@ TEST(Band, InflectionsWithinToleranceAndNearTheMinimum) {
   size_t band = 0, greedy = 0;
   for (int i = 0; i < 6; ++i) {
     const double a = h(rng), b = h(rng);
-    const Bezier s = i % 2 ? bz({{0, 0}, {100 * u(rng), a}, {100 * u(rng), -b}, {100, 0}})        // one inflection
+    const Bezier s = i % 2 ? bz({{0, 0}, {100 * u(rng), a}, {100 * u(rng), -b}, {100, 0}})      // one inflection
                            : bz({{0, 0}, {40 * u(rng), -a}, {40 * u(rng), 2 * b}, {100, -a}});  // two
     for (double tol : {0.1, 0.01, 0.001}) {
       // The brute force costs the square of the count: the finer
@@ -811,7 +823,8 @@ TEST(Degenerate, CuspNearTheGreedyMinimum) {
     const size_t greedy = greedy_count(b, 0.01);
     size_t n = 0;
     flatten_and_measure({b}, 0.01, 4, &n);
-    EXPECT_LE(double(n), 1.3 * double(greedy)) << n << " chords against a greedy minimum of " << greedy << ", scale " << s;
+    EXPECT_LE(double(n), 1.3 * double(greedy))
+        << n << " chords against a greedy minimum of " << greedy << ", scale " << s;
   }
   // M'(tau) = 0: P3 = P2 - (B0 (1 - tau)^2 + 2 B1 tau (1 - tau)) / tau^2
   // with B0 = P1 - P0, B1 = P2 - P1 (M' / 3 in Bernstein form).

@@ -1,17 +1,17 @@
 // The flattener's stated limits (limits.hpp, docs/limits.md): pathological
 // but valid inputs finish or are refused quickly. "Quickly" is checked by
 // ctest's TIMEOUT for *Limits* tests (CMakeLists.txt), not by assertions.
-#include <gtest/gtest.h>
+#include "bezcam/limits.hpp"
 
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 
+#include "bezcam/cam/gouge.hpp"
+#include "bezcam/cam/pass_plan.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
-#include "bezcam/cam/gouge.hpp"
-#include "bezcam/cam/pass_plan.hpp"
-#include "bezcam/limits.hpp"
 #include "support/surface_fixtures.hpp"
 
 namespace bezcam {

@@ -2,17 +2,16 @@
 // the certified bound and the independently measured deviation both stay
 // within each job's tolerance, with and without rounding to the printed
 // decimals; plus the geometric facts each sample is built on.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
+#include <gtest/gtest.h>
 
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/kernel/spline_interp.hpp"
-#include "bezcam/job/job_json.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;
@@ -44,8 +43,8 @@ TEST(NurbsSamples, FlattenedWithinToleranceWithAndWithoutRounding) {
         EXPECT_LE(r.bound, job.tolerance);
         ASSERT_GE(r.points.size(), 2u);
         const Deviation d = measure_deviation(e.curve.pieces, r.points, job.tolerance);
-        EXPECT_LE(d.max(), job.tolerance) << "curve to path " << d.curve_to_path << ", path to curve "
-                                          << d.path_to_curve;
+        EXPECT_LE(d.max(), job.tolerance)
+            << "curve to path " << d.curve_to_path << ", path to curve " << d.path_to_curve;
         if (decimals < 0) {
           // Vertices lie on the curve; ends exact.
           EXPECT_EQ(r.points.front(), e.curve.pieces.front().front());

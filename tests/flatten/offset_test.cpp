@@ -1,14 +1,14 @@
 // The proven offset (offset.hpp), checked by the independent measurement
 // (offset_measure.hpp), never by the code that built it.
-#include <gtest/gtest.h>
+#include "bezcam/flatten/offset.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 
-#include "bezcam/flatten/offset.hpp"
-#include "bezcam/flatten/offset_measure.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/offset_measure.hpp"
 
 namespace bezcam {
 namespace {
@@ -83,8 +83,8 @@ TEST(Offset, OpenCubicBothSidesWithinTheFit) {
     ASSERT_EQ(res.chains.size(), 1u);
     EXPECT_FALSE(res.closed[0]);
     const auto m = measure(part, res, 2, side, 0.01);
-    EXPECT_LE(m.deviation(2), 0.0045) << side << " min " << m.min_distance << " max " << m.max_distance
-                                      << " cov " << m.coverage;
+    EXPECT_LE(m.deviation(2), 0.0045) << side << " min " << m.min_distance << " max " << m.max_distance << " cov "
+                                      << m.coverage;
   }
 }
 
@@ -147,7 +147,7 @@ TEST(Offset, TheMeasurementReadsLongSegmentsWithinItsResolution) {
   const auto part = circle(0, 0, R);
   const std::vector<std::vector<Bezier>> curves{part};
   const std::vector<std::vector<Vec3>> paths{
-      {{-30, 23}, {30, 23}},                                   // passes 3 from the circle at its middle
+      {{-30, 23}, {30, 23}},                                    // passes 3 from the circle at its middle
       {{-30, 23}, {30, 23}, {30, -24}, {-31, -22}, {-30, 23}},  // a quadrilateral round it
       {{-25, 0}, {25, 1}},                                      // crosses it twice
       {{0, 0}, {5, 5}, {-3, 7}},                                // inside
@@ -190,7 +190,7 @@ double to_polygon(const std::vector<Vec3>& poly, const Vec3& p) {
 // must be cut against that side too: every point of the path within the fit
 // of r (the path used to run 0.024 inside it), one closed path.
 TEST(Offset, ASpurThatTurnsBackOnItselfKeepsThePathInTheBand) {
-  const std::vector<Vec3> pts{{0, 0},         {100, 0},        {100, 60},       {79.6, 79.13}, {73.518, 80.186},
+  const std::vector<Vec3> pts{{0, 0},           {100, 0},         {100, 60},      {79.6, 79.13}, {73.518, 80.186},
                               {73.373, 80.169}, {74.024, 80.193}, {51.9, 80.193}, {0, 80.193}};
   const auto part = polygon(pts);
   ASSERT_GT(signed_area(part), 0);
@@ -215,9 +215,12 @@ TEST(Offset, ASpurThatTurnsBackOnItselfKeepsThePathInTheBand) {
 // not past its mouth.
 TEST(Offset, ChannelAsWideAsTheToolKeepsItsSpur) {
   const std::vector<Bezier> part{
-      Bezier::make({{11, 6}, {0, 6}}),   Bezier::make({{0, 6}, {0, 0}}),
-      Bezier::make({{0, 0}, {5, 0}}),    Bezier::make({{5, 0}, {5, -6}, {11, -6}}),
-      Bezier::make({{11, -6}, {17, -6}, {17, 0}}), Bezier::make({{17, 0}, {17, 6}, {11, 6}}),
+      Bezier::make({{11, 6}, {0, 6}}),
+      Bezier::make({{0, 6}, {0, 0}}),
+      Bezier::make({{0, 0}, {5, 0}}),
+      Bezier::make({{5, 0}, {5, -6}, {11, -6}}),
+      Bezier::make({{11, -6}, {17, -6}, {17, 0}}),
+      Bezier::make({{17, 0}, {17, 6}, {11, 6}}),
   };
   const auto res = offset_curve(part, true, {3.0, 1, 0.005});
   ASSERT_EQ(res.chains.size(), 1u);
@@ -267,7 +270,8 @@ TEST(Offset, TheMeasurementReadsTrueDistancesNotChords) {
   const auto part = circle(0, 0, 20);
   const std::vector<std::vector<Bezier>> curves{part};
   auto arc = [](double R, double a0, double a1) {
-    return PathPiece::of(Arc{{R * std::cos(a0), R * std::sin(a0), 0}, {R * std::cos(a1), R * std::sin(a1), 0}, {0, 0, 0}, true});
+    return PathPiece::of(
+        Arc{{R * std::cos(a0), R * std::sin(a0), 0}, {R * std::cos(a1), R * std::sin(a1), 0}, {0, 0, 0}, true});
   };
   std::vector<PathPiece> path;
   for (int k = 0; k < 4; ++k) path.push_back(arc(23, k * kPi / 2, (k + 1) * kPi / 2));

@@ -1,12 +1,11 @@
 // quantize() must give, bit for bit, the value the printed text reads back
 // as (the G-code writer prints it; the proofs count on it). Its fast path
 // skips the text; here it is checked against the text itself.
-#include <gtest/gtest.h>
-
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <gtest/gtest.h>
 #include <random>
 
 #include "bezcam/flatten/tolerance.hpp"

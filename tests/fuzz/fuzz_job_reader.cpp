@@ -14,8 +14,8 @@
 #include <string_view>
 
 #include "bezcam/error.hpp"
-#include "bezcam/job/job.hpp"
 #include "bezcam/gcode/convert.hpp"
+#include "bezcam/job/job.hpp"
 #include "bezcam/job/job_json.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

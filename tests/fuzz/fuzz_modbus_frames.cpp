@@ -9,14 +9,13 @@
 // stream committed is then executed to its end (DONE or ALARM), which must
 // come quickly. Findings: crashes, sanitizer reports, leaks, a controller
 // that does not finish, and a broken invariant of the status block.
-#include <fcntl.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <fcntl.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include "bezcam/sim/sim_server.hpp"
 
@@ -33,7 +32,7 @@ void drain(int fd) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace bezcam;
   using namespace bezcam::link;
-using namespace bezcam::sim;
+  using namespace bezcam::sim;
   if (size > 64 * 1024) return 0;  // more than a socket buffer: nothing new to find
   static const MachineProfile generic = load_machine_profile("generic");
   int sv[2];
@@ -52,8 +51,8 @@ using namespace bezcam::sim;
 
   ControllerConfig cfg;
   cfg.profile = generic;
-  cfg.buffer_bytes = 256;            // the docs' worked example
-  cfg.first_session = 0x2A2A0001u;   // its session id, so its frames are seeds that go deep
+  cfg.buffer_bytes = 256;           // the docs' worked example
+  cfg.first_session = 0x2A2A0001u;  // its session id, so its frames are seeds that go deep
   {
     SimController ctl(cfg);
     ServerConfig scfg;

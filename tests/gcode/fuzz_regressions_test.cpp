@@ -2,9 +2,8 @@
 // kept as regression tests: each input once crashed, hung or hit undefined
 // behaviour; now it is refused with an error naming its line. Whole inputs
 // as the fuzzer wrote them are in tests/fuzz/regressions/.
-#include <gtest/gtest.h>
-
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
 #include "bezcam/error.hpp"
@@ -60,7 +59,8 @@ TEST(FuzzRegression, AToolNumberBeyondAnIntIsRefused) {
 TEST(FuzzRegression, AHugeG52OrderIsRefusedWithoutOverflow) {
   // The same conversion for the order L of a LinuxCNC G5.2 block.
   const MachineProfile linuxcnc = load_machine_profile("linuxcnc");
-  const std::string text = "G21 G90 G17\nG00 X0. Y0. Z0.\nG01 F100.\nG5.2 L100000000000000000000 P1.\nX1. Y1. P1.\nG5.3\nM30\n";
+  const std::string text =
+      "G21 G90 G17\nG00 X0. Y0. Z0.\nG01 F100.\nG5.2 L100000000000000000000 P1.\nX1. Y1. P1.\nG5.3\nM30\n";
   std::string where;
   EXPECT_EQ(refusal(text, &linuxcnc, &where), "gcode.rank");
   EXPECT_EQ(where, "line 4");

@@ -2,21 +2,18 @@
 // blocks, LinuxCNC G5 / G5.1 / G5.2), every refusal with its line, id and
 // message, the state left unchanged by a refused line, and the seeds'
 // corrupted butterfly listing.
-#include "bezcam/gcode/reader.hpp"
-
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <sstream>
+#include <unistd.h>
 
 #include "bezcam/error.hpp"
+#include "bezcam/gcode/reader.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/sim/trace.hpp"
 #include "support/run_process.hpp"
@@ -470,8 +467,9 @@ TEST(GcodeReader, FanucNurbsBlockInG91TravelsFromPointToPoint) {
   EXPECT_EQ(b[2].to, (Vec3{21, 0, -1}));
   const auto e = refusal(kPre + "G91 G06.2 P3 K0 X1 Y0 Z0\nK0 X1\nK0 X1\nK1\nK1\nK1\n");
   EXPECT_EQ(e.id(), "gcode.nurbs-start");
-  EXPECT_EQ(e.message(), "X1: the first control point of a NURBS block must be the current position (in G91 (incremental "
-                         "distances): X0)");
+  EXPECT_EQ(e.message(),
+            "X1: the first control point of a NURBS block must be the current position (in G91 (incremental "
+            "distances): X0)");
 }
 
 // Each refusal: the line, the stable id and the sentence.
@@ -498,8 +496,10 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         Bad{"G01 X1 Y\n", "line 3", "gcode.syntax", "expected a number after 'Y', found nothing"},
         Bad{"G01 X1 Yabc\n", "line 3", "gcode.syntax", "expected a number after 'Y', found 'abc'"},
-        Bad{"G01 X1 (comment\n", "line 3", "gcode.syntax", "a comment opened with '(' is not closed on this line: add ')'"},
-        Bad{"G01 X1 # 2\n", "line 3", "gcode.syntax", "unexpected character '#': expected a word (a letter and a number)"},
+        Bad{"G01 X1 (comment\n", "line 3", "gcode.syntax",
+            "a comment opened with '(' is not closed on this line: add ')'"},
+        Bad{"G01 X1 # 2\n", "line 3", "gcode.syntax",
+            "unexpected character '#': expected a word (a letter and a number)"},
         Bad{"G01 X1 X2\n", "line 3", "gcode.repeated-word",
             "X appears twice on the line (X1 and X2); a block gives each address once"},
         Bad{"G01 N5 X1\n", "line 3", "gcode.syntax", "the line number N5 must be the first word of the line"},
@@ -593,7 +593,8 @@ INSTANTIATE_TEST_SUITE_P(
 INSTANTIATE_TEST_SUITE_P(
     LinuxCncWords, GcodeRefusal,
     ::testing::Values(
-        Bad{"G5 I1 J0 P-1 Q0 X5 Y0 Z1\n", "line 3", "gcode.bezier", "G5 moves in X and Y only: a Z word (Z1) is not allowed"},
+        Bad{"G5 I1 J0 P-1 Q0 X5 Y0 Z1\n", "line 3", "gcode.bezier",
+            "G5 moves in X and Y only: a Z word (Z1) is not allowed"},
         Bad{"G5 I1 J0 X5 Y0\n", "line 3", "gcode.bezier",
             "G5 needs both P and Q (the second control point's offset from the end point)"},
         Bad{"G5 P-1 Q0 X5 Y0\n", "line 3", "gcode.bezier",
@@ -607,7 +608,8 @@ INSTANTIATE_TEST_SUITE_P(
             "weight differs between LinuxCNC versions"},
         Bad{"G5.2 P1\nX1 Y1\n", "line 4", "gcode.weight",
             "a G5.2 control point needs its weight P (LinuxCNC refuses a point without it)"},
-        Bad{"G5.2 P1\nX1 P1\n", "line 4", "gcode.nurbs-point", "a G5.2 control point needs both X and Y, found only X1"},
+        Bad{"G5.2 P1\nX1 P1\n", "line 4", "gcode.nurbs-point",
+            "a G5.2 control point needs both X and Y, found only X1"},
         Bad{"G5.2 P1\nX1 Y1 P1\nG5.3\n", "line 5", "gcode.knot-count",
             "the G5.2 block opened at line 3 has 2 control points; order L3 needs at least 3"},
         Bad{"G5.2 P1\nX1 Y1 P1\nG01 X5\n", "line 5", "gcode.nurbs-open",
@@ -713,7 +715,8 @@ TEST(GcodeReader, SeedsButterflyListingIsRefused) {
   // first point, X for Z, F for P), the knot column is what fails, at the
   // first decreasing knot: K0.03118 after K0.04978, on line 7 (the digest
   // names a later one, K0.259080 after K0.343467 on line 13; lint lists both).
-  const std::string repaired = "G06.3 P4 K0.000000 X34.400 Y31.139 Z0.000 R1.000 F900\n" + text.substr(text.find('\n') + 1);
+  const std::string repaired =
+      "G06.3 P4 K0.000000 X34.400 Y31.139 Z0.000 R1.000 F900\n" + text.substr(text.find('\n') + 1);
   const auto k = refusal(repaired, &g063);
   EXPECT_EQ(k.where(), "line 7");
   EXPECT_EQ(k.id(), "gcode.knot-order");
@@ -746,18 +749,18 @@ TEST(GcodeReader, AgreesWithLinuxCncInterpreter) {
   if (std::system("command -v rs274 >/dev/null 2>&1") != 0) GTEST_SKIP() << "rs274 (linuxcnc-uspace) not installed";
   const std::string prog =
       "G21 G90 G17\nF500\nG0 X10 Y0 Z0\n"
-      "G2 X0 Y10 R10\n"            // minor CW
-      "G2 X10 Y0 R-10\n"           // major CW
-      "G3 X-10 Y0 R10\n"           // R arcs the other way
+      "G2 X0 Y10 R10\n"   // minor CW
+      "G2 X10 Y0 R-10\n"  // major CW
+      "G3 X-10 Y0 R10\n"  // R arcs the other way
       "G3 X10 Y0 R-10\n"
-      "G3 X10 Y0 I-10 J0\n"        // full circle
-      "G2 X20 Y0 I5 J0 Z-1\n"      // helix half
+      "G3 X10 Y0 I-10 J0\n"    // full circle
+      "G2 X20 Y0 I5 J0 Z-1\n"  // helix half
       "G1 X25 Y5\n"
       "G5 I5 J0 P-5 Q0 X35 Y15\n"
-      "G5 P0 Q-3 X45 Y5\n"         // I, J continued
+      "G5 P0 Q-3 X45 Y5\n"  // I, J continued
       "G5.1 X55 Y5 I5 J5\n"
       "G5.2 X65 Y15 P1 L4\nX75 Y15 P2\nX85 Y5 P1\nG5.3\n"  // first line with a point: 4 points
-      "G5.2 P1\nX95 Y15 P1\nX105 Y5 P1\nG5.3\n"             // first line without: 3 points
+      "G5.2 P1\nX95 Y15 P1\nX105 Y5 P1\nG5.3\n"            // first line without: 3 points
       "G3 X105 Y5 I-5 J3\n"
       "M2\n";
   const fs::path dir = fs::temp_directory_path() / ("bezcam-rs274-" + std::to_string(::getpid()));

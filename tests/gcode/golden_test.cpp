@@ -6,11 +6,10 @@
 // After an intended change of the output, regenerate with
 //   BEZCAM_UPDATE_GOLDEN=1 ctest --test-dir build -R Golden
 // and review the diff (git diff tests/golden) before committing it.
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
 #include "bezcam/gcode/convert.hpp"
@@ -91,7 +90,8 @@ TEST(Golden, OtherModesAndProfilesWhereAGoldenExists) {
     SCOPED_TRACE(name);
     ConvertOptions opt;
     opt.output = parse_output_mode(mode);
-    const ConvertResult r = convert(load_job(kRoot / "samples" / (sample + ".json")), load_machine_profile(machine), opt);
+    const ConvertResult r =
+        convert(load_job(kRoot / "samples" / (sample + ".json")), load_machine_profile(machine), opt);
     check_golden(e.path(), r.gcode);
     ++checked;
   }

@@ -1,9 +1,8 @@
 // lint_gcode: every finding with its line, all of them (a refused line is
 // skipped, recoverable problems are listed and the values kept), the
 // machinist's extra checks, and clean programs staying clean.
-#include <gtest/gtest.h>
-
 #include <fstream>
+#include <gtest/gtest.h>
 #include <map>
 #include <random>
 #include <sstream>
@@ -85,22 +84,23 @@ TEST(Lint, SeedsButterflyListsEveryDecreasingKnot) {
 }
 
 TEST(Lint, EveryProblemOnItsLineAndLintGoesOn) {
-  const std::string prog = kHead +                      // lines 1-7
-                           "G01 X10 Y0 F1000\n"         // 8
-                           "G01 X10 Y (broken\n"        // 9: syntax, skipped
-                           "G03 X0 Y10.01 I-10 J0\n"    // 10: radius mismatch (kept)
-                           "G01 X500\n"                 // 11: travel (grbl: 400)
-                           "G01 X0 F9000\n"             // 12: feed (grbl: 5000)
-                           "G19 G02 Y1 Z1 I1 J0\n"      // 13: I is no centre word in G19
-                           "G01 X1 X2\n"                // 14: repeated word, first kept
-                           "G38.2 Z-5\n"                // 15: unsupported
-                           "G01 Y5\n" +                 // 16: fine, from X1
+  const std::string prog = kHead +                    // lines 1-7
+                           "G01 X10 Y0 F1000\n"       // 8
+                           "G01 X10 Y (broken\n"      // 9: syntax, skipped
+                           "G03 X0 Y10.01 I-10 J0\n"  // 10: radius mismatch (kept)
+                           "G01 X500\n"               // 11: travel (grbl: 400)
+                           "G01 X0 F9000\n"           // 12: feed (grbl: 5000)
+                           "G19 G02 Y1 Z1 I1 J0\n"    // 13: I is no centre word in G19
+                           "G01 X1 X2\n"              // 14: repeated word, first kept
+                           "G38.2 Z-5\n"              // 15: unsupported
+                           "G01 Y5\n" +               // 16: fine, from X1
                            kTail;
   const auto fs = lint_gcode(prog, profile("grbl"));
-  EXPECT_EQ(brief(fs), (std::vector<std::string>{"9:gcode.syntax", "10:gcode.arc-radius", "11:gcode.travel",
-                                                 "12:gcode.feed-limit", "13:gcode.arc", "14:gcode.repeated-word",
-                                                 "15:gcode.unsupported"}));
-  EXPECT_EQ(fs[2].message, "the move reaches X = 500 mm, outside the travel of machine \"grbl\" (X from -400 to 400 mm)");
+  EXPECT_EQ(brief(fs),
+            (std::vector<std::string>{"9:gcode.syntax", "10:gcode.arc-radius", "11:gcode.travel", "12:gcode.feed-limit",
+                                      "13:gcode.arc", "14:gcode.repeated-word", "15:gcode.unsupported"}));
+  EXPECT_EQ(fs[2].message,
+            "the move reaches X = 500 mm, outside the travel of machine \"grbl\" (X from -400 to 400 mm)");
 }
 
 TEST(Lint, NurbsBlockRulesAllListed) {
@@ -143,16 +143,16 @@ TEST(Lint, JumpAtAnInteriorKnotOfFullMultiplicity) {
 
 TEST(Lint, MachinistChecks) {
   const std::string prog =
-      "N10 G00 X0 Y0 Z5\n"      // 1: modes unset
-      "N20 X10 Y10 Z-2\n"       // 2: rapid plunging while moving in X/Y
-      "N15 G01 X20 F100\n"      // 3: N decreasing, spindle off (position is known by now)
-      "N30 M06\n"               // 4: M06 without T
-      "N40 M03 S1000\n"         // 5
-      "N50 G01 X30\n";          // 6: no program end
+      "N10 G00 X0 Y0 Z5\n"  // 1: modes unset
+      "N20 X10 Y10 Z-2\n"   // 2: rapid plunging while moving in X/Y
+      "N15 G01 X20 F100\n"  // 3: N decreasing, spindle off (position is known by now)
+      "N30 M06\n"           // 4: M06 without T
+      "N40 M03 S1000\n"     // 5
+      "N50 G01 X30\n";      // 6: no program end
   const auto fs = lint_gcode(prog, profile("generic"));
-  EXPECT_EQ(brief(fs), (std::vector<std::string>{"1:gcode.modes-unset", "2:gcode.rapid-plunge",
-                                                 "3:gcode.line-number-order", "3:gcode.spindle-off",
-                                                 "4:gcode.tool-unset", "6:gcode.no-program-end"}));
+  EXPECT_EQ(brief(fs),
+            (std::vector<std::string>{"1:gcode.modes-unset", "2:gcode.rapid-plunge", "3:gcode.line-number-order",
+                                      "3:gcode.spindle-off", "4:gcode.tool-unset", "6:gcode.no-program-end"}));
   EXPECT_EQ(fs[0].message,
             "the first move comes before G21/G20 (units), G90 (absolute) and G17 (XY plane) are set: the machine "
             "would use whatever the last program left; start with a safety line such as G21 G90 G17");
@@ -180,8 +180,9 @@ TEST(Lint, SeededGarbageNeverCrashesTheReaderOrLint) {
   // refuses with an InputError or reads, lint reports; nothing else escapes.
   std::mt19937 rng(1234);
   const std::string alphabet = "GXYZIJKRPQLFSTMNO0123456789.-+ ()%;/";
-  const std::vector<std::string> frags = {"G06.2 P4 K0 X0 Y0 Z0", "K0 X1", "K1", "G5.2 P1", "X1 Y1 P1", "G5.3",
-                                          "G02 X1 Y1 I1 J0",     "G01 X5 F100", "G03 X0 Y0 R5", "M30", "G5 P1 Q1"};
+  const std::vector<std::string> frags = {
+      "G06.2 P4 K0 X0 Y0 Z0", "K0 X1",       "K1",           "G5.2 P1", "X1 Y1 P1", "G5.3",
+      "G02 X1 Y1 I1 J0",      "G01 X5 F100", "G03 X0 Y0 R5", "M30",     "G5 P1 Q1"};
   for (int trial = 0; trial < 400; ++trial) {
     std::string prog = "G21 G90 G17\nG00 X0 Y0 Z0\nF100\n";
     const int lines = 1 + static_cast<int>(rng() % 12);

@@ -8,18 +8,17 @@
 // rs274 prints NURBS_FEED without coordinates, so a `(DEBUG,...)` comment
 // with the interpreter's position parameters #5420-#5422 is added after
 // each curve block; rs274 prints it as MESSAGE("POS x y z").
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <iostream>
 #include <map>
 #include <regex>
 #include <sstream>
-#include <fcntl.h>
 #include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -29,8 +28,8 @@
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/gcode/reader.hpp"
-#include "bezcam/kernel/arc.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/kernel/arc.hpp"
 #include "support/run_process.hpp"
 
 namespace bezcam {
@@ -63,7 +62,8 @@ std::string tool_table(const std::map<int, double>& diameters_mm) {
   tbl.precision(12);
   for (int t = 1; t <= 99; ++t) {
     const auto it = diameters_mm.find(t);
-    tbl << "T" << t << " P" << t << " Z0 D" << (it == diameters_mm.end() ? 6.0 : it->second / 25.4) << " ;zero length\n";
+    tbl << "T" << t << " P" << t << " Z0 D" << (it == diameters_mm.end() ? 6.0 : it->second / 25.4)
+        << " ;zero length\n";
   }
   return tbl.str();
 }
@@ -410,7 +410,8 @@ void keep_moving(std::vector<Executed>& out, Executed e) {
 // direction), and the position after every line is the same.
 TEST(LinuxcncRs274, ProgramsFromOtherPostsMoveAsLinuxcncReadsThem) {
   const std::string exe = find_rs274();
-  if (exe.empty()) GTEST_SKIP() << "rs274 (LinuxCNC's standalone interpreter, Debian package linuxcnc-uspace) is not installed";
+  if (exe.empty())
+    GTEST_SKIP() << "rs274 (LinuxCNC's standalone interpreter, Debian package linuxcnc-uspace) is not installed";
   const char* files[] = {"dxf2gcode-plate.ngc", "dxf2gcode-incremental.ngc", "freecad-linuxcnc.ngc", "freecad-fanuc.nc",
                          "linuxcnc-distance-modes.ngc"};
   std::vector<std::string> texts, programs, tables;
@@ -471,7 +472,9 @@ TEST(LinuxcncRs274, ProgramsFromOtherPostsMoveAsLinuxcncReadsThem) {
       if (!std::regex_match(line, m, call)) continue;
       const std::string name = m[1], args = m[2];
       if (name == "SELECT_PLANE") {
-        plane = args.find("XZ") != std::string::npos ? Plane::zx : args.find("YZ") != std::string::npos ? Plane::yz : Plane::xy;
+        plane = args.find("XZ") != std::string::npos   ? Plane::zx
+                : args.find("YZ") != std::string::npos ? Plane::yz
+                                                       : Plane::xy;
         continue;
       }
       if (name == "MESSAGE") {
@@ -485,10 +488,12 @@ TEST(LinuxcncRs274, ProgramsFromOtherPostsMoveAsLinuxcncReadsThem) {
         EXPECT_LT(norm(at - positions[i][no - 1]), 1e-6) << "after line " << no;
         ++probes;
         // A curve's end: the probe after the line that completes it.
-        if (!theirs.empty() && theirs.back().name == "NURBS_FEED" && std::isnan(theirs.back().to.x)) theirs.back().to = at;
+        if (!theirs.empty() && theirs.back().name == "NURBS_FEED" && std::isnan(theirs.back().to.x))
+          theirs.back().to = at;
         continue;
       }
-      if (name != "STRAIGHT_TRAVERSE" && name != "STRAIGHT_FEED" && name != "ARC_FEED" && name != "NURBS_FEED") continue;
+      if (name != "STRAIGHT_TRAVERSE" && name != "STRAIGHT_FEED" && name != "ARC_FEED" && name != "NURBS_FEED")
+        continue;
       std::vector<double> v;
       std::istringstream a(args);
       for (std::string tok; std::getline(a, tok, ',');)
@@ -524,7 +529,8 @@ TEST(LinuxcncRs274, ProgramsFromOtherPostsMoveAsLinuxcncReadsThem) {
     ASSERT_EQ(mine.size(), theirs.size()) << runs[i].output;
     const double eps = 0.5e-4 + 1e-9;  // rs274 prints 4 decimals
     for (size_t k = 0; k < mine.size(); ++k) {
-      SCOPED_TRACE("move " + std::to_string(k + 1) + ": bezcam " + describe(mine[k]) + ", rs274 " + describe(theirs[k]));
+      SCOPED_TRACE("move " + std::to_string(k + 1) + ": bezcam " + describe(mine[k]) + ", rs274 " +
+                   describe(theirs[k]));
       EXPECT_EQ(mine[k].name, theirs[k].name);
       EXPECT_LT(norm(mine[k].to - theirs[k].to), eps);
       if (mine[k].name == "ARC_FEED") {

@@ -3,7 +3,6 @@
 // safety line are read and executed, their state kept and traced, and
 // their misuse refused naming the line.
 #include <gtest/gtest.h>
-
 #include <string>
 
 #include "bezcam/error.hpp"
@@ -76,9 +75,9 @@ TEST(MachinistWords, AreReadExecutedAndTraced) {
   EXPECT_FALSE(s.coolant_flood);
   EXPECT_DOUBLE_EQ(s.dwell_seconds, 1.5);
   EXPECT_TRUE(s.program_end);
-  for (const char* rec : {"line 5 work offset G55\n", "line 7 tool length H2\n", "line 9 dwell 1.500000\n",
-                          "line 10 coolant flood\n", "line 14 coolant off\n", "line 17 tool length off\n",
-                          "line 18 coolant mist\n"})
+  for (const char* rec :
+       {"line 5 work offset G55\n", "line 7 tool length H2\n", "line 9 dwell 1.500000\n", "line 10 coolant flood\n",
+        "line 14 coolant off\n", "line 17 tool length off\n", "line 18 coolant mist\n"})
     EXPECT_NE(trace.find(rec), std::string::npos) << rec << "\n" << trace;
   // G28 Z10: up to the intermediate point, then Z home (machine zero) with
   // X and Y where they are; G53 G00 Z0: a rapid in machine coordinates.
@@ -102,9 +101,7 @@ TEST(MachinistWords, G28WithoutAxesSendsEveryAxisHome) {
   EXPECT_EQ(blocks[1].to.z, 0);
 }
 
-TEST(MachinistWords, G43TakesTheToolInTheSpindleWithoutH) {
-  EXPECT_EQ(run("T3 M06\nG43\n").tool_length_h, 3);
-}
+TEST(MachinistWords, G43TakesTheToolInTheSpindleWithoutH) { EXPECT_EQ(run("T3 M06\nG43\n").tool_length_h, 3); }
 
 TEST(MachinistWords, MisuseIsRefusedNamingTheLine) {
   auto e = refusal("G21 G90\nG28 G01 X5 F100\n");

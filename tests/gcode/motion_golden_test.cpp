@@ -7,21 +7,20 @@
 // Regenerate after an intended change with
 //   BEZCAM_UPDATE_GOLDEN=1 ctest --test-dir build -R MotionGolden
 // and review `git diff tests/golden/motion`.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
 #include "bezcam/cam/program_motion.hpp"
-#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/machine/planner.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;
@@ -78,9 +77,12 @@ std::string summary_rows(const char* machine) {
       // the report: the same figures as the text read back and planned.
       if (r.plan) {
         const MotionPlan& once = *r.plan;
-        auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); };
+        auto near = [](double a, double b) {
+          return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+        };
         const std::string where = s.stem().string() + " " + to_string(mode) + " on " + machine;
-        EXPECT_TRUE(near(once.cycle_time_s, plan.cycle_time_s)) << where << ": " << once.cycle_time_s << " vs " << plan.cycle_time_s;
+        EXPECT_TRUE(near(once.cycle_time_s, plan.cycle_time_s))
+            << where << ": " << once.cycle_time_s << " vs " << plan.cycle_time_s;
         EXPECT_TRUE(near(once.cutting_time_s, plan.cutting_time_s)) << where;
         EXPECT_TRUE(near(once.rapid_time_s, plan.rapid_time_s)) << where;
         EXPECT_TRUE(near(once.pause_time_s, plan.pause_time_s)) << where;
@@ -99,7 +101,8 @@ std::string summary_rows(const char* machine) {
       bool retracts = false, moved = false;
       for (const Move& mv : r.program.moves) {
         moved = moved || motion_of(mv) != nullptr;
-        retracts = retracts || (moved && std::holds_alternative<ToolChangePosition>(mv.what) && !m.tool_change_position.empty());
+        retracts = retracts ||
+                   (moved && std::holds_alternative<ToolChangePosition>(mv.what) && !m.tool_change_position.empty());
       }
       const MotionPlan header = plan_motion(program_timeline(r.program), *m.motion);
       if (!retracts)
@@ -135,8 +138,9 @@ void check(const char* machine) {
     ++line;
     const bool hg = static_cast<bool>(std::getline(in, g)), ha = static_cast<bool>(std::getline(act, a));
     if (!hg && !ha) break;
-    ASSERT_TRUE(hg && ha && same_row(g, a)) << golden.filename() << " differs at line " << line
-                                            << ":\n  golden: " << (hg ? g : "<end>") << "\n  actual: " << (ha ? a : "<end>");
+    ASSERT_TRUE(hg && ha && same_row(g, a))
+        << golden.filename() << " differs at line " << line << ":\n  golden: " << (hg ? g : "<end>")
+        << "\n  actual: " << (ha ? a : "<end>");
   }
 }
 

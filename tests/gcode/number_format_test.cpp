@@ -1,16 +1,16 @@
 // format_number() prints what the general printer (to_chars, fixed) would,
 // trimmed; its fast path for values whose digits are certain must give the
 // same text. Checked against the printer itself.
-#include <gtest/gtest.h>
+#include "bezcam/gcode/number_format.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 #include <string>
 
 #include "bezcam/flatten/tolerance.hpp"
-#include "bezcam/gcode/number_format.hpp"
 
 namespace {
 
@@ -40,7 +40,8 @@ TEST(NumberFormat, SameTextAsThePrinter) {
 TEST(NumberFormat, EdgeCases) {
   for (double v : {0.0, -0.0, -1e-9, 1e-9, -0.0004, 0.0005, 0.0015, 0.125, -0.125, 10.0, -10.0, 100.5, 1e15, -1e15,
                    123456.7890123, 0.1, 0.7, 1e-7})
-    for (int d : {-1, 0, 1, 2, 3, 4, 6, 9, 15, 22, 25}) EXPECT_EQ(bezcam::format_number(v, d), through_printer(v, d)) << v << " " << d;
+    for (int d : {-1, 0, 1, 2, 3, 4, 6, 9, 15, 22, 25})
+      EXPECT_EQ(bezcam::format_number(v, d), through_printer(v, d)) << v << " " << d;
   EXPECT_EQ(bezcam::format_number(-0.0004, 3), "0.");
   EXPECT_EQ(bezcam::format_number(-0.003, 3), "-0.003");
   EXPECT_EQ(bezcam::format_number(10, 0), "10.");

@@ -5,19 +5,18 @@
 // checks before it sends), and the planner executes them through the end
 // point of every block. linuxcnc_rs274_test.cpp holds their motion against
 // LinuxCNC's own interpreter.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <limits>
 #include <sstream>
 
-#include "bezcam/machine/machine_profile.hpp"
-#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/lint.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/gcode/timeline.hpp"
+#include "bezcam/machine/machine_profile.hpp"
+#include "bezcam/machine/planner.hpp"
 
 using namespace bezcam;
 
@@ -60,7 +59,8 @@ TEST(OtherPosts, LintCleanForTheirMachines) {
     for (const char* name : post.machines) {
       const MachineProfile m = load_machine_profile(name);
       std::string found;
-      for (const auto& f : lint_gcode(text, m)) found += std::to_string(f.line) + ": " + f.message + " [" + f.id + "]\n";
+      for (const auto& f : lint_gcode(text, m))
+        found += std::to_string(f.line) + ": " + f.message + " [" + f.id + "]\n";
       EXPECT_EQ(found, "") << post.file << " on " << name;
     }
   }

@@ -8,10 +8,9 @@
 // true offset within the tolerance of the path. Leads leave the band by
 // design, so the band is read on the samples with their leads removed; with
 // leads the program must still never come nearer the part than r.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <iostream>
 #include <map>
 
@@ -142,7 +141,8 @@ TEST(PartRoundTrip, EveryPartSampleInEveryModeKeepsItsBandFromThePart) {
           EXPECT_TRUE(findings.empty()) << findings.front().line << ": " << findings.front().message;
           const auto runs = cutting_runs(read);
           size_t want = 0;
-          for (const auto& rep : r.program.entities) want += passes(job, job.entities[static_cast<size_t>(rep.entity)], m);
+          for (const auto& rep : r.program.entities)
+            want += passes(job, job.entities[static_cast<size_t>(rep.entity)], m);
           ASSERT_EQ(runs.size(), want);
           size_t at = 0, cut = 0;
           const double tol = r.program.tolerance;
@@ -156,7 +156,8 @@ TEST(PartRoundTrip, EveryPartSampleInEveryModeKeepsItsBandFromThePart) {
             // Drop the plunge (straight down onto the path).
             const std::vector<MotionBlock> moves(run.begin() + 1, run.end());
             const auto path = xy_path(moves, 0.02);
-            const OffsetReading o = measure_offset(curves, path, {.r = x.r, .side = x.side, .middle = x.middle, .resolution = 5e-3 * tol});
+            const OffsetReading o =
+                measure_offset(curves, path, {.r = x.r, .side = x.side, .middle = x.middle, .resolution = 5e-3 * tol});
             const double res = 1e-2 * tol;  // the reading's resolution, twice
             if (x.waste || x.one_side) {
               // Never into the part, even by the chord error.
@@ -228,7 +229,8 @@ TEST(PartRoundTrip, ControllerCompensationPutsTheToolCentreOnTheOffset) {
       ASSERT_TRUE(x.waste);
       const std::vector<std::vector<Bezier>> curves{e.curve.pieces};
       const std::vector<MotionBlock> moves(run.begin() + 1, run.end());  // not the plunge
-      const OffsetReading o = measure_offset(curves, xy_path(moves, 0.02), {.r = x.r, .side = x.side, .middle = x.middle, .resolution = 5e-3 * tol});
+      const OffsetReading o = measure_offset(curves, xy_path(moves, 0.02),
+                                             {.r = x.r, .side = x.side, .middle = x.middle, .resolution = 5e-3 * tol});
       const double res = 1e-2 * tol;
       EXPECT_GE(o.min_distance, x.r - res) << e.label();
       EXPECT_LE(o.coverage, tol + res) << e.label();

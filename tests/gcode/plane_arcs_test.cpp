@@ -2,9 +2,8 @@
 // kernel's plane coordinates, the direction rule per plane, the writer's
 // plane and centre words and the reader reading them back as the same
 // arcs; bad centre words named with their line.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 
 #include "bezcam/cam/program_motion.hpp"

@@ -4,14 +4,14 @@
 // program's tail against the full run's from that line, block by block and
 // exactly. The same cases over real sockets, through the simulated
 // controller's trace: tests/sim/resume_stream_test.cpp.
-#include <gtest/gtest.h>
+#include "bezcam/gcode/resume.hpp"
 
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/reader.hpp"
-#include "bezcam/gcode/resume.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "support/refusal.hpp"
 
 using namespace bezcam;
@@ -242,8 +242,9 @@ TEST(Resume, ThePreambleSaysWhereTheTailStarts) {
   const MachineProfile m = load_machine_profile("fanuc");
   const ResumePlan p = plan_resume(slurp("two-tools-fanuc.nc"), &m, 25);
   const std::string first = p.preamble.substr(0, p.preamble.find('\n'));
-  EXPECT_EQ(first, "(bezcam resume: lines 1-" + std::to_string(p.preamble_lines) + " restore the state of line 22, line " +
-                       std::to_string(p.preamble_lines + 1) + " is line 22 of the program, asked 25)");
+  EXPECT_EQ(first, "(bezcam resume: lines 1-" + std::to_string(p.preamble_lines) +
+                       " restore the state of line 22, line " + std::to_string(p.preamble_lines + 1) +
+                       " is line 22 of the program, asked 25)");
   EXPECT_EQ(p.original_line(1), 0);
   EXPECT_EQ(p.original_line(p.preamble_lines), 0);
   EXPECT_EQ(p.original_line(p.preamble_lines + 1), 22);
@@ -316,9 +317,9 @@ TEST(Resume, EveryLineOfTheSamplesResumesToTheSameTail) {
   // Every line with a block, in every program here: the plan holds, and the
   // tail is the full run's.
   const std::pair<const char*, const char*> files[] = {{"two-tools-fanuc.nc", "fanuc"},
-                                                        {"keyhole-linuxcnc.nc", "linuxcnc"},
-                                                        {"g5-chain-linuxcnc.nc", "linuxcnc"},
-                                                        {"two-tools-arcs.nc", "generic"}};
+                                                       {"keyhole-linuxcnc.nc", "linuxcnc"},
+                                                       {"g5-chain-linuxcnc.nc", "linuxcnc"},
+                                                       {"two-tools-arcs.nc", "generic"}};
   for (const auto& [file, machine] : files) {
     const MachineProfile m = load_machine_profile(machine);
     const std::string text = slurp(file);

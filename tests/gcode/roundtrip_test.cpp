@@ -6,10 +6,9 @@
 // the tolerance. Nothing of the emitters is used to read or evaluate.
 // (Surface samples are cut by their own emitter and checked elsewhere;
 // part samples, cut beside their curves, in part_roundtrip_test.cpp.)
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -150,8 +149,10 @@ TEST(RoundTrip, EveryCurveSampleInEveryModeAndProfileReadsBackWithinTolerance) {
                 break;
               default: EXPECT_EQ(b.kind, BlockKind::linear);
             }
-            if (b.kind == BlockKind::linear) poly.push_back(b.to);
-            else sample(b, 0, b.from, 1, b.to, 1e-4 * tol, 0, poly);
+            if (b.kind == BlockKind::linear)
+              poly.push_back(b.to);
+            else
+              sample(b, 0, b.from, 1, b.to, 1e-4 * tol, 0, poly);
           }
           if (e.curve.dim == 2) {
             for (auto& p : poly) {
@@ -167,8 +168,7 @@ TEST(RoundTrip, EveryCurveSampleInEveryModeAndProfileReadsBackWithinTolerance) {
           // argument but may read high below it (windowed search): a reading
           // above the bound is confirmed by asking about the bound itself.
           const double claim = r.program.entities[i].bound + 1e-3 * tol;
-          if (d.max() > claim)
-            EXPECT_LE(measure_deviation(e.curve.pieces, poly, claim).max(), claim) << e.label();
+          if (d.max() > claim) EXPECT_LE(measure_deviation(e.curve.pieces, poly, claim).max(), claim) << e.label();
         }
         // G-code lines that cut (all but the plunge in each run).
         size_t lines = 0;

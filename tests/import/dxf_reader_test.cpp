@@ -5,23 +5,21 @@
 // 1e-9 mm, and convert in every output mode stays within the tolerance.
 #include "bezcam/import/dxf_reader.hpp"
 
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <cstdlib>
-#include <functional>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <gtest/gtest.h>
 #include <map>
 #include <sstream>
+#include <unistd.h>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/kernel/bezier.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -74,8 +72,10 @@ double distance(const Piece& pc, const Vec3& q) {
   const double g = (std::sqrt(5.0) - 1) / 2;
   for (int it = 0; it < 200; ++it) {
     const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-    if (dist(f(m1), q) < dist(f(m2), q)) hi = m2;
-    else lo = m1;
+    if (dist(f(m1), q) < dist(f(m2), q))
+      hi = m2;
+    else
+      lo = m1;
   }
   return std::min(bd, dist(f((lo + hi) / 2), q));
 }
@@ -84,7 +84,8 @@ TEST(DxfReader, EzdxfEntitiesPassThroughEzdxfsOwnPoints) {
   const auto& [file, ref] = ezdxf_part();
   ASSERT_GT(ref.size(), 150u);
   const Drawing d = read_drawing(file);
-  for (const char* layer : {"SPLINE", "FIT", "ELLIPSE", "POLY", "OCS", "POLY2D", "INS", "INS2"}) EXPECT_TRUE(d.layers.count(layer)) << layer;
+  for (const char* layer : {"SPLINE", "FIT", "ELLIPSE", "POLY", "OCS", "POLY2D", "INS", "INS2"})
+    EXPECT_TRUE(d.layers.count(layer)) << layer;
   for (const RefPoint& r : ref) {
     double best = 1e300;
     for (const Contour& c : d.contours)
@@ -157,19 +158,25 @@ TEST(DxfReader, Refusals) {
   EXPECT_EQ(id_of(head + "0\nLINE\n10\n0\n20\n"), "import.dxf-syntax");  // truncated
   EXPECT_EQ(id_of(head + "0\nTEXT\n1\nx\n" + tail), "import.empty");
   EXPECT_EQ(id_of(head + "0\nLINE\n5\n1F\n10\nnan\n20\n0\n11\n1\n21\n1\n" + tail), "import.not-finite");
-  EXPECT_EQ(id_of("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n99\n0\nENDSEC\n" + head + "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n" + tail),
+  EXPECT_EQ(id_of("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n99\n0\nENDSEC\n" + head +
+                  "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n" + tail),
             "import.units");
-  EXPECT_EQ(id_of("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nINSERT\n5\n2A\n2\nB\n10\n0\n20\n0\n0\nENDBLK\n0\nENDSEC\n" +
+  EXPECT_EQ(id_of("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nINSERT\n5\n2A\n2\nB\n10\n0\n20\n0\n0\nENDBLK"
+                  "\n0\nENDSEC\n" +
                   head + "0\nINSERT\n5\n2B\n2\nB\n10\n0\n20\n0\n" + tail),
             "import.block-recursion");
-  EXPECT_EQ(id_of(head + "0\nSPLINE\n5\n3C\n71\n1\n72\n4\n73\n2\n40\n0\n40\n1\n40\n0.5\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n" + tail),
-            "import.knots");
+  EXPECT_EQ(
+      id_of(head + "0\nSPLINE\n5\n3C\n71\n1\n72\n4\n73\n2\n40\n0\n40\n1\n40\n0.5\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n" +
+            tail),
+      "import.knots");
   // Hostile numbers: a degree far out of range, an ellipse swept 1e300
   // radians (no endless loop), an insert scaled by 0 (nothing to cut).
   EXPECT_EQ(id_of(head + "0\nSPLINE\n5\n3D\n71\n1e300\n10\n0\n20\n0\n" + tail), "import.dxf-syntax");
-  EXPECT_EQ(id_of(head + "0\nELLIPSE\n10\n0\n20\n0\n11\n5\n21\n0\n40\n0.5\n41\n0\n42\n1e300\n210\n0\n220\n0\n230\n0\n" + tail),
+  EXPECT_EQ(id_of(head + "0\nELLIPSE\n10\n0\n20\n0\n11\n5\n21\n0\n40\n0.5\n41\n0\n42\n1e300\n210\n0\n220\n0\n230\n0\n" +
+                  tail),
             "none");
-  EXPECT_EQ(id_of("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n0\nENDBLK\n0\nENDSEC\n" +
+  EXPECT_EQ(id_of("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n0\nENDBLK"
+                  "\n0\nENDSEC\n" +
                   head + "0\nINSERT\n5\n2B\n2\nB\n10\n0\n20\n0\n41\n0\n42\n0\n" + tail),
             "import.empty");
 }
@@ -253,7 +260,8 @@ TEST(DxfReader, LibreCadLibraryMatchesEzdxfsReading) {
     for (const OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
       ConvertOptions co;
       co.output = mode;
-      const ConvertResult r = convert(job, load_machine_profile(mode == OutputMode::nurbs ? "linuxcnc" : "generic"), co);
+      const ConvertResult r =
+          convert(job, load_machine_profile(mode == OutputMode::nurbs ? "linuxcnc" : "generic"), co);
       EXPECT_LE(r.program.max_measured, job.tolerance);
     }
   }

@@ -3,11 +3,10 @@
 // `bezcam import` writes) and its programs in every output mode
 // (tests/golden/import/<sample>.<profile>[.<mode>].nc), byte for byte.
 // Regenerate with BEZCAM_UPDATE_GOLDEN=1 ctest --test-dir build -R Golden.
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
 #include "bezcam/gcode/convert.hpp"
@@ -39,14 +38,15 @@ TEST(GoldenImport, DrawingSamplesTheirJobsAndPrograms) {
     const std::string stem = fs::path(sample).stem().string();
     check_golden(kRoot / "tests/golden/import" / (stem + ".json"), job_json(d));
     const Job job = to_job(d);
-    for (const auto& [machine, mode] : {std::pair{"generic", "lines"}, std::pair{"generic", "arcs"},
-                                        std::pair{"fanuc", "lines"}, std::pair{"fanuc", "nurbs"},
-                                        std::pair{"linuxcnc", "nurbs"}}) {
+    for (const auto& [machine, mode] :
+         {std::pair{"generic", "lines"}, std::pair{"generic", "arcs"}, std::pair{"fanuc", "lines"},
+          std::pair{"fanuc", "nurbs"}, std::pair{"linuxcnc", "nurbs"}}) {
       ConvertOptions opt;
       opt.output = parse_output_mode(mode);
       const ConvertResult r = convert(job, load_machine_profile(machine), opt);
       EXPECT_LE(r.program.max_measured, job.tolerance);
-      check_golden(kRoot / "tests/golden/import" / (stem + "." + machine + (std::string(mode) == "lines" ? "" : std::string(".") + mode) + ".nc"),
+      check_golden(kRoot / "tests/golden/import" /
+                       (stem + "." + machine + (std::string(mode) == "lines" ? "" : std::string(".") + mode) + ".nc"),
                    r.gcode);
     }
   }

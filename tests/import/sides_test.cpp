@@ -4,10 +4,9 @@
 // the tool's (docs/import.md, "Sides of a part"). A job that cuts a hole
 // on its outside inside an outline also cut outside is warned about,
 // naming both entities.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <map>
 #include <string>
 #include <variant>
@@ -114,11 +113,13 @@ TEST(ImportSides, EvenOddDepthDecidesEachContoursSide) {
       <rect id="tab" x="60" y="40" width="10" height="30"/>
       <polyline id="mark" points="50,5 55,5"/></svg>)~",
                              "plate.svg");
-  const auto side = [](CutSide s) { return s == CutSide::inside ? "inside" : s == CutSide::outside ? "outside" : "other"; };
+  const auto side = [](CutSide s) {
+    return s == CutSide::inside ? "inside" : s == CutSide::outside ? "outside" : "other";
+  };
   std::vector<std::string> warnings;
   const auto out = sides_of(to_job(d, with({{"side", "outside"}, {"tool_diameter", "1"}}), &warnings));
-  const std::map<std::string, std::string> want = {{"plate", "outside"}, {"bore", "inside"},   {"boss", "outside"},
-                                                   {"pin", "inside"},     {"twin", "inside"},    {"corner", "inside"},
+  const std::map<std::string, std::string> want = {{"plate", "outside"},     {"bore", "inside"}, {"boss", "outside"},
+                                                   {"pin", "inside"},        {"twin", "inside"}, {"corner", "inside"},
                                                    {"neighbour", "outside"}, {"tab", "outside"}, {"mark", "outside"}};
   for (const auto& [id, s] : want) EXPECT_EQ(side(out.at(id)), s) << id;
   ASSERT_EQ(warnings.size(), 1u);
@@ -155,8 +156,10 @@ TEST(ImportSides, LibreCadFlangeWithTouchingHoles) {
   ConvertOptions co;
   co.output = OutputMode::arcs;
   const ConvertResult r = convert(job, load_machine_profile("generic"), co);
-  const std::map<std::string, std::pair<Vec3, double>> circles = {
-      {"0:46", {{12, 7}, 3 - 0.5}}, {"0:47", {{12, 0}, 4 - 0.5}}, {"0:48", {{12, -7}, 3 - 0.5}}, {"0:49", {{12, 0}, 10 + 0.5}}};
+  const std::map<std::string, std::pair<Vec3, double>> circles = {{"0:46", {{12, 7}, 3 - 0.5}},
+                                                                  {"0:47", {{12, 0}, 4 - 0.5}},
+                                                                  {"0:48", {{12, -7}, 3 - 0.5}},
+                                                                  {"0:49", {{12, 0}, 10 + 0.5}}};
   for (const auto& [id, cr] : circles) {
     SCOPED_TRACE(id);
     const auto pts = cut_points(r.program, job, id, -1);
@@ -180,8 +183,9 @@ TEST(ImportSides, JobWithAHoleCutOutsideIsWarned) {
   text.replace(text.find(hole), hole.size(), "{ \"id\": \"HOLES:38\", \"side\": \"outside\"");
   const auto w = program_warnings(text);
   ASSERT_EQ(w.size(), 1u);
-  EXPECT_TRUE(w[0].starts_with("entities[2] (id \"HOLES:38\") is cut \"outside\" but lies inside entities[0] (id "
-                               "\"OUTLINE:2F+7\"), also cut \"outside\": it is a hole in that part"))
+  EXPECT_TRUE(
+      w[0].starts_with("entities[2] (id \"HOLES:38\") is cut \"outside\" but lies inside entities[0] (id "
+                       "\"OUTLINE:2F+7\"), also cut \"outside\": it is a hole in that part"))
       << w[0];
 }
 

@@ -3,25 +3,23 @@
 // units against hand-computed coordinates, every output mode measured.
 #include "bezcam/import/svg_reader.hpp"
 
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <map>
 #include <numbers>
 #include <sstream>
+#include <unistd.h>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/import/drawing.hpp"
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/kernel/bezier.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -38,8 +36,10 @@ double nearest(const Bezier& b, const Vec3& q) {
   const double g = (std::sqrt(5.0) - 1) / 2;
   for (int it = 0; it < 200; ++it) {
     const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-    if (dist(evaluate(b, m1), q) < dist(evaluate(b, m2), q)) hi = m2;
-    else lo = m1;
+    if (dist(evaluate(b, m1), q) < dist(evaluate(b, m2), q))
+      hi = m2;
+    else
+      lo = m1;
   }
   return dist(evaluate(b, (lo + hi) / 2), q);
 }
@@ -57,7 +57,8 @@ struct CenterArc {
             cy + rx * std::sin(phi) * std::cos(t) + ry * std::cos(phi) * std::sin(t)};
   }
 };
-CenterArc to_center(double x1, double y1, double rx, double ry, double phi_deg, bool fa, bool fs, double x2, double y2) {
+CenterArc to_center(double x1, double y1, double rx, double ry, double phi_deg, bool fa, bool fs, double x2,
+                    double y2) {
   const double phi = phi_deg * std::numbers::pi / 180;
   const double xp = std::cos(phi) * (x1 - x2) / 2 + std::sin(phi) * (y1 - y2) / 2;
   const double yp = -std::sin(phi) * (x1 - x2) / 2 + std::cos(phi) * (y1 - y2) / 2;
@@ -74,7 +75,8 @@ CenterArc to_center(double x1, double y1, double rx, double ry, double phi_deg, 
     return ux * vy - uy * vx < 0 ? -a : a;
   };
   const double t1 = angle(1, 0, (xp - cxp) / rx, (yp - cyp) / ry);
-  double dt = std::fmod(angle((xp - cxp) / rx, (yp - cyp) / ry, (-xp - cxp) / rx, (-yp - cyp) / ry), 2 * std::numbers::pi);
+  double dt =
+      std::fmod(angle((xp - cxp) / rx, (yp - cyp) / ry, (-xp - cxp) / rx, (-yp - cyp) / ry), 2 * std::numbers::pi);
   if (!fs && dt > 0) dt -= 2 * std::numbers::pi;
   if (fs && dt < 0) dt += 2 * std::numbers::pi;
   return {cx, cy, rx, ry, phi, t1, dt};
@@ -115,7 +117,8 @@ TEST(SvgReader, EllipticalArcIsTheSpecsArcExactly) {
     for (int j = 0; j <= 50; ++j) {
       const Vec3 q = evaluate(b, j / 50.0);
       const double ux = q.x * 96 / 25.4 - ref.cx, uy = 100 - q.y * 96 / 25.4 - ref.cy;
-      const double xr = std::cos(ref.phi) * ux + std::sin(ref.phi) * uy, yr = -std::sin(ref.phi) * ux + std::cos(ref.phi) * uy;
+      const double xr = std::cos(ref.phi) * ux + std::sin(ref.phi) * uy,
+                   yr = -std::sin(ref.phi) * ux + std::cos(ref.phi) * uy;
       EXPECT_NEAR(xr * xr / (ref.rx * ref.rx) + yr * yr / (ref.ry * ref.ry), 1.0, 1e-12);
     }
   }
@@ -149,7 +152,8 @@ TEST(SvgReader, RelativeCommandsShorthandsAndClose) {
   expect_at(b[1].points[1], page(80, 60));  // T reflects (60, 40) about (70, 50)
   expect_at(b[1].points[2], page(90, 50));
   // After a line, S has no control point to reflect: its first is the current point.
-  const Drawing l = read_svg(svg(R"~(<path d="M 0 0 C 10 0 20 10 20 20 L 30 30 S 40 40 50 50 M 0 50 Q 5 40 10 50 H 20 T 30 50"/>)~"), "l.svg");
+  const Drawing l = read_svg(
+      svg(R"~(<path d="M 0 0 C 10 0 20 10 20 20 L 30 30 S 40 40 50 50 M 0 50 Q 5 40 10 50 H 20 T 30 50"/>)~"), "l.svg");
   expect_at(l.contours[0].pieces[2].points[1], page(30, 30));
   expect_at(l.contours[1].pieces[2].points[1], page(20, 50));
 }
@@ -163,8 +167,7 @@ TEST(SvgReader, ShapesRoundedRectCircleEllipseLinePolyline) {
   ASSERT_EQ(d.contours.size(), 6u);
   // Circle: every point at radius 20 (user units) from the centre.
   for (const Piece& p : d.contours[1].pieces)
-    for (int j = 0; j <= 20; ++j)
-      EXPECT_NEAR(dist(evaluate(bez(p), j / 20.0), page(100, 50)), 20 * 25.4 / 96, 1e-12);
+    for (int j = 0; j <= 20; ++j) EXPECT_NEAR(dist(evaluate(bez(p), j / 20.0), page(100, 50)), 20 * 25.4 / 96, 1e-12);
   EXPECT_TRUE(d.contours[1].closed);
   EXPECT_EQ(d.contours[1].pieces.size(), 4u);
   // Rounded rect: 4 lines and 4 quarter arcs of radius 5.
@@ -198,7 +201,8 @@ TEST(SvgReader, NestedTransformsAndUnits) {
   EXPECT_NEAR(p[1].x, 5, 1e-12);
   EXPECT_NEAR(p[1].y, 50 - 15, 1e-12);
   // Inches: 1in page, 96 units.
-  const Drawing in = read_svg(svg(R"~(<line x1="0" y1="0" x2="96" y2="0"/>)~", R"~(width="1in" height="1in" viewBox="0 0 96 96")~"), "i.svg");
+  const Drawing in = read_svg(
+      svg(R"~(<line x1="0" y1="0" x2="96" y2="0"/>)~", R"~(width="1in" height="1in" viewBox="0 0 96 96")~"), "i.svg");
   EXPECT_NEAR(in.contours[0].pieces[0].points[1].x, 25.4, 1e-12);
   EXPECT_NEAR(in.contours[0].pieces[0].points[1].y, 25.4, 1e-12);
 }
@@ -268,7 +272,8 @@ TEST(SvgReader, UseNestedAndInsideTransformedGroups) {
   EXPECT_NE(by_id["b/a/l"]->element.find("through <use id=\"b\">"), std::string::npos) << by_id["b/a/l"]->element;
 
   // A use of a symbol draws nothing bezcam reads: counted as skipped.
-  const Drawing s = read_svg(svg(R"~(<symbol id="s"><rect width="5" height="5"/></symbol><use href="#s"/><line x2="1" y2="1"/>)~"), "s.svg");
+  const Drawing s = read_svg(
+      svg(R"~(<symbol id="s"><rect width="5" height="5"/></symbol><use href="#s"/><line x2="1" y2="1"/>)~"), "s.svg");
   EXPECT_EQ(s.contours.size(), 1u);
   EXPECT_EQ(s.layers.at("").skipped.at("use"), 1u);
 
@@ -282,10 +287,12 @@ TEST(SvgReader, UseNestedAndInsideTransformedGroups) {
   };
   EXPECT_EQ(refusal(R"~(<g id="g1"><line x2="1" y2="1"/><use id="loop" href="#g1"/></g>)~").substr(0, 53),
             "import.block-recursion: bad.svg: <use id=\"loop\"> on l");
-  EXPECT_EQ(refusal(R"~(<use id="x" href="#y"/><use id="y" href="#x"/><line x2="1" y2="1"/>)~").substr(0, 22), "import.block-recursion");
+  EXPECT_EQ(refusal(R"~(<use id="x" href="#y"/><use id="y" href="#x"/><line x2="1" y2="1"/>)~").substr(0, 22),
+            "import.block-recursion");
   const std::string missing = refusal(R"~(<use id="u" href="#nope"/><line x2="1" y2="1"/>)~");
   EXPECT_EQ(missing.substr(0, 17), "import.svg-syntax") << missing;
-  EXPECT_NE(missing.find("<use id=\"u\"> on line 1: href \"#nope\": no element has the id \"nope\""), std::string::npos) << missing;
+  EXPECT_NE(missing.find("<use id=\"u\"> on line 1: href \"#nope\": no element has the id \"nope\""), std::string::npos)
+      << missing;
 }
 
 // Transforms on the elements themselves (before or after their geometry in
@@ -314,7 +321,8 @@ TEST(SvgReader, ElementTransformsUseAndViewportsMatchSvgelements) {
     for (const auto& f : files) list << f.string() << "\n";
   }
   const std::string cmd = "/usr/bin/python3 " + std::string(BEZCAM_SOURCE_DIR) +
-                          "/tests/import/data/svgelements_points.py " + (dir / "list.txt").string() + " " + dir.string();
+                          "/tests/import/data/svgelements_points.py " + (dir / "list.txt").string() + " " +
+                          dir.string();
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   const double k = 25.4 / 96;  // mm per px
   size_t points = 0, subpaths = 0;
@@ -393,8 +401,9 @@ TEST(SvgReader, DrawingsFromDebianPackagesConvertInEveryMode) {
     const Drawing d = read_drawing(f);
     EXPECT_GT(d.contours.size(), 10u);
     const Job job = to_job(d);
-    for (const auto& [machine, mode] : {std::pair{"generic", OutputMode::lines}, std::pair{"generic", OutputMode::arcs},
-                                        std::pair{"fanuc", OutputMode::nurbs}, std::pair{"linuxcnc", OutputMode::nurbs}}) {
+    for (const auto& [machine, mode] :
+         {std::pair{"generic", OutputMode::lines}, std::pair{"generic", OutputMode::arcs},
+          std::pair{"fanuc", OutputMode::nurbs}, std::pair{"linuxcnc", OutputMode::nurbs}}) {
       ConvertOptions co;
       co.output = mode;
       const ConvertResult r = convert(job, load_machine_profile(machine), co);

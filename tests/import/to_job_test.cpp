@@ -2,10 +2,9 @@
 // (job_json, what `bezcam import` writes) reads as: the same entities, the
 // same doubles to the bit (a zero written as -0 reads back as +0), the same
 // G-code, and the same refusals of the stated limits, word for word.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <functional>
+#include <gtest/gtest.h>
 #include <string>
 
 #include "bezcam/error.hpp"
@@ -153,14 +152,16 @@ TEST(ToJob, RefusesTheStatedLimitsAsTheFilesReaderDoes) {
     Drawing d;
     d.source = "dense.dxf";
     const size_t n = kMaxEntityPoints / 2;  // each spline's Bézier form: (n - 5) x 6 points
-    for (int k = 0; k < 4; ++k) d.contours.push_back(contour("0:" + std::to_string(k), {bspline(5, n, 3.0 * k)}, false));
+    for (int k = 0; k < 4; ++k)
+      d.contours.push_back(contour("0:" + std::to_string(k), {bspline(5, n, 3.0 * k)}, false));
     expect_refused_alike(d, "control points in their exact Bézier form");
   }
   {  // more entities than kMaxEntities
     Drawing d;
     d.source = "many.dxf";
     for (size_t i = 0; i <= kMaxEntities; ++i)
-      d.contours.push_back(contour("0:" + std::to_string(i), {line_piece({double(i), 0, 0}, {double(i), 1, 0})}, false));
+      d.contours.push_back(
+          contour("0:" + std::to_string(i), {line_piece({double(i), 0, 0}, {double(i), 1, 0})}, false));
     expect_refused_alike(d, "entities in one job");
   }
 }

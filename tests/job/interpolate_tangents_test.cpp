@@ -4,9 +4,8 @@
 // curve passes through every point, with the given derivatives (Hermite:
 // per piece, t in [0, 1]; clamped spline: with respect to the chord-length
 // parameter, at both ends), C1 (Hermite) or C2 (spline) at the joints.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 
 #include "bezcam/error.hpp"
@@ -20,9 +19,7 @@ namespace {
 
 using namespace bezcam;
 
-Job job_of(const std::string& entity) {
-  return parse_job(R"({"bezcam": 1, "entities": [)" + entity + "]}", "t.json");
-}
+Job job_of(const std::string& entity) { return parse_job(R"({"bezcam": 1, "entities": [)" + entity + "]}", "t.json"); }
 
 InputError refusal(const std::string& entity) {
   return test::refusal_of([&] { job_of(entity); });
@@ -100,14 +97,16 @@ TEST(ClampedSpline, EndDerivativesHoldAndThePointsAreMet) {
 }
 
 TEST(MoreWaysThroughPoints, MistakesAreRefusedNamingThePath) {
-  InputError e = refusal(R"({"type": "interpolate", "method": "hermite", "through": [[0, 0], [1, 1]], "tangents": [[1, 0]]})");
+  InputError e =
+      refusal(R"({"type": "interpolate", "method": "hermite", "through": [[0, 0], [1, 1]], "tangents": [[1, 0]]})");
   EXPECT_EQ(e.id(), "curve.tangent-count");
   EXPECT_EQ(e.where(), "t.json: entities[0].tangents");
   e = refusal(R"({"type": "interpolate", "method": "hermite", "through": [[0, 0], [1, 1]]})");
   EXPECT_EQ(e.where(), "t.json: entities[0].tangents");
   e = refusal(R"({"type": "interpolate", "through": [[0, 0], [1, 1]], "tangents": [[1, 0], [1, 0]]})");
   EXPECT_EQ(e.id(), "job.method");
-  e = refusal(R"({"type": "interpolate", "through": [[0, 0], [1, 1], [2, 0]], "closed": true, "end_tangents": [[1, 0], [1, 0]]})");
+  e = refusal(
+      R"({"type": "interpolate", "through": [[0, 0], [1, 1], [2, 0]], "closed": true, "end_tangents": [[1, 0], [1, 0]]})");
   EXPECT_EQ(e.id(), "job.method");
   e = refusal(R"({"type": "interpolate", "through": [[0, 0], [1, 1]], "end_tangents": [[1, 0]]})");
   EXPECT_EQ(e.id(), "curve.tangent-count");

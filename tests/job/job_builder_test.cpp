@@ -1,12 +1,13 @@
 // JobBuilder: a job made in memory converts exactly as the same job read
 // from JSON, and bad values are refused naming the place.
+#include "bezcam/job/job_builder.hpp"
+
 #include <gtest/gtest.h>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
-#include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 
 using namespace bezcam;
 
@@ -77,8 +78,11 @@ TEST(JobBuilder, RefusesBadValuesNamingThePlace) {
   refused([&] { JobBuilder("j").bezier("a", c).bezier("b", c, p).build(); }, "job.not-positive",
           "j: entities[1].plunge_feed");
   // A path whose second segment does not start where the first ends.
-  refused([&] { JobBuilder("j").path("p", {c, Bezier::make({{5, 5, 0}, {6, 6, 0}})}); }, "path.joint",
-          "j: entities[0].segments[1]");
+  refused(
+      [&] {
+        JobBuilder("j").path("p", {c, Bezier::make({{5, 5, 0}, {6, 6, 0}})});
+      },
+      "path.joint", "j: entities[0].segments[1]");
 }
 
 namespace {
@@ -130,7 +134,8 @@ TEST(JobBuilder, PathSegmentsAndInterpolationsAreTheFilesCurves) {
     for (OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
       ConvertOptions opt;
       opt.output = mode;
-      EXPECT_EQ(convert(in_memory, m, opt).gcode, convert(from_json, m, opt).gcode) << machine << " " << to_string(mode);
+      EXPECT_EQ(convert(in_memory, m, opt).gcode, convert(from_json, m, opt).gcode)
+          << machine << " " << to_string(mode);
     }
   }
 }
@@ -146,8 +151,9 @@ TEST(JobBuilder, InterpolationThatCannotBeMadeIsRefusedAtItsEntity) {
 
 TEST(JobBuilder, SettingsAreReadAsTheFilesKeys) {
   const std::vector<std::pair<std::string, std::string>> sets = {
-      {"units", "inch"}, {"feed", "20"}, {"cut_z", "-0.1"}, {"side", "outside"}, {"tool_diameter", "0.125"},
-      {"tabs.count", "2"}, {"tabs.width", "0.2"}, {"tabs.height", "0.05"}, {"order", "shortest"}};
+      {"units", "inch"},          {"feed", "20"},      {"cut_z", "-0.1"},     {"side", "outside"},
+      {"tool_diameter", "0.125"}, {"tabs.count", "2"}, {"tabs.width", "0.2"}, {"tabs.height", "0.05"},
+      {"order", "shortest"}};
   const Job built = JobBuilder("s").safe_z(1).settings(sets).bezier("a", Bezier::make({{0, 0, 0}, {1, 1, 0}})).build();
   const Job read = parse_job(R"({"bezcam": 1, "units": "inch", "job": {"feed": 20, "cut_z": -0.1, "safe_z": 1,
       "side": "outside", "tool_diameter": 0.125, "tabs": {"count": 2, "width": 0.2, "height": 0.05},
@@ -165,7 +171,12 @@ TEST(JobBuilder, SettingsAreReadAsTheFilesKeys) {
   EXPECT_EQ(built.params.tabs->count, read.params.tabs->count);
   EXPECT_EQ(built.params.tabs->width, read.params.tabs->width);
   // A tolerance given before the settings stays when they give none.
-  EXPECT_EQ(JobBuilder("t").tolerance(0.002).settings(sets).bezier("a", Bezier::make({{0, 0, 0}, {1, 1, 0}})).build().tolerance,
+  EXPECT_EQ(JobBuilder("t")
+                .tolerance(0.002)
+                .settings(sets)
+                .bezier("a", Bezier::make({{0, 0, 0}, {1, 1, 0}}))
+                .build()
+                .tolerance,
             0.002);
   // A value the job refuses is named at its JSON path, in the builder's name.
   try {

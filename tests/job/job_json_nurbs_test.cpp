@@ -1,14 +1,13 @@
 // The `bspline` and `interpolate` entities of docs/job-format.md: parsed into
 // exact pieces with the B-spline kept for exact output, errors naming the
 // JSON path, the Lagrange overshoot warning.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
-#include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
 
 using namespace bezcam;
 
@@ -58,9 +57,10 @@ TEST(JobJsonNurbs, BsplineCircleIsExactAndKeepsItsNurbs) {
 }
 
 TEST(JobJsonNurbs, EqualWeightsMeanAPolynomialCurve) {
-  const Job job = parse_job(job_with(R"({"type": "bspline", "degree": 3, "points": [[0,0],[10,20],[30,20],[40,0],[60,10]],
+  const Job job =
+      parse_job(job_with(R"({"type": "bspline", "degree": 3, "points": [[0,0],[10,20],[30,20],[40,0],[60,10]],
       "weights": [2,2,2,2,2], "knots": [0,0,0,0,0.5,1,1,1,1]})"),
-                            "t.json");
+                "t.json");
   const CurveGeometry& g = job.entities[0].curve;
   EXPECT_FALSE(g.rational());
   EXPECT_EQ(g.pieces.size(), 2u);
@@ -105,18 +105,22 @@ TEST(JobJsonNurbs, PathOfBezierAndBsplineSegments) {
 
 TEST(JobJsonNurbs, ErrorsNameTheJsonPath) {
   // The example of the brief: the knot at index 7 decreases.
-  auto e = refusal(job_with(kLine + "," + kLine + "," +
-                            R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0],[3,1],[4,0],[5,1],[6,0],[7,1]],
+  auto e =
+      refusal(job_with(kLine + "," + kLine + "," +
+                       R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0],[3,1],[4,0],[5,1],[6,0],[7,1]],
                                 "knots": [0,0,0,0.1,0.2,0.3,0.5,0.25,1,1,1]})"));
-  EXPECT_EQ(std::string(e.what()), "t.json: entities[2].knots[7]: expected a knot >= 0.5 (knots must not decrease), found 0.25");
+  EXPECT_EQ(std::string(e.what()),
+            "t.json: entities[2].knots[7]: expected a knot >= 0.5 (knots must not decrease), found 0.25");
   EXPECT_EQ(e.id(), "curve.knot-order");
-  e = refusal(job_with(R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1, 1, 0], "knots": [0,0,0,1,1,1]})"));
+  e = refusal(job_with(
+      R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1, 1, 0], "knots": [0,0,0,1,1,1]})"));
   EXPECT_EQ(std::string(e.what()), "t.json: entities[0].weights[2]: expected a finite weight > 0, found 0");
   e = refusal(job_with(R"({"type": "bspline", "degree": 2, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,1,1,1]})"));
   EXPECT_EQ(std::string(e.what()), "t.json: entities[0].knots: expected 6 knots (3 points + degree 2 + 1), found 5");
   e = refusal(job_with(R"({"type": "bspline", "degree": 3, "points": [[0,0],[1,1],[2,0]], "knots": [0,0,0,0,1,1,1]})"));
-  EXPECT_EQ(std::string(e.what()), "t.json: entities[0].degree: a curve of degree 3 needs at least 4 control points, "
-                                   "found 3; lower the degree or add points");
+  EXPECT_EQ(std::string(e.what()),
+            "t.json: entities[0].degree: a curve of degree 3 needs at least 4 control points, "
+            "found 3; lower the degree or add points");
   e = refusal(job_with(R"({"type": "bspline", "degree": 1.5, "points": [[0,0],[1,1]], "knots": [0,0,1,1]})"));
   EXPECT_EQ(std::string(e.what()), "t.json: entities[0].degree: expected an integer, found 1.5");
   e = refusal(job_with(R"({"type": "bspline", "degree": 1, "points": [[0,0],[1,1]]})"));
@@ -157,8 +161,12 @@ TEST(JobJsonNurbs, InterpolateCubicSplineClosedAndLagrange) {
   // A step through one polynomial overshoots; the warning gives the amount.
   ASSERT_EQ(job.warnings.size(), 1u);
   const std::string& w = job.warnings[0];
-  EXPECT_EQ(w.rfind("t.json: entities[3]: the Lagrange polynomial through these 11 points leaves their bounding box by ", 0), 0u) << w;
-  EXPECT_NE(w.find("(one polynomial through many points oscillates between them); method \"cubic-spline\" stays close to the points"),
+  EXPECT_EQ(
+      w.rfind("t.json: entities[3]: the Lagrange polynomial through these 11 points leaves their bounding box by ", 0),
+      0u)
+      << w;
+  EXPECT_NE(w.find("(one polynomial through many points oscillates between them); method \"cubic-spline\" stays close "
+                   "to the points"),
             std::string::npos)
       << w;
 }
@@ -173,10 +181,12 @@ TEST(JobJsonNurbs, InterpolateErrors) {
   EXPECT_EQ(std::string(e.what()),
             "t.json: entities[0].method: expected \"cubic-spline\", \"hermite\" or \"lagrange\", found the string "
             "\"akima\"");
-  e = refusal(job_with(R"({"type": "interpolate", "method": "lagrange", "closed": true, "through": [[0,0],[1,1],[2,0]]})"));
+  e = refusal(
+      job_with(R"({"type": "interpolate", "method": "lagrange", "closed": true, "through": [[0,0],[1,1],[2,0]]})"));
   EXPECT_EQ(e.where(), "t.json: entities[0].closed");
   e = refusal(job_with(R"({"type": "interpolate", "through": [[0,0]]})"));
   EXPECT_EQ(e.where(), "t.json: entities[0].through");
   e = refusal(job_with(R"({"type": "interpolate", "closed": true, "through": [[0,0],[1,1],[0,0]]})"));
-  EXPECT_EQ(std::string(e.what()), "t.json: entities[0].through: a closed spline needs at least 3 distinct points, found 2");
+  EXPECT_EQ(std::string(e.what()),
+            "t.json: entities[0].through: a closed spline needs at least 3 distinct points, found 2");
 }

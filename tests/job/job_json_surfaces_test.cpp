@@ -6,8 +6,8 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
-#include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
 
 namespace bezcam {
 namespace {
@@ -43,7 +43,8 @@ TEST(JobJsonSurfaces, BezierPatchWithToolpath) {
   EXPECT_EQ(*e.toolpath.stepover, 2.5);
   EXPECT_NEAR(evaluate(*e.surface, 0.5, 0.5).z, 7.5, 1e-12);  // sum of B(2,i)(1/2) B(2,j)(1/2) z_ij
   // Defaults: zigzag along u, no stepover (asked for when cutting).
-  const Job d = parse_job(job(R"({"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,1]]]})"), "t.json");
+  const Job d =
+      parse_job(job(R"({"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,1]]]})"), "t.json");
   EXPECT_EQ(d.entities[0].toolpath.pattern, "zigzag");
   EXPECT_EQ(d.entities[0].toolpath.direction, 'u');
   EXPECT_FALSE(d.entities[0].toolpath.stepover);
@@ -61,8 +62,8 @@ TEST(JobJsonSurfaces, PatchRefusalsNameThePlace) {
   const std::string one_row = refusal(job(R"({"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]]]})"));
   EXPECT_EQ(one_row.substr(0, 49), "t.json: entities[0].points: expected an array of ") << one_row;
   EXPECT_NE(one_row.find("at least 2"), std::string::npos) << one_row;
-  const std::string bad_tp = refusal(
-      job(R"({"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]], "toolpath": {"pattern": "spiral"}})"));
+  const std::string bad_tp = refusal(job(
+      R"({"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]], "toolpath": {"pattern": "spiral"}})"));
   EXPECT_EQ(bad_tp.substr(0, 38), "t.json: entities[0].toolpath.pattern: ") << bad_tp;
   EXPECT_NE(bad_tp.find("\"zigzag\", \"raster\" or \"boundary\""), std::string::npos);
   EXPECT_EQ(refusal(job(R"({"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]],
@@ -96,8 +97,8 @@ TEST(JobJsonSurfaces, CoonsPatchUsesTheBsplineKnotsAsItsParameter) {
   EXPECT_EQ(cp.blend, CoonsBlend::quintic);
   EXPECT_EQ(s.grid.ubreaks, (std::vector<double>{0, 0.4, 1}));
   // S(u,1) is the B-spline at its own parameter u (knots 0 .. 1).
-  const NurbsCurve b = NurbsCurve::make(
-      3, {{0, 150, 10}, {50, 165, 22}, {100, 140, 26}, {150, 160, 18}, {200, 150, 4}}, {0, 0, 0, 0, 0.4, 1, 1, 1, 1}, {}, 3);
+  const NurbsCurve b = NurbsCurve::make(3, {{0, 150, 10}, {50, 165, 22}, {100, 140, 26}, {150, 160, 18}, {200, 150, 4}},
+                                        {0, 0, 0, 0, 0.4, 1, 1, 1, 1}, {}, 3);
   for (double u : {0.0, 0.1, 0.4, 0.65, 1.0}) EXPECT_LE(dist(evaluate(s, u, 1), evaluate(b, u)), 1e-11) << u;
 }
 
@@ -158,9 +159,11 @@ TEST(JobJsonSurfaces, CurveOnSurfaceRefusals) {
   EXPECT_EQ(refusal(job(std::string(kPatch) + R"(, {"type": "curve_on_surface", "surface": "q", )" + c + "}")),
             "t.json: entities[1].surface: expected the id of a bezier_patch or coons_patch entity, found \"q\", "
             "which no entity has");
-  EXPECT_EQ(refusal(job(R"({"id": "a", "type": "bezier", "points": [[0,0],[1,1]]}, {"type": "curve_on_surface",
-                           "surface": "a", )" + c + "}")),
-            "t.json: entities[1].surface: expected the id of a bezier_patch or coons_patch entity, found \"a\", a bezier");
+  EXPECT_EQ(
+      refusal(job(R"({"id": "a", "type": "bezier", "points": [[0,0],[1,1]]}, {"type": "curve_on_surface",
+                           "surface": "a", )" +
+                  c + "}")),
+      "t.json: entities[1].surface: expected the id of a bezier_patch or coons_patch entity, found \"a\", a bezier");
   EXPECT_EQ(refusal(job(std::string(kPatch) + R"(, {"type": "curve_on_surface", "surface": "p",
                            "curve": {"type": "bezier", "points": [[0.1,0.1],[1.2,0.5],[0.9,0.9]]}})")),
             "t.json: entities[1].curve: expected a curve in the patch's parameter square [0,1]^2 (u, v), found a "

@@ -1,14 +1,13 @@
 // Reading jobs: every rule of docs/job-format.md, errors that name the JSON path,
 // expected and found, and the refusal of unknown keys.
-#include "bezcam/job/job.hpp"
+#include "bezcam/job/job_json.hpp"
 
 #include <gtest/gtest.h>
+#include <tuple>
 
 #include "bezcam/error.hpp"
-#include "bezcam/job/job_json.hpp"
+#include "bezcam/job/job.hpp"
 #include "bezcam/job/keys.hpp"
-
-#include <tuple>
 
 using namespace bezcam;
 
@@ -48,7 +47,8 @@ TEST(JobJson, ReadsTheSpecExample) {
 }
 
 TEST(JobJson, DefaultsAndInchJobs) {
-  const Job j = parse_job(R"({"bezcam": 1, "units": "inch", "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "x");
+  const Job j =
+      parse_job(R"({"bezcam": 1, "units": "inch", "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "x");
   EXPECT_EQ(j.units, Units::inch);
   EXPECT_NEAR(j.tolerance, 0.01 / 25.4, 1e-15);  // 0.01 mm expressed in inches
   EXPECT_EQ(j.entities[0].label(), "entities[0]");
@@ -64,15 +64,19 @@ TEST(JobJson, ErrorsNameThePathExpectedAndFound) {
   EXPECT_EQ(error_of(wrap(R"({"type": "bezier", "points": [[0,0],[1,1]], "weights": [1, 0]})")),
             "job.json: entities[0].weights[1]: expected a finite weight > 0, found 0");
   EXPECT_EQ(error_of(wrap(R"({"type": "spiral"})")).substr(0, 40), "job.json: entities[0].type: expected one");
-  EXPECT_NE(error_of(R"({"bezcam": 2, "entities": []})").find("bezcam: expected format version 1, found 2"), std::string::npos);
-  EXPECT_NE(error_of(R"({"entities": []})").find("bezcam"), std::string::npos);
-  EXPECT_NE(error_of(R"({"bezcam": 1, "tolerance": 0, "entities": []})").find("tolerance: expected a number > 0, found 0"),
+  EXPECT_NE(error_of(R"({"bezcam": 2, "entities": []})").find("bezcam: expected format version 1, found 2"),
             std::string::npos);
+  EXPECT_NE(error_of(R"({"entities": []})").find("bezcam"), std::string::npos);
+  EXPECT_NE(
+      error_of(R"({"bezcam": 1, "tolerance": 0, "entities": []})").find("tolerance: expected a number > 0, found 0"),
+      std::string::npos);
   EXPECT_NE(error_of(R"({"bezcam": 1, "units": "cm", "entities": []})").find("units: expected \"mm\" or \"inch\""),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"bezcam": 1, "job": {"safe_z": 1, "cut_z": 2}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})")
-                .find("job.cut_z: expected cut_z below safe_z"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(
+          R"({"bezcam": 1, "job": {"safe_z": 1, "cut_z": 2}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})")
+          .find("job.cut_z: expected cut_z below safe_z"),
+      std::string::npos);
   EXPECT_NE(error_of("[1, 2]").find("expected a JSON object"), std::string::npos);
   // Syntax errors give line and column.
   const std::string syn = error_of("{\n  \"bezcam\": 1,\n  \"entities\": [,]\n}");
@@ -89,8 +93,9 @@ TEST(JobJson, UnknownKeysAreRefusedWithTheirPath) {
     ADD_FAILURE() << "accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.id(), "job.unknown-key");
-    EXPECT_EQ(std::string(e.what()), "w.json: colour: unknown key \"colour\" (a key bezcam does not know is refused: it "
-                                     "would otherwise be ignored; keys of your own start with \"x-\")");
+    EXPECT_EQ(std::string(e.what()),
+              "w.json: colour: unknown key \"colour\" (a key bezcam does not know is refused: it "
+              "would otherwise be ignored; keys of your own start with \"x-\")");
     ASSERT_EQ(e.more().size(), 2u) << e.what();
     EXPECT_EQ(e.more()[0].where(), "w.json: job.stock");
     EXPECT_NE(std::string(e.more()[0].what()).find("did you mean \"stock_to_leave\"?"), std::string::npos)
@@ -102,9 +107,12 @@ TEST(JobJson, UnknownKeysAreRefusedWithTheirPath) {
 TEST(JobJson, AWordForAKeyNamesTheKey) {
   // `depth` is not a key: the depth of a cut is cut_z.
   for (const auto& [text, where, meant] : std::vector<std::tuple<std::string, std::string, std::string>>{
-           {R"({"bezcam": 1, "job": {"depth": -6}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "job.depth", "cut_z"},
-           {R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "diameter": 6}]})", "entities[0].diameter", "tool_diameter"},
-           {R"({"bezcam": 1, "job": {"rpm": 9000}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "job.rpm", "spindle_rpm"}}) {
+           {R"({"bezcam": 1, "job": {"depth": -6}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})",
+            "job.depth", "cut_z"},
+           {R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "diameter": 6}]})",
+            "entities[0].diameter", "tool_diameter"},
+           {R"({"bezcam": 1, "job": {"rpm": 9000}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})",
+            "job.rpm", "spindle_rpm"}}) {
     try {
       parse_job(text, "t.json");
       ADD_FAILURE() << "accepted " << text;
@@ -133,12 +141,18 @@ TEST(JobJson, OrderIsTheJobsNotAnEntitys) {
 
 TEST(JobJson, LikelyTyposAreRefusedNamingTheKeyTheyResemble) {
   // A misspelt key must never cut at the default (spec "Errors").
-  for (const auto& [text, where, like] : std::vector<std::tuple<std::string, std::string, std::string>>{
-           {R"({"bezcam": 1, "tolerence": 0.001, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "tolerence", "tolerance"},
-           {R"({"bezcam": 1, "Tolerance": 0.001, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "Tolerance", "tolerance"},
-           {R"({"bezcam": 1, "job": {"cutz": -1}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})", "job.cutz", "cut_z"},
-           {R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "plunge_fed": 3}]})", "entities[0].plunge_fed", "plunge_feed"},
-           {R"({"bezcam": 1, "entities": [{"type": "bspline", "degree": 1, "points": [[0,0],[1,1]], "knot": [0,0,1,1]}]})", "entities[0].knot", "knots"}}) {
+  for (
+      const auto& [text, where, like] : std::vector<std::tuple<std::string, std::string, std::string>>{
+          {R"({"bezcam": 1, "tolerence": 0.001, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})",
+           "tolerence", "tolerance"},
+          {R"({"bezcam": 1, "Tolerance": 0.001, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})",
+           "Tolerance", "tolerance"},
+          {R"({"bezcam": 1, "job": {"cutz": -1}, "entities": [{"type": "bezier", "points": [[0,0],[1,1]]}]})",
+           "job.cutz", "cut_z"},
+          {R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[0,0],[1,1]], "plunge_fed": 3}]})",
+           "entities[0].plunge_fed", "plunge_feed"},
+          {R"({"bezcam": 1, "entities": [{"type": "bspline", "degree": 1, "points": [[0,0],[1,1]], "knot": [0,0,1,1]}]})",
+           "entities[0].knot", "knots"}}) {
     try {
       parse_job(text, "t.json");
       ADD_FAILURE() << "accepted " << text;
@@ -192,9 +206,10 @@ TEST(Keys, AnUnknownKeyNamesTheKeyItIsTakenFor) {
   EXPECT_TRUE(u.typo);
   // A word names its key only where that key is known.
   EXPECT_FALSE(unknown_key("stock", known).meant);
-  EXPECT_EQ(unknown_key("cont", std::vector<std::string_view>{"count"}, "tabs.").message,
-            "unknown key \"tabs.cont\": did you mean \"tabs.count\"? (a misspelt key is refused: it would otherwise take "
-            "the default)");
+  EXPECT_EQ(
+      unknown_key("cont", std::vector<std::string_view>{"count"}, "tabs.").message,
+      "unknown key \"tabs.cont\": did you mean \"tabs.count\"? (a misspelt key is refused: it would otherwise take "
+      "the default)");
   EXPECT_TRUE(user_key("x-anything"));
   EXPECT_FALSE(user_key("xfeed"));
 }
@@ -214,13 +229,16 @@ TEST(JobJson, PathJointsAndContinuity) {
   // (4,1)->(4,2) then (4,2)->(4,3): tangents 3*(0,1) and 2*(0,1): G1.
   EXPECT_EQ(g.joints[1], Continuity::G1);
   EXPECT_EQ(g.joints[2], Continuity::C0);  // closing corner
-  EXPECT_NE(error_of(wrap(R"({"type": "path", "segments": [
+  EXPECT_NE(
+      error_of(wrap(R"({"type": "path", "segments": [
       {"type": "bezier", "points": [[0,0],[1,1]]}, {"type": "bezier", "points": [[1,1.001],[2,2]]}]})"))
-                .find("entities[0].segments[1]: expected to start where segments[0] ends (1, 1), found a start at (1, 1.001)"),
-            std::string::npos);
-  EXPECT_NE(error_of(wrap(R"({"type": "path", "closed": true, "segments": [{"type": "bezier", "points": [[0,0],[1,1]]}]})"))
-                .find("marked closed"),
-            std::string::npos);
+          .find(
+              "entities[0].segments[1]: expected to start where segments[0] ends (1, 1), found a start at (1, 1.001)"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of(wrap(R"({"type": "path", "closed": true, "segments": [{"type": "bezier", "points": [[0,0],[1,1]]}]})"))
+          .find("marked closed"),
+      std::string::npos);
 }
 
 TEST(JobJson, ContinuityLevels) {

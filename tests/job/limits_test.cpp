@@ -2,16 +2,16 @@
 // just over a limit is refused with an error naming the place, and refused
 // quickly (the time check is ctest's TIMEOUT for *Limits* tests, set in
 // CMakeLists.txt, not an assertion); inputs at the limit are read.
-#include <fcntl.h>
-#include <gtest/gtest.h>
-#include <unistd.h>
+#include "bezcam/limits.hpp"
 
+#include <fcntl.h>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <string>
+#include <unistd.h>
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
-#include "bezcam/limits.hpp"
 #include "bezcam/job/job_json.hpp"
 
 using namespace bezcam;
@@ -77,7 +77,8 @@ TEST(Limits, AJobFileOverTheSizeLimitIsRefusedBeforeItIsRead) {
 
 TEST(Limits, EntitiesPerJob) {
   std::string many;
-  for (size_t i = 0; i < kMaxEntities; ++i) many += std::string(i ? "," : "") + R"({"type":"bezier","points":[[0,0],[1,1]]})";
+  for (size_t i = 0; i < kMaxEntities; ++i)
+    many += std::string(i ? "," : "") + R"({"type":"bezier","points":[[0,0],[1,1]]})";
   EXPECT_EQ(parse_job(job(many), "job.json").entities.size(), kMaxEntities);  // at the limit: read
   const Refusal r = refusal_of(job(many + R"(,{"type":"bezier","points":[[0,0],[1,1]]})"));
   EXPECT_EQ(r.id, "limit.entities");

@@ -50,7 +50,8 @@ TEST(Settings, ValuesAreJsonWhereTheyReadAsJson) {
 }
 
 TEST(Settings, AnObjectMergesIntoTheKeysGivenBefore) {
-  const SettingsJson j = settings_json(Settings{{"lead.radius", "4"}, {"lead", R"({"length": 2})"}, {"feed", "500"}, {"feed", "600"}});
+  const SettingsJson j =
+      settings_json(Settings{{"lead.radius", "4"}, {"lead", R"({"length": 2})"}, {"feed", "500"}, {"feed", "600"}});
   EXPECT_EQ(j.job, (Members{{"lead", R"({"radius":4,"length":2})"}, {"feed", "600"}}));
 }
 
@@ -58,13 +59,15 @@ TEST(Settings, AnUnknownKeyIsAUsageErrorNamingTheKeyMeant) {
   InputError e = refused({{"depth", "-6"}});
   EXPECT_EQ(e.id(), "usage.setting");
   EXPECT_EQ(e.where(), "settings.depth");
-  EXPECT_EQ(e.message(), "unknown key \"depth\": did you mean \"cut_z\"? (a key bezcam does not know is refused: it "
-                         "would otherwise be ignored)");
+  EXPECT_EQ(e.message(),
+            "unknown key \"depth\": did you mean \"cut_z\"? (a key bezcam does not know is refused: it "
+            "would otherwise be ignored)");
   e = refused({{"cutz", "-1"}});
   EXPECT_NE(e.message().find("did you mean \"cut_z\"? (a misspelt key"), std::string::npos) << e.message();
   e = refused({{"tabs.cont", "4"}});
   EXPECT_EQ(e.where(), "settings.tabs.cont");
-  EXPECT_NE(e.message().find("unknown key \"tabs.cont\": did you mean \"tabs.count\"?"), std::string::npos) << e.message();
+  EXPECT_NE(e.message().find("unknown key \"tabs.cont\": did you mean \"tabs.count\"?"), std::string::npos)
+      << e.message();
   e = refused({{"colour", "red"}});
   EXPECT_NE(e.message().find("keys of your own start with \"x-\""), std::string::npos) << e.message();
   e = refused({{"entities", "[]"}});
@@ -85,9 +88,13 @@ TEST(Settings, AValueThatStartsAsJsonMustBeJson) {
 }
 
 TEST(Settings, TheJobReaderTakesWhatTheyMake) {
-  const SettingsJson s = settings_json(Settings{{"tabs.count", "4"}, {"tabs.width", "5"}, {"tabs.height", "1.5"},
-                                                {"lead", R"({"radius":4,"length":2})"}, {"side", "outside"},
-                                                {"tool_diameter", "6"}, {"units", "inch"}});
+  const SettingsJson s = settings_json(Settings{{"tabs.count", "4"},
+                                                {"tabs.width", "5"},
+                                                {"tabs.height", "1.5"},
+                                                {"lead", R"({"radius":4,"length":2})"},
+                                                {"side", "outside"},
+                                                {"tool_diameter", "6"},
+                                                {"units", "inch"}});
   std::string text = R"({"bezcam": 1, )";
   for (const auto& [k, v] : s.top) text += "\"" + k + "\": " + v + ", ";
   text += R"("job": {)";

@@ -18,9 +18,9 @@ namespace {
 std::string square(const std::string& id, double x, const std::string& more = "") {
   const auto n = [](double v) { return std::to_string(v); };
   return R"({"id": ")" + id + R"(", "type": "path", "closed": true, "side": "inside")" + more + R"(, "segments": [
-      {"type": "bezier", "points": [[)" + n(x) + "," + n(0) + "],[" + n(x + 20) + ",0]]}," +
-         R"({"type": "bezier", "points": [[)" + n(x + 20) + ",0],[" + n(x + 20) + ",20]]}," +
-         R"({"type": "bezier", "points": [[)" + n(x + 20) + ",20],[" + n(x) + ",20]]}," +
+      {"type": "bezier", "points": [[)" +
+         n(x) + "," + n(0) + "],[" + n(x + 20) + ",0]]}," + R"({"type": "bezier", "points": [[)" + n(x + 20) + ",0],[" +
+         n(x + 20) + ",20]]}," + R"({"type": "bezier", "points": [[)" + n(x + 20) + ",20],[" + n(x) + ",20]]}," +
          R"({"type": "bezier", "points": [[)" + n(x) + ",20],[" + n(x) + ",0]]}]}";
 }
 
@@ -44,16 +44,17 @@ TEST(JobTools, OneToolNumberGivenTwoDiametersIsRefusedNamingBoth) {
   });
   EXPECT_EQ(e.id(), "job.tool");
   EXPECT_EQ(e.where(), "flange.json: entities[1]");
-  EXPECT_EQ(e.message(), "tool 1 is given two diameters: 3 mm for bolt (entities[0].tool_diameter) and 6 mm for "
-                         "outline (job.tool_diameter); one tool number is one tool, and whichever is loaded cuts one "
-                         "of them wrong: give each its own \"tool\" number, or both one diameter");
+  EXPECT_EQ(e.message(),
+            "tool 1 is given two diameters: 3 mm for bolt (entities[0].tool_diameter) and 6 mm for "
+            "outline (job.tool_diameter); one tool number is one tool, and whichever is loaded cuts one "
+            "of them wrong: give each its own \"tool\" number, or both one diameter");
 }
 
 TEST(JobTools, EachToolHasItsDiameterAndShape) {
-  const Job j = parse_job(job_of(R"(, "tool": 1, "tool_diameter": 6)",
-                                 square("bolt", 0, R"(, "tool": 2, "tool_diameter": 3)") + "," + square("bore", 40) +
-                                     "," + square("outline", 80)),
-                          "flange.json");
+  const Job j = parse_job(
+      job_of(R"(, "tool": 1, "tool_diameter": 6)", square("bolt", 0, R"(, "tool": 2, "tool_diameter": 3)") + "," +
+                                                       square("bore", 40) + "," + square("outline", 80)),
+      "flange.json");
   const std::vector<JobTool> t = job_tools(j);
   ASSERT_EQ(t.size(), 2u);
   EXPECT_EQ(t[0].number, 2);
@@ -77,8 +78,8 @@ TEST(JobTools, ASurfaceCutWithARadiusMakesABallEnd) {
   EXPECT_EQ(t[0].diameter, 6);
   EXPECT_EQ(t[0].shape, ToolShape::ball);
   const InputError e = refusal_of([] {
-    parse_job(job_of(R"(, "tool": 1, "tool_radius": 3)", std::string(kPatch) + "}," +
-                                                              square("edge", 40, R"(, "tool_diameter": 8)")),
+    parse_job(job_of(R"(, "tool": 1, "tool_radius": 3)",
+                     std::string(kPatch) + "}," + square("edge", 40, R"(, "tool_diameter": 8)")),
               "d.json");
   });
   EXPECT_EQ(e.id(), "job.tool");
@@ -88,9 +89,8 @@ TEST(JobTools, ASurfaceCutWithARadiusMakesABallEnd) {
             0u)
       << e.message();
   // A tip that follows the surface (tool_radius 0) gives no diameter.
-  EXPECT_NO_THROW(parse_job(job_of(R"(, "tool": 1)", std::string(kPatch) + "}," +
-                                                         square("edge", 40, R"(, "tool_diameter": 8)")),
-                            "d.json"));
+  EXPECT_NO_THROW(parse_job(
+      job_of(R"(, "tool": 1)", std::string(kPatch) + "}," + square("edge", 40, R"(, "tool_diameter": 8)")), "d.json"));
 }
 
 TEST(JobTools, TheMachinesDefaultToolIsOneOfTheNumbers) {

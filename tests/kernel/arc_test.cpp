@@ -2,9 +2,8 @@
 // path, the XY extent and the exact rational quadratic pieces.
 #include "bezcam/kernel/arc.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 
 using namespace bezcam;

@@ -4,7 +4,6 @@
 #include "bezcam/kernel/bezier_patch.hpp"
 
 #include <gtest/gtest.h>
-
 #include <random>
 
 #include "bezcam/error.hpp"
@@ -208,9 +207,7 @@ TEST(BezierPatch, ValidationNamesThePlace) {
   EXPECT_EQ(w2.substr(0, 13), "weights[1][0]");
   const std::string w3 = where([] { BezierPatch::make({{{0, 0, 0}, {1, 0, 0}}}); });
   EXPECT_NE(w3.find("at least 2 rows"), std::string::npos);
-  const std::string w4 = where([] {
-    BezierPatch::make({{{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {1, NAN, 0}}});
-  });
+  const std::string w4 = where([] { BezierPatch::make({{{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {1, NAN, 0}}}); });
   EXPECT_EQ(w4.substr(0, 12), "points[1][1]");
   // Equal weights: a polynomial patch.
   EXPECT_FALSE(BezierPatch::make({{{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {1, 1, 0}}}, {{2, 2}, {2, 2}}).rational());

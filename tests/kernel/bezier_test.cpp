@@ -2,10 +2,9 @@
 // its five forms on seeded random curves up to degree 20.
 #include "bezcam/kernel/bezier.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -60,9 +59,9 @@ TEST(Bezier, FiveFormsAgreeOnRandomCurvesUpToDegree20) {
       const Bezier b = random_bezier(rng, degree, dim, false);
       const auto power = power_coefficients(b);
       for (double t : {0.0, 0.1, 0.25, 1.0 / 3, 0.5, 0.77, 0.9, 1.0}) {
-        const Vec3 m = evaluate(b, t);                      // 2. de Casteljau
-        expect_near(evaluate_bernstein(b, t), m, 1e-9);     // 1. Bernstein sum
-        expect_near(evaluate_durand(b, t), m, 1e-9);        // 5. f-functions
+        const Vec3 m = evaluate(b, t);                   // 2. de Casteljau
+        expect_near(evaluate_bernstein(b, t), m, 1e-9);  // 1. Bernstein sum
+        expect_near(evaluate_durand(b, t), m, 1e-9);     // 5. f-functions
         // 4. power form loses precision with degree (cancellation of large
         // binomial terms): allow for it, as the digest warns.
         expect_near(evaluate_power(power, t), m, degree <= 10 ? 1e-7 : 1e-1);
@@ -128,7 +127,8 @@ TEST(Bezier, DigestMatrixFormsAndExpandedCubic) {
       r += P[i] * c;
     }
     expect_near(r, evaluate(semicircle, t), 1e-13);
-    const Vec3 expanded = A + 3 * (B - A) * t + 3 * (A - 2 * B + C) * (t * t) + (-1 * A + 3 * B - 3 * C + D) * (t * t * t);
+    const Vec3 expanded =
+        A + 3 * (B - A) * t + 3 * (A - 2 * B + C) * (t * t) + (-1 * A + 3 * B - 3 * C + D) * (t * t * t);
     expect_near(expanded, evaluate(semicircle, t), 1e-13);
   }
   // Quadratic matrix [[1,-2,1],[-2,2,0],[1,0,0]] with [t^2, t, 1].
@@ -218,7 +218,8 @@ TEST(Bezier, ExercisePolygonsShowCuspsAndInflections) {
 TEST(Bezier, QuadraticIsAParabolaArc) {
   // Constant second derivative: 2 (P0 - 2 P1 + P2).
   const Bezier q = Bezier::make({{0, 0}, {2, 0}, {1, 1}});
-  for (double t = 0; t <= 1; t += 0.1) expect_near(second_derivative(q, t), 2 * (q.points[0] - 2 * q.points[1] + q.points[2]), 1e-13);
+  for (double t = 0; t <= 1; t += 0.1)
+    expect_near(second_derivative(q, t), 2 * (q.points[0] - 2 * q.points[1] + q.points[2]), 1e-13);
 }
 
 TEST(Bezier, DegreeElevationKeepsTheCurve) {
@@ -302,7 +303,8 @@ TEST(Bezier, FactoryRefusesBadInputNamingTheIndex) {
   expect_error([] { Bezier::make({{0, 0}, {1, 1}}, {1, 0}); }, "curve.weight", "weights[1]");
   expect_error([] { Bezier::make({{0, 0}, {1, 1}}, {1, -2}); }, "curve.weight", "weights[1]");
   expect_error([] { Bezier::make({{0, 0}, {1, 1}}, {1}); }, "curve.weights-count", "weights");
-  expect_error([] { Bezier::make(std::vector<Vec3>(kMaxBezierDegree + 2, Vec3{})); }, "curve.degree-too-high", "points");
+  expect_error([] { Bezier::make(std::vector<Vec3>(kMaxBezierDegree + 2, Vec3{})); }, "curve.degree-too-high",
+               "points");
   // Equal weights are a polynomial curve.
   EXPECT_FALSE(Bezier::make({{0, 0}, {1, 1}}, {2, 2}).rational());
 }
@@ -317,8 +319,9 @@ TEST(Bezier, InflectionsOfPlanarCubics) {
   EXPECT_TRUE(inflections(Bezier::make({{0, 0}, {1, 0}, {2, 0}, {3, 0}})).empty());
   // The inflections, ascending, where the curvature changes sign (read
   // from the sign of M' x M'' on either side), and nowhere else.
-  for (const Bezier& b : {Bezier::make({{0, 0}, {4, 4}, {-1, 4}, {3, 0}}), Bezier::make({{0, 0}, {10, 10}, {20, -10}, {30, 0}}),
-                          Bezier::make({{0, 0}, {2, 2}, {1, 0}, {3, 1}}), Bezier::make({{0, 0}, {3, 5}, {0, -5}, {3, 0}})}) {
+  for (const Bezier& b :
+       {Bezier::make({{0, 0}, {4, 4}, {-1, 4}, {3, 0}}), Bezier::make({{0, 0}, {10, 10}, {20, -10}, {30, 0}}),
+        Bezier::make({{0, 0}, {2, 2}, {1, 0}, {3, 1}}), Bezier::make({{0, 0}, {3, 5}, {0, -5}, {3, 0}})}) {
     const std::vector<double> t = inflections(b);
     auto turn = [&](double s) { return cross(derivative(b, s), second_derivative(b, s)).z; };
     int changes = 0;

@@ -4,7 +4,6 @@
 #include "bezcam/kernel/coons_patch.hpp"
 
 #include <gtest/gtest.h>
-
 #include <random>
 
 #include "bezcam/error.hpp"
@@ -55,10 +54,10 @@ TEST(CoonsPatch, ReproducesItsFourBoundaries) {
 
 TEST(CoonsPatch, LinearBlendOfStraightEdgesIsTheBilinearSurface) {
   const Vec3 p00{0, 0, 1}, p10{10, 1, 3}, p01{-1, 8, 2}, p11{12, 9, -4};
-  const CoonsPatch s = CoonsPatch::make(
-      BoundaryCurve::make({fixtures::line3(p00, p10)}), BoundaryCurve::make({fixtures::line3(p01, p11)}),
-      BoundaryCurve::make({fixtures::line3(p00, p01)}), BoundaryCurve::make({fixtures::line3(p10, p11)}),
-      CoonsBlend::linear);
+  const CoonsPatch s = CoonsPatch::make(BoundaryCurve::make({fixtures::line3(p00, p10)}),
+                                        BoundaryCurve::make({fixtures::line3(p01, p11)}),
+                                        BoundaryCurve::make({fixtures::line3(p00, p01)}),
+                                        BoundaryCurve::make({fixtures::line3(p10, p11)}), CoonsBlend::linear);
   const PatchGrid g = to_bezier_cells(s);
   ASSERT_EQ(g.cells.size(), 1u);
   EXPECT_EQ(g.cells[0].nu, 1);

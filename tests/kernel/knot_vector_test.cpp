@@ -2,9 +2,8 @@
 // basis functions (The NURBS Book A2.1-A2.3).
 #include "bezcam/kernel/knot_vector.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 
 #include "bezcam/error.hpp"
@@ -46,7 +45,8 @@ TEST(KnotVector, DegreeTooHighForThePoints) {
   const auto e = refusal({0, 0, 0, 0, 1, 1, 1}, 3, 3);
   EXPECT_EQ(e.id(), "curve.too-few-points");
   EXPECT_EQ(e.where(), "degree");
-  EXPECT_EQ(e.message(), "a curve of degree 3 needs at least 4 control points, found 3; lower the degree or add points");
+  EXPECT_EQ(e.message(),
+            "a curve of degree 3 needs at least 4 control points, found 3; lower the degree or add points");
   EXPECT_EQ(refusal({0, 1}, 0, 1).id(), "curve.degree");
 }
 
@@ -59,7 +59,8 @@ TEST(KnotVector, NonFiniteKnot) {
 TEST(KnotVector, EmptyDomain) {
   const auto e = refusal({0, 1, 1, 1, 1, 2}, 2, 3);
   EXPECT_EQ(e.id(), "curve.knot-domain");
-  EXPECT_EQ(e.message(), "the curve's domain [knots[2], knots[3]] = [1, 1] is empty; the knots must increase somewhere in between");
+  EXPECT_EQ(e.message(),
+            "the curve's domain [knots[2], knots[3]] = [1, 1] is empty; the knots must increase somewhere in between");
 }
 
 TEST(KnotVector, MultiplicityLimits) {

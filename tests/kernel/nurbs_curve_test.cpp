@@ -3,9 +3,8 @@
 // curve, derivatives match differences), then validation messages.
 #include "bezcam/kernel/nurbs_curve.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <random>
 
@@ -79,7 +78,8 @@ TEST(NurbsCurve, FullCircleLiesOnItsCircle) {
     for (const auto& b : pieces) {
       ASSERT_EQ(b.degree(), 2);
       ASSERT_TRUE(b.rational());
-      for (int i = 0; i <= 1000; ++i) worst_piece = std::max(worst_piece, std::abs(dist(evaluate(b, i / 1000.0), c) - r));
+      for (int i = 0; i <= 1000; ++i)
+        worst_piece = std::max(worst_piece, std::abs(dist(evaluate(b, i / 1000.0), c) - r));
     }
     EXPECT_LE(worst_piece, 1e-12 * std::max(1.0, max_abs(c) + r));
     // End to end.

@@ -4,9 +4,8 @@
 // points and overshooting on a step (Runge's phenomenon), and the refusals.
 #include "bezcam/kernel/spline_interp.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <random>
 
@@ -130,7 +129,8 @@ TEST(SplineInterp, PeriodicSplineIsClosedAndC2AtTheSeam) {
   // everywhere, symmetric (every span bulges alike) and within the
   // h^4 error of cubic interpolation, (5/384) h^4 / R^3 ~ 0.003.
   std::vector<Vec3> p;
-  for (int k = 0; k < 16; ++k) p.push_back({10 * std::cos(k * std::numbers::pi / 8), 10 * std::sin(k * std::numbers::pi / 8)});
+  for (int k = 0; k < 16; ++k)
+    p.push_back({10 * std::cos(k * std::numbers::pi / 8), 10 * std::sin(k * std::numbers::pi / 8)});
   const NurbsCurve c = periodic_cubic_spline(p, 2);
   EXPECT_FALSE(c.clamped());
   const auto pieces = to_bezier(c);
@@ -220,6 +220,7 @@ TEST(SplineInterp, Refusals) {
   for (int k = 0; k < 70; ++k) many.push_back({static_cast<double>(k), std::sin(k)});
   e = refusal([&] { lagrange_polynomial(many, 2); });
   EXPECT_EQ(e.id(), "curve.degree-too-high");
-  EXPECT_EQ(e.message(), "one polynomial through 70 points would have degree 69, above the limit 64; use method "
-                         "\"cubic-spline\"");
+  EXPECT_EQ(e.message(),
+            "one polynomial through 70 points would have degree 69, above the limit 64; use method "
+            "\"cubic-spline\"");
 }

@@ -4,7 +4,6 @@
 #include "bezcam/kernel/surface.hpp"
 
 #include <gtest/gtest.h>
-
 #include <random>
 
 #include "support/surface_fixtures.hpp"
@@ -19,9 +18,8 @@ std::shared_ptr<const SurfaceGeometry> two_by_two() {
   const CoonsPatch c = fixtures::curved_coons(CoonsBlend::quintic);
   auto [a, b] = split(c.v0.pieces[0], 0.4);
   auto [d, e] = split(c.u1.pieces[0], 0.7);
-  return SurfaceGeometry::make(
-      CoonsPatch::make(BoundaryCurve::make({a, b}, {0, 0.4, 1}), c.v1, c.u0, BoundaryCurve::make({d, e}, {0, 0.7, 1}),
-                       CoonsBlend::quintic));
+  return SurfaceGeometry::make(CoonsPatch::make(BoundaryCurve::make({a, b}, {0, 0.4, 1}), c.v1, c.u0,
+                                                BoundaryCurve::make({d, e}, {0, 0.7, 1}), CoonsBlend::quintic));
 }
 
 TEST(Surface, NormalPointsUpWhateverTheNetOrder) {

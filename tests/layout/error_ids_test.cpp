@@ -2,10 +2,9 @@
 // constant of include/bezcam/error_ids.hpp, listed once in the docs, used by
 // the sources, and no source throws a string-literal id (the constants are
 // what tools/error_ids_codemod.py writes; this test keeps it that way).
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <map>
 #include <regex>
 #include <set>
@@ -71,7 +70,8 @@ TEST(ErrorIds, EachIdIsListedOnceInTheDocs) {
     dotted.insert(d);
     EXPECT_EQ(listed[d], 1) << d << " must be listed exactly once in docs/errors.md";
   }
-  for (const auto& [d, n] : listed) EXPECT_TRUE(dotted.count(d)) << d << " is listed in docs/errors.md but not declared";
+  for (const auto& [d, n] : listed)
+    EXPECT_TRUE(dotted.count(d)) << d << " is listed in docs/errors.md but not declared";
 }
 
 TEST(ErrorIds, NoSourceThrowsAStringLiteralId) {

@@ -2,10 +2,9 @@
 // include/bezcam/ and src/ may include only the folders below it. This test
 // reads every #include of the library's headers and sources and fails on
 // one that crosses the graph the wrong way, naming the file and line.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <map>
 #include <regex>
 #include <set>
@@ -31,7 +30,9 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"link", {"base"}},
       {"sim", {"base", "kernel", "flatten", "job", "machine", "gcode", "link"}},
       {"import", {"base", "kernel", "flatten", "job"}},
-      {"cli", {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode", "report", "link", "sim", "import", "cli"}},
+      {"cli",
+       {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode", "report", "link", "sim", "import",
+        "cli"}},
   };
   return g;
 }
@@ -112,7 +113,8 @@ TEST(Layout, TheLibraryNamesNoOptionOfTheProgram) {
       std::string line;
       for (int n = 1; std::getline(in, line); ++n) {
         const auto code = line.substr(0, line.find("//"));
-        if (std::regex_search(code, flag_re)) all += std::string(top) + "/" + rel.string() + ":" + std::to_string(n) + ": " + line + "\n";
+        if (std::regex_search(code, flag_re))
+          all += std::string(top) + "/" + rel.string() + ":" + std::to_string(n) + ": " + line + "\n";
       }
     }
   }

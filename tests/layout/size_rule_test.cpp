@@ -4,10 +4,9 @@
 // follows braces: a brace block that opens after a parameter list, at
 // namespace or class scope, is a function body (lambdas and blocks inside
 // it count as part of it).
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <regex>
 #include <sstream>
 #include <string>

@@ -2,7 +2,6 @@
 #include "bezcam/link/crc32.hpp"
 
 #include <gtest/gtest.h>
-
 #include <random>
 #include <string>
 
@@ -21,8 +20,8 @@ TEST(Crc32, IncrementalEqualsWholeForEverySplit) {
   std::string s(1000, '\0');
   for (auto& c : s) c = static_cast<char>(rng() & 0xFF);
   const std::uint32_t whole = crc32(s);
-  for (std::size_t cut : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{500}, std::size_t{999},
-                          std::size_t{1000}}) {
+  for (std::size_t cut :
+       {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{500}, std::size_t{999}, std::size_t{1000}}) {
     Crc32 c;
     c.update(std::string_view(s).substr(0, cut));
     c.update(std::string_view(s).substr(cut));

@@ -3,7 +3,6 @@
 #include "bezcam/link/register_map.hpp"
 
 #include <gtest/gtest.h>
-
 #include <set>
 
 #include "bezcam/link/crc32.hpp"

@@ -4,10 +4,9 @@
 // `status` prints state, machine and buffer; a program the controller's
 // profile would refuse mid-cut is refused before anything is sent. Real
 // processes: the simulated controller and the sender are both `bezcam`.
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <csignal>
+#include <gtest/gtest.h>
 #include <thread>
 
 #include "bezcam/link/register_map.hpp"
@@ -110,7 +109,8 @@ TEST(StopAndStatus, StatusSaysStateMachineAndBuffer) {
   EXPECT_NE(r.out.find("buffer 1024 of 1024 bytes free"), std::string::npos) << r.out;
   EXPECT_EQ(sim.stop(), 0);
   // Nobody there: exit 3.
-  const auto gone = test::run_bezcam({"status", "--to", "127.0.0.1:" + std::to_string(sim.port()), "--timeout", "1"}, dir);
+  const auto gone =
+      test::run_bezcam({"status", "--to", "127.0.0.1:" + std::to_string(sim.port()), "--timeout", "1"}, dir);
   EXPECT_EQ(gone.status, 3) << gone.err;
 }
 
@@ -136,7 +136,8 @@ TEST(StopAndStatus, PreflightRefusesAProgramTheControllersProfileWouldStop) {
   EXPECT_EQ(s.state, State::idle);
   EXPECT_EQ(s.ack_bytes, 0u);
   // --no-preflight sends it: the controller stops at line 5 (exit 4).
-  const auto forced = test::run_bezcam({"stream", prog.string(), "--to", to, "--progress", "off", "--no-preflight"}, dir);
+  const auto forced =
+      test::run_bezcam({"stream", prog.string(), "--to", to, "--progress", "off", "--no-preflight"}, dir);
   EXPECT_EQ(forced.status, 4) << forced.err;
   EXPECT_EQ(status_of(sim.port()).alarm_line, 5u);
   EXPECT_EQ(sim.stop(), 0);

@@ -5,9 +5,8 @@
 // progress lines and fault recovery; SIGTERM flushes the trace.
 #include "bezcam/link/streamer.hpp"
 
-#include <gtest/gtest.h>
-
 #include <chrono>
+#include <gtest/gtest.h>
 
 #include "bezcam/error.hpp"
 #include "bezcam/link/crc32.hpp"
@@ -32,7 +31,8 @@ Status read_status(const Endpoint& ep) {
 
 TEST(Streamer, ARestartedControllerIsDetectedAndNeverResumedInto) {
   test::TempDir dir;
-  auto first = std::make_unique<test::SimProcess>(dir, std::vector<std::string>{"--buffer", "512", "--exec-delay-ms", "1"});
+  auto first =
+      std::make_unique<test::SimProcess>(dir, std::vector<std::string>{"--buffer", "512", "--exec-delay-ms", "1"});
   const std::uint16_t port = first->port();
   std::unique_ptr<test::SimProcess> second;
   const std::string program = test::zigzag_program(400);
@@ -147,9 +147,8 @@ TEST(StreamCommand, ExitCodesAndProgressLines) {
   EXPECT_NE(r.err.find("done, 511 executed"), std::string::npos) << r.err;
 
   // The trace of the streamed program equals `simulate --program` on the file.
-  auto local = test::run_bezcam({"simulate", "--program", (dir / "good.nc").string(), "--trace",
-                                 (dir / "local.trace").string()},
-                                dir);
+  auto local = test::run_bezcam(
+      {"simulate", "--program", (dir / "good.nc").string(), "--trace", (dir / "local.trace").string()}, dir);
   EXPECT_EQ(local.status, 0) << local.err;
   EXPECT_EQ(test::slurp(dir / "listen.trace"), test::slurp(dir / "local.trace"));
 

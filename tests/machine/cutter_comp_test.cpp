@@ -1,11 +1,10 @@
 // Cutter radius compensation (machine/cutter_comp.hpp): the tool-centre path a
 // controller makes of a G41/G42 program. The corner rules are LinuxCNC's;
 // LinuxcncRs274 checks the whole model against LinuxCNC's own interpreter.
-#include <gtest/gtest.h>
+#include "bezcam/machine/cutter_comp.hpp"
 
 #include <cmath>
-
-#include "bezcam/machine/cutter_comp.hpp"
+#include <gtest/gtest.h>
 
 namespace bezcam {
 namespace {
@@ -46,7 +45,8 @@ TEST(CutterComp, OutsideCornerRollsRoundOnAnArcInsideCornerMeetsAtTheCrossing) {
   // the tool inside: the entry's offset x = -1 and the next's y = 1 meet at
   // (-1, 1). Then -Y again: a left turn, the tool outside: an arc round
   // (-10, 0) from (-10, 1) to (-11, 0).
-  const auto out = run(-1, 1, {line({0, 5, 0}, {0, 0, 0}), line({0, 0, 0}, {-10, 0, 0}), line({-10, 0, 0}, {-10, -10, 0})});
+  const auto out =
+      run(-1, 1, {line({0, 5, 0}, {0, 0, 0}), line({0, 0, 0}, {-10, 0, 0}), line({-10, 0, 0}, {-10, -10, 0})});
   ASSERT_EQ(out.size(), 4u);
   expect_near(out[0].from, {0, 5, 0});
   expect_near(out[0].to, {-1, 1, 0});
@@ -65,7 +65,8 @@ TEST(CutterComp, ArcsChangeRadiusByTheToolAndTooTightAnArcIsRefused) {
   ASSERT_EQ(out.size(), 2u);
   expect_near(out[0].to, {3, 0, 0});
   expect_near(out[1].to, {-3, 0, 0});
-  EXPECT_THROW(run(1, 6, {line({5, -9, 0}, {5, 0, 0}), arc({5, 0, 0}, {-5, 0, 0}, {0, 0, 0}, true)}), CompensationError);
+  EXPECT_THROW(run(1, 6, {line({5, -9, 0}, {5, 0, 0}), arc({5, 0, 0}, {-5, 0, 0}, {0, 0, 0}, true)}),
+               CompensationError);
 }
 
 TEST(CutterComp, NearlyStraightJointsAreNotCornersAsInLinuxcnc) {
@@ -103,7 +104,8 @@ TEST(CutterComp, RefusesWhatAControllerRefuses) {
 
 TEST(CutterComp, ZMovesKeepTheToolWhereTheCornerPutsIt) {
   MotionBlock up = line({10, 0, 0}, {10, 0, 2});
-  const auto out = run(1, 1, {line({0, -5, 0}, {0, 0, 0}), line({0, 0, 0}, {10, 0, 0}), up, line({10, 0, 2}, {20, 0, 2})});
+  const auto out =
+      run(1, 1, {line({0, -5, 0}, {0, 0, 0}), line({0, 0, 0}, {10, 0, 0}), up, line({10, 0, 2}, {20, 0, 2})});
   // Entry going +Y, tool left (-X); the +X move turns right: outside,
   // an arc round (0,0) from (-1,0) to (0,1).
   ASSERT_EQ(out.size(), 5u);

@@ -2,12 +2,12 @@
 // bug 7): a misspelt key is refused naming the key it resembles, an unknown
 // placeholder is refused rather than printed literally, and the name is the
 // file's name. Every shipped profile passes.
-#include <gtest/gtest.h>
+#include "bezcam/machine/machine_profile.hpp"
 
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <string>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/job/job_json.hpp"
@@ -68,7 +68,8 @@ TEST(MachineProfile, AnUnknownPlaceholderIsRefused) {
   EXPECT_EQ(e.where(), "p.json: footer[2]");
   e = refusal(R"({"name": "p", "tool_change": "T{tool M06"})");
   EXPECT_EQ(e.where(), "p.json: tool_change");
-  EXPECT_NO_THROW(parse_machine_profile(R"({"name": "p", "tool_change": "T{tool} M06", "spindle_on": "S{rpm} M03"})", "p.json"));
+  EXPECT_NO_THROW(
+      parse_machine_profile(R"({"name": "p", "tool_change": "T{tool} M06", "spindle_on": "S{rpm} M03"})", "p.json"));
 }
 
 TEST(MachineProfile, TheNameIsTheFilesName) {
@@ -94,17 +95,20 @@ bezcam::ConvertResult convert_text(const std::string& job, const char* machine) 
 TEST(MachineProfile, DecimalsComeFromTheTolerance) {
   // 0.0005 mm: generic's 3 decimals would spend 0.00087 in rounding alone;
   // 4 keep it under half the tolerance, and generic accepts up to 6.
-  const auto r = convert_text(R"({"bezcam": 1, "tolerance": 0.0005, "entities": [{"type": "bezier", "points": [[0,0],[10,20],[20,0]]}]})",
-                              "generic");
+  const auto r = convert_text(
+      R"({"bezcam": 1, "tolerance": 0.0005, "entities": [{"type": "bezier", "points": [[0,0],[10,20],[20,0]]}]})",
+      "generic");
   EXPECT_EQ(r.program.decimals, 4);
-  EXPECT_NE(r.gcode.find("(coordinates with 4 decimals for tolerance 0.0005 mm [machine generic: 3 by default, at most 6])"),
-            std::string::npos)
+  EXPECT_NE(
+      r.gcode.find("(coordinates with 4 decimals for tolerance 0.0005 mm [machine generic: 3 by default, at most 6])"),
+      std::string::npos)
       << r.gcode.substr(0, 400);
   EXPECT_NE(r.gcode.find("X0.2248 Y0.4455"), std::string::npos);  // the first vertex after the start, to 4 decimals
   EXPECT_LE(r.program.max_bound, 0.0005);
   // A tolerance the default decimals hold keeps them (no golden changes).
-  const auto d = convert_text(R"({"bezcam": 1, "tolerance": 0.01, "entities": [{"type": "bezier", "points": [[0,0],[10,20],[20,0]]}]})",
-                              "generic");
+  const auto d = convert_text(
+      R"({"bezcam": 1, "tolerance": 0.01, "entities": [{"type": "bezier", "points": [[0,0],[10,20],[20,0]]}]})",
+      "generic");
   EXPECT_EQ(d.program.decimals, 3);
 }
 
@@ -115,11 +119,12 @@ TEST(MachineProfile, MaxDecimalsBelowTheDecimalsIsRefused) {
 
 TEST(MachineProfile, GenericIsNotAMachineAndHasNoTravel) {
   // A part 100 m from the origin is a valid job for generic.
-  const auto r = convert_text(R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[100000,0],[100010,20],[100020,0]]}]})",
-                              "generic");
+  const auto r = convert_text(
+      R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[100000,0],[100010,20],[100020,0]]}]})", "generic");
   EXPECT_NE(r.gcode.find("X100020."), std::string::npos);
   // ... and refused by a machine.
-  EXPECT_THROW(convert_text(R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[100000,0],[100010,20],[100020,0]]}]})",
-                            "fanuc"),
-               InputError);
+  EXPECT_THROW(
+      convert_text(R"({"bezcam": 1, "entities": [{"type": "bezier", "points": [[100000,0],[100010,20],[100020,0]]}]})",
+                   "fanuc"),
+      InputError);
 }

@@ -1,12 +1,12 @@
 // The trajectory planner (machine/planner.hpp): the analytic cases hold exactly,
 // the caps and the look-ahead starve where they must, corners stay within
 // the path tolerance, samples are deterministic and respect the limits.
-#include <gtest/gtest.h>
+#include "bezcam/machine/planner.hpp"
 
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 
-#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/report/motion_report.hpp"
 #include "support/refusal.hpp"
@@ -223,8 +223,7 @@ TEST(Planner, PausesTakeTheirTimeAndStopTheMachine) {
   MotionModel m = model();
   m.tool_change_s = 7;
   m.spindle_start_s = 2;
-  const MotionPlan p =
-      plan(std::string(kHead) + "T2 M6\nS1000 M3\nG1 X100 F3000\nG4 P1.5\nX200\nM30\n", m);
+  const MotionPlan p = plan(std::string(kHead) + "T2 M6\nS1000 M3\nG1 X100 F3000\nG4 P1.5\nX200\nM30\n", m);
   EXPECT_NEAR(p.pause_time_s, 7 + 2 + 1.5, 1e-12);
   // Two separate lines (stopped by the dwell) plus the pauses.
   EXPECT_NEAR(p.cycle_time_s, 10.5 + 2 * (2 + 0.05), 1e-9);
@@ -242,7 +241,7 @@ TEST(Planner, SamplesAreDeterministicAndWithinTheLimits) {
   sample_plan(p, [&](double, const Vec3& q, double feed) {
     const double v = feed / 60;
     if (!first) {
-      EXPECT_LE(dist(prev, q), 50 * 0.001 * (1 + 1e-9));        // never above the feed
+      EXPECT_LE(dist(prev, q), 50 * 0.001 * (1 + 1e-9));           // never above the feed
       EXPECT_LE(std::abs(v - prev_v), 1000 * 0.001 * (1 + 1e-6));  // nor the acceleration
     }
     first = false;

@@ -5,11 +5,10 @@
 // measured is no more than the proven bound, in the JSON report as
 // `convert --report` writes it, and as the text report and the program's
 // header state them.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -43,10 +42,13 @@ std::vector<fs::path> files_in(const fs::path& dir) {
 // settings).
 std::vector<Case> samples() {
   std::vector<Case> out;
-  for (const fs::path& dir : {fs::path(BEZCAM_SOURCE_DIR "/samples"), fs::path(BEZCAM_SOURCE_DIR "/samples/controller-comp")})
+  for (const fs::path& dir :
+       {fs::path(BEZCAM_SOURCE_DIR "/samples"), fs::path(BEZCAM_SOURCE_DIR "/samples/controller-comp")})
     for (const fs::path& f : files_in(dir)) {
-      if (f.extension() == ".json") out.push_back({f.filename().string(), load_job(f)});
-      else if (import::is_drawing(f)) out.push_back({f.filename().string(), import::to_job(import::read_drawing(f))});
+      if (f.extension() == ".json")
+        out.push_back({f.filename().string(), load_job(f)});
+      else if (import::is_drawing(f))
+        out.push_back({f.filename().string(), import::to_job(import::read_drawing(f))});
     }
   return out;
 }
@@ -72,17 +74,21 @@ struct Run {
 };
 // Every profile in every mode; lines and arcs are the same on each
 // profile but for its rounding, NURBS blocks differ (generic has none).
-const std::vector<Run> kEvery{{"generic", OutputMode::lines}, {"generic", OutputMode::arcs}, {"generic", OutputMode::nurbs},
-                              {"fanuc", OutputMode::lines},   {"fanuc", OutputMode::arcs},   {"fanuc", OutputMode::nurbs},
-                              {"linuxcnc", OutputMode::lines}, {"linuxcnc", OutputMode::arcs}, {"linuxcnc", OutputMode::nurbs}};
-const std::vector<Run> kEveryMode{{"generic", OutputMode::lines}, {"generic", OutputMode::arcs},
-                                  {"fanuc", OutputMode::nurbs}, {"linuxcnc", OutputMode::nurbs}};
+const std::vector<Run> kEvery{
+    {"generic", OutputMode::lines},  {"generic", OutputMode::arcs},  {"generic", OutputMode::nurbs},
+    {"fanuc", OutputMode::lines},    {"fanuc", OutputMode::arcs},    {"fanuc", OutputMode::nurbs},
+    {"linuxcnc", OutputMode::lines}, {"linuxcnc", OutputMode::arcs}, {"linuxcnc", OutputMode::nurbs}};
+const std::vector<Run> kEveryMode{{"generic", OutputMode::lines},
+                                  {"generic", OutputMode::arcs},
+                                  {"fanuc", OutputMode::nurbs},
+                                  {"linuxcnc", OutputMode::nurbs}};
 
 // Every "deviation <figure> ... proven bound <figure>" the text states
 // (the report's lines, the program's header comment): the deviation's
 // figure, "below" one included, is never the larger of the two.
 void expect_figures_in_order(const std::string& text, const std::string& what) {
-  static const std::regex pair(R"(deviation (?:measured )?(below )?([-0-9.e+]+) (?:mm|in)[^0-9]*proven bound ([-0-9.e+]+))");
+  static const std::regex pair(
+      R"(deviation (?:measured )?(below )?([-0-9.e+]+) (?:mm|in)[^0-9]*proven bound ([-0-9.e+]+))");
   size_t seen = 0;
   for (std::sregex_iterator it(text.begin(), text.end(), pair), end; it != end; ++it, ++seen)
     EXPECT_LE(std::stod((*it)[2].str()), std::stod((*it)[3].str())) << what << ": " << it->str();
@@ -107,7 +113,8 @@ size_t expect_bound_covers_measured(const Case& c, const std::vector<Run>& runs)
     const std::string what = c.name + " on " + run.machine + ", --output " + to_string(run.mode);
     const auto j = nlohmann::json::parse(report_json(make_report(r.program, m, r.gcode)));
     for (const auto& x : j["entities"])
-      EXPECT_LE(x["measured_deviation"].get<double>(), x["proven_bound"].get<double>()) << what << ": entity " << x["label"];
+      EXPECT_LE(x["measured_deviation"].get<double>(), x["proven_bound"].get<double>())
+          << what << ": entity " << x["label"];
     EXPECT_LE(j["max_measured_deviation"].get<double>(), j["max_proven_bound"].get<double>()) << what;
     expect_figures_in_order(report_text(make_report(r.program, m, r.gcode), 1000), what + ", report");
     expect_figures_in_order(r.gcode.substr(0, r.gcode.find("proven bound") + 40), what + ", program header");

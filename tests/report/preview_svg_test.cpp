@@ -3,20 +3,19 @@
 // the job and the program say (one group per entity with its curve, control
 // polygon and points, start and arrows; feeds and rapids told apart; a scale
 // bar whose length is true; deviations that agree with the measured ones).
-#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/report/preview_svg.hpp"
-
-#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <regex>
 #include <sstream>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
-#include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/kernel/nurbs_curve.hpp"
 #include "support/mini_xml.hpp"
 
 namespace bezcam {
@@ -285,7 +284,8 @@ TEST(PreviewSvg, DeviationOfAForeignProgramIsMeasuredAgainstTheNearestCurve) {
   EXPECT_EQ(over[0]->attr("stroke-width"), "6");
   EXPECT_EQ(root.by_class("over-tolerance-mark").size(), over.size());
   ASSERT_EQ(root.by_class("over-tolerance-count").size(), 1u);
-  EXPECT_NE(root.by_class("over-tolerance-count")[0]->text.find(std::to_string(over.size()) + " block"), std::string::npos);
+  EXPECT_NE(root.by_class("over-tolerance-count")[0]->text.find(std::to_string(over.size()) + " block"),
+            std::string::npos);
 }
 
 TEST(PreviewSvg, ColoursAreRelativeToTheTolerance) {
@@ -357,7 +357,8 @@ TEST(PreviewSvg, PartCuttingShowsTheToolsWidthTabsAndMaterialLeft) {
   add_part_cutting(in, f.program, f.job.entities.size());
   const std::string svg = preview_svg(in, PreviewOptions{});
   size_t swept = 0, tabs = 0;
-  for (size_t at = svg.find("class=\"swept\""); at != std::string::npos; at = svg.find("class=\"swept\"", at + 1)) ++swept;
+  for (size_t at = svg.find("class=\"swept\""); at != std::string::npos; at = svg.find("class=\"swept\"", at + 1))
+    ++swept;
   for (size_t at = svg.find("class=\"tab\""); at != std::string::npos; at = svg.find("class=\"tab\"", at + 1)) ++tabs;
   EXPECT_EQ(swept, f.job.entities.size());  // every entity is cut with a tool of known width
   EXPECT_EQ(tabs, 4u);                      // the outline's four tabs, on its deepest pass

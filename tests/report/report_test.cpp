@@ -1,17 +1,15 @@
 // Reports: lengths and times from the motion (closed forms on hand-made
 // programs), agreement with the program's own per-entity figures, and the
 // JSON and human forms.
-#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/report/report.hpp"
 
-#include <gtest/gtest.h>
-
-#include <regex>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/job/job_json.hpp"
 
@@ -34,9 +32,9 @@ Program square_program() {
   p.machine = "test";
   p.units = Units::mm;
   p.tolerance = 0.01;
-  p.moves = {mv(Kind::rapid, {0, 0, 5}, 0, 0, 4), mv(Kind::rapid, {0, 0, 5}, 0, 0),
-             mv(Kind::rapid, {10, 0, 5}, 0, 0),   mv(Kind::linear, {10, 0, -1}, 60, 0),
-             mv(Kind::linear, {20, 0, -1}, 600, 0), mv(Kind::linear, {20, 10, -1}, 600, 0),
+  p.moves = {mv(Kind::rapid, {0, 0, 5}, 0, 0, 4),    mv(Kind::rapid, {0, 0, 5}, 0, 0),
+             mv(Kind::rapid, {10, 0, 5}, 0, 0),      mv(Kind::linear, {10, 0, -1}, 60, 0),
+             mv(Kind::linear, {20, 0, -1}, 600, 0),  mv(Kind::linear, {20, 10, -1}, 600, 0),
              mv(Kind::linear, {10, 10, -1}, 600, 0), mv(Kind::linear, {10, 0, -1}, 600, 0),
              mv(Kind::rapid, {10, 0, 5}, 0, 0)};
   EntityReport r;
@@ -185,7 +183,8 @@ TEST(Report, ExactOutputMeasuresWithinTheMeasurementsResolution) {
   // 1e-14 is not "0." (the coordinate formatter's text).
   const std::string gcode = convert(job, m, opt).gcode;
   std::smatch mt;
-  ASSERT_TRUE(std::regex_search(gcode, mt, std::regex(R"(largest deviation measured below ([^ ]+) mm, proven bound \1 mm)")))
+  ASSERT_TRUE(
+      std::regex_search(gcode, mt, std::regex(R"(largest deviation measured below ([^ ]+) mm, proven bound \1 mm)")))
       << gcode.substr(0, 300);
   const double bound = std::stod(mt[1].str());
   EXPECT_GT(bound, 0.0) << mt[1];

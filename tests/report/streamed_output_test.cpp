@@ -3,9 +3,8 @@
 // holding its text. The text must be the one convert() returns whole, the
 // report the one made from that text, and a timeline read back piece by
 // piece the one read from the whole text.
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <random>
 #include <string>
 #include <vector>
@@ -85,7 +84,8 @@ TEST(StreamedOutput, ALongProgramComesInPiecesNeverWhole) {
   for (int i = 0; i < 300; ++i) {
     text += i ? ",\n" : "\n";
     text += R"({"type": "bezier", "points": [)";
-    for (int k = 0; k < 4; ++k) text += (k ? ", [" : "[") + std::to_string(u(rng)) + ", " + std::to_string(u(rng)) + "]";
+    for (int k = 0; k < 4; ++k)
+      text += (k ? ", [" : "[") + std::to_string(u(rng)) + ", " + std::to_string(u(rng)) + "]";
     text += "]}";
   }
   text += "]}\n";

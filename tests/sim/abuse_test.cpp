@@ -7,24 +7,23 @@
 // connections, half frames and the cap without traffic.) Loops are bounded,
 // readiness is awaited with poll(), nothing sleeps.
 #include <arpa/inet.h>
+#include <atomic>
 #include <fcntl.h>
+#include <future>
 #include <gtest/gtest.h>
+#include <mutex>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/socket.h>
-#include <unistd.h>
-
-#include <atomic>
-#include <future>
-#include <mutex>
 #include <thread>
+#include <unistd.h>
 
 #include "bezcam/error.hpp"
 #include "bezcam/link/crc32.hpp"
-#include "bezcam/sim/sim_server.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/link/transport.hpp"
+#include "bezcam/sim/sim_server.hpp"
 #include "support/link_test_util.hpp"
 #include "support/server_rig.hpp"
 
@@ -78,8 +77,17 @@ std::string fate(int fd) {
 }
 
 std::vector<std::uint8_t> read_request(std::uint16_t tid, std::uint16_t addr, std::uint16_t n) {
-  return {static_cast<std::uint8_t>(tid >> 8), static_cast<std::uint8_t>(tid), 0, 0, 0, 6, 1, 3,
-          static_cast<std::uint8_t>(addr >> 8), static_cast<std::uint8_t>(addr), static_cast<std::uint8_t>(n >> 8),
+  return {static_cast<std::uint8_t>(tid >> 8),
+          static_cast<std::uint8_t>(tid),
+          0,
+          0,
+          0,
+          6,
+          1,
+          3,
+          static_cast<std::uint8_t>(addr >> 8),
+          static_cast<std::uint8_t>(addr),
+          static_cast<std::uint8_t>(n >> 8),
           static_cast<std::uint8_t>(n)};
 }
 
@@ -165,7 +173,7 @@ TEST(Abuse, FloodsOfReadsWhileATransferRunsNeitherStallNorCorruptIt) {
   for (auto& th : flood) th.join();
   EXPECT_EQ(r.crc, crc32(program));
   EXPECT_EQ(rig.executed(), test::split_lines(program));
-  EXPECT_GT(while_receiving.load(), 0);  // the reads did overlap the transfer
+  EXPECT_GT(while_receiving.load(), 0);      // the reads did overlap the transfer
   EXPECT_EQ(rig.ctl->status().rejects, 0u);  // and never disturbed the sender's requests
 }
 

@@ -4,14 +4,13 @@
 // the documented bytes. When the protocol changes, print the new example
 // with BEZCAM_PRINT_DOC_EXAMPLE=1 and paste it into the document.
 #include <arpa/inet.h>
+#include <cstdlib>
 #include <gtest/gtest.h>
+#include <iostream>
 #include <netinet/in.h>
+#include <regex>
 #include <sys/socket.h>
 #include <unistd.h>
-
-#include <cstdlib>
-#include <iostream>
-#include <regex>
 
 #include "bezcam/link/crc32.hpp"
 #include "bezcam/sim/sim_server.hpp"
@@ -91,8 +90,9 @@ std::vector<Step> steps() {
   return {
       {"read the status block, registers 0-15 (FC 03)", frame(1, read(3, 0, 16))},
       {"OPEN with token 1234ABCD, program of " + std::to_string(kProgram.size()) + " bytes (FC 16 at 0x0100)",
-       frame(2, fc16(reg::command, encode_command(Command::open, std::array<std::uint32_t, 2>{
-                                                                     kToken, static_cast<std::uint32_t>(kProgram.size())})))},
+       frame(2, fc16(reg::command, encode_command(Command::open,
+                                                  std::array<std::uint32_t, 2>{
+                                                      kToken, static_cast<std::uint32_t>(kProgram.size())})))},
       {"read session and state, registers 4-7 (FC 03)", frame(3, read(3, 4, 4))},
       {"chunk 1, 14 bytes \"G21 G90\\nG00 X1\", and read registers 4-13 back (FC 23)",
        frame(4, fc23(4, 10, reg::chunk, encode_chunk({kSession, 1, c1})))},
@@ -103,11 +103,10 @@ std::vector<Step> steps() {
       {"chunk 4 (a gap): refused with exception 03", frame(7, fc16(reg::chunk, encode_chunk({kSession, 4, "X1\n"})))},
       {"why? last_reject, register 15 (FC 04)", frame(8, read(4, 15, 1))},
       {"COMMIT: token, session, " + std::to_string(kProgram.size()) + " bytes, CRC-32 of the program (FC 16 at 0x0100)",
-       frame(9, fc16(reg::command,
-                     encode_command(Command::commit,
-                                    std::array<std::uint32_t, 4>{kToken, kSession,
-                                                                 static_cast<std::uint32_t>(kProgram.size()),
-                                                                 crc32(kProgram)})))},
+       frame(9, fc16(reg::command, encode_command(Command::commit,
+                                                  std::array<std::uint32_t, 4>{
+                                                      kToken, kSession, static_cast<std::uint32_t>(kProgram.size()),
+                                                      crc32(kProgram)})))},
       {"once executed: registers 4-21, state DONE, 3 lines, 1 motion block, CRC-32 (FC 04)", frame(10, read(4, 4, 18)),
        true},
       {"a write to the read-only status: exception 02", frame(11, Bytes{6, 0x00, 0x06, 0x00, 0x00})},

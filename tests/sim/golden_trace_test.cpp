@@ -7,19 +7,18 @@
 //
 // Regenerate after an intended change (then review the diff):
 //   BEZCAM_UPDATE_GOLDEN=1 build/link_tests --gtest_filter='GoldenTrace*'
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <mutex>
 
-#include "bezcam/job/job.hpp"
-#include "bezcam/sim/sim_server.hpp"
-#include "bezcam/link/streamer.hpp"
-#include "bezcam/sim/trace.hpp"
 #include "bezcam/gcode/convert.hpp"
+#include "bezcam/job/job.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/link/streamer.hpp"
+#include "bezcam/sim/sim_server.hpp"
+#include "bezcam/sim/trace.hpp"
 #include "support/link_test_util.hpp"
 
 using namespace bezcam;
@@ -106,7 +105,9 @@ TEST_P(GoldenTrace, StreamedEqualsDirectEqualsGolden) {
 INSTANTIATE_TEST_SUITE_P(Samples, GoldenTrace, ::testing::ValuesIn(sample_names()),
                          [](const ::testing::TestParamInfo<std::string>& i) {
                            std::string n = i.param;
-                           std::replace_if(n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+                           std::replace_if(
+                               n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
+                               '_');
                            return n;
                          });
 

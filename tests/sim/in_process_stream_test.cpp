@@ -4,10 +4,7 @@
 // drop mid-transfer, resumption that sends nothing twice, a lost reply to
 // OPEN, and giving up once the retry budget is spent. The same scenarios
 // over real sockets are in sim_server_test.cpp.
-#include "bezcam/sim/in_process_transport.hpp"
-
 #include <gtest/gtest.h>
-
 #include <mutex>
 #include <string>
 #include <vector>
@@ -15,6 +12,7 @@
 #include "bezcam/error.hpp"
 #include "bezcam/link/crc32.hpp"
 #include "bezcam/link/streamer.hpp"
+#include "bezcam/sim/in_process_transport.hpp"
 #include "support/link_test_util.hpp"
 #include "support/server_rig.hpp"
 
@@ -61,7 +59,7 @@ TEST(InProcessStream, AProgramStreamsWithoutSockets) {
   EXPECT_EQ(rig.ctl->status().state, State::done);
   const LinkStats s = link.stats();
   EXPECT_EQ(s.connects, 1);
-  EXPECT_EQ(s.open, 0);  // the sender closed its connection
+  EXPECT_EQ(s.open, 0);                 // the sender closed its connection
   EXPECT_GE(s.requests, r.chunks + 3);  // status, OPEN, chunks, COMMIT
 }
 

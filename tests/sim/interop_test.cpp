@@ -2,10 +2,9 @@
 // package, listed in .ci/packages) reads the status registers of the
 // simulator process while a transfer runs, with holding (FC 03) and input
 // (FC 04) reads, and gets a standard exception for a write to them.
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <future>
+#include <gtest/gtest.h>
 #include <regex>
 
 #include "bezcam/link/register_map.hpp"

@@ -2,9 +2,10 @@
 // is at most its buffer and at most what the shared G-code reader takes; a
 // line over either raises an alarm naming it, never a hang. "Quickly" is
 // checked by ctest's TIMEOUT for *Limits* tests (CMakeLists.txt).
+#include "bezcam/limits.hpp"
+
 #include <gtest/gtest.h>
 
-#include "bezcam/limits.hpp"
 #include "bezcam/sim/sim_controller.hpp"
 
 using namespace bezcam;

@@ -2,17 +2,17 @@
 // pace"): the windowed planning agrees with the whole program's plan, the
 // controller takes real time over real sockets and does not starve when the
 // sender keeps up, and counts the stall when it does not.
-#include <gtest/gtest.h>
+#include "bezcam/sim/machine_pace.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <gtest/gtest.h>
 #include <thread>
 
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/link/transport.hpp"
-#include "bezcam/sim/machine_pace.hpp"
 #include "support/link_test_util.hpp"
 
 using namespace bezcam;

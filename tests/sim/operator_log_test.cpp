@@ -2,17 +2,16 @@
 // the shop floor"): connections opened and closed, programs opened and
 // completed, alarms. The events come from the controller itself, driven
 // here over real sockets by the real sender.
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/link/streamer.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/sim/sim_server.hpp"
 #include "support/link_test_util.hpp"
 #include "support/server_rig.hpp"

@@ -10,20 +10,19 @@
 // the controller's machine clock starts after the test's own clock, so at
 // any moment the machine has run at most (the test's elapsed time) x K
 // seconds of the plan; a slow machine only makes that bound looser.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <climits>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <thread>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/resume.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/link/streamer.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/sim/sim_controller.hpp"
 #include "bezcam/sim/trace.hpp"
 #include "support/link_test_util.hpp"
@@ -143,10 +142,9 @@ std::vector<Record> records(const std::string& trace) {
 std::string join(const std::vector<Record>& rs, long offset) {
   std::string s;
   for (const auto& r : rs)
-    s += (r.first == 0 ? std::string()
-          : r.first == r.last
-              ? "line " + std::to_string(r.first + offset)
-              : "lines " + std::to_string(r.first + offset) + "-" + std::to_string(r.last + offset)) +
+    s += (r.first == 0        ? std::string()
+          : r.first == r.last ? "line " + std::to_string(r.first + offset)
+                              : "lines " + std::to_string(r.first + offset) + "-" + std::to_string(r.last + offset)) +
          r.text + "\n";
   return s;
 }
@@ -180,7 +178,7 @@ TEST(PacedProgress, AnAbortMidProgramReportsTheLineThePlannedMotionHadReached) {
   const MachineProfile m = load_machine_profile("generic");
   const std::string prog = arcs_program(100);  // 110 lines, 2 min 41 s of motion
   const PlannedLines plan(prog, m);
-  const double scale = 50;                     // 3.2 s of wall time
+  const double scale = 50;  // 3.2 s of wall time
   test::TempDir dir;
   const auto trace_file = dir / "trace.txt";
   test::SimProcess sim(dir, {"--machine", "generic", "--time-scale", "50", "--trace", trace_file.string(), "-q"});
@@ -306,9 +304,10 @@ TEST(PacedProgress, TheTraceAtMachinePaceIsTheTraceAsFastAsPossible) {
                              {data + "semicircle-inch.nc", "generic", {}}};
   // Cutter compensation: the controller-compensated sample, as arcs.
   const auto flange = dir / "flange.nc";
-  const auto conv = test::run_bezcam({"convert", std::string(BEZCAM_SOURCE_DIR) + "/samples/controller-comp/flange-g41.json",
-                                      "--machine", "linuxcnc", "--output", "arcs", "-o", flange.string()},
-                                     dir);
+  const auto conv =
+      test::run_bezcam({"convert", std::string(BEZCAM_SOURCE_DIR) + "/samples/controller-comp/flange-g41.json",
+                        "--machine", "linuxcnc", "--output", "arcs", "-o", flange.string()},
+                       dir);
   ASSERT_EQ(conv.status, 0) << conv.err;
   progs.push_back({flange.string(), "linuxcnc", {"--tool-diameter", "1=6", "--tool-diameter", "2=3"}});
 
@@ -323,7 +322,8 @@ TEST(PacedProgress, TheTraceAtMachinePaceIsTheTraceAsFastAsPossible) {
     char scale[32];
     std::snprintf(scale, sizeof scale, "%.3f", std::clamp(cycle / 0.5, 0.01, 100000.0));
     const auto trace_file = dir / "paced.trace";
-    std::vector<std::string> args = {"--machine", p.machine, "--time-scale", scale, "--trace", trace_file.string(), "-q"};
+    std::vector<std::string> args = {"--machine",         p.machine, "--time-scale", scale, "--trace",
+                                     trace_file.string(), "-q"};
     args.insert(args.end(), p.extra.begin(), p.extra.end());
     test::SimProcess sim(dir, args);
     const StreamResult r = stream_program(prog, Endpoint{"127.0.0.1", sim.port()});

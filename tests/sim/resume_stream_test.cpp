@@ -8,14 +8,13 @@
 // trace tolerance. The preamble's modal state is compared through the
 // controller's status registers: the first lines of the program (up to the
 // start line) streamed alone against the preamble streamed alone.
-#include <gtest/gtest.h>
-
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/resume.hpp"
 #include "bezcam/link/streamer.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/sim/trace.hpp"
 #include "support/link_test_util.hpp"
 
@@ -117,8 +116,10 @@ TEST_P(ResumeOverTheLink, TheTailsTraceEqualsTheFullRunsAndThePreambleRestoresIt
   for (const auto& rec : records(full))
     if (rec.first >= c.start) want.push_back(rec);
   for (const auto& rec : records(resumed)) {
-    if (rec.first > plan.preamble_lines) tail.push_back(rec);
-    else if (rec.first > 0) pre.push_back(rec);
+    if (rec.first > plan.preamble_lines)
+      tail.push_back(rec);
+    else if (rec.first > 0)
+      pre.push_back(rec);
   }
   ASSERT_FALSE(want.empty());
   const auto mismatch = sim::compare_traces(join(want, 0), join(tail, plan.line_offset()));
@@ -131,7 +132,8 @@ TEST_P(ResumeOverTheLink, TheTailsTraceEqualsTheFullRunsAndThePreambleRestoresIt
   EXPECT_GE(std::count_if(pre.begin(), pre.end(), [](const Record& x) { return x.text.find(" rapid to ") == 0; }), 2)
       << resumed;
   // Both runs end at the same place, every line executed.
-  const std::string done_full = full.substr(full.rfind("done lines ")), done_res = resumed.substr(resumed.rfind("done lines "));
+  const std::string done_full = full.substr(full.rfind("done lines ")),
+                    done_res = resumed.substr(resumed.rfind("done lines "));
   EXPECT_EQ(done_full.substr(done_full.find(" at ")), done_res.substr(done_res.find(" at ")));
   EXPECT_EQ(std::stol(done_full.substr(11)), std::stol(done_res.substr(11)) + plan.line_offset());
 
@@ -192,9 +194,7 @@ TEST(ResumeOverTheLink, BadLinesAreRefusedBeforeAnythingIsSent) {
   test::SimProcess sim(dir, {"--machine", "generic", "-q"});
   const std::string to = "127.0.0.1:" + std::to_string(sim.port());
   const std::string good = data_file("two-tools-arcs.nc");
-  {
-    std::ofstream(dir / "g93.nc") << "G21 G90\nG00 Z5.\nG93\nG00 X1.\nG00 X2.\nM30\n";
-  }
+  { std::ofstream(dir / "g93.nc") << "G21 G90\nG00 Z5.\nG93\nG00 X1.\nG00 X2.\nM30\n"; }
   struct Bad {
     std::string file, line, place, id;
   };
@@ -230,7 +230,8 @@ TEST(ResumeOverTheLink, AnAlarmInTheTailNamesTheLineOfTheFile) {
   const auto pf = test::run_bezcam({"stream", f, "--to", to, "--progress", "off", "--from-line", "7"}, dir);
   EXPECT_EQ(pf.status, 2) << pf.err;
   EXPECT_NE(pf.err.find("\n  " + f + ":8: the move reaches X = 3000 mm"), std::string::npos) << pf.err;
-  const auto r = test::run_bezcam({"stream", f, "--to", to, "--progress", "off", "--no-preflight", "--from-line", "7"}, dir);
+  const auto r =
+      test::run_bezcam({"stream", f, "--to", to, "--progress", "off", "--no-preflight", "--from-line", "7"}, dir);
   EXPECT_EQ(r.status, 4) << r.err;
   EXPECT_NE(r.err.find("bezcam: error: " + f + ": line 8: "), std::string::npos) << r.err;
   const auto s = test::run_bezcam({"simulate", "--program", f, "--machine", "fanuc", "--from-line", "7"}, dir);

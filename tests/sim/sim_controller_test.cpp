@@ -5,7 +5,6 @@
 #include "bezcam/sim/sim_controller.hpp"
 
 #include <gtest/gtest.h>
-
 #include <mutex>
 #include <random>
 #include <set>
@@ -85,10 +84,10 @@ struct Local {
     return write(reg::chunk, encode_chunk({session, seq, payload}));
   }
   FrameReply commit(std::uint32_t token, std::uint32_t session, std::string_view program) {
-    return write(reg::command, encode_command(Command::commit,
-                                              std::array<std::uint32_t, 4>{token, session,
-                                                                           static_cast<std::uint32_t>(program.size()),
-                                                                           crc32(program)}));
+    return write(reg::command,
+                 encode_command(Command::commit,
+                                std::array<std::uint32_t, 4>{token, session, static_cast<std::uint32_t>(program.size()),
+                                                             crc32(program)}));
   }
 };
 

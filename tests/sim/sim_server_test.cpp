@@ -7,14 +7,13 @@
 #include "bezcam/sim/sim_server.hpp"
 
 #include <arpa/inet.h>
+#include <atomic>
+#include <future>
 #include <gtest/gtest.h>
+#include <mutex>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
-
-#include <atomic>
-#include <future>
-#include <mutex>
 
 #include "bezcam/error.hpp"
 #include "bezcam/link/crc32.hpp"
@@ -177,9 +176,10 @@ TEST(SimServer, DuplicatedAndOutOfOrderChunksOverTheWire) {
   c.write_registers(reg::chunk, encode_chunk({s, 2, p2}));
   c.write_registers(reg::chunk, encode_chunk({s, 3, p3}));
   c.write_registers(reg::chunk, encode_chunk({s, 2, p2}));  // late duplicate
-  c.write_registers(reg::command,
-                    encode_command(Command::commit, std::array<std::uint32_t, 4>{
-                                                        42, s, static_cast<std::uint32_t>(program.size()), crc32(program)}));
+  c.write_registers(
+      reg::command,
+      encode_command(Command::commit,
+                     std::array<std::uint32_t, 4>{42, s, static_cast<std::uint32_t>(program.size()), crc32(program)}));
   ASSERT_TRUE(rig.ctl->wait_final(5s));
   const Status st = read_status(c);
   EXPECT_EQ(st.state, State::done);

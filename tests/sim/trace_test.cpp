@@ -2,9 +2,8 @@
 // sampled on their circle, the golden comparison and its tolerance.
 #include "bezcam/sim/trace.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <sstream>
 
 using namespace bezcam;
@@ -98,16 +97,21 @@ TEST(Trace, AlarmAndDoneRecords) {
 TEST(Trace, ComparisonAllowsTheStatedToleranceOnNumbersOnly) {
   const std::string a = "bezcam-trace 1 machine generic\nline 3 linear to 1.000000 2.000000 0.000000 feed 800.000000\n";
   EXPECT_FALSE(compare_traces(a, a));
-  const std::string near = "bezcam-trace 1 machine generic\nline 3 linear to 1.000009 2.000000 0.000000 feed 800.000000\n";
+  const std::string near =
+      "bezcam-trace 1 machine generic\nline 3 linear to 1.000009 2.000000 0.000000 feed 800.000000\n";
   EXPECT_FALSE(compare_traces(a, near));
-  const std::string far = "bezcam-trace 1 machine generic\nline 3 linear to 1.000011 2.000000 0.000000 feed 800.000000\n";
+  const std::string far =
+      "bezcam-trace 1 machine generic\nline 3 linear to 1.000011 2.000000 0.000000 feed 800.000000\n";
   const auto m = compare_traces(a, far);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->line, 2u);
   EXPECT_NE(m->why.find("1.000000 vs 1.000011"), std::string::npos) << m->why;
   // Words are never "near": a different kind or line number is a difference.
-  EXPECT_TRUE(compare_traces(a, "bezcam-trace 1 machine generic\nline 3 rapid to 1.000000 2.000000 0.000000 feed 800.000000\n"));
-  EXPECT_TRUE(compare_traces(a, "bezcam-trace 1 machine generic\nline 4 linear to 1.000000 2.000000 0.000000 feed 800.000000\n"));
+  EXPECT_TRUE(compare_traces(
+      a, "bezcam-trace 1 machine generic\nline 3 rapid to 1.000000 2.000000 0.000000 feed 800.000000\n"));
+  EXPECT_TRUE(compare_traces(
+      a, "bezcam-trace 1 machine generic\nline 4 linear to 1.000000 2.000000 0.000000 feed 800.000000\n"));
   EXPECT_TRUE(compare_traces(a, a + "done lines 3 blocks 1 at 0 0 0\n"));
-  EXPECT_TRUE(compare_traces(a, "bezcam-trace 1 machine fanuc\nline 3 linear to 1.000000 2.000000 0.000000 feed 800.000000\n"));
+  EXPECT_TRUE(
+      compare_traces(a, "bezcam-trace 1 machine fanuc\nline 3 linear to 1.000000 2.000000 0.000000 feed 800.000000\n"));
 }

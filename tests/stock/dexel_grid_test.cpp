@@ -1,9 +1,8 @@
 #include "bezcam/stock/dexel_grid.hpp"
 
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <numbers>
 
 #include "bezcam/error.hpp"
@@ -20,7 +19,8 @@ void mixed_program(DexelGrid& g) {
   std::vector<Sweep> raster;
   for (int p = 0; p < 12; ++p)
     for (int b = 0; b < 40; ++b)
-      raster.push_back(Sweep::line({2 + b * 0.9, 3 + p * 2.5, -1 - 0.01 * b}, {2 + (b + 1) * 0.9, 3 + p * 2.5, -1 - 0.01 * (b + 1)}));
+      raster.push_back(Sweep::line({2 + b * 0.9, 3 + p * 2.5, -1 - 0.01 * b},
+                                   {2 + (b + 1) * 0.9, 3 + p * 2.5, -1 - 0.01 * (b + 1)}));
   g.cut(raster, ball);
   g.cut(Sweep::line({5, 5, 2}, {5, 5, -6}), drill);
   g.cut(Sweep::line({10, 30, -0.5}, {35, 8, -3}), flat);
@@ -96,9 +96,9 @@ TEST(DexelGrid, AMoveThatCutsNothingLeavesTheStockUntouched) {
   DexelGrid g({0, 0, -5, 40, 40, 0}, 0.1);
   const std::string fresh = g.hash_hex();
   const ToolShape ball = ToolShape::ball(6);
-  g.cut(Sweep::line({5, 5, 0.001}, {35, 30, 3}), ball);             // above the top
-  g.cut(Sweep::line({-10, -10, -3}, {-10, 50, -3}), ball);          // beyond reach, off the box
-  g.cut(Sweep::line({42.9501, 5, -3}, {42.9501, 30, -3}), ball);    // 3.0001 from the last columns (x 39.95)
+  g.cut(Sweep::line({5, 5, 0.001}, {35, 30, 3}), ball);           // above the top
+  g.cut(Sweep::line({-10, -10, -3}, {-10, 50, -3}), ball);        // beyond reach, off the box
+  g.cut(Sweep::line({42.9501, 5, -3}, {42.9501, 30, -3}), ball);  // 3.0001 from the last columns (x 39.95)
   g.cut(Sweep::arc(Arc{{20, 50, -2}, {20, 60, -2}, {20, 55, -2}, true, Plane::xy}), ball);
   EXPECT_EQ(g.hash_hex(), fresh);
   EXPECT_EQ(g.removed_volume(), 0);

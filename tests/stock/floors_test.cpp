@@ -5,17 +5,17 @@
 // with the tool's profile written out here again. Closed forms derived here
 // (the capsule of a ball along a line, the cone of a plunging drill) check
 // the reference and the grid alike.
-#include <gtest/gtest.h>
+#include "stock/floors.hpp"
 
 #include <cmath>
 #include <functional>
+#include <gtest/gtest.h>
 #include <limits>
-#include <numbers>
 #include <memory>
+#include <numbers>
 #include <random>
 
 #include "bezcam/stock/dexel_grid.hpp"
-#include "stock/floors.hpp"
 
 using namespace bezcam;
 
@@ -50,8 +50,8 @@ struct RefTool {
 };
 
 std::vector<RefTool> tools() {
-  return {{ToolShapeKind::flat, 3},        {ToolShapeKind::ball, 3},        {ToolShapeKind::bull, 5, 1},
-          {ToolShapeKind::bull, 3, 1.5},   {ToolShapeKind::vee, 3, 0, 30},  {ToolShapeKind::drill, 2.5, 0, 59},
+  return {{ToolShapeKind::flat, 3},      {ToolShapeKind::ball, 3},       {ToolShapeKind::bull, 5, 1},
+          {ToolShapeKind::bull, 3, 1.5}, {ToolShapeKind::vee, 3, 0, 30}, {ToolShapeKind::drill, 2.5, 0, 59},
           {ToolShapeKind::vee, 2, 0, 15}};
 }
 
@@ -146,18 +146,18 @@ int compare(const Sweep& move, const Path& path, const RefTool& t, int n = 18, d
 
 TEST(StockFloors, LinesMatchTheReferenceForEveryShape) {
   const std::vector<std::pair<Vec3, Vec3>> lines = {
-      {{0, 0, 0}, {10, 0, 0}},          // horizontal along x
-      {{0, 0, 0}, {7, 4, 0}},           // horizontal, diagonal
-      {{0, 0, 0}, {8, 3, -2}},          // descending gently
-      {{1, 2, -3}, {-6, 5, 1}},         // ascending
-      {{0, 0, 0}, {2, 1, -6}},          // steep: steeper than the cones
-      {{0, 0, 0}, {0.5, 0, -9}},        // nearly a plunge
-      {{2, 3, 1}, {2, 3, -4}},          // plunge
+      {{0, 0, 0}, {10, 0, 0}},    // horizontal along x
+      {{0, 0, 0}, {7, 4, 0}},     // horizontal, diagonal
+      {{0, 0, 0}, {8, 3, -2}},    // descending gently
+      {{1, 2, -3}, {-6, 5, 1}},   // ascending
+      {{0, 0, 0}, {2, 1, -6}},    // steep: steeper than the cones
+      {{0, 0, 0}, {0.5, 0, -9}},  // nearly a plunge
+      {{2, 3, 1}, {2, 3, -4}},    // plunge
   };
   for (const RefTool& t : tools())
     for (const auto& [a, b] : lines) {
-      SCOPED_TRACE(std::string(to_string(t.kind)) + " from (" + std::to_string(a.x) + "," + std::to_string(a.y) +
-                   "," + std::to_string(a.z) + ") to (" + std::to_string(b.x) + "," + std::to_string(b.y) + "," +
+      SCOPED_TRACE(std::string(to_string(t.kind)) + " from (" + std::to_string(a.x) + "," + std::to_string(a.y) + "," +
+                   std::to_string(a.z) + ") to (" + std::to_string(b.x) + "," + std::to_string(b.y) + "," +
                    std::to_string(b.z) + ")");
       EXPECT_GT(compare(Sweep::line(a, b), line_path(a, b), t), 15);
     }
@@ -243,16 +243,16 @@ Arc arc17(Vec3 from_off, Vec3 to_off, double z0, double z1, bool ccw) {
 
 TEST(StockFloors, G17ArcsAndHelicesMatchTheReference) {
   const std::vector<Arc> arcs = {
-      arc17({3, 4}, {-4, 3}, 0, 0, true),     // planar, 90 degrees
-      arc17({5, 0}, {-3, -4}, 0, 0, false),   // planar, clockwise, 233 degrees
-      arc17({3, 4}, {4, -3}, 1, -2, true),    // helix down, 270 degrees
-      arc17({0, 5}, {0, 5}, 0, -3, true),     // full turn of a helix
-      arc17({-5, 0}, {3, 4}, -4, 1, false),   // helix up, clockwise
+      arc17({3, 4}, {-4, 3}, 0, 0, true),    // planar, 90 degrees
+      arc17({5, 0}, {-3, -4}, 0, 0, false),  // planar, clockwise, 233 degrees
+      arc17({3, 4}, {4, -3}, 1, -2, true),   // helix down, 270 degrees
+      arc17({0, 5}, {0, 5}, 0, -3, true),    // full turn of a helix
+      arc17({-5, 0}, {3, 4}, -4, 1, false),  // helix up, clockwise
   };
   for (const RefTool& t : tools())
     for (const Arc& a : arcs) {
-      SCOPED_TRACE(std::string(to_string(t.kind)) + (a.ccw ? " G03" : " G02") + " to (" + std::to_string(a.to.x) +
-                   "," + std::to_string(a.to.y) + "," + std::to_string(a.to.z) + ")");
+      SCOPED_TRACE(std::string(to_string(t.kind)) + (a.ccw ? " G03" : " G02") + " to (" + std::to_string(a.to.x) + "," +
+                   std::to_string(a.to.y) + "," + std::to_string(a.to.z) + ")");
       ASSERT_EQ(a.r_start(), a.r_end());
       EXPECT_GT(compare(Sweep::arc(a), arc_path(a), t), 40);
     }
@@ -269,7 +269,8 @@ TEST(StockFloors, SpiralsFromRoundedEndsMatchTheReference) {
   };
   for (const RefTool& t : tools())
     for (const Arc& a : arcs) {
-      SCOPED_TRACE(std::string(to_string(t.kind)) + " to (" + std::to_string(a.to.x) + "," + std::to_string(a.to.y) + ")");
+      SCOPED_TRACE(std::string(to_string(t.kind)) + " to (" + std::to_string(a.to.x) + "," + std::to_string(a.to.y) +
+                   ")");
       ASSERT_NE(a.r_start(), a.r_end());
       EXPECT_GT(compare(Sweep::arc(a), arc_path(a), t), 40);
     }
@@ -278,16 +279,17 @@ TEST(StockFloors, SpiralsFromRoundedEndsMatchTheReference) {
 TEST(StockFloors, G18AndG19ArcsMatchTheReference) {
   // The tool moves in a vertical plane: G18 (ZX, axis Y), G19 (YZ, axis X).
   const std::vector<Arc> arcs = {
-      Arc{{4, 0, 0}, {-4, 0, 0}, {0, 0, 0}, false, Plane::zx},       // a half circle under the centre's height? (G02 in ZX)
-      Arc{{4, 0, 0}, {-4, 0, 0}, {0, 0, 0}, true, Plane::zx},        // the other half
-      Arc{{3, 1, 4}, {-4, 3, -3}, {0, 1, 0}, true, Plane::zx},        // with travel along Y
-      Arc{{0, 5, 0}, {0, 0, -5}, {0, 0, 0}, true, Plane::yz},        // quarter in YZ
-      Arc{{2, -3, 4}, {-1, 4, 3.0002}, {0, 0, 0}, false, Plane::yz}, // spiral with travel along X
+      Arc{{4, 0, 0}, {-4, 0, 0}, {0, 0, 0}, false, Plane::zx},  // a half circle under the centre's height? (G02 in ZX)
+      Arc{{4, 0, 0}, {-4, 0, 0}, {0, 0, 0}, true, Plane::zx},   // the other half
+      Arc{{3, 1, 4}, {-4, 3, -3}, {0, 1, 0}, true, Plane::zx},  // with travel along Y
+      Arc{{0, 5, 0}, {0, 0, -5}, {0, 0, 0}, true, Plane::yz},   // quarter in YZ
+      Arc{{2, -3, 4}, {-1, 4, 3.0002}, {0, 0, 0}, false, Plane::yz},  // spiral with travel along X
   };
   for (const RefTool& t : tools())
     for (const Arc& a : arcs) {
       SCOPED_TRACE(std::string(to_string(t.kind)) + " G" + std::to_string(g_number(a.plane)) + (a.ccw ? "3" : "2") +
-                   " to (" + std::to_string(a.to.x) + "," + std::to_string(a.to.y) + "," + std::to_string(a.to.z) + ")");
+                   " to (" + std::to_string(a.to.x) + "," + std::to_string(a.to.y) + "," + std::to_string(a.to.z) +
+                   ")");
       EXPECT_GT(compare(Sweep::arc(a), arc_path(a), t), 40);
     }
 }

@@ -1,11 +1,10 @@
 #include "bezcam/stock/heightmap.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <regex>
 #include <sstream>
 
@@ -48,7 +47,8 @@ TEST(Heightmap, NpyRoundTrip) {
   const std::string header = b.substr(10, hlen);
   EXPECT_EQ(header.back(), '\n');
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(header, m, std::regex(R"(\{'descr': '<f8', 'fortran_order': False, 'shape': \((\d+), (\d+)\), \})")))
+  ASSERT_TRUE(std::regex_search(
+      header, m, std::regex(R"(\{'descr': '<f8', 'fortran_order': False, 'shape': \((\d+), (\d+)\), \})")))
       << header;
   EXPECT_EQ(std::stoul(m[1]), g.ny());
   EXPECT_EQ(std::stoul(m[2]), g.nx());

@@ -1,13 +1,12 @@
 #include "bezcam/stock/stock_image.hpp"
 
-#include <gtest/gtest.h>
-#include <zlib.h>
-
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
+#include <zlib.h>
 
 #include "bezcam/error.hpp"
 
@@ -107,8 +106,8 @@ TEST(StockImage, PngShowsMapClassesAndLegend) {
     const auto i = static_cast<std::uint32_t>(x / 0.5), j = static_cast<std::uint32_t>(y / 0.5);
     return p.at(i * zoom + zoom / 2, (59 - j) * zoom + zoom / 2);
   };
-  const std::uint8_t* top = pixel(38, 2);     // untouched stock: light
-  const std::uint8_t* pocket = pixel(12, 15); // the pocket floor, level: darker than the top
+  const std::uint8_t* top = pixel(38, 2);      // untouched stock: light
+  const std::uint8_t* pocket = pixel(12, 15);  // the pocket floor, level: darker than the top
   const std::uint8_t* gouge = pixel(7, 7);
   const std::uint8_t* excess = pixel(32, 22);
   EXPECT_GT(top[0], 200);
@@ -160,7 +159,9 @@ TEST(StockImage, SvgIsWellFormedAndEmbedsThePng) {
   EXPECT_GT(fs::file_size(dir / "m.png"), 1000u);
   if (std::system("/usr/bin/python3 -c 'import xml.dom.minidom' >/dev/null 2>&1") == 0)
     EXPECT_EQ(std::system(("/usr/bin/python3 -c 'import xml.dom.minidom, sys; d = xml.dom.minidom.parse(sys.argv[1]); "
-                           "assert d.documentElement.tagName == \"svg\"' " + (dir / "m.svg").string()).c_str()),
+                           "assert d.documentElement.tagName == \"svg\"' " +
+                           (dir / "m.svg").string())
+                              .c_str()),
               0);
   if (const char* keep = std::getenv("BEZCAM_KEEP_IMAGES")) {
     fs::copy_file(dir / "m.png", fs::path(keep) / "stock_sample.png", fs::copy_options::overwrite_existing);

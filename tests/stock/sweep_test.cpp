@@ -1,8 +1,7 @@
 #include "bezcam/stock/sweep.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
 
 #include "bezcam/error.hpp"

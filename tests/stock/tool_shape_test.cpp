@@ -1,8 +1,7 @@
 #include "bezcam/stock/tool_shape.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
 #include <numbers>
 
@@ -36,7 +35,7 @@ TEST(ToolShape, HeightProfiles) {
   EXPECT_DOUBLE_EQ(b.height(0), 0);
   EXPECT_DOUBLE_EQ(b.height(3), 3);
   EXPECT_NEAR(b.height(1.5), 3 - std::sqrt(9 - 2.25), 1e-15);
-  EXPECT_EQ(u.height(4), 0);                                  // the flat part, radius 4
+  EXPECT_EQ(u.height(4), 0);                                   // the flat part, radius 4
   EXPECT_NEAR(u.height(4.6), 1 - std::sqrt(1 - 0.36), 1e-15);  // the torus
   EXPECT_DOUBLE_EQ(u.cutting_height(), 1);
   EXPECT_NEAR(v.height(1), 1 / std::tan(std::numbers::pi / 6), 1e-15);  // 60 deg included: slope cot 30

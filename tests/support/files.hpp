@@ -1,12 +1,11 @@
 #pragma once
 // Files for the tests: whole-file reads and writes, and temporary folders.
-#include <stdlib.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <stdlib.h>
 #include <string>
 #include <vector>
 

@@ -95,9 +95,12 @@ class Parser {
   void misc() {
     for (;;) {
       ws();
-      if (s_.substr(i_, 4) == "<!--") comment();
-      else if (s_.substr(i_, 2) == "<?" || s_.substr(i_, 2) == "<!") fail("unexpected declaration");
-      else return;
+      if (s_.substr(i_, 4) == "<!--")
+        comment();
+      else if (s_.substr(i_, 2) == "<?" || s_.substr(i_, 2) == "<!")
+        fail("unexpected declaration");
+      else
+        return;
     }
   }
   void comment() {
@@ -113,8 +116,10 @@ class Parser {
     return std::string(s_.substr(b, i_ - b));
   }
   static void append_utf8(std::string& o, uint32_t cp) {
-    if (cp < 0x80) o += char(cp);
-    else if (cp < 0x800) o += char(0xC0 | (cp >> 6)), o += char(0x80 | (cp & 0x3F));
+    if (cp < 0x80)
+      o += char(cp);
+    else if (cp < 0x800)
+      o += char(0xC0 | (cp >> 6)), o += char(0x80 | (cp & 0x3F));
     else if (cp < 0x10000)
       o += char(0xE0 | (cp >> 12)), o += char(0x80 | ((cp >> 6) & 0x3F)), o += char(0x80 | (cp & 0x3F));
     else
@@ -139,11 +144,16 @@ class Parser {
       const size_t e = s_.find(';', i_);
       if (e == std::string_view::npos || e - i_ > 12) fail("unterminated reference");
       const std::string_view ref = s_.substr(i_ + 1, e - i_ - 1);
-      if (ref == "amp") o += '&';
-      else if (ref == "lt") o += '<';
-      else if (ref == "gt") o += '>';
-      else if (ref == "quot") o += '"';
-      else if (ref == "apos") o += '\'';
+      if (ref == "amp")
+        o += '&';
+      else if (ref == "lt")
+        o += '<';
+      else if (ref == "gt")
+        o += '>';
+      else if (ref == "quot")
+        o += '"';
+      else if (ref == "apos")
+        o += '\'';
       else if (ref.size() > 1 && ref[0] == '#') {
         const bool hex = ref[1] == 'x';
         const std::string digits(ref.substr(hex ? 2 : 1));

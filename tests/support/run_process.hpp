@@ -3,20 +3,19 @@
 // without a shell, extra environment variables, stdout and stderr captured
 // through temporary files, the exit status returned. Waits for the child by
 // its pid; no sleeping.
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 #include "support/files.hpp"

@@ -4,22 +4,21 @@
 // the tests that drive it over real sockets (sim_server_test.cpp,
 // abuse_test.cpp).
 #include <arpa/inet.h>
-#include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <array>
 #include <chrono>
+#include <gtest/gtest.h>
 #include <memory>
 #include <mutex>
+#include <netinet/in.h>
 #include <string>
 #include <string_view>
+#include <sys/socket.h>
+#include <unistd.h>
 #include <vector>
 
-#include "bezcam/sim/sim_server.hpp"
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/link/transport.hpp"
+#include "bezcam/sim/sim_server.hpp"
 
 namespace bezcam::test {
 

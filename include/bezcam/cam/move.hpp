@@ -9,12 +9,12 @@
 /// to the decimals they will be printed with (so what is validated and
 /// measured is what the controller will read). Axis words are modal: a
 /// motion sets only the axes named in `axes`.
-#include <type_traits>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
-#include "bezcam/job/job.hpp"  // Coolant
+#include "bezcam/job/job.hpp"     // Coolant
 #include "bezcam/kernel/arc.hpp"  // Plane
 #include "bezcam/kernel/vec.hpp"
 
@@ -101,8 +101,8 @@ struct CompensationMove {
 };
 
 struct Move {
-  std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChangePosition, ToolChange, SpindleMove, Comment, Dwell, CoolantMove, ProgramStop,
-               Verbatim, CompensationMove>
+  std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChangePosition, ToolChange, SpindleMove, Comment, Dwell,
+               CoolantMove, ProgramStop, Verbatim, CompensationMove>
       what;
   int entity = -1;  ///< index of the job entity it cuts, -1 for none
 };
@@ -110,10 +110,14 @@ struct Move {
 /// The motion part of a move; null for tool changes, spindle, coolant,
 /// dwells, stops and comments.
 inline const Motion* motion_of(const Move& m) {
-  return std::visit([](const auto& x) -> const Motion* {
-    if constexpr (std::is_base_of_v<Motion, std::decay_t<decltype(x)>>) return &x;
-    else return nullptr;
-  }, m.what);
+  return std::visit(
+      [](const auto& x) -> const Motion* {
+        if constexpr (std::is_base_of_v<Motion, std::decay_t<decltype(x)>>)
+          return &x;
+        else
+          return nullptr;
+      },
+      m.what);
 }
 /// Whether the move is a rapid (G00).
 inline bool is_rapid(const Move& m) { return std::holds_alternative<RapidMove>(m.what); }

@@ -18,16 +18,16 @@ namespace bezcam {
 double polyline_gap_bound(const TipPolyline& a, const TipPolyline& b, double resolution, double limit);
 
 struct PassOptions {
-  char direction = 'u';     ///< parameter that varies along a pass
-  double stepover = 1;      ///< largest distance allowed between neighbouring passes (units)
+  char direction = 'u';                    ///< parameter that varies along a pass
+  double stepover = 1;                     ///< largest distance allowed between neighbouring passes (units)
   double tolerance = kDefaultToleranceMm;  ///< chord tolerance (units)
-  int decimals = -1;        ///< printed decimals, -1 none
+  int decimals = -1;                       ///< printed decimals, -1 none
   double tool_radius = 0;
 };
 
 struct Pass {
-  double at = 0;        ///< the fixed parameter (v for direction u)
-  SurfaceCurve curve;   ///< exact, with normals when r > 0
+  double at = 0;       ///< the fixed parameter (v for direction u)
+  SurfaceCurve curve;  ///< exact, with normals when r > 0
   TipPolyline poly;
 };
 

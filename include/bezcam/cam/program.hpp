@@ -20,17 +20,17 @@ namespace bezcam {
 struct EntityReport {
   std::string label, type;
   int degree = 0;
-  double length = 0;       ///< true curve length (units)
-  size_t blocks = 0;       ///< cutting blocks emitted
-  double measured = 0;     ///< largest deviation measured on the printed path
-  double bound = 0;        ///< proven upper bound
-  int entity = -1;         ///< index in the job's entities (Move::entity)
+  double length = 0;    ///< true curve length (units)
+  size_t blocks = 0;    ///< cutting blocks emitted
+  double measured = 0;  ///< largest deviation measured on the printed path
+  double bound = 0;     ///< proven upper bound
+  int entity = -1;      ///< index in the job's entities (Move::entity)
   /// The height of the entity's clearance plane (its `clearance` above
   /// `top_z`, or above the surface's top for patches) when it has one
   /// below safe Z: the tool rapids down to it and moves across at it
   /// between passes. NaN: none (safe Z).
   double clear_z = std::numeric_limits<double>::quiet_NaN();
-  int tool = -1;           ///< the tool that cuts it
+  int tool = -1;  ///< the tool that cuts it
   /// Part cutting: the tool centre's distance from the curve (tool radius +
   /// stock to leave; 0 on the curve), and the stretches of the curve the
   /// tool cannot reach (material left).

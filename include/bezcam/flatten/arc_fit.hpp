@@ -30,9 +30,9 @@
 #include <span>
 #include <vector>
 
-#include "bezcam/kernel/units.hpp"
 #include "bezcam/kernel/arc.hpp"
 #include "bezcam/kernel/bezier.hpp"
+#include "bezcam/kernel/units.hpp"
 
 namespace bezcam {
 
@@ -65,19 +65,19 @@ enum class FitKind { line, arc_cw, arc_ccw };
 /// One emitted move, with everything as printed.
 struct FitMove {
   FitKind kind = FitKind::line;
-  Vec3 to;          ///< rounded end point (z rounded too; a 2D curve keeps z = 0)
-  Vec3 center;      ///< arcs: S' + rounded (I, J), z = to.z (helical: the start's z)
-  Vec3 ij;          ///< arcs: the printed I, J (x, y), relative to the move's start
-  size_t piece = 0; ///< piece and parameter of the curve point the move ends at
+  Vec3 to;           ///< rounded end point (z rounded too; a 2D curve keeps z = 0)
+  Vec3 center;       ///< arcs: S' + rounded (I, J), z = to.z (helical: the start's z)
+  Vec3 ij;           ///< arcs: the printed I, J (x, y), relative to the move's start
+  size_t piece = 0;  ///< piece and parameter of the curve point the move ends at
   double t = 0;
-  double bound = 0; ///< certified two-sided deviation of this move from its span
+  double bound = 0;  ///< certified two-sided deviation of this move from its span
 };
 
 struct ArcFitResult {
-  Vec3 start;                ///< rounded first point (where the tool must be)
+  Vec3 start;  ///< rounded first point (where the tool must be)
   std::vector<FitMove> moves;
-  double bound = 0;          ///< largest certified deviation
-  Plane plane = Plane::xy;   ///< the arcs' plane (fit_helical_arcs(); G17 otherwise)
+  double bound = 0;         ///< largest certified deviation
+  Plane plane = Plane::xy;  ///< the arcs' plane (fit_helical_arcs(); G17 otherwise)
 };
 
 /// Callback core: emits the moves in order, starting from the rounded start

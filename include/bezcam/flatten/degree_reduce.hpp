@@ -36,13 +36,12 @@ double parametric_distance(const Bezier& a, const Bezier& b, double budget, doub
 /// that do not fit are split in half (de Casteljau), at most `max_depth`
 /// times. Returns nothing when even that does not fit.
 struct ReducedPiece {
-  Bezier approx;  ///< polynomial, degree `target`
-  Bezier source;  ///< the part of the input it replaces, same parameter
+  Bezier approx;          ///< polynomial, degree `target`
+  Bezier source;          ///< the part of the input it replaces, same parameter
   double t0 = 0, t1 = 1;  ///< that part's interval of the input's parameter
   double bound = 0;       ///< proven parametric distance approx vs source
 };
-std::optional<std::vector<ReducedPiece>> reduce_degree(const Bezier& b, int target, double budget,
-                                                       int max_depth = 10);
+std::optional<std::vector<ReducedPiece>> reduce_degree(const Bezier& b, int target, double budget, int max_depth = 10);
 
 /// The same rational piece in standard form: first and last weights 1
 /// (w_i -> w_i / (w_0^(n-i)/n w_n^(i/n)), a change of parameter that keeps

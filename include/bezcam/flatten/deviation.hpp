@@ -69,7 +69,6 @@ inline constexpr double kMeasureGap = 1e-6;
 
 /// `tolerance`: the bound being checked. Readings above it are true
 /// distances; see the accuracy above.
-Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3> polyline,
-                            double tolerance);
+Deviation measure_deviation(std::span<const Bezier> pieces, std::span<const Vec3> polyline, double tolerance);
 
 }  // namespace bezcam

@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "bezcam/kernel/units.hpp"
 #include "bezcam/kernel/curve.hpp"
+#include "bezcam/kernel/units.hpp"
 
 namespace bezcam {
 
@@ -38,7 +38,6 @@ enum class NurbsDialect {
   fanuc,     ///< G06.2-style block (start word configurable: G06.2 / G06.3)
   linuxcnc,  ///< G5 / G5.1 Bézier moves and G5.2 / G5.3 NURBS
 };
-
 
 struct ExactOptions {
   NurbsDialect dialect = NurbsDialect::fanuc;  ///< fanuc or linuxcnc
@@ -68,8 +67,8 @@ struct ExactBlock {
   /// the exact end of the block before, moved by at most `snap`).
   std::vector<Bezier> source;
   double snap = 0;
-  double bound = 0;     ///< proven bound, printed vs true (fallbacks: 0, their emitter proves theirs)
-  std::string note;     ///< why this form was chosen when it is not the plain exact one
+  double bound = 0;  ///< proven bound, printed vs true (fallbacks: 0, their emitter proves theirs)
+  std::string note;  ///< why this form was chosen when it is not the plain exact one
 };
 
 /// Plans the blocks of a curve entity, end to end: the first block starts at

@@ -20,15 +20,15 @@
 ///  * The band (default): inner vertices move off the curve, up to the
 ///    tolerance towards its convex side, and chords get about 1.4 times
 ///    longer. Its search takes the first proven chord of at least 84 % of
-///    the longest (few tries per chord, a few per cent more chords). Each such chord is proven by band_deviation(): a parametric
-///    distance between the sub-curve and the chord reparametrised as a
-///    Bézier curve of the same degree, which bounds both directions.
+///    the longest (few tries per chord, a few per cent more chords). Each such chord is proven by band_deviation(): a
+///    parametric distance between the sub-curve and the chord reparametrised as a Bézier curve of the same degree,
+///    which bounds both directions.
 #include <functional>
 #include <span>
 #include <vector>
 
-#include "bezcam/kernel/units.hpp"
 #include "bezcam/kernel/bezier.hpp"
+#include "bezcam/kernel/units.hpp"
 #include "bezcam/limits.hpp"
 
 namespace bezcam {

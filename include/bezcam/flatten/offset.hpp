@@ -30,11 +30,11 @@ namespace bezcam {
 /// A line or a circular arc in the XY plane, travelled from `a` to `b`.
 struct ArcSeg {
   bool arc = false;
-  Vec3 a, b;              ///< ends (exact: point(0) == a, point(1) == b)
-  Vec3 c;                 ///< arcs: centre
-  double radius = 0;      ///< arcs
-  double a0 = 0;          ///< arcs: angle of `a` about `c`
-  double sweep = 0;       ///< arcs: signed swept angle (counter-clockwise > 0)
+  Vec3 a, b;          ///< ends (exact: point(0) == a, point(1) == b)
+  Vec3 c;             ///< arcs: centre
+  double radius = 0;  ///< arcs
+  double a0 = 0;      ///< arcs: angle of `a` about `c`
+  double sweep = 0;   ///< arcs: signed swept angle (counter-clockwise > 0)
 
   static ArcSeg line(const Vec3& a, const Vec3& b);
   /// Arc from `a` about `c` through the signed `sweep`, ending at `b`.

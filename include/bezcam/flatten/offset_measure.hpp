@@ -44,14 +44,14 @@ struct OffsetReading {
 };
 
 struct OffsetMeasure {
-  double r = 0;     ///< the tool's offset from the curve
-  int side = 0;     ///< +1 left, -1 right of the curve's direction (where the tool is); 0: no coverage
+  double r = 0;  ///< the tool's offset from the curve
+  int side = 0;  ///< +1 left, -1 right of the curve's direction (where the tool is); 0: no coverage
   /// Where the band of a one-sided tolerance has its middle, less r (half
   /// the tolerance away from the part with "waste"): the tool reaches
   /// where the offset at r + middle is not folded away. 0 for a two-sided band.
   double middle = 0;
-  double resolution = 0;   ///< the sampling of the curve and of the path
-  bool distances = true;   ///< false: coverage only (min and max read r)
+  double resolution = 0;  ///< the sampling of the curve and of the path
+  bool distances = true;  ///< false: coverage only (min and max read r)
 };
 
 /// One piece of a printed path as the controller draws it, in XY: a Bézier

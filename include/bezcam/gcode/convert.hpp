@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "bezcam/machine/planner.hpp"
-#include "bezcam/gcode/writer.hpp"
 #include "bezcam/cam/validate.hpp"
+#include "bezcam/gcode/writer.hpp"
+#include "bezcam/machine/planner.hpp"
 
 namespace bezcam {
 

@@ -17,7 +17,6 @@ inline constexpr int kNumberChars = 400;
 /// the end of the text written.
 char* format_number_to(char* buf, double v, int decimals);
 
-
 /// A measured deviation as bezcam states it (program header, report,
 /// preview) beside its proven bound: `format(measured)`, or, when it is
 /// within the measurement's resolution (kMeasureResolution of the

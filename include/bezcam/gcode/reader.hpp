@@ -14,10 +14,10 @@
 #include <string_view>
 #include <vector>
 
+#include "bezcam/gcode/lint.hpp"  // GcodeFinding, lint_gcode()
 #include "bezcam/kernel/arc.hpp"
 #include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/machine/motion.hpp"
-#include "bezcam/gcode/lint.hpp"  // GcodeFinding, lint_gcode()
 
 namespace bezcam {
 
@@ -25,16 +25,16 @@ namespace bezcam {
 /// The modal motion (RS274/NGC group 1), named. The value is the G number
 /// times 10 (G06.2 -> 62), as the reader's code tables use.
 enum class ModalMotion : int {
-  none = -1,       ///< at the start, after G80 and after G5.3
-  rapid = 0,       ///< G00
-  feed = 10,       ///< G01
-  arc_cw = 20,     ///< G02
-  arc_ccw = 30,    ///< G03
-  cubic = 50,      ///< G5 (LinuxCNC cubic spline)
-  quadratic = 51,  ///< G5.1 (LinuxCNC quadratic spline)
-  nurbs_g5_2 = 52, ///< G5.2 (a LinuxCNC NURBS block is open)
-  nurbs_g06_2 = 62,///< G06.2 (Fanuc NURBS mode)
-  nurbs_g06_3 = 63,///< G06.3 (the seeds' wording of the Fanuc block)
+  none = -1,         ///< at the start, after G80 and after G5.3
+  rapid = 0,         ///< G00
+  feed = 10,         ///< G01
+  arc_cw = 20,       ///< G02
+  arc_ccw = 30,      ///< G03
+  cubic = 50,        ///< G5 (LinuxCNC cubic spline)
+  quadratic = 51,    ///< G5.1 (LinuxCNC quadratic spline)
+  nurbs_g5_2 = 52,   ///< G5.2 (a LinuxCNC NURBS block is open)
+  nurbs_g06_2 = 62,  ///< G06.2 (Fanuc NURBS mode)
+  nurbs_g06_3 = 63,  ///< G06.3 (the seeds' wording of the Fanuc block)
 };
 
 /// Distance mode (group 3): how the X Y Z words of a move are read.
@@ -69,7 +69,7 @@ enum class PathMode : int {
 
 struct MachineState {
   Vec3 pos;
-  unsigned known_axes = 0;   ///< X 1, Y 2, Z 4: set once a word gave the axis
+  unsigned known_axes = 0;  ///< X 1, Y 2, Z 4: set once a word gave the axis
   Units units = Units::mm;
   bool units_set = false;
   DistanceMode distance = DistanceMode::absolute;
@@ -93,12 +93,12 @@ struct MachineState {
   bool coolant_mist = false;   ///< M07 (M09 stops both)
   bool coolant_flood = false;  ///< M08
   PathMode path_mode = PathMode::unset;
-  double dwell_seconds = 0;    ///< G04 P- dwells so far, in seconds
+  double dwell_seconds = 0;  ///< G04 P- dwells so far, in seconds
   /// Path mode: -1 until the program sets one (the controller's default
   /// applies), 0 for exact stop (G61, G61.1), the tolerance P of G64 P-,
   /// infinity for G64 without P (corners as fast as the planner can).
   double path_tolerance = -1;
-  int program_stops = 0;       ///< M00 / M01 seen so far (the operator resumes)
+  int program_stops = 0;  ///< M00 / M01 seen so far (the operator resumes)
   /// Cutter radius compensation, with its D register and the radius it
   /// holds (program units).
   CutterCompMode cutter_comp = CutterCompMode::off;
@@ -179,10 +179,10 @@ class GcodeInterpreter {
   /// resume a program part-way (bezcam/gcode/resume.hpp).
   struct Continuation {
     ModalMotion open_block = ModalMotion::none;  ///< the open multi-line block (G06.2/G06.3, G5.2), none when none is
-    int open_line = 0;       ///< the line that opened it
-    bool g5_chain = false;   ///< the last motion was a G5: a G5 without I and J takes its tangent
-    int selected_tool = -1;  ///< the last T word (-1: none); M06 puts it in the spindle
-    int end_line = 0;        ///< the M02 / M30 line, 0 before it
+    int open_line = 0;                           ///< the line that opened it
+    bool g5_chain = false;                       ///< the last motion was a G5: a G5 without I and J takes its tangent
+    int selected_tool = -1;                      ///< the last T word (-1: none); M06 puts it in the spindle
+    int end_line = 0;                            ///< the M02 / M30 line, 0 before it
   };
   Continuation continuation() const;
 

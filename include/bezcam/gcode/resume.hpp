@@ -20,8 +20,8 @@
 #include <string>
 #include <string_view>
 
-#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/gcode/reader.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 
 namespace bezcam {
 
@@ -38,13 +38,13 @@ struct ResumePlan {
   int start_line = 0;  ///< where the resumed program's tail starts (<= asked_line)
   /// Why start_line is before asked_line, a sentence ("" when they are equal).
   std::string reason;
-  int total_lines = 0;        ///< lines of the original program
-  MachineState state;         ///< the reader's state before start_line, in a run from the start
-  double safe_z = 0;          ///< the preamble's safe height, program units
-  double plunge_feed = 0;     ///< the preamble's plunge feed, program units per minute
-  std::string preamble;       ///< the preamble's text, one block per line, each ended by '\n'
-  int preamble_lines = 0;     ///< its line count
-  std::string program;        ///< preamble + the original text from start_line on
+  int total_lines = 0;     ///< lines of the original program
+  MachineState state;      ///< the reader's state before start_line, in a run from the start
+  double safe_z = 0;       ///< the preamble's safe height, program units
+  double plunge_feed = 0;  ///< the preamble's plunge feed, program units per minute
+  std::string preamble;    ///< the preamble's text, one block per line, each ended by '\n'
+  int preamble_lines = 0;  ///< its line count
+  std::string program;     ///< preamble + the original text from start_line on
 
   /// The original line of line `resumed` of `program`, 0 for a preamble line.
   long original_line(long resumed) const {

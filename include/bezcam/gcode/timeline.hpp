@@ -6,8 +6,8 @@
 #include <string>
 #include <string_view>
 
-#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/reader.hpp"
+#include "bezcam/machine/planner.hpp"
 
 namespace bezcam {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <string_view>
 
-#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/cam/program.hpp"
+#include "bezcam/cam/program_motion.hpp"
 
 namespace bezcam {
 

@@ -23,7 +23,7 @@ struct Piece {
   std::vector<double> weights;  ///< empty: polynomial
   std::vector<double> knots;    ///< bspline only
   Vec3 start() const { return points.front(); }
-  Vec3 end() const;             ///< the end point (a clamped B-spline's last point)
+  Vec3 end() const;  ///< the end point (a clamped B-spline's last point)
 };
 
 /// A curve through points (a DXF spline given by fit points only): the
@@ -52,8 +52,8 @@ struct LayerSummary {
 };
 
 struct Drawing {
-  std::string source;     ///< the file name, for messages
-  std::string format;     ///< "svg" or "dxf"
+  std::string source;  ///< the file name, for messages
+  std::string format;  ///< "svg" or "dxf"
   std::vector<Contour> contours;
   std::map<std::string, LayerSummary> layers;  ///< by layer name ("" for SVG)
   /// Largest extent of the control points (mm), the scale of "meet".

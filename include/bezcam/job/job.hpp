@@ -83,16 +83,16 @@ struct ToolpathSpec {
 };
 
 struct Entity {
-  std::string id;      ///< may be empty
-  size_t index = 0;    ///< position in `entities`
-  std::string type;    ///< JSON type
-  JobParams params;    ///< this entity's overrides
-  CurveGeometry curve; ///< for curve entities (bezier, bspline, interpolate, path)
+  std::string id;       ///< may be empty
+  size_t index = 0;     ///< position in `entities`
+  std::string type;     ///< JSON type
+  JobParams params;     ///< this entity's overrides
+  CurveGeometry curve;  ///< for curve entities (bezier, bspline, interpolate, path)
   /// bezier_patch, coons_patch: the surface; curve_on_surface: the surface
   /// it lies on (shared with the patch entity it names, if any).
   std::shared_ptr<const SurfaceGeometry> surface;
-  ToolpathSpec toolpath;  ///< bezier_patch, coons_patch
-  CurveGeometry uv_curve; ///< curve_on_surface: the 2D curve in the (u, v) square
+  ToolpathSpec toolpath;   ///< bezier_patch, coons_patch
+  CurveGeometry uv_curve;  ///< curve_on_surface: the 2D curve in the (u, v) square
 
   /// The id, or `entities[i]` when there is none.
   std::string label() const { return id.empty() ? "entities[" + std::to_string(index) + "]" : id; }
@@ -100,8 +100,8 @@ struct Entity {
 };
 
 /// The placeholders a `before` / `after` line may use.
-inline constexpr std::string_view kEntityPlaceholders[] = {"entity",  "tool",  "rpm",    "feed",
-                                                          "plunge_feed", "cut_z", "safe_z", "top_z"};
+inline constexpr std::string_view kEntityPlaceholders[] = {"entity",      "tool",  "rpm",    "feed",
+                                                           "plunge_feed", "cut_z", "safe_z", "top_z"};
 
 struct Job {
   int version = 1;

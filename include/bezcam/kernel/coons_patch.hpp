@@ -53,7 +53,9 @@ struct CoonsPatch {
   static CoonsPatch make(BoundaryCurve v0, BoundaryCurve v1, BoundaryCurve u0, BoundaryCurve u1, CoonsBlend blend);
 
   /// Corners: P(0,0), P(1,0), P(0,1), P(1,1) (taken from v0 and v1).
-  Vec3 corner(int u, int v) const { return v == 0 ? (u == 0 ? v0.front() : v0.back()) : (u == 0 ? v1.front() : v1.back()); }
+  Vec3 corner(int u, int v) const {
+    return v == 0 ? (u == 0 ? v0.front() : v0.back()) : (u == 0 ? v1.front() : v1.back());
+  }
 };
 
 /// S(u,v) by the digest's formula (independent of to_bezier_cells()).

@@ -23,7 +23,7 @@ Continuity joint_continuity(const Bezier& a, const Bezier& b, double tol);
 
 /// One source segment of a curve entity (a path has several).
 struct CurveSegment {
-  std::string kind;        ///< "bezier", "bspline", ...
+  std::string kind;  ///< "bezier", "bspline", ...
   int degree = 0;
   bool rational = false;
   size_t first_piece = 0;  ///< index into CurveGeometry::pieces
@@ -37,12 +37,12 @@ struct CurveSegment {
 };
 
 struct CurveGeometry {
-  std::string kind;                  ///< entity type: bezier, bspline, interpolate, path
+  std::string kind;  ///< entity type: bezier, bspline, interpolate, path
   int dim = 2;
   bool closed = false;
-  std::vector<Bezier> pieces;        ///< exact, end to end
+  std::vector<Bezier> pieces;  ///< exact, end to end
   std::vector<CurveSegment> segments;
-  std::vector<Continuity> joints;    ///< segments.size() - 1 entries (+1 when closed)
+  std::vector<Continuity> joints;  ///< segments.size() - 1 entries (+1 when closed)
 
   int max_degree() const;
   bool rational() const;

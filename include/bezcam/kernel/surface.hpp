@@ -16,9 +16,9 @@
 namespace bezcam {
 
 struct SurfaceGeometry {
-  std::string kind;                                ///< "bezier_patch" or "coons_patch"
-  std::variant<BezierPatch, CoonsPatch> source;    ///< as given
-  PatchGrid grid;                                  ///< exact cells
+  std::string kind;                              ///< "bezier_patch" or "coons_patch"
+  std::variant<BezierPatch, CoonsPatch> source;  ///< as given
+  PatchGrid grid;                                ///< exact cells
   /// +1 or -1: the factor that makes Su x Sv point up out of the material
   /// (positive z over most of the patch, measured on a 17 x 17 grid).
   double orientation = 1;
@@ -59,7 +59,7 @@ struct SurfaceCurve {
   std::vector<Bezier> normals;  ///< empty, or one per piece
   std::vector<double> breaks;   ///< points.size() + 1 values, 0 ... 1
   /// (u, v) of the curve's parameter t, for reports and gouge checks.
-  std::vector<Bezier> uv;       ///< one 2D piece per piece: its (u, v) track
+  std::vector<Bezier> uv;  ///< one 2D piece per piece: its (u, v) track
 };
 
 /// The iso-parameter curve: dir 'u' is u -> S(u, at), dir 'v' is

@@ -23,9 +23,24 @@ struct Vec3 {
   constexpr Vec3 operator-() const { return {-x, -y, -z}; }
   constexpr Vec3 operator*(double s) const { return {x * s, y * s, z * s}; }
   constexpr Vec3 operator/(double s) const { return {x / s, y / s, z / s}; }
-  constexpr Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
-  constexpr Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
-  constexpr Vec3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
+  constexpr Vec3& operator+=(const Vec3& o) {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  constexpr Vec3& operator-=(const Vec3& o) {
+    x -= o.x;
+    y -= o.y;
+    z -= o.z;
+    return *this;
+  }
+  constexpr Vec3& operator*=(double s) {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
   constexpr bool operator==(const Vec3&) const = default;
 };
 
@@ -68,7 +83,12 @@ struct Box3 {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
-  void add(const Box3& b) { if (!b.empty()) { add(b.lo); add(b.hi); } }
+  void add(const Box3& b) {
+    if (!b.empty()) {
+      add(b.lo);
+      add(b.hi);
+    }
+  }
   bool empty() const { return lo.x > hi.x; }
   /// Whether `inner` lies within this box grown by `eps` on every side.
   bool contains(const Box3& inner, double eps = 0) const {
@@ -81,8 +101,8 @@ struct Box3 {
 /// A point for messages: "(x, y, z)", or "(x, y)" when `dim` is 2, each
 /// coordinate as fmt_num() writes it with `digits` significant digits.
 inline std::string fmt_point(const Vec3& p, int dim = 3, int digits = 10) {
-  return "(" + fmt_num(p.x, digits) + ", " + fmt_num(p.y, digits) + (dim == 3 ? ", " + fmt_num(p.z, digits) : std::string()) +
-         ")";
+  return "(" + fmt_num(p.x, digits) + ", " + fmt_num(p.y, digits) +
+         (dim == 3 ? ", " + fmt_num(p.z, digits) : std::string()) + ")";
 }
 
 }  // namespace bezcam

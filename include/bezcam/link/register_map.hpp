@@ -59,9 +59,9 @@ inline constexpr std::uint16_t starved_ms = 42;       ///< u32: machine time sto
 inline constexpr std::uint16_t stalls = 44;           ///< u32: times the machine ran dry mid-program
 inline constexpr std::uint16_t status_count = 48;     ///< 46..47 reserved (read 0)
 // --- Text, read-only, same FC 03 / FC 04 rule.
-inline constexpr std::uint16_t alarm_text = 64;       ///< 128 bytes: the alarm's message, NUL padded
+inline constexpr std::uint16_t alarm_text = 64;  ///< 128 bytes: the alarm's message, NUL padded
 inline constexpr std::uint16_t alarm_text_count = 64;
-inline constexpr std::uint16_t machine_name = 128;    ///< 32 bytes: the profile's name, NUL padded
+inline constexpr std::uint16_t machine_name = 128;  ///< 32 bytes: the profile's name, NUL padded
 inline constexpr std::uint16_t machine_name_count = 16;
 /// Registers [0, readable_end) can be read; nothing else can.
 inline constexpr std::uint16_t readable_end = 144;
@@ -105,23 +105,23 @@ enum class Alarm : std::uint16_t {
 /// exception code is the coarse version).
 enum class Reject : std::uint16_t {
   none = 0,
-  bad_function = 1,     ///< function code other than 03, 04, 06, 16, 23 (exception 01)
-  bad_address = 2,      ///< outside the map, or the wrong block for the function (02)
-  read_only = 3,        ///< write to the status or text registers (02)
-  bad_count = 4,        ///< register count or byte count out of range (03)
-  bad_command = 5,      ///< unknown command code or wrong number of arguments (03)
-  busy = 6,             ///< another sender owns the open transfer (06)
-  not_owner = 7,        ///< chunk from a connection that did not OPEN or RESUME (06)
-  bad_token = 8,        ///< token does not match the transfer's owner (03)
-  bad_session = 9,      ///< session id does not match the open transfer (03)
-  not_receiving = 10,   ///< no open transfer (04)
-  in_alarm = 11,        ///< the controller is in alarm; RESET or OPEN a new program (04)
-  seq_gap = 12,         ///< sequence number beyond last acknowledged + 1 (03)
-  bad_length = 13,      ///< chunk length 0, above max_chunk, or not matching the registers (03)
-  bad_chunk_crc = 14,   ///< chunk CRC-32 does not match its payload (03)
-  nul_byte = 15,        ///< payload holds a NUL byte (03)
-  buffer_full = 16,     ///< payload larger than buffer_free; retry later (06)
-  dup_mismatch = 17,    ///< a retransmitted chunk differs from the one applied (03)
+  bad_function = 1,    ///< function code other than 03, 04, 06, 16, 23 (exception 01)
+  bad_address = 2,     ///< outside the map, or the wrong block for the function (02)
+  read_only = 3,       ///< write to the status or text registers (02)
+  bad_count = 4,       ///< register count or byte count out of range (03)
+  bad_command = 5,     ///< unknown command code or wrong number of arguments (03)
+  busy = 6,            ///< another sender owns the open transfer (06)
+  not_owner = 7,       ///< chunk from a connection that did not OPEN or RESUME (06)
+  bad_token = 8,       ///< token does not match the transfer's owner (03)
+  bad_session = 9,     ///< session id does not match the open transfer (03)
+  not_receiving = 10,  ///< no open transfer (04)
+  in_alarm = 11,       ///< the controller is in alarm; RESET or OPEN a new program (04)
+  seq_gap = 12,        ///< sequence number beyond last acknowledged + 1 (03)
+  bad_length = 13,     ///< chunk length 0, above max_chunk, or not matching the registers (03)
+  bad_chunk_crc = 14,  ///< chunk CRC-32 does not match its payload (03)
+  nul_byte = 15,       ///< payload holds a NUL byte (03)
+  buffer_full = 16,    ///< payload larger than buffer_free; retry later (06)
+  dup_mismatch = 17,   ///< a retransmitted chunk differs from the one applied (03)
 };
 
 /// Command codes (register 0x100); arguments follow in 0x101...
@@ -138,16 +138,15 @@ std::uint16_t command_length(Command c);
 /// Bits of register 32.
 namespace flag {
 inline constexpr std::uint16_t spindle_on = 1;
-inline constexpr std::uint16_t inch = 2;         ///< program units are inches
-inline constexpr std::uint16_t incremental = 4;  ///< G91 in effect
-inline constexpr std::uint16_t program_end = 8;  ///< M02 / M30 executed
+inline constexpr std::uint16_t inch = 2;             ///< program units are inches
+inline constexpr std::uint16_t incremental = 4;      ///< G91 in effect
+inline constexpr std::uint16_t program_end = 8;      ///< M02 / M30 executed
 inline constexpr std::uint16_t owner_attached = 16;  ///< the transfer's owner has a live connection
 }  // namespace flag
 
 /// Standard Modbus exception codes used by the controller.
 namespace exception_code {
-inline constexpr int illegal_function = 1, illegal_address = 2, illegal_value = 3, device_failure = 4,
-                     device_busy = 6;
+inline constexpr int illegal_function = 1, illegal_address = 2, illegal_value = 3, device_failure = 4, device_busy = 6;
 }
 /// The Modbus exception code that goes with a refusal.
 int exception_for(Reject r);

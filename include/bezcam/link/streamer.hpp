@@ -21,11 +21,11 @@ struct StreamProgress {
   std::uint64_t bytes_acked = 0, bytes_total = 0;
   std::uint64_t lines_acked = 0, lines_total = 0;  ///< complete lines inside the acknowledged bytes
   std::uint32_t lines_executed = 0;
-  double seconds = 0;      ///< since the transfer was opened
-  double rate = 0;         ///< bytes per second acknowledged, over the whole transfer
+  double seconds = 0;  ///< since the transfer was opened
+  double rate = 0;     ///< bytes per second acknowledged, over the whole transfer
   State state = State::idle;
   int reconnects = 0;
-  bool waiting = false;    ///< the controller's buffer is full: waiting for it to execute
+  bool waiting = false;  ///< the controller's buffer is full: waiting for it to execute
 };
 
 struct StreamOptions {

@@ -64,11 +64,11 @@ class CutterComp {
 
   int side_ = 0;
   double r_ = 0;
-  bool entering_ = false;                ///< on() seen, no XY move yet
-  std::optional<MotionBlock> pending_;   ///< an XY move whose end waits for the next move
-  Vec3 pending_start_;                   ///< where the tool starts it (compensated)
-  std::vector<MotionBlock> held_;        ///< Z-only moves after pending_
-  std::optional<Vec3> exit_from_;        ///< after off(): the tool's XY until the exit move
+  bool entering_ = false;               ///< on() seen, no XY move yet
+  std::optional<MotionBlock> pending_;  ///< an XY move whose end waits for the next move
+  Vec3 pending_start_;                  ///< where the tool starts it (compensated)
+  std::vector<MotionBlock> held_;       ///< Z-only moves after pending_
+  std::optional<Vec3> exit_from_;       ///< after off(): the tool's XY until the exit move
 };
 
 }  // namespace bezcam

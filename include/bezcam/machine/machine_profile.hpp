@@ -3,9 +3,9 @@
 /// (machines/NAME.json; docs/machines.md documents every key).
 #include <algorithm>
 #include <array>
+#include <filesystem>
 #include <limits>
 #include <map>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,15 +23,15 @@ inline constexpr double kNoTravelLimit = std::numeric_limits<double>::infinity()
 /// and timing its trajectory planner works with. The simulated controller
 /// and the cycle-time estimate plan with them (machine/planner.hpp).
 struct MotionModel {
-  std::array<double, 3> max_velocity_mm_min{};   ///< per axis x, y, z
+  std::array<double, 3> max_velocity_mm_min{};  ///< per axis x, y, z
   std::array<double, 3> max_acceleration_mm_s2{};
   /// Per axis; absent for an acceleration-limited (trapezoidal) planner.
   std::optional<std::array<double, 3>> max_jerk_mm_s3;
-  double period_s = 0.001;          ///< trajectory period
+  double period_s = 0.001;  ///< trajectory period
   /// A block of length L runs at most at L / (this x period_s); 0: no cap.
   double min_segment_periods = 0;
-  double block_rate_hz = 0;         ///< most blocks started per second; 0: no cap
-  int lookahead_blocks = 50;        ///< blocks the planner sees ahead
+  double block_rate_hz = 0;   ///< most blocks started per second; 0: no cap
+  int lookahead_blocks = 50;  ///< blocks the planner sees ahead
   /// Largest distance the executed path may leave the programmed one at a
   /// corner (the controller's default path mode); 0: exact stop.
   double blend_tolerance_mm = 0;
@@ -48,8 +48,8 @@ struct MotionModel {
 struct MachineProfile {
   std::string name;
   std::string description;
-  std::vector<std::string> header;   ///< raw lines before the program
-  std::vector<std::string> footer;   ///< raw lines after the final retract
+  std::vector<std::string> header;  ///< raw lines before the program
+  std::vector<std::string> footer;  ///< raw lines after the final retract
   bool line_numbers = false;
   int line_start = 10, line_step = 10;
   int decimals_mm = 3, decimals_inch = 4;
@@ -108,9 +108,8 @@ struct MachineProfile {
   bool nurbs_fixed_decimals = false;
   /// Travel in program coordinates, mm: {min, max} per axis; none (the
   /// whole line) unless the profile gives it: `generic` is not a machine.
-  std::array<std::array<double, 2>, 3> travel_mm{{{-kNoTravelLimit, kNoTravelLimit},
-                                                  {-kNoTravelLimit, kNoTravelLimit},
-                                                  {-kNoTravelLimit, kNoTravelLimit}}};
+  std::array<std::array<double, 2>, 3> travel_mm{
+      {{-kNoTravelLimit, kNoTravelLimit}, {-kNoTravelLimit, kNoTravelLimit}, {-kNoTravelLimit, kNoTravelLimit}}};
   double max_feed_mm_min = 1e5;
   /// The motion model (key `motion`); every shipped profile has one. A
   /// user's profile without it can still convert and be checked, but has

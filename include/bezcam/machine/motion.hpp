@@ -16,17 +16,17 @@ enum class BlockKind { rapid, linear, arc_cw, arc_ccw, nurbs, bezier };
 /// One executed motion in absolute program coordinates (program units).
 struct MotionBlock {
   BlockKind kind = BlockKind::linear;
-  int line = 0;            ///< 1-based line of the program where the block ends
-  int first_line = 0;      ///< where it starts (NURBS blocks span lines)
+  int line = 0;        ///< 1-based line of the program where the block ends
+  int first_line = 0;  ///< where it starts (NURBS blocks span lines)
   Vec3 from, to;
   /// Axes of `from` known before the move (X 1, Y 2, Z 4); an unknown axis
   /// of `from` holds the value of `to` (no motion assumed along it).
   unsigned from_known = 7;
-  double feed = 0;         ///< units/min (0 for rapids)
-  Vec3 center;             ///< arcs
-  Plane plane = Plane::xy; ///< arcs: G17, G18 or G19
-  int order = 0;           ///< nurbs: degree + 1; bezier: degree + 1
-  std::vector<Vec3> ctrl;  ///< nurbs / bezier control points, ctrl[0] == from
+  double feed = 0;                     ///< units/min (0 for rapids)
+  Vec3 center;                         ///< arcs
+  Plane plane = Plane::xy;             ///< arcs: G17, G18 or G19
+  int order = 0;                       ///< nurbs: degree + 1; bezier: degree + 1
+  std::vector<Vec3> ctrl;              ///< nurbs / bezier control points, ctrl[0] == from
   std::vector<double> weights, knots;  ///< nurbs (LinuxCNC G5.2: the interpreter's clamped uniform knots)
   /// Index of the job entity the block cuts (program_motion()); -1 when
   /// unknown (a program read from text) or none (a tool change's retract).
@@ -53,7 +53,6 @@ Arc block_arc(const MotionBlock& b);
 /// Swept angle of an arc block, in (0, 2 pi] (equal ends: a full circle).
 double arc_sweep(const MotionBlock& b);
 
-
 /// Length of a block in program units: exact for lines and arcs (helical
 /// arcs included); NURBS and Bézier blocks (and arcs whose ends sit at
 /// different radii) by chord sums with Richardson extrapolation, halving
@@ -71,10 +70,10 @@ inline bool is_feed(const MotionBlock& b) { return b.kind != BlockKind::rapid; }
 
 /// Lengths and times of a set of motion blocks (program units).
 struct MotionTotals {
-  double feed_length = 0;     ///< blocks at a feed: cutting and plunging
-  double rapid_length = 0;    ///< rapid blocks
-  double feed_time_s = 0;     ///< sum of length / feed, in seconds
-  double rapid_time_s = 0;    ///< rapid_length / rapid rate, in seconds
+  double feed_length = 0;   ///< blocks at a feed: cutting and plunging
+  double rapid_length = 0;  ///< rapid blocks
+  double feed_time_s = 0;   ///< sum of length / feed, in seconds
+  double rapid_time_s = 0;  ///< rapid_length / rapid rate, in seconds
   size_t feed_blocks = 0, rapid_blocks = 0;
   /// Estimated run time: feeds and rapids at their rates, with no
   /// acceleration, dwell or tool-change time (so a lower bound).
@@ -86,6 +85,5 @@ struct MotionTotals {
 /// (> 0). Feeds of 0 (a reader that saw no F word) count no time.
 inline constexpr int kAllEntities = -2;
 MotionTotals motion_totals(std::span<const MotionBlock> motion, double rapid_rate, int entity = kAllEntities);
-
 
 }  // namespace bezcam

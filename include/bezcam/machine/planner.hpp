@@ -66,7 +66,7 @@ struct PlannedBlock {
   double time_s = 0;
   SpeedLimit limit = SpeedLimit::programmed;  ///< what held its peak below the programmed feed
   bool starved = false;
-  bool clamped = false;        ///< programmed feed above what the axes reach
+  bool clamped = false;  ///< programmed feed above what the axes reach
 };
 
 /// One piece of executed path: a segment of a block or a corner's blend.
@@ -75,15 +75,15 @@ struct PlanSegment {
   struct Piece {
     Shape shape = Shape::line;
     double length = 0;
-    Vec3 a, b;                      ///< line: ends
-    Vec3 center, u, w;              ///< arc: centre, unit vectors to the start and 90 degrees on
-    double radius = 0, angle = 0;   ///< arc
-    int block = -1;                 ///< block: index in Timeline::blocks
-    std::vector<double> s, t;       ///< block: arc length -> block parameter table
-    std::vector<Vec3> pts;          ///< curves: the points at those parameters
+    Vec3 a, b;                     ///< line: ends
+    Vec3 center, u, w;             ///< arc: centre, unit vectors to the start and 90 degrees on
+    double radius = 0, angle = 0;  ///< arc
+    int block = -1;                ///< block: index in Timeline::blocks
+    std::vector<double> s, t;      ///< block: arc length -> block parameter table
+    std::vector<Vec3> pts;         ///< curves: the points at those parameters
   };
   std::vector<Piece> pieces;
-  int block = -1;        ///< the block it belongs to (blends: the block before the corner)
+  int block = -1;  ///< the block it belongs to (blends: the block before the corner)
   bool rapid = false;
   double length = 0, vmax = 0, accel = 0;  ///< units/s, units/s^2 along the path
   SpeedLimit limit = SpeedLimit::programmed;
@@ -96,8 +96,8 @@ struct PlanSegment {
   double kink_reduce = 0;
   /// The acceleration the move may use in all (accel is its tangential part).
   double overall_accel = 0;
-  double v0 = 0, v1 = 0, vpeak = 0;        ///< planned entry, exit, peak speed (units/s)
-  double t_start = 0;                      ///< when it starts (s)
+  double v0 = 0, v1 = 0, vpeak = 0;           ///< planned entry, exit, peak speed (units/s)
+  double t_start = 0;                         ///< when it starts (s)
   double t_acc = 0, t_cruise = 0, t_dec = 0;  ///< phases (s)
   double time() const { return t_acc + t_cruise + t_dec; }
   /// Distance along the segment after `tau` seconds of it.
@@ -113,8 +113,8 @@ struct MotionPlan {
   double programmed_feed_time_s = 0;  ///< every block at its programmed feed, no acceleration
   double mean_feed_ratio = 1;         ///< achieved / programmed feed, length-weighted over cutting blocks
   size_t starved_blocks = 0, clamped_blocks = 0;
-  double max_path_deviation = 0;      ///< program units: corner blending
-  int max_deviation_line = 0;         ///< where (the line of the block before the corner)
+  double max_path_deviation = 0;  ///< program units: corner blending
+  int max_deviation_line = 0;     ///< where (the line of the block before the corner)
   std::vector<PlannedBlock> blocks;
   std::vector<PlanSegment> segments;
   std::vector<PlanPause> pauses;

@@ -21,13 +21,12 @@
 /// over a holding tab) and `material-left` (curve the tool cannot reach);
 /// `scale-bar`; `legend`.
 #include <functional>
-
-#include "bezcam/cam/program.hpp"
-#include "bezcam/flatten/offset.hpp"
 #include <span>
 #include <string>
 #include <vector>
 
+#include "bezcam/cam/program.hpp"
+#include "bezcam/flatten/offset.hpp"
 #include "bezcam/job/job.hpp"
 #include "bezcam/machine/motion.hpp"
 #include "bezcam/machine/planner.hpp"

@@ -10,10 +10,10 @@
 #include <string_view>
 #include <vector>
 
+#include "bezcam/gcode/number_format.hpp"
+#include "bezcam/gcode/writer.hpp"
 #include "bezcam/machine/motion.hpp"
 #include "bezcam/machine/planner.hpp"
-#include "bezcam/gcode/writer.hpp"
-#include "bezcam/gcode/number_format.hpp"
 
 namespace bezcam {
 

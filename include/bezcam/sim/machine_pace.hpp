@@ -27,8 +27,8 @@
 #include <memory>
 #include <vector>
 
-#include "bezcam/machine/planner.hpp"
 #include "bezcam/gcode/reader.hpp"
+#include "bezcam/machine/planner.hpp"
 
 namespace bezcam::sim {
 
@@ -98,10 +98,10 @@ class MachinePace {
   Vec3 start_{0, 0, 0};  // where the machine left the last committed block
   double speed_ = 0;     // and at what speed
   double until_ = 0;
-  std::deque<Item> items_;        // committed, not yet forgotten
+  std::deque<Item> items_;  // committed, not yet forgotten
   std::size_t blocks_forgotten_ = 0;
-  std::deque<Window> windows_;    // committed plans not yet forgotten
-  Vec3 rest_{0, 0, 0};            // where the forgotten windows left the machine
+  std::deque<Window> windows_;  // committed plans not yet forgotten
+  Vec3 rest_{0, 0, 0};          // where the forgotten windows left the machine
 };
 
 }  // namespace bezcam::sim

@@ -27,9 +27,9 @@
 #include <thread>
 #include <vector>
 
+#include "bezcam/gcode/reader.hpp"
 #include "bezcam/link/crc32.hpp"
 #include "bezcam/link/register_map.hpp"
-#include "bezcam/gcode/reader.hpp"
 #include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/sim/machine_pace.hpp"
 
@@ -37,7 +37,6 @@ namespace bezcam::sim {
 
 // The register map and frame layouts are the link's (bezcam/link/).
 using namespace bezcam::link;
-
 
 /// Receives the trace as it is produced. `restart` is true for the first
 /// record of a new program (a file sink truncates there). Called from the
@@ -227,21 +226,21 @@ class SimController {
   // machine has done. The lines read and not yet done, in order:
   struct Ahead {
     long line = 0;
-    bool counts = true;   // a program line (false: the blocks the interpreter's finish() released)
-    MachineState after;   // the state once it is executed
-    std::string trace;    // its trace records
+    bool counts = true;  // a program line (false: the blocks the interpreter's finish() released)
+    MachineState after;  // the state once it is executed
+    std::string trace;   // its trace records
   };
   std::deque<Ahead> ahead_;
-  long settled_ = 0;          // every block of the lines up to here has been read
-  long retired_settled_ = -1; // settled_ when lines were last retired
-  long last_block_line_ = 0;  // the line of the last block read
+  long settled_ = 0;           // every block of the lines up to here has been read
+  long retired_settled_ = -1;  // settled_ when lines were last retired
+  long last_block_line_ = 0;   // the line of the last block read
   // A line the executor refused (or could not read) at machine pace: the
   // alarm is raised when the machine has run everything before it.
   struct Failure {
     Alarm alarm = Alarm::none;
     long line = 0;
     std::string message;  // the alarm's message (its line is `line`)
-    std::string trace;  // its trace record
+    std::string trace;    // its trace record
   };
   std::optional<Failure> failure_;
   bool interp_finished_ = false;  // the interpreter's finish() was run

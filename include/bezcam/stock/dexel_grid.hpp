@@ -46,10 +46,10 @@ StockGridSize stock_grid_size(const StockBox& box, double cell);
 
 /// What the grid's cuts did (for benchmarks and the report's detail).
 struct SweepStats {
-  std::uint64_t columns = 0;          ///< column evaluations
-  std::uint64_t searched_columns = 0; ///< of them by the certified search (spirals, G18/G19, bull on arcs)
-  std::uint64_t search_intervals = 0; ///< intervals the search examined
-  std::uint64_t depth_limited = 0;    ///< intervals it closed at a width of a few ulps
+  std::uint64_t columns = 0;           ///< column evaluations
+  std::uint64_t searched_columns = 0;  ///< of them by the certified search (spirals, G18/G19, bull on arcs)
+  std::uint64_t search_intervals = 0;  ///< intervals the search examined
+  std::uint64_t depth_limited = 0;     ///< intervals it closed at a width of a few ulps
 };
 
 class DexelGrid {
