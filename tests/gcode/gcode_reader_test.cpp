@@ -16,6 +16,7 @@
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/sim/trace.hpp"
+#include "support/files.hpp"
 #include "support/run_process.hpp"
 
 using namespace bezcam;
@@ -23,13 +24,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in) << path;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using bezcam::test::slurp;
 
 InputError refusal(std::string_view program, const MachineProfile* m = nullptr) {
   try {

@@ -11,18 +11,13 @@
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "support/files.hpp"
 
 using namespace bezcam;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in) << path;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using bezcam::test::slurp;
 
 // "line:id" of each finding, for compact comparisons.
 std::vector<std::string> brief(const std::vector<GcodeFinding>& fs) {

@@ -17,17 +17,14 @@
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/machine/planner.hpp"
+#include "support/files.hpp"
 
 using namespace bezcam;
 
 namespace {
 
 std::string slurp(const std::string& name) {
-  std::ifstream in(std::string(BEZCAM_SOURCE_DIR) + "/tests/gcode/data/posts/" + name, std::ios::binary);
-  EXPECT_TRUE(in) << name;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return bezcam::test::slurp(std::string(BEZCAM_SOURCE_DIR) + "/tests/gcode/data/posts/" + name);
 }
 
 struct Post {

@@ -12,6 +12,7 @@
 
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/machine/machine_profile.hpp"
+#include "support/files.hpp"
 #include "support/refusal.hpp"
 
 using namespace bezcam;
@@ -19,11 +20,7 @@ using namespace bezcam;
 namespace {
 
 std::string slurp(const std::string& rel) {
-  std::ifstream in(std::string(BEZCAM_SOURCE_DIR) + "/tests/gcode/data/resume/" + rel, std::ios::binary);
-  EXPECT_TRUE(in) << rel;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return bezcam::test::slurp(std::string(BEZCAM_SOURCE_DIR) + "/tests/gcode/data/resume/" + rel);
 }
 
 std::vector<std::string> lines_of(const std::string& text) {

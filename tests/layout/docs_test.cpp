@@ -18,18 +18,15 @@
 #include <string>
 #include <vector>
 
+#include "support/files.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kRoot = BEZCAM_SOURCE_DIR;
+using bezcam::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+const fs::path kRoot = BEZCAM_SOURCE_DIR;
 
 struct Line {
   int number = 0;

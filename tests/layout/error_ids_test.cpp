@@ -12,17 +12,13 @@
 #include <string>
 
 #include "bezcam/error.hpp"
+#include "support/files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using bezcam::test::slurp;
 
 // name -> dotted id, as declared in error_ids.hpp.
 std::map<std::string, std::string> declared() {

@@ -16,10 +16,13 @@
 #include "bezcam/error.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
+#include "support/files.hpp"
 #include "support/mini_xml.hpp"
 
 namespace bezcam {
 namespace {
+
+using bezcam::test::slurp;
 
 using testxml::Element;
 
@@ -45,13 +48,6 @@ PreviewInput input_for(const Built& b) {
   in.tolerance = b.program.tolerance;
   in.title = "bezcam preview: test.json";
   return in;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // Numbers of an SVG path's d attribute, as (x, y) pairs.

@@ -32,12 +32,7 @@ struct Result {
   std::string out_first_line() const { return out.substr(0, out.find('\n')); }
 };
 
-inline std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using bezcam::test::slurp;
 
 /// Runs `exe` with `args` in `cwd` (empty: the current directory); `env`
 /// entries are set (an empty value removes the variable).
