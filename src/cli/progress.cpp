@@ -8,6 +8,8 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "bezcam/format.hpp"
+
 namespace bezcam::cli {
 
 namespace {
@@ -15,13 +17,6 @@ namespace {
 double steady_seconds() {
   using namespace std::chrono;
   return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
-
-// Printf-style formatting of one number (no locale surprises).
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
 }
 
 // Shortens `s` to at most `n` characters, keeping its end (ids differ at
@@ -38,8 +33,8 @@ std::string format_bytes(double bytes) {
   static const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB"};
   int u = 0;
   while (bytes >= 1024 && u < 4) bytes /= 1024, ++u;
-  if (u == 0) return fixed(bytes, 0) + " B";
-  return fixed(bytes, bytes < 10 ? 1 : 0) + " " + units[u];
+  if (u == 0) return format_fixed(bytes, 0) + " B";
+  return format_fixed(bytes, bytes < 10 ? 1 : 0) + " " + units[u];
 }
 
 std::string format_clock(double seconds) {
@@ -54,7 +49,7 @@ std::string format_clock(double seconds) {
 
 std::string format_duration(double seconds) {
   seconds = std::max(0.0, seconds);
-  if (seconds < 10) return fixed(seconds, 1) + " s";
+  if (seconds < 10) return format_fixed(seconds, 1) + " s";
   const long s = std::lround(seconds);
   if (s < 60) return std::to_string(s) + " s";
   if (s < 3600) return std::to_string(s / 60) + " min " + std::to_string(s % 60) + " s";
@@ -185,7 +180,7 @@ std::string Progress::render(bool final_line) const {
   // The average rate since the start: steadier than an instantaneous one.
   const double rate = elapsed > 0 ? double(done_) / elapsed : 0;
   std::string rate_s;
-  if (rate > 0) rate_s = bytes ? format_bytes(rate) + "/s" : fixed(rate, rate < 10 ? 1 : 0) + " " + unit_ + "/s";
+  if (rate > 0) rate_s = bytes ? format_bytes(rate) + "/s" : format_fixed(rate, rate < 10 ? 1 : 0) + " " + unit_ + "/s";
   const bool eta_known = total_ > 0 && rate > 0 && done_ < total_;
   const double eta = eta_known ? double(total_ - done_) / rate : 0;
 

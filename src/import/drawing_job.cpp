@@ -9,6 +9,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/nesting.hpp"
+#include "bezcam/format.hpp"
 #include "bezcam/import/drawing.hpp"
 #include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/settings.hpp"
@@ -268,13 +269,9 @@ std::string refused_setting(const InputError& e, const ImportOptions& opt) {
 
 // ---- The job file's text ----------------------------------------------------
 
-// Every number at full double precision: the shortest text that reads
-// back as the same double (messages round, a job file must not).
-std::string exact(double v) {
-  char b[64];
-  return std::string(b, std::to_chars(b, b + sizeof b, v).ptr);
-}
-std::string num(double v, double scale) { return exact(v * scale); }
+// Every number at full double precision (format_exact: messages round, a
+// job file must not).
+std::string num(double v, double scale) { return format_exact(v * scale); }
 std::string point(const Vec3& p, double scale) { return "[" + num(p.x, scale) + ", " + num(p.y, scale) + "]"; }
 std::string points(const std::vector<Vec3>& ps, double scale) {
   std::string o = "[";
@@ -283,7 +280,7 @@ std::string points(const std::vector<Vec3>& ps, double scale) {
 }
 std::string numbers(const std::vector<double>& vs) {
   std::string o = "[";
-  for (size_t i = 0; i < vs.size(); ++i) o += (i ? ", " : "") + exact(vs[i]);
+  for (size_t i = 0; i < vs.size(); ++i) o += (i ? ", " : "") + format_exact(vs[i]);
   return o + "]";
 }
 
