@@ -34,6 +34,7 @@ CommandLine::CommandLine()
 }
 
 void CommandLine::parse(const std::vector<std::string>& argv) {
+  argv_ = argv;
   std::vector<const char*> c_argv;
   for (const auto& a : argv) c_argv.push_back(a.c_str());
   app_.parse(static_cast<int>(c_argv.size()), c_argv.data());
@@ -98,6 +99,18 @@ void print_refusal(const Error& e) {
 }  // namespace
 
 int CommandLine::usage_error(const CLI::ParseError& e) {
+  // The first argument names the command (it is an option only for the
+  // program's own --help and --version).
+  if (!chosen() && argv_.size() > 1 && !argv_[1].empty() && argv_[1][0] != '-') {
+    const std::string& word = argv_[1];
+    std::vector<std::string> names;
+    for (const auto& s : subcommands_) names.push_back(s.app->get_name());
+    const std::vector<std::string_view> known(names.begin(), names.end());
+    const std::string meant = resembled_key(word, known).value_or("");
+    std::cerr << "bezcam: error: there is no command " << word << (meant.empty() ? "" : ": did you mean " + meant + "?")
+              << "\n  (bezcam --help lists the commands)\n";
+    return exit_status::invalid;
+  }
   if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
     for (const auto& s : subcommands_) {
       if (!s.app->parsed()) continue;

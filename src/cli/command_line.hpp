@@ -41,7 +41,8 @@ class CommandLine {
   /// refusals are thrown (bezcam::Error).
   int run() const;
   /// The status and the messages on stderr of a command line CLI11
-  /// refused: the option meant for a misspelt one, else CLI11's sentence.
+  /// refused: a command that does not exist named with the one meant, the
+  /// option meant for a misspelt one, else CLI11's sentence.
   int usage_error(const CLI::ParseError& e);
 
   const Arguments& args() const { return args_; }
@@ -55,6 +56,7 @@ class CommandLine {
   CLI::App app_;
   Arguments args_;
   std::vector<Subcommand> subcommands_;
+  std::vector<std::string> argv_;  ///< as parse() was given it
 };
 
 /// What main() does: parses `argv`, runs the subcommand and returns the

@@ -126,6 +126,19 @@ TEST(CliInProcess, RefusalsAreTheExecutables) {
   }
 }
 
+TEST(CliInProcess, AnUnknownCommandIsNamedWithTheOneMeant) {
+  const auto typo = run_cli({"convrt", kSemicircle});
+  EXPECT_EQ(typo.status, 2);
+  EXPECT_EQ(typo.err,
+            "bezcam: error: there is no command convrt: did you mean convert?\n  (bezcam --help lists the "
+            "commands)\n");
+  const auto other = run_cli({"verify", "x.nc"});
+  EXPECT_EQ(other.status, 2);
+  EXPECT_EQ(other.err, "bezcam: error: there is no command verify\n  (bezcam --help lists the commands)\n");
+  // The executable says the same.
+  EXPECT_EQ(testproc::run(BEZCAM_EXE, {"verify", "x.nc"}).err, other.err);
+}
+
 TEST(CliInProcess, ARunPrintsOnTheStreamsItWasGiven) {
   const auto r = run_cli({"convert", kSemicircle, "--machine", "fanuc"});
   EXPECT_EQ(r.status, 0) << r.err;
