@@ -108,8 +108,8 @@ int run_check(const CheckArgs& o) {
     warnings = r.program.warnings;
     std::cout << "machine " << m.name << ", " << o.conv.output << ": " << r.program.entities.size() << " entit"
               << (r.program.entities.size() == 1 ? "y" : "ies") << " cut, deviation measured "
-              << fmt_sig(r.program.max_measured) << ", proven below " << fmt_sig(r.program.max_bound) << " " << u
-              << " (tolerance " << fmt_sig(r.program.tolerance) << ")\n";
+              << fmt_sig(r.program.max_measured) << ", proven below " << format_bound(r.program.max_bound, 3) << " "
+              << u << " (tolerance " << fmt_sig(r.program.tolerance) << ")\n";
   } catch (const Error&) {
     // The job's own warnings count even when the machine refuses it.
     print_warnings(job.warnings);

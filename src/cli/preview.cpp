@@ -238,7 +238,7 @@ int run_preview(const PreviewArgs& o) {
       "machine " + m.name + ", output " + to_string(p.output) + ", tolerance " + format_significant(p.tolerance, 6) +
       " " + u + " (largest deviation measured " +
       measured_text(p.max_measured, p.max_bound, p.tolerance, [](double v) { return format_significant(v, 3); }) + " " +
-      u + ", proven bound " + format_significant(p.max_bound, 3) + " " + u + ")");
+      u + ", proven bound " + format_bound(p.max_bound, 3) + " " + u + ")");
   const ProgramReport rep = make_report(p, m);
   size_t blocks = 0;
   for (const auto& e : p.entities) blocks += e.blocks;

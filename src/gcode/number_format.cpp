@@ -41,6 +41,18 @@ std::string format_number(double v, int decimals) {
   return std::string(buf, format_number_to(buf, v, decimals));
 }
 
+std::string format_bound(double v, int digits) {
+  std::string s = format_significant(v, digits);
+  if (!(v > 0) || !std::isfinite(v)) return s;
+  // One unit of the last digit printed, and up by it until the text reads
+  // back at or above v.
+  const double step = std::pow(10.0, std::floor(std::log10(v)) - digits + 1);
+  if (!(step > 0)) return s;
+  for (double up = std::ceil(v / step) * step; std::strtod(s.c_str(), nullptr) < v; up += step)
+    s = format_significant(up, digits);
+  return s;
+}
+
 std::string measured_text(double measured, double bound, double tolerance, std::string (*format)(double)) {
   const double resolution = kMeasureResolution * tolerance;
   if (measured > resolution) return format(measured);

@@ -64,7 +64,7 @@ class Writer {
     const auto sig = [](double v) { return format_significant(v, 4); };
     note("tolerance " + format_significant(p_.tolerance, 6) + " " + u + "; largest deviation measured " +
          measured_text(p_.max_measured, p_.max_bound, p_.tolerance, sig) + " " + u + ", proven bound " +
-         sig(p_.max_bound) + " " + u + ", rounding included");
+         format_bound(p_.max_bound, 4) + " " + u + ", rounding included");
     if (m_.comments) {
       tools();
       registers();

@@ -247,8 +247,7 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
     const EntityReport& e = r.entities[i].report;
     s += "  " + e.label + ": " + e.type + ", degree " + std::to_string(e.degree) + ", length " +
          format_significant(e.length, 6) + u + ", " + std::to_string(e.blocks) + " block" + (e.blocks == 1 ? "" : "s") +
-         ", deviation " + measured(e.measured, e.bound) + " (proven bound " + format_significant(e.bound, 3) + u +
-         ")\n";
+         ", deviation " + measured(e.measured, e.bound) + " (proven bound " + format_bound(e.bound, 3) + u + ")\n";
   }
   if (n > max_entities)
     s += "  ... and " + std::to_string(n - max_entities) + " more entit" + (n - max_entities == 1 ? "y" : "ies") +

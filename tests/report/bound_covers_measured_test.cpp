@@ -118,6 +118,13 @@ size_t expect_bound_covers_measured(const Case& c, const std::vector<Run>& runs)
     EXPECT_LE(j["max_measured_deviation"].get<double>(), j["max_proven_bound"].get<double>()) << what;
     expect_figures_in_order(report_text(rep, 1000), what + ", report");
     expect_figures_in_order(r.gcode.substr(0, r.gcode.find("proven bound") + 40), what + ", program header");
+    // The bound as printed is never below the bound proven.
+    static const std::regex printed_bound(R"(proven bound ([-0-9.e+]+))");
+    std::smatch pb;
+    const std::string head = r.gcode.substr(0, r.gcode.find("proven bound") + 40);
+    const bool found = std::regex_search(head, pb, printed_bound);
+    EXPECT_TRUE(found) << what;
+    if (found) EXPECT_GE(std::stod(pb[1].str()), j["max_proven_bound"].get<double>()) << what << ": " << pb[0];
   }
   return converted;
 }

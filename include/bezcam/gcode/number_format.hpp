@@ -17,6 +17,11 @@ inline constexpr int kNumberChars = 400;
 /// the end of the text written.
 char* format_number_to(char* buf, double v, int decimals);
 
+/// A proven bound as bezcam states it: `v` with `digits` significant
+/// digits, rounded up, so that the figure printed is never below the bound
+/// proven (0.0098645 is "0.009865" at 4 digits, "0.00987" at 3).
+std::string format_bound(double v, int digits);
+
 /// A measured deviation as bezcam states it (program header, report,
 /// preview) beside its proven bound: `format(measured)`, or, when it is
 /// within the measurement's resolution (kMeasureResolution of the
