@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-bspline-wave.json, machine fanuc, output nurbs)
-N20 (tolerance 0.01 mm; largest deviation measured below 1.432e-14 mm, proven bound 1.432e-14 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured below 1.432e-14 mm, proven bound 1.433e-14 mm, rounding included)
 N30 (T1: wave)
 N40 (estimated cycle time 18 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

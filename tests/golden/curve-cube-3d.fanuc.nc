@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-cube-3d.json, machine fanuc, output lines)
-N20 (tolerance 0.001 mm; largest deviation measured 0.0008914 mm, proven bound 0.0009995 mm, rounding included)
+N20 (tolerance 0.001 mm; largest deviation measured 0.0008914 mm, proven bound 0.0009996 mm, rounding included)
 N30 (T1: cube-base-curve)
 N40 (estimated cycle time 9 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

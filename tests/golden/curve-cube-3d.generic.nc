@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-cube-3d.json, machine generic, output lines)
-(tolerance 0.001 mm; largest deviation measured 0.0008914 mm, proven bound 0.0009995 mm, rounding included)
+(tolerance 0.001 mm; largest deviation measured 0.0008914 mm, proven bound 0.0009996 mm, rounding included)
 (T1: cube-base-curve)
 (estimated cycle time 11 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

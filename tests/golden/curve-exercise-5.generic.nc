@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-5.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.00934 mm, proven bound 0.009363 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.00934 mm, proven bound 0.009364 mm, rounding included)
 (T1: seed-ex-5)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

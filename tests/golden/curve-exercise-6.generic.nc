@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-6.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009354 mm, proven bound 0.009402 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009354 mm, proven bound 0.009403 mm, rounding included)
 (T1: seed-ex-6)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-7.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009371 mm, proven bound 0.009966 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009371 mm, proven bound 0.009967 mm, rounding included)
 N30 (T1: seed-ex-7)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

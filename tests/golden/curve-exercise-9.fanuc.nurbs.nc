@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-9.json, machine fanuc, output nurbs)
-N20 (tolerance 0.01 mm; largest deviation measured 0.00798 mm, proven bound 0.008309 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.00798 mm, proven bound 0.00831 mm, rounding included)
 N30 (T1: seed-ex-9)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

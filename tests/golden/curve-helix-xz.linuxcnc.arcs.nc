@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-helix-xz.json, machine linuxcnc, output arcs)
-(tolerance 0.01 mm; largest deviation measured 0.009955 mm, proven bound 0.009993 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009955 mm, proven bound 0.009994 mm, rounding included)
 (T3: groove-xz, arch-yz)
 (estimated cycle time 10 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17

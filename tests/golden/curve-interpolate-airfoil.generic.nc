@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-interpolate-airfoil.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009438 mm, proven bound 0.009588 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009438 mm, proven bound 0.009589 mm, rounding included)
 (T1: upper-surface)
 (estimated cycle time 17 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

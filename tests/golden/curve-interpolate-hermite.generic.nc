@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-interpolate-hermite.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.00944 mm, proven bound 0.009831 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.00944 mm, proven bound 0.009832 mm, rounding included)
 (T1: swoosh, clamped-wave)
 (estimated cycle time 20 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-interpolate-lagrange.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009595 mm, proven bound 0.009997 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009595 mm, proven bound 0.009998 mm, rounding included)
 (T1: arch)
 (estimated cycle time 16 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine fanuc-g063, output nurbs)
-(tolerance 0.01 mm; largest deviation measured 0.0002591 mm, proven bound 0.0002912 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.0002591 mm, proven bound 0.0002913 mm, rounding included)
 (T1: quarter-circle-r10)
 (estimated cycle time 8 s on the motion model of machine fanuc-g063 [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009731 mm, proven bound 0.009991 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009731 mm, proven bound 0.009992 mm, rounding included)
 (T1: quarter-circle-r10)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

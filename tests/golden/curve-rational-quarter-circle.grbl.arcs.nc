@@ -1,5 +1,5 @@
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine grbl, output arcs)
-(tolerance 0.01 mm; largest deviation measured below 8.181e-07 mm, proven bound 8.181e-07 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured below 8.181e-07 mm, proven bound 8.182e-07 mm, rounding included)
 (T1: quarter-circle-r10)
 (estimated cycle time 5 s on the motion model of machine grbl [acceleration, corners, tool changes])
 G21 G90 G17

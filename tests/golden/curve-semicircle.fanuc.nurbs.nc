@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-semicircle.json, machine fanuc, output nurbs)
-N20 (tolerance 0.005 mm; largest deviation measured below 2.22e-16 mm, proven bound 2.22e-16 mm, rounding included)
+N20 (tolerance 0.005 mm; largest deviation measured below 2.22e-16 mm, proven bound 2.221e-16 mm, rounding included)
 N30 (T1: semicircle-r3)
 N40 (estimated cycle time 8 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

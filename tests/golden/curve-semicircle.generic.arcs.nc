@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output arcs)
-(tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004891 mm, rounding included)
+(tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004892 mm, rounding included)
 (T1: semicircle-r3)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,5 +1,5 @@
 (bezcam 0.1.0: curve-semicircle.json, machine grbl, output nurbs)
-(tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004891 mm, rounding included)
+(tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004892 mm, rounding included)
 (T1: semicircle-r3)
 (estimated cycle time 6 s on the motion model of machine grbl [acceleration, corners, tool changes])
 (machine grbl has no NURBS words: nurbs output cuts with arcs [G02/G03] and G01 lines)

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: job-curve-on-surface.json, machine fanuc, output nurbs)
-N20 (tolerance 0.01 mm; largest deviation measured 0.00326 mm, proven bound 0.003773 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.00326 mm, proven bound 0.003774 mm, rounding included)
 N30 (T1: 10 mm ball end mill: wing)
 N40 (T2: wheel-arch)
 N50 (estimated cycle time 39 min 01 s on the motion model of machine fanuc [acceleration, corners, tool changes])

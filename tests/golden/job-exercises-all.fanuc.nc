@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: job-exercises-all.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009643 mm, proven bound 0.009992 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009643 mm, proven bound 0.009993 mm, rounding included)
 N30 (T1: seed-ex-1, seed-ex-2, seed-ex-3, seed-ex-4, seed-ex-5, seed-ex-6, seed-ex-7, seed-ex-8, seed-ex-9)
 N40 (estimated cycle time 26 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: job-exercises-all.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009643 mm, proven bound 0.009992 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009643 mm, proven bound 0.009993 mm, rounding included)
 (T1: seed-ex-1, seed-ex-2, seed-ex-3, seed-ex-4, seed-ex-5, seed-ex-6, seed-ex-7, seed-ex-8, seed-ex-9)
 (estimated cycle time 28 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

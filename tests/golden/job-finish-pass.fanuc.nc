@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: job-finish-pass.json, machine fanuc, output lines)
-N20 (tolerance 0.001 mm; largest deviation measured 0.000885 mm, proven bound 0.0009862 mm, rounding included)
+N20 (tolerance 0.001 mm; largest deviation measured 0.000885 mm, proven bound 0.0009863 mm, rounding included)
 N30 (T2: teardrop-finish)
 N40 (estimated cycle time 8 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

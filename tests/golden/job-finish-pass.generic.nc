@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: job-finish-pass.json, machine generic, output lines)
-(tolerance 0.001 mm; largest deviation measured 0.000885 mm, proven bound 0.0009862 mm, rounding included)
+(tolerance 0.001 mm; largest deviation measured 0.000885 mm, proven bound 0.0009863 mm, rounding included)
 (T2: teardrop-finish)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

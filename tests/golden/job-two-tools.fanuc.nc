@@ -1,7 +1,7 @@
 %
 O4711 (BEZCAM)
 N10 (bezcam 0.1.0: job-two-tools.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009512 mm, proven bound 0.009805 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009512 mm, proven bound 0.009806 mm, rounding included)
 N30 (T1: pocket-outline)
 N40 (T2: engraving)
 N50 (estimated cycle time 27 s on the motion model of machine fanuc [acceleration, corners, tool changes])

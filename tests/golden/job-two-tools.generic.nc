@@ -1,7 +1,7 @@
 %
 (bezcam 0.1.0: job-two-tools.json, machine generic, output lines)
 (program 4711)
-(tolerance 0.01 mm; largest deviation measured 0.009512 mm, proven bound 0.009805 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009512 mm, proven bound 0.009806 mm, rounding included)
 (T1: pocket-outline)
 (T2: engraving)
 (estimated cycle time 31 s on the motion model of machine generic [acceleration, corners, tool changes])

@@ -1,7 +1,7 @@
 %
 (bezcam 0.1.0: job-two-tools.json, machine linuxcnc, output lines)
 (program 4711)
-(tolerance 0.01 mm; largest deviation measured 0.009588 mm, proven bound 0.009984 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009588 mm, proven bound 0.009985 mm, rounding included)
 (T1: pocket-outline)
 (T2: engraving)
 (estimated cycle time 17 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: part-lettering.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.00969 mm, proven bound 0.009998 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.00969 mm, proven bound 0.009999 mm, rounding included)
 N30 (T3: S, C)
 N40 (estimated cycle time 21 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

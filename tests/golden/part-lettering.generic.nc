@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: part-lettering.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.00969 mm, proven bound 0.009998 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.00969 mm, proven bound 0.009999 mm, rounding included)
 (T3: S, C)
 (estimated cycle time 23 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: patch-saddle.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.008946 mm, proven bound 0.00998 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.008946 mm, proven bound 0.009981 mm, rounding included)
 N30 (T3: 6 mm ball end mill: saddle)
 N40 (estimated cycle time 5 min 53 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

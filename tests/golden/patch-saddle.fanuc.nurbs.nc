@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: patch-saddle.json, machine fanuc, output nurbs)
-N20 (tolerance 0.01 mm; largest deviation measured 0.003877 mm, proven bound 0.004425 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.003877 mm, proven bound 0.004426 mm, rounding included)
 N30 (T3: 6 mm ball end mill: saddle)
 N40 (estimated cycle time 6 min 02 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

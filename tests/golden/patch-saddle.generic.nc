@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: patch-saddle.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.008946 mm, proven bound 0.00998 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.008946 mm, proven bound 0.009981 mm, rounding included)
 (T3: 6 mm ball end mill: saddle)
 (estimated cycle time 5 min 53 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

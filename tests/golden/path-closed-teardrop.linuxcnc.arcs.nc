@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: path-closed-teardrop.json, machine linuxcnc, output arcs)
-(tolerance 0.01 mm; largest deviation measured 0.009956 mm, proven bound 0.009962 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009956 mm, proven bound 0.009963 mm, rounding included)
 (T2: teardrop)
 (estimated cycle time 9 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17

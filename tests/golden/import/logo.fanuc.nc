@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: logo.svg, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009795 mm, proven bound 0.009973 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009795 mm, proven bound 0.009974 mm, rounding included)
 N30 (T1: frame, b, b.2, z, wave, eye, dot)
 N40 (estimated cycle time 31 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: logo.svg, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009795 mm, proven bound 0.009973 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009795 mm, proven bound 0.009974 mm, rounding included)
 (T1: frame, b, b.2, z, wave, eye, dot)
 (estimated cycle time 36 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17

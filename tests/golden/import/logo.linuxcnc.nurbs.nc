@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: logo.svg, machine linuxcnc, output nurbs)
-(tolerance 0.01 mm; largest deviation measured 4.68e-05 mm, proven bound 4.928e-05 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 4.68e-05 mm, proven bound 4.929e-05 mm, rounding included)
 (T1: frame, b, b.2, z, wave, eye, dot)
 (estimated cycle time 29 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 G21 G90 G17

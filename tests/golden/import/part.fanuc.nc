@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: part.dxf, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009807 mm, proven bound 0.009992 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009807 mm, proven bound 0.009993 mm, rounding included)
 N30 (T1: OUTLINE:2F+7, HOLES:37, HOLES:38, HOLES:39, HOLES:3A, HOLES:3B)
 N40 (estimated cycle time 34 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N50 G21 G90 G17

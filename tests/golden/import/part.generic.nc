@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: part.dxf, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009807 mm, proven bound 0.009992 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009807 mm, proven bound 0.009993 mm, rounding included)
 (T1: OUTLINE:2F+7, HOLES:37, HOLES:38, HOLES:39, HOLES:3A, HOLES:3B)
 (estimated cycle time 41 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
