@@ -7,7 +7,7 @@
 
 namespace bezcam {
 
-const char* to_string(ToolShape s) { return s == ToolShape::ball ? "ball end mill" : "flat end mill"; }
+const char* to_string(ToolEnd s) { return s == ToolEnd::ball ? "ball end mill" : "flat end mill"; }
 
 namespace {
 
@@ -15,7 +15,7 @@ namespace {
 // one, and where in the job that is set.
 struct Claim {
   double diameter = 0;
-  std::optional<ToolShape> shape;
+  std::optional<ToolEnd> shape;
   size_t entity = 0;
   std::string where;
 };
@@ -38,7 +38,7 @@ std::optional<Claim> claim_of(const Entity& e, const Job& job, const JobParams& 
   if (e.surface) {
     if (!p.tool_radius || !(*p.tool_radius > 0)) return std::nullopt;
     c.diameter = 2 * *p.tool_radius;
-    c.shape = ToolShape::ball;
+    c.shape = ToolEnd::ball;
     c.where = source_of(e, job, &JobParams::tool_radius, "tool_radius");
     return c;
   }
@@ -61,7 +61,7 @@ std::vector<JobTool> job_tools(const Job& job, const JobParams& defaults) {
     const int number = p.tool.value_or(-1);
     auto it = std::find_if(tools.begin(), tools.end(), [&](const JobTool& t) { return t.number == number; });
     if (it == tools.end()) {
-      tools.push_back({number, std::nullopt, ToolShape::flat, {}});
+      tools.push_back({number, std::nullopt, ToolEnd::flat, {}});
       first.emplace_back();
       it = tools.end() - 1;
     }

@@ -12,9 +12,9 @@
 namespace bezcam {
 
 /// The shape of a tool's end.
-enum class ToolShape { flat, ball };
+enum class ToolEnd { flat, ball };
 /// "flat end mill" or "ball end mill".
-const char* to_string(ToolShape s);
+const char* to_string(ToolEnd s);
 
 /// One tool of a job.
 struct JobTool {
@@ -28,7 +28,7 @@ struct JobTool {
   std::optional<double> diameter;
   /// A ball end where a surface is cut with `tool_radius` > 0; otherwise a
   /// flat end mill.
-  ToolShape shape = ToolShape::flat;
+  ToolEnd shape = ToolEnd::flat;
   std::vector<size_t> entities;  ///< the entities it cuts (indices, in the job's order)
 };
 
