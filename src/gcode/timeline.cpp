@@ -21,6 +21,7 @@ void add_to_timeline(Timeline& tl, const std::vector<MotionBlock>& blocks, const
   for (const MotionBlock& b : blocks) {
     tl.blocks.push_back(b);
     tl.path_tolerance.push_back(after.path_tolerance);
+    tl.tools.push_back(after.tool);
   }
   if (after.program_stops > before.program_stops) pause(PlanPause::Kind::program_stop, 0);
 }

@@ -45,6 +45,9 @@ struct Timeline {
   std::vector<MotionBlock> blocks;
   std::vector<double> path_tolerance;  ///< one per block
   std::vector<PlanPause> pauses;       ///< in order of before_block
+  /// One per block when the timeline was read from a program: the tool in
+  /// the spindle (the T of the last M06; 0 before any). Empty otherwise.
+  std::vector<int> tools;
 };
 
 /// Why a block ran slower than programmed.
