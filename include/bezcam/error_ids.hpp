@@ -411,6 +411,12 @@ inline constexpr ErrorId stock_memory{"stock.memory"};
 inline constexpr ErrorId stock_move{"stock.move"};
 /// A tool's shape or dimensions are not valid (diameter, corner radius, angle).
 inline constexpr ErrorId tool_shape{"tool.shape"};
+/// Verify: the stock box holds no part of the program's cutting moves.
+inline constexpr ErrorId verify_stock_outside{"verify.stock-outside"};
+/// Verify: a block cuts with a tool the tools table lacks.
+inline constexpr ErrorId verify_tool{"verify.tool"};
+/// Verify: the program moves no tool at a feed (nothing to machine).
+inline constexpr ErrorId verify_empty{"verify.empty"};
 /// The tool would gouge the surface.
 inline constexpr ErrorId surface_gouge{"surface.gouge"};
 /// The surface normal vanishes (a degenerate patch).

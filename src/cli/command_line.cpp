@@ -31,6 +31,7 @@ CommandLine::CommandLine()
   add(setup_simulate(app_, args_.simulate), [this] { return run_simulate(args_.simulate); });
   add(setup_status(app_, args_.status), [this] { return run_status(args_.status); });
   add(setup_stream(app_, args_.stream), [this] { return run_stream(args_.stream); });
+  add(setup_verify(app_, args_.verify), [this] { return run_verify(args_.verify); });
 }
 
 void CommandLine::parse(const std::vector<std::string>& argv) {

@@ -22,6 +22,7 @@ struct Arguments {
   SimulateArgs simulate;
   StatusArgs status;
   StreamArgs stream;
+  VerifyArgs verify;
 };
 
 class CommandLine {

@@ -109,4 +109,14 @@ struct StreamArgs {
 CLI::App* setup_stream(CLI::App& app, StreamArgs& o);
 int run_stream(const StreamArgs& o);
 
+/// bezcam verify PROGRAM: cuts a program into a stock and reports the machined result.
+struct VerifyArgs {
+  std::string program, machine = "generic", tools, stock, design, report, image, heightmap, memory_limit;
+  double cell = 0;
+  unsigned threads = 0;
+  bool hash = false, quiet = false;
+};
+CLI::App* setup_verify(CLI::App& app, VerifyArgs& o);
+int run_verify(const VerifyArgs& o);
+
 }  // namespace bezcam::cli

@@ -14,6 +14,8 @@ inline constexpr int invalid = 2;
 inline constexpr int io = 3;
 /// The controller refused or lost the program.
 inline constexpr int controller = 4;
+/// verify: the machined part is gouged beyond the design's tolerance.
+inline constexpr int gouge = 5;
 /// An internal error: a bug, to be reported with the input.
 inline constexpr int internal = 70;
 /// Stopped by signal N: 128 + N, as a shell reports it (130 for Ctrl-C).

@@ -27,12 +27,13 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"cam", {"base", "kernel", "flatten", "job", "machine"}},
       {"gcode", {"base", "kernel", "flatten", "job", "machine", "cam"}},
       {"report", {"base", "kernel", "flatten", "job", "machine", "cam", "gcode"}},
+      {"verify", {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode"}},
       {"link", {"base"}},
       {"sim", {"base", "kernel", "flatten", "job", "machine", "gcode", "link"}},
       {"import", {"base", "kernel", "flatten", "job"}},
       {"cli",
-       {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode", "report", "link", "sim", "import",
-        "cli"}},
+       {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode", "report", "verify", "link", "sim",
+        "import", "cli"}},
   };
   return g;
 }

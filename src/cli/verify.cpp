@@ -1,0 +1,223 @@
+// bezcam verify PROGRAM.nc --machine M [--tools T.json] [--stock BOX]
+// [--design JOB.json] [--cell C] [--report R.json] [--image I.png|.svg]
+// [--heightmap H.npy] [--hash] [--memory-limit SIZE]
+//
+// Cuts a program into a Z-dexel stock with the same reader as simulate,
+// reports the machined result and, with a design, its gouges and excess.
+// Everything is computed before any file is written: a refusal leaves none.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include "bezcam/cam/program.hpp"
+#include "bezcam/error.hpp"
+#include "bezcam/gcode/timeline.hpp"
+#include "bezcam/limits.hpp"
+#include "bezcam/stock/heightmap.hpp"
+#include "bezcam/verify/machined_program.hpp"
+#include "bezcam/verify/verify_report.hpp"
+#include "commands.hpp"
+#include "exit_status.hpp"
+#include "job_input.hpp"
+#include "output_file.hpp"
+#include "profiles.hpp"
+#include "validators.hpp"
+
+namespace bezcam::cli {
+
+namespace {
+
+// The grid's default: cells of the tolerance, but no more columns than this.
+constexpr double kDefaultMaxColumns = 4e6;
+
+StockBox parse_box(const std::string& text) {
+  std::vector<double> v;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', pos), text.size());
+    const std::string part = text.substr(pos, comma - pos);
+    char* end = nullptr;
+    const double x = std::strtod(part.c_str(), &end);
+    if (part.empty() || *end != '\0' || !std::isfinite(x))
+      throw InputError(errc::stock_box, Place::at_option("--stock"),
+                       "expected six numbers x0,y0,z0,x1,y1,z1 in millimetres, found \"" + text + "\"");
+    v.push_back(x);
+    pos = comma + 1;
+  }
+  if (v.size() != 6)
+    throw InputError(errc::stock_box, Place::at_option("--stock"),
+                     "expected six numbers x0,y0,z0,x1,y1,z1 in millimetres, found " + std::to_string(v.size()));
+  return {v[0], v[1], v[2], v[3], v[4], v[5]};
+}
+
+std::size_t parse_memory(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  const std::string unit = end;
+  double k = 0;
+  if (unit.empty() || unit == "B") k = 1;
+  if (unit == "K" || unit == "KiB") k = 1024.0;
+  if (unit == "M" || unit == "MiB") k = 1024.0 * 1024;
+  if (unit == "G" || unit == "GiB") k = 1024.0 * 1024 * 1024;
+  if (unit == "KB") k = 1e3;
+  if (unit == "MB") k = 1e6;
+  if (unit == "GB") k = 1e9;
+  if (end == text.c_str() || k == 0 || !(v > 0) || !std::isfinite(v * k) || v * k > 1e18)
+    throw InputError(errc::usage_option, Place::at_option("--memory-limit"),
+                     "expected a size such as 512MiB, 2GiB or a number of bytes, found \"" + text + "\"");
+  return static_cast<std::size_t>(v * k);
+}
+
+// The cell: the tolerance, coarsened until the box holds at most four
+// million columns.
+double default_cell(const StockBox& b, double tolerance) {
+  const double w = b.x1 - b.x0, h = b.y1 - b.y0;
+  double c = std::max(tolerance, std::sqrt(w * h / kDefaultMaxColumns));
+  while (std::ceil(w / c) * std::ceil(h / c) > kDefaultMaxColumns) c *= 1.001;
+  return c;
+}
+
+// The design's tools, by number (mm): each entity's tool diameter (a ball
+// end for a surface cut with tool_radius).
+StockTools design_tools(const Job& job, const MachineProfile& m) {
+  StockTools t;
+  const double k = mm_per_unit(job.units);
+  for (const Entity& e : job.entities) {
+    const CutParams c = cut_params(job, e, m);
+    if (t.count(c.tool)) continue;
+    if (c.tool_diameter && *c.tool_diameter > 0)
+      t.emplace(c.tool, ToolShape::flat(*c.tool_diameter * k));
+    else if (c.tool_radius > 0)
+      t.emplace(c.tool, e.surface ? ToolShape::ball(2 * c.tool_radius * k) : ToolShape::flat(2 * c.tool_radius * k));
+  }
+  return t;
+}
+
+// The tools the timeline uses, for the report.
+StockTools used_tools(const Timeline& tl, const StockTools& all) {
+  StockTools used;
+  for (std::size_t i = 0; i < tl.blocks.size(); ++i) {
+    if (!is_feed(tl.blocks[i])) continue;
+    const int n = i < tl.tools.size() ? tl.tools[i] : 0;
+    const ToolShape& s = stock_tool(all, n, tl.blocks[i].line);
+    used.emplace(all.count(n) ? n : all.begin()->first, s);
+  }
+  return used;
+}
+
+}  // namespace
+
+CLI::App* setup_verify(CLI::App& app, VerifyArgs& o) {
+  auto* s = app.add_subcommand("verify",
+                               "Cut a G-code program into a stock (a Z-dexel grid, floors exact for every tool "
+                               "shape) and report the machined result; with --design, per entity the largest gouge "
+                               "and excess. Exit 0, or 5 when a gouge exceeds the design's tolerance.");
+  s->add_option("PROGRAM", o.program, "G-code program")->required();
+  s->add_option("--machine", o.machine, "machine profile: a name in machines/ or a .json file (default: generic)");
+  s->add_option("--stock", o.stock, "stock box x0,y0,z0,x1,y1,z1 in mm (default: the design's, else the program's)");
+  s->add_option("--design", o.design, "the job the program was made from: gouges and excess per entity");
+  s->add_option("--cell", o.cell, "cell size in mm (default: the tolerance, at most 4 million columns)")
+      ->check(positive_number());
+  s->add_option("--report", o.report, "write the report (JSON)");
+  s->add_option("--image", o.image, "write a picture of the machined stock (.png or .svg)");
+  s->add_option("--heightmap", o.heightmap, "write the floors as a NumPy .npy array (float64, mm)");
+  s->add_flag("--hash", o.hash, "print only the hash of the floors rounded to 1 um");
+  s->add_option("--memory-limit", o.memory_limit, "largest grid, e.g. 512MiB (default 1GiB)");
+  s->add_option("--threads", o.threads, "threads (default: one per core; the result is the same)");
+  s->add_flag("-q,--quiet", o.quiet, "print nothing but errors (and the hash with --hash)");
+  return s;
+}
+
+int run_verify(const VerifyArgs& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const MachineProfile m = load_profile_option(o.machine);
+  if (!o.image.empty()) {
+    const std::string ext = std::filesystem::path(o.image).extension().string();
+    if (ext != ".png" && ext != ".svg")
+      throw InputError(errc::usage_option, Place::at_option("--image"),
+                       "expected a file name ending in .png or .svg, found \"" + o.image + "\"");
+  }
+  const std::size_t memory = o.memory_limit.empty() ? kDefaultStockMemoryLimit : parse_memory(o.memory_limit);
+  std::optional<Job> design;
+  if (!o.design.empty()) design = read_job(o.design);
+  StockTools tools = design ? design_tools(*design, m) : StockTools{};
+  if (std::filesystem::is_directory(o.program))
+    throw IoError(errc::io_read, Place::at_file(o.program), "is a directory, not a G-code file");
+  const Timeline tl = read_timeline(read_bounded(o.program, kMaxProgramBytes, "G-code file"), &m);
+  StockBox box;
+  if (!o.stock.empty())
+    box = parse_box(o.stock);
+  else if (design)
+    box = design_stock_box(*design, m, tools);
+  else
+    box = program_stock_box(tl, tools);
+  try {
+    (void)stock_grid_size(box, 1);
+  } catch (const Error& e) {
+    if (o.stock.empty()) throw;
+    throw e.with_option("--stock");
+  }
+  check_stock_holds_program(box, tl, tools);
+  const double tol = design ? design->tolerance * mm_per_unit(design->units) : kDefaultToleranceMm;
+  const double cell = o.cell > 0 ? o.cell : default_cell(box, tol);
+  StockCutterOptions opt;
+  opt.memory_limit = memory;
+  opt.threads = o.threads;
+  StockCutter cutter = [&] {
+    try {
+      return StockCutter(box, cell, tools, opt);
+    } catch (const Error& e) {
+      throw e.with_option(e.id() == errc::stock_memory.str() || e.id() == errc::stock_cell.str() ? "--cell"
+                                                                                                 : "--stock");
+    }
+  }();
+  cut_timeline(cutter, tl);
+  const DexelGrid& g = cutter.grid();
+
+  VerifyFigures f;
+  f.program = o.program;
+  f.machine = m.name;
+  f.units = tl.units;
+  f.box = box;
+  f.cell = cell;
+  f.nx = g.nx();
+  f.ny = g.ny();
+  f.memory_bytes = g.memory_bytes();
+  f.tools = used_tools(tl, tools);
+  f.removed_volume = g.removed_volume();
+  f.deepest = g.deepest();
+  f.hash = g.hash_hex();
+  f.added_error = g.added_error();
+  f.blocks = cutter.blocks();
+  f.rapid_cuts = cutter.rapid_cuts();
+  f.first_rapid_cut_line = cutter.first_rapid_cut_line();
+  if (m.motion) f.cycle_time_s = plan_motion(tl, *m.motion, PlanDetail::summary).cycle_time_s;
+  if (design) {
+    f.design = check_design(g, *design, m, tools);
+    f.design_file = o.design;
+  }
+  StockImageOptions io;
+  if (f.design) io.classes = f.design->classes;
+  std::string image;
+  if (!o.image.empty()) {
+    if (std::filesystem::path(o.image).extension() == ".svg") {
+      image = stock_svg(g, io);
+    } else {
+      const auto png = stock_png(g, io);
+      image.assign(png.begin(), png.end());
+    }
+  }
+  f.verify_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!o.report.empty()) write_output(o.report, verify_report_json(f));
+  if (!o.image.empty()) write_output(o.image, image);
+  if (!o.heightmap.empty()) write_output(o.heightmap, heightmap_npy(g));
+  if (o.hash)
+    std::cout << f.hash << "\n";
+  else if (!o.quiet)
+    std::cout << "bezcam verify: " << o.program << " on machine " << m.name << "\n" << verify_summary(f);
+  return f.design && f.design->gouged() ? exit_status::gouge : exit_status::ok;
+}
+
+}  // namespace bezcam::cli

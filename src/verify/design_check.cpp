@@ -1,0 +1,262 @@
+#include "bezcam/verify/design_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "bezcam/cam/program.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+#include "wall_field.hpp"
+
+namespace bezcam {
+
+using verify_detail::Region;
+using verify_detail::Wall;
+using verify_detail::WallField;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The design's walls are flattened this much finer than the job's
+// tolerance: their bound stays a hundredth of what is judged.
+constexpr double kDesignFlatten = 0.01;
+
+// One entity of the design as the check reads it (mm).
+struct DesignEntity {
+  std::size_t index = 0;
+  Wall wall;
+  bool groove = false;  // `side` on: the tool's shape along the curve
+  double top = 0, cut = 0, stock_to_leave = 0, tab_height = 0;
+  std::optional<ToolShape> tool;
+};
+
+// Per column, folded over the entities.
+struct Columns {
+  std::vector<double> gouge;    // the distance of the column's lowest removed point to the waste (mm)
+  std::vector<int> owner;       // the entity it was measured from (-1: none)
+  std::vector<double> allowed;  // the lowest floor the waste allows there (the design's top where none)
+};
+
+double flatness(const CurveGeometry& c) {
+  const Box3 b = c.bounds();
+  return b.empty() ? 0 : b.hi.z - b.lo.z;
+}
+
+// Why an entity is not in the 2.5D model, or nothing when it is.
+std::optional<std::string> not_modelled(const Entity& e, const std::optional<ToolShape>& tool) {
+  if (e.surface) return "a surface: the verifier compares walls and grooves of curves only";
+  if (e.curve.pieces.empty()) return "no curve to compare";
+  if (e.curve.dim == 3 && flatness(e.curve) > 1e-9) return "a curve that is not flat: compared walls are vertical";
+  if (!tool) return "no tool: the entity gives no `tool_diameter` and the tools table no entry for its tool";
+  return std::nullopt;
+}
+
+std::optional<ToolShape> entity_tool(const CutParams& c, double k, const StockTools& tools) {
+  if (auto it = tools.find(c.tool); it != tools.end()) return it->second;
+  if (c.tool_diameter && *c.tool_diameter > 0) return ToolShape::flat(*c.tool_diameter * k);
+  if (c.tool_radius > 0) return ToolShape::flat(2 * c.tool_radius * k);
+  return std::nullopt;
+}
+
+bool waste_inside_or_left(const CutParams& c, const std::vector<Vec3>& pts, bool closed) {
+  if (!closed) return c.side == CutSide::left;
+  double area2 = 0;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const Vec3& a = pts[k];
+    const Vec3& b = pts[(k + 1) % pts.size()];
+    area2 += a.x * b.y - b.x * a.y;
+  }
+  const bool ccw = area2 > 0;
+  switch (c.side) {
+    case CutSide::inside: return true;
+    case CutSide::outside: return false;
+    case CutSide::left: return ccw;
+    case CutSide::right: return !ccw;
+    case CutSide::on: return false;
+  }
+  return false;
+}
+
+DesignEntity read_entity(const Job& job, const Entity& e, const CutParams& c, double k, const ToolShape& tool,
+                         double& bound) {
+  DesignEntity d;
+  d.index = e.index;
+  FlattenOptions fo;
+  fo.tolerance = job.tolerance * kDesignFlatten;
+  const FlattenResult f = flatten(e.curve.pieces, fo);
+  bound = std::max(bound, f.bound * k);
+  for (const Vec3& p : f.points) d.wall.points.push_back({p.x * k, p.y * k, 0});
+  d.wall.closed = e.curve.closed && d.wall.points.size() > 2;
+  if (d.wall.closed && d.wall.points.front().x == d.wall.points.back().x &&
+      d.wall.points.front().y == d.wall.points.back().y)
+    d.wall.points.pop_back();
+  d.groove = c.side == CutSide::on;
+  d.wall.waste_inside_or_left = !d.groove && waste_inside_or_left(c, d.wall.points, d.wall.closed);
+  d.top = c.top_z * k;
+  d.cut = c.cut_z * k;
+  d.stock_to_leave = c.stock_to_leave * k;
+  d.tab_height = c.tabs ? c.tabs->height * k : 0;
+  d.tool = tool;
+  return d;
+}
+
+// The band around a wall the check examines (mm): the tool's reach past
+// the stock to leave, and a tool's width more for the centres it needs.
+double band_of(const DesignEntity& d) { return d.stock_to_leave + 3 * d.tool->radius() + 1; }
+
+// Folds one wall's gouge distances and allowed floors into `cols`, and
+// measures its excess into `out`.
+void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns& cols, EntityCheck& out,
+                 std::vector<ColumnClass>& classes) {
+  const double band = band_of(d);
+  const WallField f = verify_detail::wall_field(g, d.wall, band);
+  const Region& r = f.region;
+  const ToolShape& t = *d.tool;
+  const double R = t.radius(), stl = d.stock_to_leave, c2 = g.cell() * g.cell();
+  const double floor_design = std::max(d.cut, g.box().z0);
+  // Where the tool's centre may stand on the waste side: as far from the
+  // wall as its radius and the stock to leave.
+  std::vector<char> centres(r.size(), 0);
+  if (!d.groove)
+    for (std::size_t k = 0; k < r.size(); ++k) centres[k] = f.side[k] > 0 && f.distance[k] >= stl + R;
+  const std::vector<char> reached = d.groove ? std::vector<char>{} : verify_detail::reach(r, centres, R, g.cell());
+  auto fold = [&](std::size_t col, double gouge, double allowed) {
+    if (gouge < cols.gouge[col]) {
+      cols.gouge[col] = gouge;
+      cols.owner[col] = static_cast<int>(d.index);
+    }
+    cols.allowed[col] = std::min(cols.allowed[col], allowed);
+  };
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const std::size_t i = r.i0 + k % r.ni, j = r.j0 + k / r.ni, col = j * g.nx() + i;
+    const double z = g.floor(i, j), dist = f.distance[k];
+    if (d.groove) {
+      if (dist > R + band) continue;
+      const double design = dist <= R ? d.cut + t.height(dist) : kInf;
+      const double gouge =
+          dist <= R ? std::max(0.0, design - z) : std::hypot(dist - R, std::max(0.0, d.cut + t.height(R) - z));
+      fold(col, gouge, dist <= R ? design : d.top);
+      if (dist <= R && z > std::max(design, g.box().z0) + tol) {
+        const double e = z - std::max(design, g.box().z0);
+        if (e > out.excess) out.excess = e, out.excess_at = {g.x_center(i), g.y_center(j), z};
+        ++out.excess_columns;
+        out.excess_volume += e * c2;
+        if (classes[col] == ColumnClass::none) classes[col] = ColumnClass::excess;
+      }
+      continue;
+    }
+    if (f.side[k] == 0) continue;
+    const double s = f.side[k] > 0 ? dist : -dist;  // positive into the waste
+    const bool waste = s >= stl;
+    fold(col, std::hypot(std::max(0.0, stl - s), std::max(0.0, d.cut - z)), waste ? d.cut : d.top);
+    if (!waste || !reached[k] || s > stl + 2 * R) continue;
+    const double above = z - floor_design;
+    if (above <= tol || (d.tab_height > 0 && above <= d.tab_height + tol)) continue;
+    const double e = std::min(s - stl, above);
+    if (e > tol) {
+      if (e > out.excess) out.excess = e, out.excess_at = {g.x_center(i), g.y_center(j), z};
+      ++out.excess_columns;
+      out.excess_volume += above * c2;
+      if (classes[col] == ColumnClass::none) classes[col] = ColumnClass::excess;
+    }
+  }
+  if (!d.wall.closed || f.outside_side == 0) return;
+  // A closed wall's sides hold beyond its band: the waste may be cut down
+  // to the wall's floor everywhere on its side.
+  for (std::size_t j = 0; j < g.ny(); ++j)
+    for (std::size_t i = 0; i < g.nx(); ++i) {
+      if (r.contains(i, j)) continue;
+      const std::size_t col = j * g.nx() + i;
+      if (f.outside_side > 0) fold(col, std::max(0.0, d.cut - g.floor(i, j)), d.cut);
+    }
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    if (f.distance[k] != kInf || f.side[k] <= 0) continue;
+    const std::size_t i = r.i0 + k % r.ni, j = r.j0 + k / r.ni;
+    fold(j * g.nx() + i, std::max(0.0, d.cut - g.floor(i, j)), d.cut);
+  }
+}
+
+}  // namespace
+
+double DesignCheck::max_gouge() const {
+  double m = elsewhere.gouge;
+  for (const EntityCheck& e : entities) m = std::max(m, e.gouge);
+  return m;
+}
+
+DesignCheck check_design(const DexelGrid& g, const Job& job, const MachineProfile& m, const StockTools& tools) {
+  DesignCheck out;
+  const double k = mm_per_unit(job.units);
+  out.tolerance = job.tolerance * k;
+  out.classes.assign(g.floors().size(), ColumnClass::none);
+  out.elsewhere.label = "elsewhere";
+  Columns cols{std::vector<double>(g.floors().size(), kInf), std::vector<int>(g.floors().size(), -1),
+               std::vector<double>(g.floors().size(), kInf)};
+  double top = -kInf;
+  std::vector<DesignEntity> design;
+  for (const Entity& e : job.entities) {
+    EntityCheck ec;
+    ec.label = e.label();
+    ec.json_path = e.json_path();
+    const CutParams c = cut_params(job, e, m);
+    const std::optional<ToolShape> tool = entity_tool(c, k, tools);
+    if (const auto why = not_modelled(e, tool)) {
+      ec.compared = false;
+      ec.not_compared = *why;
+    } else {
+      design.push_back(read_entity(job, e, c, k, *tool, out.design_bound));
+      top = std::max(top, design.back().top);
+    }
+    out.entities.push_back(ec);
+  }
+  for (const DesignEntity& d : design) fold_entity(g, d, out.tolerance, cols, out.entities[d.index], out.classes);
+  if (design.empty()) return out;
+  // Gouges: removed material that lies in no entity's waste, measured to
+  // the nearest waste (or the design's top, when nearer).
+  double band = 0;
+  for (const DesignEntity& d : design) band = std::max(band, band_of(d));
+  const double c2 = g.cell() * g.cell();
+  for (std::size_t j = 0; j < g.ny(); ++j)
+    for (std::size_t i = 0; i < g.nx(); ++i) {
+      const std::size_t col = j * g.nx() + i;
+      const double z = g.floor(i, j);
+      const double allowed = std::min(cols.allowed[col], top);
+      if (z >= allowed - out.tolerance) continue;
+      const bool far = cols.gouge[col] == kInf;
+      const double size = std::min(far ? band : cols.gouge[col], top - z);
+      if (size <= out.tolerance) continue;
+      EntityCheck& ec = cols.owner[col] < 0 ? out.elsewhere : out.entities[static_cast<std::size_t>(cols.owner[col])];
+      if (size > ec.gouge) {
+        ec.gouge = size;
+        ec.gouge_at = {g.x_center(i), g.y_center(j), z};
+        ec.gouge_at_least = far && size == band;
+      }
+      ++ec.gouge_columns;
+      ec.gouge_volume += (allowed - z) * c2;
+      out.classes[col] = ColumnClass::gouge;
+    }
+  return out;
+}
+
+StockBox design_stock_box(const Job& job, const MachineProfile& m, const StockTools& tools) {
+  const double k = mm_per_unit(job.units);
+  Box3 b;
+  double top = -kInf, deepest = kInf, widest = 0;
+  for (const Entity& e : job.entities) {
+    const CutParams c = cut_params(job, e, m);
+    if (const auto t = entity_tool(c, k, tools)) widest = std::max(widest, t->diameter());
+    top = std::max(top, c.top_z * k);
+    deepest = std::min(deepest, c.cut_z * k);
+    const Box3 eb = e.surface ? Box3{} : e.curve.bounds();
+    if (!eb.empty()) {
+      b.add(Vec3{eb.lo.x * k, eb.lo.y * k, 0});
+      b.add(Vec3{eb.hi.x * k, eb.hi.y * k, 0});
+    }
+  }
+  if (b.empty()) return {};
+  return {b.lo.x - widest, b.lo.y - widest, deepest - 1, b.hi.x + widest, b.hi.y + widest, top};
+}
+
+}  // namespace bezcam
