@@ -67,7 +67,7 @@ const ToolShape& stock_tool(const StockTools& tools, int tool, int line) {
       tool == 0 ? "with no tool loaded (no T- M06 before it)" : "with tool T" + std::to_string(tool);
   throw InputError(errc::verify_tool, Place::at_line(line),
                    "the program cuts " + which + ", and " + tool_list(tools) +
-                       ": give every tool the program uses in the tools table (--tools or the design's `tools`)");
+                       ": give every tool the program uses in the tools table");
 }
 
 StockCutter::StockCutter(const StockBox& box_mm, double cell_mm, StockTools tools, const StockCutterOptions& opt)
