@@ -19,6 +19,10 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Differences below this are the rounding of the floors' arithmetic, not
+// material (mm).
+constexpr double kNoise = 1e-9;
+
 // The design's walls are flattened this much finer than the job's
 // tolerance: their bound stays a hundredth of what is judged.
 constexpr double kDesignFlatten = 0.01;
@@ -129,6 +133,16 @@ void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns&
     }
     cols.allowed[col] = std::min(cols.allowed[col], allowed);
   };
+  // Material left: `e` its distance to the part, `above` its height over
+  // the design's floor.
+  auto excess = [&](std::size_t col, std::size_t i, std::size_t j, double e, double above) {
+    if (e <= kNoise) return;
+    if (e > out.excess) out.excess = e, out.excess_at = {g.x_center(i), g.y_center(j), g.floor(i, j)};
+    if (e <= tol) return;
+    ++out.excess_columns;
+    out.excess_volume += above * c2;
+    if (classes[col] == ColumnClass::none) classes[col] = ColumnClass::excess;
+  };
   for (std::size_t k = 0; k < r.size(); ++k) {
     const std::size_t i = r.i0 + k % r.ni, j = r.j0 + k / r.ni, col = j * g.nx() + i;
     const double z = g.floor(i, j), dist = f.distance[k];
@@ -138,13 +152,7 @@ void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns&
       const double gouge =
           dist <= R ? std::max(0.0, design - z) : std::hypot(dist - R, std::max(0.0, d.cut + t.height(R) - z));
       fold(col, gouge, dist <= R ? design : d.top);
-      if (dist <= R && z > std::max(design, g.box().z0) + tol) {
-        const double e = z - std::max(design, g.box().z0);
-        if (e > out.excess) out.excess = e, out.excess_at = {g.x_center(i), g.y_center(j), z};
-        ++out.excess_columns;
-        out.excess_volume += e * c2;
-        if (classes[col] == ColumnClass::none) classes[col] = ColumnClass::excess;
-      }
+      if (dist <= R) excess(col, i, j, z - std::max(design, g.box().z0), z - std::max(design, g.box().z0));
       continue;
     }
     if (f.side[k] == 0) continue;
@@ -153,14 +161,8 @@ void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns&
     fold(col, std::hypot(std::max(0.0, stl - s), std::max(0.0, d.cut - z)), waste ? d.cut : d.top);
     if (!waste || !reached[k] || s > stl + 2 * R) continue;
     const double above = z - floor_design;
-    if (above <= tol || (d.tab_height > 0 && above <= d.tab_height + tol)) continue;
-    const double e = std::min(s - stl, above);
-    if (e > tol) {
-      if (e > out.excess) out.excess = e, out.excess_at = {g.x_center(i), g.y_center(j), z};
-      ++out.excess_columns;
-      out.excess_volume += above * c2;
-      if (classes[col] == ColumnClass::none) classes[col] = ColumnClass::excess;
-    }
+    if (d.tab_height > 0 && above <= d.tab_height + tol) continue;
+    excess(col, i, j, std::min(s - stl, above), above);
   }
   if (!d.wall.closed || f.outside_side == 0) return;
   // A closed wall's sides hold beyond its band: the waste may be cut down
@@ -223,16 +225,17 @@ DesignCheck check_design(const DexelGrid& g, const Job& job, const MachineProfil
       const std::size_t col = j * g.nx() + i;
       const double z = g.floor(i, j);
       const double allowed = std::min(cols.allowed[col], top);
-      if (z >= allowed - out.tolerance) continue;
+      if (z >= allowed) continue;
       const bool far = cols.gouge[col] == kInf;
       const double size = std::min(far ? band : cols.gouge[col], top - z);
-      if (size <= out.tolerance) continue;
+      if (size <= kNoise) continue;
       EntityCheck& ec = cols.owner[col] < 0 ? out.elsewhere : out.entities[static_cast<std::size_t>(cols.owner[col])];
       if (size > ec.gouge) {
         ec.gouge = size;
         ec.gouge_at = {g.x_center(i), g.y_center(j), z};
         ec.gouge_at_least = far && size == band;
       }
+      if (size <= out.tolerance) continue;
       ++ec.gouge_columns;
       ec.gouge_volume += (allowed - z) * c2;
       out.classes[col] = ColumnClass::gouge;

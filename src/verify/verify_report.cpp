@@ -79,7 +79,7 @@ std::string verify_report_json(const VerifyFigures& f) {
     json ents = json::array();
     for (const EntityCheck& e : d.entities) ents.push_back(entity_json(e));
     dj["entities"] = ents;
-    if (d.elsewhere.gouge_columns) dj["elsewhere"] = entity_json(d.elsewhere);
+    if (d.elsewhere.gouge > 0) dj["elsewhere"] = entity_json(d.elsewhere);
     j["design"] = dj;
   }
   return j.dump(2) + "\n";
@@ -106,12 +106,12 @@ std::string verify_summary(const VerifyFigures& f) {
         continue;
       }
       o << e.label << ": largest gouge " << (e.gouge_at_least ? "at least " : "") << mm(e.gouge);
-      if (e.gouge_columns) o << " at " << at(e.gouge_at);
+      if (e.gouge > 0) o << " at " << at(e.gouge_at);
       o << ", largest excess " << mm(e.excess);
-      if (e.excess_columns) o << " at " << at(e.excess_at);
+      if (e.excess > 0) o << " at " << at(e.excess_at);
       o << "\n";
     }
-    if (d.elsewhere.gouge_columns)
+    if (d.elsewhere.gouge > 0)
       o << "away from every wall: gouge " << (d.elsewhere.gouge_at_least ? "at least " : "") << mm(d.elsewhere.gouge)
         << " at " << at(d.elsewhere.gouge_at) << "\n";
     o << (d.gouged() ? "GOUGED: the part is cut deeper than the tolerance " : "no gouge beyond the tolerance ")
