@@ -191,6 +191,7 @@ int run_verify(const VerifyArgs& o) {
   f.hash = g.hash_hex();
   f.added_error = g.added_error();
   f.blocks = cutter.blocks();
+  f.sweep = g.stats();
   f.rapid_cuts = cutter.rapid_cuts();
   f.first_rapid_cut_line = cutter.first_rapid_cut_line();
   if (m.motion) f.cycle_time_s = plan_motion(tl, *m.motion, PlanDetail::summary).cycle_time_s;

@@ -61,6 +61,7 @@ std::string verify_report_json(const VerifyFigures& f) {
   for (const auto& [n, t] : f.tools) tools.push_back(tool_json(n, t));
   j["tools"] = tools;
   j["blocks"] = f.blocks;
+  j["column_evaluations"] = json{{"all", f.sweep.columns}, {"searched", f.sweep.searched_columns}};
   j["removed_volume"] = f.removed_volume;
   j["deepest_floor"] = json{{"z", f.deepest.z}, {"x", f.deepest.x}, {"y", f.deepest.y}};
   j["hash"] = f.hash;

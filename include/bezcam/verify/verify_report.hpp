@@ -26,6 +26,7 @@ struct VerifyFigures {
   std::string hash;
   double added_error = 0;  ///< mm: the flattening bound of NURBS and curve blocks swept
   std::size_t blocks = 0, rapid_cuts = 0;
+  SweepStats sweep;  ///< the columns the sweeps evaluated
   int first_rapid_cut_line = 0;
   std::optional<double> cycle_time_s;  ///< planned on the machine's motion model
   double verify_seconds = 0;           ///< the verifier's own run time
