@@ -88,6 +88,8 @@ inline constexpr ErrorId gcode_arc{"gcode.arc"};
 inline constexpr ErrorId gcode_arc_radius{"gcode.arc-radius"};
 /// A G5/G5.1 Bézier move is malformed.
 inline constexpr ErrorId gcode_bezier{"gcode.bezier"};
+/// A canned drilling cycle (G73, G81-G83) lacks a word or has an invalid one.
+inline constexpr ErrorId gcode_cycle{"gcode.cycle"};
 /// The machine profile does not take this word (arcs, NURBS dialect).
 inline constexpr ErrorId gcode_dialect{"gcode.dialect"};
 /// A dwell G04 has no duration P >= 0.

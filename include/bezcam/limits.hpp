@@ -46,6 +46,9 @@ inline constexpr std::size_t kMaxProgramBytes = std::size_t{128} << 20;
 /// Bytes of one program line, end of line excluded. The simulated
 /// controller also refuses a line longer than its receive buffer.
 inline constexpr std::size_t kMaxLineBytes = 4096;
+/// Moves one canned cycle line (G73, G81-G83, its L repeats and pecks
+/// included) may expand into.
+inline constexpr std::size_t kMaxCycleMoves = 100'000;
 /// Text of one comment the G-code writer prints (longer ids are cut).
 inline constexpr std::size_t kMaxCommentBytes = 200;
 

@@ -9,6 +9,7 @@
 //   modal_state.cpp      modal groups, the non-motion words (F S T M G17 G21 ...)
 //   fanuc_nurbs.cpp      the Fanuc-style G06.2 / G06.3 NURBS block
 //   linuxcnc_curves.cpp  LinuxCNC G5, G5.1 and G5.2 ... G5.3
+//   canned_cycles.cpp    G73, G81, G82, G83 (LinuxCNC's and Fanuc's)
 //   lint.cpp             lint_gcode() and the checks only lint makes
 #include <array>
 #include <limits>
@@ -86,6 +87,14 @@ struct GcodeInterpreter::Impl {
     bool noted_modes = false, noted_position = false, noted_spindle = false;
     double feed_reported = -1;  // the excessive feed last reported
     CutterComp comp;            // G41/G42: the tool-centre path, one move behind
+    // Canned cycles: the initial level (the drilling axis's position where
+    // the cycle mode began) and the words later holes take over.
+    struct Cycle {
+      bool in = false;  // in canned cycle mode since line `line`
+      int line = 0;
+      double initial = 0;
+      std::optional<double> r, z, q, p;  // as written (G91: increments)
+    } cycle;
   };
 
   const MachineProfile* profile = nullptr;
@@ -195,6 +204,15 @@ struct GcodeInterpreter::LineRun {
   void finish_curve_block(MotionBlock& b);
   void clear_block();
   void abandon_block();
+
+  // ---- canned cycles (canned_cycles.cpp)
+  // A G73 / G81 / G82 / G83 line (`code` x 10).
+  void canned_cycle(int code, bool explicit_motion);
+  // Leaving canned cycle mode (G80 or another motion).
+  void end_cycles();
+  // One straight move of a cycle, in the plane's coordinates (a, b, axis);
+  // a rapid that would not move is left out.
+  void cycle_move(bool rapid, const Vec3& plane_to, double dwell = 0);
 
   // ---- modal groups and non-motion words (modal_state.cpp)
   // What a line's G codes ask.

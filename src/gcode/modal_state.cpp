@@ -25,7 +25,11 @@ GGroup g_group(int c) {
     case 53:
     case 62:
     case 63:
-    case 800: return GGroup::motion;
+    case 730:
+    case 800:
+    case 810:
+    case 820:
+    case 830: return GGroup::motion;
     case 40:
     case 280:
     case 300:
@@ -47,6 +51,8 @@ GGroup g_group(int c) {
     case 420: return GGroup::cutter_comp;
     case 430:
     case 490: return GGroup::tool_length;
+    case 980:
+    case 990: return GGroup::cycle_return;
     case 540:
     case 550:
     case 560:
@@ -279,6 +285,12 @@ void GcodeInterpreter::LineRun::set_mode(int c, const std::string& t) {
     st.arc_centers = c == 901 ? ArcCenterMode::absolute : ArcCenterMode::incremental;
   } else if (c >= 540 && c <= 590 && c % 10 == 0) {
     st.coord_system = static_cast<WorkOffset>(c / 10);
+  } else if (c == 980 || c == 990) {
+    // LinuxCNC: "Cannot change retract mode with cutter radius compensation on".
+    if (st.cutter_comp != CutterCompMode::off)
+      fail(errc::gcode_cutter_comp, t + " (canned cycle return) cannot be given with cutter radius compensation on");
+    st.cycle_return = c == 980 ? CycleReturn::initial_level : CycleReturn::r_plane;
+    st.cycle_return_set = true;
   } else if (c == 430) {
     tool_length_on();
   } else if (c == 490) {
@@ -323,6 +335,10 @@ void GcodeInterpreter::LineRun::check_letters(int active, const std::string& ext
     case 52: allowed += "XYPL"; break;
     case 62:
     case 63: allowed += explicit_motion ? "XYZKRP" : ""; break;
+    case 810: allowed += "XYZRL"; break;
+    case 820: allowed += "XYZRLP"; break;
+    case 730:
+    case 830: allowed += "XYZRLQ"; break;
     default: break;
   }
   allowed += extra;

@@ -9,7 +9,7 @@ namespace bezcam::gcode {
 enum class GGroup : int {
   unsupported = -1,   ///< not a code this reader takes
   non_modal = 0,      ///< G04 dwell, G28, G30, G53
-  motion = 1,         ///< G00-G03, G5, G5.1, G5.2, G5.3, G06.2, G06.3, G80
+  motion = 1,         ///< G00-G03, G5, G5.1, G5.2, G5.3, G06.2, G06.3, G73, G80-G83
   plane = 2,          ///< G17, G18, G19
   distance = 3,       ///< G90, G91
   arc_distance = 4,   ///< G90.1, G91.1 (arc centres absolute or from the start)
@@ -17,6 +17,7 @@ enum class GGroup : int {
   units = 6,          ///< G20, G21
   cutter_comp = 7,    ///< G40, G41, G42
   tool_length = 8,    ///< G43, G49
+  cycle_return = 10,  ///< G98, G99
   coord_system = 12,  ///< G54-G59
   path_mode = 13,     ///< G61, G61.1, G64
 };

@@ -300,8 +300,14 @@ void GcodeInterpreter::LineRun::motion_line(int code, bool explicit_motion) {
   if (code == -1) {  // G80 or no motion words
     st.motion = ModalMotion::none;
     mo.g5_chain = false;
+    end_cycles();
     return;
   }
+  if (is_canned_cycle(static_cast<ModalMotion>(code))) {
+    canned_cycle(code, explicit_motion);
+    return;
+  }
+  end_cycles();
   if (self.profile && explicit_motion) check_dialect(code);
   if (code >= 50 && code <= 52 && st.plane != Plane::xy)
     fail(errc::gcode_plane, wt(code) + " moves in the XY plane: select it with G17 first (G" +
@@ -470,6 +476,10 @@ void GcodeInterpreter::LineRun::arc(bool cw) {
 GcodeInterpreter::GcodeInterpreter(const MachineProfile* profile) : impl_(std::make_unique<Impl>()) {
   impl_->profile = profile;
   if (profile) impl_->tool_diameters_mm = profile->tool_diameters_mm;
+  // The return mode until a program sets it: LinuxCNC's interpreter starts
+  // in G99, a Fanuc control (parameter) in G98.
+  const bool fanuc = profile && profile->cycles.dialect == CannedCycles::Dialect::fanuc;
+  impl_->state.cycle_return = fanuc ? CycleReturn::initial_level : CycleReturn::r_plane;
 }
 
 GcodeInterpreter::~GcodeInterpreter() = default;

@@ -51,6 +51,10 @@ std::string motion_word(ModalMotion m) {
     case ModalMotion::nurbs_g5_2: return "G5.2";
     case ModalMotion::nurbs_g06_2: return "G06.2";
     case ModalMotion::nurbs_g06_3: return "G06.3";
+    case ModalMotion::chip_break: return "G73";
+    case ModalMotion::drill: return "G81";
+    case ModalMotion::drill_dwell: return "G82";
+    case ModalMotion::peck: return "G83";
   }
   return "G80";
 }
@@ -69,11 +73,17 @@ std::string barrier(const MachineState& st, const GcodeInterpreter::Continuation
            std::to_string(st.cutter_comp_d) +
            ") is on there: the tool's offset depends on the moves before it; resume at the lead before the G" +
            std::to_string(static_cast<int>(st.cutter_comp)) + " line";
-  bool names_motion = false, g5 = false;
+  bool names_motion = false, g5 = false, cycle = is_canned_cycle(st.motion);
   for (const auto& [code, text] : ln.g) {
-    if (gcode::g_group(code) == GGroup::motion) names_motion = true;
+    if (gcode::g_group(code) == GGroup::motion) {
+      names_motion = true;
+      cycle = is_canned_cycle(static_cast<ModalMotion>(code));
+    }
     if (code == 50) g5 = true;
   }
+  if (cycle)
+    return "it drills in a canned cycle, whose initial level and words come from the lines before; resume before "
+           "the cycle begins";
   if (g5 && c.g5_chain && !ln.has('I') && !ln.has('J'))
     return "it is a G5 that takes its start tangent from the G5 before it (no I and J)";
   if (!names_motion && !restorable(st.motion))
@@ -104,6 +114,7 @@ std::vector<std::string> preamble_blocks(const Snapshot& s, double safe_z, doubl
     modes += " G" + std::to_string(static_cast<int>(st.path_mode));
   if (st.arc_centers == ArcCenterMode::absolute)
     modes += " G90.1";  // only a program that used it: not every controller knows it
+  if (st.cycle_return_set) modes += st.cycle_return == CycleReturn::r_plane ? " G99" : " G98";
   out.push_back(modes);
   if (st.tool > 0) out.push_back("T" + std::to_string(st.tool) + " M06");
   const int sel = s.cont.selected_tool;

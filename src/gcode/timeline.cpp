@@ -1,5 +1,6 @@
 #include "bezcam/gcode/timeline.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "bezcam/error.hpp"
@@ -12,16 +13,19 @@ void add_to_timeline(Timeline& tl, const std::vector<MotionBlock>& blocks, const
                      const MachineState& after, int line_no) {
   tl.units = after.units;
   // Execution order within a line (RS274/NGC): tool change, spindle,
-  // dwell, then the motion; a program stop after it.
+  // dwell, then the motion; a program stop after it. A canned cycle's
+  // dwells come after the blocks they follow (G04 cannot share their line).
   auto pause = [&](PlanPause::Kind k, double s) { tl.pauses.push_back({k, s, line_no, tl.blocks.size()}); };
   if (after.tool != before.tool) pause(PlanPause::Kind::tool_change, 0);
   if (after.spindle_on && !before.spindle_on) pause(PlanPause::Kind::spindle_start, 0);
-  if (after.dwell_seconds > before.dwell_seconds)
+  const bool block_dwells = std::any_of(blocks.begin(), blocks.end(), [](const auto& b) { return b.dwell_s > 0; });
+  if (!block_dwells && after.dwell_seconds > before.dwell_seconds)
     pause(PlanPause::Kind::dwell, after.dwell_seconds - before.dwell_seconds);
   for (const MotionBlock& b : blocks) {
     tl.blocks.push_back(b);
     tl.path_tolerance.push_back(after.path_tolerance);
     tl.tools.push_back(after.tool);
+    if (b.dwell_s > 0) pause(PlanPause::Kind::dwell, b.dwell_s);
   }
   if (after.program_stops > before.program_stops) pause(PlanPause::Kind::program_stop, 0);
 }

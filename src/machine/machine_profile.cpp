@@ -47,6 +47,7 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
         "cutter_compensation",
         "tool_diameters_mm",
         "nurbs",
+        "canned_cycles",
         "travel_mm",
         "max_feed_mm_min",
         "defaults",
@@ -58,6 +59,7 @@ const std::vector<std::pair<std::string, std::vector<std::string_view>>>& known_
       {"decimals", {"mm", "inch"}},
       {"max_decimals", {"mm", "inch"}},
       {"words", {"rapid", "feed", "cw", "ccw"}},
+      {"canned_cycles", {"dialect", "g73_retract_mm", "g83_clearance_mm"}},
       {"nurbs", {"dialect", "start_word", "max_rank", "knot_decimals", "weight_decimals", "fixed_decimals"}},
       {"travel_mm", {"x", "y", "z"}},
       {"defaults", {"feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool_radius", "tool", "coolant"}},
@@ -302,6 +304,36 @@ void parse_capabilities(const Reader& r, const json& doc, MachineProfile& m) {
   }
 }
 
+// The `canned_cycles` object (after `nurbs`, whose dialect is the default).
+void parse_cycles(const Reader& r, const json* v, MachineProfile& m) {
+  using D = CannedCycles::Dialect;
+  CannedCycles& c = m.cycles;
+  c.dialect = m.nurbs == NurbsDialect::linuxcnc ? D::linuxcnc : D::fanuc;
+  if (v) {
+    if (!v->is_object()) r.fail("canned_cycles", "expected an object");
+    if (auto d = r.opt(*v, "dialect")) {
+      const std::string s = r.str(*d, "canned_cycles.dialect");
+      if (s == "none")
+        c.dialect = D::none;
+      else if (s == "linuxcnc")
+        c.dialect = D::linuxcnc;
+      else if (s == "fanuc")
+        c.dialect = D::fanuc;
+      else
+        r.fail("canned_cycles.dialect", "expected \"none\", \"linuxcnc\" or \"fanuc\", found \"" + s + "\"");
+    }
+  }
+  const double d = c.dialect == D::fanuc ? kFanucPeckClearanceMm : kLinuxcncPeckClearanceMm;
+  c.g73_retract_mm = c.g83_clearance_mm = d;
+  if (!v) return;
+  for (auto [key, field] : {std::pair{"g73_retract_mm", &c.g73_retract_mm}, {"g83_clearance_mm", &c.g83_clearance_mm}})
+    if (auto x = r.opt(*v, key)) {
+      const std::string path = std::string("canned_cycles.") + key;
+      *field = r.num(*x, path);
+      if (!(*field >= 0 && *field <= 100)) r.fail(path, "expected a distance from 0 to 100 mm");
+    }
+}
+
 // The `nurbs` object: the dialect of curve blocks and how they print.
 void parse_nurbs(const Reader& r, const json& v, MachineProfile& m) {
   if (!v.is_object()) r.fail("nurbs", "expected an object");
@@ -395,6 +427,7 @@ MachineProfile parse_machine_profile(const std::string& text, const std::string&
   parse_tool_change(r, doc, m);
   parse_capabilities(r, doc, m);
   if (auto v = r.opt(doc, "nurbs")) parse_nurbs(r, *v, m);
+  parse_cycles(r, r.opt(doc, "canned_cycles"), m);
   if (auto v = r.opt(doc, "travel_mm")) parse_travel(r, *v, m);
   if (auto v = r.opt(doc, "max_feed_mm_min")) m.max_feed_mm_min = r.num(*v, "max_feed_mm_min");
   if (auto v = r.opt(doc, "motion")) m.motion = parse_motion(r, *v);

@@ -543,3 +543,112 @@ TEST(LinuxcncRs274, ProgramsFromOtherPostsMoveAsLinuxcncReadsThem) {
 }
 
 }  // namespace bezcam
+
+namespace bezcam {
+namespace {
+
+// One canonical call of a canned cycle: a straight move (to) or a dwell.
+struct CycleCall {
+  std::string name;  // STRAIGHT_TRAVERSE, STRAIGHT_FEED, DWELL
+  Vec3 to;
+  double seconds = 0;
+};
+
+std::string describe(const CycleCall& c) {
+  std::ostringstream s;
+  s << c.name;
+  if (c.name == "DWELL")
+    s << " " << c.seconds;
+  else
+    s << " to (" << c.to.x << ", " << c.to.y << ", " << c.to.z << ")";
+  return s.str();
+}
+
+// Appends a straight move unless it ends where the tool stands (rs274
+// prints such moves, bezcam leaves them out).
+void add_move(std::vector<CycleCall>& out, Vec3& at, CycleCall c) {
+  if (norm(c.to - at) < 1e-9) return;
+  at = c.to;
+  out.push_back(std::move(c));
+}
+
+}  // namespace
+
+// Canned cycles as LinuxCNC's interpreter runs them: every move and dwell
+// of G81, G82, G83 and G73, in G98 and G99, G90 and G91, with L repeats,
+// pecks that do not divide the depth, starts below R, in mm and inches
+// (the peck clearance is 0.010 inch), in G17, G18 and G19, and a cycle
+// that keeps the initial level across a change of plane. The programs'
+// numbers have at most 4 decimals, as rs274 prints them, so the ends
+// agree within 1e-9.
+TEST(LinuxcncRs274, CannedCyclesMoveAndDwellAsLinuxcncRunsThem) {
+  const std::string exe = find_rs274();
+  if (exe.empty())
+    GTEST_SKIP() << "rs274 (LinuxCNC's standalone interpreter, Debian package linuxcnc-uspace) is not installed";
+  const std::vector<std::string> programs = {
+      // G17, mm: G99 (the default), the modal X line, G98, a start below R,
+      // G91 with L, G82, exact and inexact pecks.
+      "G21 G90 G17\nG0 X0 Y0 Z10\nF100\nG81 X1 Y1 Z-2 R2\nX2\nG80\nG0 Z1\n"
+      "G98 G83 X5 Y5 Z-3.5 R2 Q1\nG91 G99 G73 X1 Z-2.1 R-3 Q0.7 L2\nG90 G0 Z-5\n"
+      "G98 G82 X0 Z-6 R-1 P0.5\nG99 X3 Y2\nG98 Y4 P1.25\nG80\nG0 Z20\n"
+      "G83 X10 Y10 Z-4 R1 Q1.25\nG91 X-2 Y1 L3\nG90 G99 G73 X0 Y0 Z0 R3 Q1 L2\nG80\nM2\n",
+      // G20: the clearance of G83 and G73 is 0.010 inch.
+      "G20 G90 G17\nG0 X0 Y0 Z1\nF10\nG98 G83 X0.5 Y0.5 Z-0.25 R0.1 Q0.1\nG73 X1 Z-0.2 R0.05 Q0.08\nG80\nM2\n",
+      // G18 and G19; the initial level kept across the change of plane.
+      "G21 G90 G18\nG0 X0 Y0 Z1\nF100\nG81 Z2 X1 Y-1 R0.5\nG19\nG91 G82 Y1 Z1 X-1 R-0.25 P0.25 L2\n"
+      "G90 G80\nG0 X5\nG99 G83 Y0 Z0 X-2 R1 Q1.5\nG80\nG17\nM2\n",
+  };
+  std::vector<std::vector<CycleCall>> ours;
+  for (const std::string& text : programs) {
+    std::vector<CycleCall> calls;
+    Vec3 at{0, 0, 0};  // rs274 starts at the origin
+    for (const MotionBlock& b : read_gcode(text)) {
+      add_move(calls, at, {b.kind == BlockKind::rapid ? "STRAIGHT_TRAVERSE" : "STRAIGHT_FEED", b.to, 0});
+      if (b.dwell_s > 0) calls.push_back({"DWELL", {}, b.dwell_s});
+    }
+    ours.push_back(calls);
+  }
+  const auto runs = run_rs274(exe, programs, std::vector<std::string>(programs.size(), tool_table({})));
+  const std::regex call(R"(^\s*\d+ N\S*\s+([A-Z_]+)\((.*)\)\s*$)");
+  int dwells = 0;
+  size_t moves = 0;
+  for (size_t i = 0; i < runs.size(); ++i) {
+    SCOPED_TRACE(programs[i]);
+    ASSERT_EQ(runs[i].status, 0) << runs[i].output;
+    ASSERT_NE(runs[i].output.find("PROGRAM_END()"), std::string::npos) << runs[i].output;
+    std::vector<CycleCall> theirs;
+    Vec3 at{0, 0, 0};
+    std::istringstream out(runs[i].output);
+    for (std::string line; std::getline(out, line);) {
+      std::smatch m;
+      if (!std::regex_match(line, m, call)) continue;
+      const std::string name = m[1];
+      if (name != "STRAIGHT_TRAVERSE" && name != "STRAIGHT_FEED" && name != "DWELL") continue;
+      std::vector<double> v;
+      std::istringstream a(m[2].str());
+      for (std::string tok; std::getline(a, tok, ',');) v.push_back(std::stod(tok));
+      if (name == "DWELL") {
+        ASSERT_EQ(v.size(), 1u) << line;
+        theirs.push_back({name, {}, v[0]});
+        continue;
+      }
+      ASSERT_GE(v.size(), 3u) << line;
+      add_move(theirs, at, {name, Vec3{v[0], v[1], v[2]}, 0});
+    }
+    const auto& mine = ours[i];
+    ASSERT_EQ(mine.size(), theirs.size()) << runs[i].output;
+    for (size_t k = 0; k < mine.size(); ++k) {
+      SCOPED_TRACE("call " + std::to_string(k + 1) + ": bezcam " + describe(mine[k]) + ", rs274 " +
+                   describe(theirs[k]));
+      EXPECT_EQ(mine[k].name, theirs[k].name);
+      EXPECT_LT(norm(mine[k].to - theirs[k].to), 1e-9);
+      EXPECT_NEAR(mine[k].seconds, theirs[k].seconds, 1e-9);
+      dwells += mine[k].name == "DWELL";
+    }
+    moves += mine.size();
+  }
+  EXPECT_GE(dwells, 5);
+  EXPECT_GT(moves, 150u);
+}
+
+}  // namespace bezcam

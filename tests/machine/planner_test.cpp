@@ -229,6 +229,37 @@ TEST(Planner, PausesTakeTheirTimeAndStopTheMachine) {
   EXPECT_NEAR(p.cycle_time_s, 10.5 + 2 * (2 + 0.05), 1e-9);
 }
 
+// Canned cycles (gcode/reader.hpp) are planned as the moves they expand
+// into: every peck's feed and rapids take their time, and G82's dwell at
+// the bottom is a pause like G04's.
+TEST(Planner, CannedCyclesCountEveryPeckAndDwell) {
+  const MotionModel m = model();
+  const auto g83 = [](const char* q) {
+    return std::string(kHead) + "G0 Z10\nF600\nG98 G83 X5 Y5 Z-10 R2 Q" + q + "\nX15\nG80\nM30\n";
+  };
+  double before = 0;
+  size_t blocks_before = 0;
+  for (const char* q : {"20", "5", "3", "2", "1", "0.5"}) {
+    SCOPED_TRACE(std::string("Q") + q);
+    const Timeline tl = read_timeline(g83(q));
+    const MotionPlan p = plan_motion(tl, m);
+    EXPECT_EQ(p.blocks.size(), tl.blocks.size());
+    EXPECT_GT(tl.blocks.size(), blocks_before);
+    EXPECT_GT(p.cycle_time_s, before + 0.1);
+    before = p.cycle_time_s;
+    blocks_before = tl.blocks.size();
+  }
+  // Two holes: G82's dwell of 0.75 s at each bottom adds exactly 1.5 s
+  // (the drill stops there anyway, turning back up).
+  const std::string holes = std::string(kHead) + "G0 Z10\nF600\nG98 G8_ X5 Y5 Z-3 R2_\nX15\nG80\nM30\n";
+  std::string g81 = holes, g82 = holes;
+  g81.replace(g81.find("G8_"), 3, "G81").replace(g81.find("R2_"), 3, "R2");
+  g82.replace(g82.find("G8_"), 3, "G82").replace(g82.find("R2_"), 3, "R2 P0.75");
+  const MotionPlan a = plan(g81, m), b = plan(g82, m);
+  EXPECT_NEAR(b.pause_time_s, 1.5, 1e-12);
+  EXPECT_NEAR(b.cycle_time_s, a.cycle_time_s + 1.5, 1e-9);
+}
+
 TEST(Planner, SamplesAreDeterministicAndWithinTheLimits) {
   const std::string g = square(30, "G64 P0.01\n");
   const MotionModel m = model();

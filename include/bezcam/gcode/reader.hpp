@@ -25,16 +25,32 @@ namespace bezcam {
 /// The modal motion (RS274/NGC group 1), named. The value is the G number
 /// times 10 (G06.2 -> 62), as the reader's code tables use.
 enum class ModalMotion : int {
-  none = -1,         ///< at the start, after G80 and after G5.3
-  rapid = 0,         ///< G00
-  feed = 10,         ///< G01
-  arc_cw = 20,       ///< G02
-  arc_ccw = 30,      ///< G03
-  cubic = 50,        ///< G5 (LinuxCNC cubic spline)
-  quadratic = 51,    ///< G5.1 (LinuxCNC quadratic spline)
-  nurbs_g5_2 = 52,   ///< G5.2 (a LinuxCNC NURBS block is open)
-  nurbs_g06_2 = 62,  ///< G06.2 (Fanuc NURBS mode)
-  nurbs_g06_3 = 63,  ///< G06.3 (the seeds' wording of the Fanuc block)
+  none = -1,          ///< at the start, after G80 and after G5.3
+  rapid = 0,          ///< G00
+  feed = 10,          ///< G01
+  arc_cw = 20,        ///< G02
+  arc_ccw = 30,       ///< G03
+  cubic = 50,         ///< G5 (LinuxCNC cubic spline)
+  quadratic = 51,     ///< G5.1 (LinuxCNC quadratic spline)
+  nurbs_g5_2 = 52,    ///< G5.2 (a LinuxCNC NURBS block is open)
+  nurbs_g06_2 = 62,   ///< G06.2 (Fanuc NURBS mode)
+  nurbs_g06_3 = 63,   ///< G06.3 (the seeds' wording of the Fanuc block)
+  chip_break = 730,   ///< G73 (canned cycle: peck drilling, backing off a little)
+  drill = 810,        ///< G81 (canned cycle: drilling)
+  drill_dwell = 820,  ///< G82 (canned cycle: drilling, dwell at the bottom)
+  peck = 830,         ///< G83 (canned cycle: peck drilling, out to R after each peck)
+};
+
+/// Whether a modal motion is a canned cycle (G73, G81, G82, G83).
+inline bool is_canned_cycle(ModalMotion m) {
+  return m == ModalMotion::chip_break || m == ModalMotion::drill || m == ModalMotion::drill_dwell ||
+         m == ModalMotion::peck;
+}
+
+/// Where a canned cycle leaves the drill after each hole (group 10).
+enum class CycleReturn : unsigned char {
+  initial_level,  ///< G98: the height where the cycle mode began (or R, if higher)
+  r_plane,        ///< G99: the R plane
 };
 
 /// Distance mode (group 3): how the X Y Z words of a move are read.
@@ -93,7 +109,13 @@ struct MachineState {
   bool coolant_mist = false;   ///< M07 (M09 stops both)
   bool coolant_flood = false;  ///< M08
   PathMode path_mode = PathMode::unset;
-  double dwell_seconds = 0;  ///< G04 P- dwells so far, in seconds
+  /// G04 P- dwells and the dwells of canned cycles (G82 P-) so far, in
+  /// seconds.
+  double dwell_seconds = 0;
+  /// G98 / G99; until a program sets it, the dialect's default (LinuxCNC:
+  /// G99, Fanuc: G98).
+  CycleReturn cycle_return = CycleReturn::initial_level;
+  bool cycle_return_set = false;  ///< a G98 or G99 has been given
   /// Path mode: -1 until the program sets one (the controller's default
   /// applies), 0 for exact stop (G61, G61.1), the tolerance P of G64 P-,
   /// infinity for G64 without P (corners as fast as the planner can).
@@ -125,6 +147,15 @@ struct MachineState {
 ///    X Y Z point, in the distance mode, to the reference point, machine
 ///    zero), G53 with G00/G01 in G90 (machine coordinates for that line),
 ///    G61/G61.1/G64, G80; refused with a reason: G93/G95, anything else;
+///  - the canned drilling cycles G81, G82 (P dwell), G83 (Q peck), G73 (Q
+///    peck) with X Y Z R L, G98/G99 and G80, in G17, G18 and G19 (the
+///    drilling axis is the plane's axis), modal: a later line with axis
+///    words drills another hole. They run as the profile's
+///    `canned_cycles` dialect runs them (LinuxCNC's interpreter, or
+///    Fanuc's; none on Grbl; LinuxCNC's without a profile) and become
+///    rapid and feed blocks of their line, a dwell after the block it
+///    follows (MotionBlock::dwell_s); docs/gcode-dialects.md lists the
+///    differences;
 ///  - M00 M01 M02 M30 M03 M04 M05 M06 M07 M08 M09, F, S, T;
 ///  - the Fanuc-style NURBS block: start word G06.2 or G06.3 (with a
 ///    profile: its start word only), `P` rank 2..4 (default 4; the

@@ -45,6 +45,26 @@ struct MotionModel {
   Planner planner = Planner::generic;
 };
 
+/// The canned drilling cycles G81, G82, G83 and G73 the controller runs
+/// (key `canned_cycles`, docs/machines.md; docs/gcode-dialects.md says
+/// how the dialects differ).
+struct CannedCycles {
+  /// `none`: no canned cycles (Grbl); `linuxcnc`: LinuxCNC 2.9's
+  /// interpreter; `fanuc`: Fanuc's (ISO) cycles.
+  enum class Dialect { none, linuxcnc, fanuc };
+  Dialect dialect = Dialect::linuxcnc;
+  /// G73: how far the drill backs off after each peck (mm).
+  double g73_retract_mm = 0.254;
+  /// G83: how far above the last depth the rapid back into the hole
+  /// stops (mm).
+  double g83_clearance_mm = 0.254;
+};
+
+/// LinuxCNC 2.9 (G83_RAPID_DELTA: 0.010 inch for both).
+inline constexpr double kLinuxcncPeckClearanceMm = 0.254;
+/// The `fanuc` dialect's defaults (Fanuc parameters 5114 and 5115).
+inline constexpr double kFanucPeckClearanceMm = 1.0;
+
 struct MachineProfile {
   std::string name;
   std::string description;
@@ -101,6 +121,9 @@ struct MachineProfile {
   NurbsDialect nurbs = NurbsDialect::none;
   std::string nurbs_start_word = "G06.2";
   int nurbs_max_rank = 4;
+  /// Key `canned_cycles`; without it the dialect follows `nurbs` (a
+  /// LinuxCNC profile: LinuxCNC's, any other: Fanuc's).
+  CannedCycles cycles;
   int knot_decimals = 4, weight_decimals = 4;
   /// NURBS block numbers printed with all their decimals (`K0.000000
   /// X55.507 Y52.139 Z0.000 R1.000`, the seeds' listing) instead of with

@@ -22,7 +22,10 @@ struct MotionBlock {
   /// Axes of `from` known before the move (X 1, Y 2, Z 4); an unknown axis
   /// of `from` holds the value of `to` (no motion assumed along it).
   unsigned from_known = 7;
-  double feed = 0;                     ///< units/min (0 for rapids)
+  double feed = 0;  ///< units/min (0 for rapids)
+  /// Seconds the machine dwells once the block has ended (a canned cycle's
+  /// G82 P- at the bottom of the hole); 0: none.
+  double dwell_s = 0;
   Vec3 center;                         ///< arcs
   Plane plane = Plane::xy;             ///< arcs: G17, G18 or G19
   int order = 0;                       ///< nurbs: degree + 1; bezier: degree + 1
