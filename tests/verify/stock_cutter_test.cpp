@@ -112,3 +112,21 @@ TEST(MachinedProgram, TheProgramsStockHoldsItsCutsAndTheTool) {
     EXPECT_EQ(e.id(), "verify.empty");
   }
 }
+
+TEST(StockCutter, CannedCyclesDrillTheirHolesWithTheDrillsPoint) {
+  // G83 pecks and G81 holes in G99: each hole is the drill's cone at the
+  // bottom, whatever the pecks did on the way.
+  const StockTools drill{{3, ToolShape::drill(5, 118)}};
+  StockCutter c(kBox, 0.1, drill);
+  cut_timeline(c, read_timeline("G21 G90 G17\nT3 M6\nG0 X0 Y0 Z5\nG99 G83 X-5.05 Y-5.05 Z-3 R1 Q1.1 F100\n"
+                                "G81 X5.05 Y5.05 Z-3 R1\nG80\nG0 Z5\nM30\n"));
+  const DexelGrid& g = c.grid();
+  const double k = 1 / std::tan(59 * M_PI / 180);
+  for (const double cx : {-5.05, 5.05})
+    for (std::size_t j = 0; j < g.ny(); ++j)
+      for (std::size_t i = 0; i < g.nx(); ++i) {
+        const double rho = std::hypot(g.x_center(i) - cx, g.y_center(j) - cx);
+        if (rho < 2.5 - 1e-9) EXPECT_NEAR(g.floor(i, j), -3 + rho * k, 1e-9) << g.x_center(i) << " " << g.y_center(j);
+      }
+  EXPECT_NEAR(g.deepest().z, -3, 1e-9);  // the holes' axes pass through column centres
+}
