@@ -35,7 +35,7 @@ ToolEntry parse_entry(const JsonCtx& ctx, const json& obj, const std::string& at
   ToolEntry t;
   t.number = number;
   const json& shape = ctx.require(obj, at, "shape");
-  const std::optional<ToolShape> s = shape.is_string() ? tool_shape_from(shape.get<std::string>()) : std::nullopt;
+  const std::optional<ToolType> s = shape.is_string() ? tool_type_from(shape.get<std::string>()) : std::nullopt;
   if (!s)
     ctx.fail(at + ".shape", shape.is_string() ? errc::job_tool_table : errc::job_type,
              "expected one of \"flat\", \"ball\", \"bull\", \"vee\", \"drill\", found " + describe(shape));
@@ -48,7 +48,7 @@ ToolEntry parse_entry(const JsonCtx& ctx, const json& obj, const std::string& at
   num("angle", t.angle);
   num("point_angle", t.point_angle);
   num("flute_length", t.flute_length);
-  t.center_cutting = t.shape == ToolShape::drill;
+  t.center_cutting = t.shape == ToolType::drill;
   if (auto it = obj.find("center_cutting"); it != obj.end())
     t.center_cutting = ctx.boolean(*it, at + ".center_cutting");
   check_tool_entry(t, ctx.source, at);

@@ -10,42 +10,42 @@
 namespace bezcam {
 
 namespace {
-constexpr ToolShape kShapes[] = {ToolShape::flat, ToolShape::ball, ToolShape::bull, ToolShape::vee, ToolShape::drill};
+constexpr ToolType kShapes[] = {ToolType::flat, ToolType::ball, ToolType::bull, ToolType::vee, ToolType::drill};
 }  // namespace
 
-const char* to_string(ToolShape s) {
+const char* to_string(ToolType s) {
   switch (s) {
-    case ToolShape::flat: return "flat end mill";
-    case ToolShape::ball: return "ball end mill";
-    case ToolShape::bull: return "bull nose end mill";
-    case ToolShape::vee: return "V-bit";
-    case ToolShape::drill: return "drill";
+    case ToolType::flat: return "flat end mill";
+    case ToolType::ball: return "ball end mill";
+    case ToolType::bull: return "bull nose end mill";
+    case ToolType::vee: return "V-bit";
+    case ToolType::drill: return "drill";
   }
   return "flat end mill";
 }
 
-const char* table_name(ToolShape s) {
+const char* table_name(ToolType s) {
   switch (s) {
-    case ToolShape::flat: return "flat";
-    case ToolShape::ball: return "ball";
-    case ToolShape::bull: return "bull";
-    case ToolShape::vee: return "vee";
-    case ToolShape::drill: return "drill";
+    case ToolType::flat: return "flat";
+    case ToolType::ball: return "ball";
+    case ToolType::bull: return "bull";
+    case ToolType::vee: return "vee";
+    case ToolType::drill: return "drill";
   }
   return "flat";
 }
 
-std::optional<ToolShape> tool_shape_from(std::string_view name) {
-  for (ToolShape s : kShapes)
+std::optional<ToolType> tool_type_from(std::string_view name) {
+  for (ToolType s : kShapes)
     if (name == table_name(s)) return s;
   return std::nullopt;
 }
 
 std::string ToolEntry::description() const {
   std::string d = std::string(table_name(shape)) + " D" + fmt_num(diameter);
-  if (shape == ToolShape::bull && corner_radius) d += " r" + fmt_num(*corner_radius);
-  if (shape == ToolShape::vee && angle) d += " " + fmt_num(*angle) + "deg";
-  if (shape == ToolShape::drill && point_angle) d += " " + fmt_num(*point_angle) + "deg";
+  if (shape == ToolType::bull && corner_radius) d += " r" + fmt_num(*corner_radius);
+  if (shape == ToolType::vee && angle) d += " " + fmt_num(*angle) + "deg";
+  if (shape == ToolType::drill && point_angle) d += " " + fmt_num(*point_angle) + "deg";
   if (flute_length) d += " flutes " + fmt_num(*flute_length);
   return d;
 }
@@ -86,7 +86,7 @@ void check_tool_entry(const ToolEntry& t, const std::string& file, const std::st
     throw InputError(errc::job_not_positive, place("diameter"),
                      "expected a tool diameter > 0, found " + fmt_num(t.diameter));
   // Each value belongs to one shape: on another it would be ignored.
-  const auto belongs = [&](const std::optional<double>& v, ToolShape owner, const char* key, const char* what) {
+  const auto belongs = [&](const std::optional<double>& v, ToolType owner, const char* key, const char* what) {
     if (v && t.shape != owner)
       throw InputError(errc::job_tool_table, place(key),
                        shape + " has no " + what + ": remove \"" + key + "\", or make the tool's shape \"" +
@@ -94,9 +94,9 @@ void check_tool_entry(const ToolEntry& t, const std::string& file, const std::st
     if (!v && t.shape == owner)
       throw InputError(errc::job_missing, place(key), shape + " needs \"" + key + "\" (its " + what + "); add it");
   };
-  belongs(t.corner_radius, ToolShape::bull, "corner_radius", "corner radius");
-  belongs(t.angle, ToolShape::vee, "angle", "included angle (degrees)");
-  belongs(t.point_angle, ToolShape::drill, "point_angle", "point angle (degrees)");
+  belongs(t.corner_radius, ToolType::bull, "corner_radius", "corner radius");
+  belongs(t.angle, ToolType::vee, "angle", "included angle (degrees)");
+  belongs(t.point_angle, ToolType::drill, "point_angle", "point angle (degrees)");
   if (t.corner_radius) {
     const double rc = *t.corner_radius, r = t.diameter / 2;
     if (!std::isfinite(rc) || !(rc > 0) || rc > r * (1 + 1e-12))
@@ -111,7 +111,7 @@ void check_tool_entry(const ToolEntry& t, const std::string& file, const std::st
   if (t.flute_length && (!std::isfinite(*t.flute_length) || !(*t.flute_length > 0)))
     throw InputError(errc::job_not_positive, place("flute_length"),
                      "expected a flute length > 0, found " + fmt_num(*t.flute_length));
-  if (t.shape == ToolShape::drill && !t.center_cutting)
+  if (t.shape == ToolType::drill && !t.center_cutting)
     throw InputError(errc::job_tool_table, place("center_cutting"),
                      "a drill always cuts at its centre: \"center_cutting\" cannot be false for a \"drill\"; "
                      "remove it");

@@ -13,7 +13,7 @@ namespace {
 // one, and where in the job that is set.
 struct Claim {
   double diameter = 0;
-  std::optional<ToolShape> shape;
+  std::optional<ToolType> shape;
   size_t entity = 0;
   std::string where;
 };
@@ -36,7 +36,7 @@ std::optional<Claim> claim_of(const Entity& e, const Job& job, const JobParams& 
   if (e.surface) {
     if (!p.tool_radius || !(*p.tool_radius > 0)) return std::nullopt;
     c.diameter = 2 * *p.tool_radius;
-    c.shape = ToolShape::ball;
+    c.shape = ToolType::ball;
     c.where = source_of(e, job, &JobParams::tool_radius, "tool_radius");
     return c;
   }
@@ -73,14 +73,14 @@ void apply_entry(const Job& job, const Entity& e, const ToolEntry& t, JobParams&
   if (e.surface) {
     const auto at = given_at(e, job, &JobParams::tool_radius, "tool_radius");
     const double r = t.diameter / 2;
-    if (at && *given.tool_radius > 0 && (t.shape != ToolShape::ball || !same_diameter(*given.tool_radius, r)))
+    if (at && *given.tool_radius > 0 && (t.shape != ToolType::ball || !same_diameter(*given.tool_radius, r)))
       throw InputError(errc::job_tool, Place::in_json(job.source, *at),
                        tool + ", but " + *at + " gives a ball end of radius " + fmt_num(*given.tool_radius) + " " + u +
                            for_entity(*at, e) + ": " +
-                           (t.shape == ToolShape::ball
+                           (t.shape == ToolType::ball
                                 ? "remove \"tool_radius\" (the table gives " + fmt_num(r) + ") or make the two agree"
                                 : std::string("remove \"tool_radius\", or pick a ball tool")));
-    if (!at) given.tool_radius = t.shape == ToolShape::ball ? r : 0.0;
+    if (!at) given.tool_radius = t.shape == ToolType::ball ? r : 0.0;
     return;
   }
   if (const auto at = given_at(e, job, &JobParams::tool_diameter, "tool_diameter")) {
@@ -139,7 +139,7 @@ std::vector<JobTool> job_tools(const Job& job, const JobParams& defaults) {
     const int number = p.tool.value_or(-1);
     auto it = std::find_if(tools.begin(), tools.end(), [&](const JobTool& t) { return t.number == number; });
     if (it == tools.end()) {
-      tools.push_back({number, std::nullopt, ToolShape::flat, std::nullopt, {}});
+      tools.push_back({number, std::nullopt, ToolType::flat, std::nullopt, {}});
       first.emplace_back();
       it = tools.end() - 1;
     }

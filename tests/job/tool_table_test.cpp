@@ -11,6 +11,7 @@
 #include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/job/tools.hpp"
+#include "bezcam/stock/tool_shape.hpp"
 #include "support/refusal.hpp"
 
 using namespace bezcam;
@@ -58,7 +59,7 @@ JobParams defaults_radius(double r) {
   p.tool_radius = r;
   return p;
 }
-ToolEntry entry(int number, ToolShape shape, double diameter) {
+ToolEntry entry(int number, ToolType shape, double diameter) {
   ToolEntry t;
   t.number = number;
   t.shape = shape;
@@ -73,7 +74,7 @@ TEST(ToolTable, FiveShapesAreReadInToolNumberOrder) {
   ASSERT_EQ(j.tools.entries.size(), 5u);
   const ToolEntry& flat = j.tools.entries[0];
   EXPECT_EQ(flat.number, 1);
-  EXPECT_EQ(flat.shape, ToolShape::flat);
+  EXPECT_EQ(flat.shape, ToolType::flat);
   EXPECT_EQ(flat.diameter, 6);
   EXPECT_EQ(flat.flute_length, 20);
   EXPECT_FALSE(flat.center_cutting);
@@ -200,7 +201,7 @@ TEST(ToolTable, TheEntrysDiameterBecomesTheEntitysToolDiameter) {
   ASSERT_EQ(t.size(), 1u);
   EXPECT_EQ(t[0].number, 3);
   EXPECT_EQ(t[0].diameter, 10);
-  EXPECT_EQ(t[0].shape, ToolShape::bull);
+  EXPECT_EQ(t[0].shape, ToolType::bull);
   ASSERT_TRUE(t[0].entry);
   EXPECT_EQ(t[0].entry->corner_radius, 1);
 }
@@ -312,15 +313,15 @@ TEST(ToolTable, AToolsFileIsReadWithItsPlaces) {
 
 TEST(ToolTable, AJobBuiltInMemoryTakesATable) {
   ToolTable t;
-  t.entries.push_back(entry(2, ToolShape::ball, 4));
-  t.entries.push_back(entry(1, ToolShape::flat, 6));
+  t.entries.push_back(entry(2, ToolType::ball, 4));
+  t.entries.push_back(entry(1, ToolType::flat, 6));
   const Job j = JobBuilder("built").tools(t).tool(2).feed(600).bezier("a", Bezier::make({{0, 0}, {10, 0}})).build();
   EXPECT_EQ(j.tools.numbers(), "1, 2");
   EXPECT_EQ(entity_params(j, j.entities[0]).tool_diameter, 4);
-  t.entries.push_back(entry(3, ToolShape::vee, 4));
+  t.entries.push_back(entry(3, ToolType::vee, 4));
   InputError e = refusal_of([&] { JobBuilder("built").tools(t).bezier("a", Bezier::make({{0, 0}, {10, 0}})).build(); });
   EXPECT_EQ(e.where(), "built: tools.\"3\".angle");
-  t.entries.back() = entry(1, ToolShape::flat, 6);
+  t.entries.back() = entry(1, ToolType::flat, 6);
   e = refusal_of([&] { JobBuilder("built").tools(t).bezier("a", Bezier::make({{0, 0}, {10, 0}})).build(); });
   EXPECT_EQ(e.id(), "job.tool-table");
   EXPECT_EQ(e.where(), "built: tools.\"1\"");
@@ -329,4 +330,16 @@ TEST(ToolTable, AJobBuiltInMemoryTakesATable) {
   });
   EXPECT_EQ(e.id(), "job.tool");
   EXPECT_EQ(e.where(), "built: job.tool");
+}
+
+TEST(ToolTable, EntriesDescribeThemselvesAsTheStocksToolShapes) {
+  // The machined-result model sweeps the table's tools: one TU holds both
+  // names, and an entry reads as the shape built from it.
+  const ToolTable t = parse_tool_table(kFive, "shop.json");
+  const ToolEntry& f = *t.find(1);
+  EXPECT_EQ(f.description(), ToolShape::flat(f.diameter).describe() + " flutes 20");
+  EXPECT_EQ(t.find(2)->description(), ToolShape::ball(6).describe());
+  EXPECT_EQ(t.find(3)->description(), ToolShape::bull(10, 1).describe());
+  EXPECT_EQ(t.find(4)->description(), ToolShape::vee(6, 60).describe());
+  EXPECT_EQ(t.find(5)->description(), ToolShape::drill(5, 118).describe());
 }

@@ -11,20 +11,20 @@
 namespace bezcam {
 
 /// The shape of a tool's end.
-enum class ToolShape { flat, ball, bull, vee, drill };
+enum class ToolType { flat, ball, bull, vee, drill };
 /// "flat end mill", "ball end mill", "bull nose end mill", "V-bit" or "drill".
-const char* to_string(ToolShape s);
+const char* to_string(ToolType s);
 /// The shape a table names "flat", "ball", "bull", "vee" or "drill";
 /// nothing for any other text.
-std::optional<ToolShape> tool_shape_from(std::string_view name);
+std::optional<ToolType> tool_type_from(std::string_view name);
 /// The name a table gives the shape: "flat", "ball", "bull", "vee", "drill".
-const char* table_name(ToolShape s);
+const char* table_name(ToolType s);
 
 /// One tool of a table. Lengths in the table's units (a job's: its units;
 /// a tools file's: mm); angles in degrees.
 struct ToolEntry {
   int number = 0;  ///< the T number, >= 0
-  ToolShape shape = ToolShape::flat;
+  ToolType shape = ToolType::flat;
   double diameter = 0;                  ///< > 0
   std::optional<double> corner_radius;  ///< bull only (required): 0 < rc <= diameter / 2
   std::optional<double> angle;          ///< vee only (required): included angle, 0 < a < 180

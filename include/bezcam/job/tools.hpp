@@ -24,7 +24,7 @@ struct JobTool {
   std::optional<double> diameter;
   /// The table's shape; without a table, a ball end where a surface is
   /// cut with `tool_radius` > 0, otherwise a flat end mill.
-  ToolShape shape = ToolShape::flat;
+  ToolType shape = ToolType::flat;
   /// The job's tool table entry for this number (job units), when the job
   /// has a table.
   std::optional<ToolEntry> entry;
