@@ -124,5 +124,20 @@ def flange_g41():
             e.update({"lead":{"radius":0.8,"length":1.6}})
     return j
 
-for name,f in [("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-cam-notch",cam),("part-lettering",lettering)]:
+# The same flange with a tool table instead of tool_diameter and step_down:
+# a 6 mm bull nose (T1) whose 2.5 mm flutes split the 6 mm cut into three
+# passes, a 3 mm flat end mill (T2) with 4 mm flutes, two passes, for the
+# bolt holes.
+def flange_tools():
+    j=flange()
+    j["tools"]={"1":{"shape":"bull","diameter":6,"corner_radius":0.5,"flute_length":2.5},
+                "2":{"shape":"flat","diameter":3,"flute_length":4,"center_cutting":True},
+                "3":{"shape":"vee","diameter":6,"angle":60}}
+    del j["job"]["tool_diameter"]
+    del j["job"]["step_down"]
+    for e in j["entities"]:
+        e.pop("tool_diameter",None)
+    return j
+
+for name,f in [("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-flange-tools",flange_tools),("part-cam-notch",cam),("part-lettering",lettering)]:
     open("samples/%s.json"%name,"w").write(json.dumps(f(),indent=1)+"\n")

@@ -28,10 +28,11 @@
 #include "bezcam/flatten/tip_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 
-// job/: the job model, its JSON reader, the in-memory builder
+// job/: the job model, its JSON reader, the in-memory builder, tool tables
 #include "bezcam/job/job.hpp"
 #include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/job/tool_table.hpp"
 
 // import/: SVG and DXF drawings read exactly, as jobs
 #include "bezcam/import/conic.hpp"

@@ -239,8 +239,13 @@ inline constexpr ErrorId job_segment_type{"job.segment-type"};
 inline constexpr ErrorId job_surface_ref{"job.surface-ref"};
 /// A surface type bezcam does not know.
 inline constexpr ErrorId job_surface_type{"job.surface-type"};
-/// One tool number given two diameters or shapes in one job.
+/// One tool number given two diameters or shapes in one job, a tool the
+/// job's tool table lacks, or a table entry and a tool_diameter (or
+/// tool_radius) that differ.
 inline constexpr ErrorId job_tool{"job.tool"};
+/// A tool table entry bezcam cannot take: a tool number that is not a
+/// whole number >= 0, an unknown shape, a value the shape does not take.
+inline constexpr ErrorId job_tool_table{"job.tool-table"};
 /// The job file is not valid JSON.
 inline constexpr ErrorId job_syntax{"job.syntax"};
 /// A surface tool path pattern or direction bezcam does not know.

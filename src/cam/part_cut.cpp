@@ -339,17 +339,17 @@ void PartCut::start_part_edge() {
 void PartCut::plan_depths() {
   out_tol = tol - fit_bound - (dev_side == 0 ? 0.0 : 0.5 * tol);
   if (out_tol <= 0.05 * tol) throw std::logic_error("offset fit used up the tolerance");
-  if (cp.step_down) {
+  if (const std::optional<double> step = cp.pass_depth()) {  // step_down, or the flute length
     if (cp.top_z <= cp.cut_z)
       fail("step_down", "passes step down from top_z (" + fmt_num(cp.top_z) + ") to cut_z (" + fmt_num(cp.cut_z) +
                             "), but top_z is not above cut_z: set \"top_z\" to the stock's top");
-    const int n = std::max(1, static_cast<int>(std::ceil((cp.top_z - cp.cut_z) / *cp.step_down - 1e-9)));
+    const int n = std::max(1, static_cast<int>(std::ceil((cp.top_z - cp.cut_z) / *step - 1e-9)));
     for (int k = 1; k <= n; ++k) depths.push_back(k == n ? cp.cut_z : cp.top_z - (cp.top_z - cp.cut_z) * k / n);
   } else {
     depths.push_back(cp.cut_z);
   }
   tab_top = cp.tabs ? cp.cut_z + cp.tabs->height : 0;
-  if (cp.tabs && tab_top >= (cp.step_down ? cp.top_z : safe))
+  if (cp.tabs && tab_top >= (cp.pass_depth() ? cp.top_z : safe))
     fail("tabs.height", "tabs " + fmt_num(cp.tabs->height) + " high reach the top of the stock (top_z " +
                             fmt_num(cp.top_z) + "): make them lower than top_z - cut_z");
   dec = c.decimals;

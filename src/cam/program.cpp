@@ -53,7 +53,8 @@ JobParams profile_defaults(const Job& job, const MachineProfile& m) {
 }  // namespace
 
 CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
-  const JobParams p = e.params.over(job.params.over(profile_defaults(job, m)));
+  const JobParams defaults = profile_defaults(job, m);
+  const JobParams p = entity_params(job, e, defaults);  // the tool table's diameter applied
   auto need = [&](const std::optional<double>& v, const char* key) {
     if (!v)
       throw InputError(errc::job_missing, Place::in_json(job.source, e.json_path() + "." + key),
@@ -83,6 +84,8 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
   c.tabs = p.tabs;
   c.controller_compensation = p.controller_compensation.value_or(false);
   c.tolerance_side = p.tolerance_side.value_or(ToleranceSide::both);
+  if (const ToolEntry* t = entity_tool_entry(job, e, defaults); t && !e.surface && e.curve.dim == 2)
+    c.flute_length = t->flute_length;
   if (c.clearance && c.top_z + *c.clearance <= c.cut_z && !e.surface)
     throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
                      "the clearance plane (top_z " + fmt_num(c.top_z) + " + clearance " + fmt_num(*c.clearance) +

@@ -62,6 +62,11 @@ void check_params(const JobParams& p, const std::string& source, const std::stri
 
 JobBuilder::JobBuilder(std::string name) { job_.source = std::move(name); }
 
+JobBuilder& JobBuilder::tools(ToolTable t) {
+  job_.tools = std::move(t);
+  return *this;
+}
+
 JobBuilder& JobBuilder::units(Units u) {
   // The default tolerance is kDefaultToleranceMm in the job's units, as in a file.
   if (job_.tolerance == kDefaultToleranceMm / mm_per_unit(job_.units))
@@ -215,8 +220,19 @@ Job JobBuilder::build() const {
     throw InputError(errc::job_missing, Place::in_json(job_.source, "entities"), "expected at least one entity");
   check_params(job_.params, job_.source, "job");
   for (const Entity& e : job_.entities) check_params(e.params, job_.source, e.json_path());
-  (void)job_tools(job_);  // one diameter and shape per tool number
-  return job_;
+  Job job = job_;
+  std::sort(job.tools.entries.begin(), job.tools.entries.end(),
+            [](const ToolEntry& a, const ToolEntry& b) { return a.number < b.number; });
+  for (size_t i = 0; i < job.tools.entries.size(); ++i) {
+    const ToolEntry& t = job.tools.entries[i];
+    const std::string at = tool_entry_path("tools", std::to_string(t.number));
+    check_tool_entry(t, job.source, at);
+    if (i > 0 && job.tools.entries[i - 1].number == t.number)
+      throw InputError(errc::job_tool_table, Place::in_json(job.source, at),
+                       "tool " + std::to_string(t.number) + " is given twice; one tool number is one tool");
+  }
+  (void)job_tools(job);  // one diameter and shape per tool number; the table's tools
+  return job;
 }
 
 }  // namespace bezcam

@@ -196,6 +196,60 @@ void JsonCtx::count_bezier_points(std::size_t n, const std::string& path) const 
              std::to_string(kMaxJobPoints) + " (docs/limits.md); split the job into several files");
 }
 
+json parse_json_text(std::string_view text, const std::string& source) {
+  try {
+    return json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& e) {
+    // Turn the byte offset into line and column.
+    size_t line = 1, col = 1;
+    for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n')
+        ++line, col = 1;
+      else
+        ++col;
+    }
+    // nlohmann's text repeats the line and column: keep what follows them.
+    std::string what = e.what();
+    if (auto p = what.find("column "); p != std::string::npos && what.find(": ", p) != std::string::npos)
+      what = what.substr(what.find(": ", p) + 2);
+    std::string hint;
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+      hint = "; the file is empty";
+    else if (what.find("unexpected end of input") != std::string::npos)
+      hint = "; the file ends too early (is a closing bracket or brace missing?)";
+    else if (what.find("unexpected") != std::string::npos && what.find("literal") != std::string::npos &&
+             (what.find("expected '}'") != std::string::npos || what.find("expected ']'") != std::string::npos))
+      hint = "; is a comma missing before it?";
+    Place where = Place::at_file(source);
+    where.line = static_cast<long long>(line);
+    where.column = static_cast<long long>(col);
+    throw InputError(errc::job_syntax, std::move(where), "this is not valid JSON: " + what + hint);
+  } catch (const json::out_of_range& e) {
+    // The only range error while parsing: a number too large for a double
+    // (JSON has no NaN or infinity, so this is how non-finite values come).
+    std::string what = e.what(), token;
+    if (auto a = what.find('\''), b = what.rfind('\''); a != std::string::npos && b > a)
+      token = what.substr(a + 1, b - a - 1);
+    Place where = Place::at_file(source);
+    if (const size_t at = token.empty() ? std::string_view::npos : text.find(token); at != std::string_view::npos) {
+      size_t line = 1, col = 1;
+      for (size_t i = 0; i < at; ++i) {
+        if (text[i] == '\n')
+          ++line, col = 1;
+        else
+          ++col;
+      }
+      // The document did not parse, so its path comes from the text.
+      if (std::string path = detail::json_path_at(text, at); !path.empty()) where.json_path = std::move(path);
+      where.line = static_cast<long long>(line);
+      where.column = static_cast<long long>(col);
+    }
+    throw InputError(errc::job_not_finite, std::move(where),
+                     "expected a finite number, found " + (token.empty() ? std::string("a number") : token) +
+                         ", which is too large for a double (about 1.8e308 at most)");
+  }
+}
+
 CurveSegment parse_curve_object(const JsonCtx& ctx, const json& obj, const std::string& path, int* dim,
                                 std::vector<Bezier>& pieces, bool in_path) {
   if (!obj.is_object()) ctx.expected(path, "a curve object", obj);
@@ -495,60 +549,9 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
     throw InputError(errc::limit_file_size, Place::at_file(source),
                      "the job file is " + std::to_string(text.size() >> 20) + " MiB, more than bezcam reads (" +
                          std::to_string(kMaxJobBytes >> 20) + " MiB, docs/limits.md); split it into smaller files");
-  json doc;
-  try {
-    doc = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    // Turn the byte offset into line and column.
-    size_t line = 1, col = 1;
-    for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n')
-        ++line, col = 1;
-      else
-        ++col;
-    }
-    // nlohmann's text repeats the line and column: keep what follows them.
-    std::string what = e.what();
-    if (auto p = what.find("column "); p != std::string::npos && what.find(": ", p) != std::string::npos)
-      what = what.substr(what.find(": ", p) + 2);
-    std::string hint;
-    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-      hint = "; the file is empty";
-    else if (what.find("unexpected end of input") != std::string::npos)
-      hint = "; the file ends too early (is a closing bracket or brace missing?)";
-    else if (what.find("unexpected") != std::string::npos && what.find("literal") != std::string::npos &&
-             (what.find("expected '}'") != std::string::npos || what.find("expected ']'") != std::string::npos))
-      hint = "; is a comma missing before it?";
-    Place where = Place::at_file(source);
-    where.line = static_cast<long long>(line);
-    where.column = static_cast<long long>(col);
-    throw InputError(errc::job_syntax, std::move(where), "this is not valid JSON: " + what + hint);
-  } catch (const json::out_of_range& e) {
-    // The only range error while parsing: a number too large for a double
-    // (JSON has no NaN or infinity, so this is how non-finite values come).
-    std::string what = e.what(), token;
-    if (auto a = what.find('\''), b = what.rfind('\''); a != std::string::npos && b > a)
-      token = what.substr(a + 1, b - a - 1);
-    Place where = Place::at_file(source);
-    if (const size_t at = token.empty() ? std::string_view::npos : text.find(token); at != std::string_view::npos) {
-      size_t line = 1, col = 1;
-      for (size_t i = 0; i < at; ++i) {
-        if (text[i] == '\n')
-          ++line, col = 1;
-        else
-          ++col;
-      }
-      // The document did not parse, so its path comes from the text.
-      if (std::string path = detail::json_path_at(text, at); !path.empty()) where.json_path = std::move(path);
-      where.line = static_cast<long long>(line);
-      where.column = static_cast<long long>(col);
-    }
-    throw InputError(errc::job_not_finite, std::move(where),
-                     "expected a finite number, found " + (token.empty() ? std::string("a number") : token) +
-                         ", which is too large for a double (about 1.8e308 at most)");
-  }
+  const json doc = detail::parse_json_text(text, source);
   if (!doc.is_object()) ctx.expected("(top level)", "a JSON object", doc);
-  ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities", "order"});
+  ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities", "order", "tools"});
   if (!doc.contains("bezcam"))
     ctx.fail("bezcam", errc::job_missing,
              "the file does not say its format version; add \"bezcam\": 1 at the top level (is this a bezcam job?)");
@@ -557,6 +560,7 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
   if (job.version != 1)
     ctx.fail("bezcam", errc::job_version, "expected format version 1, found " + std::to_string(job.version));
   read_settings(ctx, doc, job);
+  if (auto it = doc.find("tools"); it != doc.end()) job.tools = detail::parse_tools_object(ctx, *it, "tools", errors);
   const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
   if (ents.size() > kMaxEntities)
     ctx.fail("entities", errc::limit_entities,

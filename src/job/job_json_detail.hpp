@@ -10,6 +10,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/tool_table.hpp"
 
 namespace bezcam::detail {
 
@@ -72,6 +73,16 @@ struct JsonCtx {
     }
   }
 };
+
+/// Parses JSON text; InputError at `source` and the line and column
+/// (job.syntax), or the JSON path of a number too large for a double.
+json parse_json_text(std::string_view text, const std::string& source);
+
+/// A tool table object (a job's `tools` at `path`, or a tools file's top
+/// level where `path` is empty): each entry read and checked, a refused
+/// entry recorded in `errors` without hiding the next.
+ToolTable parse_tools_object(const JsonCtx& ctx, const json& obj, const std::string& path,
+                             std::vector<InputError>& errors);
 
 /// Describes a JSON value for "found ..." in messages.
 std::string describe(const json& v);

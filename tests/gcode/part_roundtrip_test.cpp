@@ -108,8 +108,9 @@ Expect expected(const Job& job, const Entity& e, const MachineProfile& m) {
 
 size_t passes(const Job& job, const Entity& e, const MachineProfile& m) {
   const CutParams cp = cut_params(job, e, m);
-  if (!cp.step_down) return 1;
-  return static_cast<size_t>(std::ceil((cp.top_z - cp.cut_z) / *cp.step_down - 1e-9));
+  const std::optional<double> step = cp.pass_depth();  // step_down, or the tool's flute length
+  if (!step) return 1;
+  return static_cast<size_t>(std::ceil((cp.top_z - cp.cut_z) / *step - 1e-9));
 }
 
 TEST(PartRoundTrip, EveryPartSampleInEveryModeKeepsItsBandFromThePart) {

@@ -59,12 +59,12 @@ TEST(JobTools, EachToolHasItsDiameterAndShape) {
   ASSERT_EQ(t.size(), 2u);
   EXPECT_EQ(t[0].number, 2);
   EXPECT_EQ(t[0].diameter, 3);
-  EXPECT_EQ(t[0].shape, ToolEnd::flat);
+  EXPECT_EQ(t[0].shape, ToolType::flat);
   EXPECT_EQ(t[0].entities, std::vector<size_t>{0});
   EXPECT_EQ(t[1].number, 1);
   EXPECT_EQ(t[1].diameter, 6);
   EXPECT_EQ(t[1].entities, (std::vector<size_t>{1, 2}));
-  EXPECT_STREQ(to_string(ToolEnd::flat), "flat end mill");
+  EXPECT_STREQ(to_string(ToolType::flat), "flat end mill");
 }
 
 TEST(JobTools, ASurfaceCutWithARadiusMakesABallEnd) {
@@ -76,7 +76,7 @@ TEST(JobTools, ASurfaceCutWithARadiusMakesABallEnd) {
   const auto t = job_tools(j);
   ASSERT_EQ(t.size(), 1u);
   EXPECT_EQ(t[0].diameter, 6);
-  EXPECT_EQ(t[0].shape, ToolEnd::ball);
+  EXPECT_EQ(t[0].shape, ToolType::ball);
   const InputError e = refusal_of([] {
     parse_job(job_of(R"(, "tool": 1, "tool_radius": 3)",
                      std::string(kPatch) + "}," + square("edge", 40, R"(, "tool_diameter": 8)")),

@@ -120,6 +120,10 @@ struct CutParams {
   /// Part cutting (job.hpp): unset optionals mean "not asked for".
   CutSide side = CutSide::on;
   std::optional<double> tool_diameter, step_down;
+  /// A 2D curve's tool's flute length (the job's tool table): without
+  /// step_down, a cut deeper than it below top_z is split into passes as
+  /// if step_down were the flute length.
+  std::optional<double> flute_length;
   double stock_to_leave = 0;
   CutDirection direction = CutDirection::as_drawn;
   std::optional<Lead> lead;
@@ -128,8 +132,15 @@ struct CutParams {
   ToleranceSide tolerance_side = ToleranceSide::both;
   /// Whether the entity is cut as a part (any of the above asked for).
   bool part_cut() const {
-    return side != CutSide::on || step_down || lead || tabs || controller_compensation ||
+    return side != CutSide::on || pass_depth() || lead || tabs || controller_compensation ||
            tolerance_side != ToleranceSide::both || direction != CutDirection::as_drawn;
+  }
+  /// The deepest cut of one pass: step_down, else the flute length where
+  /// the cut from top_z to cut_z is deeper; nothing: one pass at cut_z.
+  std::optional<double> pass_depth() const {
+    if (step_down) return step_down;
+    if (flute_length && top_z - cut_z > *flute_length) return flute_length;
+    return std::nullopt;
   }
 };
 

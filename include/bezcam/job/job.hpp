@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "bezcam/job/tool_table.hpp"
 #include "bezcam/kernel/curve.hpp"
 #include "bezcam/kernel/surface.hpp"
 #include "bezcam/kernel/units.hpp"
@@ -113,6 +114,11 @@ struct Job {
   std::optional<std::string> machine;
   JobParams params;
   std::vector<Entity> entities;
+  /// `tools`: the tool table, lengths in the job's units; empty when the
+  /// job has none (each entity's tool is then what its keys say).
+  ToolTable tools;
+  /// The tool table in millimetres.
+  ToolTable tools_mm() const { return tools.scaled(mm_per_unit(units)); }
   /// `order`: "shortest" (true): nested contours first, then the order and
   /// start points that shorten the rapids; "as-written" (false, default).
   bool order_shortest = false;

@@ -41,6 +41,10 @@ class JobBuilder {
   JobBuilder& spindle_rpm(double v);
   JobBuilder& tool(int t);
   JobBuilder& params(const JobParams& p);
+  /// The job's tool table (job units), as a file's `tools` (ToolTable's
+  /// entries in any order; build() sorts them and refuses a number given
+  /// twice or an entry check_tool_entry() refuses, at `tools."N"`).
+  JobBuilder& tools(ToolTable t);
 
   /// One Bézier curve (polynomial or rational) as an entity; `id` may be
   /// empty. `params` overrides the job's for this entity.
@@ -76,7 +80,8 @@ class JobBuilder {
 
   /// The job. Throws InputError (place: the builder's name and
   /// `entities[i]`) when an entity's values are invalid, no entity was
-  /// added, or one tool number is given two diameters (job_tools()).
+  /// added, or one tool number is given two diameters, or a tool the
+  /// table lacks, or a diameter other than the table's (job_tools()).
   Job build() const;
 
  private:

@@ -2,7 +2,8 @@
 /// The tools a job cuts with: per tool number, the diameter and shape its
 /// entities are cut for. One tool number is one tool: the operator loads
 /// one cutter for it, so a job that offsets some entities for a 3 mm tool
-/// and others for a 6 mm tool under the same number is refused.
+/// and others for a 6 mm tool under the same number is refused. A job
+/// with a tool table (Job::tools) takes each tool from it.
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,11 +11,6 @@
 #include "bezcam/job/job.hpp"
 
 namespace bezcam {
-
-/// The shape of a tool's end.
-enum class ToolEnd { flat, ball };
-/// "flat end mill" or "ball end mill".
-const char* to_string(ToolEnd s);
 
 /// One tool of a job.
 struct JobTool {
@@ -26,11 +22,38 @@ struct JobTool {
   /// Nothing when no entity gives one (a curve cut on its line, a surface
   /// followed by the tool's tip).
   std::optional<double> diameter;
-  /// A ball end where a surface is cut with `tool_radius` > 0; otherwise a
-  /// flat end mill.
-  ToolEnd shape = ToolEnd::flat;
+  /// The table's shape; without a table, a ball end where a surface is
+  /// cut with `tool_radius` > 0, otherwise a flat end mill.
+  ToolType shape = ToolType::flat;
+  /// The job's tool table entry for this number (job units), when the job
+  /// has a table.
+  std::optional<ToolEntry> entry;
   std::vector<size_t> entities;  ///< the entities it cuts (indices, in the job's order)
 };
+
+/// An entity's cutting parameters: its own over the job's, with its tool
+/// table entry applied, over `defaults` (the machine profile's, in job
+/// units). When the job has a tool table, the entity's tool (its own
+/// `tool`, the job's, else `defaults.tool`) must be in it; the entry's
+/// diameter becomes the curve's `tool_diameter`, and a ball entry's radius
+/// a surface's `tool_radius` (unless the entity or job gives 0: the tip
+/// follows the surface); a surface cut with any other shape is followed
+/// by the tip. Throws InputError:
+/// - errc::job_tool, at the `tool` key (or the entity when the number is
+///   the defaults'), when the table lacks the tool, naming the numbers it
+///   has;
+/// - errc::job_tool, at `tool_diameter` or `tool_radius`, when the entity
+///   or the job gives a value that differs from the entry's (beyond 1e-9
+///   relative), naming both places;
+/// - errc::job_cut, at `step_down`, when a curve's step_down is deeper
+///   than the tool's flute length, naming both.
+/// Without a table: e.params.over(job.params.over(defaults)).
+JobParams entity_params(const Job& job, const Entity& e, const JobParams& defaults = {});
+/// The table entry of the tool that cuts the entity (its own `tool`, the
+/// job's, else `defaults.tool`); nullptr when the job has no table or no
+/// number is given anywhere. Unchecked: entity_params() refuses what is
+/// wrong.
+const ToolEntry* entity_tool_entry(const Job& job, const Entity& e, const JobParams& defaults = {});
 
 /// The job's tools in the order first used. Each entity's tool number,
 /// `tool_diameter` and `tool_radius` are its own, else the job's, else
