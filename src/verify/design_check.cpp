@@ -110,6 +110,38 @@ DesignEntity read_entity(const Job& job, const Entity& e, const CutParams& c, do
 // the stock to leave, and a tool's width more for the centres it needs.
 double band_of(const DesignEntity& d) { return d.stock_to_leave + 3 * d.tool->radius() + 1; }
 
+// The distance from the point (rho, z) of a tool's half section (rho from
+// its axis, z above its tip) to the tool's surface: its profile h over
+// [0, R] and the cylinder above h(R). Each profile is made of segments and
+// quarter circles, so the distance is exact.
+double profile_distance(const ToolShape& t, double rho, double z) {
+  const double R = t.radius();
+  auto segment = [&](double x0, double z0, double x1, double z1) {
+    const double dx = x1 - x0, dz = z1 - z0, len2 = dx * dx + dz * dz;
+    const double u = len2 > 0 ? std::clamp(((rho - x0) * dx + (z - z0) * dz) / len2, 0.0, 1.0) : 0;
+    return std::hypot(rho - (x0 + u * dx), z - (z0 + u * dz));
+  };
+  // The quarter circle about (cx, cz) of radius r from its bottom to its
+  // side (the lower outer quarter).
+  auto quarter = [&](double cx, double cz, double r) {
+    if (rho >= cx && z <= cz) return std::abs(std::hypot(rho - cx, z - cz) - r);
+    return std::min(std::hypot(rho - cx, z - (cz - r)), std::hypot(rho - (cx + r), z - cz));
+  };
+  const double top = t.cutting_height();
+  const double side = std::hypot(rho - R, std::max(0.0, top - z));  // the cylinder above h(R)
+  switch (t.kind()) {
+    case ToolShapeKind::flat: return std::min(side, segment(0, 0, R, 0));
+    case ToolShapeKind::ball: return std::min(side, quarter(0, R, R));
+    case ToolShapeKind::bull: {
+      const double rc = t.corner_radius();
+      return std::min({side, segment(0, 0, R - rc, 0), quarter(R - rc, rc, rc)});
+    }
+    case ToolShapeKind::vee:
+    case ToolShapeKind::drill: return std::min(side, segment(0, 0, R, top));
+  }
+  return side;
+}
+
 // Folds one wall's gouge distances and allowed floors into `cols`, and
 // measures its excess into `out`.
 void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns& cols, EntityCheck& out,
@@ -119,13 +151,19 @@ void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns&
   const Region& r = f.region;
   const ToolShape& t = *d.tool;
   const double R = t.radius(), stl = d.stock_to_leave, c2 = g.cell() * g.cell();
-  const double floor_design = std::max(d.cut, g.box().z0);
-  // Where the tool's centre may stand on the waste side: as far from the
-  // wall as its radius and the stock to leave.
+  const double floor_design = std::max(d.cut, g.box().z0);  // below a flat tool
+  // Where the tool's axis goes along the wall: the columns on the waste
+  // side at the tool's radius past the stock to leave (a strip a cell's
+  // diagonal wide, so that it has no gap between column centres). A
+  // concave corner sharper than the tool has none near it.
   std::vector<char> centres(r.size(), 0);
+  const double strip = g.cell() * std::sqrt(2.0);
   if (!d.groove)
-    for (std::size_t k = 0; k < r.size(); ++k) centres[k] = f.side[k] > 0 && f.distance[k] >= stl + R;
-  const std::vector<char> reached = d.groove ? std::vector<char>{} : verify_detail::reach(r, centres, R, g.cell());
+    for (std::size_t k = 0; k < r.size(); ++k)
+      centres[k] = f.side[k] > 0 && f.distance[k] >= stl + R && f.distance[k] < stl + R + strip;
+  // The distance to the nearest such centre: the tool's surface reaches
+  // down to cut_z + h(that distance) there (h nondecreasing).
+  const std::vector<double> reach = d.groove ? std::vector<double>{} : verify_detail::reach(r, centres, g.cell());
   auto fold = [&](std::size_t col, double gouge, double allowed) {
     if (gouge < cols.gouge[col]) {
       cols.gouge[col] = gouge;
@@ -148,21 +186,34 @@ void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns&
     const double z = g.floor(i, j), dist = f.distance[k];
     if (d.groove) {
       if (dist > R + band) continue;
+      // The groove is the tool's body swept along the curve: inside it
+      // material may go; the distance to its surface measures both ways.
       const double design = dist <= R ? d.cut + t.height(dist) : kInf;
-      const double gouge =
-          dist <= R ? std::max(0.0, design - z) : std::hypot(dist - R, std::max(0.0, d.cut + t.height(R) - z));
-      fold(col, gouge, dist <= R ? design : d.top);
-      if (dist <= R) excess(col, i, j, z - std::max(design, g.box().z0), z - std::max(design, g.box().z0));
+      const double normal = profile_distance(t, dist, z - d.cut);
+      fold(col, z < design ? normal : 0.0, dist <= R ? design : d.top);
+      if (z > std::max(design, g.box().z0)) excess(col, i, j, normal, z - std::max(design, g.box().z0));
       continue;
     }
     if (f.side[k] == 0) continue;
     const double s = f.side[k] > 0 ? dist : -dist;  // positive into the waste
     const bool waste = s >= stl;
     fold(col, std::hypot(std::max(0.0, stl - s), std::max(0.0, d.cut - z)), waste ? d.cut : d.top);
-    if (!waste || !reached[k] || s > stl + 2 * R) continue;
-    const double above = z - floor_design;
-    if (d.tab_height > 0 && above <= d.tab_height + tol) continue;
-    excess(col, i, j, std::min(s - stl, above), above);
+    if (!waste || s > stl + 2 * R) continue;
+    // The distance to the axis's path: at least |s - (stl + R)|, exactly
+    // that where the path runs along the wall; the strip's transform is
+    // within a strip of it there, and larger only where a concave corner
+    // keeps the axis away.
+    const double along = std::abs(s - (stl + R));
+    const double axis = reach[k] - along <= strip + g.cell() ? along : reach[k];
+    if (axis > R * (1 + 1e-12)) continue;
+    const double above = z - std::max(d.cut + t.height(axis), g.box().z0);
+    if (above <= 0) continue;
+    // Tabs stand along the whole wall as far as the design knows, with the
+    // tool's own profile at their ends.
+    if (d.tab_height > 0 && z - floor_design <= d.tab_height + t.cutting_height() + tol) continue;
+    // Measured normal to what the tool hugging the wall leaves: the wall
+    // above the tool's cutting height, its profile below.
+    excess(col, i, j, profile_distance(t, axis, z - d.cut), above);
   }
   if (!d.wall.closed || f.outside_side == 0) return;
   // A closed wall's sides hold beyond its band: the waste may be cut down
@@ -243,7 +294,7 @@ DesignCheck check_design(const DexelGrid& g, const Job& job, const MachineProfil
   return out;
 }
 
-StockBox design_stock_box(const Job& job, const MachineProfile& m, const StockTools& tools) {
+std::optional<StockBox> design_stock_box(const Job& job, const MachineProfile& m, const StockTools& tools) {
   const double k = mm_per_unit(job.units);
   Box3 b;
   double top = -kInf, deepest = kInf, widest = 0;
@@ -258,8 +309,8 @@ StockBox design_stock_box(const Job& job, const MachineProfile& m, const StockTo
       b.add(Vec3{eb.hi.x * k, eb.hi.y * k, 0});
     }
   }
-  if (b.empty()) return {};
-  return {b.lo.x - widest, b.lo.y - widest, deepest - 1, b.hi.x + widest, b.hi.y + widest, top};
+  if (b.empty()) return std::nullopt;
+  return StockBox{b.lo.x - widest, b.lo.y - widest, deepest - 1, b.hi.x + widest, b.hi.y + widest, top};
 }
 
 }  // namespace bezcam

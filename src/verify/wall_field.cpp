@@ -133,17 +133,15 @@ WallField wall_field(const DexelGrid& g, const Wall& w, double band) {
   return out;
 }
 
-std::vector<char> reach(const Region& r, const std::vector<char>& centres, double radius, double cell) {
+std::vector<double> reach(const Region& r, const std::vector<char>& centres, double cell) {
   std::vector<double> f(r.size()), d(r.size());
   for (std::size_t k = 0; k < r.size(); ++k) f[k] = centres[k] ? 0 : kInf;
   std::vector<int> v;
   std::vector<double> z;
   for (std::size_t j = 0; j < r.nj; ++j) dt_1d(&f[j * r.ni], r.ni, 1, &d[j * r.ni], v, z);
   for (std::size_t i = 0; i < r.ni; ++i) dt_1d(&d[i], r.nj, r.ni, &f[i], v, z);
-  const double lim = (radius / cell) * (radius / cell) * (1 + 1e-12);
-  std::vector<char> out(r.size());
-  for (std::size_t k = 0; k < r.size(); ++k) out[k] = f[k] <= lim;
-  return out;
+  for (std::size_t k = 0; k < r.size(); ++k) f[k] = std::sqrt(f[k]) * cell;
+  return f;
 }
 
 }  // namespace bezcam::verify_detail

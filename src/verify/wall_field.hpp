@@ -41,10 +41,11 @@ struct WallField {
 /// The field of `w` over the columns within `band` (mm) of it.
 WallField wall_field(const DexelGrid& g, const Wall& w, double band);
 
-/// Marks, within `r`, the columns that lie within `radius` of a marked
-/// column of `centres` (one flag per column of the region, row by row):
-/// where a tool whose centre may stand on the marked columns reaches.
-/// Exact at the column centres (a squared Euclidean distance transform).
-std::vector<char> reach(const Region& r, const std::vector<char>& centres, double radius, double cell);
+/// For each column of region `r` (row by row), the distance (mm) to the
+/// nearest marked column of `centres`: how near to it a tool's axis may
+/// come when it may stand on the marked columns (infinity when none is
+/// marked). Exact between column centres (a squared Euclidean distance
+/// transform).
+std::vector<double> reach(const Region& r, const std::vector<char>& centres, double cell);
 
 }  // namespace bezcam::verify_detail

@@ -84,7 +84,9 @@ TEST(DesignCheck, AMissingSideIsExcess) {
   const std::string lifted = "G0 Z5\nG0 X-10 Y12\nG1 Z-2 F100\n";
   const DesignCheck d = check(kHead + kSouthToNorth + lifted + kWestBack + "M30\n", square_job(), kFlat4);
   const EntityCheck& e = d.entities[0];
-  EXPECT_NEAR(e.excess, 2, 1e-9);
+  // Measured normal to the kerf the tool would leave: 2 mm at its axis,
+  // the nearest column half a cell from it.
+  EXPECT_NEAR(e.excess, 2 - kCell / 2, 1e-9);
   EXPECT_GT(e.excess_at.y, 10);
   EXPECT_LE(e.gouge, 1e-9);
   EXPECT_FALSE(d.gouged());
@@ -109,10 +111,17 @@ TEST(DesignCheck, AGrooveIsTheToolsShapeAlongTheCurve) {
   EXPECT_LE(ok.entities[0].excess, 1e-9);
   const std::string deep = "G21 G90\nT1 M6\nG0 X-10 Y0 Z5\nG1 Z-1.1 F100\nG1 X10 F500\nG0 Z5\nM30\n";
   const DesignCheck d = check(deep, job, vee);
-  EXPECT_NEAR(d.entities[0].gouge, 0.1, 1e-9);
+  // 0.1 mm lower: 0.1 normal to the V at its apex, 0.1 sin 45 deg on its
+  // slopes; the columns lie between.
+  const double slope = 0.1 * std::sin(M_PI / 4);
+  EXPECT_GE(d.entities[0].gouge, slope - 1e-9);
+  EXPECT_LE(d.entities[0].gouge, 0.1 + 1e-9);
   EXPECT_TRUE(d.gouged());
   const std::string shallow = "G21 G90\nT1 M6\nG0 X-10 Y0 Z5\nG1 Z-0.9 F100\nG1 X10 F500\nG0 Z5\nM30\n";
-  EXPECT_NEAR(check(shallow, job, vee).entities[0].excess, 0.1, 1e-9);
+  const DesignCheck sh = check(shallow, job, vee);
+  EXPECT_GE(sh.entities[0].excess, slope - 1e-9);
+  EXPECT_LE(sh.entities[0].excess, 0.1 + 1e-9);
+  EXPECT_FALSE(sh.gouged());
 }
 
 TEST(DesignCheck, SurfacesAreListedAsNotCompared) {

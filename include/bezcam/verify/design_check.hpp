@@ -15,6 +15,7 @@
 /// does not describe (surfaces, curves that are not flat) are listed as not
 /// compared, with the reason. Lengths are millimetres.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,9 +70,10 @@ struct DesignCheck {
 /// lacks is taken as a flat end mill of its `tool_diameter`.
 DesignCheck check_design(const DexelGrid& grid, const Job& job, const MachineProfile& m, const StockTools& tools);
 
-/// The stock a job is cut from when none is given (mm): its entities'
-/// bounds grown by the largest tool's diameter, from the highest `top_z`
-/// down to 1 mm below the deepest `cut_z`.
-StockBox design_stock_box(const Job& job, const MachineProfile& m, const StockTools& tools);
+/// The stock a job is cut from when none is given (mm): its curve
+/// entities' bounds grown by the largest tool's diameter, from the highest
+/// `top_z` down to 1 mm below the deepest `cut_z`; nothing when the job has
+/// no curve entity (a surface's stock is the program's).
+std::optional<StockBox> design_stock_box(const Job& job, const MachineProfile& m, const StockTools& tools);
 
 }  // namespace bezcam
