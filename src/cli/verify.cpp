@@ -82,7 +82,7 @@ double default_cell(const StockBox& b, double tolerance) {
 // The design's tools, by number (mm): each entity's tool diameter (a ball
 // end for a surface cut with tool_radius).
 StockTools design_tools(const Job& job, const MachineProfile& m) {
-  StockTools t;
+  StockTools t = stock_tools(job.tools_mm());
   const double k = mm_per_unit(job.units);
   for (const Entity& e : job.entities) {
     const CutParams c = cut_params(job, e, m);
@@ -116,6 +116,9 @@ CLI::App* setup_verify(CLI::App& app, VerifyArgs& o) {
                                "and excess. Exit 0, or 5 when a gouge exceeds the design's tolerance.");
   s->add_option("PROGRAM", o.program, "G-code program")->required();
   s->add_option("--machine", o.machine, "machine profile: a name in machines/ or a .json file (default: generic)");
+  s->add_option("--tools", o.tools,
+                "tools table (JSON, lengths in mm), e.g. {\"1\": {\"shape\": \"ball\", \"diameter\": 6}}; "
+                "overrides the design's tools of the same number");
   s->add_option("--stock", o.stock, "stock box x0,y0,z0,x1,y1,z1 in mm (default: the design's, else the program's)");
   s->add_option("--design", o.design, "the job the program was made from: gouges and excess per entity");
   s->add_option("--cell", o.cell, "cell size in mm (default: the tolerance, at most 4 million columns)")
@@ -143,16 +146,18 @@ int run_verify(const VerifyArgs& o) {
   std::optional<Job> design;
   if (!o.design.empty()) design = read_job(o.design);
   StockTools tools = design ? design_tools(*design, m) : StockTools{};
+  if (!o.tools.empty()) {
+    for (auto& [n, t] : stock_tools(read_tool_table_file(o.tools))) tools.insert_or_assign(n, t);
+  }
   if (std::filesystem::is_directory(o.program))
     throw IoError(errc::io_read, Place::at_file(o.program), "is a directory, not a G-code file");
   const Timeline tl = read_timeline(read_bounded(o.program, kMaxProgramBytes, "G-code file"), &m);
-  StockBox box;
+  std::optional<StockBox> box_given;
   if (!o.stock.empty())
-    box = parse_box(o.stock);
+    box_given = parse_box(o.stock);
   else if (design)
-    box = design_stock_box(*design, m, tools);
-  else
-    box = program_stock_box(tl, tools);
+    box_given = design_stock_box(*design, m, tools);
+  const StockBox box = box_given ? *box_given : program_stock_box(tl, tools);
   try {
     (void)stock_grid_size(box, 1);
   } catch (const Error& e) {

@@ -48,6 +48,23 @@ std::string tool_list(const StockTools& tools) {
 
 }  // namespace
 
+ToolShape stock_tool_shape(const ToolEntry& t) {
+  switch (t.shape) {
+    case ToolType::flat: return ToolShape::flat(t.diameter);
+    case ToolType::ball: return ToolShape::ball(t.diameter);
+    case ToolType::bull: return ToolShape::bull(t.diameter, t.corner_radius.value_or(0));
+    case ToolType::vee: return ToolShape::vee(t.diameter, t.angle.value_or(0));
+    case ToolType::drill: return ToolShape::drill(t.diameter, t.point_angle.value_or(0));
+  }
+  return ToolShape::flat(t.diameter);
+}
+
+StockTools stock_tools(const ToolTable& mm) {
+  StockTools out;
+  for (const ToolEntry& e : mm.entries) out.emplace(e.number, stock_tool_shape(e));
+  return out;
+}
+
 MotionBlock block_in_mm(const MotionBlock& b, Units units) {
   const double k = mm_per_unit(units);
   if (k == 1.0) return b;
@@ -76,13 +93,16 @@ StockCutter::StockCutter(const StockBox& box_mm, double cell_mm, StockTools tool
 }
 
 void StockCutter::cut(const MotionBlock& b, int tool, Units units) {
+  ++blocks_;
   // A rapid with no tool in the spindle cuts nothing (the start of a
-  // program, before its first tool change).
+  // program, before its first tool change); nor is one swept from where
+  // the tool is not known (before the program has set every axis: the
+  // controller moves from wherever it stands).
   if (b.kind == BlockKind::rapid && tool == 0 && tools_.size() != 1 && !tools_.count(0)) return;
+  if (b.kind == BlockKind::rapid && b.from_known != 7) return;
   const ToolShape& t = stock_tool(tools_, tool, b.line);
   const MotionBlock m = block_in_mm(b, units);
   Sweep s = to_sweep(m, curve_tolerance_);
-  ++blocks_;
   if (b.kind == BlockKind::rapid) {
     // A rapid below the top of the stock may be a crash: swept on its own,
     // with the floors it passes over compared before and after.

@@ -1,6 +1,7 @@
 // `bezcam verify PROGRAM --machine M ...` as a user meets it (in-process):
 // the machined result, gouges against a design (exit 5), the files it
 // writes, and refusals (exit 2, the option named, nothing written).
+#include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <regex>
@@ -110,4 +111,34 @@ TEST(VerifyCli, RefusalsNameTheOptionAndWriteNothing) {
   EXPECT_EQ(t2.status, 2);
   EXPECT_NE(t2.err.find("line 4"), std::string::npos) << t2.err;  // its first cut
   EXPECT_NE(t2.err.find("T1 (flat D4)"), std::string::npos) << t2.err;
+}
+
+TEST(VerifyCli, AToolsFileCutsAnInchProgramInMillimetres) {
+  Files f;
+  const std::string tools = f.write("tools.json", R"({"4": {"shape": "ball", "diameter": 6.35}})");
+  const std::string inch = "G20 G90 G17\nT4 M6\nG0 X0 Y0 Z0.2\nG1 Z-0.05 F4\nG1 X1 F20\nG0 Z0.2\nM30\n";
+  const std::string mm = "G21 G90 G17\nT4 M6\nG0 X0 Y0 Z5.08\nG1 Z-1.27 F100\nG1 X25.4 F500\nG0 Z5.08\nM30\n";
+  const std::vector<std::string> common{"--tools", tools, "--stock", "-5,-5,-3,30,5,0", "--cell", "0.05"};
+  std::vector<std::string> a{"verify", f.write("in.nc", inch), "--report", f.at("r.json")};
+  a.insert(a.end(), common.begin(), common.end());
+  const auto ri = run_cli(a);
+  EXPECT_EQ(ri.status, 0) << ri.err;
+  std::vector<std::string> b{"verify", f.write("mm.nc", mm), "--hash"};
+  b.insert(b.end(), common.begin(), common.end());
+  const auto rm = run_cli(b);
+  EXPECT_NE(ri.out.find("hash " + rm.out.substr(0, 16)), std::string::npos) << ri.out << rm.out;
+  // The report is in millimetres: the ball's floor 1.27 mm deep.
+  const std::string report = slurp(f.at("r.json"));
+  EXPECT_NE(report.find("\"program_units\": \"inch\""), std::string::npos);
+  // The ball 1.27 mm deep, its floor at the column nearest the path
+  // 0.025 mm aside.
+  const auto z_at = report.find("\"z\": ", report.find("deepest_floor"));
+  ASSERT_NE(z_at, std::string::npos) << report;
+  EXPECT_NEAR(std::stod(report.substr(z_at + 5)), -1.27 + 3.175 - std::sqrt(3.175 * 3.175 - 0.025 * 0.025), 1e-9);
+  EXPECT_NE(report.find("\"shape\": \"ball\""), std::string::npos);
+  // A bad tools file is refused at its JSON path.
+  const auto bad =
+      run_cli({"verify", f.at("in.nc"), "--tools", f.write("bad.json", R"({"4": {"shape": "bull", "diameter": 6}})")});
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("bad.json: \"4\""), std::string::npos) << bad.err;
 }

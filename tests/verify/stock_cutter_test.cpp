@@ -66,7 +66,7 @@ TEST(StockCutter, AToolTheTableLacksIsRefusedAtItsLine) {
     FAIL() << "accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.id(), "verify.tool");
-    EXPECT_EQ(e.where(), "line 3");  // the rapid moves T2 already
+    EXPECT_EQ(e.where(), "line 4");  // the first move from a known place
     EXPECT_NE(std::string(e.what()).find("T1 (flat D6)"), std::string::npos) << e.what();
   }
 }

@@ -14,6 +14,7 @@
 #include <map>
 #include <vector>
 
+#include "bezcam/job/tool_table.hpp"
 #include "bezcam/kernel/units.hpp"
 #include "bezcam/machine/motion.hpp"
 #include "bezcam/stock/dexel_grid.hpp"
@@ -22,6 +23,11 @@ namespace bezcam {
 
 /// The tools a program cuts with, by T number, in millimetres.
 using StockTools = std::map<int, ToolShape>;
+
+/// A tool table's entries (lengths in mm) as the shapes the stock sweeps.
+StockTools stock_tools(const ToolTable& mm);
+/// One entry (mm) as its shape.
+ToolShape stock_tool_shape(const ToolEntry& mm);
 
 /// The tool a block cut with tool number `tool` in the spindle sweeps: the
 /// table's entry; tool 0 (none loaded) takes the table's only tool when it
