@@ -60,6 +60,13 @@ double default_stock_cell(const StockBox& b, double tolerance_mm) {
   return c;
 }
 
+StockTools profile_stock_tools(const MachineProfile& m) {
+  StockTools t;
+  for (const auto& [d, mm] : m.tool_diameters_mm)
+    if (mm > 0) t.emplace(d, ToolShape::flat(mm));
+  return t;
+}
+
 Error stock_option_error(const Error& e) {
   return e.with_option(e.id() == errc::stock_memory.str() || e.id() == errc::stock_cell.str() ? "--cell" : "--stock");
 }

@@ -6,7 +6,9 @@
 #include <string>
 
 #include "bezcam/error.hpp"
+#include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/stock/dexel_grid.hpp"
+#include "bezcam/verify/stock_cutter.hpp"
 
 namespace bezcam::cli {
 
@@ -22,6 +24,11 @@ std::size_t parse_memory_limit(const std::string& text);
 /// The cell when none is given: `tolerance_mm`, coarsened until the box
 /// holds at most four million columns.
 double default_stock_cell(const StockBox& box, double tolerance_mm);
+
+/// The tools of a machine profile for the stock: tool Tn is a flat end
+/// mill of the diameter register Dn holds (tool_diameters_mm, with
+/// --tool-diameter applied); registers of diameter 0 hold no tool.
+StockTools profile_stock_tools(const MachineProfile& m);
 
 /// A refusal of the grid (stock.box, stock.cell, stock.memory) shown as
 /// the option the user gives it with: the cell and the memory it needs

@@ -48,8 +48,8 @@ using TraceSink = std::function<void(std::string_view text, bool restart)>;
 /// Identifies one client connection (assigned by connection_opened()).
 using ConnId = std::uint64_t;
 
-/// The workpiece on the simulated machine (docs/simulate.md, "The
-/// stock"): every executed move is cut into it, as `bezcam verify` cuts a
+/// The workpiece on the simulated machine (docs/cli.md, "The stock"):
+/// every executed move is cut into it, as `bezcam verify` cuts a
 /// program, and it is kept from program to program until the controller
 /// stops. Lengths are millimetres whatever the programs' units.
 struct StockConfig {
