@@ -1,5 +1,6 @@
 // bezcam simulate --listen HOST:PORT [--machine NAME|FILE] [--trace FILE] [limits, faults]
 // bezcam simulate --program FILE.nc [--machine NAME|FILE] [--trace FILE]
+// either with [--stock BOX [--cell C] [--memory-limit SIZE]]: the stock cut
 //
 // The simulated controller's front end: the same SimController either
 // behind a Modbus TCP server or fed a file directly. SIGINT and SIGTERM stop
@@ -26,6 +27,7 @@
 #include "exit_status.hpp"
 #include "output_file.hpp"
 #include "profiles.hpp"
+#include "stock_options.hpp"
 #include "validators.hpp"
 
 namespace bezcam::cli {
@@ -73,6 +75,15 @@ CLI::App* setup_simulate(CLI::App& app, SimulateArgs& o) {
                             "with --program: write the planned motion, one row per period: t x y z feed (TSV)");
   rep->needs(p);
   mot->needs(p);
+  auto* stock = s->add_option("--stock", o.stock,
+                              "cut a stock box x0,y0,z0,x1,y1,z1 in mm as the programs execute (kept from program "
+                              "to program); each program's trace ends with its hash, removed volume and deepest "
+                              "floor. Tool Tn is a flat end mill of register Dn's diameter");
+  s->add_option("--cell", o.cell, "with --stock: cell size in mm (default: 0.01, at most 4 million columns)")
+      ->check(positive_number())
+      ->needs(stock);
+  s->add_option("--memory-limit", o.memory_limit, "with --stock: largest grid, e.g. 512MiB (default 1GiB)")
+      ->needs(stock);
   s->add_option("--trace", o.trace, "write the trace here (\"-\" for stdout); restarted for each program");
   s->add_option("--buffer", o.buffer, "receive buffer in bytes")->check(CLI::Range(kMinBuffer, kMaxBuffer));
   s->add_option("--max-connections", o.max_connections, "simultaneous Modbus connections")->check(CLI::Range(2, 64));
@@ -196,6 +207,23 @@ void plan_and_write(const SimulateArgs& o, const MachineProfile& profile, const 
   if (!o.quiet) std::cerr << motion_summary_text(plan, o.program + " on " + profile.name);
 }
 
+// --stock, --cell, --memory-limit: refused here, before any work, naming
+// the option, as verify refuses them.
+std::optional<StockConfig> stock_config(const SimulateArgs& o, const MachineProfile& m) {
+  if (o.stock.empty()) return std::nullopt;
+  StockConfig s;
+  s.options.memory_limit = parse_memory_limit(o.memory_limit);
+  s.box = parse_stock_box(o.stock);
+  try {
+    (void)stock_grid_size(s.box, 1);
+  } catch (const Error& e) {
+    throw stock_option_error(e);
+  }
+  s.cell = o.cell > 0 ? o.cell : default_stock_cell(s.box, kDefaultToleranceMm);
+  s.tools = profile_stock_tools(m);
+  return s;
+}
+
 }  // namespace
 
 int run_simulate(const SimulateArgs& o) {
@@ -204,6 +232,7 @@ int run_simulate(const SimulateArgs& o) {
   ControllerConfig cfg;
   cfg.profile = load_profile_option(o.machine);
   apply_tool_diameters(cfg.profile, o.tool_diameters);
+  cfg.stock = stock_config(o, cfg.profile);
   cfg.buffer_bytes = o.buffer;
   cfg.session_timeout = std::chrono::milliseconds(static_cast<long long>(o.session_timeout * 1000));
   cfg.exec_delay = std::chrono::microseconds(static_cast<long long>(o.exec_delay_ms * 1000));
@@ -261,7 +290,17 @@ int run_simulate(const SimulateArgs& o) {
                                   ? std::string()
                                   : resume.apply(read_file(o.program), o.program, &cfg.profile, o.quiet, "simulate");
   SignalWaiter signals;  // before any thread exists, so that all inherit the mask
-  SimController ctl(std::move(cfg));
+  // The stock's grid is checked against the memory limit before it is
+  // allocated, and before any line runs.
+  const auto controller = [&] {
+    try {
+      return std::make_unique<SimController>(std::move(cfg));
+    } catch (const Error& e) {
+      if (e.id().rfind("stock.", 0) != 0) throw;
+      throw stock_option_error(e);
+    }
+  }();
+  SimController& ctl = *controller;
 
   if (!o.program.empty()) {
     signals.start([&ctl] { ctl.stop(); });
@@ -278,7 +317,9 @@ int run_simulate(const SimulateArgs& o) {
       std::string text = ctl.alarm_text();
       const std::string prefix = "line " + std::to_string(st.alarm_line) + ": ";
       if (text.rfind(prefix, 0) == 0) text.erase(0, prefix.size());
-      throw InputError(alarm_error_id(st.alarm),
+      // A tool the stock's table lacks is refused as verify refuses it.
+      const std::string id = ctl.alarm_id();
+      throw InputError(id == errc::verify_tool.str() ? errc::verify_tool : alarm_error_id(st.alarm),
                        st.alarm_line ? resume.place_of(st.alarm_line) : Place::at_file(o.program),
                        text + " (alarm " + to_string(st.alarm) + " of the simulated controller)");
     }

@@ -23,61 +23,12 @@
 #include "job_input.hpp"
 #include "output_file.hpp"
 #include "profiles.hpp"
+#include "stock_options.hpp"
 #include "validators.hpp"
 
 namespace bezcam::cli {
 
 namespace {
-
-// The grid's default: cells of the tolerance, but no more columns than this.
-constexpr double kDefaultMaxColumns = 4e6;
-
-StockBox parse_box(const std::string& text) {
-  std::vector<double> v;
-  std::size_t pos = 0;
-  while (pos <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', pos), text.size());
-    const std::string part = text.substr(pos, comma - pos);
-    char* end = nullptr;
-    const double x = std::strtod(part.c_str(), &end);
-    if (part.empty() || *end != '\0' || !std::isfinite(x))
-      throw InputError(errc::stock_box, Place::at_option("--stock"),
-                       "expected six numbers x0,y0,z0,x1,y1,z1 in millimetres, found \"" + text + "\"");
-    v.push_back(x);
-    pos = comma + 1;
-  }
-  if (v.size() != 6)
-    throw InputError(errc::stock_box, Place::at_option("--stock"),
-                     "expected six numbers x0,y0,z0,x1,y1,z1 in millimetres, found " + std::to_string(v.size()));
-  return {v[0], v[1], v[2], v[3], v[4], v[5]};
-}
-
-std::size_t parse_memory(const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  const std::string unit = end;
-  double k = 0;
-  if (unit.empty() || unit == "B") k = 1;
-  if (unit == "K" || unit == "KiB") k = 1024.0;
-  if (unit == "M" || unit == "MiB") k = 1024.0 * 1024;
-  if (unit == "G" || unit == "GiB") k = 1024.0 * 1024 * 1024;
-  if (unit == "KB") k = 1e3;
-  if (unit == "MB") k = 1e6;
-  if (unit == "GB") k = 1e9;
-  if (end == text.c_str() || k == 0 || !(v > 0) || !std::isfinite(v * k) || v * k > 1e18)
-    throw InputError(errc::usage_option, Place::at_option("--memory-limit"),
-                     "expected a size such as 512MiB, 2GiB or a number of bytes, found \"" + text + "\"");
-  return static_cast<std::size_t>(v * k);
-}
-
-// The cell: the tolerance, coarsened until the box holds at most four
-// million columns.
-double default_cell(const StockBox& b, double tolerance) {
-  const double w = b.x1 - b.x0, h = b.y1 - b.y0;
-  double c = std::max(tolerance, std::sqrt(w * h / kDefaultMaxColumns));
-  while (std::ceil(w / c) * std::ceil(h / c) > kDefaultMaxColumns) c *= 1.001;
-  return c;
-}
 
 // The design's tools, by number (mm): each entity's tool diameter (a ball
 // end for a surface cut with tool_radius).
@@ -142,7 +93,7 @@ int run_verify(const VerifyArgs& o) {
       throw InputError(errc::usage_option, Place::at_option("--image"),
                        "expected a file name ending in .png or .svg, found \"" + o.image + "\"");
   }
-  const std::size_t memory = o.memory_limit.empty() ? kDefaultStockMemoryLimit : parse_memory(o.memory_limit);
+  const std::size_t memory = parse_memory_limit(o.memory_limit);
   std::optional<Job> design;
   if (!o.design.empty()) design = read_job(o.design);
   StockTools tools = design ? design_tools(*design, m) : StockTools{};
@@ -154,7 +105,7 @@ int run_verify(const VerifyArgs& o) {
   const Timeline tl = read_timeline(read_bounded(o.program, kMaxProgramBytes, "G-code file"), &m);
   std::optional<StockBox> box_given;
   if (!o.stock.empty())
-    box_given = parse_box(o.stock);
+    box_given = parse_stock_box(o.stock);
   else if (design)
     box_given = design_stock_box(*design, m, tools);
   const StockBox box = box_given ? *box_given : program_stock_box(tl, tools);
@@ -166,7 +117,7 @@ int run_verify(const VerifyArgs& o) {
   }
   check_stock_holds_program(box, tl, tools);
   const double tol = design ? design->tolerance * mm_per_unit(design->units) : kDefaultToleranceMm;
-  const double cell = o.cell > 0 ? o.cell : default_cell(box, tol);
+  const double cell = o.cell > 0 ? o.cell : default_stock_cell(box, tol);
   StockCutterOptions opt;
   opt.memory_limit = memory;
   opt.threads = o.threads;
@@ -174,8 +125,7 @@ int run_verify(const VerifyArgs& o) {
     try {
       return StockCutter(box, cell, tools, opt);
     } catch (const Error& e) {
-      throw e.with_option(e.id() == errc::stock_memory.str() || e.id() == errc::stock_cell.str() ? "--cell"
-                                                                                                 : "--stock");
+      throw stock_option_error(e);
     }
   }();
   cut_timeline(cutter, tl);

@@ -52,6 +52,8 @@ SimController::SimController(ControllerConfig cfg) : cfg_(std::move(cfg)) {
   if (cfg_.session_timeout.count() <= 0)
     throw InputError(errc::sim_config, Place::at_register("session timeout"),
                      "must be positive, found " + std::to_string(cfg_.session_timeout.count()) + " ms");
+  if (cfg_.stock)
+    stock_ = std::make_unique<StockCutter>(cfg_.stock->box, cfg_.stock->cell, cfg_.stock->tools, cfg_.stock->options);
   buf_.reserve(cfg_.buffer_bytes);
   exec_ = std::thread([this] { exec_loop(); });
 }
@@ -133,6 +135,7 @@ void SimController::open_locked(ConnId c, std::uint32_t token, std::uint32_t tot
   alarm_ = Alarm::none;
   alarm_line_ = 0;
   alarm_message_.clear();
+  alarm_id_.clear();
   final_traced_ = false;
   line_no_ = lines_done_ = blocks_done_ = 0;
   machine_ = MachineState{};
@@ -166,7 +169,7 @@ void SimController::raise_alarm_locked(Alarm a, long line, std::string id, std::
   // A controller in alarm stops the spindle and the coolant.
   machine_.spindle_on = false;
   machine_.coolant_mist = machine_.coolant_flood = false;
-  record_alarm_locked(a, line, message);
+  record_alarm_locked(a, line, id, message);
   final_traced_ = false;
   pending_alarm_ =
       std::make_unique<Pending>(Pending{epoch_, done + trace_alarm(static_cast<int>(line), to_string(a), id, message)});
@@ -236,15 +239,21 @@ std::string SimController::alarm_message() const {
   return alarm_message_;
 }
 
+std::string SimController::alarm_id() const {
+  std::lock_guard lk(m_);
+  return alarm_id_;
+}
+
 std::string SimController::alarm_text_locked() const {
   return (alarm_line_ > 0 ? "line " + std::to_string(alarm_line_) + ": " : std::string()) + alarm_message_;
 }
 
 // The line travels as a number (register alarm_line); only the text for
 // people (register alarm_text, the operator's log) spells it out.
-void SimController::record_alarm_locked(Alarm a, long line, std::string message) {
+void SimController::record_alarm_locked(Alarm a, long line, std::string id, std::string message) {
   state_ = State::alarm;
   alarm_ = a;
+  alarm_id_ = std::move(id);
   alarm_line_ = static_cast<std::uint32_t>(std::max(0L, line));
   alarm_message_ = std::move(message);
   log_locked(std::string("alarm ") + to_string(a) + ": " + alarm_text_locked());
@@ -579,6 +588,12 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
   std::string id;
   try {
     blocks = interp.feed_line(line, static_cast<int>(no));
+    // The stock: at machine pace the moves are cut once the machine has
+    // run them, so only their tools are checked now.
+    if (pace_)
+      check_stock_tools(blocks, interp.state());
+    else
+      cut_stock(blocks, interp.state());
     for (const auto& b : blocks) text += trace_block(b);
     text += trace_state(static_cast<int>(no), before, interp.state());
   } catch (const Error& e) {
@@ -588,24 +603,28 @@ void SimController::execute_line(std::unique_lock<std::mutex>& lk, GcodeInterpre
     id = errc::sim_internal;
     failed.emplace(Alarm::gcode, std::string("internal error: ") + e.what());
   }
+  // A line refused for its tool after the interpreter read it is not
+  // executed either: its blocks are dropped and the state stays as before.
+  if (failed) blocks.clear();
   if (failed) text += trace_alarm(static_cast<int>(no), to_string(failed->first), id, failed->second);
   // pace_ is the executor's own: read here without the lock.
   if (pace_) {
     lk.lock();
-    read_ahead_locked(interp, cur_epoch, no, before, blocks, failed, std::move(text));
+    read_ahead_locked(interp, cur_epoch, no, before, blocks, failed, id, std::move(text));
     return;
   }
+  if (failed) text += stock_record();
   const std::size_t nblocks = blocks.size();
   emit_trace(text, false);
   lk.lock();
   if (epoch_ != cur_epoch) return;  // the program was replaced meanwhile
   if (!failed) ++lines_done_;       // a refused line changed nothing: it was not executed
   blocks_done_ += static_cast<long>(nblocks);
-  machine_ = interp.state();
+  machine_ = failed ? before : interp.state();
   if (state_ == State::alarm || failed) machine_.spindle_on = machine_.coolant_mist = machine_.coolant_flood = false;
   if (failed && state_ != State::alarm) {
     // Traced above already, so no pending record.
-    record_alarm_locked(failed->first, no, failed->second);
+    record_alarm_locked(failed->first, no, id, failed->second);
     final_traced_ = true;
   }
   cv_.notify_all();
@@ -623,24 +642,29 @@ void SimController::finish_program(std::unique_lock<std::mutex>& lk, GcodeInterp
   long nblocks = 0;
   try {
     const auto blocks = interp.finish();
+    cut_stock(blocks, interp.state());
     nblocks = static_cast<long>(blocks.size());
     for (const auto& b : blocks) text += trace_block(b);
   } catch (const Error& e) {
     failed.emplace(e.id(), e.message());
   }
+  // A move held until the end refused for its tool is the program's fault,
+  // not a program cut short.
+  const Alarm end_alarm = failed && failed->first == errc::verify_tool.str() ? Alarm::gcode : Alarm::incomplete;
   lk.lock();
   const long total_blocks = blocks_done_ + nblocks;
   const Vec3 pos = interp.state().pos;
   lk.unlock();
-  text += failed ? trace_alarm(static_cast<int>(lines), to_string(Alarm::incomplete), failed->first, failed->second)
+  text += failed ? trace_alarm(static_cast<int>(lines), to_string(end_alarm), failed->first, failed->second)
                  : trace_done(lines, total_blocks, pos);
+  text += stock_record();
   emit_trace(text, false);
   lk.lock();
   if (epoch_ != cur_epoch || state_ != State::finishing) return;
   blocks_done_ = total_blocks;
   machine_ = interp.state();
   if (failed) {
-    record_alarm_locked(Alarm::incomplete, lines, failed->second);
+    record_alarm_locked(end_alarm, lines, failed->first, failed->second);
   } else {
     state_ = State::done;  // only now: the trace on disk is complete
     log_locked("program done: " + std::to_string(lines) + " lines, " + std::to_string(total_blocks) + " motion blocks");
@@ -662,8 +686,10 @@ void SimController::exec_loop() {
       pending_alarm_.reset();
       const bool restart = p.epoch != cur_epoch;
       if (restart) cur_epoch = p.epoch, interp.reset();
+      const std::vector<StockMove> moves = take_stock_locked();
       lk.unlock();
-      emit_trace(restart ? trace_header(cfg_.profile.name) + p.text : p.text, restart);
+      const std::string text = p.text + stock_record(moves);
+      emit_trace(restart ? trace_header(cfg_.profile.name) + text : text, restart);
       lk.lock();
       if (epoch_ == p.epoch) final_traced_ = true;
       cv_.notify_all();
@@ -724,7 +750,7 @@ void SimController::exec_loop() {
         const std::string message =
             "the line is longer than the receive buffer (" + std::to_string(cfg_.buffer_bytes) + " bytes)";
         if (pace_) {
-          failure_ = Failure{Alarm::line_too_long, line_no_ + 1, message,
+          failure_ = Failure{Alarm::line_too_long, line_no_ + 1, std::string(errc::sim_line_too_long.str()), message,
                              trace_alarm(static_cast<int>(line_no_ + 1), to_string(Alarm::line_too_long),
                                          errc::sim_line_too_long.str(), message)};
         } else {
@@ -762,7 +788,9 @@ void SimController::exec_loop() {
     if (pace_ && pace_started_) last = freeze_locked(tail).done_line;  // the machine stops where it is
     tail += "stopped after line " + std::to_string(last) + "\n";
   }
+  const std::vector<StockMove> moves = take_stock_locked();
   lk.unlock();
+  if (!tail.empty()) tail += stock_record(moves);
   emit_trace(tail, false);
   cv_.notify_all();
 }

@@ -65,6 +65,7 @@ std::string SimController::retire_locked(double t, bool all) {
   while (!ahead_.empty() && (all || ahead_.front().line <= v.done_line)) {
     Ahead& a = ahead_.front();
     text += a.trace;
+    for (StockMove& m : a.cuts) stock_queue_.push_back(std::move(m));
     lines_done_ += a.counts ? 1 : 0;
     machine_ = std::move(a.after);
     ahead_.pop_front();
@@ -90,8 +91,10 @@ bool SimController::retire_step(std::unique_lock<std::mutex>& lk) {
   if (!pace_started_ || (pace_->next_end() > pace_now() && settled_ == retired_settled_)) return false;
   const std::string done = retire_locked(pace_now(), false);
   if (done.empty()) return false;
+  const std::vector<StockMove> moves = take_stock_locked();
   lk.unlock();
   emit_trace(done, false);
+  cut_moves(moves);
   lk.lock();
   return true;
 }
@@ -146,10 +149,11 @@ bool SimController::machine_step(std::unique_lock<std::mutex>& lk, std::uint64_t
 // and on return.
 void SimController::read_ahead_locked(const GcodeInterpreter& interp, std::uint64_t cur_epoch, long no,
                                       const MachineState& before, const std::vector<MotionBlock>& blocks,
-                                      const std::optional<std::pair<Alarm, std::string>>& failed, std::string text) {
+                                      const std::optional<std::pair<Alarm, std::string>>& failed, const std::string& id,
+                                      std::string text) {
   if (epoch_ != cur_epoch || state_ == State::alarm) return;  // replaced or stopped meanwhile: it never runs
   if (failed) {
-    failure_ = Failure{failed->first, no, failed->second, std::move(text)};
+    failure_ = Failure{failed->first, no, id, failed->second, std::move(text)};
     return;
   }
   pace_->add(blocks, before, interp.state(), static_cast<int>(no));
@@ -163,7 +167,7 @@ void SimController::read_ahead_locked(const GcodeInterpreter& interp, std::uint6
   else if (interp.state().cutter_comp != CutterCompMode::off)
     settled = last_block_line_ - 1;
   settled_ = std::max(settled_, settled);
-  ahead_.push_back({no, true, interp.state(), std::move(text)});
+  ahead_.push_back({no, true, interp.state(), std::move(text), stock_moves(blocks, interp.state())});
 }
 
 // Machine pace, every byte confirmed and read: the interpreter's last
@@ -178,6 +182,7 @@ void SimController::finish_interpreter(std::unique_lock<std::mutex>& lk, GcodeIn
   std::optional<std::pair<std::string, std::string>> failed;
   try {
     blocks = interp.finish();
+    check_stock_tools(blocks, interp.state());
     for (const auto& b : blocks) text += trace_block(b);
   } catch (const Error& e) {
     failed.emplace(e.id(), e.message());
@@ -187,14 +192,16 @@ void SimController::finish_interpreter(std::unique_lock<std::mutex>& lk, GcodeIn
   if (!pace_started_) pace_started_ = true, pace_origin_ = Clock::now();  // a program of no lines
   interp_finished_ = true;
   if (failed) {
-    failure_ =
-        Failure{Alarm::incomplete, lines, failed->second,
-                trace_alarm(static_cast<int>(lines), to_string(Alarm::incomplete), failed->first, failed->second)};
+    // A move held until the end refused for its tool is the program's
+    // fault, not a program cut short.
+    const Alarm a = failed->first == errc::verify_tool.str() ? Alarm::gcode : Alarm::incomplete;
+    failure_ = Failure{a, lines, failed->first, failed->second,
+                       trace_alarm(static_cast<int>(lines), to_string(a), failed->first, failed->second)};
     return;
   }
   pace_->add(blocks, interp.state(), interp.state(), static_cast<int>(lines));
   settled_ = lines;
-  ahead_.push_back({lines, false, interp.state(), std::move(text)});
+  ahead_.push_back({lines, false, interp.state(), std::move(text), stock_moves(blocks, interp.state())});
   cv_.notify_all();
 }
 
@@ -204,8 +211,9 @@ void SimController::finish_paced(std::unique_lock<std::mutex>& lk, const GcodeIn
   const std::string done = retire_locked(pace_now(), true);
   const long lines = line_no_, blocks = blocks_done_;
   const Vec3 pos = interp.state().pos;
+  const std::vector<StockMove> moves = take_stock_locked();
   lk.unlock();
-  emit_trace(done + trace_done(lines, blocks, pos), false);
+  emit_trace(done + trace_done(lines, blocks, pos) + stock_record(moves), false);
   lk.lock();
   if (epoch_ != cur_epoch || state_ != State::finishing) return;
   machine_ = interp.state();
@@ -221,12 +229,13 @@ void SimController::raise_failure(std::unique_lock<std::mutex>& lk, std::uint64_
   const Failure f = std::move(*failure_);
   failure_.reset();
   const std::string done = retire_locked(pace_now(), true);
+  const std::vector<StockMove> moves = take_stock_locked();
   lk.unlock();
-  emit_trace(done + f.trace, false);
+  emit_trace(done + f.trace + stock_record(moves), false);
   lk.lock();
   if (epoch_ != cur_epoch || state_ == State::alarm || state_ == State::done) return;
   machine_.spindle_on = machine_.coolant_mist = machine_.coolant_flood = false;
-  record_alarm_locked(f.alarm, f.line, f.message);
+  record_alarm_locked(f.alarm, f.line, f.id, f.message);
   final_traced_ = true;
   cv_.notify_all();
 }

@@ -29,7 +29,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"report", {"base", "kernel", "flatten", "job", "machine", "cam", "gcode"}},
       {"verify", {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode"}},
       {"link", {"base"}},
-      {"sim", {"base", "kernel", "flatten", "job", "machine", "gcode", "link"}},
+      {"sim", {"base", "kernel", "flatten", "stock", "job", "machine", "gcode", "verify", "link"}},
       {"import", {"base", "kernel", "flatten", "job"}},
       {"cli",
        {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode", "report", "verify", "link", "sim",

@@ -32,6 +32,7 @@
 #include "bezcam/link/register_map.hpp"
 #include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/sim/machine_pace.hpp"
+#include "bezcam/verify/stock_cutter.hpp"
 
 namespace bezcam::sim {
 
@@ -46,6 +47,19 @@ using TraceSink = std::function<void(std::string_view text, bool restart)>;
 
 /// Identifies one client connection (assigned by connection_opened()).
 using ConnId = std::uint64_t;
+
+/// The workpiece on the simulated machine (docs/cli.md, "The stock"):
+/// every executed move is cut into it, as `bezcam verify` cuts a
+/// program, and it is kept from program to program until the controller
+/// stops. Lengths are millimetres whatever the programs' units.
+struct StockConfig {
+  StockBox box;
+  double cell = 0;
+  /// The tools, by T number; a move with a tool the table lacks is refused
+  /// (alarm gcode, error verify.tool, at its line) before anything is cut.
+  StockTools tools;
+  StockCutterOptions options;
+};
 
 struct ControllerConfig {
   /// Travel limits, maximum feed and the machine name in the trace.
@@ -84,6 +98,9 @@ struct ControllerConfig {
   std::vector<std::uint64_t> corrupt_chunk;
   /// Where the trace goes (may be empty).
   TraceSink trace;
+  /// The stock to cut; none by default. After each program's final record
+  /// (done, alarm, stopped) the trace gets the stock's record.
+  std::optional<StockConfig> stock;
   /// The operator's log (`simulate --listen` prints it on stderr): one
   /// line per event, connections opened and closed, programs opened,
   /// completed and stopped by an alarm. Called with the controller's lock
@@ -108,7 +125,9 @@ inline constexpr std::size_t kMinBuffer = kMaxChunkBytes, kMaxBuffer = 65535;
 class SimController {
  public:
   /// Throws InputError("sim.config", ...) for a buffer outside
-  /// [kMinBuffer, kMaxBuffer] or a non-positive session timeout.
+  /// [kMinBuffer, kMaxBuffer] or a non-positive session timeout, and for a
+  /// stock what StockCutter refuses (stock.box, stock.cell, stock.memory),
+  /// before the grid is allocated.
   explicit SimController(ControllerConfig cfg);
   /// Stops the executor (the trace is complete up to the last executed line).
   ~SimController();
@@ -139,6 +158,9 @@ class SimController {
   std::string alarm_text() const;
   /// The current alarm's message alone; its line is status().alarm_line.
   std::string alarm_message() const;
+  /// The error id of the current alarm (e.g. `gcode.travel`,
+  /// `verify.tool`; "" when none).
+  std::string alarm_id() const;
   /// Waits until the program is DONE or in ALARM and the trace holds its
   /// final record; false after `timeout`.
   bool wait_final(std::chrono::milliseconds timeout) const;
@@ -160,7 +182,7 @@ class SimController {
   void raise_alarm_locked(Alarm a, long line, std::string id, std::string message);
   /// Enters ALARM with alarm `a` at `line` (0: none) and `message`, and
   /// logs it; the caller sees to the trace.
-  void record_alarm_locked(Alarm a, long line, std::string message);
+  void record_alarm_locked(Alarm a, long line, std::string id, std::string message);
   std::string alarm_text_locked() const;
   static constexpr long kMachineLine = -1;
   std::uint32_t next_session_locked();
@@ -210,6 +232,7 @@ class SimController {
   Alarm alarm_ = Alarm::none;
   std::uint32_t alarm_line_ = 0;
   std::string alarm_message_;  // without its line
+  std::string alarm_id_;
   std::unique_ptr<Pending> pending_alarm_;
   bool final_traced_ = false;
   long line_no_ = 0, lines_done_ = 0, blocks_done_ = 0;
@@ -224,11 +247,32 @@ class SimController {
   // At machine pace the interpreter reads ahead of the machine; what is
   // reported (status registers, trace, an alarm's line, DONE) is what the
   // machine has done. The lines read and not yet done, in order:
+  // The stock (sim_controller_stock.cpp): a move with the tool and units
+  // it was executed with.
+  struct StockMove {
+    MotionBlock block;
+    int tool = 0;
+    Units units = Units::mm;
+  };
+  std::unique_ptr<StockCutter> stock_;  // the executor's own
+  std::vector<StockMove> stock_queue_;  // moves the machine finished, not yet cut (guarded by m_)
+  // Refuses (verify.tool) blocks whose tool the stock's table lacks.
+  void check_stock_tools(const std::vector<MotionBlock>& blocks, const MachineState& s) const;
+  std::vector<StockMove> stock_moves(const std::vector<MotionBlock>& blocks, const MachineState& s) const;
+  // Cuts the blocks executed with state `s` (checked first: nothing is
+  // cut when one is refused). Executor thread, unlocked.
+  void cut_stock(const std::vector<MotionBlock>& blocks, const MachineState& s);
+  void cut_moves(const std::vector<StockMove>& moves);
+  std::vector<StockMove> take_stock_locked();
+  // Cuts `moves`, then the stock's trace record ("" without a stock).
+  // Executor thread, unlocked.
+  std::string stock_record(const std::vector<StockMove>& moves = {});
   struct Ahead {
     long line = 0;
-    bool counts = true;  // a program line (false: the blocks the interpreter's finish() released)
-    MachineState after;  // the state once it is executed
-    std::string trace;   // its trace records
+    bool counts = true;           // a program line (false: the blocks the interpreter's finish() released)
+    MachineState after;           // the state once it is executed
+    std::string trace;            // its trace records
+    std::vector<StockMove> cuts;  // its moves, cut once the machine has run them
   };
   std::deque<Ahead> ahead_;
   long settled_ = 0;           // every block of the lines up to here has been read
@@ -239,6 +283,7 @@ class SimController {
   struct Failure {
     Alarm alarm = Alarm::none;
     long line = 0;
+    std::string id;       // the alarm's error id
     std::string message;  // the alarm's message (its line is `line`)
     std::string trace;    // its trace record
   };
@@ -271,7 +316,8 @@ class SimController {
   void machine_fed_locked();
   void read_ahead_locked(const GcodeInterpreter& interp, std::uint64_t cur_epoch, long no, const MachineState& before,
                          const std::vector<MotionBlock>& blocks,
-                         const std::optional<std::pair<Alarm, std::string>>& failed, std::string text);
+                         const std::optional<std::pair<Alarm, std::string>>& failed, const std::string& id,
+                         std::string text);
 
   std::thread exec_;
 };

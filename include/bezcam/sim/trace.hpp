@@ -15,12 +15,15 @@
 ///          spindle on RPM | spindle off | program end
 ///   alarm line N CODE ID: MESSAGE
 ///   done lines L blocks B at X Y Z
+///   stock hash H removed V deepest Z at X Y   (with a stock, after the
+///     final record; millimetres)
 /// A block spanning several lines is written "lines A-B".
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include "bezcam/gcode/reader.hpp"
+#include "bezcam/stock/dexel_grid.hpp"
 
 namespace bezcam::sim {
 
@@ -47,6 +50,10 @@ std::string trace_state(int line, const MachineState& before, const MachineState
 std::string trace_alarm(int line, std::string_view code, std::string_view id, std::string_view message);
 /// Last record of a complete program.
 std::string trace_done(long lines, long blocks, const Vec3& pos);
+/// The machined stock after a program: the hash of its floors (16
+/// hexadecimal digits, as `bezcam verify --hash` prints it), the removed
+/// volume (mm^3) and the deepest floor (z, then the column's x y; mm).
+std::string trace_stock(const DexelGrid& g);
 /// How many points trace_block() samples on a block (0 for lines/rapids).
 int trace_sample_count(const MotionBlock& b);
 /// A number as the trace prints it.
@@ -58,7 +65,8 @@ struct TraceMismatch {
   std::string expected, actual, why;
 };
 /// Compares token by token: tokens that both read as numbers may differ by
-/// `tolerance`, every other token and the line structure must be equal.
+/// `tolerance`, every other token and the line structure must be equal. The
+/// token after `hash` is a word whatever its digits.
 std::optional<TraceMismatch> compare_traces(std::string_view expected, std::string_view actual,
                                             double tolerance = kTraceTolerance);
 
