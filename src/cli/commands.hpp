@@ -83,7 +83,7 @@ struct SimulateArgs {
   bool quiet = false;
   std::vector<std::string> tool_diameters;  ///< --tool-diameter D=MM
   ResumeArgs resume;                        ///< --from-line (with --program)
-  std::string stock, memory_limit;          ///< --stock BOX, --memory-limit SIZE
+  std::string stock, memory_limit, tools;   ///< --stock BOX, --memory-limit SIZE, --tools FILE
   double cell = 0;                          ///< --cell (0: the default)
 };
 CLI::App* setup_simulate(CLI::App& app, SimulateArgs& o);

@@ -17,6 +17,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/timeline.hpp"
+#include "bezcam/job/tool_table.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/link/transport.hpp"
 #include "bezcam/report/motion_report.hpp"
@@ -83,6 +84,10 @@ CLI::App* setup_simulate(CLI::App& app, SimulateArgs& o) {
       ->check(positive_number())
       ->needs(stock);
   s->add_option("--memory-limit", o.memory_limit, "with --stock: largest grid, e.g. 512MiB (default 1GiB)")
+      ->needs(stock);
+  s->add_option("--tools", o.tools,
+                "with --stock: tools table (JSON, lengths in mm) giving each T number's shape, over the "
+                "flat end mills of the D registers")
       ->needs(stock);
   s->add_option("--trace", o.trace, "write the trace here (\"-\" for stdout); restarted for each program");
   s->add_option("--buffer", o.buffer, "receive buffer in bytes")->check(CLI::Range(kMinBuffer, kMaxBuffer));
@@ -221,6 +226,8 @@ std::optional<StockConfig> stock_config(const SimulateArgs& o, const MachineProf
   }
   s.cell = o.cell > 0 ? o.cell : default_stock_cell(s.box, kDefaultToleranceMm);
   s.tools = profile_stock_tools(m);
+  if (!o.tools.empty())
+    for (auto& [n, t] : stock_tools(read_tool_table_file(o.tools))) s.tools.insert_or_assign(n, t);
   return s;
 }
 

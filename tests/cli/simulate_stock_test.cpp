@@ -8,6 +8,8 @@
 #include "bezcam/link/streamer.hpp"
 #include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/verify/machined_program.hpp"
+#include "in_process.hpp"
+#include "support/files.hpp"
 #include "support/link_test_util.hpp"
 
 using namespace bezcam;
@@ -120,4 +122,21 @@ TEST(SimulateStock, ListenKeepsTheStockFromProgramToProgram) {
   EXPECT_EQ(after_second.rfind("stock hash " + library_hash({first, second}, box, 0.25) + " ", 0), 0u) << after_second;
   EXPECT_NE(after_second.find(" deepest -3.000000 "), std::string::npos) << after_second;
   EXPECT_EQ(sim.stop(), 0) << sim.child().stderr_text();
+}
+
+TEST(SimulateStock, AToolsFileGivesTheShapeVerifyCutsWith) {
+  bezcam::test::TempDir dir;
+  const std::string tools = (dir / "tools.json").string();
+  bezcam::test::write_file(tools, R"({"2": {"shape": "vee", "diameter": 6, "angle": 90}})");
+  const std::string nc = (dir / "v.nc").string();
+  bezcam::test::write_file(nc, "G21 G90\nT2 M6\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X10 F500\nG0 Z5\nM30\n");
+  const std::string trace = (dir / "t.trace").string();
+  const auto sim = bezcam::test::run_cli({"simulate", "--program", nc, "--stock", "-5,-5,-3,15,5,0", "--cell", "0.05",
+                                          "--tools", tools, "--trace", trace});
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const auto ver =
+      bezcam::test::run_cli({"verify", nc, "--stock", "-5,-5,-3,15,5,0", "--cell", "0.05", "--tools", tools, "--hash"});
+  ASSERT_EQ(ver.status, 0) << ver.err;
+  EXPECT_NE(bezcam::test::slurp(trace).find("stock hash " + ver.out.substr(0, 16)), std::string::npos)
+      << bezcam::test::slurp(trace) << ver.out;
 }
