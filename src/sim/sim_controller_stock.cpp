@@ -9,21 +9,9 @@
 // until the machine has run them. Member functions of SimController.
 namespace bezcam::sim {
 
-namespace {
-
-// StockCutter::cut() sweeps nothing for a rapid with no tool loaded when
-// the table does not say which tool that is; every other move needs its
-// tool in the table.
-bool needs_tool(const MotionBlock& b, int tool, const StockTools& tools) {
-  return !(b.kind == BlockKind::rapid && tool == 0 && tools.size() != 1 && !tools.count(0));
-}
-
-}  // namespace
-
 void SimController::check_stock_tools(const std::vector<MotionBlock>& blocks, const MachineState& s) const {
   if (!stock_) return;
-  for (const MotionBlock& b : blocks)
-    if (needs_tool(b, s.tool, cfg_.stock->tools)) (void)stock_tool(cfg_.stock->tools, s.tool, b.line);
+  for (const MotionBlock& b : blocks) (void)swept_tool(cfg_.stock->tools, b, s.tool);
 }
 
 std::vector<SimController::StockMove> SimController::stock_moves(const std::vector<MotionBlock>& blocks,

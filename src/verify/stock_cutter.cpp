@@ -87,6 +87,15 @@ const ToolShape& stock_tool(const StockTools& tools, int tool, int line) {
                        ": give every tool the program uses in the tools table");
 }
 
+const ToolShape* swept_tool(const StockTools& tools, const MotionBlock& b, int tool) {
+  // A rapid with no tool in the spindle cuts nothing (the start of a
+  // program, before its first tool change); nor is one swept from where
+  // the tool is not known (the controller moves from wherever it stands).
+  if (b.kind == BlockKind::rapid && tool == 0 && tools.size() != 1 && !tools.count(0)) return nullptr;
+  if (b.kind == BlockKind::rapid && b.from_known != 7) return nullptr;
+  return &stock_tool(tools, tool, b.line);
+}
+
 StockCutter::StockCutter(const StockBox& box_mm, double cell_mm, StockTools tools, const StockCutterOptions& opt)
     : grid_(box_mm, cell_mm, opt.memory_limit), tools_(std::move(tools)), curve_tolerance_(opt.curve_tolerance_mm) {
   grid_.set_threads(opt.threads);
@@ -94,13 +103,9 @@ StockCutter::StockCutter(const StockBox& box_mm, double cell_mm, StockTools tool
 
 void StockCutter::cut(const MotionBlock& b, int tool, Units units) {
   ++blocks_;
-  // A rapid with no tool in the spindle cuts nothing (the start of a
-  // program, before its first tool change); nor is one swept from where
-  // the tool is not known (before the program has set every axis: the
-  // controller moves from wherever it stands).
-  if (b.kind == BlockKind::rapid && tool == 0 && tools_.size() != 1 && !tools_.count(0)) return;
-  if (b.kind == BlockKind::rapid && b.from_known != 7) return;
-  const ToolShape& t = stock_tool(tools_, tool, b.line);
+  const ToolShape* swept = swept_tool(tools_, b, tool);
+  if (!swept) return;
+  const ToolShape& t = *swept;
   const MotionBlock m = block_in_mm(b, units);
   Sweep s = to_sweep(m, curve_tolerance_);
   if (b.kind == BlockKind::rapid) {

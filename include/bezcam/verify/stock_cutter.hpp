@@ -35,6 +35,13 @@ ToolShape stock_tool_shape(const ToolEntry& mm);
 /// line `line`, naming the tools it has.
 const ToolShape& stock_tool(const StockTools& tools, int tool, int line);
 
+/// The tool that sweeps block `b` cut with tool number `tool` in the
+/// spindle: stock_tool(), except that a rapid sweeps nothing (nullptr) when
+/// no tool is loaded and the table does not say which tool that is, or when
+/// it starts from where the tool is not known (before the program has set
+/// all three axes). Refuses a missing tool as stock_tool() does.
+const ToolShape* swept_tool(const StockTools& tools, const MotionBlock& b, int tool);
+
 /// The block in millimetres (points scaled from `units`; knots and weights
 /// as they are).
 MotionBlock block_in_mm(const MotionBlock& b, Units units);
