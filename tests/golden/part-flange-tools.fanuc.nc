@@ -3,7 +3,7 @@ O1000 (BEZCAM)
 N10 (bezcam 0.1.0: part-flange-tools.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009892 mm, proven bound 0.01 mm, rounding included)
 N30 (T2: 3 mm flat end mill: bolt-1, bolt-4, bolt-3, bolt-2)
-N40 (T1: 6 mm bull nose end mill: bore, outline)
+N40 (T1: 6 mm bull nose end mill [bull D6 r0.5 flutes 2.5]: bore, outline)
 N50 (estimated cycle time 3 min 00 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N60 (order shortest: 5 nested contours cut before what encloses them; rapids 176.7 mm in XY instead of 242.3 mm as written [65.6 mm saved])
 N70 G21 G90 G17

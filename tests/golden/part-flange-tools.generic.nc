@@ -2,7 +2,7 @@
 (bezcam 0.1.0: part-flange-tools.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009892 mm, proven bound 0.01 mm, rounding included)
 (T2: 3 mm flat end mill: bolt-1, bolt-4, bolt-3, bolt-2)
-(T1: 6 mm bull nose end mill: bore, outline)
+(T1: 6 mm bull nose end mill [bull D6 r0.5 flutes 2.5]: bore, outline)
 (estimated cycle time 3 min 03 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 5 nested contours cut before what encloses them; rapids 176.7 mm in XY instead of 242.3 mm as written [65.6 mm saved])
 G21 G90 G17
