@@ -30,9 +30,10 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"link", {"base"}},
       {"sim", {"base", "kernel", "flatten", "job", "machine", "gcode", "link"}},
       {"import", {"base", "kernel", "flatten", "job"}},
+      {"text", {"base", "kernel", "flatten", "job"}},
       {"cli",
        {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode", "report", "link", "sim", "import",
-        "cli"}},
+        "text", "cli"}},
   };
   return g;
 }
