@@ -34,6 +34,7 @@
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "support/sample_job.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;
@@ -165,7 +166,7 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|---|\n");
   std::map<std::string, std::array<Count, 3>> totals;
   for (const auto& f : files) {
-    const Job job = load_job(f);
+    const Job job = test::load_sample(f);
     for (const char* p : profiles) {
       const MachineProfile m = load_machine_profile(p);
       std::array<Count, 3> c;

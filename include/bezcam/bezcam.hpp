@@ -32,6 +32,7 @@
 #include "bezcam/job/job.hpp"
 #include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "bezcam/job/text.hpp"
 #include "bezcam/job/tool_table.hpp"
 
 // import/: SVG and DXF drawings read exactly, as jobs
@@ -40,6 +41,9 @@
 #include "bezcam/import/dxf_reader.hpp"
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/import/svg_reader.hpp"
+
+// text/: text from fonts, the glyphs' own Béziers
+#include "bezcam/text/font_text.hpp"
 
 // machine/: the controller's model: profiles, motion blocks, cutter
 // compensation, the planner

@@ -428,6 +428,16 @@ inline constexpr ErrorId verify_empty{"verify.empty"};
 inline constexpr ErrorId surface_gouge{"surface.gouge"};
 /// The surface normal vanishes (a degenerate patch).
 inline constexpr ErrorId surface_normal_undefined{"surface.normal-undefined"};
+/// A text entity's text is empty or only spaces.
+inline constexpr ErrorId text_empty{"text.empty"};
+/// A text's font family is not installed (fontconfig would substitute another).
+inline constexpr ErrorId text_font{"text.font"};
+/// A text's font file is missing or is not a font FreeType reads.
+inline constexpr ErrorId text_font_file{"text.font-file"};
+/// A text has a character its font has no glyph for.
+inline constexpr ErrorId text_glyph{"text.glyph"};
+/// A job with text was read without a text outliner (a library caller's).
+inline constexpr ErrorId text_unavailable{"text.unavailable"};
 /// A stepover is too small for the tolerance.
 inline constexpr ErrorId toolpath_stepover{"toolpath.stepover"};
 /// A surface needs more passes than the limit.

@@ -60,6 +60,7 @@ int run_check(const CheckArgs& o) {
   for (const auto& e : job.entities) {
     const auto& g = e.curve;
     std::cout << e.json_path() << (e.id.empty() ? "" : " \"" + e.id + "\"") << ": " << e.type;
+    if (!e.glyph.empty()) std::cout << " \"" << e.glyph << "\"";  // a glyph's contour (job/text.hpp)
     if (!g.pieces.empty()) {
       std::cout << ", " << g.dim << "D, degree " << g.max_degree() << (g.rational() ? ", rational" : "") << ", "
                 << g.pieces.size() << " Bézier piece" << (g.pieces.size() == 1 ? "" : "s") << ", length "
@@ -83,7 +84,7 @@ int run_check(const CheckArgs& o) {
                   << (e.toolpath.stepover ? ", stepover " + fmt_num(*e.toolpath.stepover) : std::string());
     }
     std::cout << "\n";
-    if (g.kind == "path") {
+    if (g.kind == "path" && e.type == "path") {
       for (size_t i = 0; i < g.segments.size(); ++i)
         std::cout << "  segments[" << i << "]: " << g.segments[i].kind << ", degree " << g.segments[i].degree
                   << (g.segments[i].rational ? ", rational" : "") << "\n";

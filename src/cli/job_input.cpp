@@ -8,6 +8,7 @@
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/job/settings.hpp"
+#include "bezcam/text/font_text.hpp"
 
 namespace bezcam::cli {
 
@@ -19,6 +20,7 @@ Job read_job(const std::string& path) {
   std::vector<std::string> warnings;
   JobReadOptions ro;
   ro.warnings = &warnings;
+  ro.text = text::font_outliner();
   try {
     return load_job(path, ro);
   } catch (const Error&) {

@@ -403,7 +403,9 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
   return p;
 }
 
-Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
+// The entity at `index` of the file, appended to `out` (a text: its glyph
+// contours, job_json_text.cpp).
+void parse_entity(const JsonCtx& ctx, const json& obj, size_t index, std::vector<Entity>& out) {
   const std::string path = "entities[" + std::to_string(index) + "]";
   if (!obj.is_object()) ctx.expected(path, "an entity object", obj);
   Entity e;
@@ -447,13 +449,17 @@ Entity parse_entity(const JsonCtx& ctx, const json& obj, size_t index) {
   } else if (e.type == "curve_on_surface") {
     keys({"surface", "curve"});
     parse_curve_on_surface_entity(ctx, obj, path, e);
+  } else if (e.type == "text") {
+    keys({"text", "font", "size", "at", "align", "angle"});
+    parse_text_entity(ctx, obj, path, e, out);
+    return;
   } else {
     ctx.fail(path + ".type", errc::job_entity_type,
              "expected one of \"bezier\", \"bspline\", \"path\", \"interpolate\", \"bezier_patch\", "
-             "\"coons_patch\", \"curve_on_surface\", found " +
+             "\"coons_patch\", \"curve_on_surface\", \"text\", found " +
                  describe(obj["type"]));
   }
-  return e;
+  out.push_back(std::move(e));
 }
 
 }  // namespace
@@ -568,10 +574,22 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
                  std::to_string(ents.size()) + "; split the job into several files");
   // Entities are independent: a refused one does not hide the next.
   for (size_t i = 0; i < ents.size(); ++i) {
+    std::vector<Entity> read;
     try {
-      job.entities.push_back(detail::parse_entity(ctx, ents[i], i));
+      detail::parse_entity(ctx, ents[i], i, read);
     } catch (const InputError& e) {
       errors.push_back(e);
+      continue;
+    }
+    if (job.entities.size() + read.size() > kMaxEntities)  // a text's glyphs
+      ctx.fail("entities[" + std::to_string(i) + "]", errc::limit_entities,
+               "expected at most " + std::to_string(kMaxEntities) +
+                   " entities in one job (docs/limits.md), found more with the glyphs of this text; split the job "
+                   "into several files");
+    for (Entity& e : read) {
+      e.index = job.entities.size();
+      if (e.index != i) e.file_index = i;
+      job.entities.push_back(std::move(e));
     }
   }
   if (!errors.empty()) return;
@@ -587,6 +605,8 @@ Job parse_job(std::string_view text, const std::string& source, const JobReadOpt
   std::vector<InputError> errors;
   detail::JsonCtx ctx{source, &job.warnings};
   ctx.errors = &errors;
+  ctx.options = &opt;
+  ctx.job_params = &job.params;
   try {
     parse_document(text, source, ctx, job, errors);
   } catch (const InputError& e) {
@@ -636,7 +656,9 @@ JobBuilder& JobBuilder::settings(std::span<const std::pair<std::string, std::str
 }
 
 Job load_job(const std::filesystem::path& file, const JobReadOptions& opt) {
-  return parse_job(read_bounded(file, kMaxJobBytes, "job file"), file.string(), opt);
+  JobReadOptions o = opt;
+  if (o.folder.empty()) o.folder = file.parent_path();
+  return parse_job(read_bounded(file, kMaxJobBytes, "job file"), file.string(), o);
 }
 
 }  // namespace bezcam

@@ -10,6 +10,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "bezcam/job/tool_table.hpp"
 
 namespace bezcam::detail {
@@ -35,6 +36,10 @@ struct JsonCtx {
   // Limits (bezcam/limits.hpp): points written in the entity being read,
   // and points of the exact Bézier form of the whole job so far.
   mutable std::size_t entity_points = 0, job_points = 0;
+  /// How the file is read (a text's outliner and folder); the job's own
+  /// cutting parameters, read before the entities (a text's `side`).
+  const JobReadOptions* options = nullptr;
+  const JobParams* job_params = nullptr;
 
   [[noreturn]] void fail(const std::string& path, const std::string& id, const std::string& what) const;
   [[noreturn]] void expected(const std::string& path, const std::string& what, const json& found) const;
@@ -101,6 +106,10 @@ void parse_interpolate_entity(const JsonCtx& ctx, const json& obj, const std::st
 void parse_bezier_patch_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
 void parse_coons_patch_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
 void parse_curve_on_surface_entity(const JsonCtx& ctx, const json& obj, const std::string& path, Entity& e);
+// Text (job_json_text.cpp): `e` holds the entity's id and parameters; its
+// glyph contours are appended to `out`.
+void parse_text_entity(const JsonCtx& ctx, const json& obj, const std::string& path, const Entity& e,
+                       std::vector<Entity>& out);
 /// After all entities are read: a curve_on_surface whose `surface` is a
 /// string gets the surface of the patch entity with that id.
 void resolve_surface_references(const JsonCtx& ctx, const json& entities, Job& job);

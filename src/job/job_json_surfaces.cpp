@@ -199,8 +199,9 @@ void parse_curve_on_surface_entity(const JsonCtx& ctx, const json& obj, const st
 void resolve_surface_references(const JsonCtx& ctx, const json& entities, Job& job) {
   for (size_t i = 0; i < job.entities.size(); ++i) {
     Entity& e = job.entities[i];
-    if (e.type != "curve_on_surface" || !entities[i]["surface"].is_string()) continue;
-    const std::string name = entities[i]["surface"].get<std::string>();
+    const json& given = entities[e.file_index.value_or(i)];
+    if (e.type != "curve_on_surface" || !given["surface"].is_string()) continue;
+    const std::string name = given["surface"].get<std::string>();
     const std::string sp = e.json_path() + ".surface";
     const Entity* found = nullptr;
     for (const Entity& o : job.entities) {

@@ -12,6 +12,7 @@
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/kernel/spline_interp.hpp"
+#include "support/sample_job.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;
@@ -35,7 +36,7 @@ TEST(NurbsSamples, FlattenedWithinToleranceWithAndWithoutRounding) {
   const auto files = nurbs_samples();
   ASSERT_GE(files.size(), 9u);
   for (const auto& f : files) {
-    const Job job = load_job(f);
+    const Job job = test::load_sample(f);
     for (const auto& e : job.entities) {
       for (int decimals : {-1, 3, 4}) {
         SCOPED_TRACE(f.filename().string() + " " + e.label() + " decimals " + std::to_string(decimals));

@@ -14,6 +14,7 @@
 
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "support/sample_job.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;
@@ -64,7 +65,7 @@ void check_golden(const fs::path& golden, const std::string& actual) {
 
 TEST(Golden, EverySampleForGenericAndFanucInLinesMode) {
   for (const auto& s : samples()) {
-    const Job job = load_job(s);
+    const Job job = test::load_sample(s);
     for (const char* machine : {"generic", "fanuc"}) {
       SCOPED_TRACE(s.filename().string() + " / " + machine);
       const MachineProfile m = load_machine_profile(machine);
@@ -91,7 +92,7 @@ TEST(Golden, OtherModesAndProfilesWhereAGoldenExists) {
     ConvertOptions opt;
     opt.output = parse_output_mode(mode);
     const ConvertResult r =
-        convert(load_job(kRoot / "samples" / (sample + ".json")), load_machine_profile(machine), opt);
+        convert(test::load_sample(kRoot / "samples" / (sample + ".json")), load_machine_profile(machine), opt);
     check_golden(e.path(), r.gcode);
     ++checked;
   }

@@ -31,6 +31,7 @@
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/kernel/arc.hpp"
 #include "support/run_process.hpp"
+#include "support/sample_job.hpp"
 
 namespace bezcam {
 namespace {
@@ -266,7 +267,7 @@ TEST(LinuxcncRs274, EverySampleInEveryModeIsAcceptedAndMeansWhatWeMeant) {
   int compensated = 0;
   for (const auto& path : files) {
     const fs::directory_entry entry(path);
-    const Job job = load_job(entry.path());
+    const Job job = test::load_sample(entry.path());
     for (const char* mode : kModes) {
       const std::string name = entry.path().filename().string() + ", --output " + mode;
       ConvertOptions opt;

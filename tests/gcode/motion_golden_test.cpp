@@ -21,6 +21,7 @@
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/machine/planner.hpp"
+#include "support/sample_job.hpp"
 
 using namespace bezcam;
 namespace fs = std::filesystem;
@@ -65,7 +66,7 @@ std::string summary_rows(const char* machine) {
       "sample\toutput\tcutting_blocks\tcycle_time_s\tcutting_time_s\trapid_time_s\tpause_time_s\t"
       "programmed_feed_time_s\tmean_feed_ratio\tstarved_blocks\tmax_path_deviation\n";
   for (const auto& s : samples()) {
-    const Job job = load_job(s);
+    const Job job = test::load_sample(s);
     for (OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
       if (mode == OutputMode::nurbs && m.nurbs == NurbsDialect::none) continue;
       ConvertOptions o;

@@ -22,6 +22,7 @@
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "support/cutting_runs.hpp"
+#include "support/sample_job.hpp"
 
 namespace bezcam {
 namespace {
@@ -32,7 +33,7 @@ std::vector<std::pair<fs::path, Job>> part_samples() {
   std::vector<std::pair<fs::path, Job>> out;
   for (const auto& e : fs::directory_iterator(BEZCAM_SOURCE_DIR "/samples")) {
     if (e.path().extension() != ".json" || e.path().filename().string().rfind("part-", 0) != 0) continue;
-    out.emplace_back(e.path(), load_job(e.path()));
+    out.emplace_back(e.path(), test::load_sample(e.path()));
   }
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   return out;
@@ -194,7 +195,7 @@ TEST(PartRoundTrip, EveryPartSampleInEveryModeKeepsItsBandFromThePart) {
 // part, so the farthest reading is not a band here.
 TEST(PartRoundTrip, ControllerCompensationPutsTheToolCentreOnTheOffset) {
   const fs::path file = BEZCAM_SOURCE_DIR "/samples/controller-comp/flange-g41.json";
-  const Job job = load_job(file);
+  const Job job = test::load_sample(file);
   for (const char* name : {"generic", "fanuc", "linuxcnc"}) {
     const MachineProfile m = load_machine_profile(name);
     SCOPED_TRACE(std::string(name) + ", --output arcs");

@@ -20,6 +20,7 @@
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "support/cutting_runs.hpp"
+#include "support/sample_job.hpp"
 
 namespace bezcam {
 namespace {
@@ -36,7 +37,7 @@ std::vector<std::pair<fs::path, Job>> curve_samples() {
     if (e.path().extension() != ".json") continue;
     // Part samples cut beside their curves: part_roundtrip_test.cpp.
     if (e.path().filename().string().rfind("part-", 0) == 0) continue;
-    Job job = load_job(e.path());
+    Job job = test::load_sample(e.path());
     bool curves = !job.entities.empty();
     for (const auto& en : job.entities) curves = curves && !en.surface && !en.curve.pieces.empty();
     if (curves) out.emplace_back(e.path(), std::move(job));

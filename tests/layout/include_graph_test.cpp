@@ -31,9 +31,10 @@ const std::map<std::string, std::set<std::string>>& allowed() {
       {"link", {"base"}},
       {"sim", {"base", "kernel", "flatten", "stock", "job", "machine", "gcode", "verify", "link"}},
       {"import", {"base", "kernel", "flatten", "job"}},
+      {"text", {"base", "kernel", "flatten", "job"}},
       {"cli",
        {"base", "kernel", "flatten", "stock", "job", "machine", "cam", "gcode", "report", "verify", "link", "sim",
-        "import", "cli"}},
+        "import", "text", "cli"}},
   };
   return g;
 }

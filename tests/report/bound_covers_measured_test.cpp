@@ -19,6 +19,7 @@
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/report/report.hpp"
+#include "support/sample_job.hpp"
 
 namespace bezcam {
 namespace {
@@ -46,7 +47,7 @@ std::vector<Case> samples() {
        {fs::path(BEZCAM_SOURCE_DIR "/samples"), fs::path(BEZCAM_SOURCE_DIR "/samples/controller-comp")})
     for (const fs::path& f : files_in(dir)) {
       if (f.extension() == ".json")
-        out.push_back({f.filename().string(), load_job(f)});
+        out.push_back({f.filename().string(), test::load_sample(f)});
       else if (import::is_drawing(f))
         out.push_back({f.filename().string(), import::to_job(import::read_drawing(f))});
     }

@@ -26,6 +26,7 @@
 #include "bezcam/sim/trace.hpp"
 #include "bezcam/verify/machined_program.hpp"
 #include "support/link_test_util.hpp"
+#include "support/sample_job.hpp"
 
 using namespace bezcam;
 using namespace bezcam::link;
@@ -92,7 +93,7 @@ TEST_P(GoldenTrace, StreamedEqualsDirectEqualsGolden) {
   const MachineProfile generic = load_machine_profile("generic");
   ConvertOptions opt;
   opt.output = OutputMode::lines;
-  const std::string program = convert(load_job(src.string()), generic, opt).gcode;
+  const std::string program = convert(test::load_sample(src.string()), generic, opt).gcode;
   const StockConfig stock = golden_stock(program, generic);
 
   // `simulate --program`: the file pushed through the controller directly.
@@ -207,7 +208,7 @@ TEST_P(DialectTrace, StreamedEqualsDirect) {
   bool sampled = false;  // a 3D polyline has no arc: look at the samples together
   for (const std::string sample : {"curve-semicircle", "curve-rational-quarter-circle", "curve-cube-3d"}) {
     SCOPED_TRACE(sample);
-    const Job job = load_job((fs::path(BEZCAM_SOURCE_DIR) / "samples" / (sample + ".json")).string());
+    const Job job = test::load_sample((fs::path(BEZCAM_SOURCE_DIR) / "samples" / (sample + ".json")).string());
     const std::string program = convert(job, profile, opt).gcode;
     Traced direct(profile);
     const Status ds = direct.ctl->run_program(program);

@@ -84,9 +84,14 @@ struct ToolpathSpec {
 };
 
 struct Entity {
-  std::string id;       ///< may be empty
-  size_t index = 0;     ///< position in `entities`
-  std::string type;     ///< JSON type
+  std::string id;    ///< may be empty
+  size_t index = 0;  ///< position in the job's `entities`
+  /// Position in the file's `entities` when it differs from `index`: the
+  /// glyphs of a `text` entity (job/text.hpp) all come from one.
+  std::optional<size_t> file_index;
+  std::string type;  ///< JSON type
+  /// A `text` entity's glyph: the characters it draws (UTF-8).
+  std::string glyph;
   JobParams params;     ///< this entity's overrides
   CurveGeometry curve;  ///< for curve entities (bezier, bspline, interpolate, path)
   /// bezier_patch, coons_patch: the surface; curve_on_surface: the surface
@@ -96,8 +101,8 @@ struct Entity {
   CurveGeometry uv_curve;  ///< curve_on_surface: the 2D curve in the (u, v) square
 
   /// The id, or `entities[i]` when there is none.
-  std::string label() const { return id.empty() ? "entities[" + std::to_string(index) + "]" : id; }
-  std::string json_path() const { return "entities[" + std::to_string(index) + "]"; }
+  std::string label() const { return id.empty() ? json_path() : id; }
+  std::string json_path() const { return "entities[" + std::to_string(file_index.value_or(index)) + "]"; }
 };
 
 /// The placeholders a `before` / `after` line may use.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/text.hpp"
 
 namespace bezcam {
 
@@ -15,6 +16,12 @@ struct JobReadOptions {
   /// Receives the job's warnings also when the job is refused, so that a
   /// program can print them beside the refusal.
   std::vector<std::string>* warnings = nullptr;
+  /// Outlines the `text` entities (bezcam::text's font_outliner()); a job
+  /// with text is refused when it is empty.
+  TextOutliner text;
+  /// Where a text's relative font file is found; load_job() gives the job
+  /// file's folder when this is empty, parse_job() the working directory.
+  std::filesystem::path folder;
 };
 
 /// Parses and validates a job. `source` names the file in messages.
