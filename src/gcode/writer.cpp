@@ -105,9 +105,10 @@ class Writer {
   }
   // The tools in the order they are loaded, each with its diameter and
   // shape where the job gives them (`T1: 6 mm flat end mill: outline,
-  // bore`; a table's bull, vee or drill with its corner radius or angle
+  // bore`; a table's bull, vee or drill with its corner radius or angle,
   // and flutes: `[bull D6 r0.5 flutes 2.5]`) and the entities it cuts: the
-  // operator loads them from this.
+  // operator loads them from this. A flat or ball end reads the same with
+  // a table as with `tool_diameter`.
   void tools() {
     std::vector<std::pair<int, std::string>> list;
     for (const EntityReport& e : p_.entities) {
@@ -123,7 +124,10 @@ class Writer {
       const auto t = std::find_if(p_.tools.begin(), p_.tools.end(), [&](const JobTool& j) { return j.number == tool; });
       if (t != p_.tools.end() && t->diameter)
         what = format_significant(*t->diameter, 6) + (p_.units == Units::inch ? " in " : " mm ") + to_string(t->shape) +
-               (t->entry && t->entry->shape != ToolType::flat ? " [" + t->entry->description() + "]" : "") + ": ";
+               (t->entry && t->entry->shape != ToolType::flat && t->entry->shape != ToolType::ball
+                    ? " [" + t->entry->description() + "]"
+                    : "") +
+               ": ";
       note("T" + std::to_string(tool) + ": " + what + labels);
     }
   }

@@ -71,8 +71,9 @@ TEST(ToolTableCut, AnInchTableCutsAsTheInchToolDiameter) {
   const std::string with_table = gcode(job_of(
       R"( "units": "inch", "tools": {"3": {"shape": "bull", "diameter": 0.25, "corner_radius": 0.02}},)", part, rect));
   const std::string with_diameter = gcode(job_of(R"( "units": "inch",)", part + R"(, "tool_diameter": 0.25)", rect));
-  // The same cut; the header says more: the table's shape.
-  EXPECT_NE(with_table.find("(T3: 0.25 in bull nose end mill: outline)"), std::string::npos) << with_table;
+  // The same cut; the header says more: the table's shape and corner radius.
+  EXPECT_NE(with_table.find("(T3: 0.25 in bull nose end mill [bull D0.25 r0.02]: outline)"), std::string::npos)
+      << with_table;
   EXPECT_NE(with_diameter.find("(T3: 0.25 in flat end mill: outline)"), std::string::npos) << with_diameter;
   const auto body = [](const std::string& g) {
     return g.substr(g.find("(T3:")).substr(g.substr(g.find("(T3:")).find('\n'));
