@@ -140,6 +140,15 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
 void emit_pocket(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear,
                  const std::vector<const Entity*>& members);
 
+/// The entities of e's pocket region (docs/pocket.md), e first; none when
+/// the region was cut already (a pocket's report is named after its
+/// region) (pocket_regions.cpp).
+std::vector<const Entity*> pocket_members(const Job& job, const Entity& e, const MachineProfile& m, const Program& p);
+/// A warning for each pocket region with a curve inside a curve of another
+/// pocket region: that region clears over it, which is right for a deeper
+/// pocket in a shallower one and wrong for an island meant to stay.
+std::vector<std::string> nested_pocket_warnings(const Job& job, const MachineProfile& m);
+
 /// Cuts a surface entity completely (surface_emitter.cpp): bezier_patch and
 /// coons_patch by their toolpath (zigzag, raster, boundary), curve_on_surface
 /// along its curve; tool and spindle, rapids at safe Z, plunges, cutting

@@ -373,8 +373,10 @@ void PocketCut::certify() {
   }
   if (helix_fallbacks_ > 0)
     p.warnings.push_back(name() + ": " + std::to_string(helix_fallbacks_) +
-                         (helix_fallbacks_ == 1 ? " entry has" : " entries have") +
-                         " no room for the helix and ramps down along its pass instead");
+                         (helix_fallbacks_ == 1
+                              ? " entry has no room for the helix and ramps down along its pass"
+                              : " entries have no room for the helix and ramp down along their pass") +
+                         " instead");
 }
 
 }  // namespace

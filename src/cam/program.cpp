@@ -483,31 +483,13 @@ Job ordered(const Job& job, const MachineProfile& m, Program& p) {
   return out;
 }
 
-// The entities of e's pocket region (docs/pocket.md), e first; none when
-// the region was cut already (a pocket's report is named after its region).
-std::vector<const Entity*> pocket_members(const Job& job, const Entity& e, const MachineProfile& m, const Program& p) {
-  auto region_of = [&](const Entity& x, const CutParams& c) {
-    return c.pocket.region.value_or(x.id.empty() ? x.label() : x.id);
-  };
-  const std::string region = region_of(e, cut_params(job, e, m));
-  for (const EntityReport& r : p.entities)
-    if (r.type == "pocket" && r.label == region) return {};
-  std::vector<const Entity*> out{&e};
-  for (const Entity& o : job.entities) {
-    if (&o == &e) continue;
-    const CutParams c = cut_params(job, o, m);
-    if (c.pocket.operation == Operation::pocket && region_of(o, c) == region) out.push_back(&o);
-  }
-  return out;
-}
-
 // An entity with `operation: "pocket"`: its region is cut with the first
 // of its entities (pocket_emit.cpp). False for any other entity.
 bool cut_pocket_region(const Job& job, const MachineProfile& m, const ConvertOptions& opt, const Entity& e,
                        const CutParams& cp, double safe, detail::MotionState ms, Program& p,
                        detail::Measurements& later, ProgramLength& length) {
   if (cp.pocket.operation != Operation::pocket) return false;
-  const auto members = pocket_members(job, e, m, p);
+  const auto members = detail::pocket_members(job, e, m, p);
   if (members.empty()) return true;
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
   detail::change_tool_and_spindle(p, m, cp, safe, ms, -1);
@@ -601,6 +583,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   }
   p.warnings = job.warnings;
   for (std::string& w : nested_outside_warnings(job)) p.warnings.push_back(std::move(w));
+  for (std::string& w : detail::nested_pocket_warnings(job, m)) p.warnings.push_back(std::move(w));
   p.program_number = opt.program_number ? opt.program_number : job.program_number;
   p.tools = job_tools(job, profile_defaults(job, m));
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };

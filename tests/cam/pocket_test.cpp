@@ -288,5 +288,23 @@ TEST(Pocket, RegionsGroupByName) {
   EXPECT_EQ(p.entities[1].label, "b");
 }
 
+TEST(Pocket, ARegionInsideAnotherIsSaidToBeClearedOver) {
+  // A drawing's curves, each its own region by default: the outline's
+  // pocket clears over the boss, which a warning names.
+  const std::string json = R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,)"
+                           R"("cut_z":-1,"tool_diameter":4,"operation":"pocket"},"entities":[)" +
+                           polygon(rect(0, 0, 40, 30), R"(,"id":"outline")") + "," +
+                           polygon(rect(15, 10, 25, 20), R"(,"id":"boss")") + "]}";
+  const Program p = build_program(parse_job(json, "t.json"), load_machine_profile("linuxcnc"), ConvertOptions{});
+  const auto n = std::count_if(p.warnings.begin(), p.warnings.end(), [](const std::string& w) {
+    return w.find("\"boss\" (boss) lies inside pocket region \"outline\"") != std::string::npos;
+  });
+  EXPECT_EQ(n, 1);
+  // One region: the boss is an island, no warning.
+  const Program q = build(R"("tool_diameter":4)", {polygon(rect(0, 0, 40, 30)), polygon(rect(15, 10, 25, 20))});
+  EXPECT_TRUE(std::none_of(q.warnings.begin(), q.warnings.end(),
+                           [](const std::string& w) { return w.find("lies inside") != std::string::npos; }));
+}
+
 }  // namespace
 }  // namespace bezcam
