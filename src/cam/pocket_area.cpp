@@ -86,6 +86,18 @@ BMulti to_multi(const PocketLoops& loops) {
   return m;
 }
 
+// Boost simplifies the input by |d| / 1000 before offsetting (Douglas-
+// Peucker): that much off the walls would be unaccounted for. This
+// distance simplifies within `sag` instead, which the caller's margin holds.
+class BoundedDistance : public bg::strategy::buffer::distance_symmetric<double> {
+ public:
+  BoundedDistance(double d, double sag) : distance_symmetric(d), sag_(sag) {}
+  double simplify_distance() const { return sag_; }
+
+ private:
+  double sag_;
+};
+
 int points_per_circle(double d, double sag) {
   const double a = std::acos(std::max(-1.0, 1 - sag / std::max(std::abs(d), 1e-12)));
   const double n = std::ceil(std::numbers::pi / std::max(a, 1e-6));
@@ -102,7 +114,7 @@ Area Area::eroded(double d, double sag) const {
   auto out = std::make_shared<Impl>();
   if (impl_->m.empty()) return Area(out);
   const int n = points_per_circle(d, sag);
-  bg::strategy::buffer::distance_symmetric<double> dist(-d);
+  const BoundedDistance dist(-d, sag);
   bg::strategy::buffer::join_round join(n);
   bg::strategy::buffer::end_round end(n);
   bg::strategy::buffer::point_circle circle(n);

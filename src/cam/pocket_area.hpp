@@ -13,7 +13,9 @@ class Area {
   Area();
   /// From closed loops, even-odd.
   explicit Area(const PocketLoops& loops);
-  /// Eroded by d (> 0; < 0 grows), round corners within `sag` of their arcs.
+  /// Eroded by d (> 0; < 0 grows), within 2 `sag` of the true offset: round
+  /// corners drawn as chords within `sag` of their arcs, the loops
+  /// simplified within `sag` first.
   Area eroded(double d, double sag) const;
   PocketLoops loops() const;
   /// The connected pieces.

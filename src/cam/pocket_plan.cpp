@@ -306,7 +306,7 @@ PocketPlan plan_pocket(const PocketPlanInput& in) {
   PocketPlan plan;
   const Area region(in.walls);
   const double sag = in.tolerance / 20;
-  const double d_wall = in.radius + in.stock + in.margin + sag;
+  const double d_wall = in.radius + in.stock + in.margin + 2 * sag;
   const double d0 = d_wall + in.finish;
   plan.centres = region.eroded(d_wall, sag);
   if (plan.centres.empty()) return plan;

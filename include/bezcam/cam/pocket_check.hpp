@@ -31,9 +31,9 @@ namespace bezcam {
 using PocketLoops = std::vector<std::vector<Vec3>>;
 
 /// The loops of `loops` eroded by d (d > 0: away from every wall, into the
-/// region; d < 0: grown), with round corners drawn as chords within `sag`
-/// of the true arcs (inside them: nearer the corner they turn about by at
-/// most `sag`). Empty: nothing left.
+/// region; d < 0: grown), within 2 `sag` of the true offset: the loops
+/// simplified within `sag`, round corners drawn as chords within `sag` of
+/// their arcs. Empty: nothing left.
 PocketLoops offset_region(const PocketLoops& loops, double d, double sag);
 /// The area the loops enclose (even-odd).
 double region_area(const PocketLoops& loops);
