@@ -11,6 +11,7 @@
 #include "bezcam/flatten/nesting.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/format.hpp"
+#include "bezcam/job/tools.hpp"
 #include "cut_emitters.hpp"
 #include "pocket_plan.hpp"
 
@@ -155,6 +156,17 @@ void PocketCut::read_keys() {
   if (cp_.stock_to_leave < 0)
     fail("stock_to_leave", "a pocket leaves stock_to_leave >= 0 on its walls, found " + fmt_num(cp_.stock_to_leave));
   entry_ = keys_.entry.value_or(PocketEntry{});
+  JobParams which;
+  which.tool = cp_.tool;
+  if (const ToolEntry* t = entity_tool_entry(c_.job, c_.entity, which)) {
+    if (t->shape == ToolType::vee || t->shape == ToolType::drill)
+      fail("tool", "tool " + std::to_string(t->number) + " (" + t->description() +
+                       ") cannot clear a pocket: its side does not cut a wall; use an end mill (flat, ball or bull)");
+    if (entry_.kind == PocketEntry::Kind::plunge && !t->center_cutting)
+      fail("entry", "tool " + std::to_string(t->number) + " (" + t->description() +
+                        ") is not center-cutting: it cannot plunge; give \"entry\": \"helix\" or \"ramp\" (or "
+                        "\"center_cutting\": true in the tool table if it is)");
+  }
   if (!entry_.radius) entry_.radius = radius_ / 2;
   margin_ = wall_bound_ + max_rounding_displacement(c_.decimals, 2) + c_.tolerance * 1e-3;
 }
@@ -188,11 +200,11 @@ void PocketCut::plan() {
 }
 
 void PocketCut::plan_depths() {
-  if (cp_.step_down) {
+  if (const std::optional<double> step = cp_.pass_depth()) {  // step_down, or the flute length
     if (cp_.top_z <= cp_.cut_z)
       fail("step_down", "passes step down from top_z (" + fmt_num(cp_.top_z) + ") to cut_z (" + fmt_num(cp_.cut_z) +
                             "), but top_z is not above cut_z: set \"top_z\" to the stock's top");
-    const int n = std::max(1, static_cast<int>(std::ceil((cp_.top_z - cp_.cut_z) / *cp_.step_down - 1e-9)));
+    const int n = std::max(1, static_cast<int>(std::ceil((cp_.top_z - cp_.cut_z) / *step - 1e-9)));
     for (int k = 1; k <= n; ++k)
       levels_.push_back(quantize(k == n ? cp_.cut_z : cp_.top_z - (cp_.top_z - cp_.cut_z) * k / n, c_.decimals));
   } else {

@@ -73,10 +73,11 @@ Pts star(int n, double ro, double tip) {
   return pts(lo);
 }
 
-Program build(const std::string& keys, const std::vector<std::string>& entities) {
+Program build(const std::string& keys, const std::vector<std::string>& entities, const std::string& top = "") {
   std::string e;
   for (const auto& x : entities) e += (e.empty() ? "" : ",") + x;
-  const std::string json = R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,)"
+  const std::string json = R"({"bezcam":1,"tolerance":0.01,)" + top +
+                           R"("job":{"feed":600,"plunge_feed":100,"safe_z":5,)"
                            R"("top_z":0,"clearance":1,"cut_z":-3,"tool_diameter":6,"operation":"pocket",)"
                            R"("region":"p")" +
                            (keys.empty() ? "" : "," + keys) + R"(},"entities":[)" + e + "]}";
@@ -274,11 +275,33 @@ TEST(Pocket, RefusalsNameTheKey) {
     EXPECT_EQ(e.id(), c.id) << e.what();
     EXPECT_EQ(e.place().json_path.value_or(""), c.path) << e.what();
   }
+  // The tool table's shape and end.
+  const std::string sq = polygon(rect(0, 0, 30, 20));
+  for (const char* t : {R"("tools":{"1":{"shape":"vee","diameter":6,"angle":60}},)",
+                        R"("tools":{"1":{"shape":"drill","diameter":6,"point_angle":118}},)"}) {
+    const InputError e = test::refusal_of([&] { build("", {sq}, t); });
+    EXPECT_EQ(e.id(), "job.pocket") << e.what();
+    EXPECT_EQ(e.place().json_path.value_or(""), "entities[0].tool") << e.what();
+  }
+  const InputError plunge =
+      test::refusal_of([&] { build(R"("entry":"plunge")", {sq}, R"("tools":{"1":{"shape":"flat","diameter":6}},)"); });
+  EXPECT_EQ(plunge.id(), "job.pocket") << plunge.what();
+  EXPECT_EQ(plunge.place().json_path.value_or(""), "entities[0].entry") << plunge.what();
   // An open curve.
   const std::string open = R"({"type":"bezier","points":[[0,0],[30,0],[30,20]]})";
   const InputError e = test::refusal_of([&] { build("", {open}); });
   EXPECT_EQ(e.id(), "job.pocket");
   EXPECT_EQ(e.place().json_path.value_or(""), "entities[0].operation");
+}
+
+TEST(Pocket, TheToolTablesFluteLengthSplitsTheDepth) {
+  // Flutes 1.5 long, a pocket 3 deep, no step_down: two levels, each
+  // certified; a center-cutting tool may plunge.
+  const Program p = build(R"("entry":"plunge")", {polygon(rect(0, 0, 30, 20))},
+                          R"("tools":{"1":{"shape":"flat","diameter":6,"flute_length":1.5,"center_cutting":true}},)");
+  expect_certified(p, 3);
+  EXPECT_FALSE(path_at(p, -1.5).empty());
+  EXPECT_FALSE(path_at(p, -3).empty());
 }
 
 TEST(Pocket, RegionsGroupByName) {
