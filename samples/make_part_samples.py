@@ -139,5 +139,25 @@ def flange_tools():
         e.pop("tool_diameter",None)
     return j
 
-for name,f in [("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-flange-tools",flange_tools),("part-cam-notch",cam),("part-lettering",lettering)]:
+# Plate: a 60 x 40 recess 4 deep cleared round two bosses of 12 mm, then
+# the plate's outline (100 x 70, corners R 5) cut outside on four tabs; one
+# 6 mm tool (docs/pocket.md).
+def rounded_rect(x0,y0,x1,y1,R):
+    s=[line([x0+R,y0],[x1-R,y0])]+arc(x1-R,y0+R,R,-math.pi/2,0)+[line([x1,y0+R],[x1,y1-R])]+arc(x1-R,y1-R,R,0,math.pi/2)
+    s+=[line([x1-R,y1],[x0+R,y1])]+arc(x0+R,y1-R,R,math.pi/2,math.pi)+[line([x0,y1-R],[x0,y0+R])]+arc(x0+R,y0+R,R,math.pi,1.5*math.pi)
+    s=join(s); s[-1]["points"][-1]=s[0]["points"][0]
+    return {"type":"path","closed":True,"segments":s}
+def plate():
+    recess=dict(rounded_rect(20,15,80,55,4),id="recess")
+    boss1=dict(circle(38,35,6),id="boss-1"); boss2=dict(circle(62,35,6),id="boss-2")
+    for e in (recess,boss1,boss2):
+        e.update({"operation":"pocket","region":"recess","cut_z":-4,"stepover":2.4})
+    outline=dict(rounded_rect(0,0,100,70,5),id="outline")
+    outline.update({"side":"outside","cut_z":-8,"lead":{"radius":4,"length":2},"tabs":{"count":4,"width":6,"height":2}})
+    return {"bezcam":1,"units":"mm","tolerance":0.01,
+            "job":{"feed":800,"plunge_feed":200,"safe_z":5,"top_z":0,"clearance":1,"step_down":2,"spindle_rpm":18000,
+                   "tool":1,"tool_diameter":6,"direction":"climb","tolerance_side":"waste"},
+            "entities":[recess,boss1,boss2,outline]}
+
+for name,f in [("part-plate",plate),("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-flange-tools",flange_tools),("part-cam-notch",cam),("part-lettering",lettering)]:
     open("samples/%s.json"%name,"w").write(json.dumps(f(),indent=1)+"\n")

@@ -55,6 +55,7 @@
 // cam/: the canonical program, passes, validation
 #include "bezcam/cam/gouge.hpp"
 #include "bezcam/cam/pass_plan.hpp"
+#include "bezcam/cam/pocket_check.hpp"
 #include "bezcam/cam/program.hpp"
 #include "bezcam/cam/program_limits.hpp"
 #include "bezcam/cam/program_motion.hpp"

@@ -256,6 +256,12 @@ inline constexpr ErrorId job_type{"job.type"};
 inline constexpr ErrorId job_units{"job.units"};
 /// A curve on a surface leaves the patch's parameter square.
 inline constexpr ErrorId job_uv_range{"job.uv-range"};
+/// An operation bezcam does not do yet (`drill`, `bore`).
+inline constexpr ErrorId job_operation{"job.operation"};
+/// A pocket that cannot be cleared as asked: an open entity, islands
+/// crossing the outline, a stepover or entry that does not fit, a region
+/// where the tool fits nowhere.
+inline constexpr ErrorId job_pocket{"job.pocket"};
 /// The job format version is not 1.
 inline constexpr ErrorId job_version{"job.version"};
 /// A job has more entities than bezcam reads (docs/limits.md).

@@ -131,6 +131,24 @@ void approach(Program& p, int entity, const Vec3& start, double safe, double cle
 /// entity's `before` lines; ends retracted at safe Z (`ms.pos`). Fills `r`.
 void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear);
 
+/// Clears the region of the pocket entities `members` (the first is
+/// c.entity): the passes (pocket_plan.hpp) at every depth level, entered
+/// by a helix, a ramp or a plunge, linked at depth inside the cleared area
+/// or over the clearance plane; then the certificate (pocket_check.hpp) of
+/// the moves made, in `r.pocket`, the header and the warnings. Starts after
+/// the tool change; ends retracted at safe Z (`ms.pos`) (pocket_emit.cpp).
+void emit_pocket(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear,
+                 const std::vector<const Entity*>& members);
+
+/// The entities of e's pocket region (docs/pocket.md), e first; none when
+/// the region was cut already (a pocket's report is named after its
+/// region) (pocket_regions.cpp).
+std::vector<const Entity*> pocket_members(const Job& job, const Entity& e, const MachineProfile& m, const Program& p);
+/// A warning for each pocket region with a curve inside a curve of another
+/// pocket region: that region clears over it, which is right for a deeper
+/// pocket in a shallower one and wrong for an island meant to stay.
+std::vector<std::string> nested_pocket_warnings(const Job& job, const MachineProfile& m);
+
 /// Cuts a surface entity completely (surface_emitter.cpp): bezier_patch and
 /// coons_patch by their toolpath (zigzag, raster, boundary), curve_on_surface
 /// along its curve; tool and spindle, rapids at safe Z, plunges, cutting

@@ -86,6 +86,7 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
   c.tolerance_side = p.tolerance_side.value_or(ToleranceSide::both);
   if (const ToolEntry* t = entity_tool_entry(job, e, defaults); t && !e.surface && e.curve.dim == 2)
     c.flute_length = t->flute_length;
+  c.pocket = p.pocket;
   if (c.clearance && c.top_z + *c.clearance <= c.cut_z && !e.surface)
     throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
                      "the clearance plane (top_z " + fmt_num(c.top_z) + " + clearance " + fmt_num(*c.clearance) +
@@ -482,6 +483,34 @@ Job ordered(const Job& job, const MachineProfile& m, Program& p) {
   return out;
 }
 
+// An entity with `operation: "pocket"`: its region is cut with the first
+// of its entities (pocket_emit.cpp). False for any other entity.
+bool cut_pocket_region(const Job& job, const MachineProfile& m, const ConvertOptions& opt, const Entity& e,
+                       const CutParams& cp, double safe, detail::MotionState ms, Program& p,
+                       detail::Measurements& later, ProgramLength& length) {
+  if (cp.pocket.operation != Operation::pocket) return false;
+  const auto members = detail::pocket_members(job, e, m, p);
+  if (members.empty()) return true;
+  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
+  detail::change_tool_and_spindle(p, m, cp, safe, ms, -1);
+  EntityReport r;
+  r.entity = static_cast<int>(e.index);
+  detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
+  const double clear = cp.clearance ? std::min(safe, quantize(cp.top_z + *cp.clearance, p.decimals)) : safe;
+  if (clear < safe) r.clear_z = clear;
+  push({Comment{"pocket: " + std::to_string(members.size()) + (members.size() == 1 ? " curve" : " curves") + " from " +
+                e.label()}});
+  for (const auto& line : cp.before) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, r.entity});
+  detail::emit_pocket(ctx, ms, r, safe, clear, members);
+  for (const auto& line : cp.after) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, r.entity});
+  p.max_measured = std::max(p.max_measured, r.measured);
+  p.max_bound = std::max(p.max_bound, r.bound);
+  p.entities.push_back(r);
+  later.release();
+  length.after_entity(p, job, e);
+  return true;
+}
+
 // A closed contour cut "outside" whose innermost enclosing contour (among
 // those cut inside or outside) is cut "outside" too is a hole in that
 // part: cut on its outside, it comes out larger by the tool's diameter,
@@ -554,6 +583,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   }
   p.warnings = job.warnings;
   for (std::string& w : nested_outside_warnings(job)) p.warnings.push_back(std::move(w));
+  for (std::string& w : detail::nested_pocket_warnings(job, m)) p.warnings.push_back(std::move(w));
   p.program_number = opt.program_number ? opt.program_number : job.program_number;
   p.tools = job_tools(job, profile_defaults(job, m));
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
@@ -586,6 +616,8 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
       length.after_entity(p, job, e);
       continue;
     }
+    if (cut_pocket_region(job, m, opt, e, cp, safe, {cur_tool, cur_rpm, pos, pos_known, cur_coolant}, p, later, length))
+      continue;
     if (g.pieces.empty()) continue;
 
     if (g.dim == 3) {

@@ -391,6 +391,7 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
     t.height = ctx.positive(ctx.require(*it, kp, "height"), kp + ".height");
     p.tabs = t;
   }
+  p.pocket = parse_pocket_keys(ctx, obj, path);
   if (!entity_level) {
     std::vector<std::string_view> keys(kParamKeys.begin(), kParamKeys.end());
     if (path != "job") keys.pop_back();  // `order` is the job's
@@ -489,6 +490,7 @@ JobParams JobParams::over(const JobParams& base) const {
   if (tabs) r.tabs = tabs;
   if (controller_compensation) r.controller_compensation = controller_compensation;
   if (tolerance_side) r.tolerance_side = tolerance_side;
+  r.pocket = pocket.over(base.pocket);
   return r;
 }
 

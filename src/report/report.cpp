@@ -163,6 +163,29 @@ nlohmann::ordered_json planned_json(const ProgramReport::Planned& q) {
   return j;
 }
 
+// A pocket's certificate (cam/pocket_check.hpp); `keep` is r + stock.
+nlohmann::ordered_json pocket_json(const PocketCertificate& c, double keep) {
+  auto point = [](const Vec3& p) { return nlohmann::ordered_json::array({p.x, p.y}); };
+  nlohmann::ordered_json j;
+  j["uncut_area"] = c.uncut_area;
+  j["uncut_limit"] = c.uncut_limit;
+  if (c.uncut_area > 0) j["uncut_at"] = point(c.uncut_at), j["uncut_z"] = c.uncut_z;
+  j["covered"] = c.covered();
+  j["unreachable_area"] = c.unreachable_area;
+  auto& places = j["unreachable"] = nlohmann::ordered_json::array();
+  for (const auto& u : c.unreachable) places.push_back({{"at", point(u.at)}, {"area", u.area}});
+  j["reachable_area"] = c.reachable_area;
+  j["region_area"] = c.region_area;
+  j["wall_distance"] = c.wall_distance;
+  j["wall_distance_asked"] = keep;
+  j["wall_at"] = point(c.wall_at);
+  j["largest_engagement_deg"] = c.engagement_deg;
+  j["engagement_at"] = point(c.engagement_at);
+  j["rapids_through_material"] = c.rapids_in_material;
+  j["check_cell"] = c.cell;
+  return j;
+}
+
 nlohmann::ordered_json totals_json(const MotionTotals& t) {
   nlohmann::ordered_json j;
   j["feed_length"] = t.feed_length;
@@ -201,6 +224,7 @@ std::string report_json(const ProgramReport& r) {
     x["measured_deviation"] = e.report.measured;
     x["proven_bound"] = e.report.bound;
     x["motion"] = totals_json(e.motion);
+    if (e.report.pocket) x["pocket"] = pocket_json(*e.report.pocket, e.report.offset);
     ents.push_back(std::move(x));
   }
   auto& prog = j["program"] = totals_json(r.total);
@@ -248,6 +272,10 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
     s += "  " + e.label + ": " + e.type + ", degree " + std::to_string(e.degree) + ", length " +
          format_significant(e.length, 6) + u + ", " + std::to_string(e.blocks) + " block" + (e.blocks == 1 ? "" : "s") +
          ", deviation " + measured(e.measured, e.bound) + " (proven bound " + format_bound(e.bound, 3) + u + ")\n";
+    if (e.pocket)
+      for (const auto& line :
+           certificate_lines(e.label, *e.pocket, e.tool_width / 2, e.offset - e.tool_width / 2, to_string(r.units)))
+        s += "    " + line + "\n";
   }
   if (n > max_entities)
     s += "  ... and " + std::to_string(n - max_entities) + " more entit" + (n - max_entities == 1 ? "y" : "ies") +

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bezcam/cam/move.hpp"
+#include "bezcam/cam/pocket_check.hpp"
 #include "bezcam/flatten/offset.hpp"
 #include "bezcam/job/job.hpp"
 #include "bezcam/job/tools.hpp"
@@ -37,6 +38,8 @@ struct EntityReport {
   double offset = 0;
   double tool_width = 0;  ///< part cutting: the tool's diameter (0: none given)
   std::vector<MaterialLeft> left;
+  /// A pocket's region (type "pocket"): its certificate.
+  std::optional<PocketCertificate> pocket;
 };
 
 enum class OutputMode { lines, arcs, nurbs };
@@ -130,6 +133,7 @@ struct CutParams {
   std::optional<Tabs> tabs;
   bool controller_compensation = false;
   ToleranceSide tolerance_side = ToleranceSide::both;
+  PocketKeys pocket;  ///< as the job gives them (docs/pocket.md)
   /// Whether the entity is cut as a part (any of the above asked for).
   bool part_cut() const {
     return side != CutSide::on || pass_depth() || lead || tabs || controller_compensation ||

@@ -47,6 +47,29 @@ struct Tabs {
   double width = 0, height = 0;
 };
 
+/// What an entity's cut does (key `operation`): follow the curve (a
+/// profile, today's cut) or clear the region it bounds (docs/pocket.md).
+enum class Operation { profile, pocket };
+/// How a pocket is cleared: rings parallel to the walls, or parallel lines.
+enum class PocketPattern { offset, zigzag };
+/// How the tool gets down into a pocket.
+struct PocketEntry {
+  enum class Kind { helix, ramp, plunge };
+  Kind kind = Kind::helix;
+  std::optional<double> radius;  ///< helix: the tool centre's circle
+  double angle = 3;              ///< helix and ramp: degrees below the horizontal
+};
+/// The pocket keys (docs/pocket.md); unset values take the defaults there.
+struct PocketKeys {
+  std::optional<Operation> operation;
+  std::optional<std::string> region;
+  std::optional<PocketPattern> pattern;
+  std::optional<double> angle, stepover, finish_stock, rest_from;
+  std::optional<PocketEntry> entry;
+  /// Values set here win; the rest come from `base`.
+  PocketKeys over(const PocketKeys& base) const;
+};
+
 /// Cutting parameters (file units); unset values fall back to the entity's
 /// job, then to the machine profile.
 struct JobParams {
@@ -72,6 +95,7 @@ struct JobParams {
   std::optional<Tabs> tabs;
   std::optional<bool> controller_compensation;  ///< `compensation`: "controller" (true) or "cam"
   std::optional<ToleranceSide> tolerance_side;
+  PocketKeys pocket;
   /// Values set here win; the rest come from `base`.
   JobParams over(const JobParams& base) const;
 };

@@ -1,0 +1,178 @@
+// Pocket clearing (docs/pocket.md): per pocket of a fixed set, the time to
+// build the program (passes, moves) and to certify it, the length cut,
+// that length over the lower bound area / stepover, the cycle time on two
+// machines' motion models, and the largest engagement the check measures.
+// Target: the 100 x 100 pocket with two islands, 6 mm tool, offset
+// pattern, built in under 0.2 s.
+//
+//   build/pocket_bench            every pocket, best of 3
+//   build/pocket_bench --quick    every pocket, once (.ci/test)
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bezcam/cam/pocket_check.hpp"
+#include "bezcam/cam/program.hpp"
+#include "bezcam/cam/program_motion.hpp"
+#include "bezcam/job/job_json.hpp"
+#include "bezcam/machine/planner.hpp"
+
+using namespace bezcam;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+using Pts = std::vector<std::pair<double, double>>;
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+std::string polygon(const Pts& p) {
+  std::string s = R"({"type":"path","closed":true,"segments":[)";
+  for (size_t i = 0; i < p.size(); ++i) {
+    const auto &a = p[i], &b = p[(i + 1) % p.size()];
+    s += std::string(i ? "," : "") + R"({"type":"bezier","points":[[)" + num(a.first) + "," + num(a.second) + "],[" +
+         num(b.first) + "," + num(b.second) + "]]}";
+  }
+  return s + "]}";
+}
+
+std::string circle(double cx, double cy, double r) {
+  const double w = std::sqrt(0.5);
+  std::string s = R"({"type":"path","closed":true,"segments":[)";
+  for (int k = 0; k < 4; ++k) {
+    const double a0 = k * std::numbers::pi / 2, a1 = a0 + std::numbers::pi / 2;
+    s += std::string(k ? "," : "") + R"({"type":"bezier","points":[[)" + num(cx + r * std::cos(a0)) + "," +
+         num(cy + r * std::sin(a0)) + "],[" + num(cx + r * (std::cos(a0) - std::sin(a0))) + "," +
+         num(cy + r * (std::sin(a0) + std::cos(a0))) + "],[" + num(cx + r * std::cos(a1)) + "," +
+         num(cy + r * std::sin(a1)) + "]],\"weights\":[1," + num(w) + ",1]}";
+  }
+  return s + "]}";
+}
+
+Pts star(int n, double ro, double ri) {
+  Pts p;
+  for (int k = 0; k < 2 * n; ++k) {
+    const double a = std::numbers::pi * k / n + std::numbers::pi / 2, r = k % 2 ? ri : ro;
+    p.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return p;
+}
+
+struct Case {
+  const char* name;
+  std::string keys;
+  std::vector<std::string> entities;
+  double stepover;
+};
+
+std::vector<Case> cases() {
+  const Pts square100{{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+  // A five-pointed star whose tips are 30 degrees (inner radius found by
+  // the angle at a tip: 2 atan((ro sin(pi/n) ...)); 11.46 for ro = 30).
+  return {
+      {"100x100, 2 islands, offset",
+       R"("tool_diameter":6,"stepover":2.4)",
+       {polygon(square100), circle(30, 50, 10), circle(70, 50, 10)},
+       2.4},
+      {"100x100, 2 islands, zigzag",
+       R"("tool_diameter":6,"stepover":2.4,"pattern":"zigzag","angle":30)",
+       {polygon(square100), circle(30, 50, 10), circle(70, 50, 10)},
+       2.4},
+      {"16 mm square, 6.35 tool, step 5",
+       R"("tool_diameter":6.35,"stepover":5)",
+       {polygon({{0, 0}, {16, 0}, {16, 16}, {0, 16}})},
+       5},
+      {"star, 30 deg tips, 4 mm tool", R"("tool_diameter":4,"stepover":1.6)", {polygon(star(5, 30, 11.46))}, 1.6},
+      {"L 60 x 60, arms 20",
+       R"("tool_diameter":6,"stepover":2.4)",
+       {polygon({{0, 0}, {60, 0}, {60, 20}, {20, 20}, {20, 60}, {0, 60}})},
+       2.4},
+      {"rooms joined by a 4 mm neck",
+       R"("tool_diameter":6,"stepover":2.4)",
+       {polygon({{0, 0},
+                 {20, 0},
+                 {20, 8},
+                 {30, 8},
+                 {30, 0},
+                 {50, 0},
+                 {50, 20},
+                 {30, 20},
+                 {30, 12},
+                 {20, 12},
+                 {20, 20},
+                 {0, 20}})},
+       2.4},
+  };
+}
+
+Job job_of(const Case& c) {
+  std::string e;
+  for (const auto& x : c.entities) e += (e.empty() ? "" : ",") + x;
+  return parse_job(R"({"bezcam":1,"tolerance":0.01,"job":{"feed":1000,"plunge_feed":300,"safe_z":5,"top_z":0,)"
+                   R"("clearance":1,"cut_z":-3,"operation":"pocket","region":"p",)" +
+                       c.keys + R"(},"entities":[)" + e + "]}",
+                   "bench.json");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const int tries = quick ? 1 : 3;
+  const MachineProfile lcnc = load_machine_profile("linuxcnc"), grbl = load_machine_profile("grbl");
+  std::printf("%-34s %9s %9s %10s %8s %10s %10s %7s %6s\n", "pocket", "build s", "check s", "length mm", "len/(A/s)",
+              "lcnc s", "grbl s", "eng deg", "uncut");
+  bool target_met = true;
+  for (const Case& c : cases()) {
+    const Job job = job_of(c);
+    // The build includes the certificate; what the passes took is the rest.
+    double build = 1e300, check = 1e300;
+    Program p;
+    for (int t = 0; t < tries; ++t) {
+      const auto t0 = Clock::now();
+      p = build_program(job, lcnc, ConvertOptions{});
+      const double all = std::chrono::duration<double>(Clock::now() - t0).count();
+      check = std::min(check, p.entities.front().pocket->seconds);
+      build = std::min(build, all - p.entities.front().pocket->seconds);
+    }
+    const PocketCertificate& cert = *p.entities.front().pocket;
+    double length = 0;
+    Vec3 cur;
+    for (const Move& mv : p.moves) {
+      const Motion* m = motion_of(mv);
+      if (!m) continue;
+      Vec3 to = cur;
+      if (m->axes & kAxisX) to.x = m->to.x;
+      if (m->axes & kAxisY) to.y = m->to.y;
+      if (m->axes & kAxisZ) to.z = m->to.z;
+      if (!is_rapid(mv)) length += std::hypot(to.x - cur.x, to.y - cur.y);
+      cur = to;
+    }
+    const double lower = cert.reachable_area / c.stepover;
+    auto cycle = [&](const MachineProfile& m) {
+      const Program q = build_program(job, m, ConvertOptions{});
+      return plan_motion(program_timeline(q), *m.motion).cycle_time_s;
+    };
+    std::printf("%-34s %9.3f %9.3f %10.1f %8.2f %10.1f %10.1f %7.0f %6.3g\n", c.name, build, check, length,
+                length / lower, cycle(lcnc), cycle(grbl), cert.engagement_deg, cert.uncut_area);
+    if (std::string(c.name).starts_with("100x100, 2 islands, offset") && build >= 0.2) target_met = false;
+  }
+  std::printf("target: the 100 x 100 pocket with two islands (offset) built in under 0.2 s: %s\n",
+              target_met ? "met" : "NOT met");
+  std::printf(
+      "(build s: passes and moves, best of %d; check s: the certificate's own time; len/(A/s): length cut "
+      "over reachable area / stepover)\n",
+      tries);
+  return 0;
+}

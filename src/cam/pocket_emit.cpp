@@ -1,0 +1,401 @@
+// A pocket's moves (cut_emitters.hpp emit_pocket()): the region from its
+// entities, the refusals, the passes at every depth level with their
+// entries, and the certificate of the moves made.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "bezcam/error.hpp"
+#include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/nesting.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/format.hpp"
+#include "bezcam/job/tools.hpp"
+#include "cut_emitters.hpp"
+#include "pocket_plan.hpp"
+
+namespace bezcam::detail {
+
+namespace {
+
+double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+class PocketCut {
+ public:
+  PocketCut(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear,
+            const std::vector<const Entity*>& members)
+      : c_(c), ms_(ms), r_(r), safe_(safe), clear_(clear), members_(members), cp_(c.params), keys_(cp_.pocket) {}
+
+  void run() {
+    first_move_ = c_.program.moves.size();
+    start_ = ms_.pos_known ? ms_.pos : Vec3{0, 0, safe_};
+    read_region();
+    read_keys();
+    plan();
+    plan_depths();
+    for (size_t k = 0; k < levels_.size(); ++k) cut_level(k);
+    up(safe_);
+    certify();
+  }
+
+ private:
+  // Refuses, naming the key where it was set: the first member's, else the job's.
+  [[noreturn]] void fail(const std::string& key, const std::string& why) const {
+    const Entity& e = c_.entity;
+    const std::string path = e.json_path() + (key.empty() ? "" : "." + key);
+    throw InputError(errc::job_pocket, Place::in_json(c_.job.source, path), why);
+  }
+  std::string name() const {
+    return "pocket region \"" + region_ + "\" (" + std::to_string(members_.size()) +
+           (members_.size() == 1 ? " curve)" : " curves)");
+  }
+
+  void read_region();
+  void read_keys();
+  void plan();
+  void plan_depths();
+  void cut_level(size_t k);
+  struct Entry {
+    bool helix = false;
+    Vec3 at;   // where the tool goes down
+    Vec3 cen;  // the helix's centre
+  };
+  Entry entry_for(const std::vector<Vec3>& pass, bool count);
+  void enter(const Entry& e, const std::vector<Vec3>& pass, double z_from, double z);
+  void helix(const Entry& e, double z_from, double z);
+  void ramp(const std::vector<Vec3>& pass, double z_from, double z);
+  void certify();
+
+  void line(const Vec3& to, double feed) {
+    LineMove l;
+    l.to = quantize(to, c_.decimals);
+    l.feed = feed;
+    c_.program.moves.push_back({l, entity()});
+    ms_.pos = l.to;
+  }
+  void rapid(const Vec3& to, unsigned axes = kAxesXYZ) {
+    RapidMove m;
+    m.to = quantize(to, c_.decimals);
+    m.axes = axes;
+    c_.program.moves.push_back({m, entity()});
+    ms_.pos = m.to;
+    ms_.pos_known = true;
+  }
+  void up(double z) {
+    if (!ms_.pos_known)
+      rapid({0, 0, z}, kAxisZ);
+    else if (ms_.pos.z < z)
+      rapid({ms_.pos.x, ms_.pos.y, z});
+  }
+  int entity() const { return static_cast<int>(c_.entity.index); }
+
+  CutContext& c_;
+  MotionState& ms_;
+  EntityReport& r_;
+  const double safe_, clear_;
+  const std::vector<const Entity*>& members_;
+  const CutParams& cp_;
+  const PocketKeys& keys_;
+  std::string region_;
+  PocketLoops walls_;
+  double wall_bound_ = 0, radius_ = 0, stepover_ = 0, margin_ = 0;
+  PocketEntry entry_;
+  PocketPlan plan_;
+  std::vector<double> levels_;
+  size_t helix_fallbacks_ = 0;
+  size_t first_move_ = 0;
+  Vec3 start_;
+};
+
+void PocketCut::read_region() {
+  const Entity& first = c_.entity;
+  region_ = keys_.region.value_or(first.id.empty() ? first.label() : first.id);
+  std::vector<std::vector<Bezier>> curves;
+  const double h = c_.tolerance / 4;
+  for (const Entity* e : members_) {
+    const auto& g = e->curve;
+    if (e->surface || g.pieces.empty())
+      fail("operation", e->label() + " is not a curve: only closed curves bound a pocket");
+    const Vec3 a = g.pieces.front().front(), b = g.pieces.back().back();
+    if (!g.closed && dxy(a, b) > c_.tolerance)
+      throw InputError(errc::job_pocket, Place::in_json(c_.job.source, e->json_path() + ".operation"),
+                       e->label() + " is open (its ends (" + fmt_num(a.x, 6) + ", " + fmt_num(a.y, 6) + ") and (" +
+                           fmt_num(b.x, 6) + ", " + fmt_num(b.y, 6) +
+                           ") do not meet): a pocket is bounded by closed curves; close it or cut it as a profile");
+    curves.push_back(g.pieces);
+    std::vector<Vec3> poly;
+    FlattenOptions fo{h, -1};
+    wall_bound_ = std::max(wall_bound_, flatten_into(g.pieces, fo, poly));
+    if (poly.size() > 1 && dxy(poly.front(), poly.back()) <= c_.tolerance) poly.pop_back();
+    for (Vec3& v : poly) v.z = 0;
+    walls_.push_back(std::move(poly));
+  }
+  const Nesting n = nest_closed_curves(curves);
+  if (!n.crossing.empty()) {
+    const auto [i, j] = n.crossing.front();
+    throw InputError(errc::job_pocket, Place::in_json(c_.job.source, members_[j]->json_path()),
+                     members_[j]->label() + " crosses " + members_[i]->label() + " in " + name() +
+                         ": an island must lie wholly inside the outline (or wholly outside it); give it "
+                         "another \"region\" or correct the drawing");
+  }
+}
+
+void PocketCut::read_keys() {
+  const double d = cp_.tool_diameter ? *cp_.tool_diameter : 2 * cp_.tool_radius;
+  if (!(d > 0)) fail("tool_diameter", "a pocket needs the tool's diameter: give \"tool_diameter\"");
+  radius_ = d / 2;
+  stepover_ = keys_.stepover.value_or(0.4 * d);
+  if (stepover_ > d)
+    fail("stepover", "the stepover " + fmt_num(stepover_) + " is above the tool's diameter " + fmt_num(d) +
+                         ": the passes would leave ridges between them; give at most " + fmt_num(d));
+  if (keys_.rest_from)
+    fail("rest_from",
+         "rest machining is not done by this version of bezcam: remove \"rest_from\" to clear the "
+         "whole region");
+  if (cp_.stock_to_leave < 0)
+    fail("stock_to_leave", "a pocket leaves stock_to_leave >= 0 on its walls, found " + fmt_num(cp_.stock_to_leave));
+  entry_ = keys_.entry.value_or(PocketEntry{});
+  JobParams which;
+  which.tool = cp_.tool;
+  if (const ToolEntry* t = entity_tool_entry(c_.job, c_.entity, which)) {
+    if (t->shape == ToolType::vee || t->shape == ToolType::drill)
+      fail("tool", "tool " + std::to_string(t->number) + " (" + t->description() +
+                       ") cannot clear a pocket: its side does not cut a wall; use an end mill (flat, ball or bull)");
+    if (entry_.kind == PocketEntry::Kind::plunge && !t->center_cutting)
+      fail("entry", "tool " + std::to_string(t->number) + " (" + t->description() +
+                        ") is not center-cutting: it cannot plunge; give \"entry\": \"helix\" or \"ramp\" (or "
+                        "\"center_cutting\": true in the tool table if it is)");
+  }
+  if (!entry_.radius) entry_.radius = radius_ / 2;
+  margin_ = wall_bound_ + max_rounding_displacement(c_.decimals, 2) + c_.tolerance * 1e-3;
+}
+
+void PocketCut::plan() {
+  PocketPlanInput in;
+  in.walls = walls_;
+  in.wall_bound = wall_bound_;
+  in.radius = radius_;
+  in.stock = cp_.stock_to_leave;
+  in.finish = keys_.finish_stock.value_or(0);
+  in.stepover = stepover_;
+  in.pattern = keys_.pattern.value_or(PocketPattern::offset);
+  in.angle_deg = keys_.angle.value_or(0);
+  in.climb = cp_.direction != CutDirection::conventional;
+  in.tolerance = c_.tolerance;
+  in.margin = margin_;
+  in.cell = c_.tolerance;
+  in.helix_radius = entry_.kind == PocketEntry::Kind::helix ? *entry_.radius : 0;
+  plan_ = plan_pocket(in);
+  for (auto& pass : plan_.passes)
+    for (Vec3& v : pass.pts) v = quantize(v, c_.decimals);
+  if (plan_.centres.empty())
+    fail("tool_diameter",
+         "the tool (diameter " + fmt_num(2 * radius_) +
+             (cp_.stock_to_leave > 0 ? " with stock_to_leave " + fmt_num(cp_.stock_to_leave) : std::string()) +
+             ") fits nowhere in " + name() + ": use a smaller tool");
+  if (entry_.kind == PocketEntry::Kind::helix && plan_.centres.eroded(*entry_.radius / 4, c_.tolerance * 1e-4).empty())
+    fail("entry", "a helix of radius " + fmt_num(*entry_.radius / 4) + " or more fits nowhere in " + name() +
+                      ": give \"entry\": {\"ramp\": {\"angle\": 3}} (or a smaller helix radius)");
+}
+
+void PocketCut::plan_depths() {
+  if (const std::optional<double> step = cp_.pass_depth()) {  // step_down, or the flute length
+    if (cp_.top_z <= cp_.cut_z)
+      fail("step_down", "passes step down from top_z (" + fmt_num(cp_.top_z) + ") to cut_z (" + fmt_num(cp_.cut_z) +
+                            "), but top_z is not above cut_z: set \"top_z\" to the stock's top");
+    const int n = std::max(1, static_cast<int>(std::ceil((cp_.top_z - cp_.cut_z) / *step - 1e-9)));
+    for (int k = 1; k <= n; ++k)
+      levels_.push_back(quantize(k == n ? cp_.cut_z : cp_.top_z - (cp_.top_z - cp_.cut_z) * k / n, c_.decimals));
+  } else {
+    levels_.push_back(quantize(cp_.cut_z, c_.decimals));
+  }
+  if (clear_ <= levels_.front())
+    fail("clearance", "the clearance plane z = " + fmt_num(clear_) + " is not above the first level z = " +
+                          fmt_num(levels_.front()) + ": raise \"clearance\" or \"top_z\"");
+}
+
+void PocketCut::cut_level(size_t k) {
+  const double z = levels_[k];
+  const double z_from = k == 0 ? std::min(quantize(cp_.top_z, c_.decimals), clear_) : levels_[k - 1];
+  for (size_t i = 0; i < plan_.passes.size(); ++i) {
+    const auto& pass = plan_.passes[i].pts;
+    const Vec3 start{pass.front().x, pass.front().y, z};
+    if (i > 0 && plan_.passes[i].linked) {
+      line(start, cp_.feed);
+    } else {
+      // Over the clearance plane to the pass, down through what the level
+      // above cleared, then in.
+      if (!ms_.pos_known) rapid({0, 0, safe_}, kAxisZ);
+      if (ms_.pos.z < clear_) rapid({ms_.pos.x, ms_.pos.y, clear_});
+      const Entry e = entry_for(pass, k == 0);
+      if (ms_.pos.x != e.at.x || ms_.pos.y != e.at.y) rapid({e.at.x, e.at.y, ms_.pos.z});
+      if (ms_.pos.z > clear_) rapid({e.at.x, e.at.y, clear_});
+      if (z_from < clear_) line({e.at.x, e.at.y, z_from}, cp_.plunge_feed);
+      enter(e, pass, z_from, z);
+    }
+    for (size_t j = 1; j < pass.size(); ++j) line({pass[j].x, pass[j].y, z}, cp_.feed);
+  }
+}
+
+PocketCut::Entry PocketCut::entry_for(const std::vector<Vec3>& pass, bool count) {
+  Entry e;
+  e.at = pass.front();
+  if (entry_.kind != PocketEntry::Kind::helix) return e;
+  double used = 0;
+  const double rho = max_rounding_displacement(c_.decimals, 2);
+  const auto found = helix_centre(plan_.centres, e.at, *entry_.radius, 2 * rho, used);
+  if (!found) {
+    helix_fallbacks_ += count;
+    return e;
+  }
+  e.helix = true;
+  e.cen = quantize(*found, c_.decimals);
+  const double far = dxy(e.cen, e.at);
+  // The circle's point nearest the pass's start: the helix runs through it.
+  e.at = quantize(Vec3{e.cen.x + (e.at.x - e.cen.x) * used / far, e.cen.y + (e.at.y - e.cen.y) * used / far, 0},
+                  c_.decimals);
+  return e;
+}
+
+void PocketCut::enter(const Entry& e, const std::vector<Vec3>& pass, double z_from, double z) {
+  const Vec3 p{pass.front().x, pass.front().y, z};
+  if (e.helix) {
+    helix(e, z_from, z);
+    line(p, cp_.feed);
+  } else if (entry_.kind == PocketEntry::Kind::plunge) {
+    line(p, cp_.plunge_feed);
+  } else {
+    ramp(pass, z_from, z);
+  }
+}
+
+// A helix about e.cen through e.at (its circle in the centres' area,
+// rounding included): half turns down to z at the entry's angle, then a
+// full turn at z.
+void PocketCut::helix(const Entry& e, double z_from, double z) {
+  const Vec3 cen = e.cen, s0 = e.at;
+  const double rad = dxy(cen, s0);
+  const double drop = std::numbers::pi * rad * std::tan(entry_.angle * std::numbers::pi / 180);
+  int n = std::max(2, static_cast<int>(std::ceil((z_from - z) / drop)));
+  n += n % 2;
+  const Vec3 q{2 * cen.x - s0.x, 2 * cen.y - s0.y, 0};
+  const bool ccw = cp_.direction != CutDirection::conventional;
+  auto arc = [&](const Vec3& to, double zz) {
+    ArcMove a;
+    a.to = quantize(Vec3{to.x, to.y, zz}, c_.decimals);
+    a.center = {cen.x, cen.y, a.to.z};
+    a.ccw = ccw;
+    a.feed = cp_.plunge_feed;
+    c_.program.moves.push_back({a, entity()});
+    ms_.pos = a.to;
+  };
+  for (int h = 1; h <= n; ++h) arc(h % 2 ? q : s0, z_from + (z - z_from) * h / n);
+  arc(q, z);
+  arc(s0, z);
+}
+
+// Down along the pass and back at the entry's angle until at z.
+void PocketCut::ramp(const std::vector<Vec3>& pass, double z_from, double z) {
+  double len = 0;
+  for (size_t i = 1; i < pass.size(); ++i) len += dxy(pass[i - 1], pass[i]);
+  const double need = (z_from - z) / std::tan(entry_.angle * std::numbers::pi / 180);
+  const double half = std::min(len, need / 2);
+  if (!(half > 0)) {
+    line({pass.front().x, pass.front().y, z}, cp_.plunge_feed);
+    return;
+  }
+  const int trips = std::max(1, static_cast<int>(std::ceil(need / (2 * half))));
+  const double total = 2 * half * trips;
+  // The points of the pass up to `half` along it.
+  std::vector<Vec3> out{pass.front()};
+  std::vector<double> at{0};
+  for (size_t i = 1; i < pass.size() && at.back() < half; ++i) {
+    const double l = dxy(pass[i - 1], pass[i]);
+    if (at.back() + l <= half) {
+      out.push_back(pass[i]);
+      at.push_back(at.back() + l);
+    } else {
+      const double t = (half - at.back()) / l;
+      out.push_back(
+          {pass[i - 1].x + t * (pass[i].x - pass[i - 1].x), pass[i - 1].y + t * (pass[i].y - pass[i - 1].y), 0});
+      at.push_back(half);
+    }
+  }
+  double walked = 0;
+  for (int t = 0; t < trips; ++t) {
+    for (size_t i = 1; i < out.size(); ++i) {
+      walked += at[i] - at[i - 1];
+      line({out[i].x, out[i].y, z_from + (z - z_from) * walked / total}, cp_.plunge_feed);
+    }
+    for (size_t i = out.size() - 1; i-- > 0;) {
+      walked += at[i + 1] - at[i];
+      line({out[i].x, out[i].y, z_from + (z - z_from) * std::min(1.0, walked / total)}, cp_.plunge_feed);
+    }
+  }
+}
+
+void PocketCut::certify() {
+  PocketCheckInput in;
+  in.walls = walls_;
+  in.wall_bound = wall_bound_;
+  in.radius = radius_;
+  in.stock = cp_.stock_to_leave;
+  in.tolerance = c_.tolerance;
+  in.top_z = std::min(quantize(cp_.top_z, c_.decimals), clear_);
+  in.levels = levels_;
+  in.moves = &c_.program.moves;
+  in.from = first_move_;
+  in.to = c_.program.moves.size();
+  in.start = start_;
+  const PocketCertificate cert = check_pocket(in);
+  const double keep = radius_ + cp_.stock_to_leave;
+  const std::string units = to_string(c_.job.units);
+  r_.label = region_;
+  r_.type = "pocket";
+  r_.degree = 1;
+  r_.length = cert.perimeter;
+  r_.blocks = in.to - in.from;
+  r_.bound = wall_bound_;
+  r_.measured = std::max(0.0, keep - cert.wall_distance);
+  r_.tool = cp_.tool;
+  r_.offset = keep;
+  r_.tool_width = 2 * radius_;
+  r_.pocket = cert;
+  auto& p = c_.program;
+  if (cert.rapids_in_material > 0 || !cert.walls_kept(radius_, cp_.stock_to_leave, c_.tolerance))
+    throw std::logic_error("internal check failed: " + name() + ": " +
+                           certificate_lines(region_, cert, radius_, cp_.stock_to_leave, units)[1] + "; " +
+                           certificate_lines(region_, cert, radius_, cp_.stock_to_leave, units)[2]);
+  for (auto& line : certificate_lines(region_, cert, radius_, cp_.stock_to_leave, units))
+    p.notes.push_back(std::move(line));
+  if (!cert.covered())
+    p.warnings.push_back(name() + ": the check finds " + fmt_num(cert.uncut_area, 4) + " " + units +
+                         "^2 uncut that the tool could reach, beyond the limit " + fmt_num(cert.uncut_limit, 4) +
+                         ", near (" + fmt_num(cert.uncut_at.x, 4) + ", " + fmt_num(cert.uncut_at.y, 4) + ")");
+  if (!cert.unreachable.empty()) {
+    std::string w = name() + ": " + fmt_num(cert.unreachable_area, 4) + " " + units +
+                    "^2 of material the tool (diameter " + fmt_num(2 * radius_) +
+                    ") cannot reach (corners sharper than the tool, gaps narrower than it) is left: ";
+    for (size_t i = 0; i < cert.unreachable.size() && i < 6; ++i)
+      w += (i ? ", " : "") + fmt_num(cert.unreachable[i].area, 4) + " at (" + fmt_num(cert.unreachable[i].at.x, 4) +
+           ", " + fmt_num(cert.unreachable[i].at.y, 4) + ")";
+    if (cert.unreachable.size() > 6) w += " and " + std::to_string(cert.unreachable.size() - 6) + " more";
+    p.warnings.push_back(w);
+  }
+  if (helix_fallbacks_ > 0)
+    p.warnings.push_back(name() + ": " + std::to_string(helix_fallbacks_) +
+                         (helix_fallbacks_ == 1
+                              ? " entry has no room for the helix and ramps down along its pass"
+                              : " entries have no room for the helix and ramp down along their pass") +
+                         " instead");
+}
+
+}  // namespace
+
+void emit_pocket(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear,
+                 const std::vector<const Entity*>& members) {
+  PocketCut(c, ms, r, safe, clear, members).run();
+}
+
+}  // namespace bezcam::detail

@@ -1,0 +1,195 @@
+#include "pocket_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numbers>
+
+namespace bezcam::detail {
+
+double point_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  double t = l2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+PocketGrid::PocketGrid(const PocketLoops& bounds, double c, size_t max_cells) {
+  double x1 = -1e300, y1 = -1e300;
+  x0 = y0 = 1e300;
+  for (const auto& l : bounds)
+    for (const Vec3& p : l)
+      x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  if (x1 < x0) x0 = y0 = x1 = y1 = 0;
+  const double w = x1 - x0, h = y1 - y0;
+  cell = std::max(c, std::sqrt(w * h / static_cast<double>(max_cells)));
+  while ((w / cell + 3) * (h / cell + 3) > static_cast<double>(max_cells)) cell *= 1.05;
+  x0 -= cell, y0 -= cell;
+  nx = static_cast<long>(std::ceil((w + 2 * cell) / cell)) + 1;
+  ny = static_cast<long>(std::ceil((h + 2 * cell) / cell)) + 1;
+}
+
+Vec3 PocketGrid::sample(size_t k) const {
+  const long i = static_cast<long>(k) % nx, j = static_cast<long>(k) / nx;
+  return {x0 + (static_cast<double>(i) + 0.5) * cell, y0 + (static_cast<double>(j) + 0.5) * cell, 0};
+}
+
+std::vector<uint8_t> PocketGrid::fill(const PocketLoops& loops) const {
+  std::vector<std::vector<double>> cross(static_cast<size_t>(ny));
+  for (const auto& l : loops)
+    for (size_t i = 0, n = l.size(); i < n; ++i) {
+      const Vec3 &p = l[i], &q = l[(i + 1) % n];
+      if (p.y == q.y) continue;
+      const double lo = std::min(p.y, q.y), hi = std::max(p.y, q.y);
+      // Rows whose sample line y crosses [lo, hi) (half-open: a vertex counts once).
+      const long j0 = std::max(0L, static_cast<long>(std::ceil((lo - y0) / cell - 0.5)));
+      const long j1 = std::min(ny - 1, static_cast<long>(std::ceil((hi - y0) / cell - 0.5)) - 1);
+      for (long j = j0; j <= j1; ++j) {
+        const double y = y0 + (static_cast<double>(j) + 0.5) * cell;
+        if (y < lo || y >= hi) continue;
+        cross[static_cast<size_t>(j)].push_back(p.x + (q.x - p.x) * (y - p.y) / (q.y - p.y));
+      }
+    }
+  std::vector<uint8_t> out(size(), 0);
+  for (long j = 0; j < ny; ++j) {
+    auto& xs = cross[static_cast<size_t>(j)];
+    std::sort(xs.begin(), xs.end());
+    for (size_t k = 0; k + 1 < xs.size(); k += 2) {
+      const long i0 = std::max(0L, static_cast<long>(std::ceil((xs[k] - x0) / cell - 0.5)));
+      const long i1 = std::min(nx - 1, static_cast<long>(std::floor((xs[k + 1] - x0) / cell - 0.5)));
+      for (long i = i0; i <= i1; ++i) out[static_cast<size_t>(j * nx + i)] = 1;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The x where the linear function c0 + c1 x satisfies lo <= f <= hi,
+// intersected into [x_lo, x_hi].
+void clip(double c0, double c1, double lo, double hi, double& x_lo, double& x_hi) {
+  if (c1 == 0) {
+    if (c0 < lo || c0 > hi) x_lo = 1, x_hi = 0;
+    return;
+  }
+  double a = (lo - c0) / c1, b = (hi - c0) / c1;
+  if (a > b) std::swap(a, b);
+  x_lo = std::max(x_lo, a), x_hi = std::min(x_hi, b);
+}
+
+// The interval of x where the disk of radius r about c meets the line y.
+void disk(const Vec3& c, double r, double y, double& lo, double& hi) {
+  const double h = r * r - (y - c.y) * (y - c.y);
+  if (h < 0) return;
+  const double w = std::sqrt(h);
+  lo = std::min(lo, c.x - w), hi = std::max(hi, c.x + w);
+}
+
+}  // namespace
+
+void PocketGrid::stamp(const Vec3& a, const Vec3& b, double radius, std::vector<uint8_t>& bits, uint8_t v) const {
+  const long j0 = std::max(0L, static_cast<long>(std::floor((std::min(a.y, b.y) - radius - y0) / cell - 0.5)));
+  const long j1 = std::min(ny - 1, static_cast<long>(std::ceil((std::max(a.y, b.y) + radius - y0) / cell - 0.5)));
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy, l = std::sqrt(l2);
+  for (long j = j0; j <= j1; ++j) {
+    const double y = y0 + (static_cast<double>(j) + 0.5) * cell;
+    // The capsule meets the row in one interval: the union of the end
+    // disks and the band along the segment.
+    double lo = 1e300, hi = -1e300;
+    disk(a, radius, y, lo, hi);
+    disk(b, radius, y, lo, hi);
+    if (l2 > 0) {
+      double blo = -1e300, bhi = 1e300;
+      clip(((-a.x) * dx + (y - a.y) * dy) / l2, dx / l2, 0, 1, blo, bhi);
+      clip(((-a.x) * -dy + (y - a.y) * dx) / l, -dy / l, -radius, radius, blo, bhi);
+      if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
+    }
+    if (lo > hi) continue;
+    const long i0 = std::max(0L, static_cast<long>(std::ceil((lo - x0) / cell - 0.5)));
+    const long i1 = std::min(nx - 1, static_cast<long>(std::floor((hi - x0) / cell - 0.5)));
+    for (long i = i0; i <= i1; ++i) bits[static_cast<size_t>(j * nx + i)] = v;
+  }
+}
+
+std::vector<std::pair<Vec3, size_t>> PocketGrid::components(const std::vector<uint8_t>& bits, size_t min) const {
+  std::vector<std::pair<Vec3, size_t>> out;
+  std::vector<int> depth(size(), -1);
+  std::vector<size_t> members;
+  std::deque<size_t> q;
+  auto nbrs = [&](size_t k, auto&& f) {
+    const long i = static_cast<long>(k) % nx, j = static_cast<long>(k) / nx;
+    if (i > 0) f(k - 1);
+    if (i + 1 < nx) f(k + 1);
+    if (j > 0) f(k - static_cast<size_t>(nx));
+    if (j + 1 < ny) f(k + static_cast<size_t>(nx));
+  };
+  std::vector<uint8_t> seen(size(), 0);
+  for (size_t s = 0; s < size(); ++s) {
+    if (!bits[s] || seen[s]) continue;
+    members.clear();
+    q.push_back(s);
+    seen[s] = 1;
+    while (!q.empty()) {
+      const size_t k = q.front();
+      q.pop_front();
+      members.push_back(k);
+      nbrs(k, [&](size_t n) {
+        if (bits[n] && !seen[n]) seen[n] = 1, q.push_back(n);
+      });
+    }
+    if (members.size() < min) continue;
+    // Layers from the piece's edge inward: the deepest sample stands for it.
+    for (size_t k : members) {
+      bool edge = false;
+      nbrs(k, [&](size_t n) { edge = edge || !bits[n]; });
+      const long i = static_cast<long>(k) % nx, j = static_cast<long>(k) / nx;
+      edge = edge || i == 0 || j == 0 || i + 1 == nx || j + 1 == ny;
+      if (edge) depth[k] = 0, q.push_back(k);
+    }
+    size_t deepest = members.front();
+    while (!q.empty()) {
+      const size_t k = q.front();
+      q.pop_front();
+      if (depth[k] > depth[deepest]) deepest = k;
+      nbrs(k, [&](size_t n) {
+        if (bits[n] && depth[n] < 0) depth[n] = depth[k] + 1, q.push_back(n);
+      });
+    }
+    out.push_back({sample(deepest), members.size()});
+  }
+  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  return out;
+}
+
+std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces, double r,
+                                               std::vector<uint8_t> material) const {
+  constexpr int kSamples = 90;  // 2 degrees each over the front half
+  double best = 0;
+  Vec3 at;
+  auto held = [&](double x, double y) {
+    const long i = static_cast<long>(std::floor((x - x0) / cell)), j = static_cast<long>(std::floor((y - y0) / cell));
+    return i >= 0 && j >= 0 && i < nx && j < ny && material[static_cast<size_t>(j * nx + i)];
+  };
+  for (const Piece& p : pieces) {
+    const double len = std::hypot(p.b.x - p.a.x, p.b.y - p.a.y);
+    if (len > 0) {
+      const double ux = (p.b.x - p.a.x) / len, uy = (p.b.y - p.a.y) / len;
+      const int steps = std::max(1, static_cast<int>(std::ceil(len / cell)));
+      for (int s = 0; s <= steps; ++s) {
+        const double t = len * s / steps, cx = p.a.x + ux * t, cy = p.a.y + uy * t;
+        int n = 0;
+        for (int k = 0; k < kSamples; ++k) {
+          const double th = -std::numbers::pi / 2 + (k + 0.5) * std::numbers::pi / kSamples;
+          const double dx = ux * std::cos(th) - uy * std::sin(th), dy = ux * std::sin(th) + uy * std::cos(th);
+          n += held(cx + r * dx, cy + r * dy);
+        }
+        const double deg = 180.0 * n / kSamples;
+        if (deg > best) best = deg, at = {cx, cy, p.a.z};
+      }
+    }
+    stamp(p.a, p.b, r, material, 0);
+  }
+  return {best, at};
+}
+
+}  // namespace bezcam::detail

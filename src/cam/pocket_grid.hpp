@@ -1,0 +1,45 @@
+#pragma once
+// Internal to cam: the square grid of samples the pocket certificate
+// (pocket_check.hpp) and the planner's search for material left read.
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "bezcam/cam/pocket_check.hpp"
+
+namespace bezcam::detail {
+
+/// A straight piece of the tool centre's path.
+struct Piece {
+  Vec3 a, b;
+  bool rapid = false;
+  size_t move = 0;  ///< the move it comes from
+};
+
+/// Distance from p to the segment ab in XY.
+double point_segment(const Vec3& p, const Vec3& a, const Vec3& b);
+
+/// Samples at the centres of `cell` x `cell` squares covering the loops'
+/// bounds (plus a cell); the cell grows until there are at most
+/// `max_cells`.
+struct PocketGrid {
+  PocketGrid(const PocketLoops& bounds, double cell, size_t max_cells);
+  double cell = 0, x0 = 0, y0 = 0;
+  long nx = 0, ny = 0;
+  size_t size() const { return static_cast<size_t>(nx * ny); }
+  Vec3 sample(size_t k) const;
+  /// 1 for the samples inside the loops (even-odd), 0 elsewhere.
+  std::vector<uint8_t> fill(const PocketLoops& loops) const;
+  /// Sets `v` on every sample within `radius` of the segment ab.
+  void stamp(const Vec3& a, const Vec3& b, double radius, std::vector<uint8_t>& bits, uint8_t v) const;
+  /// The 4-connected pieces of set samples of at least `min` samples: a
+  /// sample of each (the one farthest from the piece's edge) and its count,
+  /// largest first.
+  std::vector<std::pair<Vec3, size_t>> components(const std::vector<uint8_t>& bits, size_t min) const;
+  /// The largest engagement angle (degrees) along the pieces in order,
+  /// against `material` (copied; cleared as the tool sweeps it), and where.
+  std::pair<double, Vec3> engagement(const std::vector<Piece>& pieces, double r, std::vector<uint8_t> material) const;
+};
+
+}  // namespace bezcam::detail

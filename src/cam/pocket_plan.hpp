@@ -1,0 +1,54 @@
+#pragma once
+// Internal to cam: the tool centre's passes that clear a pocket, in XY
+// (pocket_plan.cpp), before any depth or entry (pocket_emit.cpp).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bezcam/cam/pocket_check.hpp"
+#include "bezcam/job/job.hpp"
+#include "pocket_area.hpp"
+
+namespace bezcam::detail {
+
+struct PocketPlanInput {
+  PocketLoops walls;      ///< closed polylines (even-odd)
+  double wall_bound = 0;  ///< the walls lie within this of the drawn curves
+  double radius = 0, stock = 0, finish = 0;
+  double stepover = 0;
+  PocketPattern pattern = PocketPattern::offset;
+  double angle_deg = 0;  ///< zigzag
+  bool climb = true;
+  double tolerance = 0;
+  /// Added to every offset from the walls: the flattening, the offset's
+  /// chords and rounding, so that no pass comes nearer than r + stock.
+  double margin = 0;
+  std::optional<double> rest_from;  ///< the radius of the tool before
+  double cell = 0;                  ///< the grid the search for material left reads
+  double helix_radius = 0;          ///< the entry's helix (0: no helix): rings start where one fits
+};
+
+/// One pass: a polyline in XY in the order of travel (a ring repeats its
+/// first point at the end).
+struct PocketPass {
+  std::vector<Vec3> pts;
+  /// Reached from the previous pass's end by a straight feed at depth
+  /// (inside the centres' area, no longer than the tool's diameter).
+  bool linked = false;
+};
+
+struct PocketPlan {
+  std::vector<PocketPass> passes;
+  Area centres;        ///< where the tool centre may go: the region eroded by r + stock (+ margin)
+  size_t cleanup = 0;  ///< the extra moves added where rings left material
+};
+
+/// The centre of a helix of radius R or less (R, 3/4, 1/2, 1/4 of it; the
+/// one used in `used`) whose circle, enlarged by `grow`, lies in `centres`
+/// and passes near p (a short straight line in `centres` joins them).
+std::optional<Vec3> helix_centre(const Area& centres, const Vec3& p, double R, double grow, double& used);
+
+/// The passes; InputError-free: the caller refuses an empty `centres`.
+PocketPlan plan_pocket(const PocketPlanInput& in);
+
+}  // namespace bezcam::detail
