@@ -141,9 +141,9 @@ void stock_section(std::ostringstream& h, const SetupSheetInput& in, const std::
   h << "<section id=\"stock\"><h2>Stock and origin</h2><table>";
   if (!b.empty()) {
     h << "<tr><th>Part (X)</th><td>" << num(b.lo.x) << " to " << num(b.hi.x) << " " << u << " (" << num(b.hi.x - b.lo.x)
-      << " " << u << " wide)</td></tr>";
+      << " " << u << ")</td></tr>";
     h << "<tr><th>Part (Y)</th><td>" << num(b.lo.y) << " to " << num(b.hi.y) << " " << u << " (" << num(b.hi.y - b.lo.y)
-      << " " << u << " deep)</td></tr>";
+      << " " << u << ")</td></tr>";
   }
   if (const Box3 r = tool_reach(p); !r.empty())
     h << "<tr><th>The tools reach</th><td>X " << num(r.lo.x) << " to " << num(r.hi.x) << ", Y " << num(r.lo.y) << " to "
@@ -177,7 +177,7 @@ void tools_section(std::ostringstream& h, const SetupSheetInput& in, const std::
                           : "")
       << "</td><td class=\"n\">" << (t.flute_length ? num(*t.flute_length) + " " + u : "") << "</td><td>";
     for (size_t i = 0; i < t.entities.size(); ++i) h << (i ? ", " : "") << esc(t.entities[i]);
-    h << "</td><td class=\"n\">Z " << num(t.top_z) << " to " << num(t.deepest_z) << "</td><td class=\"n\">"
+    h << "</td><td class=\"n\">Z " << num(t.top_z) << " to " << num(t.deepest_z) << " " << u << "</td><td class=\"n\">"
       << esc(format_seconds(t.time_s)) << "</td></tr>";
   }
   h << "</table><p class=\"note\">Time: the moves of the tool's entities ("
@@ -239,9 +239,9 @@ void times_section(std::ostringstream& h, const SetupSheetInput& in) {
   h << "<section id=\"times\"><h2>Times</h2><p id=\"cycle-time\">" << esc(sheet_cycle_time(in)) << "</p><table>";
   if (const MotionPlan* q = in.plan)
     h << "<tr><th>Planned on the motion model</th><td>cycle " << esc(format_seconds(q->cycle_time_s)) << ": cutting "
-      << esc(format_seconds(q->cutting_time_s)) << ", rapids " << esc(format_seconds(q->rapid_time_s)) << ", pauses "
-      << esc(format_seconds(q->pause_time_s)) << "; mean feed " << format_significant(q->mean_feed_ratio * 100, 3)
-      << " % of programmed</td></tr>";
+      << esc(format_seconds(q->cutting_time_s)) << ", rapids " << esc(format_seconds(q->rapid_time_s))
+      << ", pauses (tool changes, dwells) " << esc(format_seconds(q->pause_time_s)) << "; mean feed "
+      << format_significant(q->mean_feed_ratio * 100, 3) << " % of programmed</td></tr>";
   h << "<tr><th>Feeds as programmed</th><td>" << esc(format_seconds(rep.total.time_s()))
     << " (no acceleration): " << num(rep.total.feed_length) << " " << u << " at feed, " << num(rep.total.rapid_length)
     << " " << u << " rapid at " << num(rep.rapid_rate) << " " << u << "/min</td></tr>";
