@@ -93,8 +93,10 @@ Box3 part_bounds(const Job& job, const Program& p) {
 }
 
 // How far the tools reach in XY: the cutting moves (sampled along curved
-// blocks) widened by the radius of the tool that cuts each entity.
-Box3 tool_reach(const Program& p) {
+// blocks) widened by the radius of the tool that cuts each entity;
+// `centre_only` is set when an entity's tool has no diameter given.
+Box3 tool_reach(const Program& p, bool& centre_only) {
+  centre_only = false;
   std::vector<double> radius;
   for (const EntityReport& r : p.entities) {
     if (r.entity < 0) continue;
@@ -102,6 +104,7 @@ Box3 tool_reach(const Program& p) {
     double d = r.tool_width;
     const auto t = std::find_if(p.tools.begin(), p.tools.end(), [&](const JobTool& j) { return j.number == r.tool; });
     if (d <= 0 && t != p.tools.end() && t->diameter) d = *t->diameter;
+    centre_only = centre_only || d <= 0;
     radius[static_cast<size_t>(r.entity)] = d / 2;
   }
   Box3 b;
@@ -145,9 +148,13 @@ void stock_section(std::ostringstream& h, const SetupSheetInput& in, const std::
     h << "<tr><th>Part (Y)</th><td>" << num(b.lo.y) << " to " << num(b.hi.y) << " " << u << " (" << num(b.hi.y - b.lo.y)
       << " " << u << ")</td></tr>";
   }
-  if (const Box3 r = tool_reach(p); !r.empty())
+  bool centre_only = false;
+  if (const Box3 r = tool_reach(p, centre_only); !r.empty())
     h << "<tr><th>The tools reach</th><td>X " << num(r.lo.x) << " to " << num(r.hi.x) << ", Y " << num(r.lo.y) << " to "
-      << num(r.hi.y) << " " << u << " (about, tool edges included)</td></tr>";
+      << num(r.hi.y) << " " << u
+      << (centre_only ? " (about: the tool centre where no tool diameter is given, tool edges elsewhere)"
+                      : " (about, tool edges included)")
+      << "</td></tr>";
   h << "<tr><th>Stock top</th><td>Z " << num(top) << " " << u << "</td></tr>";
   h << "<tr><th>Deepest cut</th><td>Z " << num(deepest) << " " << u << " (" << num(top - deepest) << " " << u
     << " below the stock top)</td></tr>";

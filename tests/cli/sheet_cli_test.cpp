@@ -127,6 +127,11 @@ TEST(SheetCommand, OperationsFollowTheCuttingOrderWithTheirFeeds) {
   EXPECT_NE(html.find("bull nose end mill"), std::string::npos);
   EXPECT_NE(html.find("r 0.5 mm"), std::string::npos);  // the bull's corner radius
   EXPECT_NE(html.find("Z0 on the stock top"), std::string::npos);
+  EXPECT_NE(html.find("X0 at the part's centre; Y0 at the part's centre"), std::string::npos);
+  // Beyond the part's +-36.7487: the outline is cut outside with a 6 mm tool, its leads further out.
+  EXPECT_NE(html.find("The tools reach</th><td>X -42.755 to 42.756, Y -42.756 to 49.096 mm (about, tool edges "
+                      "included)"),
+            std::string::npos);
 }
 
 TEST(SheetCommand, ARefusedJobWritesNothingAsConvertRefusesIt) {
@@ -157,6 +162,8 @@ TEST(SheetCommand, ADrawingTakesConvertsSettings) {
   EXPECT_NE(html.find("output arcs"), std::string::npos);
   EXPECT_GT(count(html, "<tr class=\"operation\""), 1u);
   EXPECT_NE(html.find(">600<br>"), std::string::npos);
+  // No tool diameter given: the reach is the tool centre's, and says so.
+  EXPECT_NE(html.find("(about: the tool centre where no tool diameter is given"), std::string::npos);
 }
 
 // Chromium as Debian packages it (.ci/packages), headless.
