@@ -28,6 +28,7 @@ CommandLine::CommandLine()
   add(setup_import(app_, args_.import_drawing), [this] { return run_import(args_.import_drawing); });
   add(setup_lint(app_, args_.lint), [this] { return run_lint(args_.lint); });
   add(setup_preview(app_, args_.preview), [this] { return run_preview(args_.preview); });
+  add(setup_sheet(app_, args_.sheet), [this] { return run_sheet(args_.sheet); });
   add(setup_simulate(app_, args_.simulate), [this] { return run_simulate(args_.simulate); });
   add(setup_status(app_, args_.status), [this] { return run_status(args_.status); });
   add(setup_stream(app_, args_.stream), [this] { return run_stream(args_.stream); });

@@ -19,6 +19,7 @@ struct Arguments {
   ImportArgs import_drawing;
   LintArgs lint;
   PreviewArgs preview;
+  SheetArgs sheet;
   SimulateArgs simulate;
   StatusArgs status;
   StreamArgs stream;

@@ -71,6 +71,16 @@ struct PreviewArgs {
 CLI::App* setup_preview(CLI::App& app, PreviewArgs& o);
 int run_preview(const PreviewArgs& o);
 
+/// bezcam sheet JOB -o SHEET.html: the setup sheet of the job's program.
+struct SheetArgs {
+  std::string job, out;
+  ConversionOptions conv;
+  PostOptions post;
+  bool quiet = false;
+};
+CLI::App* setup_sheet(CLI::App& app, SheetArgs& o);
+int run_sheet(const SheetArgs& o);
+
 /// bezcam simulate --listen HOST:PORT | --program FILE: the simulated controller.
 struct SimulateArgs {
   std::string listen, program, machine = "generic", trace, report, motion;

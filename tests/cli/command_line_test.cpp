@@ -161,11 +161,11 @@ TEST(CliInProcess, AnUnknownCommandIsNamedWithTheOneMeant) {
   EXPECT_EQ(typo.err,
             "bezcam: error: there is no command convrt: did you mean convert?\n  (bezcam --help lists the "
             "commands)\n");
-  const auto other = run_cli({"sheet", "x.json"});
+  const auto other = run_cli({"engrave", "x.json"});
   EXPECT_EQ(other.status, 2);
-  EXPECT_EQ(other.err, "bezcam: error: there is no command sheet\n  (bezcam --help lists the commands)\n");
+  EXPECT_EQ(other.err, "bezcam: error: there is no command engrave\n  (bezcam --help lists the commands)\n");
   // The executable says the same.
-  EXPECT_EQ(testproc::run(BEZCAM_EXE, {"sheet", "x.json"}).err, other.err);
+  EXPECT_EQ(testproc::run(BEZCAM_EXE, {"engrave", "x.json"}).err, other.err);
 }
 
 TEST(CliInProcess, ARunPrintsOnTheStreamsItWasGiven) {
