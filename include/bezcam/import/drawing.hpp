@@ -64,10 +64,34 @@ struct Drawing {
 /// `tolerance`, `units`, `machine`; every other key goes to the `job`
 /// object and is validated as the job file's keys are) and the layers to
 /// keep (empty: all).
+/// A setting of the contours a selector picks (`--set SELECTOR:KEY=VALUE`).
+struct ScopedSetting {
+  std::string selector, key, value;
+};
+
+/// A selector picks a contour when it matches, as a shell glob (`*`, `?`,
+/// `[...]`), the contour's layer or its id (selects()).
 struct ImportOptions {
   std::vector<std::pair<std::string, std::string>> settings;
   std::vector<std::string> layers;
+  /// Settings of single entities, applied in the order given (a later
+  /// value of a key wins), over the job-wide `settings`: the keys an
+  /// entity of a job file takes (not tolerance, units, machine, order,
+  /// program_number).
+  std::vector<ScopedSetting> scoped;
+  /// The contours to cut: those `only` selects (all when empty) that
+  /// `skip` does not select.
+  std::vector<std::string> only, skip;
 };
+
+/// True when `selector` matches, as a shell glob, the contour's layer or
+/// its id.
+bool selects(const std::string& selector, const Contour& c);
+
+/// Checks the options before a drawing is read: each scoped setting's key
+/// is a key an entity takes (settings_json()'s checks), refused at the
+/// setting `settings.SELECTOR:KEY` otherwise.
+void check_options(const ImportOptions& opt);
 
 /// Joins contours of the same layer that meet end to end within
 /// 1e-6 x size() into one (reversing a contour where that makes it meet),
@@ -79,8 +103,11 @@ void join_contours(Drawing& d);
 /// exactly). With the setting `side` "outside" (or "inside"), each closed
 /// contour's entity gets its own side by its even-odd depth among the kept
 /// closed contours (flatten/nesting.hpp): even the side asked for, odd the
-/// other (docs/import.md, "Sides of a part"). Throws InputError when a
-/// layer named in `opt` is not in the drawing or nothing is left to cut.
+/// other (docs/import.md, "Sides of a part"); each entity's scoped
+/// settings are written on it (a `side` given there wins over nesting).
+/// Throws InputError when a layer named in `opt` is not in the drawing, a
+/// selector matches no layer and no id of it (naming those it has), or
+/// nothing is left to cut.
 std::string job_json(const Drawing& d, const ImportOptions& opt = {});
 
 /// The job, built in memory (JobBuilder) from what job_json() writes: the
