@@ -33,10 +33,17 @@ void add_drawing_options(CLI::App* s, ConversionOptions& o) {
                 "a job setting for a drawing (.svg, .dxf), KEY=VALUE, repeatable: any key of the "
                 "job file's \"job\" object (feed, cut_z, side, tool_diameter ...) or tolerance, units, "
                 "machine; dotted keys nest (tabs.count=4), VALUE is JSON when it reads as JSON "
-                "(lead={\"radius\":4}), else text; an unknown key is refused")
-      ->type_name("KEY=VALUE");
+                "(lead={\"radius\":4}), else text; an unknown key is refused. SELECTOR:KEY=VALUE sets an "
+                "entity's key on the entities whose layer or id matches SELECTOR, a glob ('HOLES*:tool=2')")
+      ->type_name("[SELECTOR:]KEY=VALUE");
   s->add_option("--layer", o.layers, "a layer of the drawing to cut, repeatable (default: every layer)")
       ->type_name("NAME");
+  s->add_option("--only", o.only,
+                "cut only the drawing's entities whose layer or id matches SELECTOR, a glob; repeatable")
+      ->type_name("SELECTOR");
+  s->add_option("--skip", o.skip,
+                "leave out the drawing's entities whose layer or id matches SELECTOR, a glob; repeatable")
+      ->type_name("SELECTOR");
 }
 
 }  // namespace bezcam::cli

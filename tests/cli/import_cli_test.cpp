@@ -54,6 +54,57 @@ TEST(ImportCommand, SettingsAndLayersOfADrawing) {
   EXPECT_NE(c.out.find("layer \"OUTLINE\": read 4 ARC, 4 LINE\n"), std::string::npos) << c.out;
 }
 
+// The part from the drawing in one command line: the small holes on a
+// second tool picked by id glob, tabs on the outline by layer; importing
+// with the same options then converting cuts the same program.
+TEST(ImportCommand, PerEntitySettingsFromTheCommandLine) {
+  testproc::TempDir dir;
+  const std::vector<std::string> options = {"--set", "feed=600",
+                                            "--set", "plunge_feed=200",
+                                            "--set", "safe_z=5",
+                                            "--set", "cut_z=-1",
+                                            "--set", "side=outside",
+                                            "--set", "tool=1",
+                                            "--set", "tool_diameter=6",
+                                            "--set", "HOLES:3[7-9A]:tool=2",
+                                            "--set", "HOLES:3[7-9A]:tool_diameter=2",
+                                            "--set", R"(OUTLINE:tabs={"count":4,"width":5,"height":0.5})"};
+  const fs::path direct = dir / "direct.nc", job = dir / "part.json", imported = dir / "imported.nc";
+  std::vector<std::string> args = {"convert", "samples/part.dxf", "--output", "arcs", "-q", "-o", direct.string()};
+  args.insert(args.end(), options.begin(), options.end());
+  auto r = bezcam(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string g = testproc::slurp(direct);
+  EXPECT_NE(g.find("(T1: 6 mm flat end mill: OUTLINE:2F+7, HOLES:3B)"), std::string::npos) << g;
+  EXPECT_NE(g.find("(T2: 2 mm flat end mill: HOLES:37, HOLES:38, HOLES:39, HOLES:3A)"), std::string::npos) << g;
+  // The tabs lift the outline's cut from Z-1 to Z-0.5, and only its cut.
+  const size_t holes = g.find("(entity HOLES:37");
+  ASSERT_NE(holes, std::string::npos);
+  EXPECT_NE(g.substr(0, holes).find("Z-0.5"), std::string::npos);
+  EXPECT_EQ(g.find("Z-0.5", holes), std::string::npos);
+  args = {"import", "samples/part.dxf", "-q", "-o", job.string()};
+  args.insert(args.end(), options.begin(), options.end());
+  r = bezcam(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(bezcam({"convert", job.string(), "--output", "arcs", "-q", "-o", imported.string()}).status, 0);
+  const auto body = [](std::string s) { return s.substr(s.find('\n', s.find('\n') + 1)); };
+  EXPECT_EQ(body(testproc::slurp(imported)), body(g));
+  // A selector that matches nothing names what the drawing has; --only
+  // and --skip apply to drawings.
+  r = bezcam({"convert", "samples/part.dxf", "--skip", "HOLE", "-o", direct.string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err_first_line(),
+            "bezcam: error: --skip: samples/part.dxf has no layer and no entity matching \"HOLE\"; its layers are "
+            "\"HOLES\", \"NOTES\", \"OUTLINE\", its entities \"OUTLINE:2F+7\", \"HOLES:37\", \"HOLES:38\", "
+            "\"HOLES:39\", \"HOLES:3A\", \"HOLES:3B\"");
+  r = bezcam({"convert", "samples/curve-semicircle.json", "--only", "x", "-o", direct.string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err_first_line().rfind("bezcam: error: --only: ", 0), 0u) << r.err;
+  r = bezcam({"import", "samples/part.dxf", "--only", "OUTLINE", "--skip", "*:2F*"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("found none"), std::string::npos) << r.err;
+}
+
 const char* kSquare = R"(<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="60mm" viewBox="0 0 60 60">
   <rect id="part" x="10" y="10" width="40" height="40"/>
 </svg>
