@@ -62,8 +62,8 @@ void check_options(const ImportOptions& opt) {
     if (std::find(kJobOnly.begin(), kJobOnly.end(), first) != kJobOnly.end())
       throw InputError(errc::usage_setting, Place::at_setting(name),
                        "\"" + first +
-                           "\" is a setting of the whole job, not of an entity; give it without a selector (--set " +
-                           s.key + "=" + s.value + ")");
+                           "\" is a setting of the whole job, not of an entity; give it without a selector (" + s.key +
+                           "=" + s.value + ")");
     try {
       const std::pair<std::string, std::string> kv{s.key, s.value};
       (void)settings_json(std::span(&kv, 1));

@@ -129,7 +129,7 @@ TEST(Selection, RefusesWhatAnEntityDoesNotTakeAtTheOptionThatGaveIt) {
   o.scoped = {{"HOLES", "tolerance", "0.1"}};
   EXPECT_EQ(refusal([&] { check_options(o); }),
             "settings.HOLES:tolerance: \"tolerance\" is a setting of the whole job, not of an entity; give it "
-            "without a selector (--set tolerance=0.1)");
+            "without a selector (tolerance=0.1)");
   o.scoped = {{"HOLES", "fed", "1"}};
   EXPECT_NE(refusal([&] { check_options(o); }).find("settings.HOLES:fed: unknown key \"fed\": did you mean \"feed\"?"),
             std::string::npos);
