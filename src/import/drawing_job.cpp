@@ -346,6 +346,11 @@ Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>*
   const std::set<std::string> keep = kept_layers(d, opt);
   const SettingsJson settings = settings_json(opt.settings);
   const std::vector<const Contour*> kept = kept_contours(d, keep, opt);
+  if (warnings)
+    for (const Gap& g : d.closed_gaps)
+      warnings->push_back("contour " + quoted(g.id) + ": a gap of " + format_significant(g.size, 3) + " mm at (" +
+                          format_significant(g.at.x, 6) + ", " + format_significant(g.at.y, 6) +
+                          ") closed by the join tolerance (the ends moved to meet)");
   const std::vector<std::string> sides = sides_by_nesting(d, kept, settings, warnings);
   std::vector<JobParams> params;
   for (std::size_t k = 0; k < kept.size(); ++k) {
