@@ -41,6 +41,14 @@ void add_drawing_options(CLI::App* s, ConversionOptions& o) {
   s->add_option("--only", o.only,
                 "cut only the drawing's entities whose layer or id matches SELECTOR, a glob; repeatable")
       ->type_name("SELECTOR");
+  s->add_option("--join-tolerance", o.join_tolerance,
+                "join a DXF's entities whose ends are at most D apart (mm, after --scale), moving the ends to "
+                "meet; each gap wider than the default (1e-6 of the drawing's size) is reported")
+      ->type_name("D")
+      ->check(positive_number());
+  s->add_option("--scale", o.scale, "multiply the drawing's coordinates by S")
+      ->type_name("S")
+      ->check(positive_number());
   s->add_option("--skip", o.skip,
                 "leave out the drawing's entities whose layer or id matches SELECTOR, a glob; repeatable")
       ->type_name("SELECTOR");

@@ -18,6 +18,8 @@ struct ConversionOptions {
   std::vector<std::string> layers;  ///< --layer NAME: the drawing's layers to cut (default all)
   std::vector<std::string> only;    ///< --only SELECTOR: the drawing's layers or entities to cut (default all)
   std::vector<std::string> skip;    ///< --skip SELECTOR: the drawing's layers or entities left out
+  double join_tolerance = 0;        ///< --join-tolerance D: a DXF's ends joined within D (0: the default)
+  double scale = 1;                 ///< --scale S: the drawing's coordinates times S
 };
 
 /// Adds --machine, --tolerance, --output, --strict, --set and --layer to

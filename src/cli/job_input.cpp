@@ -57,13 +57,21 @@ io.skip = o.skip;
 return io;
 }  // namespace bezcam::cli
 
+import::ReadOptions read_options(const ConversionOptions& o){import::ReadOptions ro;
+ro.scale = o.scale;
+ro.join_tolerance = o.join_tolerance;
+return ro;
+}
+
 Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing) {
   if (!import::is_drawing(path)) {
-    const char* option = !o.sets.empty()     ? "--set"
-                         : !o.layers.empty() ? "--layer"
-                         : !o.only.empty()   ? "--only"
-                         : !o.skip.empty()   ? "--skip"
-                                             : nullptr;
+    const char* option = !o.sets.empty()        ? "--set"
+                         : !o.layers.empty()    ? "--layer"
+                         : !o.only.empty()      ? "--only"
+                         : !o.skip.empty()      ? "--skip"
+                         : o.join_tolerance > 0 ? "--join-tolerance"
+                         : o.scale != 1         ? "--scale"
+                                                : nullptr;
     if (option)
       throw InputError(errc::import_setting, Place::at_option(option),
                        path +
@@ -72,11 +80,13 @@ Job read_job(const std::string& path, const ConversionOptions& o, import::Drawin
     return read_job(path);
   }
   const import::ImportOptions io = import_options(o);
-  import::Drawing d = import::read_drawing(path);
+  import::Drawing d = import::read_drawing(path, read_options(o));
   if (drawing) *drawing = d;
   std::vector<std::string> warnings;
   try {
     Job job = import::to_job(d, io, &warnings);
+    // Printed with the job's own warnings, as a job file's are.
+    job.warnings.insert(job.warnings.begin(), warnings.begin(), warnings.end());
     return job;
   } catch (const Error&) {
     print_warnings(warnings);

@@ -3,6 +3,7 @@
 // converting is converting the drawing, `--set` reaches the program,
 // `--layer` keeps layers, `check` lists what each layer held; `--set` takes
 // dotted keys and JSON values and refuses a key the job does not have.
+#include <fstream>
 #include <gtest/gtest.h>
 
 #include "in_process.hpp"
@@ -103,6 +104,44 @@ TEST(ImportCommand, PerEntitySettingsFromTheCommandLine) {
   r = bezcam({"import", "samples/part.dxf", "--only", "OUTLINE", "--skip", "*:2F*"});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("found none"), std::string::npos) << r.err;
+}
+
+// A 10 mm square whose last corner is 0.01 mm open: check says where,
+// --join-tolerance closes it and says so, --scale multiplies the drawing.
+TEST(ImportCommand, JoinToleranceAndScale) {
+  testproc::TempDir dir;
+  const fs::path dxf = dir / "gap.dxf", nc = dir / "gap.nc";
+  {
+    std::ofstream f(dxf);
+    f << "0\nSECTION\n2\nENTITIES\n"
+         "0\nLINE\n5\nA1\n8\nOUT\n10\n0\n20\n0\n11\n10\n21\n0\n"
+         "0\nLINE\n5\nA2\n8\nOUT\n10\n10\n20\n0\n11\n10\n21\n10\n"
+         "0\nLINE\n5\nA3\n8\nOUT\n10\n10\n20\n10\n11\n0\n21\n10\n"
+         "0\nLINE\n5\nA4\n8\nOUT\n10\n0.01\n20\n10\n11\n0\n21\n0\n"
+         "0\nENDSEC\n0\nEOF\n";
+  }
+  auto r = bezcam({"check", dxf.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("  nearly closed: \"OUT:A1+3\", its ends 0.01 mm apart at (0.005, 10); --join-tolerance 0.01 "
+                       "closes it\n"),
+            std::string::npos)
+      << r.out;
+  r = bezcam({"check", dxf.string(), "--join-tolerance", "0.01"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("nearly closed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bounds (0, 0) to (10, 10), closed\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("bezcam: warning: contour \"OUT:A1+3\": a gap of 0.01 mm at (0.005, 10) closed by the join "
+                       "tolerance (the ends moved to meet)"),
+            std::string::npos)
+      << r.err;
+  r = bezcam({"convert", dxf.string(), "--scale", "2.5", "--join-tolerance", "0.03", "--set", "feed=100", "--set",
+              "cut_z=-1", "-o", nc.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("a gap of 0.025 mm at (0.0125, 25)"), std::string::npos) << r.err;
+  EXPECT_NE(testproc::slurp(nc).find("X25."), std::string::npos);
+  r = bezcam({"check", dxf.string(), "--scale", "0"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err_first_line(), "bezcam: error: --scale: expected a number > 0, found 0");
 }
 
 const char* kSquare = R"(<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="60mm" viewBox="0 0 60 60">
