@@ -1,4 +1,5 @@
 // bezcam check JOB.json: validates and describes a job without writing G-code.
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -31,6 +32,12 @@ CLI::App* setup_check(CLI::App& app, CheckArgs& o) {
 
 namespace {
 
+// `v` (> 0) rounded up to 3 significant digits: a tolerance no smaller.
+double up3(double v) {
+  const double p = std::pow(10.0, 2 - std::floor(std::log10(v)));
+  return std::ceil(v * p) / p;
+}
+
 // What a drawing held, per layer: elements read (by kind) and skipped.
 void print_drawing(const import::Drawing& d) {
   const auto list = [](const std::map<std::string, size_t>& m) {
@@ -46,6 +53,12 @@ void print_drawing(const import::Drawing& d) {
     if (!l.skipped.empty()) std::cout << "; skipped " << list(l.skipped);
     std::cout << "\n";
   }
+  // Open contours whose ends nearly meet (within 1 % of the drawing's
+  // size): the gap, where it is, and the option that closes it.
+  for (const import::Gap& g : import::nearly_closed(d, 0.01 * d.size()))
+    std::cout << "  nearly closed: \"" << g.id << "\", its ends " << std::setprecision(3) << g.size << " mm apart at ("
+              << std::setprecision(6) << g.at.x << ", " << g.at.y << "); --join-tolerance " << std::setprecision(3)
+              << up3(g.size) << " closes it\n";
 }
 
 }  // namespace

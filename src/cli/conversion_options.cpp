@@ -33,10 +33,25 @@ void add_drawing_options(CLI::App* s, ConversionOptions& o) {
                 "a job setting for a drawing (.svg, .dxf), KEY=VALUE, repeatable: any key of the "
                 "job file's \"job\" object (feed, cut_z, side, tool_diameter ...) or tolerance, units, "
                 "machine; dotted keys nest (tabs.count=4), VALUE is JSON when it reads as JSON "
-                "(lead={\"radius\":4}), else text; an unknown key is refused")
-      ->type_name("KEY=VALUE");
+                "(lead={\"radius\":4}), else text; an unknown key is refused. SELECTOR:KEY=VALUE sets an "
+                "entity's key on the entities whose layer or id matches SELECTOR, a glob ('HOLES*:tool=2')")
+      ->type_name("[SELECTOR:]KEY=VALUE");
   s->add_option("--layer", o.layers, "a layer of the drawing to cut, repeatable (default: every layer)")
       ->type_name("NAME");
+  s->add_option("--only", o.only,
+                "cut only the drawing's entities whose layer or id matches SELECTOR, a glob; repeatable")
+      ->type_name("SELECTOR");
+  s->add_option("--join-tolerance", o.join_tolerance,
+                "join a DXF's entities whose ends are at most D apart (mm, after --scale), moving the ends to "
+                "meet; each gap wider than the default (1e-6 of the drawing's size) is reported")
+      ->type_name("D")
+      ->check(positive_number());
+  s->add_option("--scale", o.scale, "multiply the drawing's coordinates by S")
+      ->type_name("S")
+      ->check(positive_number());
+  s->add_option("--skip", o.skip,
+                "leave out the drawing's entities whose layer or id matches SELECTOR, a glob; repeatable")
+      ->type_name("SELECTOR");
 }
 
 }  // namespace bezcam::cli

@@ -16,6 +16,10 @@ struct ConversionOptions {
   bool strict = false;              ///< --strict: accepted for scripts; every unknown key is refused anyway
   std::vector<std::string> sets;    ///< --set KEY=VALUE: job settings of a drawing (.svg, .dxf)
   std::vector<std::string> layers;  ///< --layer NAME: the drawing's layers to cut (default all)
+  std::vector<std::string> only;    ///< --only SELECTOR: the drawing's layers or entities to cut (default all)
+  std::vector<std::string> skip;    ///< --skip SELECTOR: the drawing's layers or entities left out
+  double join_tolerance = 0;        ///< --join-tolerance D: a DXF's ends joined within D (0: the default)
+  double scale = 1;                 ///< --scale S: the drawing's coordinates times S
 };
 
 /// Adds --machine, --tolerance, --output, --strict, --set and --layer to
@@ -23,7 +27,7 @@ struct ConversionOptions {
 /// command).
 void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string& output_help);
 
-/// --set and --layer: how a drawing (.svg, .dxf) given instead of a job is
+/// --set, --layer, --only and --skip: how a drawing (.svg, .dxf) given instead of a job is
 /// read (import).
 void add_drawing_options(CLI::App* s, ConversionOptions& o);
 

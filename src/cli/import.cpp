@@ -31,7 +31,7 @@ int run_import(const ImportArgs& o) {
     throw InputError(errc::import_not_a_drawing, Place::at_file(o.drawing),
                      "expected a drawing named .svg or .dxf, found another name (a job file needs no import)");
   const import::ImportOptions io = import_options(o.conv);
-  const import::Drawing d = import::read_drawing(o.drawing);
+  const import::Drawing d = import::read_drawing(o.drawing, read_options(o.conv));
   const std::string text = import::job_json(d, io);
   // The job must read back (the same checks convert makes of the file)
   // before a byte is written.

@@ -41,29 +41,54 @@ std::pair<std::string, std::string> split_setting(const std::string& kv) {
 }  // namespace
 
 import::ImportOptions import_options(const ConversionOptions& o){import::ImportOptions io;
-for (const auto& kv : o.sets) io.settings.push_back(split_setting(kv));
+for (const auto& kv : o.sets) {
+  auto [key, value] = split_setting(kv);
+  // SELECTOR:KEY: keys have no colon, selectors (DXF ids) may.
+  if (const size_t colon = key.rfind(':'); colon != std::string::npos)
+    io.scoped.push_back({key.substr(0, colon), key.substr(colon + 1), value});
+  else
+    io.settings.emplace_back(std::move(key), std::move(value));
+}
 // Keys and values checked before the drawing is read: an unknown key is
 // a mistake on the command line, whatever the drawing holds.
 (void)settings_json(io.settings);
+import::check_options(io);
 io.layers = o.layers;
+io.only = o.only;
+io.skip = o.skip;
 return io;
 }  // namespace bezcam::cli
 
+import::ReadOptions read_options(const ConversionOptions& o){import::ReadOptions ro;
+ro.scale = o.scale;
+ro.join_tolerance = o.join_tolerance;
+return ro;
+}
+
 Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing) {
   if (!import::is_drawing(path)) {
-    if (!o.sets.empty() || !o.layers.empty())
-      throw InputError(errc::import_setting, Place::at_option(o.sets.empty() ? "--layer" : "--set"),
+    const char* option = !o.sets.empty()        ? "--set"
+                         : !o.layers.empty()    ? "--layer"
+                         : !o.only.empty()      ? "--only"
+                         : !o.skip.empty()      ? "--skip"
+                         : o.join_tolerance > 0 ? "--join-tolerance"
+                         : o.scale != 1         ? "--scale"
+                                                : nullptr;
+    if (option)
+      throw InputError(errc::import_setting, Place::at_option(option),
                        path +
-                           " is a job file, which states its own settings and has no layers; --set and --layer "
-                           "apply to drawings (.svg, .dxf)");
+                           " is a job file, which states its own settings and has no layers; --set, --layer, --only "
+                           "and --skip apply to drawings (.svg, .dxf)");
     return read_job(path);
   }
   const import::ImportOptions io = import_options(o);
-  import::Drawing d = import::read_drawing(path);
+  import::Drawing d = import::read_drawing(path, read_options(o));
   if (drawing) *drawing = d;
   std::vector<std::string> warnings;
   try {
     Job job = import::to_job(d, io, &warnings);
+    // Printed with the job's own warnings, as a job file's are.
+    job.warnings.insert(job.warnings.begin(), warnings.begin(), warnings.end());
     return job;
   } catch (const Error&) {
     print_warnings(warnings);

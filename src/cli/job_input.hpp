@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bezcam/import/drawing.hpp"
+#include "bezcam/import/read_drawing.hpp"
 #include "bezcam/job/job.hpp"
 #include "conversion_options.hpp"
 
@@ -21,6 +22,8 @@ Job read_job(const std::string& path);
 Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing = nullptr);
 /// The --set and --layer options as import options (KEY=VALUE checked).
 import::ImportOptions import_options(const ConversionOptions& o);
+/// The --scale and --join-tolerance options as read options.
+import::ReadOptions read_options(const ConversionOptions& o);
 /// Prints warnings (of reading a job, of converting it) on stderr as
 /// `bezcam: warning: ...`.
 void print_warnings(const std::vector<std::string>& warnings);

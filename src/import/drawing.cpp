@@ -91,9 +91,33 @@ double Drawing::size() const {
   return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
 }
 
-void join_contours(Drawing& d) {
-  const double eps = 1e-6 * d.size();
+void scale_drawing(Drawing& d, double s) {
+  for (Contour& c : d.contours) {
+    for (Piece& p : c.pieces)
+      for (Vec3& q : p.points) q = q * s;
+    for (Vec3& q : c.interpolation.through) q = q * s;
+  }
+}
+
+std::vector<Gap> nearly_closed(const Drawing& d, double within) {
+  std::vector<Gap> out;
+  for (const Contour& c : d.contours) {
+    if (c.closed || c.is_interpolation || c.pieces.empty()) continue;
+    const Vec3 a = c_start(c), b = c_end(c);
+    if (dist(a, b) <= within) out.push_back({c.id, dist(a, b), (a + b) * 0.5});
+  }
+  return out;
+}
+
+void join_contours(Drawing& d, double tolerance) {
+  const double fixed = 1e-6 * d.size(), eps = std::max(fixed, tolerance);
+  std::vector<Gap> gaps;  // of the contour being joined
   const auto near = [&](const Vec3& a, const Vec3& b) { return dist(a, b) <= eps; };
+  // Two ends that are made to meet: their gap noted when the default
+  // distance would not have joined them.
+  const auto joins = [&](const Vec3& a, const Vec3& b) {
+    if (dist(a, b) > fixed) gaps.push_back({"", dist(a, b), (a + b) * 0.5});
+  };
   std::vector<Contour> out;
   std::vector<bool> used(d.contours.size(), false);
   for (size_t i = 0; i < d.contours.size(); ++i) {
@@ -105,6 +129,7 @@ void join_contours(Drawing& d) {
       continue;
     }
     size_t joined = 0;
+    gaps.clear();
     for (bool grew = true; grew;) {
       grew = false;
       if (near(c_end(chain), c_start(chain))) break;  // closes: take nothing more
@@ -114,9 +139,11 @@ void join_contours(Drawing& d) {
         const Vec3 e = c_end(chain), s = c_start(chain);
         if (near(e, c_start(c)) || near(e, c_end(c))) {
           Contour next = near(e, c_start(c)) ? c : reversed(c);
+          joins(e, c_start(next));
           for (Piece& p : next.pieces) chain.pieces.push_back(std::move(p));
         } else if (near(s, c_end(c)) || near(s, c_start(c))) {
           Contour prev = near(s, c_end(c)) ? c : reversed(c);
+          joins(c_end(prev), s);
           for (Piece& p : chain.pieces) prev.pieces.push_back(std::move(p));
           chain.pieces = std::move(prev.pieces);
         } else {
@@ -133,6 +160,7 @@ void join_contours(Drawing& d) {
       // The end meets the start exactly: move the end point, or bridge.
       Piece& last = chain.pieces.back();
       const Vec3 s = c_start(chain);
+      joins(last.end(), s);
       if (!(last.end() == s)) {
         if (!last.bspline || clamped_end(last)) {
           last.points.back() = s;
@@ -142,6 +170,10 @@ void join_contours(Drawing& d) {
       }
     }
     if (joined) chain.id += "+" + std::to_string(joined);
+    for (Gap& g : gaps) {
+      g.id = chain.id;
+      d.closed_gaps.push_back(g);
+    }
     out.push_back(std::move(chain));
   }
   d.contours = std::move(out);

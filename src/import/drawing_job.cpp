@@ -14,6 +14,7 @@
 #include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/settings.hpp"
 #include "bezcam/limits.hpp"
+#include "selection.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -54,16 +55,20 @@ std::set<std::string> kept_layers(const Drawing& d, const ImportOptions& opt) {
   return keep;
 }
 
-// The contours of the kept layers, in the drawing's order; refused when
-// there are none.
-std::vector<const Contour*> kept_contours(const Drawing& d, const std::set<std::string>& keep) {
-  std::vector<const Contour*> out;
+// The contours of the kept layers that --only and --skip keep, in the
+// drawing's order; refused when there are none.
+std::vector<const Contour*> kept_contours(const Drawing& d, const std::set<std::string>& keep,
+                                          const ImportOptions& opt) {
+  check_selectors(d, opt);
+  std::vector<const Contour*> layers;
   for (const Contour& c : d.contours)
-    if (keep.empty() || keep.count(c.layer)) out.push_back(&c);
+    if (keep.empty() || keep.count(c.layer)) layers.push_back(&c);
+  const std::vector<const Contour*> out = select_contours(layers, opt);
   if (out.empty())
     throw InputError(errc::import_empty, Place::at_file(d.source),
-                     keep.empty() ? std::string("expected geometry to cut, found none")
-                                  : "expected geometry to cut on the layers asked for, found none");
+                     keep.empty() && opt.only.empty() && opt.skip.empty()
+                         ? std::string("expected geometry to cut, found none")
+                         : "expected geometry to cut among the layers and entities asked for, found none");
   return out;
 }
 
@@ -123,15 +128,15 @@ std::vector<Vec3> job_points(const std::vector<Vec3>& ps, double scale) {
 
 // One contour as entity `index` of the job: a path of its pieces, or an
 // interpolation through its points.
-void add_contour(JobBuilder& b, const Contour& c, std::size_t index, double scale, const std::string& side,
+void add_contour(JobBuilder& b, const Contour& c, std::size_t index, double scale, const JobParams& params,
                  PointLimits& limits, const std::string& source);
 
 // add_contour(), its refusals named at entity `index` (the builder names
 // an entity by how many it holds, fewer than `index` once one is refused).
-void add_entity(JobBuilder& b, const Contour& c, std::size_t index, double scale, const std::string& side,
+void add_entity(JobBuilder& b, const Contour& c, std::size_t index, double scale, const JobParams& params,
                 PointLimits& limits, const std::string& source) {
   try {
-    add_contour(b, c, index, scale, side, limits, source);
+    add_contour(b, c, index, scale, params, limits, source);
   } catch (const InputError& e) {
     const std::string path = e.place().json_path.value_or("");
     if (!path.starts_with("entities[")) throw;
@@ -143,11 +148,9 @@ void add_entity(JobBuilder& b, const Contour& c, std::size_t index, double scale
   }
 }
 
-void add_contour(JobBuilder& b, const Contour& c, std::size_t index, double scale, const std::string& side,
+void add_contour(JobBuilder& b, const Contour& c, std::size_t index, double scale, const JobParams& params,
                  PointLimits& limits, const std::string& source) {
   const std::string at = "entities[" + std::to_string(index) + "]";
-  JobParams params;
-  if (!side.empty()) params.side = side == "outside" ? CutSide::outside : CutSide::inside;
   limits.entity_points = 0;
   if (c.is_interpolation) {
     limits.count_points(c.interpolation.through.size(), at + ".through");
@@ -176,11 +179,11 @@ void add_contour(JobBuilder& b, const Contour& c, std::size_t index, double scal
   b.path_segments(c.id, std::move(segments), c.closed, params);
 }
 
-// The kept contours as the builder's entities (`sides`: each one's side by
-// nesting, or empty). Each entity is refused on its own, as a file's are:
+// The kept contours as the builder's entities (`params`: each one's
+// settings, or empty). Each entity is refused on its own, as a file's are:
 // the first refusal is thrown with the others in Error::more().
 void add_geometry(JobBuilder& b, const std::vector<const Contour*>& kept, double scale,
-                  const std::vector<std::string>& sides, const std::string& source) {
+                  const std::vector<JobParams>& params, const std::string& source) {
   if (kept.size() > kMaxEntities)
     throw InputError(errc::limit_entities, Place::in_json(source, "entities"),
                      "expected at most " + std::to_string(kMaxEntities) +
@@ -190,7 +193,7 @@ void add_geometry(JobBuilder& b, const std::vector<const Contour*>& kept, double
   std::vector<InputError> errors;
   for (std::size_t k = 0; k < kept.size(); ++k) {
     try {
-      add_entity(b, *kept[k], k, scale, k < sides.size() ? sides[k] : std::string(), limits, source);
+      add_entity(b, *kept[k], k, scale, k < params.size() ? params[k] : JobParams(), limits, source);
     } catch (const InputError& e) {
       errors.push_back(e);
     }
@@ -284,10 +287,12 @@ std::string numbers(const std::vector<double>& vs) {
   return o + "]";
 }
 
-// One kept contour as an entity of the job file.
-void write_contour(std::ostream& o, const Contour& c, const std::string& side, double scale) {
+// One kept contour as an entity of the job file, with its settings
+// (`members`: keys and values as JSON text).
+void write_contour(std::ostream& o, const Contour& c, const std::vector<std::pair<std::string, std::string>>& members,
+                   double scale) {
   o << "    { \"id\": " << quoted(c.id) << ", ";
-  if (!side.empty()) o << "\"side\": \"" << side << "\", ";
+  for (const auto& [k, v] : members) o << quoted(k) << ": " << v << ", ";
   if (c.is_interpolation) {
     o << "\"type\": \"interpolate\", " << (c.interpolation.closed ? "\"closed\": true, " : "")
       << "\"through\": " << points(c.interpolation.through, scale) << " }";
@@ -309,9 +314,10 @@ void write_contour(std::ostream& o, const Contour& c, const std::string& side, d
 }  // namespace
 
 std::string job_json(const Drawing& d, const ImportOptions& opt) {
+  check_options(opt);
   const std::set<std::string> keep = kept_layers(d, opt);
   const SettingsJson settings = settings_json(opt.settings);
-  const std::vector<const Contour*> kept = kept_contours(d, keep);
+  const std::vector<const Contour*> kept = kept_contours(d, keep, opt);
   const double scale = units_scale(settings);
   std::string top, job;
   bool units = false;
@@ -329,21 +335,37 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
   o << "  \"entities\": [";
   for (size_t k = 0; k < kept.size(); ++k) {
     o << (k ? ",\n" : "\n");
-    write_contour(o, *kept[k], k < sides.size() ? sides[k] : std::string(), scale);
+    write_contour(o, *kept[k], entity_members(*kept[k], opt, k < sides.size() ? sides[k] : std::string()), scale);
   }
   o << "\n  ]\n}\n";
   return o.str();
 }
 
 Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>* warnings) {
+  check_options(opt);
   const std::set<std::string> keep = kept_layers(d, opt);
   const SettingsJson settings = settings_json(opt.settings);
-  const std::vector<const Contour*> kept = kept_contours(d, keep);
+  const std::vector<const Contour*> kept = kept_contours(d, keep, opt);
+  if (warnings)
+    for (const Gap& g : d.closed_gaps)
+      warnings->push_back("contour " + quoted(g.id) + ": a gap of " + format_significant(g.size, 3) + " mm at (" +
+                          format_significant(g.at.x, 6) + ", " + format_significant(g.at.y, 6) +
+                          ") closed by the join tolerance (the ends moved to meet)");
   const std::vector<std::string> sides = sides_by_nesting(d, kept, settings, warnings);
+  std::vector<JobParams> params;
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    try {
+      params.push_back(entity_params(entity_members(*kept[k], opt, k < sides.size() ? sides[k] : std::string()),
+                                     d.source, "entities[" + std::to_string(k) + "]"));
+    } catch (const InputError& e) {
+      if (warnings) warnings->clear();
+      throw at_scoped_setting(e, *kept[k], opt, d.source);
+    }
+  }
   JobBuilder b(d.source);
   try {
     b.settings(opt.settings);
-    add_geometry(b, kept, units_scale(settings), sides, d.source);
+    add_geometry(b, kept, units_scale(settings), params, d.source);
     return b.build();
   } catch (const InputError& e) {
     // The refusal stands alone: what the sides of a refused job would

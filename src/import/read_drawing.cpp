@@ -22,12 +22,17 @@ bool is_drawing(const std::filesystem::path& file) {
   return e == ".svg" || e == ".dxf";
 }
 
-Drawing read_drawing(const std::filesystem::path& file) {
+Drawing read_drawing(const std::filesystem::path& file, const ReadOptions& opt) {
   const std::string text = read_bounded(file, kMaxJobBytes, "drawing");
   const std::string source = file.string();
-  if (lower_ext(file) != ".dxf") return read_svg(text, source);  // each subpath its own entity
+  if (lower_ext(file) != ".dxf") {
+    Drawing d = read_svg(text, source);  // each subpath its own entity
+    if (opt.scale != 1) scale_drawing(d, opt.scale);
+    return d;
+  }
   Drawing d = read_dxf(text, source);
-  join_contours(d);
+  if (opt.scale != 1) scale_drawing(d, opt.scale);
+  join_contours(d, opt.join_tolerance);
   return d;
 }
 

@@ -657,6 +657,27 @@ JobBuilder& JobBuilder::settings(std::span<const std::pair<std::string, std::str
   throw first;
 }
 
+JobParams entity_params(std::span<const std::pair<std::string, std::string>> members, const std::string& source,
+                        const std::string& path) {
+  using detail::json;
+  json obj = json::object();
+  for (const auto& [k, v] : members) obj[k] = json::parse(v);
+  std::vector<InputError> errors;
+  std::vector<std::string> warnings;
+  detail::JsonCtx ctx{source, &warnings};
+  ctx.errors = &errors;
+  JobParams p;
+  try {
+    p = detail::parse_params(ctx, obj, path, false);
+  } catch (const InputError& e) {
+    errors.push_back(e);
+  }
+  if (errors.empty()) return p;
+  InputError first = errors.front();
+  for (size_t i = 1; i < errors.size(); ++i) first.add_more(errors[i]);
+  throw first;
+}
+
 Job load_job(const std::filesystem::path& file, const JobReadOptions& opt) {
   JobReadOptions o = opt;
   if (o.folder.empty()) o.folder = file.parent_path();

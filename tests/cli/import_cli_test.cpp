@@ -3,6 +3,7 @@
 // converting is converting the drawing, `--set` reaches the program,
 // `--layer` keeps layers, `check` lists what each layer held; `--set` takes
 // dotted keys and JSON values and refuses a key the job does not have.
+#include <fstream>
 #include <gtest/gtest.h>
 
 #include "in_process.hpp"
@@ -52,6 +53,95 @@ TEST(ImportCommand, SettingsAndLayersOfADrawing) {
   EXPECT_NE(c.out.find("layer \"HOLES\": read 4 CIRCLE, 1 LWPOLYLINE\n"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("layer \"NOTES\": read nothing; skipped 1 TEXT\n"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("layer \"OUTLINE\": read 4 ARC, 4 LINE\n"), std::string::npos) << c.out;
+}
+
+// The part from the drawing in one command line: the small holes on a
+// second tool picked by id glob, tabs on the outline by layer; importing
+// with the same options then converting cuts the same program.
+TEST(ImportCommand, PerEntitySettingsFromTheCommandLine) {
+  testproc::TempDir dir;
+  const std::vector<std::string> options = {"--set", "feed=600",
+                                            "--set", "plunge_feed=200",
+                                            "--set", "safe_z=5",
+                                            "--set", "cut_z=-1",
+                                            "--set", "side=outside",
+                                            "--set", "tool=1",
+                                            "--set", "tool_diameter=6",
+                                            "--set", "HOLES:3[7-9A]:tool=2",
+                                            "--set", "HOLES:3[7-9A]:tool_diameter=2",
+                                            "--set", R"(OUTLINE:tabs={"count":4,"width":5,"height":0.5})"};
+  const fs::path direct = dir / "direct.nc", job = dir / "part.json", imported = dir / "imported.nc";
+  std::vector<std::string> args = {"convert", "samples/part.dxf", "--output", "arcs", "-q", "-o", direct.string()};
+  args.insert(args.end(), options.begin(), options.end());
+  auto r = bezcam(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string g = testproc::slurp(direct);
+  EXPECT_NE(g.find("(T1: 6 mm flat end mill: OUTLINE:2F+7, HOLES:3B)"), std::string::npos) << g;
+  EXPECT_NE(g.find("(T2: 2 mm flat end mill: HOLES:37, HOLES:38, HOLES:39, HOLES:3A)"), std::string::npos) << g;
+  // The tabs lift the outline's cut from Z-1 to Z-0.5, and only its cut.
+  const size_t holes = g.find("(entity HOLES:37");
+  ASSERT_NE(holes, std::string::npos);
+  EXPECT_NE(g.substr(0, holes).find("Z-0.5"), std::string::npos);
+  EXPECT_EQ(g.find("Z-0.5", holes), std::string::npos);
+  args = {"import", "samples/part.dxf", "-q", "-o", job.string()};
+  args.insert(args.end(), options.begin(), options.end());
+  r = bezcam(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(bezcam({"convert", job.string(), "--output", "arcs", "-q", "-o", imported.string()}).status, 0);
+  const auto body = [](std::string s) { return s.substr(s.find('\n', s.find('\n') + 1)); };
+  EXPECT_EQ(body(testproc::slurp(imported)), body(g));
+  // A selector that matches nothing names what the drawing has; --only
+  // and --skip apply to drawings.
+  r = bezcam({"convert", "samples/part.dxf", "--skip", "HOLE", "-o", direct.string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err_first_line(),
+            "bezcam: error: --skip: samples/part.dxf has no layer and no entity matching \"HOLE\"; its layers are "
+            "\"HOLES\", \"NOTES\", \"OUTLINE\", its entities \"OUTLINE:2F+7\", \"HOLES:37\", \"HOLES:38\", "
+            "\"HOLES:39\", \"HOLES:3A\", \"HOLES:3B\"");
+  r = bezcam({"convert", "samples/curve-semicircle.json", "--only", "x", "-o", direct.string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err_first_line().rfind("bezcam: error: --only: ", 0), 0u) << r.err;
+  r = bezcam({"import", "samples/part.dxf", "--only", "OUTLINE", "--skip", "*:2F*"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("found none"), std::string::npos) << r.err;
+}
+
+// A 10 mm square whose last corner is 0.01 mm open: check says where,
+// --join-tolerance closes it and says so, --scale multiplies the drawing.
+TEST(ImportCommand, JoinToleranceAndScale) {
+  testproc::TempDir dir;
+  const fs::path dxf = dir / "gap.dxf", nc = dir / "gap.nc";
+  {
+    std::ofstream f(dxf);
+    f << "0\nSECTION\n2\nENTITIES\n"
+         "0\nLINE\n5\nA1\n8\nOUT\n10\n0\n20\n0\n11\n10\n21\n0\n"
+         "0\nLINE\n5\nA2\n8\nOUT\n10\n10\n20\n0\n11\n10\n21\n10\n"
+         "0\nLINE\n5\nA3\n8\nOUT\n10\n10\n20\n10\n11\n0\n21\n10\n"
+         "0\nLINE\n5\nA4\n8\nOUT\n10\n0.01\n20\n10\n11\n0\n21\n0\n"
+         "0\nENDSEC\n0\nEOF\n";
+  }
+  auto r = bezcam({"check", dxf.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("  nearly closed: \"OUT:A1+3\", its ends 0.01 mm apart at (0.005, 10); --join-tolerance 0.01 "
+                       "closes it\n"),
+            std::string::npos)
+      << r.out;
+  r = bezcam({"check", dxf.string(), "--join-tolerance", "0.01"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("nearly closed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bounds (0, 0) to (10, 10), closed\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("bezcam: warning: contour \"OUT:A1+3\": a gap of 0.01 mm at (0.005, 10) closed by the join "
+                       "tolerance (the ends moved to meet)"),
+            std::string::npos)
+      << r.err;
+  r = bezcam({"convert", dxf.string(), "--scale", "2.5", "--join-tolerance", "0.03", "--set", "feed=100", "--set",
+              "cut_z=-1", "-o", nc.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("a gap of 0.025 mm at (0.0125, 25)"), std::string::npos) << r.err;
+  EXPECT_NE(testproc::slurp(nc).find("X25."), std::string::npos);
+  r = bezcam({"check", dxf.string(), "--scale", "0"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err_first_line(), "bezcam: error: --scale: expected a number > 0, found 0");
 }
 
 const char* kSquare = R"(<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="60mm" viewBox="0 0 60 60">

@@ -79,12 +79,24 @@ ImportOptions part_in_inches() {
   return o;
 }
 
+// Settings of single entities picked by layer and id globs, one layer
+// left out.
+ImportOptions per_entity() {
+  ImportOptions o;
+  o.settings = {{"feed", "600"}, {"cut_z", "-1"}, {"side", "outside"}, {"tool", "1"}, {"tool_diameter", "3"}};
+  o.scoped = {{"0:1B", "tool", "2"},       {"0:1B", "tool_diameter", "1"}, {"0:1A", "tabs.count", "2"},
+              {"0:1A", "tabs.width", "3"}, {"0:1A", "tabs.height", "0.5"}, {"0", "feed", "500"},
+              {"0:1[BC]", "feed", "300"},  {"0:1D", "side", "inside"}};
+  o.skip = {"curves"};
+  return o;
+}
+
 // Bit for bit: the sign of a zero counts.
 bool same(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
 
 TEST(ToJob, IsTheJobItsFileReadsAs) {
   const Drawing d = sample();
-  for (const ImportOptions& opt : {ImportOptions{}, part_in_inches()}) {
+  for (const ImportOptions& opt : {ImportOptions{}, part_in_inches(), per_entity()}) {
     const Job file = parse_job(job_json(d, opt), d.source);
     const Job built = to_job(d, opt);
     EXPECT_EQ(built.units, file.units);
@@ -95,6 +107,9 @@ TEST(ToJob, IsTheJobItsFileReadsAs) {
       EXPECT_EQ(b.id, a.id);
       EXPECT_EQ(b.type, a.type);
       EXPECT_EQ(b.params.side, a.params.side) << a.id;
+      EXPECT_EQ(b.params.tool, a.params.tool) << a.id;
+      EXPECT_EQ(b.params.feed, a.params.feed) << a.id;
+      EXPECT_EQ(b.params.tabs.has_value(), a.params.tabs.has_value()) << a.id;
       EXPECT_EQ(b.curve.closed, a.curve.closed);
       ASSERT_EQ(b.curve.pieces.size(), a.curve.pieces.size()) << a.id;
       for (size_t i = 0; i < a.curve.pieces.size(); ++i) {

@@ -51,11 +51,22 @@ struct LayerSummary {
   std::map<std::string, std::size_t> read, skipped;
 };
 
+/// A gap between two ends of a contour: its size and where it is (the
+/// midpoint of the two ends).
+struct Gap {
+  std::string id;  ///< the contour's id
+  double size = 0;
+  Vec3 at;
+};
+
 struct Drawing {
   std::string source;  ///< the file name, for messages
   std::string format;  ///< "svg" or "dxf"
   std::vector<Contour> contours;
   std::map<std::string, LayerSummary> layers;  ///< by layer name ("" for SVG)
+  /// Gaps wider than the default join distance that join_contours() closed
+  /// with a larger tolerance (the ends moved to meet).
+  std::vector<Gap> closed_gaps;
   /// Largest extent of the control points (mm), the scale of "meet".
   double size() const;
 };
@@ -64,30 +75,69 @@ struct Drawing {
 /// `tolerance`, `units`, `machine`; every other key goes to the `job`
 /// object and is validated as the job file's keys are) and the layers to
 /// keep (empty: all).
+/// A setting of the contours a selector picks (`--set SELECTOR:KEY=VALUE`).
+struct ScopedSetting {
+  std::string selector, key, value;
+};
+
+/// A selector picks a contour when it matches, as a shell glob (`*`, `?`,
+/// `[...]`), the contour's layer or its id (selects()).
 struct ImportOptions {
   std::vector<std::pair<std::string, std::string>> settings;
   std::vector<std::string> layers;
+  /// Settings of single entities, applied in the order given (a later
+  /// value of a key wins), over the job-wide `settings`: the keys an
+  /// entity of a job file takes (not tolerance, units, machine, order,
+  /// program_number).
+  std::vector<ScopedSetting> scoped;
+  /// The contours to cut: those `only` selects (all when empty) that
+  /// `skip` does not select.
+  std::vector<std::string> only, skip;
 };
 
+/// True when `selector` matches, as a shell glob, the contour's layer or
+/// its id.
+bool selects(const std::string& selector, const Contour& c);
+
+/// Checks the options before a drawing is read: each scoped setting's key
+/// is a key an entity takes (settings_json()'s checks), refused at the
+/// setting `settings.SELECTOR:KEY` otherwise.
+void check_options(const ImportOptions& opt);
+
 /// Joins contours of the same layer that meet end to end within
-/// 1e-6 x size() into one (reversing a contour where that makes it meet),
-/// closing those that close. Contours already closed stay as they are.
-void join_contours(Drawing& d);
+/// 1e-6 x size(), or within `tolerance` when that is larger, into one
+/// (reversing a contour where that makes it meet), closing those that
+/// close; ends that are apart are moved to meet exactly (an unclamped
+/// B-spline's by a bridging line). Gaps wider than 1e-6 x size() so
+/// closed are recorded in d.closed_gaps. Contours already closed stay as
+/// they are.
+void join_contours(Drawing& d, double tolerance = 0);
+
+/// Multiplies every coordinate of the drawing by `s` (> 0).
+void scale_drawing(Drawing& d, double s);
+
+/// The open contours whose two ends are at most `within` apart, with the
+/// gap between them.
+std::vector<Gap> nearly_closed(const Drawing& d, double within);
 
 /// The job file (docs/job-format.md) the drawing is read as: every number
 /// written to full double precision (shortest text that reads back
 /// exactly). With the setting `side` "outside" (or "inside"), each closed
 /// contour's entity gets its own side by its even-odd depth among the kept
 /// closed contours (flatten/nesting.hpp): even the side asked for, odd the
-/// other (docs/import.md, "Sides of a part"). Throws InputError when a
-/// layer named in `opt` is not in the drawing or nothing is left to cut.
+/// other (docs/import.md, "Sides of a part"); each entity's scoped
+/// settings are written on it (a `side` given there wins over nesting).
+/// Throws InputError when a layer named in `opt` is not in the drawing, a
+/// selector matches no layer and no id of it (naming those it has), or
+/// nothing is left to cut.
 std::string job_json(const Drawing& d, const ImportOptions& opt = {});
 
 /// The job, built in memory (JobBuilder) from what job_json() writes: the
 /// same entities, ids, sides, settings, limits and refusals as the job
 /// reader gives that text, so that `import` then `convert` and `convert
 /// DRAWING` are the same job. A setting refused is named as `--set KEY`.
-/// `warnings` gets, with a side inside or outside, one for each pair of
+/// `warnings` gets one for each gap of d.closed_gaps (its size and place)
+/// and, with a side inside or outside, one for each pair of
 /// contours that cross (none when the job is refused).
 Job to_job(const Drawing& d, const ImportOptions& opt = {}, std::vector<std::string>* warnings = nullptr);
 

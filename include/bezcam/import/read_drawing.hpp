@@ -8,6 +8,14 @@
 
 namespace bezcam::import {
 
+/// How a drawing is read: its coordinates multiplied by `scale` (> 0), a
+/// DXF's contours joined within `join_tolerance` (0: the default,
+/// join_contours()).
+struct ReadOptions {
+  double scale = 1;
+  double join_tolerance = 0;
+};
+
 /// True when the file name ends in .svg or .dxf (any case).
 bool is_drawing(const std::filesystem::path& file);
 
@@ -15,6 +23,6 @@ bool is_drawing(const std::filesystem::path& file);
 /// joined (join_contours()); an SVG keeps each subpath as it is. Throws IoError when the file cannot be read,
 /// InputError (limit.file-size, errc::import_*) when it is too large or is
 /// not a drawing bezcam reads.
-Drawing read_drawing(const std::filesystem::path& file);
+Drawing read_drawing(const std::filesystem::path& file, const ReadOptions& opt = {});
 
 }  // namespace bezcam::import

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "bezcam/job/job.hpp"
+
 namespace bezcam {
 
 /// The settings as members of a job document, each a key and its value as
@@ -35,5 +37,14 @@ struct SettingsJson {
 /// A value of the wrong kind (`feed=fast`) is left to the job reader, which
 /// refuses it with its JSON path.
 SettingsJson settings_json(std::span<const std::pair<std::string, std::string>> settings);
+
+/// The cutting parameters of one entity given as the members of its
+/// object (each a key and its value as JSON text, settings_json()'s `job`
+/// members), read as a job file's entity keys are read: the same keys
+/// (`order` and `program_number` are the job's), the same checks. Throws
+/// InputError at `source` and `path.KEY`, with the further refusals in
+/// Error::more().
+JobParams entity_params(std::span<const std::pair<std::string, std::string>> members, const std::string& source,
+                        const std::string& path);
 
 }  // namespace bezcam

@@ -1,0 +1,121 @@
+// Selecting a drawing's contours by layer or id with shell globs, and the
+// settings each selected contour's entity gets.
+#include "selection.hpp"
+
+#include <algorithm>
+#include <array>
+#include <fnmatch.h>
+#include <string_view>
+
+#include "bezcam/job/settings.hpp"
+
+namespace bezcam::import {
+namespace {
+
+// Settings of the job as a whole, which no single entity takes.
+constexpr std::array<std::string_view, 5> kJobOnly = {"tolerance", "units", "machine", "order", "program_number"};
+
+std::string scoped_name(const ScopedSetting& s) { return "settings." + s.selector + ":" + s.key; }
+
+InputError renamed(const InputError& e, const std::string& setting, const std::string& file) {
+  Place where = Place::at_setting(setting);
+  if (!file.empty()) where.file = file;
+  return InputError(e.id(), where, e.message());
+}
+
+// At most `n` names, quoted, then how many more.
+std::string listed(const std::vector<std::string>& names, size_t n) {
+  std::string o;
+  for (size_t i = 0; i < names.size() && i < n; ++i) o += (i ? ", \"" : "\"") + names[i] + "\"";
+  if (names.size() > n) o += " and " + std::to_string(names.size() - n) + " more";
+  return o;
+}
+
+void check_selector(const Drawing& d, const std::string& selector, const std::string& setting) {
+  if (std::any_of(d.contours.begin(), d.contours.end(), [&](const Contour& c) { return selects(selector, c); })) return;
+  std::vector<std::string> layers, ids;
+  for (const auto& [name, s] : d.layers)
+    if (!name.empty()) layers.push_back(name);
+  for (const Contour& c : d.contours) ids.push_back(c.id);
+  throw InputError(
+      errc::import_setting, Place::at_setting(setting),
+      d.source + " has no layer and no entity matching \"" + selector + "\"; " +
+          (layers.empty() ? std::string("it has no named layers") : "its layers are " + listed(layers, 20)) +
+          ", its entities " + listed(ids, 20));
+}
+
+}  // namespace
+
+bool selects(const std::string& selector, const Contour& c) {
+  if (fnmatch(selector.c_str(), c.id.c_str(), 0) == 0) return true;
+  return !c.layer.empty() && fnmatch(selector.c_str(), c.layer.c_str(), 0) == 0;
+}
+
+void check_options(const ImportOptions& opt) {
+  for (const ScopedSetting& s : opt.scoped) {
+    const std::string name = scoped_name(s);
+    if (s.selector.empty())
+      throw InputError(errc::usage_setting, Place::at_setting(name),
+                       "expected SELECTOR:KEY=VALUE with SELECTOR a layer or an entity id (a glob), found an empty "
+                       "selector");
+    const std::string first = s.key.substr(0, s.key.find('.'));
+    if (std::find(kJobOnly.begin(), kJobOnly.end(), first) != kJobOnly.end())
+      throw InputError(errc::usage_setting, Place::at_setting(name),
+                       "\"" + first +
+                           "\" is a setting of the whole job, not of an entity; give it without a selector (" + s.key +
+                           "=" + s.value + ")");
+    try {
+      const std::pair<std::string, std::string> kv{s.key, s.value};
+      (void)settings_json(std::span(&kv, 1));
+    } catch (const InputError& e) {
+      throw renamed(e, name, "");
+    }
+  }
+}
+
+void check_selectors(const Drawing& d, const ImportOptions& opt) {
+  for (const ScopedSetting& s : opt.scoped) check_selector(d, s.selector, scoped_name(s));
+  for (const std::string& s : opt.only) check_selector(d, s, "only");
+  for (const std::string& s : opt.skip) check_selector(d, s, "skip");
+}
+
+std::vector<const Contour*> select_contours(const std::vector<const Contour*>& kept, const ImportOptions& opt) {
+  std::vector<const Contour*> out;
+  const auto any = [](const std::vector<std::string>& sels, const Contour& c) {
+    return std::any_of(sels.begin(), sels.end(), [&](const std::string& s) { return selects(s, c); });
+  };
+  for (const Contour* c : kept)
+    if ((opt.only.empty() || any(opt.only, *c)) && !any(opt.skip, *c)) out.push_back(c);
+  return out;
+}
+
+std::vector<std::pair<std::string, std::string>> entity_members(const Contour& c, const ImportOptions& opt,
+                                                                const std::string& nesting_side) {
+  std::vector<std::pair<std::string, std::string>> given;
+  for (const ScopedSetting& s : opt.scoped)
+    if (selects(s.selector, c)) given.emplace_back(s.key, s.value);
+  std::vector<std::pair<std::string, std::string>> out;
+  const SettingsJson members = settings_json(given);
+  const bool side =
+      std::any_of(members.job.begin(), members.job.end(), [](const auto& m) { return m.first == "side"; });
+  if (!side && !nesting_side.empty()) out.emplace_back("side", "\"" + nesting_side + "\"");
+  out.insert(out.end(), members.job.begin(), members.job.end());
+  return out;
+}
+
+InputError at_scoped_setting(const InputError& e, const Contour& c, const ImportOptions& opt,
+                             const std::string& source) {
+  // The path's key after `entities[k].`: the last scoped setting of this
+  // contour whose key starts with it gave it.
+  const std::string path = e.place().json_path.value_or("");
+  const size_t dot = path.find("].");
+  if (dot == std::string::npos) return e;
+  std::string key = path.substr(dot + 2);
+  key = key.substr(0, key.find_first_of(".["));
+  for (auto it = opt.scoped.rbegin(); it != opt.scoped.rend(); ++it)
+    if (selects(it->selector, c) && it->key.substr(0, it->key.find('.')) == key)
+      return renamed(e, scoped_name(*it), source);
+  return e;
+}
+
+}  // namespace bezcam::import
