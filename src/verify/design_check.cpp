@@ -32,6 +32,8 @@ struct DesignEntity {
   std::size_t index = 0;
   Wall wall;
   bool groove = false;  // `side` on: the tool's shape along the curve
+  bool pocket = false;  // a pocket region: all of it cleared where the tool reaches
+  std::string region;   // the pocket's region
   double top = 0, cut = 0, stock_to_leave = 0, tab_height = 0;
   std::optional<ToolShape> tool;
 };
@@ -156,11 +158,12 @@ void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns&
   // side at the tool's radius past the stock to leave (a strip a cell's
   // diagonal wide, so that it has no gap between column centres). A
   // concave corner sharper than the tool has none near it.
+  // In a pocket the axis may stand anywhere that far from every wall.
   std::vector<char> centres(r.size(), 0);
   const double strip = g.cell() * std::sqrt(2.0);
   if (!d.groove)
     for (std::size_t k = 0; k < r.size(); ++k)
-      centres[k] = f.side[k] > 0 && f.distance[k] >= stl + R && f.distance[k] < stl + R + strip;
+      centres[k] = f.side[k] > 0 && f.distance[k] >= stl + R && (d.pocket || f.distance[k] < stl + R + strip);
   // The distance to the nearest such centre: the tool's surface reaches
   // down to cut_z + h(that distance) there (h nondecreasing).
   const std::vector<double> reach = d.groove ? std::vector<double>{} : verify_detail::reach(r, centres, g.cell());
@@ -198,13 +201,13 @@ void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns&
     const double s = f.side[k] > 0 ? dist : -dist;  // positive into the waste
     const bool waste = s >= stl;
     fold(col, std::hypot(std::max(0.0, stl - s), std::max(0.0, d.cut - z)), waste ? d.cut : d.top);
-    if (!waste || s > stl + 2 * R) continue;
+    if (!waste || (!d.pocket && s > stl + 2 * R)) continue;
     // The distance to the axis's path: at least |s - (stl + R)|, exactly
     // that where the path runs along the wall; the strip's transform is
     // within a strip of it there, and larger only where a concave corner
     // keeps the axis away.
     const double along = std::abs(s - (stl + R));
-    const double axis = reach[k] - along <= strip + g.cell() ? along : reach[k];
+    const double axis = !d.pocket && reach[k] - along <= strip + g.cell() ? along : reach[k];
     if (axis > R * (1 + 1e-12)) continue;
     const double above = z - std::max(d.cut + t.height(axis), g.box().z0);
     if (above <= 0) continue;
@@ -213,7 +216,9 @@ void fold_entity(const DexelGrid& g, const DesignEntity& d, double tol, Columns&
     if (d.tab_height > 0 && z - floor_design <= d.tab_height + t.cutting_height() + tol) continue;
     // Measured normal to what the tool hugging the wall leaves: the wall
     // above the tool's cutting height, its profile below.
-    excess(col, i, j, profile_distance(t, axis, z - d.cut), above);
+    // In a pocket, away from the walls, the floor is the design's surface.
+    const double normal = profile_distance(t, axis, z - d.cut);
+    excess(col, i, j, d.pocket ? std::max(normal, std::min(s - stl, above)) : normal, above);
   }
   if (!d.wall.closed || f.outside_side == 0) return;
   // A closed wall's sides hold beyond its band: the waste may be cut down
@@ -255,12 +260,31 @@ DesignCheck check_design(const DexelGrid& g, const Job& job, const MachineProfil
     ec.json_path = e.json_path();
     const CutParams c = cut_params(job, e, m);
     const std::optional<ToolShape> tool = entity_tool(c, k, tools);
+    const PocketKeys pk = e.params.pocket.over(job.params.pocket);
+    const bool pocket = pk.operation == Operation::pocket;
+    const std::string region = pk.region.value_or(e.label());
+    auto same = std::find_if(design.begin(), design.end(),
+                             [&](const DesignEntity& d) { return d.pocket && d.region == region; });
     if (const auto why = not_modelled(e, tool)) {
       ec.compared = false;
       ec.not_compared = *why;
+    } else if (pocket && same != design.end()) {
+      // One region by the even-odd rule: the outline, its islands, ...
+      DesignEntity more = read_entity(job, e, c, k, *tool, out.design_bound);
+      same->wall.islands.push_back(std::move(more.wall.points));
+      ec.compared = false;
+      ec.not_compared = "compared with its pocket region \"" + region + "\" (" + out.entities[same->index].label + ")";
     } else {
       design.push_back(read_entity(job, e, c, k, *tool, out.design_bound));
-      top = std::max(top, design.back().top);
+      DesignEntity& d = design.back();
+      if (pocket) {
+        d.pocket = true;
+        d.groove = false;
+        d.region = region;
+        d.wall.closed = true;
+        d.wall.waste_inside_or_left = true;
+      }
+      top = std::max(top, d.top);
     }
     out.entities.push_back(ec);
   }

@@ -23,13 +23,17 @@ std::pair<std::size_t, std::size_t> columns(double lo, double hi, double v0, dou
 void fill_row_inside(const Wall& w, double y, const DexelGrid& g, const Region& r, std::size_t row,
                      std::vector<char>& inside) {
   std::vector<double> xs;
-  const std::size_t n = w.points.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec3& a = w.points[k];
-    const Vec3& b = w.points[(k + 1) % n];
-    if ((a.y <= y) == (b.y <= y)) continue;  // half-open: each crossing counted once
-    xs.push_back(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
-  }
+  auto ring = [&](const std::vector<Vec3>& pts) {
+    const std::size_t n = pts.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& a = pts[k];
+      const Vec3& b = pts[(k + 1) % n];
+      if ((a.y <= y) == (b.y <= y)) continue;  // half-open: each crossing counted once
+      xs.push_back(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
+    }
+  };
+  ring(w.points);
+  for (const auto& island : w.islands) ring(island);
   std::sort(xs.begin(), xs.end());
   for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
     const auto [i0, i1] = columns(xs[k], xs[k + 1], g.box().x0, g.cell(), g.nx());
@@ -78,6 +82,8 @@ WallField wall_field(const DexelGrid& g, const Wall& w, double band) {
   WallField out;
   Box3 b;
   for (const Vec3& p : w.points) b.add(p);
+  for (const auto& island : w.islands)
+    for (const Vec3& p : island) b.add(p);
   const auto [i0, i1] = columns(b.lo.x - band, b.hi.x + band, g.box().x0, g.cell(), g.nx());
   const auto [j0, j1] = columns(b.lo.y - band, b.hi.y + band, g.box().y0, g.cell(), g.ny());
   Region& r = out.region;
@@ -87,10 +93,17 @@ WallField wall_field(const DexelGrid& g, const Wall& w, double band) {
   if (r.size() == 0 || w.points.empty()) return out;
   std::vector<int> nearest(r.size(), -1);
   std::vector<double> t_at(r.size(), 0);
+  // The segments: the wall's own first (an open wall's side comes from
+  // them by index), then the islands'.
   const std::size_t segs = w.closed ? w.points.size() : w.points.size() - 1;
-  for (std::size_t k = 0; k < std::max<std::size_t>(segs, 1); ++k) {
-    const Vec3& a = w.points[k];
-    const Vec3& c = w.points[segs == 0 ? k : (k + 1) % w.points.size()];
+  std::vector<std::pair<Vec3, Vec3>> all;
+  for (std::size_t k = 0; k < std::max<std::size_t>(segs, 1); ++k)
+    all.push_back({w.points[k], w.points[segs == 0 ? k : (k + 1) % w.points.size()]});
+  for (const auto& island : w.islands)
+    for (std::size_t k = 0; k < island.size(); ++k) all.push_back({island[k], island[(k + 1) % island.size()]});
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const Vec3& a = all[k].first;
+    const Vec3& c = all[k].second;
     const auto [si0, si1] = columns(std::min(a.x, c.x) - band, std::max(a.x, c.x) + band, g.box().x0, g.cell(), g.nx());
     const auto [sj0, sj1] = columns(std::min(a.y, c.y) - band, std::max(a.y, c.y) + band, g.box().y0, g.cell(), g.ny());
     const double dx = c.x - a.x, dy = c.y - a.y, len2 = dx * dx + dy * dy;

@@ -14,6 +14,10 @@ namespace bezcam::verify_detail {
 struct Wall {
   std::vector<Vec3> points;  ///< xy in mm (z ignored); closed: the first point is not repeated at the end
   bool closed = false;
+  /// Closed walls only: more closed rings (a pocket's islands and the
+  /// pockets in them); inside and outside count by the even-odd rule over
+  /// all the rings.
+  std::vector<std::vector<Vec3>> islands;
   /// Closed: the waste is inside. Open: the waste is left of the drawn
   /// direction.
   bool waste_inside_or_left = false;

@@ -142,3 +142,26 @@ TEST(VerifyCli, AToolsFileCutsAnInchProgramInMillimetres) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("bad.json: \"4\""), std::string::npos) << bad.err;
 }
+
+TEST(VerifyCli, APocketRegionIsComparedWhole) {
+  // The plate: a recess cleared round two bosses (one region by the
+  // even-odd rule), the outline on tabs.
+  Files f;
+  const std::string nc = f.at("plate.nc");
+  const auto conv = run_cli({"convert", "samples/part-plate.json", "--machine", "linuxcnc", "-o", nc, "-q"});
+  ASSERT_EQ(conv.status, 0) << conv.err;
+  const auto r =
+      run_cli({"verify", nc, "--machine", "linuxcnc", "--design", "samples/part-plate.json", "--cell", "0.1"});
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("boss-1: not compared: compared with its pocket region \"recess\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("recess: largest gouge 0 mm"), std::string::npos) << r.out;
+  // The same program without the recess's passes leaves it standing: 4 mm.
+  const std::string text = slurp(nc);
+  const auto from = text.find("(pocket: 3 curves from recess)"), to = text.find("(entity outline", from);
+  ASSERT_NE(from, std::string::npos);
+  const std::string uncut = text.substr(0, from) + text.substr(to);
+  const auto u = run_cli({"verify", f.write("uncut.nc", uncut), "--machine", "linuxcnc", "--design",
+                          "samples/part-plate.json", "--cell", "0.1", "--report", f.at("r.json")});
+  EXPECT_EQ(u.status, 0) << u.err;
+  EXPECT_NE(u.out.find("recess: largest gouge 0 mm, largest excess 4 mm"), std::string::npos) << u.out;
+}
