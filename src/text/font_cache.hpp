@@ -14,9 +14,15 @@ namespace bezcam::text::detail {
 
 struct OpenFont {
   FontFace face;
-  FT_Face ft = nullptr;
+  FT_Face ft = nullptr;     ///< FreeType's library owns it (it lives until exit)
   hb_font_t* hb = nullptr;  ///< its scale is the units per em: positions in font units
   int units_per_em = 0;
+  OpenFont() = default;
+  OpenFont(const OpenFont&) = delete;
+  OpenFont& operator=(const OpenFont&) = delete;
+  ~OpenFont() {
+    if (hb) hb_font_destroy(hb);
+  }
 };
 
 /// The font `face` names, opened once per process (the cache lives until
