@@ -62,4 +62,16 @@ std::string measured_text(double measured, double bound, double tolerance, std::
   return std::strtod(floor.c_str(), nullptr) > measured ? "below " + floor : format(measured);
 }
 
+std::string format_clock(double s) {
+  char b[96];
+  const long whole = s > 0 ? std::max(1L, std::lround(s)) : 0L;
+  if (whole >= 3600)
+    std::snprintf(b, sizeof b, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60, whole % 60);
+  else if (whole >= 60)
+    std::snprintf(b, sizeof b, "%ld min %02ld s", whole / 60, whole % 60);
+  else
+    std::snprintf(b, sizeof b, "%ld s", whole);
+  return b;
+}
+
 }  // namespace bezcam

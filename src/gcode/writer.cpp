@@ -152,29 +152,18 @@ class Writer {
   // motion model when the profile has one (machine/planner.hpp), else feeds and
   // rapids at their rates.
   void cycle_time() {
-    auto when = [](double s) {
-      char b[96];
-      const long whole = s > 0 ? std::max(1L, std::lround(s)) : 0L;
-      if (whole >= 3600)
-        std::snprintf(b, sizeof b, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60, whole % 60);
-      else if (whole >= 60)
-        std::snprintf(b, sizeof b, "%ld min %02ld s", whole / 60, whole % 60);
-      else
-        std::snprintf(b, sizeof b, "%ld s", whole);
-      return std::string(b);
-    };
     if (m_.motion) {
       const double cycle =
           plan_ ? plan_->cycle_time_s : plan_motion(program_timeline(p_), *m_.motion, PlanDetail::summary).cycle_time_s;
-      note("estimated cycle time " + when(cycle) + " on the motion model of machine " + m_.name +
+      note("estimated cycle time " + format_clock(cycle) + " on the motion model of machine " + m_.name +
            " (acceleration, corners, tool changes)");
       return;
     }
     const double rapid = m_.max_feed_mm_min / mm_per_unit(p_.units);
     const auto motion = program_motion(p_);
     const double s = motion_totals(motion, rapid).time_s();
-    note("estimated cycle time " + when(s) + ": feeds as programmed, rapids at " + format_significant(rapid, 6) + " " +
-         to_string(p_.units) + "/min, no acceleration, tool changes not counted");
+    note("estimated cycle time " + format_clock(s) + ": feeds as programmed, rapids at " +
+         format_significant(rapid, 6) + " " + to_string(p_.units) + "/min, no acceleration, tool changes not counted");
   }
   void raw(std::string_view s) {
     out_ += s;

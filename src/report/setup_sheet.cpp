@@ -14,18 +14,6 @@
 
 namespace bezcam {
 
-std::string cycle_clock_text(double s) {
-  char b[96];
-  const long whole = s > 0 ? std::max(1L, std::lround(s)) : 0L;
-  if (whole >= 3600)
-    std::snprintf(b, sizeof b, "%ld h %02ld min %02ld s", whole / 3600, whole / 60 % 60, whole % 60);
-  else if (whole >= 60)
-    std::snprintf(b, sizeof b, "%ld min %02ld s", whole / 60, whole % 60);
-  else
-    std::snprintf(b, sizeof b, "%ld s", whole);
-  return b;
-}
-
 double sheet_cycle_seconds(const SetupSheetInput& in) {
   const Program& p = *in.program;
   const MachineProfile& m = *in.machine;
@@ -38,7 +26,7 @@ double sheet_cycle_seconds(const SetupSheetInput& in) {
 std::string sheet_cycle_time(const SetupSheetInput& in) {
   const Program& p = *in.program;
   const MachineProfile& m = *in.machine;
-  const std::string when = cycle_clock_text(sheet_cycle_seconds(in));
+  const std::string when = format_clock(sheet_cycle_seconds(in));
   if (m.motion)
     return "estimated cycle time " + when + " on the motion model of machine " + m.name +
            " (acceleration, corners, tool changes)";

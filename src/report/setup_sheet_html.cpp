@@ -292,7 +292,7 @@ std::string setup_sheet_html(const SetupSheetInput& in) {
     << (p.program_number ? ", program " + std::to_string(*p.program_number) : std::string()) << "; bezcam " << kVersion
     << "</p>\n";
   h << "<div class=\"cards\"><div class=\"card\"><span>cycle time</span><b>"
-    << esc(cycle_clock_text(sheet_cycle_seconds(in))) << "</b></div><div class=\"card\"><span>tools</span><b>"
+    << esc(format_clock(sheet_cycle_seconds(in))) << "</b></div><div class=\"card\"><span>tools</span><b>"
     << tools.size() << "</b></div><div class=\"card\"><span>operations</span><b>" << p.entities.size()
     << "</b></div><div class=\"card\"><span>tolerance / proven bound</span><b>" << num(p.tolerance) << " / "
     << format_bound(p.max_bound, 4) << " " << to_string(p.units) << "</b></div></div>\n";

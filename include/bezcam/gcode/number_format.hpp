@@ -31,4 +31,8 @@ std::string format_bound(double v, int digits);
 /// 0 (nothing to measure but the measurement's own error).
 std::string measured_text(double measured, double bound, double tolerance, std::string (*format)(double));
 
+/// A cycle time as a program's header prints it: whole seconds, at least
+/// 1 s for any time ("1 h 02 min 05 s", "2 min 05 s", "45 s").
+std::string format_clock(double seconds);
+
 }  // namespace bezcam

@@ -60,10 +60,6 @@ double sheet_cycle_seconds(const SetupSheetInput& in);
 /// feeds as programmed, rapids at ...".
 std::string sheet_cycle_time(const SetupSheetInput& in);
 
-/// A cycle time as the program's header prints it: whole seconds, at
-/// least 1 s for any time ("1 h 02 min 05 s", "2 min 05 s", "45 s").
-std::string cycle_clock_text(double s);
-
 /// The chord error as the header states it: "tolerance 0.01 mm; largest
 /// deviation measured 0.0093 mm, proven bound 0.0098 mm, rounding
 /// included".
