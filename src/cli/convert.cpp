@@ -9,10 +9,8 @@
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/report/report.hpp"
 #include "commands.hpp"
-#include "job_input.hpp"
+#include "job_conversion.hpp"
 #include "output_file.hpp"
-#include "profiles.hpp"
-#include "progress.hpp"
 
 namespace bezcam::cli {
 
@@ -55,30 +53,11 @@ int run_convert(const ConvertArgs& o) {
                      "the report cannot go to the same place as the program (" +
                          (o.out == "-" ? std::string("standard output") : o.out) +
                          "); give --report another file name, or write the program with -o FILE");
-  const Job job = read_job(o.job, o.conv);
-  MachineProfile m = [&] {
-    try {
-      return resolve_profile(job, o.conv.machine);
-    } catch (const Error&) {
-      if (!o.quiet) print_warnings(job.warnings);
-      throw;
-    }
-  }();
-  ConvertOptions opt;
-  opt.output = parse_output_mode(o.conv.output);
-  if (o.conv.tolerance > 0) opt.tolerance = o.conv.tolerance;
-  apply_post_options(o.post, job, m, opt);
-  Progress progress("convert", "entities", job.entities.size(), progress_config(o.quiet));
-  opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
-  ConvertResult r;
-  try {
-    r = convert_program(job, m, opt);  // every refusal before a byte is written
-  } catch (const Error&) {
-    progress.finish();
-    if (!o.quiet) print_warnings(job.warnings);  // a refusal never hides a warning
-    throw;
-  }
-  progress.finish();
+  const JobConversion c = convert_job_file(o.job, o.conv, o.post, o.quiet, "convert");
+  const Job& job = c.job;
+  const MachineProfile& m = c.machine;
+  const ConvertOptions& opt = c.options;
+  const ConvertResult& r = c.result;
   const MotionPlan* plan = r.plan ? &*r.plan : nullptr;
   // The other output modes first: a refusal there leaves no program
   // written. Their text is only counted, never kept.
@@ -95,7 +74,6 @@ int run_convert(const ConvertArgs& o) {
       if (mode == opt.output || !takes(mode)) continue;
       ConvertOptions other = opt;
       other.output = mode;
-      other.on_entity = nullptr;
       const ConvertResult r2 = convert_program(job, m, other);
       const ProgramReport rep2 =
           write_and_report(r2.program, m, r2.plan ? &*r2.plan : nullptr, [](std::string_view) {});

@@ -12,10 +12,8 @@
 #include "bezcam/report/report.hpp"
 #include "bezcam/report/setup_sheet.hpp"
 #include "commands.hpp"
-#include "job_input.hpp"
+#include "job_conversion.hpp"
 #include "output_file.hpp"
-#include "profiles.hpp"
-#include "progress.hpp"
 
 namespace bezcam::cli {
 
@@ -84,30 +82,10 @@ std::string picture(const Job& job, const Program& p, const MachineProfile& m) {
 }  // namespace
 
 int run_sheet(const SheetArgs& o) {
-  const Job job = read_job(o.job, o.conv);
-  MachineProfile m = [&] {
-    try {
-      return resolve_profile(job, o.conv.machine);
-    } catch (const Error&) {
-      if (!o.quiet) print_warnings(job.warnings);
-      throw;
-    }
-  }();
-  ConvertOptions opt;
-  opt.output = parse_output_mode(o.conv.output);
-  if (o.conv.tolerance > 0) opt.tolerance = o.conv.tolerance;
-  apply_post_options(o.post, job, m, opt);
-  Progress progress("sheet", "entities", job.entities.size(), progress_config(o.quiet));
-  opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
-  ConvertResult r;
-  try {
-    r = convert_program(job, m, opt);  // convert's refusals, before anything is written
-  } catch (const Error&) {
-    progress.finish();
-    if (!o.quiet) print_warnings(job.warnings);
-    throw;
-  }
-  progress.finish();
+  const JobConversion c = convert_job_file(o.job, o.conv, o.post, o.quiet, "sheet");
+  const Job& job = c.job;
+  const MachineProfile& m = c.machine;
+  const ConvertResult& r = c.result;
   // The header and the report as convert makes them (the program's text
   // is counted, never kept); the full plan only for the time of each tool.
   HeaderLines header;

@@ -1,0 +1,37 @@
+#include "job_conversion.hpp"
+
+#include "bezcam/error.hpp"
+#include "job_input.hpp"
+#include "profiles.hpp"
+#include "progress.hpp"
+
+namespace bezcam::cli {
+
+JobConversion convert_job_file(const std::string& path, const ConversionOptions& conv, const PostOptions& post,
+                               bool quiet, const char* command) {
+  JobConversion c{read_job(path, conv), {}, {}, {}};
+  try {
+    c.machine = resolve_profile(c.job, conv.machine);
+  } catch (const Error&) {
+    if (!quiet) print_warnings(c.job.warnings);
+    throw;
+  }
+  ConvertOptions& opt = c.options;
+  opt.output = parse_output_mode(conv.output);
+  if (conv.tolerance > 0) opt.tolerance = conv.tolerance;
+  apply_post_options(post, c.job, c.machine, opt);
+  Progress progress(command, "entities", c.job.entities.size(), progress_config(quiet));
+  opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
+  try {
+    c.result = convert_program(c.job, c.machine, opt);  // every refusal before a byte is written
+  } catch (const Error&) {
+    progress.finish();
+    if (!quiet) print_warnings(c.job.warnings);
+    throw;
+  }
+  progress.finish();
+  opt.on_entity = nullptr;
+  return c;
+}
+
+}  // namespace bezcam::cli
