@@ -11,7 +11,6 @@
 #include <filesystem>
 #include <iostream>
 
-#include "bezcam/cam/program.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/limits.hpp"
@@ -29,22 +28,6 @@
 namespace bezcam::cli {
 
 namespace {
-
-// The design's tools, by number (mm): each entity's tool diameter (a ball
-// end for a surface cut with tool_radius).
-StockTools design_tools(const Job& job, const MachineProfile& m) {
-  StockTools t = stock_tools(job.tools_mm());
-  const double k = mm_per_unit(job.units);
-  for (const Entity& e : job.entities) {
-    const CutParams c = cut_params(job, e, m);
-    if (t.count(c.tool)) continue;
-    if (c.tool_diameter && *c.tool_diameter > 0)
-      t.emplace(c.tool, ToolShape::flat(*c.tool_diameter * k));
-    else if (c.tool_radius > 0)
-      t.emplace(c.tool, e.surface ? ToolShape::ball(2 * c.tool_radius * k) : ToolShape::flat(2 * c.tool_radius * k));
-  }
-  return t;
-}
 
 // The tools the timeline uses, for the report.
 StockTools used_tools(const Timeline& tl, const StockTools& all) {
@@ -96,7 +79,7 @@ int run_verify(const VerifyArgs& o) {
   const std::size_t memory = parse_memory_limit(o.memory_limit);
   std::optional<Job> design;
   if (!o.design.empty()) design = read_job(o.design);
-  StockTools tools = design ? design_tools(*design, m) : StockTools{};
+  StockTools tools = design ? design_stock_tools(*design, m) : StockTools{};
   if (!o.tools.empty()) {
     for (auto& [n, t] : stock_tools(read_tool_table_file(o.tools))) tools.insert_or_assign(n, t);
   }

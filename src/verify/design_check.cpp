@@ -59,11 +59,18 @@ std::optional<std::string> not_modelled(const Entity& e, const std::optional<Too
   return std::nullopt;
 }
 
-std::optional<ToolShape> entity_tool(const CutParams& c, double k, const StockTools& tools) {
-  if (auto it = tools.find(c.tool); it != tools.end()) return it->second;
+// The tool an entity's own settings describe (mm): `tool_diameter`'s flat
+// end mill, or for a surface cut with `tool_radius` its ball end.
+std::optional<ToolShape> settings_tool(const Entity& e, const CutParams& c, double k) {
   if (c.tool_diameter && *c.tool_diameter > 0) return ToolShape::flat(*c.tool_diameter * k);
-  if (c.tool_radius > 0) return ToolShape::flat(2 * c.tool_radius * k);
+  if (c.tool_radius > 0)
+    return e.surface ? ToolShape::ball(2 * c.tool_radius * k) : ToolShape::flat(2 * c.tool_radius * k);
   return std::nullopt;
+}
+
+std::optional<ToolShape> entity_tool(const Entity& e, const CutParams& c, double k, const StockTools& tools) {
+  if (auto it = tools.find(c.tool); it != tools.end()) return it->second;
+  return settings_tool(e, c, k);
 }
 
 bool waste_inside_or_left(const CutParams& c, const std::vector<Vec3>& pts, bool closed) {
@@ -259,7 +266,7 @@ DesignCheck check_design(const DexelGrid& g, const Job& job, const MachineProfil
     ec.label = e.label();
     ec.json_path = e.json_path();
     const CutParams c = cut_params(job, e, m);
-    const std::optional<ToolShape> tool = entity_tool(c, k, tools);
+    const std::optional<ToolShape> tool = entity_tool(e, c, k, tools);
     const PocketKeys pk = e.params.pocket.over(job.params.pocket);
     const bool pocket = pk.operation == Operation::pocket;
     const std::string region = pk.region.value_or(e.label());
@@ -318,13 +325,24 @@ DesignCheck check_design(const DexelGrid& g, const Job& job, const MachineProfil
   return out;
 }
 
+StockTools design_stock_tools(const Job& job, const MachineProfile& m) {
+  StockTools t = stock_tools(job.tools_mm());
+  const double k = mm_per_unit(job.units);
+  for (const Entity& e : job.entities) {
+    const CutParams c = cut_params(job, e, m);
+    if (t.count(c.tool)) continue;
+    if (const auto shape = settings_tool(e, c, k)) t.emplace(c.tool, *shape);
+  }
+  return t;
+}
+
 std::optional<StockBox> design_stock_box(const Job& job, const MachineProfile& m, const StockTools& tools) {
   const double k = mm_per_unit(job.units);
   Box3 b;
   double top = -kInf, deepest = kInf, widest = 0;
   for (const Entity& e : job.entities) {
     const CutParams c = cut_params(job, e, m);
-    if (const auto t = entity_tool(c, k, tools)) widest = std::max(widest, t->diameter());
+    if (const auto t = entity_tool(e, c, k, tools)) widest = std::max(widest, t->diameter());
     top = std::max(top, c.top_z * k);
     deepest = std::min(deepest, c.cut_z * k);
     const Box3 eb = e.surface ? Box3{} : e.curve.bounds();

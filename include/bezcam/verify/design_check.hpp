@@ -70,6 +70,11 @@ struct DesignCheck {
 /// lacks is taken as a flat end mill of its `tool_diameter`.
 DesignCheck check_design(const DexelGrid& grid, const Job& job, const MachineProfile& m, const StockTools& tools);
 
+/// The tools a job cuts with, by number (mm): its `tools` table, and for a
+/// number the table lacks the first entity's `tool_diameter` (a flat end
+/// mill) or, for a surface cut with `tool_radius`, its ball end.
+StockTools design_stock_tools(const Job& job, const MachineProfile& m);
+
 /// The stock a job is cut from when none is given (mm): its curve
 /// entities' bounds grown by the largest tool's diameter, from the highest
 /// `top_z` down to 1 mm below the deepest `cut_z`; nothing when the job has
