@@ -16,9 +16,10 @@ void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "bezcam: warning: " << w << "\n";
 }
 
-Job read_job(const std::string& path) {
+Job read_job(const std::string& path, std::vector<EntitySetting> settings) {
   std::vector<std::string> warnings;
   JobReadOptions ro;
+  ro.entity_settings = std::move(settings);
   ro.warnings = &warnings;
   ro.text = text::font_outliner();
   try {
@@ -67,7 +68,18 @@ return ro;
 
 Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing) {
   if (!import::is_drawing(path)) {
-    const char* option = !o.sets.empty()        ? "--set"
+    // SELECTOR:KEY=VALUE settings the job's entities; the rest is the
+    // file's to say.
+    std::vector<EntitySetting> entity_settings;
+    bool unscoped = false;
+    for (const auto& kv : o.sets) {
+      auto [key, value] = split_setting(kv);
+      if (const size_t colon = key.rfind(':'); colon != std::string::npos)
+        entity_settings.push_back({key.substr(0, colon), key.substr(colon + 1), value});
+      else
+        unscoped = true;
+    }
+    const char* option = unscoped               ? "--set"
                          : !o.layers.empty()    ? "--layer"
                          : !o.only.empty()      ? "--only"
                          : !o.skip.empty()      ? "--skip"
@@ -77,9 +89,10 @@ Job read_job(const std::string& path, const ConversionOptions& o, import::Drawin
     if (option)
       throw InputError(errc::import_setting, Place::at_option(option),
                        path +
-                           " is a job file, which states its own settings and has no layers; --set, --layer, --only "
-                           "and --skip apply to drawings (.svg, .dxf)");
-    return read_job(path);
+                           " is a job file, which states its own settings and has no layers; --set KEY=VALUE, "
+                           "--layer, --only and --skip apply to drawings (.svg, .dxf); --set ID:KEY=VALUE sets a key "
+                           "of the job's entities whose id ID matches");
+    return read_job(path, std::move(entity_settings));
   }
   const import::ImportOptions io = import_options(o);
   import::Drawing d = import::read_drawing(path, read_options(o));

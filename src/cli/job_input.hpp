@@ -8,16 +8,19 @@
 #include "bezcam/import/drawing.hpp"
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/job_json.hpp"
 #include "conversion_options.hpp"
 
 namespace bezcam::cli {
 
-/// Reads a job file. When the job is refused, the warnings found before
-/// are printed first: a refusal never hides a warning.
-Job read_job(const std::string& path);
+/// Reads a job file, with `settings` given to the entities their selectors
+/// match. When the job is refused, the warnings found before are printed
+/// first: a refusal never hides a warning.
+Job read_job(const std::string& path, std::vector<EntitySetting> settings = {});
 /// Reads a job file, or a drawing (.svg, .dxf) as the job it stands for,
 /// with the options' --set settings and --layer layers (which apply to
-/// drawings only: a job file states its own settings).
+/// drawings only: a job file states its own settings, but takes --set
+/// ID:KEY=VALUE for its entities).
 /// `drawing`, when given, receives the drawing read (check lists it).
 Job read_job(const std::string& path, const ConversionOptions& o, import::Drawing* drawing = nullptr);
 /// The --set and --layer options as import options (KEY=VALUE checked).

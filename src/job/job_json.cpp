@@ -557,7 +557,7 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
     throw InputError(errc::limit_file_size, Place::at_file(source),
                      "the job file is " + std::to_string(text.size() >> 20) + " MiB, more than bezcam reads (" +
                          std::to_string(kMaxJobBytes >> 20) + " MiB, docs/limits.md); split it into smaller files");
-  const json doc = detail::parse_json_text(text, source);
+  json doc = detail::parse_json_text(text, source);
   if (!doc.is_object()) ctx.expected("(top level)", "a JSON object", doc);
   ctx.check_keys(doc, "", {"bezcam", "units", "tolerance", "machine", "job", "entities", "order", "tools"});
   if (!doc.contains("bezcam"))
@@ -569,7 +569,9 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
     ctx.fail("bezcam", errc::job_version, "expected format version 1, found " + std::to_string(job.version));
   read_settings(ctx, doc, job);
   if (auto it = doc.find("tools"); it != doc.end()) job.tools = detail::parse_tools_object(ctx, *it, "tools", errors);
-  const json& ents = ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
+  (void)ctx.array(ctx.require(doc, "", "entities"), "entities", 1);
+  json& ents = doc["entities"];
+  const auto given = detail::apply_entity_settings(ctx, ents);
   if (ents.size() > kMaxEntities)
     ctx.fail("entities", errc::limit_entities,
              "expected at most " + std::to_string(kMaxEntities) + " entities in one job (docs/limits.md), found " +
@@ -580,7 +582,7 @@ void parse_document(std::string_view text, const std::string& source, detail::Js
     try {
       detail::parse_entity(ctx, ents[i], i, read);
     } catch (const InputError& e) {
-      errors.push_back(e);
+      errors.push_back(detail::at_entity_setting(e, i, given, source));
       continue;
     }
     if (job.entities.size() + read.size() > kMaxEntities)  // a text's glyphs

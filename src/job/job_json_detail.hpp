@@ -3,6 +3,7 @@
 // name the JSON path, expected and found. Only the kernel's job_json files
 // know JSON.
 #include <array>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -115,6 +116,17 @@ void parse_curve_on_surface_entity(const JsonCtx& ctx, const json& obj, const st
 // glyph contours are appended to `out`.
 void parse_text_entity(const JsonCtx& ctx, const json& obj, const std::string& path, const Entity& e,
                        std::vector<Entity>& out);
+/// The options' entity_settings written into `ents` (the file's entity
+/// objects, job_json_set.cpp); returns, for each entity index and top key
+/// given, the setting's name (`settings.SELECTOR:KEY`). Throws InputError
+/// at the setting.
+std::map<std::pair<size_t, std::string>, std::string> apply_entity_settings(const JsonCtx& ctx, json& ents);
+/// `e`, a refusal of entity `index`, named at the setting that gave the
+/// refused key (`given`: apply_entity_settings()'s answer); `e` itself
+/// when the file gave it.
+InputError at_entity_setting(const InputError& e, size_t index,
+                             const std::map<std::pair<size_t, std::string>, std::string>& given,
+                             const std::string& source);
 /// After all entities are read: a curve_on_surface whose `surface` is a
 /// string gets the surface of the patch entity with that id.
 void resolve_surface_references(const JsonCtx& ctx, const json& entities, Job& job);

@@ -226,4 +226,29 @@ TEST(ToolHeader, EachToolWithItsDiameterAndShape) {
   EXPECT_NE(i.out.find("\n(T3: 0.25 in flat end mill: sq)\n(T4: line)\n"), std::string::npos) << i.out.substr(0, 400);
 }
 
+// A job file's entities take --set ID:KEY=VALUE: the serial number of a
+// name plate replaced from the command line; the program engraves the new
+// one and the file is not touched.
+TEST(ImportCommand, AJobsTextIsReplacedFromTheCommandLine) {
+  testproc::TempDir dir;
+  const fs::path a = dir / "a.nc", b = dir / "b.nc";
+  const std::string before = testproc::slurp(fs::path(BEZCAM_SOURCE_DIR) / "samples/part-nameplate.json");
+  ASSERT_EQ(bezcam({"convert", "samples/part-nameplate.json", "-o", a.string(), "-q"}).status, 0);
+  const auto r =
+      bezcam({"convert", "samples/part-nameplate.json", "--set", "serial:text=No. 43", "-o", b.string(), "-q"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(testproc::slurp(a), testproc::slurp(b));
+  EXPECT_EQ(testproc::slurp(fs::path(BEZCAM_SOURCE_DIR) / "samples/part-nameplate.json"), before);
+  const auto c = bezcam({"check", "samples/part-nameplate.json", "--set", "serial:text=No. 43"});
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_NE(c.out.find("\"serial/3\": text \"4\""), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("\"serial/4\": text \"3\""), std::string::npos) << c.out;
+  // The selector must match an entity, and the job's own settings stay
+  // the file's.
+  const auto n = bezcam({"convert", "samples/part-nameplate.json", "--set", "serail:text=1", "-o", b.string()});
+  EXPECT_EQ(n.status, 2);
+  EXPECT_EQ(n.err_first_line().rfind("bezcam: error: --set serail:text: ", 0), 0u) << n.err;
+  EXPECT_NE(n.err.find("\"serial\""), std::string::npos) << n.err;
+}
+
 }  // namespace

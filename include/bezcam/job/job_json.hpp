@@ -11,6 +11,13 @@
 
 namespace bezcam {
 
+/// A value given on the command line for the entities of a job file whose
+/// `id` the selector matches as a shell glob (`--set SELECTOR:KEY=VALUE`):
+/// the entity reads as if the file held KEY with that value.
+struct EntitySetting {
+  std::string selector, key, value;
+};
+
 /// How a job file is read.
 struct JobReadOptions {
   /// Receives the job's warnings also when the job is refused, so that a
@@ -22,6 +29,15 @@ struct JobReadOptions {
   /// Where a text's relative font file is found; load_job() gives the job
   /// file's folder when this is empty, parse_job() the working directory.
   std::filesystem::path folder;
+  /// Applied to the entities' objects before they are read, in order (a
+  /// later value of a key wins). `text`, `font` and `align` take VALUE as
+  /// the text itself (a quoted JSON string as that string); every other
+  /// key reads VALUE as settings_json() does. Refused at the setting
+  /// `settings.SELECTOR:KEY` (errc::usage_setting): a selector that
+  /// matches no entity's id (naming the ids), `id` or `type`, a job-wide
+  /// key, a key a job file does not have, a text's key for an entity that
+  /// is not a text; a value the reader refuses is named at the setting too.
+  std::vector<EntitySetting> entity_settings;
 };
 
 /// Parses and validates a job. `source` names the file in messages.
