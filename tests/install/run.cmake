@@ -28,3 +28,23 @@ endforeach()
 if(NOT EXISTS ${WORK_DIR}/prefix/share/bezcam/machines/fanuc.json)
   message(FATAL_ERROR "profiles not installed in share/bezcam/machines")
 endif()
+# The manual page, the documentation and the samples; the installed
+# program finds the installed profiles and converts an installed sample.
+foreach(f share/man/man1/bezcam.1 share/doc/bezcam/import.md share/doc/bezcam/images/verify-flange.png
+          share/bezcam/samples/part.dxf share/bezcam/samples/part-flange.json)
+  if(NOT EXISTS ${WORK_DIR}/prefix/${f})
+    message(FATAL_ERROR "${f} not installed")
+  endif()
+endforeach()
+file(READ ${WORK_DIR}/prefix/share/man/man1/bezcam.1 man)
+foreach(cmd check convert import lint preview sheet simulate status stream verify)
+  if(NOT man MATCHES "\\.SS \"bezcam ${cmd}\"")
+    message(FATAL_ERROR "the manual page has no section for bezcam ${cmd}")
+  endif()
+endforeach()
+execute_process(COMMAND ${WORK_DIR}/prefix/bin/bezcam convert ${WORK_DIR}/prefix/share/bezcam/samples/part-flange.json
+                        --machine fanuc -o ${WORK_DIR}/flange.nc
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "the installed bezcam failed on an installed sample: ${rc}\n${err}")
+endif()
