@@ -11,6 +11,7 @@
 #include "bezcam/job/keys.hpp"
 #include "bezcam/version.hpp"
 #include "exit_status.hpp"
+#include "help_examples.hpp"
 
 namespace bezcam::cli {
 
@@ -33,6 +34,7 @@ CommandLine::CommandLine()
   add(setup_status(app_, args_.status), [this] { return run_status(args_.status); });
   add(setup_stream(app_, args_.stream), [this] { return run_stream(args_.stream); });
   add(setup_verify(app_, args_.verify), [this] { return run_verify(args_.verify); });
+  add_help_examples(app_);
 }
 
 void CommandLine::parse(const std::vector<std::string>& argv) {
