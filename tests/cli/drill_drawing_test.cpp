@@ -1,0 +1,63 @@
+// A drawing's circles drilled (docs/holes.md): `--set LAYER:operation=drill`
+// and the drilling keys reach the program through `convert` and through
+// `import`; a contour of that layer that is no circle is refused, exit 2,
+// nothing written.
+#include <gtest/gtest.h>
+#include <regex>
+
+#include "in_process.hpp"
+#include "support/run_process.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+testproc::Result bezcam(const std::vector<std::string>& args) {
+  return testproc::run(BEZCAM_EXE, args, {{"BEZCAM_PROGRESS", "off"}}, BEZCAM_SOURCE_DIR);
+}
+
+const std::vector<std::string> kDrill = {"--set", "feed=600",
+                                         "--set", "plunge_feed=100",
+                                         "--set", "cut_z=-2",
+                                         "--set", "HOLES:operation=drill",
+                                         "--set", "HOLES:tool_diameter=5",
+                                         "--set", "HOLES:peck=0.5",
+                                         "--set", "HOLES:chip_break=true"};
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+TEST(DrillDrawing, TheCirclesOfALayerAreDrilled) {
+  testproc::TempDir dir;
+  const fs::path nc = dir / "part.nc";
+  const auto r = bezcam(with(
+      {"convert", "samples/part.dxf", "--machine", "linuxcnc", "--skip", "HOLES:3B", "-o", nc.string(), "-q"}, kDrill));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string g = testproc::slurp(nc);
+  EXPECT_NE(g.find("G98 G73 X10. Y10. Z-2. R5. Q0.5 F100."), std::string::npos) << g;
+  for (const char* next : {"\nX70. Y10.\n", "\nX70. Y40.\n", "\nX10. Y40.\n"})
+    EXPECT_NE(g.find(next), std::string::npos) << next << g;
+  // The job `import` writes holds the same keys and cuts the same program.
+  const fs::path job = dir / "part.json", nc2 = dir / "imported.nc";
+  ASSERT_EQ(bezcam(with({"import", "samples/part.dxf", "--skip", "HOLES:3B", "-o", job.string()}, kDrill)).status, 0);
+  const std::string j = testproc::slurp(job);
+  EXPECT_EQ(std::regex_search(j, std::regex(R"("operation": "drill", .*"peck": 0.5, "chip_break": true)")), true) << j;
+  ASSERT_EQ(bezcam({"convert", job.string(), "--machine", "linuxcnc", "-o", nc2.string(), "-q"}).status, 0);
+  const auto body = [](std::string s) { return s.substr(s.find('\n', s.find('\n') + 1)); };
+  EXPECT_EQ(body(testproc::slurp(nc2)), body(g));
+}
+
+TEST(DrillDrawing, AContourThatIsNoCircleIsRefused) {
+  testproc::TempDir dir;
+  const fs::path nc = dir / "part.nc";
+  const auto r = bezcam(with({"convert", "samples/part.dxf", "-o", nc.string()}, kDrill));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(
+      r.err_first_line().rfind("bezcam: error: samples/part.dxf: entities[5].operation: \"drill\" makes a hole", 0), 0u)
+      << r.err;
+  EXPECT_FALSE(fs::exists(nc));
+}
+
+}  // namespace
