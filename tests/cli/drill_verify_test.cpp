@@ -53,4 +53,20 @@ TEST(DrillVerify, HolesAreComparedWithTheirCircles) {
   EXPECT_TRUE(std::regex_search(moved.out, std::regex(R"(spot: largest gouge 0\.(4[89]|5)\d* mm)"))) << moved.out;
 }
 
+// The plate sample: a recess round two bosses, four holes drilled with a
+// second tool, the outline with a third; no gouge anywhere.
+TEST(DrillVerify, TheDrilledPlateSampleHasNoGouge) {
+  testproc::TempDir dir;
+  const fs::path nc = dir / "plate.nc";
+  ASSERT_EQ(
+      bezcam({"convert", "samples/part-plate-drilled.json", "--machine", "linuxcnc", "-o", nc.string(), "-q"}).status,
+      0);
+  const auto r = bezcam(
+      {"verify", nc.string(), "--machine", "linuxcnc", "--design", "samples/part-plate-drilled.json", "--cell", "0.1"});
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  for (const char* hole : {"hole-1: largest gouge 0 mm", "hole-2: largest gouge 0 mm", "hole-3: largest gouge 0 mm",
+                           "hole-4: largest gouge 0 mm"})
+    EXPECT_NE(r.out.find(hole), std::string::npos) << r.out;
+}
+
 }  // namespace
