@@ -2,6 +2,7 @@
 // and the drilling keys reach the program through `convert` and through
 // `import`; a contour of that layer that is no circle is refused, exit 2,
 // nothing written.
+#include <fstream>
 #include <gtest/gtest.h>
 #include <regex>
 
@@ -58,6 +59,28 @@ TEST(DrillDrawing, AContourThatIsNoCircleIsRefused) {
       r.err_first_line().rfind("bezcam: error: samples/part.dxf: entities[5].operation: \"drill\" makes a hole", 0), 0u)
       << r.err;
   EXPECT_FALSE(fs::exists(nc));
+}
+
+// `check` says where a point is.
+TEST(DrillDrawing, CheckListsAPointsPlace) {
+  const auto r = bezcam({"check", "samples/part-plate-drilled.json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("entities[3] \"hole-1\": point at (8, 8)\n"), std::string::npos) << r.out;
+}
+
+// An SVG's circles are holes too.
+TEST(DrillDrawing, SvgCirclesAreDrilled) {
+  testproc::TempDir dir;
+  const fs::path svg = dir / "holes.svg", nc = dir / "holes.nc";
+  std::ofstream(svg) << R"(<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">)"
+                        R"(<circle id="a" cx="20" cy="20" r="2.5"/><circle id="b" cx="50" cy="20" r="2.5"/></svg>)";
+  const auto r =
+      bezcam({"convert", svg.string(), "--set", "feed=500", "--set", "plunge_feed=100", "--set", "cut_z=-3", "--set",
+              "operation=drill", "--set", "tool_diameter=5", "--machine", "linuxcnc", "-o", nc.string(), "-q"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string g = testproc::slurp(nc);
+  EXPECT_NE(g.find("\nG98 G81 X20. Y80. Z-3. R5. F100.\n"), std::string::npos) << g;
+  EXPECT_NE(g.find("\nX50. Y80.\nG80\n"), std::string::npos) << g;
 }
 
 }  // namespace
