@@ -83,4 +83,18 @@ TEST(DrillDrawing, SvgCirclesAreDrilled) {
   EXPECT_NE(g.find("\nX50. Y80.\nG80\n"), std::string::npos) << g;
 }
 
+// The setup sheet says how each hole is cut.
+TEST(DrillDrawing, TheSetupSheetSaysHowEachHoleIsDrilled) {
+  testproc::TempDir dir;
+  const fs::path html = dir / "plate.html";
+  const auto r = bezcam({"sheet", "samples/part-plate-drilled.json", "--machine", "fanuc", "-o", html.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string h = testproc::slurp(html);
+  size_t n = 0;
+  for (size_t at = h.find("drilled, pecks of 3 mm"); at != std::string::npos;
+       at = h.find("drilled, pecks of 3 mm", at + 1))
+    ++n;
+  EXPECT_EQ(n, 4u) << h;
+}
+
 }  // namespace
