@@ -159,5 +159,25 @@ def plate():
                    "tool":1,"tool_diameter":6,"direction":"climb","tolerance_side":"waste"},
             "entities":[recess,boss1,boss2,outline]}
 
-for name,f in [("part-plate",plate),("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-flange-tools",flange_tools),("part-cam-notch",cam),("part-lettering",lettering)]:
+# The plate with four holes of 5 mm through it, drilled in pecks of 3 mm
+# (G83) between the recess and the outline: two drawn as points, two as
+# circles. Three tools: the recess's 6 mm end mill (T1), a 5 mm drill (T2),
+# an 8 mm end mill for the outline (T3) (docs/holes.md).
+def plate_drilled():
+    j=plate()
+    j["tools"]={"1":{"shape":"flat","diameter":6,"center_cutting":True},
+                "2":{"shape":"drill","diameter":5,"point_angle":118,"flute_length":30},
+                "3":{"shape":"flat","diameter":8,"flute_length":20}}
+    del j["job"]["tool_diameter"]
+    holes=[]
+    for k,(x,y) in enumerate([(8,8),(92,8),(92,62),(8,62)]):
+        h={"type":"point","at":[x,y]} if k%2==0 else circle(x,y,2.5)
+        h.update({"id":"hole-%d"%(k+1),"operation":"drill","tool":2,"cut_z":-8.5,"peck":3})
+        holes.append(h)
+    outline=j["entities"][-1]
+    outline["tool"]=3
+    j["entities"]=j["entities"][:-1]+holes+[outline]
+    return j
+
+for name,f in [("part-plate",plate),("part-plate-drilled",plate_drilled),("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-flange-tools",flange_tools),("part-cam-notch",cam),("part-lettering",lettering)]:
     open("samples/%s.json"%name,"w").write(json.dumps(f(),indent=1)+"\n")

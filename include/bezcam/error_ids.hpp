@@ -256,8 +256,13 @@ inline constexpr ErrorId job_type{"job.type"};
 inline constexpr ErrorId job_units{"job.units"};
 /// A curve on a surface leaves the patch's parameter square.
 inline constexpr ErrorId job_uv_range{"job.uv-range"};
-/// An operation bezcam does not do yet (`drill`, `bore`).
+/// An operation bezcam does not know, or one the entity cannot take (a
+/// point that is not drilled or bored).
 inline constexpr ErrorId job_operation{"job.operation"};
+/// A hole that cannot be made as asked (docs/holes.md): a drill of
+/// another diameter than the circle, a hole deeper than the drill's
+/// flutes, a bore smaller than the tool, a curve that is not a circle.
+inline constexpr ErrorId job_hole{"job.hole"};
 /// A pocket that cannot be cleared as asked: an open entity, islands
 /// crossing the outline, a stepover or entry that does not fit, a region
 /// where the tool fits nowhere.

@@ -18,6 +18,7 @@
 #include "bezcam/flatten/nesting.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "cut_emitters.hpp"
+#include "hole_cut.hpp"
 #include "measure_path.hpp"
 
 namespace bezcam {
@@ -87,6 +88,7 @@ CutParams cut_params(const Job& job, const Entity& e, const MachineProfile& m) {
   if (const ToolEntry* t = entity_tool_entry(job, e, defaults); t && !e.surface && e.curve.dim == 2)
     c.flute_length = t->flute_length;
   c.pocket = p.pocket;
+  c.drill = p.drill;
   if (c.clearance && c.top_z + *c.clearance <= c.cut_z && !e.surface)
     throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
                      "the clearance plane (top_z " + fmt_num(c.top_z) + " + clearance " + fmt_num(*c.clearance) +
@@ -407,6 +409,7 @@ void move_part(Program& p, const Vec3& offset) {
           using T = std::decay_t<decltype(x)>;
           if constexpr (std::is_base_of_v<Motion, T>) shift(x.to);
           if constexpr (std::is_same_v<T, ArcMove>) shift(x.center);
+          if constexpr (std::is_same_v<T, CannedCycle>) shift(x.at);
           if constexpr (std::is_same_v<T, CurveMove>)
             for (auto& c : x.ctrl) shift(c);
         },
@@ -424,7 +427,9 @@ Job ordered(const Job& job, const MachineProfile& m, Program& p) {
   std::vector<OrderContour> cs;
   for (const Entity& e : job.entities) {
     OrderContour c;
-    if (e.surface || e.curve.pieces.empty()) {
+    if (const auto centre = detail::hole_centre(e, cut_params(job, e, m))) {
+      c.outline = {*centre};  // a hole: a point, drilled or bored from its centre
+    } else if (e.surface || e.curve.pieces.empty()) {
       const Box3 b = e.surface ? bounds(*e.surface) : Box3{};
       c.outline = {b.empty() ? Vec3{} : b.lo, b.empty() ? Vec3{} : b.hi};
       c.movable = false;
@@ -511,6 +516,32 @@ bool cut_pocket_region(const Job& job, const MachineProfile& m, const ConvertOpt
   return true;
 }
 
+// An entity with `operation: "drill"` or `"bore"`: its hole (hole_cut.cpp).
+// `joins` says whether the hole before left the drill at the R plane for
+// this one, and is set for the next. False for any other entity.
+bool cut_hole_entity(const Job& job, const MachineProfile& m, const ConvertOptions& opt, const Entity& e,
+                     const CutParams& cp, double safe, detail::MotionState ms, Program& p, detail::Measurements& later,
+                     ProgramLength& length, bool& joins) {
+  detail::CutContext hc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
+  const size_t i = static_cast<size_t>(&e - job.entities.data());
+  const bool joins_next =
+      detail::holes_join(job, m, e, i + 1 < job.entities.size() ? &job.entities[i + 1] : nullptr, p.decimals);
+  const bool hole = detail::cut_hole(hc, ms, safe, joins, joins_next, opt.output != OutputMode::lines && m.arcs);
+  joins = hole && joins_next;
+  if (!hole) return false;
+  later.release();
+  length.after_entity(p, job, e);
+  return true;
+}
+
+// A pocket's region or a hole (the two above); false for any other entity.
+bool cut_op(const Job& job, const MachineProfile& m, const ConvertOptions& opt, const Entity& e, const CutParams& cp,
+            double safe, detail::MotionState ms, Program& p, detail::Measurements& later, ProgramLength& length,
+            bool& joins) {
+  return cut_pocket_region(job, m, opt, e, cp, safe, ms, p, later, length) ||
+         cut_hole_entity(job, m, opt, e, cp, safe, ms, p, later, length, joins);
+}
+
 // A closed contour cut "outside" whose innermost enclosing contour (among
 // those cut inside or outside) is cut "outside" too is a hole in that
 // part: cut on its outside, it comes out larger by the tool's diameter,
@@ -592,9 +623,9 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   double cur_rpm = -1;
   Coolant cur_coolant = Coolant::off;
   Vec3 pos;
-  bool pos_known = false;
-  ProgramLength length;      // stated limits (program_limits.hpp)
-  std::deque<Entity> owned;  // part cutting's geometry, read by `later`
+  bool pos_known = false, at_r = false;  // at_r: the drill waits at a hole's R plane (hole_cut.cpp)
+  ProgramLength length;                  // stated limits (program_limits.hpp)
+  std::deque<Entity> owned;              // part cutting's geometry, read by `later`
   detail::Measurements later;
   for (const Entity& e : job.entities) {
     if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
@@ -616,7 +647,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
       length.after_entity(p, job, e);
       continue;
     }
-    if (cut_pocket_region(job, m, opt, e, cp, safe, {cur_tool, cur_rpm, pos, pos_known, cur_coolant}, p, later, length))
+    if (cut_op(job, m, opt, e, cp, safe, {cur_tool, cur_rpm, pos, pos_known, cur_coolant}, p, later, length, at_r))
       continue;
     if (g.pieces.empty()) continue;
 

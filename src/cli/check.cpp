@@ -73,7 +73,8 @@ int run_check(const CheckArgs& o) {
   for (const auto& e : job.entities) {
     const auto& g = e.curve;
     std::cout << e.json_path() << (e.id.empty() ? "" : " \"" + e.id + "\"") << ": " << e.type;
-    if (!e.glyph.empty()) std::cout << " \"" << e.glyph << "\"";  // a glyph's contour (job/text.hpp)
+    if (!e.glyph.empty()) std::cout << " \"" << e.glyph << "\"";    // a glyph's contour (job/text.hpp)
+    if (e.point) std::cout << " at " << fmt_point(*e.point, 2, 6);  // a hole (docs/holes.md)
     if (!g.pieces.empty()) {
       std::cout << ", " << g.dim << "D, degree " << g.max_degree() << (g.rational() ? ", rational" : "") << ", "
                 << g.pieces.size() << " Bézier piece" << (g.pieces.size() == 1 ? "" : "s") << ", length "

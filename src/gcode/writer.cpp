@@ -74,6 +74,7 @@ class Writer {
     line(std::string(p_.units == Units::mm ? "G21" : "G20") + " G90 G17");
     for (const auto& l : m_.preamble) line(subst(l));
     for (const Move& mv : p_.moves) move(mv);
+    end_cycles();
     plane(Plane::xy);  // the program ends in G17, as it began
     for (const auto& f : m_.footer) {
       if (!f.empty() && f[0] == '%')
@@ -242,6 +243,17 @@ class Writer {
   }
 
   void move(const Move& mv) {
+    const bool canned = m_.cycles.dialect != CannedCycles::Dialect::none;
+    if (mv.in_cycle && canned) {  // printed as the cycle's line: where it takes the drill
+      if (const Motion* mo = motion_of(mv))
+        for (int k = 0; k < 3; ++k)
+          if (mo->axes & (1u << k)) {
+            pos_[k] = mo->to[k];
+            axis_[k] = num(mo->to[k]);
+          }
+      return;
+    }
+    if (!std::holds_alternative<Comment>(mv.what) && !std::holds_alternative<CannedCycle>(mv.what)) end_cycles();
     // Back to G17 before what assumes it: compensation, curve blocks (G5.x
     // are XY moves), the operator's and the job's lines, tool changes. Lines,
     // rapids, comments, spindle, coolant and dwells do not depend on it.
@@ -274,6 +286,8 @@ class Writer {
       line(word("M0", "M00") + " " + comment(st->message));  // the operator's message, even without comments
     } else if (const auto* cc = std::get_if<CompensationMove>(&mv.what)) {
       line(cc->side == 0 ? std::string("G40") : (cc->side > 0 ? "G41 D" : "G42 D") + std::to_string(cc->d));
+    } else if (const auto* cy = std::get_if<CannedCycle>(&mv.what)) {
+      if (canned) cycle(*cy);  // else its moves follow as they are
     } else if (const auto* a = std::get_if<ArcMove>(&mv.what)) {
       arc(*a);
     } else if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {
@@ -281,6 +295,36 @@ class Writer {
     } else {
       straight(*motion_of(mv), is_rapid(mv));
     }
+  }
+
+  // A canned drilling cycle: the whole line (G98/G99, the cycle, the hole,
+  // its bottom, R, Q or P, F) where the cycle mode begins or its words
+  // change, the hole's X and Y alone for the next hole of the same cycle.
+  void cycle(const CannedCycle& cy) {
+    const bool same = cycle_on_ && cy.code == cycle_.code && cy.r == cycle_.r && cy.z == cycle_.z && cy.q == cycle_.q &&
+                      cy.p == cycle_.p && cy.feed == cycle_.feed && cy.to_r == cycle_.to_r;
+    std::string s;
+    if (!same) s = std::string(cy.to_r ? "G99" : "G98") + " G" + std::to_string(cy.code);
+    word_to(s, 'X', num(cy.at.x));
+    word_to(s, 'Y', num(cy.at.y));
+    if (!same) {
+      word_to(s, 'Z', num(cy.z));
+      word_to(s, 'R', num(cy.r));
+      if (cy.code == 73 || cy.code == 83) word_to(s, 'Q', num(cy.q));
+      if (cy.code == 82) word_to(s, 'P', format_number(cy.p, 3));
+      feed_.clear();  // F on the line that enters the cycle, always
+      feed_to(s, cy.feed);
+    }
+    line(s);
+    cycle_on_ = true;
+    cycle_ = cy;
+  }
+  // G80 when a cycle mode is on: what follows is no hole.
+  void end_cycles() {
+    if (!cycle_on_) return;
+    line("G80");
+    cycle_on_ = false;
+    motion_.clear();  // G80 leaves no motion mode: the next move says G00 or G01
   }
 
   // G00 / G01: only the axes that change (modal), no line at all when none does.
@@ -414,6 +458,8 @@ class Writer {
   std::string axis_[3], motion_, feed_;
   Vec3 pos_;                 // current position as printed
   Plane plane_ = Plane::xy;  // the arc plane in force (the units line sets G17)
+  bool cycle_on_ = false;    // in a canned cycle mode (cycle_'s), until G80
+  CannedCycle cycle_;
 };
 
 }  // namespace

@@ -392,6 +392,7 @@ JobParams parse_params(const JsonCtx& ctx, const json& obj, const std::string& p
     p.tabs = t;
   }
   p.pocket = parse_pocket_keys(ctx, obj, path);
+  p.drill = parse_drill_keys(ctx, obj, path);
   if (!entity_level) {
     std::vector<std::string_view> keys(kParamKeys.begin(), kParamKeys.end());
     if (path != "job") keys.pop_back();  // `order` is the job's
@@ -450,6 +451,11 @@ void parse_entity(const JsonCtx& ctx, const json& obj, size_t index, std::vector
   } else if (e.type == "curve_on_surface") {
     keys({"surface", "curve"});
     parse_curve_on_surface_entity(ctx, obj, path, e);
+  } else if (e.type == "point") {
+    keys({"at"});
+    const json& at = ctx.require(obj, path, "at");
+    if (!at.is_array() || at.size() != 2) ctx.expected(path + ".at", "a point [x, y]", at);
+    e.point = ctx.point(at, path + ".at", &dim);
   } else if (e.type == "text") {
     keys({"text", "font", "size", "at", "align", "angle"});
     parse_text_entity(ctx, obj, path, e, out);
@@ -457,7 +463,7 @@ void parse_entity(const JsonCtx& ctx, const json& obj, size_t index, std::vector
   } else {
     ctx.fail(path + ".type", errc::job_entity_type,
              "expected one of \"bezier\", \"bspline\", \"path\", \"interpolate\", \"bezier_patch\", "
-             "\"coons_patch\", \"curve_on_surface\", \"text\", found " +
+             "\"coons_patch\", \"curve_on_surface\", \"text\", \"point\", found " +
                  describe(obj["type"]));
   }
   out.push_back(std::move(e));
@@ -491,6 +497,7 @@ JobParams JobParams::over(const JobParams& base) const {
   if (controller_compensation) r.controller_compensation = controller_compensation;
   if (tolerance_side) r.tolerance_side = tolerance_side;
   r.pocket = pocket.over(base.pocket);
+  r.drill = drill.over(base.drill);
   return r;
 }
 

@@ -20,12 +20,14 @@ using json = nlohmann::json;
 
 /// The cutting parameters, at job and entity level (docs/job-format.md);
 /// the last, `order`, is the job's only.
-inline constexpr std::array<std::string_view, 31> kParamKeys = {
+inline constexpr std::array<std::string_view, 36> kParamKeys = {
     "feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius", "gouge", "coolant", "clearance",
     "top_z", "before", "after", "side", "tool_diameter", "stock_to_leave", "step_down", "direction", "lead", "tabs",
     "compensation", "tolerance_side",
     // Pocket clearing (job_json_pocket.cpp).
-    "operation", "region", "pattern", "angle", "stepover", "finish", "entry", "rest_from", "order"};
+    "operation", "region", "pattern", "angle", "stepover", "finish", "entry", "rest_from",
+    // Drilling (job_json_pocket.cpp).
+    "to", "peck", "chip_break", "dwell", "retract_z", "order"};
 /// The keys of `lead` and `tabs`.
 inline constexpr std::array<std::string_view, 2> kLeadKeys = {"radius", "length"};
 inline constexpr std::array<std::string_view, 3> kTabsKeys = {"count", "width", "height"};
@@ -94,6 +96,8 @@ ToolTable parse_tools_object(const JsonCtx& ctx, const json& obj, const std::str
 
 /// The pocket keys of an entity or the job (job_json_pocket.cpp).
 PocketKeys parse_pocket_keys(const JsonCtx& ctx, const json& obj, const std::string& path);
+/// The drilling keys of an entity or the job (job_json_pocket.cpp).
+DrillKeys parse_drill_keys(const JsonCtx& ctx, const json& obj, const std::string& path);
 
 /// Describes a JSON value for "found ..." in messages.
 std::string describe(const json& v);

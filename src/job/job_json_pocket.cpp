@@ -1,5 +1,6 @@
 // The pocket keys (docs/pocket.md): `operation`, `region`, `pattern`,
-// `angle`, `stepover`, `finish`, `entry`, `rest_from`.
+// `angle`, `stepover`, `finish`, `entry`, `rest_from`; the drilling keys
+// (docs/holes.md): `to`, `peck`, `chip_break`, `dwell`, `retract_z`.
 #include <cmath>
 
 #include "bezcam/format.hpp"
@@ -17,6 +18,16 @@ PocketKeys PocketKeys::over(const PocketKeys& base) const {
   if (finish_stock) r.finish_stock = finish_stock;
   if (rest_from) r.rest_from = rest_from;
   if (entry) r.entry = entry;
+  return r;
+}
+
+DrillKeys DrillKeys::over(const DrillKeys& base) const {
+  DrillKeys r = base;
+  if (to_tip) r.to_tip = to_tip;
+  if (peck) r.peck = peck;
+  if (chip_break) r.chip_break = chip_break;
+  if (dwell) r.dwell = dwell;
+  if (retract_z) r.retract_z = retract_z;
   return r;
 }
 
@@ -77,13 +88,13 @@ PocketKeys parse_pocket_keys(const JsonCtx& ctx, const json& obj, const std::str
       k.operation = Operation::profile;
     else if (v == "pocket")
       k.operation = Operation::pocket;
-    else if (v == "drill" || v == "bore")
-      ctx.fail(sub("operation"), errc::job_operation,
-               "\"" + v +
-                   "\" is not done by this version of bezcam; cut the hole as a pocket (\"operation\": "
-                   "\"pocket\") or a profile");
+    else if (v == "drill")
+      k.operation = Operation::drill;
+    else if (v == "bore")
+      k.operation = Operation::bore;
     else
-      ctx.fail(sub("operation"), errc::job_operation, "expected \"profile\" or \"pocket\", found " + describe(*it));
+      ctx.fail(sub("operation"), errc::job_operation,
+               "expected \"profile\", \"pocket\", \"drill\" or \"bore\", found " + describe(*it));
   }
   if (auto it = obj.find("region"); it != obj.end()) k.region = ctx.string(*it, sub("region"));
   if (auto it = obj.find("pattern"); it != obj.end()) {
@@ -113,6 +124,32 @@ PocketKeys parse_pocket_keys(const JsonCtx& ctx, const json& obj, const std::str
   }
   if (auto it = obj.find("entry"); it != obj.end()) k.entry = parse_entry(ctx, *it, sub("entry"));
   if (auto it = obj.find("rest_from"); it != obj.end()) k.rest_from = ctx.positive(*it, sub("rest_from"));
+  return k;
+}
+
+DrillKeys parse_drill_keys(const JsonCtx& ctx, const json& obj, const std::string& path) {
+  DrillKeys k;
+  auto sub = [&](const char* key) { return path.empty() ? std::string(key) : path + "." + key; };
+  if (auto it = obj.find("to"); it != obj.end()) {
+    const std::string v = ctx.string(*it, sub("to"));
+    if (v != "tip" && v != "diameter")
+      ctx.fail(sub("to"), errc::job_hole,
+               "expected \"diameter\" (cut_z is where the drill cuts its full diameter) or \"tip\" (cut_z is "
+               "where its tip goes), found " +
+                   describe(*it));
+    k.to_tip = v == "tip";
+  }
+  auto non_negative = [&](const char* key, std::optional<double>& out, const char* what) {
+    auto it = obj.find(key);
+    if (it == obj.end()) return;
+    const double d = ctx.number(*it, sub(key));
+    if (d < 0) ctx.fail(sub(key), errc::job_hole, std::string("expected ") + what + " >= 0, found " + fmt_num(d));
+    out = d;
+  };
+  non_negative("peck", k.peck, "a peck depth (0: no pecks)");
+  non_negative("dwell", k.dwell, "a dwell in seconds");
+  if (auto it = obj.find("chip_break"); it != obj.end()) k.chip_break = ctx.boolean(*it, sub("chip_break"));
+  if (auto it = obj.find("retract_z"); it != obj.end()) k.retract_z = ctx.number(*it, sub("retract_z"));
   return k;
 }
 

@@ -221,6 +221,13 @@ void operations_section(std::ostringstream& h, const SetupSheetInput& in) {
       const CutParams c = cut_params(job, job.entities[static_cast<size_t>(r.entity)], *in.machine);
       std::string more;
       const auto add = [&](const std::string& s) { more += (more.empty() ? "" : "; ") + s; };
+      if (c.pocket.operation == Operation::drill) {
+        const double q = c.drill.peck.value_or(0), dwell = c.drill.dwell.value_or(0);
+        add(std::string("drilled") + (q > 0 ? ", pecks of " + num(q) + " " + u : std::string()) +
+            (q > 0 && c.drill.chip_break.value_or(false) ? " breaking the chip" : "") +
+            (dwell > 0 ? ", dwell " + num(dwell) + " s" : std::string()));
+      }
+      if (c.pocket.operation == Operation::bore) add("bored: a helix down, a full circle at the bottom");
       if (c.direction != CutDirection::as_drawn) add(direction_text(c.direction));
       if (r.offset > 0) add("tool centre " + num(r.offset) + " " + u + " from the curve");
       if (c.stock_to_leave != 0) add("leaves " + num(c.stock_to_leave) + " " + u);

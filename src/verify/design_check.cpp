@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 
 #include "bezcam/cam/program.hpp"
@@ -53,7 +54,8 @@ double flatness(const CurveGeometry& c) {
 // Why an entity is not in the 2.5D model, or nothing when it is.
 std::optional<std::string> not_modelled(const Entity& e, const std::optional<ToolShape>& tool) {
   if (e.surface) return "a surface: the verifier compares walls and grooves of curves only";
-  if (e.curve.pieces.empty()) return "no curve to compare";
+  if (e.point && !tool) return "no tool: a point's hole is as wide as the tool that drills it";
+  if (e.curve.pieces.empty() && !e.point) return "no curve to compare";
   if (e.curve.dim == 3 && flatness(e.curve) > 1e-9) return "a curve that is not flat: compared walls are vertical";
   if (!tool) return "no tool: the entity gives no `tool_diameter` and the tools table no entry for its tool";
   return std::nullopt;
@@ -112,6 +114,41 @@ DesignEntity read_entity(const Job& job, const Entity& e, const CutParams& c, do
   d.stock_to_leave = c.stock_to_leave * k;
   d.tab_height = c.tabs ? c.tabs->height * k : 0;
   d.tool = tool;
+  return d;
+}
+
+// A hole (docs/holes.md) is a pocket of one wall, waste inside: the
+// circle drawn, or for a point the circle of the tool's diameter about it
+// (a polygon whose sagitta goes to the design's bound). A drill's point
+// goes below cut_z by its length unless cut_z is the tip's (`"to":
+// "tip"`): the floor allowed is the tip's.
+DesignEntity read_hole(const Job& job, const Entity& e, const CutParams& c, double k, const ToolShape& tool,
+                       double& bound) {
+  DesignEntity d;
+  if (e.point) {
+    d.index = e.index;
+    const double r = tool.radius();
+    constexpr int n = 720;
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * std::numbers::pi * i / n;
+      d.wall.points.push_back({e.point->x * k + r * std::cos(a), e.point->y * k + r * std::sin(a), 0});
+    }
+    bound = std::max(bound, r * (1 - std::cos(std::numbers::pi / n)));
+    d.top = c.top_z * k;
+    d.cut = c.cut_z * k;
+    d.stock_to_leave = c.stock_to_leave * k;
+    d.tool = tool;
+  } else {
+    d = read_entity(job, e, c, k, tool, bound);
+  }
+  d.pocket = true;
+  d.groove = false;
+  d.region = "hole " + e.label();
+  d.wall.closed = true;
+  d.wall.waste_inside_or_left = true;
+  d.tab_height = 0;
+  if (c.pocket.operation == Operation::drill && tool.kind() == ToolShapeKind::drill && !c.drill.to_tip.value_or(false))
+    d.cut -= tool.cutting_height();
   return d;
 }
 
@@ -269,12 +306,16 @@ DesignCheck check_design(const DexelGrid& g, const Job& job, const MachineProfil
     const std::optional<ToolShape> tool = entity_tool(e, c, k, tools);
     const PocketKeys pk = e.params.pocket.over(job.params.pocket);
     const bool pocket = pk.operation == Operation::pocket;
+    const bool hole = pk.operation == Operation::drill || pk.operation == Operation::bore;
     const std::string region = pk.region.value_or(e.label());
     auto same = std::find_if(design.begin(), design.end(),
                              [&](const DesignEntity& d) { return d.pocket && d.region == region; });
     if (const auto why = not_modelled(e, tool)) {
       ec.compared = false;
       ec.not_compared = *why;
+    } else if (hole) {
+      design.push_back(read_hole(job, e, c, k, *tool, out.design_bound));
+      top = std::max(top, design.back().top);
     } else if (pocket && same != design.end()) {
       // One region by the even-odd rule: the outline, its islands, ...
       DesignEntity more = read_entity(job, e, c, k, *tool, out.design_bound);
@@ -345,7 +386,8 @@ std::optional<StockBox> design_stock_box(const Job& job, const MachineProfile& m
     if (const auto t = entity_tool(e, c, k, tools)) widest = std::max(widest, t->diameter());
     top = std::max(top, c.top_z * k);
     deepest = std::min(deepest, c.cut_z * k);
-    const Box3 eb = e.surface ? Box3{} : e.curve.bounds();
+    Box3 eb = e.surface ? Box3{} : e.curve.bounds();
+    if (e.point) eb.add(*e.point);
     if (!eb.empty()) {
       b.add(Vec3{eb.lo.x * k, eb.lo.y * k, 0});
       b.add(Vec3{eb.hi.x * k, eb.hi.y * k, 0});

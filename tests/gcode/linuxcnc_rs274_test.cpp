@@ -652,4 +652,41 @@ TEST(LinuxcncRs274, CannedCyclesMoveAndDwellAsLinuxcncRunsThem) {
   EXPECT_GT(moves, 150u);
 }
 
+// bezcam's own drilled holes (docs/holes.md) in each cycle: two G81 holes
+// waiting at R (G99), then G83, G73 and G82 back to the initial level
+// (G98): LinuxCNC moves exactly as the program's moves say, peck by peck.
+TEST(LinuxcncRs274, DrilledHolesMoveAsTheProgramSays) {
+  const std::string exe = find_rs274();
+  if (exe.empty())
+    GTEST_SKIP() << "rs274 (LinuxCNC's standalone interpreter, Debian package linuxcnc-uspace) is not installed";
+  const Job job = parse_job(R"({"bezcam":1,"units":"mm","tolerance":0.01,
+   "tools":{"2":{"shape":"drill","diameter":5,"point_angle":118}},
+   "job":{"feed":800,"plunge_feed":150,"safe_z":5,"top_z":0,"clearance":1,"tool":2,"cut_z":-7.3,"operation":"drill"},
+   "entities":[{"type":"point","at":[10,10]},{"type":"point","at":[20,10]},
+    {"type":"point","at":[30,10],"peck":2.5,"retract_z":2},
+    {"type":"point","at":[40,10],"peck":1.5,"chip_break":true,"retract_z":3},
+    {"type":"point","at":[50,10],"dwell":0.5,"retract_z":4}]})",
+                            "holes.json");
+  const MachineProfile m = load_machine_profile("linuxcnc");
+  const ConvertResult r = convert(job, m, {});
+  for (const char* cycle : {"G99 G81", "G98 G83", "G98 G73", "G98 G82"})
+    EXPECT_NE(r.gcode.find(cycle), std::string::npos) << cycle;
+  const auto runs = run_rs274(exe, {r.gcode}, {tool_table({})});
+  ASSERT_EQ(runs[0].status, 0) << runs[0].output << "\n--- program ---\n" << r.gcode;
+  ASSERT_NE(runs[0].output.find("PROGRAM_END()"), std::string::npos) << runs[0].output;
+  const auto calls = parse_canon(runs[0].output);
+  const auto want = expected_calls(r.program);
+  ASSERT_LE(want.size(), calls.size());
+  for (size_t k = 0; k < want.size(); ++k) {
+    ASSERT_EQ(calls[k].name, want[k].name) << "call " << k;
+    ASSERT_GE(calls[k].args.size(), 3u);
+    for (int a = 0; a < 3; ++a)
+      if (want[k].axes & (1u << a))
+        EXPECT_NEAR(calls[k].args[static_cast<size_t>(a)], want[k].to[a], 0.5e-4 + 1e-9)
+            << "call " << k << " axis " << a;
+  }
+  EXPECT_GT(want.size(), 40u);  // every peck a move of its own
+  EXPECT_NE(runs[0].output.find("DWELL(0.5"), std::string::npos) << runs[0].output;
+}
+
 }  // namespace bezcam

@@ -124,9 +124,11 @@ TEST(PartRoundTrip, EveryPartSampleInEveryModeKeepsItsBandFromThePart) {
       for (bool leads : {false, true}) {
         Job job = original;
         // A pocket's passes are checked by its certificate and by
-        // tests/cam/pocket_test.cpp; this test reads profiles.
+        // tests/cam/pocket_test.cpp, holes by tests/cam/holes_test.cpp and
+        // tests/gcode/drill_output_test.cpp; this test reads profiles.
         std::erase_if(job.entities, [&](const Entity& e) {
-          return cut_params(original, e, m).pocket.operation == Operation::pocket;
+          const auto op = cut_params(original, e, m).pocket.operation;
+          return op == Operation::pocket || op == Operation::drill || op == Operation::bore;
         });
         for (size_t i = 0; i < job.entities.size(); ++i) job.entities[i].index = i;
         if (!leads) {

@@ -52,8 +52,6 @@ TEST(PocketKeys, BadValuesAreRefusedWithTheirPath) {
   } cases[] = {
       {R"(,"stepover":0)", "job.pocket", "entities[0].stepover"},
       {R"(,"stepover":-1)", "job.pocket", "entities[0].stepover"},
-      {R"(,"operation":"drill")", "job.operation", "entities[0].operation"},
-      {R"(,"operation":"bore")", "job.operation", "entities[0].operation"},
       {R"(,"operation":"mill")", "job.operation", "entities[0].operation"},
       {R"(,"pattern":"adaptive")", "job.pocket", "entities[0].pattern"},
       {R"(,"entry":"dive")", "job.pocket", "entities[0].entry"},

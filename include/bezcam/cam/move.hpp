@@ -100,11 +100,29 @@ struct CompensationMove {
   double radius = 0;
 };
 
+/// A canned drilling cycle for one hole at `at` (x, y; z unused): G81
+/// (drill), G82 (dwell `p` seconds at the bottom), G83 (pecks of `q`, out
+/// to the R plane after each) or G73 (pecks, backing off a little), from
+/// the R plane `r` down to `z` at `feed`, back to the R plane (G99) or to
+/// the level where the cycle began (G98). Not motion itself: the motion it
+/// stands for follows as ordinary moves marked Move::in_cycle, as the
+/// profile's `canned_cycles` dialect runs the cycle (gcode/reader.hpp).
+/// The writer prints the cycle line and skips them on a profile with
+/// canned cycles, and prints them (without the cycle) on one without.
+struct CannedCycle {
+  Vec3 at;
+  int code = 81;  ///< 81, 82, 83 or 73
+  double r = 0, z = 0, q = 0, p = 0, feed = 0;
+  bool to_r = false;  ///< G99 (true) or G98
+};
+
 struct Move {
   std::variant<RapidMove, LineMove, ArcMove, CurveMove, ToolChangePosition, ToolChange, SpindleMove, Comment, Dwell,
-               CoolantMove, ProgramStop, Verbatim, CompensationMove>
+               CoolantMove, ProgramStop, Verbatim, CompensationMove, CannedCycle>
       what;
   int entity = -1;  ///< index of the job entity it cuts, -1 for none
+  /// Part of the motion of the CannedCycle before it.
+  bool in_cycle = false;
 };
 
 /// The motion part of a move; null for tool changes, spindle, coolant,

@@ -134,6 +134,7 @@ struct CutParams {
   bool controller_compensation = false;
   ToleranceSide tolerance_side = ToleranceSide::both;
   PocketKeys pocket;  ///< as the job gives them (docs/pocket.md)
+  DrillKeys drill;    ///< as the job gives them (docs/holes.md)
   /// Whether the entity is cut as a part (any of the above asked for).
   bool part_cut() const {
     return side != CutSide::on || pass_depth() || lead || tabs || controller_compensation ||

@@ -48,8 +48,10 @@ struct Tabs {
 };
 
 /// What an entity's cut does (key `operation`): follow the curve (a
-/// profile, today's cut) or clear the region it bounds (docs/pocket.md).
-enum class Operation { profile, pocket };
+/// profile, today's cut), clear the region it bounds (docs/pocket.md), or
+/// make a hole at a point or a circle: drill it, or bore it with an end
+/// mill (docs/holes.md).
+enum class Operation { profile, pocket, drill, bore };
 /// How a pocket is cleared: rings parallel to the walls, or parallel lines.
 enum class PocketPattern { offset, zigzag };
 /// How the tool gets down into a pocket.
@@ -68,6 +70,17 @@ struct PocketKeys {
   std::optional<PocketEntry> entry;
   /// Values set here win; the rest come from `base`.
   PocketKeys over(const PocketKeys& base) const;
+};
+
+/// The drilling keys (docs/holes.md); unset values take the defaults there.
+struct DrillKeys {
+  std::optional<bool> to_tip;       ///< `"to": "tip"` (true) or `"diameter"`: what cut_z is the depth of
+  std::optional<double> peck;       ///< 0: none
+  std::optional<bool> chip_break;   ///< G73 instead of G83
+  std::optional<double> dwell;      ///< seconds at the bottom (G82)
+  std::optional<double> retract_z;  ///< the R plane
+  /// Values set here win; the rest come from `base`.
+  DrillKeys over(const DrillKeys& base) const;
 };
 
 /// Cutting parameters (file units); unset values fall back to the entity's
@@ -96,6 +109,7 @@ struct JobParams {
   std::optional<bool> controller_compensation;  ///< `compensation`: "controller" (true) or "cam"
   std::optional<ToleranceSide> tolerance_side;
   PocketKeys pocket;
+  DrillKeys drill;
   /// Values set here win; the rest come from `base`.
   JobParams over(const JobParams& base) const;
 };
@@ -118,6 +132,8 @@ struct Entity {
   std::string glyph;
   JobParams params;     ///< this entity's overrides
   CurveGeometry curve;  ///< for curve entities (bezier, bspline, interpolate, path)
+  /// A `point` entity: where the hole is (z 0); it has no curve.
+  std::optional<Vec3> point;
   /// bezier_patch, coons_patch: the surface; curve_on_surface: the surface
   /// it lies on (shared with the patch entity it names, if any).
   std::shared_ptr<const SurfaceGeometry> surface;
