@@ -416,73 +416,6 @@ void move_part(Program& p, const Vec3& offset) {
                     (rounded ? " (the offset rounded to " + std::to_string(p.decimals) + " decimals)" : ""));
 }
 
-// `order: "shortest"` (cut_order.hpp): the job with its entities in the
-// planned order, closed curves started at the planned joint (their pieces
-// rotated), open ones reversed where that is allowed; the rapid lengths go
-// to the program's notes.
-Job ordered(const Job& job, const MachineProfile& m, Program& p) {
-  std::vector<OrderContour> cs;
-  for (const Entity& e : job.entities) {
-    OrderContour c;
-    if (e.surface || e.curve.pieces.empty()) {
-      const Box3 b = e.surface ? bounds(*e.surface) : Box3{};
-      c.outline = {b.empty() ? Vec3{} : b.lo, b.empty() ? Vec3{} : b.hi};
-      c.movable = false;
-    } else {
-      const auto& pieces = e.curve.pieces;
-      const double scale = std::max(1.0, control_magnitude(pieces));
-      c.closed = e.curve.closed || dist(pieces.front().front(), pieces.back().back()) <= 1e-9 * scale;
-      for (const Bezier& b : pieces) {
-        if (c.closed) c.starts.push_back(c.outline.size());
-        for (double t : {0.0, 0.25, 0.5, 0.75}) c.outline.push_back(t == 0 ? b.front() : evaluate(b, t));
-      }
-      c.outline.push_back(c.closed ? pieces.front().front() : pieces.back().back());
-      const CutParams cp = cut_params(job, e, m);
-      // Reversing an open curve changes its left and right: only a curve
-      // cut on the line, as drawn, with the tolerance on both sides.
-      c.reversible = !c.closed && cp.side == CutSide::on && cp.direction == CutDirection::as_drawn &&
-                     cp.tolerance_side == ToleranceSide::both;
-    }
-    cs.push_back(std::move(c));
-  }
-  const CutOrder plan = plan_cut_order(cs, Vec3{});
-  Job out = job;
-  out.entities.clear();
-  for (const OrderStep& st : plan.steps) {
-    Entity e = job.entities[st.contour];
-    const size_t k = st.start_vertex / 4;  // outline vertices: four per piece
-    const auto& pieces = e.curve.pieces;
-    const bool rotate = cs[st.contour].closed && k > 0 && k < pieces.size();
-    if (rotate || st.reversed) {
-      // The same curve from another start or the other way: one segment of
-      // its pieces (the source NURBS form no longer matches them).
-      std::vector<Bezier> moved;
-      if (rotate) {
-        moved.assign(pieces.begin() + static_cast<long>(k), pieces.end());
-        moved.insert(moved.end(), pieces.begin(), pieces.begin() + static_cast<long>(k));
-      } else {
-        moved = reversed(std::span<const Bezier>(pieces));
-      }
-      CurveSegment seg;
-      seg.kind = e.curve.kind;
-      seg.degree = e.curve.max_degree();
-      seg.rational = e.curve.rational();
-      const bool closed = e.curve.closed;
-      e.curve = make_single(seg, std::move(moved), e.curve.dim);
-      e.curve.closed = closed;
-    }
-    out.entities.push_back(std::move(e));
-  }
-  const std::string u = to_string(job.units);
-  auto mm = [](double v) { return fmt_num(std::round(v * 10) / 10); };
-  p.notes.push_back("order shortest: " + std::to_string(plan.nesting.size()) + " nested contour" +
-                    (plan.nesting.size() == 1 ? "" : "s") + " cut before what encloses them; rapids " +
-                    mm(plan.rapid_planned) + " " + u + " in XY instead of " + mm(plan.rapid_as_written) + " " + u +
-                    " as written (" + mm(plan.rapid_as_written - plan.rapid_planned) + " " + u + " saved)");
-  p.order_summary = p.notes.back();
-  return out;
-}
-
 // An entity with `operation: "pocket"`: its region is cut with the first
 // of its entities (pocket_emit.cpp). False for any other entity.
 bool cut_pocket_region(const Job& job, const MachineProfile& m, const ConvertOptions& opt, const Entity& e,
@@ -554,7 +487,7 @@ std::vector<std::string> nested_outside_warnings(const Job& job) {
 Program build_program_unchecked(const Job& original_job, const MachineProfile& m, const ConvertOptions& opt,
                                 const WhileMeasuring& while_measuring) {
   Program p;
-  const Job ordered_job = original_job.order_shortest ? ordered(original_job, m, p) : Job{};
+  const Job ordered_job = original_job.order_shortest ? detail::ordered(original_job, m, p) : Job{};
   const Job& job = original_job.order_shortest ? ordered_job : original_job;
   p.job_name = std::filesystem::path(job.source).filename().string();
   p.machine = m.name;

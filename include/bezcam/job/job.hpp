@@ -148,9 +148,10 @@ struct Job {
   ToolTable tools;
   /// The tool table in millimetres.
   ToolTable tools_mm() const { return tools.scaled(mm_per_unit(units)); }
-  /// `order`: "shortest" (true): nested contours first, then the order and
-  /// start points that shorten the rapids; "as-written" (false, default).
-  bool order_shortest = false;
+  /// `order`: "shortest" (true, default): nested contours first, one tool
+  /// at a time where the nesting allows, then the order and start points
+  /// that shorten the rapids; "as-written" (false).
+  bool order_shortest = true;
   std::vector<std::string> warnings;  ///< unknown keys and other non-fatal findings
   std::string source;                 ///< file name, for messages
 };
