@@ -123,6 +123,10 @@ struct Entity {
   std::shared_ptr<const SurfaceGeometry> surface;
   ToolpathSpec toolpath;   ///< bezier_patch, coons_patch
   CurveGeometry uv_curve;  ///< curve_on_surface: the 2D curve in the (u, v) square
+  /// An entity read from a drawing: where it is in the drawing, for
+  /// messages (`layer "OUTLINE", LINE (handle 2F) and 7 more joined, from
+  /// (0, 0)`); empty for a job file's entity.
+  std::string origin;
 
   /// The id, or `entities[i]` when there is none.
   std::string label() const { return id.empty() ? json_path() : id; }
