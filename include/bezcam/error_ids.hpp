@@ -463,6 +463,8 @@ inline constexpr ErrorId usage_preview{"usage.preview"};
 inline constexpr ErrorId usage_report{"usage.report"};
 /// A --set names a key the job does not have.
 inline constexpr ErrorId usage_setting{"usage.setting"};
+/// --strict: a warning, taken as an error.
+inline constexpr ErrorId usage_strict{"usage.strict"};
 /// stream: a program file with --abort, or none without it.
 inline constexpr ErrorId usage_stream{"usage.stream"};
 

@@ -140,6 +140,18 @@ void emit_part(CutContext& c, MotionState& ms, EntityReport& r, double safe, dou
 void emit_pocket(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear,
                  const std::vector<const Entity*>& members);
 
+/// The job with its entities in the cut order (`order: "shortest"`,
+/// docs/cut-order.md): nested contours first, one tool at a time where the
+/// nesting allows, then the shortest rapids; closed curves started at the
+/// planned joint (their pieces rotated), open ones reversed where allowed.
+/// With two contours or more, the figures go to `p.order` and a note
+/// (program_order.cpp).
+Job ordered(const Job& job, const MachineProfile& m, Program& p);
+
+/// The name of the pocket region entity `x` belongs to (its `region`, else
+/// its id or label) (pocket_regions.cpp).
+std::string region_of(const Entity& x, const CutParams& c);
+
 /// The entities of e's pocket region (docs/pocket.md), e first; none when
 /// the region was cut already (a pocket's report is named after its
 /// region) (pocket_regions.cpp).

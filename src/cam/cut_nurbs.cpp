@@ -7,6 +7,7 @@
 #include "bezcam/flatten/exact_blocks.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/warnings.hpp"
 #include "cut_emitters.hpp"
 #include "measure_path.hpp"
 
@@ -21,7 +22,7 @@ void note_fallback(CutContext& c) {
   auto& notes = c.program.notes;
   if (std::find(notes.begin(), notes.end(), n) != notes.end()) return;
   notes.push_back(n);
-  c.program.warnings.push_back(n);
+  c.program.warnings.push_back(tagged_warning(n, "output-replaced"));
 }
 
 // G-code lines a block takes: Fanuc one per control point plus one per knot
@@ -94,7 +95,8 @@ void emit_nurbs(CutContext& c, EntityReport& r) {
   if (!notes.empty()) {
     c.program.moves.push_back({Comment{"not exact: " + notes}, entity});
     // Every fallback is said on stderr, not only in the program.
-    c.program.warnings.push_back(c.entity.label() + ": not cut as exact blocks in nurbs output: " + notes);
+    c.program.warnings.push_back(
+        tagged_warning(c.entity.label() + ": not cut as exact blocks in nurbs output: " + notes, "output-replaced"));
   }
   r.blocks = 0;
   r.bound = 0;

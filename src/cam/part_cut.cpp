@@ -17,6 +17,7 @@
 #include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/machine/cutter_comp.hpp"
+#include "bezcam/warnings.hpp"
 
 namespace bezcam::detail {
 
@@ -189,7 +190,7 @@ void PartCut::choose_direction() {
   if (side == 0) {
     const std::string w =
         ent.label() + ": \"direction\" needs a side of the curve (side \"on\" has no part side): cut as drawn";
-    p.warnings.push_back(w);
+    p.warnings.push_back(tagged_warning(w, "direction-ignored"));
   } else if ((cp.direction == CutDirection::climb) != (side > 0)) {
     part = reversed(std::span<const Bezier>(part));
     side = -side;
@@ -313,7 +314,7 @@ void PartCut::warn_material_left(const OffsetResult& o) {
                         " of the curve (inner corners and bends tighter than the tool, gaps narrower than it): "
                         "material is left at " +
                         places + (shown > 3 ? " and " + std::to_string(shown - 3) + " more" : "");
-  p.warnings.push_back(w);
+  p.warnings.push_back(tagged_warning(w, "material-left"));
   p.moves.push_back({Comment{"material left: " + places + (shown > 3 ? ", ..." : "")}, entity});
   r.left = o.left;
 }
@@ -442,12 +443,13 @@ std::vector<double> PartCut::tab_cuts(const Vec3& start, double len) {
   std::vector<double> cuts;
   if (!cp.tabs) return cuts;
   if (cp.tabs->count * tab_span >= len) {
-    p.warnings.push_back(ent.label() + ": a stretch of the path " + fmt_num(std::round(len * 1000) / 1000) +
-                         " long from " + where(start) +
-                         " (the offset falls apart where the part is narrower than the tool) "
-                         "is too short for " +
-                         std::to_string(cp.tabs->count) + " tabs of " + fmt_num(tab_span) +
-                         " (width + tool diameter): it is cut without tabs");
+    p.warnings.push_back(tagged_warning(ent.label() + ": a stretch of the path " +
+                                            fmt_num(std::round(len * 1000) / 1000) + " long from " + where(start) +
+                                            " (the offset falls apart where the part is narrower than the tool) "
+                                            "is too short for " +
+                                            std::to_string(cp.tabs->count) + " tabs of " + fmt_num(tab_span) +
+                                            " (width + tool diameter): it is cut without tabs",
+                                        "tabs-skipped"));
     return cuts;
   }
   for (int t = 0; t < cp.tabs->count; ++t) {

@@ -8,6 +8,7 @@
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/arc_fit.hpp"
+#include "bezcam/warnings.hpp"
 #include "part_cut.hpp"
 
 namespace bezcam::detail {
@@ -146,10 +147,12 @@ Lead PartCut::fit_lead(size_t k, const Stretch& st) {
                                  "sides): remove the lead from this entity"));
   }
   if (l.length < lead_used->length)
-    p.warnings.push_back(ent.label() + ": the lead's line is made " + fmt_num(std::floor(l.length * 1000) / 1000) +
-                         " long, not " + fmt_num(lead_used->length) + ", at " + where(st.s) +
-                         (k > 0 || chains.size() > 1 ? " (stretch " + std::to_string(k + 1) + ")" : std::string()) +
-                         ": a longer one would cut into the part");
+    p.warnings.push_back(
+        tagged_warning(ent.label() + ": the lead's line is made " + fmt_num(std::floor(l.length * 1000) / 1000) +
+                           " long, not " + fmt_num(lead_used->length) + ", at " + where(st.s) +
+                           (k > 0 || chains.size() > 1 ? " (stretch " + std::to_string(k + 1) + ")" : std::string()) +
+                           ": a longer one would cut into the part",
+                       "lead-shortened"));
   return l;
 }
 

@@ -8,13 +8,9 @@
 
 namespace bezcam::detail {
 
-namespace {
-
 std::string region_of(const Entity& x, const CutParams& c) {
   return c.pocket.region.value_or(x.id.empty() ? x.label() : x.id);
 }
-
-}  // namespace
 
 std::vector<const Entity*> pocket_members(const Job& job, const Entity& e, const MachineProfile& m, const Program& p) {
   const std::string region = region_of(e, cut_params(job, e, m));

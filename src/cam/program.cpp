@@ -17,6 +17,7 @@
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/nesting.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/warnings.hpp"
 #include "cut_emitters.hpp"
 #include "hole_cut.hpp"
 #include "measure_path.hpp"
@@ -419,75 +420,6 @@ void move_part(Program& p, const Vec3& offset) {
                     (rounded ? " (the offset rounded to " + std::to_string(p.decimals) + " decimals)" : ""));
 }
 
-// `order: "shortest"` (cut_order.hpp): the job with its entities in the
-// planned order, closed curves started at the planned joint (their pieces
-// rotated), open ones reversed where that is allowed; the rapid lengths go
-// to the program's notes.
-Job ordered(const Job& job, const MachineProfile& m, Program& p) {
-  std::vector<OrderContour> cs;
-  for (const Entity& e : job.entities) {
-    OrderContour c;
-    if (const auto centre = detail::hole_centre(e, cut_params(job, e, m))) {
-      c.outline = {*centre};  // a hole: a point, drilled or bored from its centre
-    } else if (e.surface || e.curve.pieces.empty()) {
-      const Box3 b = e.surface ? bounds(*e.surface) : Box3{};
-      c.outline = {b.empty() ? Vec3{} : b.lo, b.empty() ? Vec3{} : b.hi};
-      c.movable = false;
-    } else {
-      const auto& pieces = e.curve.pieces;
-      const double scale = std::max(1.0, control_magnitude(pieces));
-      c.closed = e.curve.closed || dist(pieces.front().front(), pieces.back().back()) <= 1e-9 * scale;
-      for (const Bezier& b : pieces) {
-        if (c.closed) c.starts.push_back(c.outline.size());
-        for (double t : {0.0, 0.25, 0.5, 0.75}) c.outline.push_back(t == 0 ? b.front() : evaluate(b, t));
-      }
-      c.outline.push_back(c.closed ? pieces.front().front() : pieces.back().back());
-      const CutParams cp = cut_params(job, e, m);
-      // Reversing an open curve changes its left and right: only a curve
-      // cut on the line, as drawn, with the tolerance on both sides.
-      c.reversible = !c.closed && cp.side == CutSide::on && cp.direction == CutDirection::as_drawn &&
-                     cp.tolerance_side == ToleranceSide::both;
-    }
-    cs.push_back(std::move(c));
-  }
-  const CutOrder plan = plan_cut_order(cs, Vec3{});
-  Job out = job;
-  out.entities.clear();
-  for (const OrderStep& st : plan.steps) {
-    Entity e = job.entities[st.contour];
-    const size_t k = st.start_vertex / 4;  // outline vertices: four per piece
-    const auto& pieces = e.curve.pieces;
-    const bool rotate = cs[st.contour].closed && k > 0 && k < pieces.size();
-    if (rotate || st.reversed) {
-      // The same curve from another start or the other way: one segment of
-      // its pieces (the source NURBS form no longer matches them).
-      std::vector<Bezier> moved;
-      if (rotate) {
-        moved.assign(pieces.begin() + static_cast<long>(k), pieces.end());
-        moved.insert(moved.end(), pieces.begin(), pieces.begin() + static_cast<long>(k));
-      } else {
-        moved = reversed(std::span<const Bezier>(pieces));
-      }
-      CurveSegment seg;
-      seg.kind = e.curve.kind;
-      seg.degree = e.curve.max_degree();
-      seg.rational = e.curve.rational();
-      const bool closed = e.curve.closed;
-      e.curve = make_single(seg, std::move(moved), e.curve.dim);
-      e.curve.closed = closed;
-    }
-    out.entities.push_back(std::move(e));
-  }
-  const std::string u = to_string(job.units);
-  auto mm = [](double v) { return fmt_num(std::round(v * 10) / 10); };
-  p.notes.push_back("order shortest: " + std::to_string(plan.nesting.size()) + " nested contour" +
-                    (plan.nesting.size() == 1 ? "" : "s") + " cut before what encloses them; rapids " +
-                    mm(plan.rapid_planned) + " " + u + " in XY instead of " + mm(plan.rapid_as_written) + " " + u +
-                    " as written (" + mm(plan.rapid_as_written - plan.rapid_planned) + " " + u + " saved)");
-  p.order_summary = p.notes.back();
-  return out;
-}
-
 // An entity with `operation: "pocket"`: its region is cut with the first
 // of its entities (pocket_emit.cpp). False for any other entity.
 bool cut_pocket_region(const Job& job, const MachineProfile& m, const ConvertOptions& opt, const Entity& e,
@@ -582,10 +514,100 @@ std::vector<std::string> nested_outside_warnings(const Job& job) {
   return out;
 }
 
+// The refusals of a job's entities: each reported once, a drawing's
+// entity located in the drawing.
+class Refusals {
+ public:
+  void add(const InputError& x, const Entity& e) {
+    add_one(x, e);
+    for (const Error& more : x.more()) add_one(more, e);
+  }
+  void throw_if_any() const {
+    if (all_.empty()) return;
+    InputError first = all_.front();
+    for (size_t i = 1; i < all_.size(); ++i) first.add_more(all_[i]);
+    throw first;
+  }
+
+ private:
+  void add_one(const Error& x, const Entity& e) {
+    for (const InputError& seen : all_)
+      if (seen.id() == x.id() && seen.where() == x.where() && seen.message() == x.message()) return;
+    if (e.origin.empty() || x.message().find(e.origin) != std::string::npos)
+      all_.emplace_back(x.id(), x.place(), x.message());
+    else
+      all_.emplace_back(x.id(), x.place(), x.message() + " [" + e.origin + "]");
+  }
+  std::vector<InputError> all_;
+};
+
+// A curve entity that is not a pocket: tool and spindle, the approach, the
+// cut in the output mode (or as a part: part_cut.cpp), the retract.
+void cut_curve(const Job& job, const MachineProfile& m, const ConvertOptions& opt, const Entity& e, const CutParams& cp,
+               double safe, detail::MotionState ms, Program& p, detail::Measurements& later, ProgramLength& length,
+               std::deque<Entity>& owned) {
+  auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
+  const auto& g = e.curve;
+  if (g.dim == 3) {
+    const Box3 b = g.bounds();
+    if (b.hi.z > cp.safe_z)
+      throw InputError(errc::job_above_safe_z, Place::in_json(job.source, e.json_path()),
+                       "the curve rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " + fmt_num(cp.safe_z) +
+                           "; rapid moves at safe_z would cross it: raise safe_z");
+  }
+  detail::change_tool_and_spindle(p, m, cp, safe, ms, -1);
+  push({Comment{"entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
+                (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")}});
+
+  EntityReport r;
+  r.label = e.label();
+  r.entity = static_cast<int>(e.index);
+  r.type = e.type;
+  r.degree = g.max_degree();
+  r.length = g.length();
+  detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
+  const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
+  const int entity = static_cast<int>(e.index);
+  r.tool = cp.tool;
+  double clear = safe;
+  if (cp.clearance) {
+    clear = std::min(safe, quantize(cp.top_z + *cp.clearance, p.decimals));
+    if (clear <= start.z)
+      throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
+                       "the clearance plane z = " + fmt_num(clear) + " is not above the curve's start (z = " +
+                           fmt_num(start.z) + "): the tool would rapid into the cut; raise \"clearance\" or \"top_z\"");
+    if (clear < safe) r.clear_z = clear;
+  }
+  for (const auto& line : cp.before) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});
+  if (cp.part_cut()) {
+    ctx.owned = &owned;
+    detail::emit_part(ctx, ms, r, safe, clear);  // ends retracted, pos set
+  } else {
+    detail::approach(p, entity, start, safe, clear, cp.plunge_feed, ms);
+    switch (opt.output) {
+      case OutputMode::lines: detail::emit_lines(ctx, r); break;
+      case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
+      case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
+    }
+    ms.pos = motion_of(p.moves.back())->to;  // the cut ends with a motion
+    RapidMove retract;
+    retract.to = {ms.pos.x, ms.pos.y, safe};
+    push({retract, entity});
+    ms.pos = retract.to;
+    ms.pos_known = true;
+  }
+  for (const auto& line : cp.after) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});
+  p.max_measured = std::max(p.max_measured, r.measured);
+  p.max_bound = std::max(p.max_bound, r.bound);
+  p.entities.push_back(r);
+  later.release();  // the entity is complete: its measurements may run
+  length.after_entity(p, job, e);
+}
+
 Program build_program_unchecked(const Job& original_job, const MachineProfile& m, const ConvertOptions& opt,
                                 const WhileMeasuring& while_measuring) {
   Program p;
-  const Job ordered_job = original_job.order_shortest ? ordered(original_job, m, p) : Job{};
+  const Job ordered_job = original_job.order_shortest ? detail::ordered(original_job, m, p) : Job{};
   const Job& job = original_job.order_shortest ? ordered_job : original_job;
   p.job_name = std::filesystem::path(job.source).filename().string();
   p.machine = m.name;
@@ -613,8 +635,10 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
     p.decimals = d;
   }
   p.warnings = job.warnings;
-  for (std::string& w : nested_outside_warnings(job)) p.warnings.push_back(std::move(w));
-  for (std::string& w : detail::nested_pocket_warnings(job, m)) p.warnings.push_back(std::move(w));
+  for (std::string& w : nested_outside_warnings(job))
+    p.warnings.push_back(tagged_warning(std::move(w), "nested-outside"));
+  for (std::string& w : detail::nested_pocket_warnings(job, m))
+    p.warnings.push_back(tagged_warning(std::move(w), "nested-pocket"));
   p.program_number = opt.program_number ? opt.program_number : job.program_number;
   p.tools = job_tools(job, profile_defaults(job, m));
   auto push = [&](Move mv) { p.moves.push_back(std::move(mv)); };
@@ -627,8 +651,11 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   ProgramLength length;                  // stated limits (program_limits.hpp)
   std::deque<Entity> owned;              // part cutting's geometry, read by `later`
   detail::Measurements later;
-  for (const Entity& e : job.entities) {
-    if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
+  // Every independent refusal of an entity is reported, not only the
+  // first: an entity refused, the next ones are still cut (the program is
+  // not returned).
+  Refusals refusals;
+  const auto cut_entity = [&](const Entity& e) {
     const CutParams cp = cut_params(job, e, m);
     check_entity_limits(job, e, p.tolerance, p.decimals, cp.tool_radius,
                         opt.tolerance ? Place::at_setting("tolerance") : Place::in_json(job.source, "tolerance"));
@@ -645,69 +672,22 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
       p.max_bound = std::max(p.max_bound, r.bound);
       p.entities.push_back(r);
       length.after_entity(p, job, e);
-      continue;
+      return;
     }
     if (cut_op(job, m, opt, e, cp, safe, {cur_tool, cur_rpm, pos, pos_known, cur_coolant}, p, later, length, at_r))
-      continue;
-    if (g.pieces.empty()) continue;
-
-    if (g.dim == 3) {
-      const Box3 b = g.bounds();
-      if (b.hi.z > cp.safe_z)
-        throw InputError(errc::job_above_safe_z, Place::in_json(job.source, e.json_path()),
-                         "the curve rises to z = " + fmt_num(b.hi.z) + ", above safe_z = " + fmt_num(cp.safe_z) +
-                             "; rapid moves at safe_z would cross it: raise safe_z");
+      return;
+    if (g.pieces.empty()) return;
+    cut_curve(job, m, opt, e, cp, safe, {cur_tool, cur_rpm, pos, pos_known, cur_coolant}, p, later, length, owned);
+  };
+  for (const Entity& e : job.entities) {
+    if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
+    try {
+      cut_entity(e);
+    } catch (const InputError& x) {
+      refusals.add(x, e);
     }
-    detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known, cur_coolant};
-    detail::change_tool_and_spindle(p, m, cp, safe, ms, -1);
-    push({Comment{"entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
-                  (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")}});
-
-    EntityReport r;
-    r.label = e.label();
-    r.entity = static_cast<int>(e.index);
-    r.type = e.type;
-    r.degree = g.max_degree();
-    r.length = g.length();
-    detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
-    const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
-    const int entity = static_cast<int>(e.index);
-    r.tool = cp.tool;
-    double clear = safe;
-    if (cp.clearance) {
-      clear = std::min(safe, quantize(cp.top_z + *cp.clearance, p.decimals));
-      if (clear <= start.z)
-        throw InputError(errc::job_range, Place::in_json(job.source, e.json_path() + ".clearance"),
-                         "the clearance plane z = " + fmt_num(clear) +
-                             " is not above the curve's start (z = " + fmt_num(start.z) +
-                             "): the tool would rapid into the cut; raise \"clearance\" or \"top_z\"");
-      if (clear < safe) r.clear_z = clear;
-    }
-    for (const auto& line : cp.before) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});
-    if (cp.part_cut()) {
-      ctx.owned = &owned;
-      detail::emit_part(ctx, ms, r, safe, clear);  // ends retracted, pos set
-    } else {
-      detail::approach(p, entity, start, safe, clear, cp.plunge_feed, ms);
-      switch (opt.output) {
-        case OutputMode::lines: detail::emit_lines(ctx, r); break;
-        case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
-        case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
-      }
-      pos = motion_of(p.moves.back())->to;  // the cut ends with a motion
-      RapidMove retract;
-      retract.to = {pos.x, pos.y, safe};
-      push({retract, entity});
-      pos = retract.to;
-      pos_known = true;
-    }
-    for (const auto& line : cp.after) push({Verbatim{expand_entity_template(line, e, cp, p.decimals)}, entity});
-    p.max_measured = std::max(p.max_measured, r.measured);
-    p.max_bound = std::max(p.max_bound, r.bound);
-    p.entities.push_back(r);
-    later.release();  // the entity is complete: its measurements may run
-    length.after_entity(p, job, e);
   }
+  refusals.throw_if_any();
   // The coolant stops with the cut; the profile's footer stops the spindle.
   if (cur_coolant != Coolant::off) push({CoolantMove{Coolant::off}});
   // The moves are final from here on (the measurements read only what their

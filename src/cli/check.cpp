@@ -120,14 +120,16 @@ int run_check(const CheckArgs& o) {
   const auto fmt_sig = [](double v) { return format_significant(v, 3); };
   try {
     const ConvertResult r = convert(job, m, opt);
-    warnings = r.program.warnings;
+    warnings = shown_warnings(r.program.warnings, o.conv);
+    refuse_warnings_if_strict(warnings, o.conv);
     std::cout << "machine " << m.name << ", " << o.conv.output << ": " << r.program.entities.size() << " entit"
               << (r.program.entities.size() == 1 ? "y" : "ies") << " cut, deviation measured "
               << fmt_sig(r.program.max_measured) << ", proven below " << format_bound(r.program.max_bound, 3) << " "
               << u << " (tolerance " << fmt_sig(r.program.tolerance) << ")\n";
-  } catch (const Error&) {
-    // The job's own warnings count even when the machine refuses it.
-    print_warnings(job.warnings);
+  } catch (const Error& e) {
+    // The job's own warnings count even when the machine refuses it
+    // (with --strict they are the refusal).
+    if (e.id() != "usage.strict") print_warnings(job.warnings);
     throw;
   }
   print_warnings(warnings);

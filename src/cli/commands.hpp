@@ -52,7 +52,8 @@ int run_import(const ImportArgs& o);
 
 /// bezcam lint FILE: checks a G-code program against a machine profile.
 struct LintArgs {
-  std::string file, machine = "generic";
+  std::string file;
+  std::string machine;  ///< empty: the machine the program's header names, else generic
   bool quiet = false;
   std::vector<std::string> tool_diameters;  ///< --tool-diameter D=MM
 };

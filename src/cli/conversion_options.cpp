@@ -1,6 +1,7 @@
 // --machine, --tolerance, --output, --strict, --set and --layer.
 #include "conversion_options.hpp"
 
+#include "bezcam/warnings.hpp"
 #include "validators.hpp"
 
 namespace bezcam::cli {
@@ -23,8 +24,20 @@ void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string
           "lines|arcs|nurbs"))
       ->capture_default_str();
   s->add_flag("--strict", o.strict,
-              "accepted for scripts that pass it: every unknown key of a job is refused, with "
-              "or without it");
+              "take every warning as an error: exit status 2, nothing written (every unknown key of a job "
+              "is refused, with or without it)");
+  std::string kinds;
+  for (std::string_view k : kWarningKinds) kinds += (kinds.empty() ? "" : ", ") + std::string(k);
+  s->add_option("--no-warn", o.no_warn, "leave out warnings of this kind, repeatable: " + kinds)
+      ->type_name("KIND")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            if (is_warning_kind(v)) return std::string();
+            std::string known;
+            for (std::string_view k : kWarningKinds) known += (known.empty() ? "" : ", ") + std::string(k);
+            return "expected a warning kind (" + known + "), found \"" + v + "\"";
+          },
+          "KIND"));
   add_drawing_options(s, o);
 }
 

@@ -10,16 +10,17 @@
 namespace bezcam::cli {
 
 struct ConversionOptions {
-  std::string machine;              ///< --machine: a profile name or a .json file; empty: the job's, else generic
-  double tolerance = 0;             ///< --tolerance: overrides the job's when > 0
-  std::string output = "lines";     ///< --output: lines, arcs or nurbs
-  bool strict = false;              ///< --strict: accepted for scripts; every unknown key is refused anyway
-  std::vector<std::string> sets;    ///< --set KEY=VALUE: job settings of a drawing (.svg, .dxf)
-  std::vector<std::string> layers;  ///< --layer NAME: the drawing's layers to cut (default all)
-  std::vector<std::string> only;    ///< --only SELECTOR: the drawing's layers or entities to cut (default all)
-  std::vector<std::string> skip;    ///< --skip SELECTOR: the drawing's layers or entities left out
-  double join_tolerance = 0;        ///< --join-tolerance D: a DXF's ends joined within D (0: the default)
-  double scale = 1;                 ///< --scale S: the drawing's coordinates times S
+  std::string machine;               ///< --machine: a profile name or a .json file; empty: the job's, else generic
+  double tolerance = 0;              ///< --tolerance: overrides the job's when > 0
+  std::string output = "lines";      ///< --output: lines, arcs or nurbs
+  bool strict = false;               ///< --strict: warnings are errors (exit 2, nothing written)
+  std::vector<std::string> no_warn;  ///< --no-warn KIND: warnings of these kinds are not given
+  std::vector<std::string> sets;     ///< --set KEY=VALUE: job settings of a drawing (.svg, .dxf)
+  std::vector<std::string> layers;   ///< --layer NAME: the drawing's layers to cut (default all)
+  std::vector<std::string> only;     ///< --only SELECTOR: the drawing's layers or entities to cut (default all)
+  std::vector<std::string> skip;     ///< --skip SELECTOR: the drawing's layers or entities left out
+  double join_tolerance = 0;         ///< --join-tolerance D: a DXF's ends joined within D (0: the default)
+  double scale = 1;                  ///< --scale S: the drawing's coordinates times S
 };
 
 /// Adds --machine, --tolerance, --output, --strict, --set and --layer to

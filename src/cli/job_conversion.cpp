@@ -31,6 +31,8 @@ JobConversion convert_job_file(const std::string& path, const ConversionOptions&
   }
   progress.finish();
   opt.on_entity = nullptr;
+  c.result.program.warnings = shown_warnings(c.result.program.warnings, conv);
+  refuse_warnings_if_strict(c.result.program.warnings, conv);
   return c;
 }
 

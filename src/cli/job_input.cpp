@@ -2,6 +2,7 @@
 // drawing with the --set and --layer options.
 #include "job_input.hpp"
 
+#include <algorithm>
 #include <iostream>
 
 #include "bezcam/error.hpp"
@@ -9,8 +10,28 @@
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/job/settings.hpp"
 #include "bezcam/text/font_text.hpp"
+#include "bezcam/warnings.hpp"
 
 namespace bezcam::cli {
+
+std::vector<std::string> shown_warnings(const std::vector<std::string>& warnings, const ConversionOptions& o) {
+  std::vector<std::string> kept;
+  for (const auto& w : warnings) {
+    const std::string kind = warning_kind(w);
+    if (kind.empty() || std::find(o.no_warn.begin(), o.no_warn.end(), kind) == o.no_warn.end()) kept.push_back(w);
+  }
+  return grouped_warnings(kept);
+}
+
+void refuse_warnings_if_strict(const std::vector<std::string>& shown, const ConversionOptions& o) {
+  if (!o.strict || shown.empty()) return;
+  const auto refusal = [](const std::string& w) {
+    return InputError(errc::usage_strict, Place::at_option("--strict"), "warning taken as an error: " + w);
+  };
+  InputError first = refusal(shown.front());
+  for (size_t i = 1; i < shown.size(); ++i) first.add_more(refusal(shown[i]));
+  throw first;
+}
 
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "bezcam: warning: " << w << "\n";
@@ -92,7 +113,9 @@ Job read_job(const std::string& path, const ConversionOptions& o, import::Drawin
                            " is a job file, which states its own settings and has no layers; --set KEY=VALUE, "
                            "--layer, --only and --skip apply to drawings (.svg, .dxf); --set ID:KEY=VALUE sets a key "
                            "of the job's entities whose id ID matches");
-    return read_job(path, std::move(entity_settings));
+    Job job = read_job(path, std::move(entity_settings));
+    job.warnings = shown_warnings(job.warnings, o);
+    return job;
   }
   const import::ImportOptions io = import_options(o);
   import::Drawing d = import::read_drawing(path, read_options(o));
@@ -102,9 +125,10 @@ Job read_job(const std::string& path, const ConversionOptions& o, import::Drawin
     Job job = import::to_job(d, io, &warnings);
     // Printed with the job's own warnings, as a job file's are.
     job.warnings.insert(job.warnings.begin(), warnings.begin(), warnings.end());
+    job.warnings = shown_warnings(job.warnings, o);
     return job;
   } catch (const Error&) {
-    print_warnings(warnings);
+    print_warnings(shown_warnings(warnings, o));
     throw;
   }
 }

@@ -30,5 +30,11 @@ import::ReadOptions read_options(const ConversionOptions& o);
 /// Prints warnings (of reading a job, of converting it) on stderr as
 /// `bezcam: warning: ...`.
 void print_warnings(const std::vector<std::string>& warnings);
+/// The warnings as shown: those of a kind --no-warn names left out, the
+/// warnings of one kind on one entity grouped into one line.
+std::vector<std::string> shown_warnings(const std::vector<std::string>& warnings, const ConversionOptions& o);
+/// With --strict, warnings shown are a refusal (usage.strict, exit 2,
+/// nothing written), one line each.
+void refuse_warnings_if_strict(const std::vector<std::string>& shown, const ConversionOptions& o);
 
 }  // namespace bezcam::cli

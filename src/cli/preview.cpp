@@ -219,8 +219,10 @@ int run_preview(const PreviewArgs& o) {
   copt.output = parse_output_mode(o.conv.output);
   if (o.conv.tolerance > 0) copt.tolerance = o.conv.tolerance;
   copt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
-  const Program p = build_program(job, m, copt);
+  Program p = build_program(job, m, copt);
   progress.finish();
+  p.warnings = shown_warnings(p.warnings, o.conv);
+  refuse_warnings_if_strict(p.warnings, o.conv);
 
   PreviewInput in;
   in.job = &job;

@@ -4,6 +4,7 @@
 // with the same ids, sides, settings and refusals.
 #include <charconv>
 #include <cstdio>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -14,6 +15,7 @@
 #include "bezcam/job/job_builder.hpp"
 #include "bezcam/job/settings.hpp"
 #include "bezcam/limits.hpp"
+#include "bezcam/warnings.hpp"
 #include "selection.hpp"
 
 namespace bezcam::import {
@@ -204,6 +206,24 @@ void add_geometry(JobBuilder& b, const std::vector<const Contour*>& kept, double
   throw first;
 }
 
+// Where each entity of the job comes from in the drawing, for messages:
+// the layer, the element (entity type and handle), where it starts.
+void locate_entities(Job& job, const std::vector<const Contour*>& kept) {
+  std::map<std::string, const Contour*> by_id;
+  for (const Contour* c : kept) by_id.emplace(c->id, c);
+  for (Entity& e : job.entities) {
+    const auto it = by_id.find(e.id);
+    if (it == by_id.end()) continue;
+    const Contour& c = *it->second;
+    const bool any = c.is_interpolation ? !c.interpolation.through.empty() : !c.pieces.empty();
+    const Vec3 at = !any ? Vec3{} : c.is_interpolation ? c.interpolation.through.front() : c.pieces.front().start();
+    const size_t joined = c.is_interpolation ? 1 : c.pieces.size();
+    e.origin = (c.layer.empty() ? std::string() : "layer " + quoted(c.layer) + ", ") + c.element +
+               (joined > 1 && c.id.find('+') != std::string::npos ? " and the elements joined to it" : "") +
+               (any ? ", from (" + format_significant(at.x, 6) + ", " + format_significant(at.y, 6) + ")" : "");
+  }
+}
+
 // A drawing's `side` "outside" is the part's outside, "inside" the
 // outline's inside (docs/import.md, "Sides of a part"): each kept closed
 // contour gets the side of its even-odd depth among the others (even: the
@@ -235,10 +255,12 @@ std::vector<std::string> sides_by_nesting(const Drawing& d, const std::vector<co
   for (size_t i = 0; i < closed.size(); ++i) out[closed[i]] = nest.depth[i] % 2 == 0 ? side : other;
   if (warnings)
     for (const auto& [a, b] : nest.crossing)
-      warnings->push_back("side \"" + side + "\": contours " + quoted(job.entities[closed[a]].id) + " and " +
-                          quoted(job.entities[closed[b]].id) +
-                          " cross each other, so neither is inside the other: each is cut on the side its nesting "
-                          "among the rest gives it, and the tool runs through the other's region");
+      warnings->push_back(tagged_warning("side \"" + side + "\": contours " + quoted(job.entities[closed[a]].id) +
+                                             " and " + quoted(job.entities[closed[b]].id) +
+                                             " cross each other, so neither is inside the other: each is cut on the "
+                                             "side its nesting among the rest gives it, and the tool runs through "
+                                             "the other's region",
+                                         "contours-cross"));
   return out;
 }
 
@@ -348,9 +370,11 @@ Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>*
   const std::vector<const Contour*> kept = kept_contours(d, keep, opt);
   if (warnings)
     for (const Gap& g : d.closed_gaps)
-      warnings->push_back("contour " + quoted(g.id) + ": a gap of " + format_significant(g.size, 3) + " mm at (" +
-                          format_significant(g.at.x, 6) + ", " + format_significant(g.at.y, 6) +
-                          ") closed by the join tolerance (the ends moved to meet)");
+      warnings->push_back(tagged_warning("contour " + quoted(g.id) + ": a gap of " + format_significant(g.size, 3) +
+                                             " mm at (" + format_significant(g.at.x, 6) + ", " +
+                                             format_significant(g.at.y, 6) +
+                                             ") closed by the join tolerance (the ends moved to meet)",
+                                         "gap-closed"));
   const std::vector<std::string> sides = sides_by_nesting(d, kept, settings, warnings);
   std::vector<JobParams> params;
   for (std::size_t k = 0; k < kept.size(); ++k) {
@@ -366,7 +390,9 @@ Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>*
   try {
     b.settings(opt.settings);
     add_geometry(b, kept, units_scale(settings), params, d.source);
-    return b.build();
+    Job job = b.build();
+    locate_entities(job, kept);
+    return job;
   } catch (const InputError& e) {
     // The refusal stands alone: what the sides of a refused job would
     // have been is not said.

@@ -480,11 +480,24 @@ MachineProfile load_machine_profile(const std::string& name_or_file, const std::
         break;
       }
     if (file.empty()) {
+      // Profile names ignore case ("LinuxCNC" is linuxcnc); else the
+      // nearest name is suggested.
+      const std::vector<std::string> names = machine_profile_names(dirs);
+      const auto lower = [](std::string v) {
+        std::transform(v.begin(), v.end(), v.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        return v;
+      };
+      for (const auto& n : names)
+        if (lower(n) == lower(name_or_file)) return load_machine_profile(n, dirs);
       std::string known;
-      for (const auto& n : machine_profile_names(dirs)) known += (known.empty() ? "" : ", ") + n;
+      for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+      const std::vector<std::string_view> views(names.begin(), names.end());
+      const std::optional<std::string> near = resembled_key(lower(name_or_file), views);
       throw InputError(errc::machine_unknown, Place{},
-                       "no machine profile named \"" + name_or_file + "\"; known profiles: " + known +
-                           " (or give the path of a .json profile)");
+                       "no machine profile named \"" + name_or_file + "\"" +
+                           (near ? " (did you mean \"" + *near + "\"?)" : std::string()) +
+                           "; known profiles: " + known + " (or give the path of a .json profile)");
     }
   }
   std::ifstream in(file, std::ios::binary);

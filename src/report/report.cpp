@@ -111,6 +111,7 @@ ProgramReport report_of(const Program& p, const MachineProfile& m, const GcodeCo
   r.max_bound = p.max_bound;
   r.measurement_resolution = kMeasureResolution * p.tolerance;
   r.warnings = p.warnings;
+  r.order = p.order;
   // The profile has no rapid rate of its own: its maximum feed is the
   // fastest the machine is known to move.
   r.rapid_rate = m.max_feed_mm_min / mm_per_unit(p.units);
@@ -251,6 +252,16 @@ std::string report_json(const ProgramReport& r) {
       x["planned"] = planned_json(a.planned);
       alt.push_back(std::move(x));
     }
+  }
+  if (r.order) {
+    auto& o = j["order"];
+    o["mode"] = "shortest";
+    o["nested_contours"] = r.order->nested;
+    o["rapid_xy_as_written"] = r.order->rapid_as_written;
+    o["rapid_xy_planned"] = r.order->rapid_planned;
+    o["rapid_xy_saved"] = r.order->rapid_as_written - r.order->rapid_planned;
+    o["tool_changes_as_written"] = r.order->tool_changes_as_written;
+    o["tool_changes_planned"] = r.order->tool_changes_planned;
   }
   j["warnings"] = r.warnings;
   return j.dump(2) + "\n";

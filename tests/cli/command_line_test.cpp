@@ -40,7 +40,7 @@ TEST(CliParse, EachSubcommandBindsItsArguments) {
   EXPECT_EQ(a.check.post.precision, -1);
 
   a = parse_cli({"lint", "p.nc", "--tool-diameter", "1=6"});
-  EXPECT_EQ(a.lint.machine, "generic");
+  EXPECT_EQ(a.lint.machine, "");  // the machine the program names, else generic
   EXPECT_EQ(a.lint.tool_diameters, std::vector<std::string>{"1=6"});
 
   a = parse_cli({"stream", "p.nc", "--to", "127.0.0.1:5020", "--retries", "3", "--from-line", "120", "--safe-z", "12"});

@@ -76,13 +76,17 @@ TEST(ImportCommand, PerEntitySettingsFromTheCommandLine) {
   auto r = bezcam(args);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string g = testproc::slurp(direct);
-  EXPECT_NE(g.find("(T1: 6 mm flat end mill: OUTLINE:2F+7, HOLES:3B)"), std::string::npos) << g;
-  EXPECT_NE(g.find("(T2: 2 mm flat end mill: HOLES:37, HOLES:38, HOLES:39, HOLES:3A)"), std::string::npos) << g;
+  // The small holes first (tool 2, inside the outline), then the slot and
+  // the outline with tool 1: one tool change.
+  EXPECT_NE(g.find("(T2: 2 mm flat end mill: HOLES:37, HOLES:3A, HOLES:39, HOLES:38)\n"
+                   "(T1: 6 mm flat end mill: HOLES:3B, OUTLINE:2F+7)"),
+            std::string::npos)
+      << g;
   // The tabs lift the outline's cut from Z-1 to Z-0.5, and only its cut.
-  const size_t holes = g.find("(entity HOLES:37");
-  ASSERT_NE(holes, std::string::npos);
-  EXPECT_NE(g.substr(0, holes).find("Z-0.5"), std::string::npos);
-  EXPECT_EQ(g.find("Z-0.5", holes), std::string::npos);
+  const size_t outline = g.find("(entity OUTLINE:2F+7");
+  ASSERT_NE(outline, std::string::npos);
+  EXPECT_EQ(g.substr(0, outline).find("Z-0.5"), std::string::npos);
+  EXPECT_NE(g.find("Z-0.5", outline), std::string::npos);
   args = {"import", "samples/part.dxf", "-q", "-o", job.string()};
   args.insert(args.end(), options.begin(), options.end());
   r = bezcam(args);
@@ -203,7 +207,7 @@ TEST(ToolHeader, EachToolWithItsDiameterAndShape) {
   // diameter and shape the job cuts for, in the profile's dialect.
   const auto g = bezcam({"convert", "samples/part-flange.json", "-q"});
   ASSERT_EQ(g.status, 0) << g.err;
-  EXPECT_NE(g.out.find("\n(T2: 3 mm flat end mill: bolt-1, bolt-4, bolt-3, bolt-2)\n(T1: 6 mm flat end mill: bore, "
+  EXPECT_NE(g.out.find("\n(T2: 3 mm flat end mill: bolt-1, bolt-2, bolt-3, bolt-4)\n(T1: 6 mm flat end mill: bore, "
                        "outline)\n"),
             std::string::npos)
       << g.out.substr(0, 400);

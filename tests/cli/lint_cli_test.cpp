@@ -76,3 +76,42 @@ TEST(LintCli, UnknownMachineIsAUsageError) {
   const auto r = lint({f.string(), "--machine", "no-such-machine"});
   EXPECT_EQ(r.status, 2);
 }
+
+TEST(LintCli, WithoutMachineTheProgramsHeaderNamesIt) {
+  // A Fanuc program as bezcam writes it: clean for fanuc, full of findings
+  // for generic (line numbers, G06.2 blocks).
+  Dir d;
+  const std::string nc = (d.dir / "part.nc").string();
+  const auto conv = bezcam::test::run_cli(
+      {"convert", BEZCAM_SOURCE_DIR "/samples/part.dxf", "--machine", "fanuc", "--output", "nurbs", "-o", nc, "-q"});
+  ASSERT_EQ(conv.status, 0) << conv.err;
+  const auto named = lint({nc});
+  EXPECT_EQ(named.status, 0) << named.out << named.err;
+  EXPECT_NE(named.err.find("no findings for machine fanuc (named in the program's header)"), std::string::npos)
+      << named.err;
+  const auto generic = lint({nc, "--machine", "generic", "-q"});
+  EXPECT_EQ(generic.status, 2);
+  // A program without bezcam's header: generic.
+  const auto plain = lint({d.write("plain.nc",
+                                   "%\nG21 G90 G17\nT1 M06\nS9000 M03\nG00 Z5\nG00 X0 Y0\nG01 Z-1 F300\n"
+                                   "G01 X10 F900\nG00 Z5\nM05\nM30\n%\n")
+                               .string()});
+  EXPECT_EQ(plain.status, 0) << plain.out;
+  EXPECT_NE(plain.err.find("no findings for machine generic\n"), std::string::npos) << plain.err;
+}
+
+TEST(LintCli, AMachineNameIgnoresCaseOrIsSuggested) {
+  Dir d;
+  const auto p = d.write("p.nc",
+                         "%\nG21 G90 G17\nT1 M06\nS9000 M03\nG00 Z5\nG00 X0 Y0\nG01 Z-1 F300\n"
+                         "G01 X10 F900\nG00 Z5\nM05\nM30\n%\n")
+                     .string();
+  const auto upper = lint({p, "--machine", "LinuxCNC"});
+  EXPECT_EQ(upper.status, 0) << upper.err;
+  EXPECT_NE(upper.err.find("for machine linuxcnc"), std::string::npos) << upper.err;
+  const auto typo = lint({p, "--machine", "linuxcn"});
+  EXPECT_EQ(typo.status, 2);
+  EXPECT_NE(typo.err.find("no machine profile named \"linuxcn\" (did you mean \"linuxcnc\"?); known profiles: "),
+            std::string::npos)
+      << typo.err;
+}

@@ -129,7 +129,7 @@ TEST(SheetCommand, OperationsFollowTheCuttingOrderWithTheirFeeds) {
   EXPECT_NE(html.find("Z0 on the stock top"), std::string::npos);
   EXPECT_NE(html.find("X0 at the part's centre; Y0 at the part's centre"), std::string::npos);
   // Beyond the part's +-36.7487: the outline is cut outside with a 6 mm tool, its leads further out.
-  EXPECT_NE(html.find("The tools reach</th><td>X -42.755 to 42.756, Y -42.756 to 49.096 mm (about, tool edges "
+  EXPECT_NE(html.find("The tools reach</th><td>X -49.096 to 42.756, Y -42.756 to 42.756 mm (about, tool edges "
                       "included)"),
             std::string::npos);
 }

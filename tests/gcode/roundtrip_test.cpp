@@ -117,7 +117,10 @@ TEST(RoundTrip, EveryCurveSampleInEveryModeAndProfileReadsBackWithinTolerance) {
         ASSERT_EQ(runs.size(), job.entities.size());
         size_t cut_blocks = 0;
         for (size_t i = 0; i < runs.size(); ++i) {
-          const Entity& e = job.entities[i];
+          // The program's i-th entity, in the cut order (a closed curve may
+          // start at another joint, an open one run backwards).
+          const size_t index = size_t(r.program.entities[i].entity);
+          const Entity& e = job.entities[index];
           const auto& run = runs[i];
           const CutParams cp = cut_params(job, e, m);
           const double tol = r.program.tolerance;
@@ -161,7 +164,7 @@ TEST(RoundTrip, EveryCurveSampleInEveryModeAndProfileReadsBackWithinTolerance) {
               p.z = 0;  // 2D curves are cut at cut_z: compare in the plane
             }
           }
-          const Deviation d = measured(file.string(), i, e.curve.pieces, poly, tol);
+          const Deviation d = measured(file.string(), index, e.curve.pieces, poly, tol);
           EXPECT_LE(d.max(), tol) << e.label() << ": curve to path " << d.curve_to_path << ", path to curve "
                                   << d.path_to_curve;
           // The read-back path agrees with the bound the program claims.

@@ -9,12 +9,12 @@ T1 M06
 S12000 M03
 (entity circle-d80: bspline, degree 2, rational, 2D)
 G00 Z5.
-X100. Y50.
+X20. Y50.
 G01 Z-1. F300.
-G03 X60. Y90. I-40. J0. F1000.
-G03 X20. Y50. I0. J-40.
-G03 X60. Y10. I40. J0.
+G03 X60. Y10. I40. J0. F1000.
 G03 X100. Y50. I0. J40.
+G03 X60. Y90. I-40. J0.
+G03 X20. Y50. I0. J-40.
 G00 Z5.
 M05
 M30

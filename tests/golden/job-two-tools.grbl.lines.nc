@@ -1,23 +1,58 @@
 (bezcam 0.1.0: job-two-tools.json, machine grbl, output lines)
 (program 4711)
 (tolerance 0.01 mm; largest deviation measured 0.009512 mm, proven bound 0.009806 mm, rounding included)
-(T1: pocket-outline)
 (T2: engraving)
+(T1: pocket-outline)
 (estimated cycle time 23 s on the motion model of machine grbl [acceleration, corners, tool changes])
+(order shortest: 1 nested contour cut before what encloses them; rapids 26.9 mm in XY instead of 13.5 mm as written [13.5 mm more: nested contours first, one tool at a time])
 G21 G90 G17
 G40 G49 G80 G94
 G54
-(tool 1: load it before starting)
+(tool 2: load it before starting)
+S18000 M3
+G4 P2.
+M7
+(entity engraving: bezier, degree 3, 2D)
+G0 Z5.
+X5. Y12.5
+Z1.
+G1 Z-0.2 F250.
+X5.819 Y13.227 F400.
+X6.775 Y13.91
+X7.732 Y14.439
+X8.699 Y14.831
+X9.688 Y15.092
+X10.715 Y15.229
+X11.799 Y15.24
+X12.961 Y15.116
+X14.233 Y14.844
+X15.696 Y14.385
+X17.499 Y13.665
+X20. Y12.5
+X22.501 Y11.335
+X24.304 Y10.615
+X25.767 Y10.156
+X27.039 Y9.884
+X28.201 Y9.76
+X29.285 Y9.771
+X30.312 Y9.908
+X31.301 Y10.169
+X32.268 Y10.561
+X33.225 Y11.09
+X34.181 Y11.773
+X35. Y12.5
+G0 Z5.
+M9
+M5
+M0 (change to tool 1, then resume)
 S10000 M3
 G4 P2.
 M8
 (entity pocket-outline: path, degree 3, 2D)
-G0 Z5.
-X0. Y0.
+X40. Y0.
 Z1.
 G1 Z-1. F250.
-X40. F900.
-X41.122 Y0.039
+X41.122 Y0.039 F900.
 X42.361 Y0.214
 X43.527 Y0.51
 X44.623 Y0.925
@@ -78,41 +113,7 @@ X-3.527 Y0.51
 X-2.361 Y0.214
 X-1.122 Y0.039
 X0. Y0.
-G0 Z5.
-M9
-M5
-M0 (change to tool 2, then resume)
-S18000 M3
-G4 P2.
-M7
-(entity engraving: bezier, degree 3, 2D)
-X5. Y12.5
-Z1.
-G1 Z-0.2 F250.
-X5.819 Y13.227 F400.
-X6.775 Y13.91
-X7.732 Y14.439
-X8.699 Y14.831
-X9.688 Y15.092
-X10.715 Y15.229
-X11.799 Y15.24
-X12.961 Y15.116
-X14.233 Y14.844
-X15.696 Y14.385
-X17.499 Y13.665
-X20. Y12.5
-X22.501 Y11.335
-X24.304 Y10.615
-X25.767 Y10.156
-X27.039 Y9.884
-X28.201 Y9.76
-X29.285 Y9.771
-X30.312 Y9.908
-X31.301 Y10.169
-X32.268 Y10.561
-X33.225 Y11.09
-X34.181 Y11.773
-X35. Y12.5
+X40.
 G0 Z5.
 M9
 M5

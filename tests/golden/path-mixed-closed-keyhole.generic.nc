@@ -2,16 +2,19 @@
 (bezcam 0.1.0: path-mixed-closed-keyhole.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009764 mm, proven bound 0.009982 mm, rounding included)
 (T3: keyhole)
-(estimated cycle time 18 s on the motion model of machine generic [acceleration, corners, tool changes])
+(estimated cycle time 17 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94
 T3 M06
 S16000 M03
 (entity keyhole: path, degree 2, rational, 2D)
 G00 Z5.
-X15. Y30.
+X0. Y0.
 G01 Z-1. F300.
-X14.955 Y31.27 F900.
+X15. F900.
+Y20.
+Y30.
+X14.955 Y31.27
 X14.758 Y32.735
 X14.418 Y34.169
 X13.942 Y35.557
@@ -63,9 +66,6 @@ X-1.723 Y15.09
 X-0.282 Y14.994
 X0. Y15.
 Y0.
-X15.
-Y20.
-Y30.
 G00 Z5.
 M05
 M30

@@ -60,7 +60,11 @@ TEST(JoinTolerance, AGapUpToItIsClosedExactlyAndReported) {
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0],
             "contour \"" + c.id +
-                "\": a gap of 0.01 mm at (0.005, 10) closed by the join tolerance (the ends moved to meet)");
+                "\": a gap of 0.01 mm at (0.005, 10) closed by the join tolerance (the ends moved to meet) "
+                "[gap-closed]");
+  // Where the entity is in the drawing, for messages.
+  EXPECT_EQ(job.entities.at(0).origin.rfind("layer \"OUT\", ", 0), 0u) << job.entities.at(0).origin;
+  EXPECT_NE(job.entities.at(0).origin.find(", from ("), std::string::npos) << job.entities.at(0).origin;
 }
 
 TEST(JoinTolerance, ScalingMultipliesEveryCoordinate) {

@@ -178,7 +178,7 @@ TEST(PreviewSvg, FeedsAndRapidsAreDrawnDifferently) {
   ASSERT_EQ(feeds.size(), b.job.entities.size());  // one run per entity (plunges are invisible from above)
   for (size_t i = 0; i < feeds.size(); ++i) {
     EXPECT_TRUE(feeds[i]->attr("stroke-dasharray").empty());
-    EXPECT_EQ(feeds[i]->attr("data-entity"), std::to_string(i));
+    EXPECT_EQ(feeds[i]->attr("data-entity"), std::to_string(b.program.entities[i].entity));  // in the cut order
     EXPECT_NE(feeds[i]->attr("stroke"), rapids[0]->attr("stroke"));
     // One vertex per cutting block plus the start.
     EXPECT_EQ(points_of(feeds[i]->attr("d")).size(), b.program.entities[i].blocks + 1);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "bezcam/cam/program_motion.hpp"
@@ -119,13 +120,16 @@ TEST(Report, JsonHoldsEveryFigure) {
   EXPECT_EQ(j["units"], "mm");
   EXPECT_EQ(j["output"], "lines");
   ASSERT_EQ(j["entities"].size(), job.entities.size());
+  std::set<size_t> seen;
   for (size_t i = 0; i < job.entities.size(); ++i) {
-    const auto& x = j["entities"][i];
-    EXPECT_EQ(x["index"], i);
-    EXPECT_EQ(x["label"], job.entities[i].id);
+    const auto& x = j["entities"][i];  // in the cut order; `index` is the job's
+    const size_t k = x["index"].get<size_t>();
+    ASSERT_LT(k, job.entities.size());
+    EXPECT_TRUE(seen.insert(k).second);
+    EXPECT_EQ(x["label"], job.entities[k].id);
     EXPECT_EQ(x["kind"], "bezier");
-    EXPECT_EQ(x["degree"], job.entities[i].curve.max_degree());
-    EXPECT_DOUBLE_EQ(x["length"].get<double>(), job.entities[i].curve.length());
+    EXPECT_EQ(x["degree"], job.entities[k].curve.max_degree());
+    EXPECT_NEAR(x["length"].get<double>(), job.entities[k].curve.length(), 1e-9 * job.entities[k].curve.length());
     EXPECT_EQ(x["blocks"], p.entities[i].blocks);
     EXPECT_DOUBLE_EQ(x["measured_deviation"].get<double>(), p.entities[i].measured);
     EXPECT_DOUBLE_EQ(x["proven_bound"].get<double>(), p.entities[i].bound);
@@ -137,6 +141,15 @@ TEST(Report, JsonHoldsEveryFigure) {
   EXPECT_DOUBLE_EQ(prog["rapid_length"].get<double>(), r.total.rapid_length);
   EXPECT_DOUBLE_EQ(prog["estimated_time_s"].get<double>(), r.total.time_s());
   EXPECT_EQ(prog["gcode_lines"], 2);
+  // What the cut order saved, the figures the header's note gives.
+  ASSERT_TRUE(p.order.has_value());
+  const auto& o = j["order"];
+  EXPECT_EQ(o["mode"], "shortest");
+  EXPECT_EQ(o["nested_contours"], p.order->nested);
+  EXPECT_DOUBLE_EQ(o["rapid_xy_as_written"].get<double>(), p.order->rapid_as_written);
+  EXPECT_DOUBLE_EQ(o["rapid_xy_planned"].get<double>(), p.order->rapid_planned);
+  EXPECT_DOUBLE_EQ(o["rapid_xy_saved"].get<double>(), p.order->rapid_as_written - p.order->rapid_planned);
+  EXPECT_GT(o["rapid_xy_saved"].get<double>(), 0);
   // The entities' motion adds up to the program's (every block is tagged).
   double feed = 0;
   for (const auto& x : j["entities"]) feed += x["motion"]["feed_length"].get<double>();

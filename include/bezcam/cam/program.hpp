@@ -65,6 +65,16 @@ struct ConvertOptions {
   std::optional<long> program_number;
 };
 
+/// What the cut order (`order: "shortest"`) did, in the program's units.
+struct OrderFigures {
+  size_t nested = 0;  ///< nestings found (a contour inside a closed one)
+  /// XY rapid length from the origin through the contours, written and planned.
+  double rapid_as_written = 0, rapid_planned = 0;
+  /// Changes of tool between consecutive contours, written and planned.
+  size_t tool_changes_as_written = 0, tool_changes_planned = 0;
+  bool by_tool = false;  ///< each tool's contours planned together
+};
+
 struct Program {
   std::string job_name;
   std::string machine;
@@ -89,6 +99,7 @@ struct Program {
   std::vector<std::string> notes;
   /// `order: "shortest"`: what the order saved (also one of `notes`).
   std::string order_summary;
+  std::optional<OrderFigures> order;
 };
 
 /// Builds the canonical program: header state, per entity a retract, rapid,

@@ -139,6 +139,10 @@ struct Entity {
   std::shared_ptr<const SurfaceGeometry> surface;
   ToolpathSpec toolpath;   ///< bezier_patch, coons_patch
   CurveGeometry uv_curve;  ///< curve_on_surface: the 2D curve in the (u, v) square
+  /// An entity read from a drawing: where it is in the drawing, for
+  /// messages (`layer "OUTLINE", LINE (handle 2F) and 7 more joined, from
+  /// (0, 0)`); empty for a job file's entity.
+  std::string origin;
 
   /// The id, or `entities[i]` when there is none.
   std::string label() const { return id.empty() ? json_path() : id; }
@@ -164,9 +168,10 @@ struct Job {
   ToolTable tools;
   /// The tool table in millimetres.
   ToolTable tools_mm() const { return tools.scaled(mm_per_unit(units)); }
-  /// `order`: "shortest" (true): nested contours first, then the order and
-  /// start points that shorten the rapids; "as-written" (false, default).
-  bool order_shortest = false;
+  /// `order`: "shortest" (true, default): nested contours first, one tool
+  /// at a time where the nesting allows, then the order and start points
+  /// that shorten the rapids; "as-written" (false).
+  bool order_shortest = true;
   std::vector<std::string> warnings;  ///< unknown keys and other non-fatal findings
   std::string source;                 ///< file name, for messages
 };

@@ -58,6 +58,8 @@ struct ProgramReport {
     Planned planned;
   };
   std::vector<Alternative> alternatives;
+  /// What the cut order saved (Program::order), when it was planned.
+  std::optional<OrderFigures> order;
   std::vector<std::string> warnings;
 };
 

@@ -1,40 +1,36 @@
 %
 (bezcam 0.1.0: logo.svg, machine generic, output arcs)
 (tolerance 0.01 mm; largest deviation measured 0.009937 mm, proven bound 0.009974 mm, rounding included)
-(T1: frame, b, b.2, z, wave, eye, dot)
+(T1: dot, b, b.2, z, wave, eye, frame)
 (estimated cycle time 36 s on the motion model of machine generic [acceleration, corners, tool changes])
+(order shortest: 6 nested contours cut before what encloses them; rapids 53.1 mm in XY instead of 118.5 mm as written [65.4 mm saved])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06
 S10000 M03
-(entity frame: path, degree 2, rational, 2D)
+(entity dot: path, degree 2, rational, 2D)
 G00 Z5.
-X5. Y29.
+X7. Y6.
 G01 Z-1. F300.
-X55. F1000.
-G02 X59. Y25. I0. J-4.
-G01 Y5.
-G02 X55. Y1. I-4. J0.
-G01 X5.
-G02 X1. Y5. I0. J4.
-G01 Y25.
-G02 X5. Y29. I4. J0.
+G02 X8. Y5. I0. J-1. F1000.
+G02 X7. Y4. I-1. J0.
+G02 X6. Y5. I0. J1.
+G02 X7. Y6. I1. J0.
 G00 Z5.
 (entity b: path, degree 1, 2D)
-X7. Y24.
 G01 Z-1. F300.
-Y6. F1000.
+Y24. F1000.
 G00 Z5.
 (entity b.2: path, degree 2, rational, 2D)
-Y10.
+X11. Y14.
 G01 Z-1. F300.
-G02 X11. Y14. I4. J0. F1000.
-G02 X15. Y10. I0. J-4.
+G02 X15. Y10. I0. J-4. F1000.
 G02 X11. Y6. I-4. J0.
 G02 X7. Y10. I0. J4.
+G02 X11. Y14. I4. J0.
 G00 Z5.
 (entity z: path, degree 1, 2D)
-X19. Y14.
+X19.
 G01 Z-1. F300.
 X26. F1000.
 X19. Y6.
@@ -78,13 +74,17 @@ G02 X51.873 Y23.683 I1.694 J-4.24
 G02 X52.78 Y23.116 I-0.156 J-1.259
 G01 X52.819 Y23.026
 G00 Z5.
-(entity dot: path, degree 2, rational, 2D)
-X8. Y5.
+(entity frame: path, degree 2, rational, 2D)
+X55. Y29.
 G01 Z-1. F300.
-G02 X7. Y4. I-1. J0. F1000.
-G02 X6. Y5. I0. J1.
-G02 X7. Y6. I1. J0.
-G02 X8. Y5. I0. J-1.
+G02 X59. Y25. I0. J-4. F1000.
+G01 Y5.
+G02 X55. Y1. I-4. J0.
+G01 X5.
+G02 X1. Y5. I0. J4.
+G01 Y25.
+G02 X5. Y29. I4. J0.
+G01 X55.
 G00 Z5.
 M05
 M30
