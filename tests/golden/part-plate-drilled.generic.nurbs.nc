@@ -2,9 +2,10 @@
 (bezcam 0.1.0: part-plate-drilled.json, machine generic, output nurbs)
 (tolerance 0.01 mm; largest deviation measured 0.005 mm, proven bound 0.009182 mm, rounding included)
 (T1: 6 mm flat end mill: recess)
-(T2: 5 mm drill [drill D5 118deg flutes 30]: hole-1, hole-2, hole-3, hole-4)
+(T2: 5 mm drill [drill D5 118deg flutes 30]: hole-2, hole-3, hole-4, hole-1)
 (T3: 8 mm flat end mill: outline)
 (estimated cycle time 10 min 00 s on the motion model of machine generic [acceleration, corners, tool changes])
+(order shortest: 9 nested contours cut before what encloses them; rapids 317.3 mm in XY instead of 430.5 mm as written [113.2 mm saved])
 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03638 mm grid)
 (pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.001 mm at 70.62, 37.6, asked r + stock 3)
 (pocket recess: largest engagement 180 deg at 49.99, 24.76 [a full slot: 180]; no rapid through material)
@@ -3583,14 +3584,14 @@ G00 Z5.
 M05
 T2 M06
 S18000 M03
-(entity hole-1: point, drilled)
-G99 G83 X8. Y8. Z-10.002 R1. Q3. F200.
 (entity hole-2: path, drilled)
-X92. Y8.
+G99 G83 X92. Y8. Z-10.002 R1. Q3. F200.
 (entity hole-3: point, drilled)
 X92. Y62.
 (entity hole-4: path, drilled)
 X8. Y62.
+(entity hole-1: point, drilled)
+X8. Y8.
 G80
 G00 Z5.
 M05

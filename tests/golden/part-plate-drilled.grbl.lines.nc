@@ -1,9 +1,10 @@
 (bezcam 0.1.0: part-plate-drilled.json, machine grbl, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009716 mm, proven bound 0.009997 mm, rounding included)
 (T1: 6 mm flat end mill: recess)
-(T2: 5 mm drill [drill D5 118deg flutes 30]: hole-1, hole-2, hole-3, hole-4)
+(T2: 5 mm drill [drill D5 118deg flutes 30]: hole-2, hole-3, hole-4, hole-1)
 (T3: 8 mm flat end mill: outline)
 (estimated cycle time 10 min 09 s on the motion model of machine grbl [acceleration, corners, tool changes])
+(order shortest: 9 nested contours cut before what encloses them; rapids 317.3 mm in XY instead of 430.5 mm as written [113.2 mm saved])
 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03638 mm grid)
 (pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.001 mm at 70.62, 37.6, asked r + stock 3)
 (pocket recess: largest engagement 180 deg at 49.99, 24.76 [a full slot: 180]; no rapid through material)
@@ -3584,23 +3585,10 @@ M5
 M0 (change to tool 2, then resume)
 S18000 M3
 G4 P2.
-(entity hole-1: point, drilled)
-X8. Y8.
+(entity hole-2: path, drilled)
+X92. Y8.
 Z1.
 G1 Z-2. F200.
-G0 Z1.
-Z-1.746
-G1 Z-5.
-G0 Z1.
-Z-4.746
-G1 Z-8.
-G0 Z1.
-Z-7.746
-G1 Z-10.002
-G0 Z1.
-(entity hole-2: path, drilled)
-X92.
-G1 Z-2.
 G0 Z1.
 Z-1.746
 G1 Z-5.
@@ -3626,6 +3614,19 @@ G1 Z-10.002
 G0 Z1.
 (entity hole-4: path, drilled)
 X8.
+G1 Z-2.
+G0 Z1.
+Z-1.746
+G1 Z-5.
+G0 Z1.
+Z-4.746
+G1 Z-8.
+G0 Z1.
+Z-7.746
+G1 Z-10.002
+G0 Z1.
+(entity hole-1: point, drilled)
+Y8.
 G1 Z-2.
 G0 Z1.
 Z-1.746
