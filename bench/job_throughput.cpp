@@ -30,6 +30,7 @@
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/report/report.hpp"
+#include "corpus_job.hpp"
 
 namespace {
 
@@ -53,26 +54,6 @@ struct Lap {
   double wall, cpu;
 };
 Lap since(clk::time_point t0) { return {std::chrono::duration<double>(clk::now() - t0).count(), cpu_s() - g_cpu0}; }
-
-// The corpus as the text of one job file.
-std::string job_text(const nlohmann::json& doc, size_t most) {
-  std::string text =
-      "{\"bezcam\": 1, \"units\": \"mm\", \"tolerance\": 0.01, \"machine\": \"generic\", \"entities\": [";
-  char buf[96];
-  const auto& curves = doc["curves"];
-  for (size_t i = 0; i < curves.size() && i < most; ++i) {
-    text += i ? ",\n" : "\n";
-    text += "{\"type\": \"bezier\", \"points\": [";
-    for (size_t k = 0; k < curves[i].size(); ++k) {
-      std::snprintf(buf, sizeof buf, "%s[%.17g, %.17g]", k ? ", " : "", curves[i][k][0].get<double>(),
-                    curves[i][k][1].get<double>());
-      text += buf;
-    }
-    text += "]}";
-  }
-  text += "]}\n";
-  return text;
-}
 
 // Peak resident memory (VmHWM) in kB; reset_peak_rss() starts it again
 // from the current size (Linux: clear_refs 5).
@@ -111,7 +92,7 @@ int main(int argc, char** argv) {
     return 3;
   }
   const nlohmann::json doc = nlohmann::json::parse(in);
-  const std::string text = job_text(doc, quick ? 1000 : SIZE_MAX);
+  const std::string text = corpus_job_text(doc, quick ? 1000 : SIZE_MAX);
   if (!job_file.empty()) {
     std::ofstream(job_file, std::ios::binary) << text;
     std::printf("job_throughput: wrote the job to %s\n", job_file.c_str());

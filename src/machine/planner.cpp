@@ -143,6 +143,14 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
   b.plan.units = tl.units;
   b.plan.period_s = model.period_s;
   b.build();
+  if (summary) {
+    // The passes over the speeds read the segments' figures only: the
+    // blocks (the caller's, given up to the plan, or the copy) go before
+    // the passes' own tables are made.
+    // (Swapped out: assigning `{}` would keep the capacity.)
+    std::vector<MotionBlock>().swap(timed.blocks);
+    std::vector<double>().swap(timed.path_tolerance);
+  }
   b.speeds();
   b.totals();
   if (summary) {

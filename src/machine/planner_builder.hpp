@@ -86,6 +86,7 @@ struct Builder {
   // whole and fills this from it.
   std::vector<Lean> lean;
   size_t most_segments = 0;  // at most this many segments (plan_timed())
+  size_t block_count = 0;    // the timeline's blocks (build()): totals() reads no block
 
   MotionPlan plan;
   double junction_pending_ = 0;

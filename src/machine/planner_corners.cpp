@@ -20,7 +20,8 @@ void Builder::build() {
   else
     segs.reserve(most);
   junction.reserve(most + 1);
-  plan.blocks.reserve(tl.blocks.size());
+  block_count = tl.blocks.size();
+  plan.blocks.reserve(block_count);
   for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
     bool pause_here = false;
     while (pause < tl.pauses.size() && tl.pauses[pause].before_block <= bi) {

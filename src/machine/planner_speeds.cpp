@@ -188,9 +188,9 @@ void Builder::totals() {
   double t = 0;
   size_t pause = 0;
   // Pauses sit before the first segment of their block.
-  std::vector<size_t> first_seg(tl.blocks.size() + 1, lean.size());
+  std::vector<size_t> first_seg(block_count + 1, lean.size());
   for (size_t i = lean.size(); i-- > 0;) first_seg[static_cast<size_t>(lean[i].block)] = i;
-  for (size_t b = tl.blocks.size(); b-- > 0;) first_seg[b] = std::min(first_seg[b], first_seg[b + 1]);
+  for (size_t b = block_count; b-- > 0;) first_seg[b] = std::min(first_seg[b], first_seg[b + 1]);
   plan.pause_start_s.assign(tl.pauses.size(), 0);
   // One pass over the segments, in order: the times, per block what held
   // it below its programmed feed (the limit of its fastest segment), and
@@ -203,7 +203,7 @@ void Builder::totals() {
   std::vector<double> top(plan.blocks.size(), 0);
   double cut = 0, at_feed = 0;
   for (size_t i = 0; i <= lean.size(); ++i) {
-    while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, tl.blocks.size())] <= i) {
+    while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, block_count)] <= i) {
       plan.pause_start_s[pause] = t;
       t += tl.pauses[pause].seconds;
       plan.pause_time_s += tl.pauses[pause].seconds;
