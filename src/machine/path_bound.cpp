@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -41,18 +42,19 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Refining (tightness, not validity): the share of the total time the
 // enclosures may lose against the midpoints' figures, the deepest halving
-// of a piece and the most rounds.
+// of a piece, the most rounds and the most stretches per piece.
 constexpr double kLoss = 0.003;
-constexpr int kMaxDepth = 16;
-constexpr int kRounds = 16;
+constexpr int kMaxDepth = 20;
+constexpr int kRounds = 40;
+constexpr size_t kMostStretches = 256;
 
 struct Iv {
   double lo = 0, hi = 0;
 };
 Iv operator-(Iv a, Iv b) { return {a.lo - b.hi, a.hi - b.lo}; }
 Iv operator*(Iv a, Iv b) {
-  const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
+  const double p = a.lo * b.lo, q = a.lo * b.hi, r = a.hi * b.lo, t = a.hi * b.hi;
+  return {std::min(std::min(p, q), std::min(r, t)), std::max(std::max(p, q), std::max(r, t))};
 }
 Iv operator*(double s, Iv a) { return s >= 0 ? Iv{s * a.lo, s * a.hi} : Iv{s * a.hi, s * a.lo}; }
 // Division by an interval of positive numbers.
@@ -62,10 +64,11 @@ double mag_hi(Iv a) { return std::max(std::abs(a.lo), std::abs(a.hi)); }
 
 using Box = std::array<Iv, 3>;
 Box point_box(const Vec3& p) { return {Iv{p.x, p.x}, Iv{p.y, p.y}, Iv{p.z, p.z}}; }
-Box hull(const std::vector<Vec3>& pts) {
-  Box b = point_box(pts.front());
-  for (const Vec3& p : pts)
+Box hull(const Vec3* pts, int count) {
+  Box b = point_box(pts[0]);
+  for (int k = 0; k < count; ++k)
     for (int i = 0; i < 3; ++i) {
+      const Vec3& p = pts[k];
       b[static_cast<size_t>(i)].lo = std::min(b[static_cast<size_t>(i)].lo, p[i]);
       b[static_cast<size_t>(i)].hi = std::max(b[static_cast<size_t>(i)].hi, p[i]);
     }
@@ -78,40 +81,115 @@ Box cross(const Box& a, const Box& b) {
 double dist_lo(const Box& b) { return std::hypot(mag_lo(b[0]), mag_lo(b[1]), mag_lo(b[2])); }
 double dist_hi(const Box& b) { return std::hypot(mag_hi(b[0]), mag_hi(b[1]), mag_hi(b[2])); }
 
-// Differences of a coefficient sequence times `f` (a hodograph's points).
-std::vector<Vec3> diffs(const std::vector<Vec3>& c, double f) {
-  std::vector<Vec3> d;
-  for (size_t i = 0; i + 1 < c.size(); ++i) d.push_back((c[i + 1] - c[i]) * f);
-  if (d.empty()) d.push_back({});
-  return d;
+// A piece in homogeneous form (w P, w), coefficients on the stack: the
+// stretches are cut from it without allocating.
+constexpr int kMost = kMaxBezierDegree + 1;
+struct Hom {
+  double x, y, z, w;
+  Hom operator-(const Hom& o) const { return {x - o.x, y - o.y, z - o.z, w - o.w}; }
+  Hom operator*(double f) const { return {x * f, y * f, z * f, w * f}; }
+  Hom operator+(const Hom& o) const { return {x + o.x, y + o.y, z + o.z, w + o.w}; }
+};
+struct Form {
+  int n = 0;                 // degree
+  std::array<Hom, kMost> c;  // the first n + 1 are set
+};
+
+Form form_of(const Bezier& b) {
+  Form f;
+  f.n = b.degree();
+  for (int i = 0; i <= f.n; ++i) {
+    const double w = b.weight(i);
+    const Vec3& p = b.points[static_cast<size_t>(i)];
+    f.c[static_cast<size_t>(i)] = {p.x * w, p.y * w, p.z * w, w};
+  }
+  return f;
 }
 
-// Boxes of C' and C'' over a (sub)curve, in its own parameter on [0, 1].
-void enclose(const Bezier& b, Box& D, Box& E) {
-  const int n = b.degree();
+// The form restricted to [t0, t1] (two de Casteljau subdivisions).
+Form sub_form(const Form& f, double t0, double t1) {
+  const int n = f.n;
+  const auto at = [](int i) { return static_cast<size_t>(i); };
+  // The right part at t0: the cascade's right edge, b_{n-r} at level r.
+  Form right;
+  right.n = n;
+  std::array<Hom, kMost> tmp;
+  std::copy_n(f.c.begin(), n + 1, tmp.begin());
+  for (int r = 0; r <= n; ++r) {
+    right.c[at(n - r)] = tmp[at(n - r)];
+    for (int i = 0; i + r < n; ++i) tmp[at(i)] = tmp[at(i)] * (1 - t0) + tmp[at(i + 1)] * t0;
+  }
+  // Its left part at the parameter of t1: the left edge, b_0 at level r.
+  const double s = t0 < 1 ? (t1 - t0) / (1 - t0) : 1;
+  Form out;
+  out.n = n;
+  std::copy_n(right.c.begin(), n + 1, tmp.begin());
+  for (int r = 0; r <= n; ++r) {
+    out.c[at(r)] = tmp[0];
+    for (int i = 0; i + r < n; ++i) tmp[at(i)] = tmp[at(i)] * (1 - s) + tmp[at(i + 1)] * s;
+  }
+  return out;
+}
+
+Vec3 xyz(const Hom& h) { return {h.x, h.y, h.z}; }
+
+// Value and first two derivatives of the form at x (de Casteljau: at the
+// start of step r the cascade holds level r - 1; the derivatives are the
+// differences of levels n - 1 and n - 2).
+void eval3(const Form& f, double x, Hom& v, Hom& d1, Hom& d2) {
+  const int n = f.n;
+  std::array<Hom, kMost> t;
+  std::copy_n(f.c.begin(), n + 1, t.begin());
+  d1 = d2 = {0, 0, 0, 0};
+  for (int r = 1; r <= n; ++r) {
+    if (r == n - 1 && n >= 2) d2 = (t[2] - t[1] * 2 + t[0]) * (static_cast<double>(n) * (n - 1));
+    if (r == n) d1 = (t[1] - t[0]) * static_cast<double>(n);
+    for (int i = 0; i + r <= n; ++i)
+      t[static_cast<size_t>(i)] = t[static_cast<size_t>(i)] * (1 - x) + t[static_cast<size_t>(i) + 1] * x;
+  }
+  v = t[0];
+}
+
+// C' and C'' of the curve the form describes, at x.
+void curve_derivatives(const Form& f, double x, Vec3& c1, Vec3& c2) {
+  Hom v, d1, d2;
+  eval3(f, x, v, d1, d2);
+  const Vec3 C = xyz(v) / v.w;
+  c1 = (xyz(d1) - C * d1.w) / v.w;
+  c2 = (xyz(d2) - c1 * (2 * d1.w) - C * d2.w) / v.w;
+}
+
+// Boxes of C' and C'' over the form's curve on [0, 1].
+void enclose(const Form& f, Box& D, Box& E) {
+  const int n = f.n;
   const double dn = n;
-  if (!b.rational()) {
-    const std::vector<Vec3> d1 = diffs(b.points, dn);
-    D = hull(d1);
-    E = n >= 2 ? hull(diffs(d1, dn - 1)) : point_box({});
-    return;
-  }
-  std::vector<Vec3> A, W;  // W as Vec3 (x) to reuse diffs()
+  std::array<Vec3, kMost> pts, a1, a2;
+  Iv w{kInf, -kInf}, w1{kInf, -kInf}, w2{0, 0};
   for (int i = 0; i <= n; ++i) {
-    A.push_back(b.points[static_cast<size_t>(i)] * b.weight(i));
-    W.push_back({b.weight(i), 0, 0});
+    const Hom& h = f.c[static_cast<size_t>(i)];
+    pts[static_cast<size_t>(i)] = xyz(h) / h.w;
+    w = {std::min(w.lo, h.w), std::max(w.hi, h.w)};
   }
-  const std::vector<Vec3> A1 = diffs(A, dn), W1 = diffs(W, dn);
-  const Box C = hull(b.points), a1 = hull(A1);
-  const Iv w = hull(W)[0], w1 = hull(W1)[0];
-  Box a2 = point_box({});
-  Iv w2{0, 0};
+  for (int i = 0; i < n; ++i) {
+    const Hom d = (f.c[static_cast<size_t>(i) + 1] - f.c[static_cast<size_t>(i)]) * dn;
+    a1[static_cast<size_t>(i)] = xyz(d);
+    w1 = {std::min(w1.lo, d.w), std::max(w1.hi, d.w)};
+  }
+  Box h1 = hull(a1.data(), n), h2 = point_box({});
   if (n >= 2) {
-    a2 = hull(diffs(A1, dn - 1));
-    w2 = hull(diffs(W1, dn - 1))[0];
+    w2 = {kInf, -kInf};
+    for (int i = 0; i + 1 < n; ++i) {
+      const Hom d =
+          (f.c[static_cast<size_t>(i) + 2] - f.c[static_cast<size_t>(i) + 1] * 2 + f.c[static_cast<size_t>(i)]) *
+          (dn * (dn - 1));
+      a2[static_cast<size_t>(i)] = xyz(d);
+      w2 = {std::min(w2.lo, d.w), std::max(w2.hi, d.w)};
+    }
+    h2 = hull(a2.data(), n - 1);
   }
-  for (size_t i = 0; i < 3; ++i) D[i] = (a1[i] - w1 * C[i]) / w;
-  for (size_t i = 0; i < 3; ++i) E[i] = (a2[i] - 2.0 * (w1 * D[i]) - w2 * C[i]) / w;
+  const Box C = hull(pts.data(), n + 1);
+  for (size_t i = 0; i < 3; ++i) D[i] = (h1[i] - w1 * C[i]) / w;
+  for (size_t i = 0; i < 3; ++i) E[i] = (h2[i] - 2.0 * (w1 * D[i]) - w2 * C[i]) / w;
 }
 
 struct Limits {
@@ -158,31 +236,41 @@ void caps(const Box& D, const Box& E, const Limits& L, double& ucap, double& acc
 // A stretch of a piece, its length, the relaxed problem's cap and slope
 // limit over it, and the same figures at its midpoint (estimates of the
 // exact problem's, which say where refining tightens the bound).
+// A stretch of a piece, its length, the relaxed problem's cap and slope
+// limit over it, and the same figures at its midpoint (estimates of the
+// exact problem's, which say where refining tightens the bound).
 struct Stretch {
-  const Bezier* piece;
+  const Form* piece;
   double t0, t1;
   int depth;
   double length, ucap, acc, umid, amid;
 };
 
-// Arc length of piece b on [t0, t1]: 8-point Gauss-Legendre.
-double stretch_length(const Bezier& b, double t0, double t1) {
+// Arc length of the form's curve on [0, 1]: 8-point Gauss-Legendre.
+double form_length(const Form& f) {
   static constexpr double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
   static constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-  const double m = 0.5 * (t0 + t1), h = 0.5 * (t1 - t0);
   double s = 0;
-  for (int k = 0; k < 4; ++k) s += w[k] * (norm(derivative(b, m - h * x[k])) + norm(derivative(b, m + h * x[k])));
-  return s * h;
+  Vec3 c1, c2;
+  for (int k = 0; k < 4; ++k) {
+    curve_derivatives(f, 0.5 - 0.5 * x[k], c1, c2);
+    s += w[k] * norm(c1);
+    curve_derivatives(f, 0.5 + 0.5 * x[k], c1, c2);
+    s += w[k] * norm(c1);
+  }
+  return 0.5 * s;
 }
 
-Stretch make_stretch(const Bezier& piece, double t0, double t1, int depth, const Limits& L) {
+Stretch make_stretch(const Form& piece, double t0, double t1, int depth, const Limits& L) {
   Stretch s{&piece, t0, t1, depth, 0, 0, 0, 0, 0};
+  const Form sub = sub_form(piece, t0, t1);  // NRVO: no copy
   Box D, E;
-  enclose(subcurve(piece, t0, t1), D, E);
+  enclose(sub, D, E);
   caps(D, E, L, s.ucap, s.acc);
-  const double h = t1 - t0, tm = 0.5 * (t0 + t1);
-  caps(point_box(derivative(piece, tm) * h), point_box(second_derivative(piece, tm) * (h * h)), L, s.umid, s.amid);
-  s.length = std::clamp(stretch_length(piece, t0, t1), dist_lo(D), dist_hi(D));
+  Vec3 c1, c2;
+  curve_derivatives(sub, 0.5, c1, c2);
+  caps(point_box(c1), point_box(c2), L, s.umid, s.amid);
+  s.length = std::clamp(form_length(sub), dist_lo(D), dist_hi(D));
   return s;
 }
 
@@ -225,41 +313,52 @@ double exact_path_time_bound(std::span<const Bezier> pieces, double feed, const 
     L.A[i] = model.max_acceleration_mm_s2[static_cast<size_t>(i)] / scale;
   }
   L.feed = feed / 60;
-  // A stretch per piece to start with; then, round by round, a
-  // stretch is halved where its enclosure loses more time (against its
-  // midpoint's figures) than its share of a budget of kLoss of the total.
+  // A stretch per piece to start with; then, round by round, while the
+  // enclosures lose more than kLoss of the time against the midpoints'
+  // figures, the stretches that lose most (half of the loss) are halved,
+  // up to kMostStretches per piece (a cusp's neighbourhood could take any
+  // number).
+  std::vector<Form> forms;
+  forms.reserve(pieces.size());
+  for (const Bezier& b : pieces) forms.push_back(form_of(b));
   std::vector<Stretch> st;
-  for (const Bezier& b : pieces) st.push_back(make_stretch(b, 0, 1, 0, L));
-  double total_length = 0;
-  for (const Stretch& s : st) total_length += s.length;
+  for (const Form& f : forms) st.push_back(make_stretch(f, 0, 1, 0, L));
+  const size_t most = kMostStretches * pieces.size();
   double t = 0;
+  std::vector<double> lost, order;
   for (int round = 0;; ++round) {
     const std::vector<double> u = node_speeds(st, from_rest);
     t = 0;
-    std::vector<double> lost(st.size());
+    double loss = 0;
+    lost.assign(st.size(), 0);
     for (size_t k = 0; k < st.size(); ++k) {
       const Stretch& s = st[k];
       const double here = stretch_time(s.length, u[k], u[k + 1], s.ucap, s.acc);
       t += here;
       const double c = std::min(s.umid, s.ucap);
-      lost[k] = stretch_time(s.length, std::min(u[k], c), std::min(u[k + 1], c), c, std::min(s.amid, s.acc)) - here;
+      if (s.depth < kMaxDepth)
+        lost[k] = std::max(
+            0.0, stretch_time(s.length, std::min(u[k], c), std::min(u[k + 1], c), c, std::min(s.amid, s.acc)) - here);
+      loss += lost[k];
     }
-    if (round == kRounds || !(total_length > 0)) break;
+    if (round == kRounds || !(loss > kLoss * t) || st.size() >= most) break;
+    // The least loss split: the largest losses adding up to half of it.
+    order = lost;
+    std::sort(order.begin(), order.end(), std::greater<>());
+    double cut = 0, sum = 0;
+    for (size_t k = 0; k < order.size() && sum < 0.5 * loss && k < most - st.size(); ++k) sum += cut = order[k];
     std::vector<Stretch> next;
     next.reserve(st.size() * 2);
-    bool split = false;
     for (size_t k = 0; k < st.size(); ++k) {
       const Stretch& s = st[k];
-      if (s.depth < kMaxDepth && lost[k] > kLoss * t * s.length / total_length) {
+      if (lost[k] >= cut && lost[k] > 0) {
         const double tm = 0.5 * (s.t0 + s.t1);
         next.push_back(make_stretch(*s.piece, s.t0, tm, s.depth + 1, L));
         next.push_back(make_stretch(*s.piece, tm, s.t1, s.depth + 1, L));
-        split = true;
       } else {
         next.push_back(s);
       }
     }
-    if (!split) break;
     st = std::move(next);
   }
   return t * (1 - 1e-9);
