@@ -3,6 +3,7 @@
 (tolerance 0.01 mm; largest deviation measured 0.00944 mm, proven bound 0.009832 mm, rounding included)
 (T1: swoosh, clamped-wave)
 (estimated cycle time 20 s on the motion model of machine generic [acceleration, corners, tool changes])
+(cutting along the curves 9.52 s; the exact path's bound on this machine 9.47 s [x1.005; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06

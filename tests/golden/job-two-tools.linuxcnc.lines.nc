@@ -5,6 +5,7 @@
 (T1: pocket-outline)
 (T2: engraving)
 (estimated cycle time 17 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
+(cutting along the curves 15.28 s; the exact path's bound on this machine 15.23 s [x1.003; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 G54

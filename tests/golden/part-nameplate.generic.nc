@@ -4,6 +4,7 @@
 (T2: name/0, name/0, name/0, name/1, name/2, name/3, name/4, name/4, name/5, serial/0, serial/1, serial/1, serial/2, serial/3, serial/3, serial/4, serial/4, serial/5, serial/5, serial/6, serial/7, s...)
 (T1: 3 mm flat end mill: plate)
 (estimated cycle time 2 min 17 s on the motion model of machine generic [acceleration, corners, tool changes])
+(cutting along the curves 31.31 s; the exact path's bound on this machine 29.88 s [x1.048; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 T2 M06
