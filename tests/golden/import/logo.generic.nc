@@ -3,6 +3,7 @@
 (tolerance 0.01 mm; largest deviation measured 0.009795 mm, proven bound 0.009974 mm, rounding included)
 (T1: frame, b, b.2, z, wave, eye, dot)
 (estimated cycle time 36 s on the motion model of machine generic [acceleration, corners, tool changes])
+(cutting along the curves 17.62 s; the exact path's bound on this machine 17.40 s [x1.012; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06
