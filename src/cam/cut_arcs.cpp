@@ -43,6 +43,9 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
   ao.band = c.params.tolerance_side == ToleranceSide::both;
   // The controller's radius check is in its own units: the program's.
   ao.radius_tolerance = c.machine.arc_tolerance_mm / mm_per_unit(c.job.units);
+  // Arcs that meet tangentially: a controller's planner runs through their
+  // joints instead of slowing down at each (docs/motion.md).
+  ao.tangent = true;
   // `pl`: the arcs' plane (G18 and G19 for helical arcs only).
   auto emit = [&](const FitMove& f, Plane pl) {
     if (f.kind == FitKind::line) {

@@ -17,6 +17,7 @@
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/nesting.hpp"
 #include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/machine/path_bound.hpp"
 #include "bezcam/warnings.hpp"
 #include "cut_emitters.hpp"
 #include "hole_cut.hpp"
@@ -514,6 +515,21 @@ std::vector<std::string> nested_outside_warnings(const Job& job) {
   return out;
 }
 
+// The cut along an entity's curve in the output mode, the range of its
+// moves and, on a machine with a motion model, its exact path's bound.
+void cut_along(detail::CutContext& ctx, OutputMode mode, EntityReport& r) {
+  r.cut_first = ctx.program.moves.size();
+  switch (mode) {
+    case OutputMode::lines: detail::emit_lines(ctx, r); break;
+    case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
+    case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
+  }
+  r.cut_end = ctx.program.moves.size();
+  if (const auto& mo = ctx.machine.motion)
+    r.time_bound_s =
+        exact_path_time_bound(ctx.entity.curve.pieces, ctx.params.feed, *mo, ctx.program.units, cuts_from_rest(*mo));
+}
+
 // The refusals of a job's entities: each reported once, a drawing's
 // entity located in the drawing.
 class Refusals {
@@ -584,11 +600,7 @@ void cut_curve(const Job& job, const MachineProfile& m, const ConvertOptions& op
     detail::emit_part(ctx, ms, r, safe, clear);  // ends retracted, pos set
   } else {
     detail::approach(p, entity, start, safe, clear, cp.plunge_feed, ms);
-    switch (opt.output) {
-      case OutputMode::lines: detail::emit_lines(ctx, r); break;
-      case OutputMode::arcs: detail::emit_arcs(ctx, r); break;
-      case OutputMode::nurbs: detail::emit_nurbs(ctx, r); break;
-    }
+    cut_along(ctx, opt.output, r);
     ms.pos = motion_of(p.moves.back())->to;  // the cut ends with a motion
     RapidMove retract;
     retract.to = {ms.pos.x, ms.pos.y, safe};

@@ -10,7 +10,13 @@
 namespace bezcam {
 
 std::vector<MotionBlock> program_motion(const Program& p) {
+  std::vector<size_t> source;
+  return program_motion(p, source);
+}
+
+std::vector<MotionBlock> program_motion(const Program& p, std::vector<size_t>& source) {
   std::vector<MotionBlock> out;
+  source.clear();
   // A block per motion (compensation may add a few): no reallocation
   // moving every block of a long program.
   out.reserve(static_cast<size_t>(
@@ -19,10 +25,13 @@ std::vector<MotionBlock> program_motion(const Program& p) {
   unsigned known = 0;
   // G41/G42: the blocks are where the tool's centre goes (cutter_comp.hpp).
   CutterComp comp;
+  size_t at = 0;  // the move being read
   auto add = [&](std::vector<MotionBlock> blocks) {
     for (auto& b : blocks) out.push_back(std::move(b));
+    source.resize(out.size(), at);
   };
-  for (const Move& mv : p.moves) {
+  for (; at < p.moves.size(); ++at) {
+    const Move& mv = p.moves[at];
     if (const auto* cc = std::get_if<CompensationMove>(&mv.what)) {
       try {
         if (cc->side == 0)
@@ -68,6 +77,7 @@ std::vector<MotionBlock> program_motion(const Program& p) {
     known |= mo->axes;
     if (comp.idle()) {  // no compensation: the block as it is
       out.push_back(std::move(b));
+      source.push_back(at);
       continue;
     }
     try {
@@ -76,6 +86,7 @@ std::vector<MotionBlock> program_motion(const Program& p) {
       throw std::logic_error(std::string("built program: ") + e.what());
     }
   }
+  at = p.moves.empty() ? 0 : p.moves.size() - 1;
   add(comp.finish());
   return out;
 }
@@ -83,8 +94,20 @@ std::vector<MotionBlock> program_motion(const Program& p) {
 Timeline program_timeline(const Program& p) {
   Timeline tl;
   tl.units = p.units;
-  tl.blocks = program_motion(p);
+  std::vector<size_t> source;
+  tl.blocks = program_motion(p, source);
   tl.path_tolerance.assign(tl.blocks.size(), -1);
+  // Which moves cut along a bounded path, then which blocks.
+  std::vector<char> cut;
+  for (const EntityReport& e : p.entities) {
+    if (!(e.time_bound_s > 0) || e.cut_end > p.moves.size()) continue;
+    cut.resize(p.moves.size(), 0);
+    for (size_t i = e.cut_first; i < e.cut_end; ++i) cut[i] = 1;
+  }
+  if (!cut.empty()) {
+    tl.on_path.resize(tl.blocks.size());
+    for (size_t i = 0; i < tl.blocks.size(); ++i) tl.on_path[i] = cut[source[i]];
+  }
   size_t motions = 0;
   for (const Move& mv : p.moves) {
     if (motion_of(mv)) {
@@ -101,6 +124,12 @@ Timeline program_timeline(const Program& p) {
       tl.pauses.push_back({PlanPause::Kind::program_stop, 0, 0, motions});
   }
   return tl;
+}
+
+double exact_path_bound_s(const Program& p) {
+  double t = 0;
+  for (const EntityReport& e : p.entities) t += e.time_bound_s;
+  return t;
 }
 
 }  // namespace bezcam

@@ -112,6 +112,11 @@ constexpr double kMaxSweep = kPi - 0.02;
 // Largest radius per unit of chord (sweep >= 0.001 rad): flatter spans are
 // lines, and huge I/J words help no controller.
 constexpr double kMaxRadiusPerChord = 1000;
+// The same for a tangent chain's arcs: a flatter arc keeps the chain
+// tangent where a line (its chord) would turn by up to 1 / (2 x this).
+constexpr double kMaxTangentRadiusPerChord = 100000;
+// A chain starts again where a free arc would be this many times longer.
+constexpr double kChainRestart = 2;
 // Curve samples used to choose the centre (the proof does not rely on them).
 constexpr int kFitSamples = 16;
 // The band: a line's inner end is shifted off the curve by this share of
@@ -366,6 +371,100 @@ std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, do
   return std::nullopt;
 }
 
+// An arc found for a span ending at t1 (curve point E).
+struct Found {
+  std::optional<ArcCandidate> arc;
+  double t1 = 0;
+  Vec3 E;
+};
+
+// Whether the curve goes on from piece a into piece b without a corner
+// (their tangents within 1e-9 rad; a vanishing derivative counts as one).
+bool tangent_joint(const Bezier& a, const Bezier& b) {
+  const Vec3 u = derivative(a, 1), v = derivative(b, 0);
+  const double nu = norm2(u), nv = norm2(v);
+  if (!(nu > 0) || !(nv > 0)) return false;
+  return std::abs(cross2(u, v)) <= 1e-9 * nu * nv && dot2(u, v) > 0;
+}
+
+// The tangent of the printed move at its end (unit, in the plane), or at
+// its start (`at_start`): an arc's is square to its radius there.
+Vec3 move_tangent(const Vec3& from, const FitMove& m, bool at_start) {
+  if (m.kind == FitKind::line) {
+    const Vec3 d{m.to.x - from.x, m.to.y - from.y, 0};
+    const double l = norm2(d);
+    return l > 0 ? d / l : Vec3{};
+  }
+  const Vec3 r = (at_start ? from : m.to) - m.center;
+  const double l = norm2(r);
+  if (!(l > 0)) return {};
+  return m.kind == FitKind::arc_ccw ? Vec3{-r.y / l, r.x / l, 0} : Vec3{r.y / l, -r.x / l, 0};
+}
+
+// How far (radians) a printed start tangent may turn from the chain's for
+// an arc of radius r (or a line of length r) whose words are rounded to
+// q: the rounding of its centre (or end) moves the direction by up to
+// about q / r.
+double tangent_slack(double q, double r) { return r > 0 ? q / r + 1e-9 : 0.0; }
+
+// Tangent-continuous chains (ArcFitOptions::tangent): the arc from the
+// printed start S' that leaves it in direction `tin` and ends at the
+// printed E' (its centre on the normal to `tin` at S', equidistant from
+// S' and E'), then the printed centre among the grid points around it
+// whose start tangent stays within the rounding's slack, then
+// certification as for any arc.
+std::optional<ArcCandidate> try_tangent_arc(const Span& sp, const ArcFitOptions& opt, double budget_xy, double rtol,
+                                            const Vec3& tin) {
+  const double q = opt.decimals >= 0 ? std::pow(10.0, -opt.decimals) : 0.0;
+  const Vec3 d{sp.Er.x - sp.Sr.x, sp.Er.y - sp.Sr.y, 0};
+  const double L = norm2(d);
+  if (!(L > 0) || L < std::max(1.5 * q, 1e-12)) return std::nullopt;
+  const Vec3 n{-tin.y, tin.x, 0};
+  const double dn = dot2(d, n);
+  if (std::abs(dn) <= 1e-12 * L) return std::nullopt;  // straight on: a line's
+  const double k = L * L / (2 * dn);                   // signed radius: > 0 to the left
+  if (std::abs(k) > kMaxTangentRadiusPerChord * L) return std::nullopt;
+  const Vec3 c = sp.Sr + n * k;
+  const bool ccw = k > 0;
+  std::array<Vec3, kFitSamples - 1> P;
+  for (int j = 1; j < kFitSamples; ++j) P[j - 1] = point_at(sp.b, sp.t0 + (sp.t1 - sp.t0) * j / kFitSamples);
+  struct Option {
+    PrintedArc arc;
+    Vec3 ij;
+    double estimate;
+  };
+  std::vector<Option> opts;
+  const Vec3 ij0{quantize(c.x - sp.Sr.x, opt.decimals), quantize(c.y - sp.Sr.y, opt.decimals), 0};
+  for (int di = -1; di <= 1; ++di)
+    for (int dj = -1; dj <= 1; ++dj) {
+      if (q == 0 && (di || dj)) continue;
+      const Vec3 ij{quantize(ij0.x + di * q, opt.decimals), quantize(ij0.y + dj * q, opt.decimals), 0};
+      PrintedArc a;
+      a.from = sp.Sr;
+      a.to = sp.Er;
+      a.center = {sp.Sr.x + ij.x, sp.Sr.y + ij.y, sp.Sr.z};
+      a.ccw = ccw;
+      if (std::abs(a.r_start() - a.r_end()) > rtol || a.sweep() > kMaxSweep) continue;
+      FitMove m;
+      m.kind = ccw ? FitKind::arc_ccw : FitKind::arc_cw;
+      m.to = a.to;
+      m.center = a.center;
+      const Vec3 t = move_tangent(a.from, m, true);
+      if (std::abs(directed_angle(tin, t, true)) > tangent_slack(q, a.r_start())) continue;
+      const ArcGeometry g(a, false);
+      double est = std::max(g.dist_end(sp.S, sp.Sr), g.dist_end(sp.E, sp.Er));
+      for (const auto& p : P) est = std::max(est, g.d(p));
+      opts.push_back({a, ij, est});
+    }
+  std::sort(opts.begin(), opts.end(), [](const Option& x, const Option& y) { return x.estimate < y.estimate; });
+  for (size_t i = 0; i < opts.size() && i < 3; ++i) {
+    if (opts[i].estimate > budget_xy) break;
+    const double B = span_deviation(sp.b, sp.t0, sp.t1, opts[i].arc, budget_xy, 0, false);
+    if (B <= budget_xy) return ArcCandidate{opts[i].arc, opts[i].ij, B};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool planar_xy(const Bezier& piece) {
@@ -440,6 +539,10 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
   double bound = 0;
   Vec3 Sr = quantize(pieces.front().front(), opt.decimals);
   double line_hint = -1, arc_hint = -1;
+  // Tangent chains: the direction the last move ends in (zero: no chain).
+  const bool tangent = opt.tangent && !opt.helical;
+  const double q = opt.decimals >= 0 ? std::pow(10.0, -opt.decimals) : 0.0;
+  Vec3 tin;
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
     const Bezier& b = pieces[pi];
     // Helical arcs take any piece; their bound is 3D (dz = 0 below).
@@ -451,6 +554,8 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
     const double line_shift = kBandShare * (budget - tb.rounding);
     // The band on pieces that get no arcs (see the top).
     const bool line_band = band && !(planar && budget_xy > 0);
+    // A chain goes on across a joint where the curve is tangent.
+    if (!(planar && budget_xy > 0) || (pi > 0 && !tangent_joint(pieces[pi - 1], b))) tin = {};
     double t0 = 0;
     Vec3 S = b.front();
     while (t0 < 1) {
@@ -498,30 +603,47 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
       }
       if (!(lo > 0)) throw std::logic_error("arc fit: no chord fits (internal error)");
       line_hint = lo;
+      // In a chain, a line must leave in the chain's direction; else arcs
+      // of any length are tried, the line kept only when none fits.
+      const bool chained = tangent && (tin.x != 0 || tin.y != 0);
+      const bool line_tangent = !chained || std::abs(directed_angle(tin, move_tangent(Sr, best, true), true)) <=
+                                                tangent_slack(q, dist2(best.to, Sr));
       // Longest arc, only worth it beyond the chord.
-      if (planar && budget_xy > 0 && best.t < 1) {
-        double alo = lo, ahi = kInf;
-        double adt = std::min(std::max(2 * lo, arc_hint), 1 - t0);
-        std::optional<ArcCandidate> found;
-        double found_t1 = 0;
-        Vec3 foundE;
-        for (int iter = 0; iter < 60 && adt > alo * 1.0001; ++iter) {
-          const double t1 = adt >= 1 - t0 ? 1.0 : t0 + adt;
-          const Vec3 E = point_at(b, t1);
-          const Span sp{.b = b, .t0 = t0, .t1 = t1, .S = S, .E = E, .Sr = Sr, .Er = quantize(E, opt.decimals)};
-          if (auto c = try_arc(sp, opt, budget_xy, rtol)) {
-            found = c;
-            found_t1 = t1;
-            foundE = E;
-            alo = adt;
-            if (t1 >= 1) break;
-            adt = ahi == kInf ? std::min(adt * 2, 1 - t0) : 0.5 * (alo + ahi);
-          } else {
-            ahi = adt;
-            adt = 0.5 * (alo + ahi);
+      if (planar && budget_xy > 0 && (best.t < 1 || !line_tangent)) {
+        // The longest span an arc fits from alo on (tangent to the chain
+        // or free), searched from adt.
+        auto search = [&](bool chain, double alo, double adt) {
+          Found f;
+          double ahi = kInf;
+          for (int iter = 0; iter < 60 && adt > alo * 1.0001; ++iter) {
+            const double t1 = adt >= 1 - t0 ? 1.0 : t0 + adt;
+            const Vec3 E = point_at(b, t1);
+            const Span sp{.b = b, .t0 = t0, .t1 = t1, .S = S, .E = E, .Sr = Sr, .Er = quantize(E, opt.decimals)};
+            if (auto c = chain ? try_tangent_arc(sp, opt, budget_xy, rtol, tin) : try_arc(sp, opt, budget_xy, rtol)) {
+              f = {c, t1, E};
+              alo = adt;
+              if (t1 >= 1) break;
+              adt = ahi == kInf ? std::min(adt * 2, 1 - t0) : 0.5 * (alo + ahi);
+            } else {
+              ahi = adt;
+              adt = 0.5 * (alo + ahi);
+            }
+            if (ahi != kInf && ahi - alo <= 0.02 * alo) break;
           }
-          if (ahi != kInf && ahi - alo <= 0.02 * alo) break;
+          return f;
+        };
+        const double free_from = std::min(std::max(2 * lo, arc_hint), 1 - t0);
+        Found fd = chained ? search(true, line_tangent ? lo : 0, line_tangent ? free_from : std::min(lo, 1 - t0))
+                           : search(false, lo, free_from);
+        // A chain that can go on only in much shorter spans than a free
+        // arc takes starts again (one joint at a small angle).
+        if (chained) {
+          const Found fr = search(false, lo, free_from);
+          if (fr.arc && (!fd.arc || kChainRestart * (fd.t1 - t0) < fr.t1 - t0)) fd = fr;
         }
+        const std::optional<ArcCandidate>& found = fd.arc;
+        const double found_t1 = fd.t1;
+        const Vec3 foundE = fd.E;
         if (found) {
           arc_hint = found_t1 - t0;
           // Report a tight bound, not merely the accepted one.
@@ -540,6 +662,7 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
       }
       bound = std::max(bound, best.bound);
       emit(best);
+      if (tangent) tin = planar && budget_xy > 0 ? move_tangent(Sr, best, false) : Vec3{};
       t0 = best.t;
       S = bestE;
       Sr = best.to;

@@ -74,4 +74,15 @@ std::string format_clock(double s) {
   return b;
 }
 
+std::string format_time(double s, bool round_down) {
+  const double c = round_down ? std::floor(s * 100) : std::round(s * 100);  // hundredths
+  const auto h = static_cast<long long>(std::max(c, 0.0));
+  char b[64];
+  if (h < 6000)
+    std::snprintf(b, sizeof b, "%lld.%02lld s", h / 100, h % 100);
+  else
+    std::snprintf(b, sizeof b, "%lld min %02lld.%02lld s", h / 6000, h / 100 % 60, h % 100);
+  return b;
+}
+
 }  // namespace bezcam

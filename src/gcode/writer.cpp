@@ -154,10 +154,11 @@ class Writer {
   // rapids at their rates.
   void cycle_time() {
     if (m_.motion) {
-      const double cycle =
-          plan_ ? plan_->cycle_time_s : plan_motion(program_timeline(p_), *m_.motion, PlanDetail::summary).cycle_time_s;
-      note("estimated cycle time " + format_clock(cycle) + " on the motion model of machine " + m_.name +
+      const MotionPlan own = plan_ ? MotionPlan{} : plan_motion(program_timeline(p_), *m_.motion, PlanDetail::summary);
+      const MotionPlan& plan = plan_ ? *plan_ : own;
+      note("estimated cycle time " + format_clock(plan.cycle_time_s) + " on the motion model of machine " + m_.name +
            " (acceleration, corners, tool changes)");
+      path_bound(plan.path_time_s);
       return;
     }
     const double rapid = m_.max_feed_mm_min / mm_per_unit(p_.units);
@@ -165,6 +166,16 @@ class Writer {
     const double s = motion_totals(motion, rapid).time_s();
     note("estimated cycle time " + format_clock(s) + ": feeds as programmed, rapids at " +
          format_significant(rapid, 6) + " " + to_string(p_.units) + "/min, no acceleration, tool changes not counted");
+  }
+  // The cutting along curves beside the time-optimal bound of their exact
+  // path (machine/path_bound.hpp), when the program has such cuts.
+  void path_bound(double path) {
+    const double bound = exact_path_bound_s(p_);
+    if (!(bound > 0) || !(path > 0)) return;
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.3f", path / bound);
+    note("cutting along the curves " + format_time(path) + "; the exact path's bound on this machine " +
+         format_time(bound, true) + " (x" + ratio + "; rapids, plunges and pauses not counted)");
   }
   void raw(std::string_view s) {
     out_ += s;

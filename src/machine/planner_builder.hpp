@@ -64,6 +64,7 @@ struct Lean {
   int block = -1;
   SpeedLimit limit = SpeedLimit::programmed;
   bool rapid = false;
+  bool blend = false;
   double vpeak = 0, t_acc = 0, t_cruise = 0, t_dec = 0;  // entry and exit speeds: speeds()'s v
   double time() const { return t_acc + t_cruise + t_dec; }
 };

@@ -183,6 +183,7 @@ double Builder::blend_lines(PlanSegment& next, double tol, double nominal_prev, 
   PlanSegment blend;
   blend.block = prev.block;
   blend.rapid = prev.rapid;
+  blend.blend = true;
   PlanSegment::Piece arc;
   arc.shape = PlanSegment::Shape::arc;
   const Vec3 inward = unit(u2 - u1);

@@ -130,6 +130,7 @@ void Builder::add_lean(PlanSegment& sg) {
   l.block = sg.block;
   l.limit = sg.limit;
   l.rapid = sg.rapid;
+  l.blend = sg.blend;
   lean.push_back(l);
 }
 

@@ -215,6 +215,11 @@ void Builder::totals() {
     t += s.time();
     (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += s.time();
     const size_t b = static_cast<size_t>(s.block);
+    // The cut along a curve, with the blends at both its ends (where the
+    // machine turns from the plunge and into the retract).
+    auto marked = [&](size_t k) { return k < tl.on_path.size() && tl.on_path[k]; };
+    if (marked(b) || (s.blend && i + 1 < lean.size() && marked(static_cast<size_t>(lean[i + 1].block))))
+      plan.path_time_s += s.time();
     PlannedBlock& pb = plan.blocks[b];
     pb.time_s += s.time();
     pb.peak_feed = std::max(pb.peak_feed, s.vpeak * 60);

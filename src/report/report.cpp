@@ -134,6 +134,7 @@ ProgramReport report_of(const Program& p, const MachineProfile& m, const GcodeCo
     r.planned =
         planned_summary(read_back ? plan_motion(*read_back, *m.motion) : plan_motion(program_timeline(p), *m.motion));
   }
+  if (r.planned) r.path_bound_s = exact_path_bound_s(p);
   r.gcode_bytes = text.bytes;
   r.gcode_lines = text.lines();
   return r;
@@ -152,17 +153,26 @@ ProgramReport::Planned planned_summary(const MotionPlan& plan) {
   q.max_path_deviation = plan.max_path_deviation;
   q.starved_blocks = plan.starved_blocks;
   q.clamped_blocks = plan.clamped_blocks;
+  q.path_time_s = plan.path_time_s;
   return q;
 }
 
 namespace {
 
-nlohmann::ordered_json planned_json(const ProgramReport::Planned& q) {
+// `bound`: the exact paths' time-optimal bound (0: none).
+nlohmann::ordered_json planned_json(const ProgramReport::Planned& q, double bound) {
   nlohmann::ordered_json j;
   detail::put_plan_figures(j, q);
   j["max_path_deviation"] = detail::round_to(q.max_path_deviation, 1e-9);
+  if (bound > 0 && q.path_time_s > 0) {
+    j["path_time_s"] = detail::round_to(q.path_time_s, 1e-6);
+    j["path_bound_ratio"] = detail::round_to(q.path_time_s / bound, 1e-6);
+  }
   return j;
 }
+
+// A lower bound rounded down to `q`, so that the figure written stays one.
+double floor_to(double v, double q) { return std::floor(v / q) / std::round(1 / q); }
 
 // A pocket's certificate (cam/pocket_check.hpp); `keep` is r + stock.
 nlohmann::ordered_json pocket_json(const PocketCertificate& c, double keep) {
@@ -224,6 +234,7 @@ std::string report_json(const ProgramReport& r) {
     x["blocks"] = e.report.blocks;
     x["measured_deviation"] = e.report.measured;
     x["proven_bound"] = e.report.bound;
+    if (e.report.time_bound_s > 0) x["time_bound_s"] = floor_to(e.report.time_bound_s, 1e-6);
     x["motion"] = totals_json(e.motion);
     if (e.report.pocket) x["pocket"] = pocket_json(*e.report.pocket, e.report.offset);
     ents.push_back(std::move(x));
@@ -238,9 +249,16 @@ std::string report_json(const ProgramReport& r) {
   }
   if (r.planned) {
     // The estimate that counts: the machine's motion model (docs/motion.md).
-    auto& pl = prog["planned"] = planned_json(*r.planned);
+    auto& pl = prog["planned"] = planned_json(*r.planned, r.path_bound_s);
     pl["basis"] = "the motion model of machine \"" + r.machine +
                   "\": acceleration, corners blended within its tolerance, block rate, tool changes and dwells";
+    if (r.path_bound_s > 0) {
+      prog["path_bound_s"] = floor_to(r.path_bound_s, 1e-6);
+      prog["path_bound_basis"] =
+          "the shortest time the machine could follow the exact curves cut along their line, from rest to rest at "
+          "their feeds within its axes' velocity and acceleration (no jerk); rapids, plunges, retracts and pauses "
+          "not counted";
+    }
   }
   if (!r.alternatives.empty()) {
     auto& alt = j["compare_outputs"] = nlohmann::ordered_json::array();
@@ -249,7 +267,7 @@ std::string report_json(const ProgramReport& r) {
       x["output"] = to_string(a.output);
       x["cutting_blocks"] = a.blocks;
       x["gcode_bytes"] = a.gcode_bytes;
-      x["planned"] = planned_json(a.planned);
+      x["planned"] = planned_json(a.planned, r.path_bound_s);
       alt.push_back(std::move(x));
     }
   }
@@ -308,18 +326,29 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
                   q.starved_blocks, q.starved_blocks == 1 ? "" : "s");
     s += "; cycle " + format_seconds(q.cycle_time_s) + " on machine " + r.machine + "'s motion model (" +
          format_seconds(q.programmed_feed_time_s) + " at the programmed feeds with no acceleration)" + b + "\n";
+    if (r.path_bound_s > 0 && q.path_time_s > 0) {
+      std::snprintf(b, sizeof b, " (x%.3f)", q.path_time_s / r.path_bound_s);
+      s += "  cutting along the curves " + format_time(q.path_time_s) + "; the exact path's bound on this machine " +
+           format_time(r.path_bound_s, true) + b + "\n";
+    }
   } else {
     s += std::string("; about ") + tbuf + " (rapids at " + format_significant(r.rapid_rate, 6) + u +
          "/min, no acceleration: machine " + r.machine + " has no motion model)\n";
   }
   if (!r.alternatives.empty()) {
     s += "  the same job in each output mode on machine " + r.machine + ":\n";
-    s += "    output  blocks   cycle        mean feed  starved\n";
+    const bool bound = r.path_bound_s > 0;
+    s += std::string("    output  blocks   cycle        mean feed  starved") + (bound ? "  path/bound" : "") + "\n";
     for (const auto& a : r.alternatives) {
-      char b[200];
-      std::snprintf(b, sizeof b, "    %-6s  %6zu   %-11s  %5.0f %%    %zu%s\n", to_string(a.output), a.blocks,
-                    format_seconds(a.planned.cycle_time_s).c_str(), a.planned.mean_feed_ratio * 100,
-                    a.planned.starved_blocks, a.output == r.output ? "   (this program)" : "");
+      char b[200], ratio[32] = "";
+      if (bound && a.planned.path_time_s > 0)
+        std::snprintf(ratio, sizeof ratio, "x%.3f", a.planned.path_time_s / r.path_bound_s);
+      std::snprintf(
+          b, sizeof b,
+          bound ? "    %-6s  %6zu   %-11s  %5.0f %%    %-7zu%s%s\n" : "    %-6s  %6zu   %-11s  %5.0f %%    %zu%s%s\n",
+          to_string(a.output), a.blocks, format_seconds(a.planned.cycle_time_s).c_str(),
+          a.planned.mean_feed_ratio * 100, a.planned.starved_blocks, ratio,
+          a.output == r.output ? "   (this program)" : "");
       s += b;
     }
   }

@@ -53,7 +53,8 @@ TEST(OutputArcs, SemicircleBecomesFewG02ArcsWithIJOnly) {
     const std::regex arc_re(R"((^|\s)G0?2 X-?[0-9.]+ Y-?[0-9.]+ I-?[0-9.]+ J-?[0-9.]+( F[0-9.]+)?$)");
     const size_t n = count_matching(arcs.gcode, arc_re);
     EXPECT_GE(n, 3u);
-    EXPECT_EQ(arcs.program.entities[0].blocks * 3 < lines.program.entities[0].blocks, true)
+    // A third of the lines at most (tangent arcs: one more than free ones here).
+    EXPECT_EQ(arcs.program.entities[0].blocks * 3 <= lines.program.entities[0].blocks, true)
         << arcs.program.entities[0].blocks << " vs " << lines.program.entities[0].blocks;
     EXPECT_EQ(arcs.gcode.find(" K"), std::string::npos);  // never the K word in G17
     EXPECT_LE(arcs.program.max_bound, 0.01);

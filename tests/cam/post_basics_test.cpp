@@ -67,13 +67,16 @@ TEST(Program, StructureOfEveryProgram) {
   // The tool list (each tool with the entities it cuts) and the estimate.
   EXPECT_EQ(lines[3], "(T3: a, b)");
   EXPECT_EQ(lines[4].rfind("(estimated cycle time ", 0), 0u) << lines[4];
+  // The cuts along the curves beside their exact path's bound.
+  EXPECT_EQ(lines[5].rfind("(cutting along the curves ", 0), 0u) << lines[5];
+  EXPECT_NE(lines[5].find("; the exact path's bound on this machine "), std::string::npos) << lines[5];
   // The cut order and what it saved: b's end is nearer the origin.
-  EXPECT_EQ(lines[5].rfind("(order shortest: 0 nested contours cut before what encloses them; rapids ", 0), 0u)
-      << lines[5];
-  EXPECT_EQ(lines[6], "G21 G90 G17");
-  EXPECT_EQ(lines[7], "G40 G49 G80 G94");  // the profile's preamble: the safety line
-  EXPECT_EQ(lines[8], "T3 M06");
-  EXPECT_EQ(lines[9], "S9000 M03");
+  EXPECT_EQ(lines[6].rfind("(order shortest: 0 nested contours cut before what encloses them; rapids ", 0), 0u)
+      << lines[6];
+  EXPECT_EQ(lines[7], "G21 G90 G17");
+  EXPECT_EQ(lines[8], "G40 G49 G80 G94");  // the profile's preamble: the safety line
+  EXPECT_EQ(lines[9], "T3 M06");
+  EXPECT_EQ(lines[10], "S9000 M03");
   EXPECT_EQ(lines.back(), "%");
   EXPECT_EQ(lines[lines.size() - 2], "M30");
   // One retract at the end, then the spindle stops: not two retracts.

@@ -3,6 +3,7 @@
 (tolerance 0.001 mm; largest deviation measured 0.0009976 mm, proven bound 0.0009996 mm, rounding included)
 (T1: cube-base-curve)
 (estimated cycle time 4 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
+(cutting along the curves 0.28 s; the exact path's bound on this machine 0.25 s [x1.064; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 G54

@@ -4,28 +4,29 @@ N10 (bezcam 0.1.0: curve-exercise-8.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.009338 mm, proven bound 0.009741 mm, rounding included)
 N30 (T1: seed-ex-8)
 N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
-N50 G21 G90 G17
-N60 G40 G49 G80 G94
-N70 G54
-N80 G53 G00 Z0.
-N90 T1 M06
-N100 G43 H1
-N110 S12000 M03
-N120 (entity seed-ex-8: bezier, degree 3, 2D)
-N130 G00 Z5.
-N140 X0. Y0.
-N150 G01 Z-0.5 F200.
-N160 X0.366 Y0.026 F600.
-N170 X0.55 Y0.124
-N180 X0.582 Y0.275
-N190 X0.448 Y0.529
-N200 X0. Y1.
-N210 X-0.448 Y1.471
-N220 X-0.582 Y1.725
-N230 X-0.55 Y1.876
-N240 X-0.366 Y1.974
-N250 X0. Y2.
-N260 G00 Z5.
-N270 M05
-N280 M30
+N50 (cutting along the curves 0.37 s; the exact path's bound on this machine 0.33 s [x1.118; rapids, plunges and pauses not counted])
+N60 G21 G90 G17
+N70 G40 G49 G80 G94
+N80 G54
+N90 G53 G00 Z0.
+N100 T1 M06
+N110 G43 H1
+N120 S12000 M03
+N130 (entity seed-ex-8: bezier, degree 3, 2D)
+N140 G00 Z5.
+N150 X0. Y0.
+N160 G01 Z-0.5 F200.
+N170 X0.366 Y0.026 F600.
+N180 X0.55 Y0.124
+N190 X0.582 Y0.275
+N200 X0.448 Y0.529
+N210 X0. Y1.
+N220 X-0.448 Y1.471
+N230 X-0.582 Y1.725
+N240 X-0.55 Y1.876
+N250 X-0.366 Y1.974
+N260 X0. Y2.
+N270 G00 Z5.
+N280 M05
+N290 M30
 %

@@ -3,6 +3,7 @@
 (tolerance 0.001 mm; largest deviation measured 0.000885 mm, proven bound 0.0009863 mm, rounding included)
 (T2: teardrop-finish)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
+(cutting along the curves 1.37 s; the exact path's bound on this machine 1.17 s [x1.167; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 T2 M06

@@ -3,6 +3,7 @@
 (tolerance 0.0005 inch; largest deviation measured 0.0004705 inch, proven bound 0.000472 inch, rounding included)
 (T1: semicircle-inch)
 (estimated cycle time 24 s on the motion model of machine generic [acceleration, corners, tool changes])
+(cutting along the curves 14.30 s; the exact path's bound on this machine 14.27 s [x1.002; rapids, plunges and pauses not counted])
 G20 G90 G17
 G40 G49 G80 G94
 T1 M06

@@ -4,6 +4,7 @@ O1000 (BEZCAM)
 (tolerance 0.01 mm; largest deviation measured 0 mm, proven bound 0 mm, rounding included)
 (T2: teardrop)
 (estimated cycle time 14 s on the motion model of machine fanuc-g063 [acceleration, corners, tool changes])
+(cutting along the curves 7.10 s; the exact path's bound on this machine 7.05 s [x1.005; rapids, plunges and pauses not counted])
 G21 G90 G17
 G53 G00 Z0.
 T2 M06

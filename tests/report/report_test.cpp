@@ -164,11 +164,14 @@ TEST(Report, TextIsShortAndNamesEveryEntityUpToTheLimit) {
   std::istringstream in(full);
   std::vector<std::string> lines;
   for (std::string l; std::getline(in, l);) lines.push_back(l);
-  ASSERT_EQ(lines.size(), 1 + 9 + 1u);
+  ASSERT_EQ(lines.size(), 1 + 9 + 2u);
   EXPECT_EQ(lines[0].rfind("bezcam: 9 entities, ", 0), 0u) << lines[0];
   EXPECT_NE(lines[0].find("for machine generic (output lines, tolerance 0.01 mm)"), std::string::npos);
   EXPECT_EQ(lines[1].rfind("  seed-ex-1: bezier, degree 2, length 2.17831 mm, ", 0), 0u) << lines[1];
   EXPECT_EQ(lines[10].rfind("  program: ", 0), 0u);
+  // The cuts along the curves beside their exact path's bound.
+  EXPECT_EQ(lines[11].rfind("  cutting along the curves ", 0), 0u) << lines[11];
+  EXPECT_NE(lines[11].find("; the exact path's bound on this machine "), std::string::npos) << lines[11];
   const std::string short_form = report_text(r, 2);
   EXPECT_NE(short_form.find("  ... and 7 more entities"), std::string::npos) << short_form;
   EXPECT_EQ(short_form.find("seed-ex-3"), std::string::npos);
@@ -215,6 +218,38 @@ TEST(FormatSignificant, TrimsAndRounds) {
   EXPECT_EQ(format_significant(2.5, 6), "2.5");
   EXPECT_EQ(format_significant(0, 3), "0");
   EXPECT_EQ(format_significant(20000, 6), "20000");
+}
+
+TEST(Report, TheExactPathsBoundAndEachModesRatioToIt) {
+  // The same job in lines and arcs: the same bound (the exact path's), each
+  // plan's time along the curves at or above it, the ratios in the JSON.
+  const Job job = load_sample("job-exercises-all.json");
+  const MachineProfile m = load_machine_profile("linuxcnc");
+  ProgramReport lines, arcs;
+  for (OutputMode mode : {OutputMode::lines, OutputMode::arcs}) {
+    ConvertOptions o;
+    o.output = mode;
+    const ConvertResult c = convert(job, m, o);
+    (mode == OutputMode::lines ? lines : arcs) = make_report(c.program, m, c.gcode, c.plan ? &*c.plan : nullptr);
+  }
+  ASSERT_GT(lines.path_bound_s, 0);
+  EXPECT_EQ(lines.path_bound_s, arcs.path_bound_s);
+  ASSERT_TRUE(lines.planned && arcs.planned);
+  lines.alternatives = {{OutputMode::lines, 0, 0, *lines.planned}, {OutputMode::arcs, 0, 0, *arcs.planned}};
+  const auto j = nlohmann::json::parse(report_json(lines));
+  const double bound = j["program"]["path_bound_s"].get<double>();
+  EXPECT_LE(bound, lines.path_bound_s);  // rounded down
+  EXPECT_GT(bound, lines.path_bound_s - 1e-6);
+  double sum = 0;
+  for (const auto& e : j["entities"]) sum += e["time_bound_s"].get<double>();
+  EXPECT_NEAR(sum, bound, 1e-5);
+  for (const auto& a : j["compare_outputs"]) {
+    const double path = a["planned"]["path_time_s"].get<double>();
+    EXPECT_GE(path, bound);
+    EXPECT_NEAR(a["planned"]["path_bound_ratio"].get<double>(), path / bound, 1e-5);
+  }
+  const std::string text = report_text(lines);
+  EXPECT_NE(text.find("path/bound"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -40,6 +40,12 @@ struct EntityReport {
   std::vector<MaterialLeft> left;
   /// A pocket's region (type "pocket"): its certificate.
   std::optional<PocketCertificate> pocket;
+  /// A curve cut along its line (not as a part, a pocket or a surface), on
+  /// a machine with a motion model: the moves [cut_first, cut_end) of
+  /// Program::moves that cut it, and the time-optimal bound of following
+  /// its exact curve once at its feed (machine/path_bound.hpp; 0: none).
+  size_t cut_first = 0, cut_end = 0;
+  double time_bound_s = 0;
 };
 
 enum class OutputMode { lines, arcs, nurbs };

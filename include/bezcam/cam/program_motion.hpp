@@ -16,9 +16,18 @@ namespace bezcam {
 /// already at the target, so a block never starts from an invented origin.
 /// Comments, tool changes and spindle moves produce no block.
 std::vector<MotionBlock> program_motion(const Program& p);
+/// The same, with the index in `p.moves` of the move each block comes
+/// from written to `source` (one per block).
+std::vector<MotionBlock> program_motion(const Program& p, std::vector<size_t>& source);
 
 /// The blocks and pauses of a program's motion built by bezcam (a
-/// Program): tool changes, spindle starts and dwells become pauses.
+/// Program): tool changes, spindle starts and dwells become pauses. The
+/// blocks that cut an entity with a time-optimal bound
+/// (EntityReport::cut_first, cut_end) are marked Timeline::on_path.
 Timeline program_timeline(const Program& p);
+
+/// The time-optimal bound of the program's cutting path: the sum of its
+/// entities' (EntityReport::time_bound_s); 0 when none has one.
+double exact_path_bound_s(const Program& p);
 
 }  // namespace bezcam

@@ -58,6 +58,16 @@ struct ArcFitOptions {
   /// Arcs and their ends stay on the curve (arc_fit.cpp says why). false:
   /// every span end lies on the curve (before rounding).
   bool band = false;
+  /// Tangent-continuous chains (not with `helical`): after the first move
+  /// of a chain, every arc leaves in the direction the move before ends
+  /// in, its centre on the normal there, within the rounding of its centre
+  /// words (about 10^-decimals / radius radians); a line is taken only
+  /// where it leaves in that direction too, else arcs of any length are
+  /// tried first. A chain starts again at the curve's own corners and
+  /// after a piece that gets no arcs. The bound is certified as for any
+  /// arc. false: each arc's centre chosen freely (one fewer constraint:
+  /// longer spans, but the moves meet at small angles).
+  bool tangent = false;
 };
 
 enum class FitKind { line, arc_cw, arc_ccw };

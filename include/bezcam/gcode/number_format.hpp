@@ -35,4 +35,8 @@ std::string measured_text(double measured, double bound, double tolerance, std::
 /// 1 s for any time ("1 h 02 min 05 s", "2 min 05 s", "45 s").
 std::string format_clock(double seconds);
 
+/// A time to the hundredth of a second ("8.23 s", "2 min 05.31 s"); with
+/// `round_down` rounded down, so that a lower bound printed stays one.
+std::string format_time(double seconds, bool round_down = false);
+
 }  // namespace bezcam

@@ -48,6 +48,10 @@ struct Timeline {
   /// One per block when the timeline was read from a program: the tool in
   /// the spindle (the T of the last M06; 0 before any). Empty otherwise.
   std::vector<int> tools;
+  /// One per block, or empty: whether the block cuts along a curve whose
+  /// exact path has a time-optimal bound (machine/path_bound.hpp); the
+  /// plan's `path_time_s` sums their time.
+  std::vector<char> on_path;
 };
 
 /// Why a block ran slower than programmed.
@@ -88,6 +92,7 @@ struct PlanSegment {
   std::vector<Piece> pieces;
   int block = -1;  ///< the block it belongs to (blends: the block before the corner)
   bool rapid = false;
+  bool blend = false;                      ///< a corner's blend arc
   double length = 0, vmax = 0, accel = 0;  ///< units/s, units/s^2 along the path
   SpeedLimit limit = SpeedLimit::programmed;
   /// Curved segments (arcs, curve pieces, blends): radius and swept angle
@@ -114,7 +119,10 @@ struct MotionPlan {
   double period_s = 0.001;
   double cycle_time_s = 0, cutting_time_s = 0, rapid_time_s = 0, pause_time_s = 0;
   double programmed_feed_time_s = 0;  ///< every block at its programmed feed, no acceleration
-  double mean_feed_ratio = 1;         ///< achieved / programmed feed, length-weighted over cutting blocks
+  /// The time of the blocks marked Timeline::on_path and of the blends at
+  /// their corners (into the first of them too); 0 when none is marked.
+  double path_time_s = 0;
+  double mean_feed_ratio = 1;  ///< achieved / programmed feed, length-weighted over cutting blocks
   size_t starved_blocks = 0, clamped_blocks = 0;
   double max_path_deviation = 0;  ///< program units: corner blending
   int max_deviation_line = 0;     ///< where (the line of the block before the corner)

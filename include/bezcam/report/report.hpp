@@ -48,8 +48,14 @@ struct ProgramReport {
     double cycle_time_s = 0, cutting_time_s = 0, rapid_time_s = 0, pause_time_s = 0;
     double programmed_feed_time_s = 0, mean_feed_ratio = 1, max_path_deviation = 0;
     size_t starved_blocks = 0, clamped_blocks = 0;
+    /// The time of the cuts along curves with a time-optimal bound
+    /// (MotionPlan::path_time_s; 0 when the plan has none).
+    double path_time_s = 0;
   };
   std::optional<Planned> planned;
+  /// The time-optimal bound of those cuts' exact paths on the machine
+  /// (exact_path_bound_s(); 0: none): the same in every output mode.
+  double path_bound_s = 0;
   /// The same job in the other output modes the machine takes
   /// (ConvertOptions / `compare_outputs`): output, cutting blocks, plan.
   struct Alternative {
