@@ -3,6 +3,7 @@
 (tolerance 0.01 mm; largest deviation measured 0.009559 mm, proven bound 0.009991 mm, rounding included)
 (T3: groove-xz, arch-yz)
 (estimated cycle time 17 s on the motion model of machine generic [acceleration, corners, tool changes])
+(cutting along the curves 6.36 s; the exact path's bound on this machine 6.30 s [x1.010; rapids, plunges and pauses not counted])
 (order shortest: 0 nested contours cut before what encloses them; rapids 30 mm in XY instead of 38.3 mm as written [8.3 mm saved])
 G21 G90 G17
 G40 G49 G80 G94

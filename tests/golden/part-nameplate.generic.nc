@@ -5,6 +5,7 @@
 (T2: serial/9, serial/8, serial/8, serial/7, serial/6, serial/5, serial/5, serial/4, serial/4, serial/3, serial/3, serial/2, serial/1, serial/1, serial/0)
 (T1: 3 mm flat end mill: plate)
 (estimated cycle time 4 min 06 s on the motion model of machine generic [acceleration, corners, tool changes])
+(cutting along the curves 11.39 s; the exact path's bound on this machine 10.61 s [x1.073; rapids, plunges and pauses not counted])
 (order shortest: 32 nested contours cut before what encloses them; rapids 151.1 mm in XY instead of 200.6 mm as written [49.5 mm saved])
 (pocket name/0: uncut 0 mm^2 at the worst level, limit 0.4334 = tolerance x perimeter; checked on a 0.01 mm grid)
 (pocket name/0: unreachable 0.0944 mm^2 in 2 places; nearest approach to a wall 0.5008 mm at 24.59, 17.75, asked r + stock 0.5)

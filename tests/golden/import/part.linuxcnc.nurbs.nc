@@ -3,6 +3,7 @@
 (tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 1.149e-05 mm, rounding included)
 (T1: HOLES:37, HOLES:3A, HOLES:3B, HOLES:39, HOLES:38, OUTLINE:2F+7)
 (estimated cycle time 34 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
+(cutting along the curves 23.18 s; the exact path's bound on this machine 23.03 s [x1.006; rapids, plunges and pauses not counted])
 (order shortest: 5 nested contours cut before what encloses them; rapids 138.3 mm in XY instead of 194.5 mm as written [56.2 mm saved])
 G21 G90 G17
 G40 G49 G80 G94
