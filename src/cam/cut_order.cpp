@@ -22,13 +22,16 @@
 #include <queue>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "cut_order_nesting.hpp"
+#include "cut_order_tree.hpp"
 
 namespace bezcam {
 namespace {
 
 using cut_order_detail::Box2;
+using cut_order_detail::BoxTree;
 using cut_order_detail::check_input;
 using cut_order_detail::dxy;
 using cut_order_detail::nesting_of;
@@ -36,6 +39,12 @@ using cut_order_detail::tolerance_of;
 using cut_order_detail::vertex_count;
 
 // ---- planning a segment -------------------------------------------------
+
+Box2 point_box(const Vec3& p) {
+  Box2 b;
+  b.add(p);
+  return b;
+}
 
 struct Tour {
   std::vector<uint32_t> seq;  // local nodes, with the home sentinel first and the tail sentinel last
@@ -72,56 +81,61 @@ class Segment {
 
   size_t size() const { return m_; }
 
-  /// Nearest neighbour under the precedence.
+  /// Nearest neighbour under the precedence: from the last exit, the
+  /// available contour with the nearest start (ties: the lowest index).
+  /// The starts are searched in a tree (cut_order_tree.hpp) of their boxes:
+  /// each end of an open contour a point, a closed contour's allowed start
+  /// vertices one box.
   Tour nearest() const {
     Tour t = fresh();
+    std::vector<Box2> ports;
+    std::vector<uint32_t> owner, first(m_ + 1, 0);
+    for (uint32_t u = 0; u < m_; ++u) {
+      const auto& o = c(u).outline;
+      first[u] = static_cast<uint32_t>(ports.size());
+      if (c(u).closed) {
+        Box2 b;
+        for (size_t q = 0; q < count(u); ++q) b.add(o[vertex(u, q)]);
+        ports.push_back(b);
+      } else {
+        ports.push_back(point_box(o.front()));
+        if (c(u).reversible) ports.push_back(point_box(o.back()));
+      }
+      owner.resize(ports.size(), u);
+    }
+    first[m_] = static_cast<uint32_t>(ports.size());
+    BoxTree tree(ports);
+    auto set = [&](uint32_t u, bool active) {
+      for (uint32_t k = first[u]; k < first[u + 1]; ++k) tree.set_active(k, active);
+    };
     std::vector<size_t> waiting(m_);
-    std::vector<uint32_t> avail;
-    for (size_t u = 0; u < m_; ++u) {
+    for (uint32_t u = 0; u < m_; ++u) {
       waiting[u] = preds_[u].size();
-      if (waiting[u] == 0) avail.push_back(static_cast<uint32_t>(u));
+      if (waiting[u] != 0) set(u, false);
     }
     Vec3 p = from_;
-    std::vector<double> lb;
-    while (!avail.empty()) {
-      lb.resize(avail.size());
-      double ub = HUGE_VAL;
-      for (size_t i = 0; i < avail.size(); ++i) {
-        const uint32_t u = avail[i];
-        lb[i] = box_[u].gap(p);
-        ub = std::min(ub, dxy(p, c(u).outline.front()));
-      }
-      size_t best_i = 0, best_start = 0;
-      bool best_rev = false;
+    for (size_t left = m_; left > 0; --left) {
       double best = HUGE_VAL;
-      for (size_t i = 0; i < avail.size(); ++i) {
-        if (lb[i] > ub || lb[i] > best) continue;
-        const uint32_t u = avail[i];
-        const auto& o = c(u).outline;
-        double d = HUGE_VAL;
-        size_t s = 0;
-        bool r = false;
-        if (c(u).closed) {
-          for (size_t q = 0; q < count(u); ++q) {
-            const size_t k = vertex(u, q);
-            const double dk = dxy(p, o[k]);
-            if (dk < d) d = dk, s = k;
-          }
-        } else {
-          d = dxy(p, o.front());
-          if (c(u).reversible && dxy(p, o.back()) < d) d = dxy(p, o.back()), s = o.size() - 1, r = true;
-        }
-        if (d < best || (d == best && u < avail[best_i])) best = d, best_i = i, best_start = s, best_rev = r;
-      }
-      const uint32_t u = avail[best_i];
-      t.seq.insert(t.seq.end() - 1, u);
-      t.start[u] = best_start;
-      t.rev[u] = best_rev;
-      p = exit(t, u);
-      avail[best_i] = avail.back();
-      avail.pop_back();
-      for (uint32_t o : succs_[u])
-        if (--waiting[o] == 0) avail.push_back(o);
+      uint32_t bu = UINT32_MAX;
+      size_t bs = 0;
+      bool br = false;
+      tree.search<double>([&](const Box2& boxes, const Box2&) { return boxes.gap(p); },
+                          [&](uint32_t k) {
+                            const uint32_t u = owner[k];
+                            if (ports[k].gap(p) > best) return;
+                            size_t s = 0;
+                            bool r = false;
+                            const double d = start_nearest(u, p, s, r);
+                            if (d < best || (d == best && u < bu)) best = d, bu = u, bs = s, br = r;
+                          },
+                          [&](double lower) { return lower > best; });
+      t.seq.insert(t.seq.end() - 1, bu);
+      t.start[bu] = bs;
+      t.rev[bu] = br;
+      p = exit(t, bu);
+      set(bu, false);
+      for (uint32_t o : succs_[bu])
+        if (--waiting[o] == 0) set(o, true);
     }
     return t;
   }
@@ -302,84 +316,60 @@ class Segment {
     }
   }
 
-  /// K nearest contours by box gap (then box centre distance, then index).
-  /// (A uniform grid of box centres is searched ring by ring, stopping once
-  /// no unseen box can be nearer than the K-th found; boxes much larger than
-  /// a cell are compared with every contour instead. Same result as
-  /// comparing all pairs.)
+  /// K nearest contours by box gap, then box centre distance, then index,
+  /// found through the tree of the boxes (cut_order_tree.hpp): the same as
+  /// comparing all pairs.
   void build_neighbours() {
     constexpr size_t K = 10;
     nbrs_.assign(m_, {});
     if (m_ < 2) return;
     std::vector<Vec3> ctr(m_);
-    std::vector<double> ext(m_);  // half the larger side of the box
-    Box2 all;
-    for (size_t u = 0; u < m_; ++u) {
-      ctr[u] = box_[u].center();
-      ext[u] = std::max(box_[u].hx - box_[u].lx, box_[u].hy - box_[u].ly) / 2;
-      all.add(ctr[u]);
-    }
-    const double span = std::max({all.hx - all.lx, all.hy - all.ly, 1e-300});
-    const double side = std::max(1.0, std::floor(std::sqrt(static_cast<double>(m_) / 2)));
-    const double h = span / side;
-    const size_t nx = static_cast<size_t>((all.hx - all.lx) / h) + 1,
-                 ny = static_cast<size_t>((all.hy - all.ly) / h) + 1;
-    auto cell_x = [&](const Vec3& p) { return std::min(nx - 1, static_cast<size_t>((p.x - all.lx) / h)); };
-    auto cell_y = [&](const Vec3& p) { return std::min(ny - 1, static_cast<size_t>((p.y - all.ly) / h)); };
-    std::vector<uint32_t> big, first(nx * ny + 1, 0), items;
-    double ext_small = 0;
-    for (size_t u = 0; u < m_; ++u) {
-      if (ext[u] > 4 * h) {
-        big.push_back(static_cast<uint32_t>(u));
-      } else {
-        ext_small = std::max(ext_small, ext[u]);
-        ++first[cell_y(ctr[u]) * nx + cell_x(ctr[u]) + 1];
-      }
-    }
-    for (size_t k = 0; k < nx * ny; ++k) first[k + 1] += first[k];
-    items.resize(first[nx * ny]);
-    {
-      std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-      for (size_t u = 0; u < m_; ++u)
-        if (ext[u] <= 4 * h) items[fill[cell_y(ctr[u]) * nx + cell_x(ctr[u])]++] = static_cast<uint32_t>(u);
-    }
+    for (size_t u = 0; u < m_; ++u) ctr[u] = box_[u].center();
+    const BoxTree tree(box_);
     struct Cand {
       double gap, cd;
       uint32_t v;
       bool operator<(const Cand& o) const { return gap != o.gap ? gap < o.gap : cd != o.cd ? cd < o.cd : v < o.v; }
     };
+    using Key = std::pair<double, double>;  // (gap, centre distance), each a lower bound
     std::vector<Cand> best;
-    auto consider = [&](size_t u, size_t v) {
-      if (v == u) return;
-      const Cand cand{box_[u].gap(box_[v]), dxy(ctr[u], ctr[v]), static_cast<uint32_t>(v)};
-      if (best.size() == K && !(cand < best.back())) return;
-      best.insert(std::upper_bound(best.begin(), best.end(), cand), cand);
-      if (best.size() > K) best.pop_back();
-    };
-    for (size_t u = 0; u < m_; ++u) {
+    for (uint32_t u = 0; u < m_; ++u) {
       best.clear();
-      if (ext[u] > 4 * h) {
-        for (size_t v = 0; v < m_; ++v) consider(u, v);
-      } else {
-        for (uint32_t v : big) consider(u, v);
-        const long cx = static_cast<long>(cell_x(ctr[u])), cy = static_cast<long>(cell_y(ctr[u]));
-        const long rmax = static_cast<long>(std::max(nx, ny));
-        for (long r = 0; r <= rmax; ++r) {
-          // every unseen small box has its centre at least (r - 1) h away along x or y
-          if (best.size() == K && (static_cast<double>(r) - 1) * h - ext[u] - ext_small > best.back().gap) break;
-          for (long y = cy - r; y <= cy + r; ++y) {
-            if (y < 0 || y >= static_cast<long>(ny)) continue;
-            const bool edge_row = y == cy - r || y == cy + r;
-            for (long x = cx - r; x <= cx + r; x += (edge_row || r == 0) ? 1 : 2 * r) {
-              if (x < 0 || x >= static_cast<long>(nx)) continue;
-              const size_t k = static_cast<size_t>(y) * nx + static_cast<size_t>(x);
-              for (uint32_t i = first[k]; i < first[k + 1]; ++i) consider(u, items[i]);
-            }
-          }
-        }
-      }
+      tree.search<Key>(
+          [&](const Box2& boxes, const Box2& centres) {
+            return Key{box_[u].gap(boxes), centres.gap(ctr[u])};
+          },
+          [&](uint32_t v) {
+            if (v == u) return;
+            const Cand cand{box_[u].gap(box_[v]), dxy(ctr[u], ctr[v]), v};
+            if (best.size() == K && !(cand < best.back())) return;
+            best.insert(std::upper_bound(best.begin(), best.end(), cand), cand);
+            if (best.size() > K) best.pop_back();
+          },
+          [&](const Key& lower) {
+            return best.size() == K && Key{best.back().gap, best.back().cd} < lower;
+          });
       for (const auto& b : best) nbrs_[u].push_back(b.v);
     }
+  }
+
+  /// The start of u nearest to p (a closed contour's allowed vertices, an
+  /// open one's ends as its direction allows); returns the distance.
+  double start_nearest(uint32_t u, const Vec3& p, size_t& start, bool& rev) const {
+    const auto& o = c(u).outline;
+    start = 0, rev = false;
+    if (!c(u).closed) {
+      double d = dxy(p, o.front());
+      if (c(u).reversible && dxy(p, o.back()) < d) d = dxy(p, o.back()), start = o.size() - 1, rev = true;
+      return d;
+    }
+    double d = HUGE_VAL;
+    for (size_t q = 0; q < count(u); ++q) {
+      const size_t k = vertex(u, q);
+      const double dk = dxy(p, o[k]);
+      if (dk < d) d = dk, start = k;
+    }
+    return d;
   }
 
   /// Best start (closed) or direction (reversible open) of u between the
@@ -665,6 +655,10 @@ class Segment {
   mutable std::vector<size_t> cands_;
 };
 
+// Up to this many contours in a segment, both starts (the written order
+// and nearest neighbour) are improved; above, the shorter one only.
+constexpr size_t kBothStartsUpTo = 2000;
+
 Vec3 step_entry(std::span<const OrderContour> cs, const OrderStep& s) { return cs[s.contour].outline[s.start_vertex]; }
 Vec3 step_exit(std::span<const OrderContour> cs, const OrderStep& s) {
   const auto& c = cs[s.contour];
@@ -735,9 +729,13 @@ CutOrder plan_cut_order(std::span<const OrderContour> contours, Vec3 home, const
         best = std::move(*ex);
       } else {
         Tour a = base;
-        seg.improve(a);
         Tour b = seg.nearest();
-        seg.improve(b);
+        if (seg.size() <= kBothStartsUpTo) {
+          seg.improve(a);
+          seg.improve(b);
+        } else {  // only the shorter start is improved
+          seg.improve(seg.cost(b) < seg.cost(a) ? b : a);
+        }
         best = seg.cost(b) < seg.cost(a) ? std::move(b) : std::move(a);
       }
       for (const auto& s : seg.steps(best)) planned.push_back(s);
