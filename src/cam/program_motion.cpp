@@ -1,6 +1,7 @@
 #include "bezcam/cam/program_motion.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -15,12 +16,17 @@ std::vector<MotionBlock> program_motion(const Program& p) {
   // moving every block of a long program.
   out.reserve(static_cast<size_t>(
       std::count_if(p.moves.begin(), p.moves.end(), [](const Move& mv) { return motion_of(mv) != nullptr; })));
+  for_each_motion_block(p, [&](MotionBlock& b) { out.push_back(std::move(b)); });
+  return out;
+}
+
+void for_each_motion_block(const Program& p, const std::function<void(MotionBlock&)>& each) {
   Vec3 pos;
   unsigned known = 0;
   // G41/G42: the blocks are where the tool's centre goes (cutter_comp.hpp).
   CutterComp comp;
   auto add = [&](std::vector<MotionBlock> blocks) {
-    for (auto& b : blocks) out.push_back(std::move(b));
+    for (auto& b : blocks) each(b);
   };
   for (const Move& mv : p.moves) {
     if (const auto* cc = std::get_if<CompensationMove>(&mv.what)) {
@@ -67,7 +73,7 @@ std::vector<MotionBlock> program_motion(const Program& p) {
     pos = to;
     known |= mo->axes;
     if (comp.idle()) {  // no compensation: the block as it is
-      out.push_back(std::move(b));
+      each(b);
       continue;
     }
     try {
@@ -77,14 +83,12 @@ std::vector<MotionBlock> program_motion(const Program& p) {
     }
   }
   add(comp.finish());
-  return out;
 }
 
-Timeline program_timeline(const Program& p) {
-  Timeline tl;
-  tl.units = p.units;
-  tl.blocks = program_motion(p);
-  tl.path_tolerance.assign(tl.blocks.size(), -1);
+namespace {
+
+// A built program's pauses: tool changes, spindle starts and dwells.
+void add_pauses(const Program& p, Timeline& tl) {
   size_t motions = 0;
   for (const Move& mv : p.moves) {
     if (motion_of(mv)) {
@@ -100,7 +104,26 @@ Timeline program_timeline(const Program& p) {
     else if (std::get_if<ProgramStop>(&mv.what))
       tl.pauses.push_back({PlanPause::Kind::program_stop, 0, 0, motions});
   }
+}
+
+}  // namespace
+
+Timeline program_timeline(const Program& p) {
+  Timeline tl;
+  tl.units = p.units;
+  tl.blocks = program_motion(p);
+  tl.path_tolerance.assign(tl.blocks.size(), -1);
+  add_pauses(p, tl);
   return tl;
+}
+
+MotionPlan plan_program_summary(const Program& p, const MotionModel& model) {
+  // No path tolerance: as program_timeline()'s -1 for every block.
+  Timeline tl;
+  tl.units = p.units;
+  add_pauses(p, tl);
+  return plan_motion_summary(
+      std::move(tl), [&](const std::function<void(MotionBlock&)>& each) { for_each_motion_block(p, each); }, model);
 }
 
 }  // namespace bezcam

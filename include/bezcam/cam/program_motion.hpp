@@ -2,6 +2,7 @@
 /// A built program's motion as the controller executes it: the canonical
 /// moves of a Program become the MotionBlocks the G-code reader produces,
 /// and the timeline (blocks and pauses) the planner plans.
+#include <functional>
 #include <vector>
 
 #include "bezcam/cam/program.hpp"
@@ -16,9 +17,16 @@ namespace bezcam {
 /// already at the target, so a block never starts from an invented origin.
 /// Comments, tool changes and spindle moves produce no block.
 std::vector<MotionBlock> program_motion(const Program& p);
+/// The same blocks, one at a time, in order: `each` may move from the one
+/// it is given.
+void for_each_motion_block(const Program& p, const std::function<void(MotionBlock&)>& each);
 
 /// The blocks and pauses of a program's motion built by bezcam (a
 /// Program): tool changes, spindle starts and dwells become pauses.
 Timeline program_timeline(const Program& p);
+
+/// plan_motion(program_timeline(p), model, PlanDetail::summary), the same
+/// figures, without holding the program's blocks (plan_motion_summary()).
+MotionPlan plan_program_summary(const Program& p, const MotionModel& model);
 
 }  // namespace bezcam
