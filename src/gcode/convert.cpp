@@ -41,8 +41,7 @@ ConvertResult convert_program(const Job& job, const MachineProfile& m, const Con
     // profile's tool change position lines move the machine between tools:
     // those moves are in the text only, and the report plans the text read
     // back.
-    if (m.motion && !retracts_between_tools(p, m))
-      r.plan = plan_motion(program_timeline(p), *m.motion, PlanDetail::summary);
+    if (m.motion && !retracts_between_tools(p, m)) r.plan = plan_program_summary(p, *m.motion);
   });
   return r;
 }

@@ -104,35 +104,20 @@ Vec3 PlanSegment::point_at(double s, const std::vector<MotionBlock>& blocks) con
 
 namespace {
 
-// Plans `timed`, a copy of the timeline to plan that it changes (starts of
-// unknown axes, pause times). `original`: the timeline's own blocks, kept
-// by a full plan (PlanDetail::full; null for a summary).
-MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original, const MotionModel& model,
-                      PlanDetail detail) {
-  if (!(model.period_s > 0)) throw std::invalid_argument("motion model: period_s must be > 0");
-  const Timeline& tl = timed;
-  // Axes the program had not set yet start where the machine stands. And
-  // in the same pass: at most a segment per line, rapid or arc and one per
-  // curve piece, and a blend after each.
-  Vec3 pos = tl.start;
-  size_t most = 0;
-  for (MotionBlock& mb : timed.blocks) {
-    if (mb.from_known != 7u) {
-      for (int k = 0; k < 3; ++k)
-        if (!(mb.from_known & (1u << k))) mb.from[k] = pos[k];
-      if (!mb.ctrl.empty()) mb.ctrl.front() = mb.from;
-    }
-    pos = mb.to;
-    most +=
-        1 + (mb.kind == BlockKind::nurbs || mb.kind == BlockKind::bezier ? static_cast<size_t>(curve_pieces(mb)) : 1);
-  }
-  // Tool changes and spindle starts take the machine's time.
-  for (PlanPause& p : timed.pauses) {
+// Tool changes and spindle starts take the machine's time.
+void time_pauses(Timeline& tl, const MotionModel& model) {
+  for (PlanPause& p : tl.pauses) {
     if (p.kind == PlanPause::Kind::tool_change) p.seconds = model.tool_change_s;
     if (p.kind == PlanPause::Kind::spindle_start) p.seconds = model.spindle_start_s;
   }
-  const bool summary = detail == PlanDetail::summary;
-  Builder b(timed, model, summary);
+}
+
+// The model's limits in program units; `most`: at most this many segments.
+void check_model(const MotionModel& model) {
+  if (!(model.period_s > 0)) throw std::invalid_argument("motion model: period_s must be > 0");
+}
+
+void set_limits(Builder& b, const MotionModel& model, size_t most) {
   b.most_segments = most;
   for (int i = 0; i < 3; ++i) {
     b.lim.vmax[i] = model.max_velocity_mm_min[static_cast<size_t>(i)] / 60 / b.scale;
@@ -140,8 +125,57 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
     if (model.max_jerk_mm_s3) b.lim.jmax[i] = (*model.max_jerk_mm_s3)[static_cast<size_t>(i)] / b.scale;
   }
   b.lim.jerk = model.max_jerk_mm_s3.has_value();
-  b.plan.units = tl.units;
+  b.plan.units = b.tl.units;
   b.plan.period_s = model.period_s;
+}
+
+// At most this many segments for a block: a segment per line, rapid or
+// arc and one per curve piece, and a blend after each.
+size_t most_segments(const MotionBlock& mb) {
+  return 1 + (mb.kind == BlockKind::nurbs || mb.kind == BlockKind::bezier ? static_cast<size_t>(curve_pieces(mb)) : 1);
+}
+
+// Axes the program had not set yet start where the machine stands (`pos`:
+// where the blocks before left it).
+void start_unknown_axes(MotionBlock& mb, Vec3& pos) {
+  if (mb.from_known != 7u) {
+    for (int k = 0; k < 3; ++k)
+      if (!(mb.from_known & (1u << k))) mb.from[k] = pos[k];
+    if (!mb.ctrl.empty()) mb.ctrl.front() = mb.from;
+  }
+  pos = mb.to;
+}
+
+// The speed passes and totals of a built summary; its per-block figures
+// dropped.
+MotionPlan finish_summary(Builder& b) {
+  b.speeds();
+  b.totals();
+  b.plan.blocks.clear();
+  b.plan.blocks.shrink_to_fit();
+  b.plan.pause_start_s.clear();
+  return std::move(b.plan);
+}
+
+// Plans `timed`, a copy of the timeline to plan that it changes (starts of
+// unknown axes, pause times). `original`: the timeline's own blocks, kept
+// by a full plan (PlanDetail::full; null for a summary).
+MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original, const MotionModel& model,
+                      PlanDetail detail) {
+  check_model(model);
+  const Timeline& tl = timed;
+  // Axes the program had not set yet start where the machine stands; and
+  // the segments' count, at most.
+  Vec3 pos = tl.start;
+  size_t most = 0;
+  for (MotionBlock& mb : timed.blocks) {
+    start_unknown_axes(mb, pos);
+    most += most_segments(mb);
+  }
+  time_pauses(timed, model);
+  const bool summary = detail == PlanDetail::summary;
+  Builder b(timed, model, summary);
+  set_limits(b, model, most);
   b.build();
   if (summary) {
     // The passes over the speeds read the segments' figures only: the
@@ -150,15 +184,10 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
     // (Swapped out: assigning `{}` would keep the capacity.)
     std::vector<MotionBlock>().swap(timed.blocks);
     std::vector<double>().swap(timed.path_tolerance);
+    return finish_summary(b);
   }
   b.speeds();
   b.totals();
-  if (summary) {
-    b.plan.blocks.clear();
-    b.plan.blocks.shrink_to_fit();
-    b.plan.pause_start_s.clear();
-    return std::move(b.plan);
-  }
   b.plan.segments = std::move(b.segs);
   b.plan.pauses = timed.pauses;
   b.plan.motion = *original;
@@ -170,6 +199,31 @@ MotionPlan plan_timed(Timeline& timed, const std::vector<MotionBlock>* original,
 MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail detail) {
   Timeline timed = tl;
   return plan_timed(timed, &tl.blocks, model, detail);
+}
+
+MotionPlan plan_motion_summary(Timeline tl, const BlockStream& blocks, const MotionModel& model) {
+  check_model(model);
+  time_pauses(tl, model);
+  tl.blocks.clear();
+  size_t count = 0, most = 0;
+  blocks([&](MotionBlock& mb) {
+    ++count;
+    most += most_segments(mb);
+  });
+  Builder b(tl, model, true);
+  set_limits(b, model, most);
+  b.streamed_ = true;
+  b.begin_build(count);
+  Vec3 pos = tl.start;
+  size_t bi = 0;
+  blocks([&](MotionBlock& mb) {
+    if (bi == count) throw std::logic_error("plan_motion_summary: the blocks differ from one pass to the next");
+    start_unknown_axes(mb, pos);
+    b.take_block(bi++, mb);
+  });
+  if (bi != count) throw std::logic_error("plan_motion_summary: the blocks differ from one pass to the next");
+  b.end_build();
+  return finish_summary(b);
 }
 
 MotionPlan plan_motion(Timeline&& tl, const MotionModel& model, PlanDetail detail) {

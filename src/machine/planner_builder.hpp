@@ -120,6 +120,20 @@ struct Builder {
   // ---- corners (planner_corners.cpp) ----
   // Every block's segments, joined at their corners.
   void build();
+  // build() in steps, for blocks made one at a time (plan_motion_summary()):
+  // begin_build(count), take_block() with each in order, end_build().
+  void begin_build(size_t blocks);
+  void take_block(size_t bi, const MotionBlock& b);
+  void end_build();
+  // Block `bi`: the timeline's, or when streamed the one being taken or
+  // the last one that moved (all a corner reads).
+  const MotionBlock& block(size_t bi) const;
+  bool streamed_ = false;
+  const MotionBlock* current_ = nullptr;
+  size_t current_index_ = 0;
+  MotionBlock last_moving_;
+  size_t pause_ = 0;
+  bool stop_before_ = true;  // the machine is at rest
   // Why the machine stops between two moves.
   enum class Stop { end, pause, exact_mode, corner };
   // A segment that ends in a stop: the acceleration LinuxCNC plans it with.

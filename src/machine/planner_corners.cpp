@@ -10,8 +10,12 @@
 namespace bezcam::planner_detail {
 
 void Builder::build() {
-  size_t pause = 0;
-  bool stop_before = true;  // the machine is at rest
+  begin_build(tl.blocks.size());
+  for (size_t bi = 0; bi < tl.blocks.size(); ++bi) take_block(bi, tl.blocks[bi]);
+  end_build();
+}
+
+void Builder::begin_build(size_t blocks) {
   // Reserved once (address space only until used): no reallocation
   // holding the segments twice while a long program grows.
   const size_t most = most_segments + 16;
@@ -20,26 +24,35 @@ void Builder::build() {
   else
     segs.reserve(most);
   junction.reserve(most + 1);
-  block_count = tl.blocks.size();
+  block_count = blocks;
   plan.blocks.reserve(block_count);
-  for (size_t bi = 0; bi < tl.blocks.size(); ++bi) {
+}
+
+const MotionBlock& Builder::block(size_t bi) const {
+  if (!streamed_) return tl.blocks[bi];
+  return bi == current_index_ ? *current_ : last_moving_;
+}
+
+void Builder::take_block(size_t bi, const MotionBlock& b) {
+  current_ = &b;
+  current_index_ = bi;
+  {
     bool pause_here = false;
-    while (pause < tl.pauses.size() && tl.pauses[pause].before_block <= bi) {
+    while (pause_ < tl.pauses.size() && tl.pauses[pause_].before_block <= bi) {
       pause_here = true;
-      ++pause;
+      ++pause_;
     }
     // Build this block's segments aside (one vector for every block),
     // then join them.
     std::vector<PlanSegment>& mine = mine_;
     mine.clear();
     add_block(static_cast<int>(bi), mine);
-    const MotionBlock& b = tl.blocks[bi];
     // A block that does not move (its end is where it starts) takes no
     // time and makes no corner: controllers drop it.
     if (plan.blocks.back().length <= 1e-9) mine.clear();
     for (size_t k = 0; k < mine.size(); ++k) {
       PlanSegment s = std::move(mine[k]);
-      if (segs.empty() || (k == 0 && (stop_before || pause_here))) {
+      if (segs.empty() || (k == 0 && (stop_before_ || pause_here))) {
         // The first move may start moving (a window of a longer program
         // planned at machine pace: Timeline::start_speed); after a pause
         // the machine is at rest.
@@ -58,7 +71,7 @@ void Builder::build() {
       }
       // A corner between blocks.
       PlanSegment& prev = segs.back();
-      const MotionBlock& pbk = tl.blocks[static_cast<size_t>(prev.block)];
+      const MotionBlock& pbk = block(static_cast<size_t>(prev.block));
       const double tol = std::min(path_tolerance(bi), path_tolerance(static_cast<size_t>(prev.block)));
       double vj = 0;
       const Vec3 u1 = block_tangent(pbk, true), u2 = block_tangent(b, false);
@@ -100,8 +113,8 @@ void Builder::build() {
       junction.push_back(vj);
       segs.push_back(std::move(s));
     }
-    stop_before = false;
-    if (mine.empty() && pause_here) stop_before = true;
+    stop_before_ = false;
+    if (mine.empty() && pause_here) stop_before_ = true;
     // A summary needs no segment once no blend can reach it (corners
     // change the last two): only its figures are kept, as the program goes.
     if (summary && segs.size() > 2) {
@@ -109,6 +122,13 @@ void Builder::build() {
       segs.erase(segs.begin(), segs.end() - 2);
     }
   }
+  // Blocks made one at a time: the next corner reads the last block that
+  // moved (the one segs ends with).
+  if (streamed_ && !segs.empty() && static_cast<size_t>(segs.back().block) == bi) last_moving_ = b;
+  current_ = nullptr;
+}
+
+void Builder::end_build() {
   if (!segs.empty()) exact_stop_end(Stop::end);
   junction.push_back(0);  // the end
   for (PlanSegment& sg : segs) add_lean(sg);

@@ -204,7 +204,7 @@ void Builder::curved_limits(PlanSegment& s, double v, SpeedLimit why, double R, 
 
 // Segments of one block, appended to `out`.
 void Builder::add_block(int bi, std::vector<PlanSegment>& out) {
-  const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
+  const MotionBlock& b = block(static_cast<size_t>(bi));
   PlannedBlock pb;
   pb.line = b.line;
   pb.first_line = b.first_line ? b.first_line : b.line;
@@ -247,7 +247,7 @@ void Builder::add_block(int bi, std::vector<PlanSegment>& out) {
 // An arc block: one segment, its speed and acceleration shared with the
 // centripetal part.
 void Builder::add_arc_segment(int bi, PlannedBlock& pb, std::vector<PlanSegment>& out) {
-  const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
+  const MotionBlock& b = block(static_cast<size_t>(bi));
   const Vec3 n = from_plane({0, 0, 1}, b.plane);  // the plane's axis
   const double vplane = in_plane(n, lim.vmax), aplane = arc_accel(in_plane(n, lim.amax));
   double v = b.feed / 60;
@@ -285,7 +285,7 @@ void Builder::add_arc_segment(int bi, PlannedBlock& pb, std::vector<PlanSegment>
 // the speed its tightest curvature allows (and, in a full plan, the table
 // of points that sampling reads).
 void Builder::add_curve_segments(int bi, PlannedBlock& pb, std::vector<PlanSegment>& out) {
-  const MotionBlock& b = tl.blocks[static_cast<size_t>(bi)];
+  const MotionBlock& b = block(static_cast<size_t>(bi));
   const int pieces = curve_pieces(b);
   constexpr int kSub = 12;
   const Vec3 n{0, 0, 1};

@@ -150,6 +150,16 @@ MotionPlan plan_motion(const Timeline& tl, const MotionModel& model, PlanDetail 
 /// a summary plans in it, without a copy of its blocks.
 MotionPlan plan_motion(Timeline&& tl, const MotionModel& model, PlanDetail detail = PlanDetail::full);
 
+/// Calls its argument with each block of a timeline, in order, and the same
+/// blocks every time it is called.
+using BlockStream = std::function<void(const std::function<void(MotionBlock&)>& each)>;
+/// The summary plan (PlanDetail::summary) of `tl` with the blocks `blocks`
+/// makes (`tl.blocks` is not read): the same figures as plan_motion() of
+/// the timeline holding them, without ever holding them all (a long
+/// program's blocks are the larger part of its plan's memory). `blocks`
+/// is called twice.
+MotionPlan plan_motion_summary(Timeline tl, const BlockStream& blocks, const MotionModel& model);
+
 /// One sample per `plan.period_s` from t = 0 to the cycle's end (included):
 /// time, position and speed (units/min).
 void sample_plan(const MotionPlan& plan, const std::function<void(double t, const Vec3& p, double feed)>& out);
