@@ -244,11 +244,14 @@ double flatten_into(std::span<const Bezier> pieces, const FlattenOptions& opt, s
 }
 
 FlattenResult flatten(std::span<const Bezier> pieces, const FlattenOptions& opt) {
+  // The vertices go to a buffer the thread keeps, then once into a result
+  // of their exact size: one allocation per call, none to grow it.
+  thread_local std::vector<Vec3> scratch;
+  scratch.clear();
   FlattenResult r;
-  // (room for most curves at once: growing one vertex at a time from none
-  // would allocate four or five times)
-  r.points.reserve(32);
-  r.bound = flatten_into(pieces, opt, r.points);
+  r.bound = flatten_into(pieces, opt, scratch);
+  r.points.assign(scratch.begin(), scratch.end());
+  if (scratch.capacity() > (size_t{1} << 16)) std::vector<Vec3>().swap(scratch);  // a huge curve's room is let go
   return r;
 }
 
