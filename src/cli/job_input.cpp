@@ -105,6 +105,7 @@ return io;
 import::ReadOptions read_options(const ConversionOptions& o){import::ReadOptions ro;
 ro.scale = o.scale;
 ro.join_tolerance = o.join_tolerance;
+ro.units = o.units;
 return ro;
 }
 
@@ -127,12 +128,13 @@ Job read_job(const std::string& path, const ConversionOptions& o, import::Drawin
                          : !o.skip.empty()      ? "--skip"
                          : o.join_tolerance > 0 ? "--join-tolerance"
                          : o.scale != 1         ? "--scale"
+                         : !o.units.empty()     ? "--units"
                                                 : nullptr;
     if (option)
       throw InputError(errc::import_setting, Place::at_option(option),
                        path +
                            " is a job file, which states its own settings and has no layers; --set KEY=VALUE, "
-                           "--layer, --only and --skip apply to drawings (.svg, .dxf); --set "
+                           "--layer, --only, --skip, --scale and --units apply to drawings (.svg, .dxf); --set "
                            "ID:KEY=VALUE sets a key "
                            "of the job's entities whose id ID matches");
     Job job = read_job(path, std::move(entity_settings));

@@ -97,6 +97,14 @@ void Reader::header() {
              "$INSUNITS, group code " + std::to_string(g.code) +
                  ": expected units 0 to 16 (0 unitless, 1 inch, 4 mm, 5 cm, 6 m ...), found \"" + g.value + "\"");
       unit_ = it->second;
+      static const char* const names[] = {"",          "inch",       "foot",      "mile",      "mm",        "cm",
+                                          "m",         "km",         "microinch", "mil",       "yard",      "angstrom",
+                                          "nanometre", "micrometre", "decimetre", "decametre", "hectometre"};
+      const int code = std::stoi(g.value);
+      d_.mm_per_unit = unit_;
+      d_.declared_units = names[code];
+      if (code != 0) d_.declared_units += " ($INSUNITS " + g.value + ")";
+      d_.declared_mm = code == 0 ? 0 : unit_;
     }
   }
 }

@@ -1,7 +1,8 @@
 // A DXF with text through the program: convert and import-then-convert
 // cut the same program; check lists the glyphs; a stroke font is refused
 // with exit 2, naming where the text is, and nothing is written; a font
-// given with --set replaces it.
+// given with --set replaces it; --units says what a unitless drawing's
+// unit is.
 #include <filesystem>
 #include <gtest/gtest.h>
 
@@ -93,6 +94,31 @@ TEST(DxfTextCommand, AMissingFontIsWarnedAboutByKind) {
   r = bezcam({"convert", kData + "text-missing-font.dxf", "--strict", "-o", (dir / "strict.nc").string()});
   EXPECT_EQ(r.status, 2);
   EXPECT_FALSE(fs::exists(dir / "strict.nc"));
+}
+
+TEST(DxfTextCommand, UnitsSayWhatAUnitlessDrawingsUnitIs) {
+  // A 4 x 2 plate drawn in inches without $INSUNITS, a text 0.5 high.
+  auto r = bezcam({"check", kData + "text-unitless.dxf", "--units", "inch"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("bounds (0, 0) to (101.6, 50.8), closed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"NOTES:31/0\": text \"H\", 2D, degree 1, 12 Bézier pieces, length 67.2683 mm, bounds "
+                       "(27.1098, 25.4) to (36.79, 38.1)"),
+            std::string::npos)
+      << r.out;
+  r = bezcam({"check", kData + "text-unitless.dxf"});
+  EXPECT_NE(r.out.find("bounds (0, 0) to (4, 2), closed"), std::string::npos) << r.out;
+  // A drawing that says its unit: the same is accepted, another refused.
+  EXPECT_EQ(bezcam({"check", kData + "text.dxf", "--units", "mm"}).status, 0);
+  r = bezcam({"convert", kData + "text.dxf", "--units", "inch", "-o", "/dev/null"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err_first_line(), "bezcam: error: --units: " + kData +
+                                    "text.dxf says its unit is mm ($INSUNITS 4), not inch; leave the units out to "
+                                    "read it in its own, or scale it");
+  EXPECT_EQ(bezcam({"check", kData + "text-unitless.dxf", "--units", "furlong"}).status, 2);
+  // A job file states its own units.
+  r = bezcam({"check", "samples/curve-semicircle.json", "--units", "inch"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err_first_line().rfind("bezcam: error: --units: ", 0), 0u) << r.err;
 }
 
 }  // namespace

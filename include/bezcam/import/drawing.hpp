@@ -114,6 +114,15 @@ struct Drawing {
   /// Gaps wider than the default join distance that join_contours() closed
   /// with a larger tolerance (the ends moved to meet).
   std::vector<Gap> closed_gaps;
+  /// The unit the file says a drawing unit is (DXF `$INSUNITS`, the SVG
+  /// root's `width` and `height` with a unit): its name and millimetres;
+  /// empty and 0 when it says none (DXF `$INSUNITS` 0 or absent, SVG
+  /// lengths without a unit).
+  std::string declared_units;
+  double declared_mm = 0;
+  /// Millimetres per drawing unit as read (a unitless DXF: 1; a unitless
+  /// SVG: 25.4 / 96, CSS pixels).
+  double mm_per_unit = 1;
   /// Largest extent of the control points (mm), the scale of "meet".
   double size() const;
 };
