@@ -196,6 +196,9 @@ inline constexpr ErrorId import_not_finite{"import.not-finite"};
 inline constexpr ErrorId import_setting{"import.setting"};
 /// An SVG attribute (path data, length, transform) cannot be read.
 inline constexpr ErrorId import_svg_syntax{"import.svg-syntax"};
+/// A drawing's text asks for what a text entity cannot be (a width factor,
+/// an oblique angle, mirrored, fitted, several lines) or has no font.
+inline constexpr ErrorId import_text{"import.text"};
 /// A drawing's units are unknown ($INSUNITS, SVG length units, no page size).
 inline constexpr ErrorId import_units{"import.units"};
 /// A file cannot be read.

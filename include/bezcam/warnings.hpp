@@ -19,6 +19,7 @@ inline constexpr std::string_view kWarningKinds[] = {
     "output-replaced",    // an output mode the machine lacks, or blocks not exact
     "gap-closed",         // a drawing's gap closed by the join tolerance
     "contours-cross",     // a drawing's contours cross (sides by nesting)
+    "font-substituted",   // a drawing's text style names a font that is not installed
 };
 
 /// `text` with its kind appended: `text [kind]`. `kind` is one of kWarningKinds.

@@ -46,7 +46,9 @@ void print_drawing(const import::Drawing& d) {
     return text;
   };
   std::cout << d.source << ": " << (d.format == "svg" ? "SVG" : "DXF") << " drawing, " << d.contours.size()
-            << " contour" << (d.contours.size() == 1 ? "" : "s") << " after joining\n";
+            << " contour" << (d.contours.size() == 1 ? "" : "s") << " after joining";
+  if (!d.texts.empty()) std::cout << ", " << d.texts.size() << " text" << (d.texts.size() == 1 ? "" : "s");
+  std::cout << "\n";
   for (const auto& [name, l] : d.layers) {
     std::cout << (d.format == "svg" ? std::string("  document") : "  layer \"" + name + "\"") << ": read "
               << (l.read.empty() ? std::string("nothing") : list(l.read));

@@ -84,6 +84,7 @@ Error as_shown(const Error& e) {
       if (*place.setting == setting) return e.with_option(flag);
     // A drawing's import settings (import/drawing.hpp): --set KEY, --layer.
     if (*place.setting == "layers") return e.with_option("--layer");
+    if (*place.setting == "drawing_units") return e.with_option("--units");
     if (*place.setting == "only" || *place.setting == "skip") return e.with_option("--" + *place.setting);
     if (place.setting->rfind("settings.", 0) == 0) return e.with_option("--set " + place.setting->substr(9));
   }

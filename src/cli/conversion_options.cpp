@@ -62,6 +62,11 @@ void add_drawing_options(CLI::App* s, ConversionOptions& o) {
   s->add_option("--scale", o.scale, "multiply the drawing's coordinates by S")
       ->type_name("S")
       ->check(positive_number());
+  s->add_option("--units", o.units,
+                "what a drawing unit is when the drawing does not say (DXF $INSUNITS 0 or absent, SVG "
+                "without units): um, mm, cm, m, inch or foot; a drawing that says another unit is refused")
+      ->type_name("U")
+      ->check(CLI::IsMember({"um", "mm", "cm", "m", "inch", "foot"}));
   s->add_option("--skip", o.skip,
                 "leave out the drawing's entities whose layer or id matches SELECTOR, a glob; repeatable")
       ->type_name("SELECTOR");

@@ -21,6 +21,7 @@ struct ConversionOptions {
   std::vector<std::string> skip;     ///< --skip SELECTOR: the drawing's layers or entities left out
   double join_tolerance = 0;         ///< --join-tolerance D: a DXF's ends joined within D (0: the default)
   double scale = 1;                  ///< --scale S: the drawing's coordinates times S
+  std::string units;                 ///< --units U: what a unitless drawing's unit is
 };
 
 /// Adds --machine, --tolerance, --output, --strict, --set and --layer to

@@ -21,8 +21,8 @@ CLI::App* setup_import(CLI::App& app, ImportArgs& o) {
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   s->footer(
       "SVG: path commands and shapes, transforms applied, lengths in mm (96 user units per inch), y up. "
-      "DXF: LINE, ARC, CIRCLE, ELLIPSE, (LW)POLYLINE with bulges, SPLINE, INSERT; $INSUNITS; entities "
-      "meeting end to end are joined into one path. See docs/import.md.");
+      "DXF: LINE, ARC, CIRCLE, ELLIPSE, (LW)POLYLINE with bulges, SPLINE, INSERT, TEXT and MTEXT (in their "
+      "styles' fonts); $INSUNITS; entities meeting end to end are joined into one path. See docs/import.md.");
   return s;
 }
 

@@ -52,6 +52,25 @@ Job read_job(const std::string& path, std::vector<EntitySetting> settings) {
 }
 
 namespace {
+// A drawing's text font (import::FontMeasurer) found and measured by
+// bezcam::text: a style's family or font file's name among the installed
+// fonts, else (with `substitute`) fontconfig's sans-serif.
+import::FontMeasures measure_font(const std::string& font, bool substitute, const std::string& letters){TextSpec spec;
+spec.text = letters;
+spec.font = font;
+std::string used_instead;
+if (substitute) {
+  if (const std::optional<text::FontFace> f = text::installed_font(font)) {
+    if (text::names_a_file(font)) spec.font = f->file.string();
+  } else {
+    spec.font = text::default_font().family;
+    used_instead = spec.font;
+  }
+}
+const text::TextMeasures m = text::measure_text(spec);
+return {spec.font, used_instead, m.units_per_em, m.cap_height, m.descender, m.advance};
+}  // namespace
+
 // KEY=VALUE of --set.
 std::pair<std::string, std::string> split_setting(const std::string& kv) {
   const size_t eq = kv.find('=');
@@ -60,7 +79,7 @@ std::pair<std::string, std::string> split_setting(const std::string& kv) {
                      "expected KEY=VALUE (for example --set feed=600), found \"" + kv + "\"");
   return {kv.substr(0, eq), kv.substr(eq + 1)};
 }
-}  // namespace
+}  // namespace bezcam::cli
 
 import::ImportOptions import_options(const ConversionOptions& o){import::ImportOptions io;
 for (const auto& kv : o.sets) {
@@ -78,12 +97,15 @@ import::check_options(io);
 io.layers = o.layers;
 io.only = o.only;
 io.skip = o.skip;
+io.fonts = measure_font;
+io.outline = text::font_outliner();
 return io;
 }  // namespace bezcam::cli
 
 import::ReadOptions read_options(const ConversionOptions& o){import::ReadOptions ro;
 ro.scale = o.scale;
 ro.join_tolerance = o.join_tolerance;
+ro.units = o.units;
 return ro;
 }
 
@@ -106,12 +128,14 @@ Job read_job(const std::string& path, const ConversionOptions& o, import::Drawin
                          : !o.skip.empty()      ? "--skip"
                          : o.join_tolerance > 0 ? "--join-tolerance"
                          : o.scale != 1         ? "--scale"
+                         : !o.units.empty()     ? "--units"
                                                 : nullptr;
     if (option)
       throw InputError(errc::import_setting, Place::at_option(option),
                        path +
                            " is a job file, which states its own settings and has no layers; --set KEY=VALUE, "
-                           "--layer, --only and --skip apply to drawings (.svg, .dxf); --set ID:KEY=VALUE sets a key "
+                           "--layer, --only, --skip, --scale and --units apply to drawings (.svg, .dxf); --set "
+                           "ID:KEY=VALUE sets a key "
                            "of the job's entities whose id ID matches");
     Job job = read_job(path, std::move(entity_settings));
     job.warnings = shown_warnings(job.warnings, o);

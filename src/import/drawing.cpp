@@ -97,6 +97,11 @@ void scale_drawing(Drawing& d, double s) {
       for (Vec3& q : p.points) q = q * s;
     for (Vec3& q : c.interpolation.through) q = q * s;
   }
+  for (DrawingText& t : d.texts) {
+    t.at = t.at * s;
+    if (t.to) *t.to = *t.to * s;
+    t.height *= s;
+  }
 }
 
 std::vector<Gap> nearly_closed(const Drawing& d, double within) {

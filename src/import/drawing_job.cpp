@@ -16,6 +16,7 @@
 #include "bezcam/job/settings.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/warnings.hpp"
+#include "drawing_text.hpp"
 #include "selection.hpp"
 
 namespace bezcam::import {
@@ -57,16 +58,19 @@ std::set<std::string> kept_layers(const Drawing& d, const ImportOptions& opt) {
   return keep;
 }
 
-// The contours of the kept layers that --only and --skip keep, in the
-// drawing's order; refused when there are none.
-std::vector<const Contour*> kept_contours(const Drawing& d, const std::set<std::string>& keep,
-                                          const ImportOptions& opt) {
+// The contours and texts of the kept layers that --only and --skip keep,
+// in the drawing's order; refused when there are none.
+struct Kept {
+  std::vector<const Contour*> contours;
+  std::vector<const DrawingText*> texts;
+};
+Kept kept_entities(const Drawing& d, const std::set<std::string>& keep, const ImportOptions& opt) {
   check_selectors(d, opt);
   std::vector<const Contour*> layers;
   for (const Contour& c : d.contours)
     if (keep.empty() || keep.count(c.layer)) layers.push_back(&c);
-  const std::vector<const Contour*> out = select_contours(layers, opt);
-  if (out.empty())
+  Kept out{select_contours(layers, opt), kept_texts(d, keep, opt)};
+  if (out.contours.empty() && out.texts.empty())
     throw InputError(errc::import_empty, Place::at_file(d.source),
                      keep.empty() && opt.only.empty() && opt.skip.empty()
                          ? std::string("expected geometry to cut, found none")
@@ -181,21 +185,55 @@ void add_contour(JobBuilder& b, const Contour& c, std::size_t index, double scal
   b.path_segments(c.id, std::move(segments), c.closed, params);
 }
 
+// A kept text as the job's text entity: its spec (millimetres) and its
+// cutting parameters.
+struct TextEntity {
+  const DrawingText* text = nullptr;
+  TextSpec spec;
+  JobParams params;
+};
+
+// The text entity at `index` of the job, outlined by `outline` (the spec
+// in the job's units), its refusals named at `entities[index]`.
+void add_text(JobBuilder& b, const TextEntity& t, std::size_t index, double scale, const TextOutliner& outline,
+              PointLimits& limits, const std::string& source) {
+  const std::string at = "entities[" + std::to_string(index) + "]";
+  TextSpec spec = t.spec;
+  spec.size *= scale;
+  spec.at = {spec.at.x * scale + 0.0, spec.at.y * scale + 0.0, 0};
+  const std::vector<Glyph> glyphs = at_path(source, at, [&] { return outline(spec); });
+  std::size_t points = 0;
+  for (const Glyph& g : glyphs)
+    for (const GlyphContour& c : g.contours)
+      for (const Bezier& p : c.pieces) points += p.points.size();
+  limits.count_bezier_points(points, at + ".text");
+  b.text(t.text->id, glyphs, t.params);
+}
+
 // The kept contours as the builder's entities (`params`: each one's
-// settings, or empty). Each entity is refused on its own, as a file's are:
-// the first refusal is thrown with the others in Error::more().
+// settings, or empty), then the texts. Each entity is refused on its own,
+// as a file's are: the first refusal is thrown with the others in
+// Error::more().
 void add_geometry(JobBuilder& b, const std::vector<const Contour*>& kept, double scale,
-                  const std::vector<JobParams>& params, const std::string& source) {
-  if (kept.size() > kMaxEntities)
+                  const std::vector<JobParams>& params, const std::string& source,
+                  const std::vector<TextEntity>& texts = {}, const TextOutliner& outline = {}) {
+  if (kept.size() + texts.size() > kMaxEntities)
     throw InputError(errc::limit_entities, Place::in_json(source, "entities"),
                      "expected at most " + std::to_string(kMaxEntities) +
-                         " entities in one job (docs/limits.md), found " + std::to_string(kept.size()) +
+                         " entities in one job (docs/limits.md), found " + std::to_string(kept.size() + texts.size()) +
                          "; split the job into several files");
   PointLimits limits{source};
   std::vector<InputError> errors;
   for (std::size_t k = 0; k < kept.size(); ++k) {
     try {
       add_entity(b, *kept[k], k, scale, k < params.size() ? params[k] : JobParams(), limits, source);
+    } catch (const InputError& e) {
+      errors.push_back(e);
+    }
+  }
+  for (std::size_t k = 0; k < texts.size(); ++k) {
+    try {
+      add_text(b, texts[k], kept.size() + k, scale, outline, limits, source);
     } catch (const InputError& e) {
       errors.push_back(e);
     }
@@ -207,11 +245,20 @@ void add_geometry(JobBuilder& b, const std::vector<const Contour*>& kept, double
 }
 
 // Where each entity of the job comes from in the drawing, for messages:
-// the layer, the element (entity type and handle), where it starts.
-void locate_entities(Job& job, const std::vector<const Contour*>& kept) {
+// the layer, the element (entity type and handle), where it starts (a
+// text's glyph: where the text is).
+void locate_entities(Job& job, const Kept& kept) {
   std::map<std::string, const Contour*> by_id;
-  for (const Contour* c : kept) by_id.emplace(c->id, c);
+  std::map<std::string, const DrawingText*> texts;
+  for (const Contour* c : kept.contours) by_id.emplace(c->id, c);
+  for (const DrawingText* t : kept.texts) texts.emplace(t->id, t);
   for (Entity& e : job.entities) {
+    if (const auto t = texts.find(e.id.substr(0, e.id.rfind('/'))); e.type == "text" && t != texts.end()) {
+      const DrawingText& dt = *t->second;
+      e.origin = "layer " + quoted(dt.layer) + ", " + dt.element + ", at (" + format_significant(dt.at.x, 6) + ", " +
+                 format_significant(dt.at.y, 6) + ")";
+      continue;
+    }
     const auto it = by_id.find(e.id);
     if (it == by_id.end()) continue;
     const Contour& c = *it->second;
@@ -333,13 +380,27 @@ void write_contour(std::ostream& o, const Contour& c, const std::vector<std::pai
   o << " ] }";
 }
 
+// One kept text as an entity of the job file.
+void write_text(std::ostream& o, const DrawingText& t, const TextSpec& spec,
+                const std::vector<std::pair<std::string, std::string>>& members, double scale) {
+  o << "    { \"id\": " << quoted(t.id) << ", ";
+  for (const auto& [k, v] : members) o << quoted(k) << ": " << v << ", ";
+  o << "\"type\": \"text\", \"text\": " << quoted(spec.text) << ", \"font\": " << quoted(spec.font)
+    << ", \"size\": " << num(spec.size, scale) << ", \"at\": " << point(spec.at, scale) << ", \"align\": \""
+    << (spec.align == TextAlign::left     ? "left"
+        : spec.align == TextAlign::center ? "center"
+                                          : "right")
+    << "\", \"angle\": " << format_exact(spec.angle) << " }";
+}
+
 }  // namespace
 
 std::string job_json(const Drawing& d, const ImportOptions& opt) {
   check_options(opt);
   const std::set<std::string> keep = kept_layers(d, opt);
   const SettingsJson settings = settings_json(opt.settings);
-  const std::vector<const Contour*> kept = kept_contours(d, keep, opt);
+  const Kept all = kept_entities(d, keep, opt);
+  const std::vector<const Contour*>& kept = all.contours;
   const double scale = units_scale(settings);
   std::string top, job;
   bool units = false;
@@ -359,6 +420,11 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
     o << (k ? ",\n" : "\n");
     write_contour(o, *kept[k], entity_members(*kept[k], opt, k < sides.size() ? sides[k] : std::string()), scale);
   }
+  for (size_t k = 0; k < all.texts.size(); ++k) {
+    const DrawingText& t = *all.texts[k];
+    o << (k + kept.size() ? ",\n" : "\n");
+    write_text(o, t, text_spec(t, opt, d.source, nullptr), entity_members(t.layer, t.id, opt, ""), scale);
+  }
   o << "\n  ]\n}\n";
   return o.str();
 }
@@ -367,7 +433,8 @@ Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>*
   check_options(opt);
   const std::set<std::string> keep = kept_layers(d, opt);
   const SettingsJson settings = settings_json(opt.settings);
-  const std::vector<const Contour*> kept = kept_contours(d, keep, opt);
+  const Kept all = kept_entities(d, keep, opt);
+  const std::vector<const Contour*>& kept = all.contours;
   if (warnings)
     for (const Gap& g : d.closed_gaps)
       warnings->push_back(tagged_warning("contour " + quoted(g.id) + ": a gap of " + format_significant(g.size, 3) +
@@ -386,12 +453,24 @@ Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>*
       throw at_scoped_setting(e, *kept[k], opt, d.source);
     }
   }
+  std::vector<TextEntity> texts;
+  for (std::size_t k = 0; k < all.texts.size(); ++k) {
+    const DrawingText& t = *all.texts[k];
+    try {
+      texts.push_back({&t, text_spec(t, opt, d.source, warnings),
+                       entity_params(entity_members(t.layer, t.id, opt, ""), d.source,
+                                     "entities[" + std::to_string(kept.size() + k) + "]")});
+    } catch (const InputError& e) {
+      if (warnings) warnings->clear();
+      throw at_scoped_setting(e, t.layer, t.id, opt, d.source);
+    }
+  }
   JobBuilder b(d.source);
   try {
     b.settings(opt.settings);
-    add_geometry(b, kept, units_scale(settings), params, d.source);
+    add_geometry(b, kept, units_scale(settings), params, d.source, texts, opt.outline);
     Job job = b.build();
-    locate_entities(job, kept);
+    locate_entities(job, all);
     return job;
   } catch (const InputError& e) {
     // The refusal stands alone: what the sides of a refused job would

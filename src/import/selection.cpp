@@ -31,12 +31,20 @@ std::string listed(const std::vector<std::string>& names, size_t n) {
   return o;
 }
 
+bool picks_text(const Drawing& d, const std::string& selector) {
+  return std::any_of(d.texts.begin(), d.texts.end(),
+                     [&](const DrawingText& t) { return selects(selector, t.layer, t.id); });
+}
+
 void check_selector(const Drawing& d, const std::string& selector, const std::string& setting) {
-  if (std::any_of(d.contours.begin(), d.contours.end(), [&](const Contour& c) { return selects(selector, c); })) return;
+  if (std::any_of(d.contours.begin(), d.contours.end(), [&](const Contour& c) { return selects(selector, c); }) ||
+      picks_text(d, selector))
+    return;
   std::vector<std::string> layers, ids;
   for (const auto& [name, s] : d.layers)
     if (!name.empty()) layers.push_back(name);
   for (const Contour& c : d.contours) ids.push_back(c.id);
+  for (const DrawingText& t : d.texts) ids.push_back(t.id);
   throw InputError(
       errc::import_setting, Place::at_setting(setting),
       d.source + " has no layer and no entity matching \"" + selector + "\"; " +
@@ -46,10 +54,12 @@ void check_selector(const Drawing& d, const std::string& selector, const std::st
 
 }  // namespace
 
-bool selects(const std::string& selector, const Contour& c) {
-  if (fnmatch(selector.c_str(), c.id.c_str(), 0) == 0) return true;
-  return !c.layer.empty() && fnmatch(selector.c_str(), c.layer.c_str(), 0) == 0;
+bool selects(const std::string& selector, const std::string& layer, const std::string& id) {
+  if (fnmatch(selector.c_str(), id.c_str(), 0) == 0) return true;
+  return !layer.empty() && fnmatch(selector.c_str(), layer.c_str(), 0) == 0;
 }
+
+bool is_text_key(const std::string& key) { return key == "font" || key == "text"; }
 
 void check_options(const ImportOptions& opt) {
   for (const ScopedSetting& s : opt.scoped) {
@@ -64,6 +74,12 @@ void check_options(const ImportOptions& opt) {
                        "\"" + first +
                            "\" is a setting of the whole job, not of an entity; give it without a selector (" + s.key +
                            "=" + s.value + ")");
+    if (is_text_key(s.key)) {
+      if (s.value.empty())
+        throw InputError(errc::usage_setting, Place::at_setting(name),
+                         "expected a value for the text's \"" + s.key + "\", found nothing after =");
+      continue;
+    }
     try {
       const std::pair<std::string, std::string> kv{s.key, s.value};
       (void)settings_json(std::span(&kv, 1));
@@ -74,7 +90,17 @@ void check_options(const ImportOptions& opt) {
 }
 
 void check_selectors(const Drawing& d, const ImportOptions& opt) {
-  for (const ScopedSetting& s : opt.scoped) check_selector(d, s.selector, scoped_name(s));
+  for (const ScopedSetting& s : opt.scoped) {
+    check_selector(d, s.selector, scoped_name(s));
+    if (is_text_key(s.key) && !picks_text(d, s.selector)) {
+      std::vector<std::string> texts;
+      for (const DrawingText& t : d.texts) texts.push_back(t.id);
+      throw InputError(
+          errc::usage_setting, Place::at_setting(scoped_name(s)),
+          "\"" + s.key + "\" is a key of a text, and \"" + s.selector + "\" picks no text of " + d.source + "; " +
+              (texts.empty() ? std::string("it has no TEXT or MTEXT") : "its texts are " + listed(texts, 20)));
+    }
+  }
   for (const std::string& s : opt.only) check_selector(d, s, "only");
   for (const std::string& s : opt.skip) check_selector(d, s, "skip");
 }
@@ -89,11 +115,12 @@ std::vector<const Contour*> select_contours(const std::vector<const Contour*>& k
   return out;
 }
 
-std::vector<std::pair<std::string, std::string>> entity_members(const Contour& c, const ImportOptions& opt,
+std::vector<std::pair<std::string, std::string>> entity_members(const std::string& layer, const std::string& id,
+                                                                const ImportOptions& opt,
                                                                 const std::string& nesting_side) {
   std::vector<std::pair<std::string, std::string>> given;
   for (const ScopedSetting& s : opt.scoped)
-    if (selects(s.selector, c)) given.emplace_back(s.key, s.value);
+    if (!is_text_key(s.key) && selects(s.selector, layer, id)) given.emplace_back(s.key, s.value);
   std::vector<std::pair<std::string, std::string>> out;
   const SettingsJson members = settings_json(given);
   const bool side =
@@ -103,8 +130,8 @@ std::vector<std::pair<std::string, std::string>> entity_members(const Contour& c
   return out;
 }
 
-InputError at_scoped_setting(const InputError& e, const Contour& c, const ImportOptions& opt,
-                             const std::string& source) {
+InputError at_scoped_setting(const InputError& e, const std::string& layer, const std::string& id,
+                             const ImportOptions& opt, const std::string& source) {
   // The path's key after `entities[k].`: the last scoped setting of this
   // contour whose key starts with it gave it.
   const std::string path = e.place().json_path.value_or("");
@@ -113,7 +140,7 @@ InputError at_scoped_setting(const InputError& e, const Contour& c, const Import
   std::string key = path.substr(dot + 2);
   key = key.substr(0, key.find_first_of(".["));
   for (auto it = opt.scoped.rbegin(); it != opt.scoped.rend(); ++it)
-    if (selects(it->selector, c) && it->key.substr(0, it->key.find('.')) == key)
+    if (selects(it->selector, layer, id) && it->key.substr(0, it->key.find('.')) == key)
       return renamed(e, scoped_name(*it), source);
   return e;
 }

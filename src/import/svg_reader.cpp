@@ -565,6 +565,18 @@ Drawing read_svg(std::string_view text, const std::string& source) {
                            ": expected a length in px, in, cm, mm, pt or pc (or none: 96 per inch), found \"" + v +
                            "\"");
   }
+  // The unit the page's size says: an absolute one on width or height.
+  d.mm_per_unit = kMmPerPx;
+  for (const char* a : {"width", "height"}) {
+    const std::string v = attr_of(root, a);
+    static const std::map<std::string, double> absolute = {
+        {"in", 25.4}, {"cm", 10}, {"mm", 1}, {"pt", 25.4 / 72}, {"pc", 25.4 / 6}};
+    for (const auto& [unit, mm] : absolute)
+      if (d.declared_units.empty() && v.size() > unit.size() && v.ends_with(unit)) {
+        d.declared_units = unit + " (" + a + "=\"" + v + "\")";
+        d.declared_mm = mm;
+      }
+  }
   index_ids(root, s.by_id);
   Context ctx(s);
   s.current = root;

@@ -100,7 +100,46 @@ JobBuilder& JobBuilder::entity(std::string id, std::string type, CurveGeometry g
   e.type = std::move(type);
   e.params = std::move(params);
   e.curve = std::move(g);
+  if (e.index != file_entities_) e.file_index = file_entities_;
   job_.entities.push_back(std::move(e));
+  ++file_entities_;
+  return *this;
+}
+
+JobBuilder& JobBuilder::text(std::string id, const std::vector<Glyph>& glyphs, JobParams params) {
+  const std::string at = "entities[" + std::to_string(file_entities_) + "]";
+  if (glyphs.empty())
+    throw InputError(errc::text_empty, Place::in_json(job_.source, at, "text"),
+                     "expected letters to cut, found only spaces (no glyph with an outline)");
+  const std::optional<CutSide> side = params.side ? params.side : job_.params.side;
+  const std::optional<CutSide> hole_side = side == CutSide::inside    ? std::optional(CutSide::outside)
+                                           : side == CutSide::outside ? std::optional(CutSide::inside)
+                                                                      : side;
+  const size_t file_index = file_entities_;
+  for (size_t g = 0; g < glyphs.size(); ++g)
+    for (const GlyphContour& c : glyphs[g].contours) {
+      JobParams p = params;
+      if (c.hole && (side == CutSide::inside || side == CutSide::outside)) p.side = hole_side;
+      std::vector<CurveSegment> segs;
+      for (size_t k = 0; k < c.pieces.size(); ++k) {
+        CurveSegment s;
+        s.kind = "bezier";
+        s.degree = c.pieces[k].degree();
+        s.first_piece = k;
+        s.piece_count = 1;
+        segs.push_back(std::move(s));
+      }
+      CurveGeometry geometry;
+      try {
+        geometry = make_path(std::move(segs), c.pieces, true, 2);
+      } catch (const InputError& e) {
+        throw InputError(e.id(), Place::in_json(job_.source, at, e.place().relative_path()), e.message());
+      }
+      file_entities_ = file_index;
+      entity(id + "/" + std::to_string(g), "text", std::move(geometry), std::move(p));
+      job_.entities.back().glyph = glyphs[g].characters;
+    }
+  file_entities_ = file_index + 1;
   return *this;
 }
 

@@ -160,4 +160,64 @@ FontFace find_font(const std::string& font, const std::filesystem::path& folder)
   return names_a_file(font) ? font_file(font, folder) : font_family(font);
 }
 
+std::optional<FontFace> installed_font(const std::string& name) {
+  if (name.empty()) return std::nullopt;
+  if (!names_a_file(name)) {
+    try {
+      return font_family(name);
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+  }
+  // A file's name: the installed font files of that name, the first in
+  // fontconfig's list order by path (the same answer on every run).
+  const std::string want = lower(std::filesystem::path(name).filename().string());
+  const std::lock_guard<std::mutex> lock(fc_lock());
+  if (!config()) return std::nullopt;
+  Pattern all(FcPatternCreate());
+  FcObjectSet* os = FcObjectSetBuild(FC_FILE, FC_INDEX, FC_FAMILY, FC_OUTLINE, nullptr);
+  FcFontSet* fs = FcFontList(config(), all.get(), os);
+  FcObjectSetDestroy(os);
+  if (!fs) return std::nullopt;
+  std::optional<FontFace> best;
+  for (int i = 0; i < fs->nfont; ++i) {
+    FcChar8* file = nullptr;
+    if (FcPatternGetString(fs->fonts[i], FC_FILE, 0, &file) != FcResultMatch) continue;
+    const std::filesystem::path path(reinterpret_cast<const char*>(file));
+    if (lower(path.filename().string()) != want) continue;
+    int index = 0;
+    (void)FcPatternGetInteger(fs->fonts[i], FC_INDEX, 0, &index);
+    if (index != 0) continue;
+    if (best && best->file.string() <= path.string()) continue;
+    const std::vector<std::string> families = strings_of(fs->fonts[i], FC_FAMILY);
+    best = FontFace{path, 0, families.empty() ? std::string() : families.front()};
+  }
+  FcFontSetDestroy(fs);
+  return best;
+}
+
+FontFace default_font() {
+  const std::lock_guard<std::mutex> lock(fc_lock());
+  Pattern pat(FcNameParse(reinterpret_cast<const FcChar8*>("sans-serif")));
+  FcChar8* file = nullptr;
+  if (config() && pat) {
+    FcConfigSubstitute(config(), pat.get(), FcMatchPattern);
+    FcDefaultSubstitute(pat.get());
+    FcResult result = FcResultNoMatch;
+    Pattern match(FcFontMatch(config(), pat.get(), &result));
+    if (match && FcPatternGetString(match.get(), FC_FILE, 0, &file) == FcResultMatch) {
+      FontFace face;
+      face.file = reinterpret_cast<const char*>(file);
+      int index = 0;
+      if (FcPatternGetInteger(match.get(), FC_INDEX, 0, &index) == FcResultMatch) face.index = index;
+      const std::vector<std::string> families = strings_of(match.get(), FC_FAMILY);
+      if (!families.empty()) face.family = families.front();
+      return face;
+    }
+  }
+  throw InputError(errc::text_font, Place::at_json("font"),
+                   "fontconfig gives no font for \"sans-serif\", so a font that is not installed has no stand-in; "
+                   "install a font (fonts-dejavu-core) or name one");
+}
+
 }  // namespace bezcam::text

@@ -33,8 +33,9 @@ std::vector<std::string> with(std::vector<std::string> a, const std::vector<std:
 TEST(DrillDrawing, TheCirclesOfALayerAreDrilled) {
   testproc::TempDir dir;
   const fs::path nc = dir / "part.nc";
-  const auto r = bezcam(with(
-      {"convert", "samples/part.dxf", "--machine", "linuxcnc", "--skip", "HOLES:3B", "-o", nc.string(), "-q"}, kDrill));
+  const auto r = bezcam(with({"convert", "samples/part.dxf", "--machine", "linuxcnc", "--skip", "HOLES:3B", "--skip",
+                              "NOTES", "-o", nc.string(), "-q"},
+                             kDrill));
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string g = testproc::slurp(nc);
   EXPECT_NE(g.find("G98 G73 X10. Y10. Z-2. R5. Q0.5 F100."), std::string::npos) << g;
@@ -42,7 +43,10 @@ TEST(DrillDrawing, TheCirclesOfALayerAreDrilled) {
     EXPECT_NE(g.find(next), std::string::npos) << next << g;
   // The job `import` writes holds the same keys and cuts the same program.
   const fs::path job = dir / "part.json", nc2 = dir / "imported.nc";
-  ASSERT_EQ(bezcam(with({"import", "samples/part.dxf", "--skip", "HOLES:3B", "-o", job.string()}, kDrill)).status, 0);
+  ASSERT_EQ(
+      bezcam(with({"import", "samples/part.dxf", "--skip", "HOLES:3B", "--skip", "NOTES", "-o", job.string()}, kDrill))
+          .status,
+      0);
   const std::string j = testproc::slurp(job);
   EXPECT_EQ(std::regex_search(j, std::regex(R"("operation": "drill", .*"peck": 0.5, "chip_break": true)")), true) << j;
   ASSERT_EQ(bezcam({"convert", job.string(), "--machine", "linuxcnc", "-o", nc2.string(), "-q"}).status, 0);

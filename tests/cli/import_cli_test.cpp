@@ -22,7 +22,8 @@ TEST(ImportCommand, WritesTheJobTheDrawingIsReadAs) {
   const fs::path job = dir / "part.json";
   const auto r = bezcam({"import", "samples/part.dxf", "-o", job.string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.err_first_line(), "bezcam: wrote " + job.string() + ": 6 entities from samples/part.dxf");
+  // 6 contours, and the note "PART 1" in 8 glyph contours.
+  EXPECT_EQ(r.err_first_line(), "bezcam: wrote " + job.string() + ": 14 entities from samples/part.dxf");
   EXPECT_EQ(testproc::slurp(job), testproc::slurp(fs::path(BEZCAM_SOURCE_DIR) / "tests/golden/import/part.json"));
   // Converting the imported job and converting the drawing cut the same
   // moves (only the file name in the header differs).
@@ -51,7 +52,7 @@ TEST(ImportCommand, SettingsAndLayersOfADrawing) {
   const auto c = bezcam({"check", "samples/part.dxf"});
   ASSERT_EQ(c.status, 0) << c.err;
   EXPECT_NE(c.out.find("layer \"HOLES\": read 4 CIRCLE, 1 LWPOLYLINE\n"), std::string::npos) << c.out;
-  EXPECT_NE(c.out.find("layer \"NOTES\": read nothing; skipped 1 TEXT\n"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("layer \"NOTES\": read 1 TEXT\n"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("layer \"OUTLINE\": read 4 ARC, 4 LINE\n"), std::string::npos) << c.out;
 }
 
@@ -60,16 +61,17 @@ TEST(ImportCommand, SettingsAndLayersOfADrawing) {
 // with the same options then converting cuts the same program.
 TEST(ImportCommand, PerEntitySettingsFromTheCommandLine) {
   testproc::TempDir dir;
-  const std::vector<std::string> options = {"--set", "feed=600",
-                                            "--set", "plunge_feed=200",
-                                            "--set", "safe_z=5",
-                                            "--set", "cut_z=-1",
-                                            "--set", "side=outside",
-                                            "--set", "tool=1",
-                                            "--set", "tool_diameter=6",
-                                            "--set", "HOLES:3[7-9A]:tool=2",
-                                            "--set", "HOLES:3[7-9A]:tool_diameter=2",
-                                            "--set", R"(OUTLINE:tabs={"count":4,"width":5,"height":0.5})"};
+  const std::vector<std::string> options = {"--set",  "feed=600",
+                                            "--set",  "plunge_feed=200",
+                                            "--set",  "safe_z=5",
+                                            "--set",  "cut_z=-1",
+                                            "--set",  "side=outside",
+                                            "--set",  "tool=1",
+                                            "--set",  "tool_diameter=6",
+                                            "--set",  "HOLES:3[7-9A]:tool=2",
+                                            "--set",  "HOLES:3[7-9A]:tool_diameter=2",
+                                            "--set",  R"(OUTLINE:tabs={"count":4,"width":5,"height":0.5})",
+                                            "--skip", "NOTES"};
   const fs::path direct = dir / "direct.nc", job = dir / "part.json", imported = dir / "imported.nc";
   std::vector<std::string> args = {"convert", "samples/part.dxf", "--output", "arcs", "-q", "-o", direct.string()};
   args.insert(args.end(), options.begin(), options.end());
@@ -101,7 +103,7 @@ TEST(ImportCommand, PerEntitySettingsFromTheCommandLine) {
   EXPECT_EQ(r.err_first_line(),
             "bezcam: error: --skip: samples/part.dxf has no layer and no entity matching \"HOLE\"; its layers are "
             "\"HOLES\", \"NOTES\", \"OUTLINE\", its entities \"OUTLINE:2F+7\", \"HOLES:37\", \"HOLES:38\", "
-            "\"HOLES:39\", \"HOLES:3A\", \"HOLES:3B\"");
+            "\"HOLES:39\", \"HOLES:3A\", \"HOLES:3B\", \"NOTES:3C\"");
   r = bezcam({"convert", "samples/curve-semicircle.json", "--only", "x", "-o", direct.string()});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err_first_line().rfind("bezcam: error: --only: ", 0), 0u) << r.err;

@@ -11,6 +11,7 @@
 
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/import/read_drawing.hpp"
+#include "support/drawing_fonts.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -36,8 +37,8 @@ TEST(GoldenImport, DrawingSamplesTheirJobsAndPrograms) {
     SCOPED_TRACE(sample);
     const Drawing d = read_drawing(kRoot / "samples" / sample);
     const std::string stem = fs::path(sample).stem().string();
-    check_golden(kRoot / "tests/golden/import" / (stem + ".json"), job_json(d));
-    const Job job = to_job(d);
+    check_golden(kRoot / "tests/golden/import" / (stem + ".json"), job_json(d, test::with_fonts()));
+    const Job job = to_job(d, test::with_fonts());
     for (const auto& [machine, mode] :
          {std::pair{"generic", "lines"}, std::pair{"generic", "arcs"}, std::pair{"fanuc", "lines"},
           std::pair{"fanuc", "nurbs"}, std::pair{"linuxcnc", "nurbs"}}) {

@@ -19,6 +19,7 @@
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/report/report.hpp"
+#include "support/drawing_fonts.hpp"
 #include "support/sample_job.hpp"
 
 namespace bezcam {
@@ -49,7 +50,7 @@ std::vector<Case> samples() {
       if (f.extension() == ".json")
         out.push_back({f.filename().string(), test::load_sample(f)});
       else if (import::is_drawing(f))
-        out.push_back({f.filename().string(), import::to_job(import::read_drawing(f))});
+        out.push_back({f.filename().string(), import::to_job(import::read_drawing(f), test::with_fonts())});
     }
   return out;
 }

@@ -4,12 +4,15 @@
 /// job. Nothing here is flattened: lines, Béziers and conic arcs are Bézier
 /// pieces (conics rational), splines keep their knots and weights.
 #include <cstddef>
+#include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/text.hpp"
 #include "bezcam/kernel/vec.hpp"
 
 namespace bezcam::import {
@@ -45,6 +48,49 @@ struct Contour {
   Interpolation interpolation;
 };
 
+/// A line of text of a drawing (DXF TEXT, MTEXT), as the drawing gives
+/// it: the job's `text` entity it becomes is laid out with its font's
+/// measures when the job is made (to_job(), job_json()).
+struct DrawingText {
+  std::string id, layer, element;  ///< as a Contour's (`NOTES:3C`, `TEXT (handle 3C)`)
+  std::string text;                ///< UTF-8, one line, formatting codes resolved
+  /// The font its style names: a family (the style's extended data), or a
+  /// font file's name (`DejaVuSans.ttf`); empty when the style names none.
+  std::string font;
+  std::string style;  ///< the style's name, for messages
+  /// The style's font is a stroke font (AutoCAD SHX, LibreCAD LFF, or a
+  /// name without extension such as `txt`): it has no outlines to read.
+  bool stroke_font = false;
+  double height = 0;  ///< the capitals' height, millimetres
+  Vec3 at;            ///< the alignment point, millimetres
+  double angle = 0;   ///< degrees, counter-clockwise
+  /// Where `at` lies along the line's advance: 0 its start, 0.5 its middle,
+  /// 1 its end.
+  double along = 0;
+  /// Where `at` lies across the line: the baseline, the descender's depth
+  /// (bottom), half the capitals' height (middle) or their top.
+  enum class Vertical { baseline, bottom, middle, top } vertical = Vertical::baseline;
+  /// DXF "aligned": the line runs from `at` to `to`, its size such that
+  /// its advance is their distance (the height follows).
+  std::optional<Vec3> to;
+};
+
+/// What a font gives the layout of a drawing's text: the job's `font`,
+/// and the measures of the text in it (text/font_text.hpp's TextMeasures,
+/// font units).
+struct FontMeasures {
+  std::string font;        ///< the job's `font`: a family or a file
+  std::string substitute;  ///< not empty: the style's font is not installed, and this is used instead
+  double units_per_em = 0, cap_height = 0, descender = 0, advance = 0;
+};
+
+/// Finds the font named `font` (a family or a font file's name; empty: the
+/// stand-in) and measures `text` in it. With `substitute`, a font that is
+/// not installed gives the stand-in, said in FontMeasures::substitute;
+/// without, it is refused (InputError at `font`). The CLI gives
+/// bezcam::text's fonts.
+using FontMeasurer = std::function<FontMeasures(const std::string& font, bool substitute, const std::string& text)>;
+
 /// What one layer held: elements read, and elements skipped by kind (TEXT,
 /// HATCH, DIMENSION, image ...).
 struct LayerSummary {
@@ -63,10 +109,20 @@ struct Drawing {
   std::string source;  ///< the file name, for messages
   std::string format;  ///< "svg" or "dxf"
   std::vector<Contour> contours;
+  std::vector<DrawingText> texts;
   std::map<std::string, LayerSummary> layers;  ///< by layer name ("" for SVG)
   /// Gaps wider than the default join distance that join_contours() closed
   /// with a larger tolerance (the ends moved to meet).
   std::vector<Gap> closed_gaps;
+  /// The unit the file says a drawing unit is (DXF `$INSUNITS`, the SVG
+  /// root's `width` and `height` with a unit): its name and millimetres;
+  /// empty and 0 when it says none (DXF `$INSUNITS` 0 or absent, SVG
+  /// lengths without a unit).
+  std::string declared_units;
+  double declared_mm = 0;
+  /// Millimetres per drawing unit as read (a unitless DXF: 1; a unitless
+  /// SVG: 25.4 / 96, CSS pixels).
+  double mm_per_unit = 1;
   /// Largest extent of the control points (mm), the scale of "meet".
   double size() const;
 };
@@ -93,11 +149,16 @@ struct ImportOptions {
   /// The contours to cut: those `only` selects (all when empty) that
   /// `skip` does not select.
   std::vector<std::string> only, skip;
+  /// The fonts of the drawing's texts (their measures) and their outlines;
+  /// without them a drawing's text is refused (text.unavailable).
+  FontMeasurer fonts;
+  TextOutliner outline;
 };
 
-/// True when `selector` matches, as a shell glob, the contour's layer or
-/// its id.
-bool selects(const std::string& selector, const Contour& c);
+/// True when `selector` matches, as a shell glob, the contour's (or the
+/// text's) layer or its id.
+bool selects(const std::string& selector, const std::string& layer, const std::string& id);
+inline bool selects(const std::string& selector, const Contour& c) { return selects(selector, c.layer, c.id); }
 
 /// Checks the options before a drawing is read: each scoped setting's key
 /// is a key an entity takes (settings_json()'s checks), refused at the

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bezcam/job/job.hpp"
+#include "bezcam/job/text.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 
 namespace bezcam {
@@ -70,6 +71,13 @@ class JobBuilder {
   /// cubic spline, periodic when `closed`. InputError naming `entities[i]`
   /// when no such spline exists (two equal points in a row).
   JobBuilder& interpolate(std::string id, std::vector<Vec3> through, bool closed = false, JobParams params = {});
+  /// A `text` entity as a file's is read, from its glyphs (a TextOutliner's
+  /// answer): each glyph contour a closed path entity of type "text" with
+  /// the id `ID/G` and the glyph's characters; with a side inside or
+  /// outside (the text's own, else the job's as set so far) a hole of a
+  /// glyph gets the other side. InputError naming `entities[i].text` when
+  /// no glyph has ink.
+  JobBuilder& text(std::string id, const std::vector<Glyph>& glyphs, JobParams params = {});
   /// Settings given as KEY=VALUE text (the CLI's `--set`, settings.hpp),
   /// read as a job file's top-level keys and `job` object are read: the
   /// units, tolerance, machine, cutting parameters, order. Throws
@@ -86,6 +94,7 @@ class JobBuilder {
 
  private:
   Job job_;
+  size_t file_entities_ = 0;  // entities of the file the job stands for (a text is one)
   // Sets one optional value (checked by build(), like a file's).
   template <class T, class V>
   JobBuilder& set(std::optional<T>& field, V&& v) {

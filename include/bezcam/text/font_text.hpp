@@ -5,6 +5,7 @@
 /// are read with FreeType, shaped with HarfBuzz and found with fontconfig,
 /// which no header of bezcam includes.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,34 @@ FontFace find_font(const std::string& font, const std::filesystem::path& folder)
 /// glyph for, with its code point U+XXXX; a line break or another control
 /// character).
 std::vector<Glyph> outline_text(const TextSpec& spec);
+
+/// A line of text measured in its font, in font units: what lays out a
+/// text that a drawing gives by the height of its capitals.
+struct TextMeasures {
+  FontFace face;
+  double units_per_em = 0;
+  /// The height of the capitals: the top of the glyph of "H" when the font
+  /// has one with ink, else the OS/2 table's sCapHeight, else the ascender.
+  double cap_height = 0;
+  double descender = 0;  ///< the font's descender (hhea), below the baseline: < 0
+  double advance = 0;    ///< the shaped line's total advance (kerning included)
+};
+
+/// The measures of `spec.text` in `spec.font` (found as find_font()
+/// finds it; `size`, `at`, `align` and `angle` are not used). Throws
+/// find_font()'s and open_font()'s refusals at `font`.
+TextMeasures measure_text(const TextSpec& spec);
+
+/// The installed font a drawing's text style names: a family (as
+/// find_font() takes it), or the name of a font file without its folder
+/// (`DejaVuSans.ttf`, `arial.ttf`), found among the files fontconfig
+/// lists (case aside). Nothing when no such font is installed.
+std::optional<FontFace> installed_font(const std::string& name);
+
+/// The face fontconfig gives for the generic family "sans-serif" (the
+/// stand-in for a font that is not installed). Throws InputError at
+/// `font` (errc::text_font) when fontconfig gives none.
+FontFace default_font();
 
 /// outline_text() as the job reader's TextOutliner (JobReadOptions::text).
 TextOutliner font_outliner();
