@@ -415,6 +415,7 @@ std::string job_json(const Drawing& d, const ImportOptions& opt) {
   if (!top.empty()) o << "  " << top << ",\n";  // top-level settings, one per line
   if (!job.empty()) o << "  \"job\": {\n    " << job << "\n  },\n";
   const std::vector<std::string> sides = sides_by_nesting(d, kept, settings, nullptr);
+  check_nesting_selectors(opt, sides, d.source);
   o << "  \"entities\": [";
   for (size_t k = 0; k < kept.size(); ++k) {
     o << (k ? ",\n" : "\n");
@@ -443,6 +444,7 @@ Job to_job(const Drawing& d, const ImportOptions& opt, std::vector<std::string>*
                                              ") closed by the join tolerance (the ends moved to meet)",
                                          "gap-closed"));
   const std::vector<std::string> sides = sides_by_nesting(d, kept, settings, warnings);
+  check_nesting_selectors(opt, sides, d.source);
   std::vector<JobParams> params;
   for (std::size_t k = 0; k < kept.size(); ++k) {
     try {

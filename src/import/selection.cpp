@@ -4,10 +4,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fnmatch.h>
+#include <optional>
 #include <string_view>
 
 #include "bezcam/job/settings.hpp"
+#include "bezcam/kernel/bezier.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -31,12 +36,86 @@ std::string listed(const std::vector<std::string>& names, size_t n) {
   return o;
 }
 
+// `circle<D` or `circle>D`: the comparison and the diameter D.
+struct CircleSelector {
+  char op;
+  double d;
+};
+std::optional<CircleSelector> circle_selector(const std::string& s) {
+  constexpr std::string_view kWord = "circle";
+  if (s.size() <= kWord.size() + 1 || s.compare(0, kWord.size(), kWord) != 0) return std::nullopt;
+  const char op = s[kWord.size()];
+  if (op != '<' && op != '>') return std::nullopt;
+  const char* text = s.c_str() + kWord.size() + 1;
+  char* end = nullptr;
+  const double d = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(d > 0) || !std::isfinite(d)) return std::nullopt;
+  return CircleSelector{op, d};
+}
+
+// `<outside>` or `<inside>`: the side by nesting it picks.
+std::optional<std::string> nesting_selector(const std::string& s) {
+  if (s == "<outside>") return std::string("outside");
+  if (s == "<inside>") return std::string("inside");
+  return std::nullopt;
+}
+
+// The diameter of a closed contour that is a circle: its Bézier pieces,
+// sampled, all at one distance from the centre of the samples' box, and
+// the box square (to 1e-9 of the drawing's scale).
+std::optional<double> circle_diameter(const Contour& c) {
+  if (!c.closed || c.pieces.empty() || c.is_interpolation) return std::nullopt;
+  std::vector<Vec3> pts;
+  for (const Piece& p : c.pieces) {
+    if (p.bspline) return std::nullopt;
+    const Bezier b = Bezier::make(p.points, p.weights);
+    for (int k = 0; k < 16; ++k) pts.push_back(evaluate(b, k / 16.0));
+  }
+  double lx = pts[0].x, hx = lx, ly = pts[0].y, hy = ly;
+  for (const Vec3& q : pts) {
+    lx = std::min(lx, q.x), hx = std::max(hx, q.x);
+    ly = std::min(ly, q.y), hy = std::max(hy, q.y);
+  }
+  const double w = hx - lx, h = hy - ly, eps = 1e-9 * std::max({w, h, std::abs(lx), std::abs(ly), 1.0});
+  if (!(w > 0) || std::abs(w - h) > 2 * eps) return std::nullopt;
+  const double cx = (lx + hx) / 2, cy = (ly + hy) / 2, r = (w + h) / 4;
+  for (const Vec3& q : pts)
+    if (std::abs(std::hypot(q.x - cx, q.y - cy) - r) > 2 * eps) return std::nullopt;
+  return 2 * r;
+}
+
+// The diameters of the drawing's circles, for a selector that picks none.
+std::string circles_of(const Drawing& d) {
+  std::vector<double> ds;
+  for (const Contour& c : d.contours)
+    if (const auto dia = circle_diameter(c)) ds.push_back(*dia);
+  if (ds.empty()) return "; it has no circles";
+  std::sort(ds.begin(), ds.end());
+  ds.erase(std::unique(ds.begin(), ds.end(), [](double a, double b) { return std::abs(a - b) <= 1e-9 * b; }), ds.end());
+  std::string o = "; its circles' diameters are ";
+  for (size_t i = 0; i < ds.size() && i < 20; ++i) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%s%.6g", i ? ", " : "", ds[i]);
+    o += b;
+  }
+  return o;
+}
+
 bool picks_text(const Drawing& d, const std::string& selector) {
   return std::any_of(d.texts.begin(), d.texts.end(),
                      [&](const DrawingText& t) { return selects(selector, t.layer, t.id); });
 }
 
 void check_selector(const Drawing& d, const std::string& selector, const std::string& setting) {
+  if (nesting_selector(selector)) {
+    if (setting.rfind("settings.", 0) == 0) return;  // checked once the sides are known
+    throw InputError(
+        errc::usage_setting, Place::at_setting(setting),
+        "\"" + selector +
+            "\" picks by the sides the nesting gives, which are found among the entities kept: it picks the "
+            "entities a setting goes to (" +
+            selector + ":KEY=VALUE), not which entities are cut");
+  }
   if (std::any_of(d.contours.begin(), d.contours.end(), [&](const Contour& c) { return selects(selector, c); }) ||
       picks_text(d, selector))
     return;
@@ -49,7 +128,7 @@ void check_selector(const Drawing& d, const std::string& selector, const std::st
       errc::import_setting, Place::at_setting(setting),
       d.source + " has no layer and no entity matching \"" + selector + "\"; " +
           (layers.empty() ? std::string("it has no named layers") : "its layers are " + listed(layers, 20)) +
-          ", its entities " + listed(ids, 20));
+          ", its entities " + listed(ids, 20) + circles_of(d));
 }
 
 }  // namespace
@@ -57,6 +136,15 @@ void check_selector(const Drawing& d, const std::string& selector, const std::st
 bool selects(const std::string& selector, const std::string& layer, const std::string& id) {
   if (fnmatch(selector.c_str(), id.c_str(), 0) == 0) return true;
   return !layer.empty() && fnmatch(selector.c_str(), layer.c_str(), 0) == 0;
+}
+
+bool selects(const std::string& selector, const Contour& c, const std::string& nesting_side) {
+  if (const auto cs = circle_selector(selector)) {
+    const auto d = circle_diameter(c);
+    return d && (cs->op == '<' ? *d < cs->d : *d > cs->d);
+  }
+  if (const auto side = nesting_selector(selector)) return *side == nesting_side;
+  return selects(selector, c.layer, c.id);
 }
 
 bool is_text_key(const std::string& key) { return key == "font" || key == "text"; }
@@ -115,12 +203,11 @@ std::vector<const Contour*> select_contours(const std::vector<const Contour*>& k
   return out;
 }
 
-std::vector<std::pair<std::string, std::string>> entity_members(const std::string& layer, const std::string& id,
-                                                                const ImportOptions& opt,
-                                                                const std::string& nesting_side) {
-  std::vector<std::pair<std::string, std::string>> given;
-  for (const ScopedSetting& s : opt.scoped)
-    if (!is_text_key(s.key) && selects(s.selector, layer, id)) given.emplace_back(s.key, s.value);
+namespace {
+
+// The members of an entity given the scoped settings that pick it.
+std::vector<std::pair<std::string, std::string>> members_of(
+    const std::vector<std::pair<std::string, std::string>>& given, const std::string& nesting_side) {
   std::vector<std::pair<std::string, std::string>> out;
   const SettingsJson members = settings_json(given);
   const bool side =
@@ -128,6 +215,38 @@ std::vector<std::pair<std::string, std::string>> entity_members(const std::strin
   if (!side && !nesting_side.empty()) out.emplace_back("side", "\"" + nesting_side + "\"");
   out.insert(out.end(), members.job.begin(), members.job.end());
   return out;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> entity_members(const std::string& layer, const std::string& id,
+                                                                const ImportOptions& opt,
+                                                                const std::string& nesting_side) {
+  std::vector<std::pair<std::string, std::string>> given;
+  for (const ScopedSetting& s : opt.scoped)
+    if (!is_text_key(s.key) && selects(s.selector, layer, id)) given.emplace_back(s.key, s.value);
+  return members_of(given, nesting_side);
+}
+
+std::vector<std::pair<std::string, std::string>> entity_members(const Contour& c, const ImportOptions& opt,
+                                                                const std::string& nesting_side) {
+  std::vector<std::pair<std::string, std::string>> given;
+  for (const ScopedSetting& s : opt.scoped)
+    if (!is_text_key(s.key) && selects(s.selector, c, nesting_side)) given.emplace_back(s.key, s.value);
+  return members_of(given, nesting_side);
+}
+
+void check_nesting_selectors(const ImportOptions& opt, const std::vector<std::string>& sides,
+                             const std::string& source) {
+  for (const ScopedSetting& s : opt.scoped) {
+    const auto side = nesting_selector(s.selector);
+    if (!side || std::find(sides.begin(), sides.end(), *side) != sides.end()) continue;
+    throw InputError(errc::import_setting, Place::at_setting(scoped_name(s)),
+                     "\"" + s.selector + "\" picks the contours the nesting cuts " + *side + ", and " + source +
+                         (sides.empty() ? std::string(" has no sides by nesting: give the job a side, side=outside (a "
+                                                      "part) or side=inside (openings)")
+                                        : " has none"));
+  }
 }
 
 InputError at_scoped_setting(const InputError& e, const std::string& layer, const std::string& id,

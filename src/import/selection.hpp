@@ -26,10 +26,14 @@ std::vector<const Contour*> select_contours(const std::vector<const Contour*>& k
 std::vector<std::pair<std::string, std::string>> entity_members(const std::string& layer, const std::string& id,
                                                                 const ImportOptions& opt,
                                                                 const std::string& nesting_side);
-inline std::vector<std::pair<std::string, std::string>> entity_members(const Contour& c, const ImportOptions& opt,
-                                                                       const std::string& nesting_side) {
-  return entity_members(c.layer, c.id, opt, nesting_side);
-}
+std::vector<std::pair<std::string, std::string>> entity_members(const Contour& c, const ImportOptions& opt,
+                                                                const std::string& nesting_side);
+
+/// Refuses a scoped setting whose selector is `<outside>` or `<inside>`
+/// when no contour of `kept` has that side by nesting (`sides`, one per
+/// contour of `kept`; empty when the job gives no side).
+void check_nesting_selectors(const ImportOptions& opt, const std::vector<std::string>& sides,
+                             const std::string& source);
 
 /// Whether a scoped setting's key is a text's own (`font`, `text`): given
 /// to the texts it picks, not to their cutting parameters.

@@ -115,12 +115,77 @@ TEST(Selection, RefusesASelectorThatMatchesNothingNamingWhatTheDrawingHas) {
   o.scoped = {{"HOLE", "tool", "2"}};
   const std::string what =
       "plate.dxf has no layer and no entity matching \"HOLE\"; its layers are \"HOLES\", \"OUTLINE\", its entities "
-      "\"OUTLINE:1\", \"HOLES:2\", \"HOLES:3\", \"HOLES:4\"";
+      "\"OUTLINE:1\", \"HOLES:2\", \"HOLES:3\", \"HOLES:4\"; its circles' diameters are 4, 20, 100";
   EXPECT_EQ(refusal([&] { (void)to_job(d, o); }), "settings.HOLE:tool: " + what);
   EXPECT_EQ(refusal([&] { (void)job_json(d, o); }), "settings.HOLE:tool: " + what);
   o.scoped.clear();
   o.skip = {"HOLE"};
   EXPECT_EQ(refusal([&] { (void)to_job(d, o); }), "skip: " + what);
+}
+
+TEST(Selection, CirclesArePickedByTheirDiameter) {
+  const Drawing d = plate();
+  EXPECT_TRUE(selects("circle<5", d.contours[1]));
+  EXPECT_TRUE(selects("circle<5", d.contours[2]));
+  EXPECT_FALSE(selects("circle<5", d.contours[3]));
+  EXPECT_TRUE(selects("circle>50", d.contours[0]));
+  EXPECT_FALSE(selects("circle>100", d.contours[0]));  // strictly above
+  EXPECT_FALSE(selects("circle<4", d.contours[1]));    // strictly below
+  // A circle drawn as two arcs is a circle; half of it, or a square, is not.
+  Contour halves = d.contours[3];
+  halves.pieces = ellipse_arc({0, 0, 0}, {10, 0, 0}, {0, 10, 0}, 0, std::acos(-1.0));
+  const auto rest = ellipse_arc({0, 0, 0}, {10, 0, 0}, {0, 10, 0}, std::acos(-1.0), 2 * std::acos(-1.0));
+  halves.pieces.insert(halves.pieces.end(), rest.begin(), rest.end());
+  EXPECT_TRUE(selects("circle<21", halves));
+  Contour open = halves;
+  open.pieces.resize(open.pieces.size() / 2);
+  open.closed = false;
+  EXPECT_FALSE(selects("circle<21", open));
+  Contour square = d.contours[3];
+  square.pieces.clear();
+  const Vec3 p[4] = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}};
+  for (int k = 0; k < 4; ++k) square.pieces.push_back({false, 0, {p[k], p[(k + 1) % 4]}, {}, {}});
+  EXPECT_FALSE(selects("circle<100", square));
+  // Not a circle selector: a glob that picks nothing here.
+  EXPECT_FALSE(selects("circle<", d.contours[1]));
+  EXPECT_FALSE(selects("circle<x", d.contours[1]));
+  // The small holes get the second tool.
+  ImportOptions o = base();
+  o.scoped = {{"circle<5", "tool", "2"}, {"circle<5", "tool_diameter", "2"}};
+  const Job job = to_job(d, o);
+  ASSERT_EQ(job.entities.size(), 4u);
+  EXPECT_EQ(job.entities[0].params.tool, std::nullopt);
+  EXPECT_EQ(job.entities[1].params.tool, 2);
+  EXPECT_EQ(job.entities[2].params.tool, 2);
+  EXPECT_EQ(job.entities[3].params.tool, std::nullopt);
+  o.scoped = {{"circle>200", "tool", "2"}};
+  EXPECT_NE(refusal([&] { (void)to_job(d, o); }).find("its circles' diameters are 4, 20, 100"), std::string::npos);
+}
+
+TEST(Selection, TheSidesByNestingArePickedInAngleBrackets) {
+  const Drawing d = plate();
+  ImportOptions o = base();
+  o.scoped = {{"<outside>", "tabs", R"({"count": 4, "width": 5, "height": 0.5})"}, {"<inside>", "feed", "300"}};
+  const Job job = to_job(d, o);
+  ASSERT_EQ(job.entities.size(), 4u);
+  ASSERT_TRUE(job.entities[0].params.tabs);  // the plate
+  EXPECT_FALSE(job.entities[0].params.feed);
+  for (size_t k = 1; k < 4; ++k) {
+    EXPECT_FALSE(job.entities[k].params.tabs) << k;
+    EXPECT_EQ(job.entities[k].params.feed, 300) << k;
+  }
+  const std::string text = job_json(d, o);
+  EXPECT_NE(text.find(R"({ "id": "OUTLINE:1", "side": "outside", "tabs": )"), std::string::npos) << text;
+  // Without a side there is no nesting to pick by.
+  o.settings = {{"feed", "600"}, {"cut_z", "-1"}};
+  EXPECT_EQ(refusal([&] { (void)to_job(d, o); }),
+            "settings.<outside>:tabs: \"<outside>\" picks the contours the nesting cuts outside, and plate.dxf has no "
+            "sides by nesting: give the job a side, side=outside (a part) or side=inside (openings)");
+  EXPECT_EQ(refusal([&] { (void)job_json(d, o); }).rfind("settings.<outside>:tabs: ", 0), 0u);
+  // --only and --skip choose before the nesting is found.
+  o = base();
+  o.only = {"<outside>"};
+  EXPECT_NE(refusal([&] { (void)to_job(d, o); }).find("it picks the entities a setting goes to"), std::string::npos);
 }
 
 TEST(Selection, RefusesWhatAnEntityDoesNotTakeAtTheOptionThatGaveIt) {

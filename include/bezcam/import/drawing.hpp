@@ -158,7 +158,11 @@ struct ImportOptions {
 /// True when `selector` matches, as a shell glob, the contour's (or the
 /// text's) layer or its id.
 bool selects(const std::string& selector, const std::string& layer, const std::string& id);
-inline bool selects(const std::string& selector, const Contour& c) { return selects(selector, c.layer, c.id); }
+/// For a contour, also `circle<D` and `circle>D`: a closed contour that is
+/// a circle of diameter below (above) D. (No DXF layer name or SVG id holds
+/// `<` or `>`.) `nesting_side` is the side its nesting gives it
+/// ("outside", "inside", or empty), which `<outside>` and `<inside>` pick.
+bool selects(const std::string& selector, const Contour& c, const std::string& nesting_side = "");
 
 /// Checks the options before a drawing is read: each scoped setting's key
 /// is a key an entity takes (settings_json()'s checks), refused at the
