@@ -111,13 +111,20 @@ class Writer {
   // operator loads them from this. A flat or ball end reads the same with
   // a table as with `tool_diameter`.
   void tools() {
-    std::vector<std::pair<int, std::string>> list;
+    // Each label once per tool: the contours of one glyph share its label.
+    std::vector<std::pair<int, std::vector<std::string>>> cuts;
     for (const EntityReport& e : p_.entities) {
-      auto it = std::find_if(list.begin(), list.end(), [&](const auto& t) { return t.first == e.tool; });
-      if (it == list.end())
-        list.push_back({e.tool, e.label});
-      else
-        it->second += ", " + e.label;
+      auto it = std::find_if(cuts.begin(), cuts.end(), [&](const auto& t) { return t.first == e.tool; });
+      if (it == cuts.end())
+        cuts.push_back({e.tool, {e.label}});
+      else if (std::find(it->second.begin(), it->second.end(), e.label) == it->second.end())
+        it->second.push_back(e.label);
+    }
+    std::vector<std::pair<int, std::string>> list;
+    for (const auto& [tool, labels] : cuts) {
+      std::string joined;
+      for (const std::string& l : labels) joined += (joined.empty() ? "" : ", ") + l;
+      list.push_back({tool, joined});
     }
     if (list.empty() || (list.size() == 1 && list.front().first < 0)) return;
     for (const auto& [tool, labels] : list) {

@@ -97,6 +97,15 @@ TEST(Program, StructureOfEveryProgram) {
   EXPECT_GT(r.program.entities[0].blocks, 1u);
 }
 
+TEST(Program, TheToolListNamesEachEntityOnce) {
+  // Two contours under one id (the contours of a glyph share its label).
+  const Job j = job_of(R"({"id": "g", "type": "bezier", "points": [[0,0],[10,5],[20,0]]},
+                          {"id": "g", "type": "bezier", "points": [[0,10],[10,15],[20,10]]},
+                          {"id": "h", "type": "bezier", "points": [[0,20],[10,25],[20,20]]})");
+  const ConvertResult r = convert(j, load_machine_profile("generic"), {});
+  EXPECT_NE(r.gcode.find("\n(T3: g, h)\n"), std::string::npos) << r.gcode.substr(0, 400);
+}
+
 TEST(Program, LineNumbersAndDecimalsFromTheProfile) {
   const Job j = job_of(R"({"type": "bezier", "points": [[0,0],[10,5],[20,0]]})");
   const ConvertResult f = convert(j, load_machine_profile("fanuc"), {});
