@@ -2,7 +2,7 @@
 (bezcam 0.1.0: part-nameplate.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009702 mm, proven bound 0.009983 mm, rounding included)
 (T3: 1 mm flat end mill: name/0, name/1, name/2, name/3, name/4, name/5)
-(T2: serial/9, serial/8, serial/8, serial/7, serial/6, serial/5, serial/5, serial/4, serial/4, serial/3, serial/3, serial/2, serial/1, serial/1, serial/0)
+(T2: serial/9, serial/8, serial/7, serial/6, serial/5, serial/4, serial/3, serial/2, serial/1, serial/0)
 (T1: 3 mm flat end mill: plate)
 (estimated cycle time 4 min 06 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 11.39 s; the exact path's bound on this machine 10.61 s [x1.073; rapids, plunges and pauses not counted])

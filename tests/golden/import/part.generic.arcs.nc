@@ -1,10 +1,10 @@
 %
 (bezcam 0.1.0: part.dxf, machine generic, output arcs)
-(tolerance 0.01 mm; largest deviation measured below 8.181e-07 mm, proven bound 8.182e-07 mm, rounding included)
-(T1: HOLES:37, HOLES:3A, HOLES:3B, HOLES:39, HOLES:38, OUTLINE:2F+7)
-(estimated cycle time 41 s on the motion model of machine generic [acceleration, corners, tool changes])
-(cutting along the curves 23.14 s; the exact path's bound on this machine 23.03 s [x1.005; rapids, plunges and pauses not counted])
-(order shortest: 5 nested contours cut before what encloses them; rapids 138.3 mm in XY instead of 194.5 mm as written [56.2 mm saved])
+(tolerance 0.01 mm; largest deviation measured 0.009975 mm, proven bound 0.009985 mm, rounding included)
+(T1: HOLES:37, HOLES:3A, NOTES:3C/0, NOTES:3C/1, NOTES:3C/2, NOTES:3C/3, NOTES:3C/4, HOLES:3B, HOLES:38, HOLES:39, OUTLINE:2F+7)
+(estimated cycle time 57 s on the motion model of machine generic [acceleration, corners, tool changes])
+(cutting along the curves 27.82 s; the exact path's bound on this machine 27.02 s [x1.029; rapids, plunges and pauses not counted])
+(order shortest: 16 nested contours cut before what encloses them; rapids 150.4 mm in XY instead of 235.7 mm as written [85.3 mm saved])
 G21 G90 G17
 G40 G49 G80 G94
 T1 M06
@@ -19,50 +19,165 @@ G03 X10. Y12.5 I-2.5 J0.
 G03 X7.5 Y10. I0. J-2.5
 G00 Z5.
 (entity HOLES:3A: path, degree 2, rational, 2D)
-X10. Y37.5
+X12.5 Y40.
 G01 Z-1. F300.
-G03 X12.5 Y40. I0. J2.5 F1000.
-G03 X10. Y42.5 I-2.5 J0.
+G03 X10. Y42.5 I-2.5 J0. F1000.
 G03 X7.5 Y40. I0. J-2.5
 G03 X10. Y37.5 I2.5 J0.
+G03 X12.5 Y40. I0. J2.5
+G00 Z5.
+(entity NOTES:3C/0: text, degree 2, 2D)
+X31.32 Y43.539
+G01 Z-1. F300.
+G03 X31.758 Y43.686 I0.036 J0.619 F1000.
+G03 X31.912 Y44.071 I-0.289 J0.339
+G02 X31.913 Y44.104 I0.124 J0.013
+G03 X31.859 Y44.378 I-0.397 J0.064
+G03 X31.758 Y44.52 I-1.081 J-0.662
+G03 X31.512 Y44.646 I-0.268 J-0.22
+G02 X31.32 Y44.666 I0.152 J2.391
+G03 X31.033 Y44.666 I-0.144 J-0.99
+G02 X30.81 Y44.666 I-0.111 J0.773
+G01 Y43.539
+X31.32
+G00 Z5.
+(entity NOTES:3C/0: text, degree 2, 2D)
+X32.083 Y43.433
+G01 Z-1. F300.
+G02 X31.32 Y43.206 I-0.685 J0.908 F1000.
+G03 X30.81 Y43.206 I-0.255 J-3.712
+G01 Y42.
+X30.404
+Y45.
+X31.32
+G02 X31.991 Y44.841 I0. J-1.495
+G02 X32.083 Y44.772 I-0.145 J-0.289
+G02 X32.302 Y44.412 I-0.77 J-0.715
+G02 X32.341 Y44.104 I-0.674 J-0.242
+G02 X32.083 Y43.433 I-0.859 J-0.055
+G00 Z5.
+(entity NOTES:3C/1: text, degree 1, 2D)
+X33.074 Y43.107
+G01 Z-1. F300.
+X34.177 F1000.
+X33.625 Y44.6
+X33.074 Y43.107
+G00 Z5.
+(entity NOTES:3C/1: text, degree 1, 2D)
+X34.304 Y42.77
+G01 Z-1. F300.
+X32.952 F1000.
+X32.678 Y42.
+X32.251
+X33.396 Y45.
+X33.856
+X34.999 Y42.
+X34.577
+X34.304 Y42.77
+G00 Z5.
+(entity NOTES:3C/2: text, degree 2, 2D)
+X35.843 Y43.601
+G01 Z-1. F300.
+X36.354 F1000.
+G03 X36.797 Y43.737 I0. J0.789
+G03 X36.925 Y43.956 I-0.166 J0.244
+G02 X36.946 Y44.136 I2.883 J-0.245
+G03 X36.797 Y44.533 I-0.433 J0.064
+G03 X36.354 Y44.666 I-0.373 J-0.438
+G02 X36.047 Y44.666 I-0.153 J1.253
+G03 X35.843 Y44.666 I-0.102 J-0.831
+G01 Y43.601
+G00 Z5.
+(entity NOTES:3C/2: text, degree 2, 2D)
+X37.362 Y42.82
+G01 Z-1. F300.
+X37.774 Y42. F1000.
+X37.338
+X36.954 Y42.77
+G03 X36.666 Y43.169 I-1.004 J-0.421
+G03 X36.398 Y43.262 I-0.249 J-0.285
+G02 X36.285 Y43.268 I-0.028 J0.549
+G03 X36.033 Y43.268 I-0.126 J-0.806
+G02 X35.843 Y43.268 I-0.095 J0.609
+G01 Y42.
+X35.437
+Y45.
+X36.354
+G02 X37.021 Y44.856 I0. J-1.617
+G02 X37.121 Y44.785 I-0.133 J-0.293
+G02 X37.331 Y44.459 I-0.746 J-0.711
+G02 X37.374 Y44.136 I-0.611 J-0.246
+G02 X37.332 Y43.846 I-5.464 J0.643
+G02 X37.243 Y43.666 I-0.348 J0.06
+G02 X37.017 Y43.469 I-1.033 J0.957
+G02 X36.86 Y43.407 I-0.209 J0.299
+G02 X37.114 Y43.218 I-0.221 J-0.562
+G02 X37.362 Y42.82 I-1.704 J-1.338
+G00 Z5.
+(entity NOTES:3C/3: text, degree 1, 2D)
+X39.054 Y42.
+G01 Z-1. F300.
+X38.646 F1000.
+Y44.658
+X37.581
+Y45.
+X40.119
+Y44.658
+X39.054
+Y42.
+G00 Z5.
+(entity NOTES:3C/4: text, degree 1, 2D)
+X41.926
+G01 Z-1. F300.
+Y42.342 F1000.
+X42.589
+Y44.63
+X41.867 Y44.486
+Y44.855
+X42.585 Y45.
+X42.991
+Y42.342
+X43.654
+Y42.
+X41.926
 G00 Z5.
 (entity HOLES:3B: path, degree 2, rational, 2D)
-X50. Y30.
+X55. Y25.
 G01 Z-1. F300.
-X30. F1000.
+G03 X50. Y30. I-5. J0. F1000.
+G01 X30.
 G03 X25. Y25. I0. J-5.
 G03 X30. Y20. I5. J0.
 G01 X50.
 G03 X55. Y25. I0. J5.
-G03 X50. Y30. I-5. J0.
-G00 Z5.
-(entity HOLES:39: path, degree 2, rational, 2D)
-X70. Y37.5
-G01 Z-1. F300.
-G03 X72.5 Y40. I0. J2.5 F1000.
-G03 X70. Y42.5 I-2.5 J0.
-G03 X67.5 Y40. I0. J-2.5
-G03 X70. Y37.5 I2.5 J0.
 G00 Z5.
 (entity HOLES:38: path, degree 2, rational, 2D)
-X72.5 Y10.
+X70. Y12.5
 G01 Z-1. F300.
-G03 X70. Y12.5 I-2.5 J0. F1000.
-G03 X67.5 Y10. I0. J-2.5
+G03 X67.5 Y10. I0. J-2.5 F1000.
 G03 X70. Y7.5 I2.5 J0.
 G03 X72.5 Y10. I0. J2.5
+G03 X70. Y12.5 I-2.5 J0.
+G00 Z5.
+(entity HOLES:39: path, degree 2, rational, 2D)
+X72.5 Y40.
+G01 Z-1. F300.
+G03 X70. Y42.5 I-2.5 J0. F1000.
+G03 X67.5 Y40. I0. J-2.5
+G03 X70. Y37.5 I2.5 J0.
+G03 X72.5 Y40. I0. J2.5
 G00 Z5.
 (entity OUTLINE:2F+7: path, degree 2, rational, 2D)
-X80. Y6.
+X80. Y44.
 G01 Z-1. F300.
-Y44. F1000.
-G03 X74. Y50. I-6. J0.
+G03 X74. Y50. I-6. J0. F1000.
 G01 X6.
 G03 X0. Y44. I0. J-6.
 G01 Y6.
 G03 X6. Y0. I6. J0.
 G01 X74.
 G03 X80. Y6. I0. J6.
+G01 Y44.
 G00 Z5.
 M05
 M30

@@ -1,10 +1,10 @@
 %
 (bezcam 0.1.0: part.dxf, machine linuxcnc, output nurbs)
-(tolerance 0.01 mm; largest deviation measured below 1e-05 mm, proven bound 1.149e-05 mm, rounding included)
-(T1: HOLES:37, HOLES:3A, HOLES:3B, HOLES:39, HOLES:38, OUTLINE:2F+7)
-(estimated cycle time 34 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 23.18 s; the exact path's bound on this machine 23.03 s [x1.006; rapids, plunges and pauses not counted])
-(order shortest: 5 nested contours cut before what encloses them; rapids 138.3 mm in XY instead of 194.5 mm as written [56.2 mm saved])
+(tolerance 0.01 mm; largest deviation measured 5.454e-05 mm, proven bound 6.594e-05 mm, rounding included)
+(T1: HOLES:37, HOLES:3A, NOTES:3C/0, NOTES:3C/1, NOTES:3C/2, NOTES:3C/3, NOTES:3C/4, HOLES:3B, HOLES:38, HOLES:39, OUTLINE:2F+7)
+(estimated cycle time 50 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
+(cutting along the curves 27.96 s; the exact path's bound on this machine 27.02 s [x1.034; rapids, plunges and pauses not counted])
+(order shortest: 16 nested contours cut before what encloses them; rapids 150.4 mm in XY instead of 235.7 mm as written [85.3 mm saved])
 G21 G90 G17
 G40 G49 G80 G94
 G54
@@ -34,13 +34,9 @@ X7.5 Y10. P1.
 G5.3
 G0 Z5.
 (entity HOLES:3A: path, degree 2, rational, 2D)
-X10. Y37.5
+X12.5 Y40.
 G1 Z-1. F300.
 G5.2 P1. L3 F1000.
-X12.5 Y37.5 P0.7071
-X12.5 Y40. P1.
-G5.3
-G5.2 P1. L3
 X12.5 Y42.5 P0.7071
 X10. Y42.5 P1.
 G5.3
@@ -52,11 +48,120 @@ G5.2 P1. L3
 X7.5 Y37.5 P0.7071
 X10. Y37.5 P1.
 G5.3
+G5.2 P1. L3
+X12.5 Y37.5 P0.7071
+X12.5 Y40. P1.
+G5.3
+G0 Z5.
+(entity NOTES:3C/0: text, degree 2, 2D)
+X31.3202 Y43.5392
+G1 Z-1. F300.
+G5.1 X31.7582 Y43.6859 I0.2833 J0. F1000.
+G5.1 X31.9129 Y44.1038 I0.1547 J0.1467
+G5.1 X31.7582 Y44.5198 I0. J0.2693
+G5.1 X31.3202 Y44.6664 I-0.1547 J0.1466
+G1 X30.8098
+Y43.5392
+X31.3202
+G0 Z5.
+(entity NOTES:3C/0: text, degree 2, 2D)
+X32.0827 Y43.4327
+G1 Z-1. F300.
+G5.1 X31.3202 Y43.2056 I-0.2582 J-0.2271 F1000.
+G1 X30.8098
+Y42.
+X30.4039
+Y45.
+X31.3202
+G5.1 X32.0827 Y44.7719 I0.5043 J0.
+G5.1 X32.3409 Y44.1038 I0.2582 J-0.228
+G5.1 X32.0827 Y43.4327 I0. J-0.4441
+G0 Z5.
+(entity NOTES:3C/1: text, degree 1, 2D)
+X33.0743 Y43.1072
+G1 Z-1. F300.
+X34.1775 F1000.
+X33.6249 Y44.6001
+X33.0743 Y43.1072
+G0 Z5.
+(entity NOTES:3C/1: text, degree 1, 2D)
+X34.3041 Y42.7696
+G1 Z-1. F300.
+X32.9518 F1000.
+X32.6785 Y42.
+X32.2505
+X33.3958 Y45.
+X33.856
+X34.9993 Y42.
+X34.5774
+X34.3041 Y42.7696
+G0 Z5.
+(entity NOTES:3C/2: text, degree 2, 2D)
+X35.8433 Y43.6015
+G1 Z-1. F300.
+X36.3537 F1000.
+G5.1 X36.7967 Y43.7371 I0.2933 J0.
+G5.1 X36.9464 Y44.136 I0.1497 J0.1356
+G5.1 X36.7967 Y44.5328 I0. J0.2632
+G5.1 X36.3537 Y44.6664 I-0.1497 J0.1336
+G1 X35.8433
+Y43.6015
+G0 Z5.
+(entity NOTES:3C/2: text, degree 2, 2D)
+X37.3624 Y42.8198
+G1 Z-1. F300.
+X37.7743 Y42. F1000.
+X37.3382
+X36.9545 Y42.7696
+G5.1 X36.6661 Y43.1695 I-0.1487 J0.3014
+G5.1 X36.2853 Y43.2679 I-0.1396 J0.0984
+G1 X35.8433
+Y42.
+X35.4374
+Y45.
+X36.3537
+G5.1 X37.1212 Y44.785 I0.5144 J0.
+G5.1 X37.3744 Y44.136 I0.2532 J-0.215
+G5.1 X37.2428 Y43.6658 I0. J-0.2834
+G5.1 X36.86 Y43.4066 I-0.1316 J-0.1869
+G5.1 X37.1142 Y43.2177 I0.1306 J-0.0442
+G5.1 X37.3624 Y42.8198 I0.1236 J-0.1447
+G0 Z5.
+(entity NOTES:3C/3: text, degree 1, 2D)
+X39.0543 Y42.
+G1 Z-1. F300.
+X38.6463 F1000.
+Y44.6584
+X37.5814
+Y45.
+X40.1192
+Y44.6584
+X39.0543
+Y42.
+G0 Z5.
+(entity NOTES:3C/4: text, degree 1, 2D)
+X41.9257
+G1 Z-1. F300.
+Y42.3416 F1000.
+X42.5887
+Y44.6303
+X41.8674 Y44.4856
+Y44.8553
+X42.5847 Y45.
+X42.9906
+Y42.3416
+X43.6537
+Y42.
+X41.9257
 G0 Z5.
 (entity HOLES:3B: path, degree 2, rational, 2D)
-X50. Y30.
+X55. Y25.
 G1 Z-1. F300.
-X30. F1000.
+G5.2 P1. L3 F1000.
+X55. Y30. P0.7071
+X50. Y30. P1.
+G5.3
+G1 X30.
 G5.2 P1. L3
 X25. Y30. P0.7071
 X25. Y25. P1.
@@ -70,39 +175,11 @@ G5.2 P1. L3
 X55. Y20. P0.7071
 X55. Y25. P1.
 G5.3
-G5.2 P1. L3
-X55. Y30. P0.7071
-X50. Y30. P1.
-G5.3
-G0 Z5.
-(entity HOLES:39: path, degree 2, rational, 2D)
-X70. Y37.5
-G1 Z-1. F300.
-G5.2 P1. L3 F1000.
-X72.5 Y37.5 P0.7071
-X72.5 Y40. P1.
-G5.3
-G5.2 P1. L3
-X72.5 Y42.5 P0.7071
-X70. Y42.5 P1.
-G5.3
-G5.2 P1. L3
-X67.5 Y42.5 P0.7071
-X67.5 Y40. P1.
-G5.3
-G5.2 P1. L3
-X67.5 Y37.5 P0.7071
-X70. Y37.5 P1.
-G5.3
 G0 Z5.
 (entity HOLES:38: path, degree 2, rational, 2D)
-X72.5 Y10.
+X70. Y12.5
 G1 Z-1. F300.
 G5.2 P1. L3 F1000.
-X72.5 Y12.5 P0.7071
-X70. Y12.5 P1.
-G5.3
-G5.2 P1. L3
 X67.5 Y12.5 P0.7071
 X67.5 Y10. P1.
 G5.3
@@ -114,12 +191,35 @@ G5.2 P1. L3
 X72.5 Y7.5 P0.7071
 X72.5 Y10. P1.
 G5.3
+G5.2 P1. L3
+X72.5 Y12.5 P0.7071
+X70. Y12.5 P1.
+G5.3
+G0 Z5.
+(entity HOLES:39: path, degree 2, rational, 2D)
+X72.5 Y40.
+G1 Z-1. F300.
+G5.2 P1. L3 F1000.
+X72.5 Y42.5 P0.7071
+X70. Y42.5 P1.
+G5.3
+G5.2 P1. L3
+X67.5 Y42.5 P0.7071
+X67.5 Y40. P1.
+G5.3
+G5.2 P1. L3
+X67.5 Y37.5 P0.7071
+X70. Y37.5 P1.
+G5.3
+G5.2 P1. L3
+X72.5 Y37.5 P0.7071
+X72.5 Y40. P1.
+G5.3
 G0 Z5.
 (entity OUTLINE:2F+7: path, degree 2, rational, 2D)
-X80. Y6.
+X80. Y44.
 G1 Z-1. F300.
-Y44. F1000.
-G5.2 P1. L3
+G5.2 P1. L3 F1000.
 X80. Y50. P0.7071
 X74. Y50. P1.
 G5.3
@@ -138,6 +238,7 @@ G5.2 P1. L3
 X80. Y0. P0.7071
 X80. Y6. P1.
 G5.3
+G1 Y44.
 G0 Z5.
 M5
 M30
