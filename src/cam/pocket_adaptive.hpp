@@ -34,6 +34,10 @@ class Adaptive {
       const double a = 2 * std::numbers::pi * k / kAdaptiveCircle;
       cs_[k] = std::cos(a), sn_[k] = std::sin(a);
     }
+    for (int k = 0; k < 180; ++k) {
+      const double th = (-90 + k + 0.5) * std::numbers::pi / 180;
+      hc_[k] = std::cos(th), hs_[k] = std::sin(th);
+    }
     const double sag = in.tolerance / 20;
     mat_ = g_.fill(region.eroded(r_ + in.stock, sag).eroded(-r_, sag).loops());
     before_.assign(g_.size(), 0);
@@ -88,7 +92,7 @@ class Adaptive {
     const double ux = dir.x / l, uy = dir.y / l;
     int n = 0;
     for (int k = 0; k < 180; ++k) {
-      const double th = (-90 + k + 0.5) * std::numbers::pi / 180, c = std::cos(th), s = std::sin(th);
+      const double c = hc_[k], s = hs_[k];
       n += held(p.x + r_ * (ux * c - uy * s), p.y + r_ * (ux * s + uy * c));
     }
     return n;
@@ -171,6 +175,7 @@ class Adaptive {
   double r_, load_, d_wall_, delta_, alpha_ = 0, target_ = 0;
   WallField walls_;
   double cs_[kAdaptiveCircle], sn_[kAdaptiveCircle];
+  double hc_[180], hs_[180];  // the front half, a degree apart
   std::vector<uint8_t> mat_;
   std::vector<float> fwall_;
   std::vector<PocketPass> out_;
