@@ -179,5 +179,20 @@ def plate_drilled():
     j["entities"]=j["entities"][:-1]+holes+[outline]
     return j
 
-for name,f in [("part-plate",plate),("part-plate-drilled",plate_drilled),("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-flange-tools",flange_tools),("part-cam-notch",cam),("part-lettering",lettering)]:
+# A smaller plate whose recess round one boss is cleared adaptively (the
+# tool's engagement held to what load 1 gives: arccos(1 - 1/3) = 48 degrees),
+# then the outline on tabs, one 6 mm tool (docs/pocket.md).
+def plate_adaptive():
+    recess=dict(rounded_rect(10,8,50,37,4),id="recess")
+    boss=dict(circle(30,22.5,5),id="boss")
+    for e in (recess,boss):
+        e.update({"operation":"pocket","region":"recess","cut_z":-3,"pattern":"adaptive","load":1})
+    outline=dict(rounded_rect(0,0,60,45,5),id="outline")
+    outline.update({"side":"outside","cut_z":-6,"lead":{"radius":4,"length":2},"tabs":{"count":4,"width":6,"height":2}})
+    return {"bezcam":1,"units":"mm","tolerance":0.01,
+            "job":{"feed":800,"plunge_feed":200,"safe_z":5,"top_z":0,"clearance":1,"step_down":3,"spindle_rpm":18000,
+                   "tool":1,"tool_diameter":6,"direction":"climb","tolerance_side":"waste"},
+            "entities":[recess,boss,outline]}
+
+for name,f in [("part-plate",plate),("part-plate-adaptive",plate_adaptive),("part-plate-drilled",plate_drilled),("controller-comp/flange-g41",flange_g41),("part-flange",flange),("part-flange-tools",flange_tools),("part-cam-notch",cam),("part-lettering",lettering)]:
     open("samples/%s.json"%name,"w").write(json.dumps(f(),indent=1)+"\n")

@@ -137,13 +137,19 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
   PocketGrid g(in.walls, in.cell > 0 ? in.cell : tol, in.max_cells);
   c.cell = g.cell;
   const std::vector<uint8_t> in_region = g.fill(in.walls);
-  const std::vector<uint8_t> in_reach = g.fill(reach.loops());
+  std::vector<uint8_t> in_reach = g.fill(reach.loops());
+  std::vector<uint8_t> before(g.size(), 0);
+  if (!in.cleared_before.empty()) {
+    before = g.fill(in.cleared_before);
+    for (size_t k = 0; k < g.size(); ++k) in_reach[k] = in_reach[k] && !before[k];
+    c.rest = true;
+  }
   for (const auto& l : in.walls)
     for (size_t i = 0; i < l.size(); ++i) c.perimeter += norm(l[(i + 1) % l.size()] - l[i]);
   c.uncut_limit = tol * c.perimeter;
   const double a = g.cell * g.cell;
   c.region_area = region.area();
-  c.reachable_area = reach.area();
+  c.reachable_area = c.rest ? 0 : reach.area();
   // Unreachable: in the region, not in R, farther than the stock left (and
   // half the tolerance) from every wall.
   std::vector<uint8_t> strip(g.size(), 0);
@@ -153,12 +159,29 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
   for (size_t k = 0; k < g.size(); ++k) lost[k] = in_region[k] && !in_reach[k] && !strip[k];
   for (const auto& [at, n] : g.components(lost, 3)) c.unreachable.push_back({at, static_cast<double>(n) * a});
   for (const auto& p : c.unreachable) c.unreachable_area += p.area;
+  if (c.rest)
+    for (size_t k = 0; k < g.size(); ++k) c.reachable_area += in_reach[k] ? a : 0;
+  // The material the engagement reads: the region less what was cleared
+  // before, less the places the tool cannot reach (and the sliver near them).
+  std::vector<uint8_t> material = in_region;
+  const std::vector<uint8_t> never = g.dilated(lost, in.load);
+  for (size_t k = 0; k < g.size(); ++k) material[k] = material[k] && !before[k] && !never[k];
 
   const std::vector<Piece> path = replay(in, sag);
-  for (double z : in.levels) {
-    std::vector<Piece> level;
-    for (const Piece& p : path)
-      if (!p.rapid && std::abs(p.a.z - z) < 1e-9 && std::abs(p.b.z - z) < 1e-9) level.push_back(p);
+  for (size_t li = 0; li < in.levels.size(); ++li) {
+    const double z = in.levels[li], above = li == 0 ? in.top_z : in.levels[li - 1];
+    std::vector<Piece> level, into;  // at z; and at z or descending into the level
+    for (const Piece& p : path) {
+      if (p.rapid) continue;
+      const double lo = std::min(p.a.z, p.b.z), hi = std::max(p.a.z, p.b.z);
+      if (std::abs(lo - z) < 1e-9 && std::abs(hi - z) < 1e-9) {
+        level.push_back(p);
+        into.push_back(p);
+      } else if (lo >= z - 1e-9 && hi <= above + 1e-9 && lo < above - 1e-9) {
+        into.push_back(p);
+        into.back().measure = false;
+      }
+    }
     std::vector<uint8_t> cut(g.size(), 0);
     for (const Piece& p : level) g.stamp(p.a, p.b, r + tol - sag, cut, 1);
     size_t uncut = 0;
@@ -171,10 +194,11 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
       c.uncut_z = z;
     }
     if (in.engagement) {
-      const auto e = g.engagement(level, r, in_region);
+      const auto e = g.engagement(into, r, material);
       if (e.first > c.engagement_deg) c.engagement_deg = e.first, c.engagement_at = e.second;
     }
   }
+  if (in.load > 0) c.engagement_bound = std::acos(std::clamp(1 - in.load / r, -1.0, 1.0)) * 180 / std::numbers::pi + 2;
   wall_distance(in, path, r + s + 10 * tol + g.cell, c);
   rapids(in, path, c);
   c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -185,8 +209,9 @@ std::vector<std::string> certificate_lines(const std::string& label, const Pocke
                                            double stock, const std::string& units) {
   const auto sig = [](double v) { return format_significant(v, 4); };
   const std::string head = "pocket " + label + ": ";
-  std::string uncut = head + "uncut " + sig(c.uncut_area) + " " + units + "^2 at the worst level, limit " +
-                      sig(c.uncut_limit) + " = tolerance x perimeter";
+  std::string uncut = head + "uncut " + sig(c.uncut_area) + " " + units + "^2 at the worst level" +
+                      (c.rest ? " of the " + sig(c.reachable_area) + " " + units + "^2 the tool before left" : "") +
+                      ", limit " + sig(c.uncut_limit) + " = tolerance x perimeter";
   if (c.uncut_area > 0) uncut += ", at " + sig(c.uncut_at.x) + ", " + sig(c.uncut_at.y) + " z " + sig(c.uncut_z);
   uncut += "; checked on a " + sig(c.cell) + " " + units + " grid";
   std::string reach = head + "unreachable " + sig(c.unreachable_area) + " " + units + "^2 in " +
@@ -194,7 +219,9 @@ std::vector<std::string> certificate_lines(const std::string& label, const Pocke
                       "; nearest approach to a wall " + sig(c.wall_distance) + " " + units + " at " + sig(c.wall_at.x) +
                       ", " + sig(c.wall_at.y) + ", asked r + stock " + sig(radius + stock);
   std::string eng = head + "largest engagement " + sig(c.engagement_deg) + " deg at " + sig(c.engagement_at.x) + ", " +
-                    sig(c.engagement_at.y) + " [a full slot: 180]; ";
+                    sig(c.engagement_at.y) +
+                    (c.engagement_bound > 0 ? ", bound arccos(1 - load/r) + 2 = " + sig(c.engagement_bound) : "") +
+                    " [a full slot: 180]; ";
   eng += c.rapids_in_material == 0 ? "no rapid through material"
                                    : std::to_string(c.rapids_in_material) + " rapids through material";
   return {uncut, reach, eng};

@@ -62,6 +62,7 @@ class PocketCut {
     Vec3 cen;  // the helix's centre
   };
   Entry entry_for(const std::vector<Vec3>& pass, bool count);
+  Entry entry_of(const PocketPass& p, bool count);
   void enter(const Entry& e, const std::vector<Vec3>& pass, double z_from, double z);
   void helix(const Entry& e, double z_from, double z);
   void ramp(const std::vector<Vec3>& pass, double z_from, double z);
@@ -99,7 +100,8 @@ class PocketCut {
   const PocketKeys& keys_;
   std::string region_;
   PocketLoops walls_;
-  double wall_bound_ = 0, radius_ = 0, stepover_ = 0, margin_ = 0;
+  double wall_bound_ = 0, radius_ = 0, stepover_ = 0, margin_ = 0, load_ = 0;
+  PocketPattern pattern_ = PocketPattern::offset;
   PocketEntry entry_;
   PocketPlan plan_;
   std::vector<double> levels_;
@@ -149,10 +151,18 @@ void PocketCut::read_keys() {
   if (stepover_ > d)
     fail("stepover", "the stepover " + fmt_num(stepover_) + " is above the tool's diameter " + fmt_num(d) +
                          ": the passes would leave ridges between them; give at most " + fmt_num(d));
-  if (keys_.rest_from)
-    fail("rest_from",
-         "rest machining is not done by this version of bezcam: remove \"rest_from\" to clear the "
-         "whole region");
+  if (keys_.rest_from && !(*keys_.rest_from > d))
+    fail("rest_from", "rest_from " + fmt_num(*keys_.rest_from) + " is not larger than this tool's diameter " +
+                          fmt_num(d) +
+                          ": rest machining cuts what a larger tool left; give the diameter of the tool that "
+                          "cleared before, or remove \"rest_from\" to clear the whole region");
+  pattern_ = keys_.pattern.value_or(PocketPattern::offset);
+  load_ = keys_.load.value_or(0.15 * d);
+  if (keys_.load && pattern_ != PocketPattern::adaptive)
+    fail("load", "\"load\" is the radial depth of cut of \"pattern\": \"adaptive\"; remove it or set the pattern");
+  if (pattern_ == PocketPattern::adaptive && !(load_ <= radius_))
+    fail("load", "the load " + fmt_num(load_) + " is above the tool's radius " + fmt_num(radius_) +
+                     ": the engagement arccos(1 - load / r) would pass 90 degrees; give at most " + fmt_num(radius_));
   if (cp_.stock_to_leave < 0)
     fail("stock_to_leave", "a pocket leaves stock_to_leave >= 0 on its walls, found " + fmt_num(cp_.stock_to_leave));
   entry_ = keys_.entry.value_or(PocketEntry{});
@@ -179,7 +189,9 @@ void PocketCut::plan() {
   in.stock = cp_.stock_to_leave;
   in.finish = keys_.finish_stock.value_or(0);
   in.stepover = stepover_;
-  in.pattern = keys_.pattern.value_or(PocketPattern::offset);
+  in.pattern = pattern_;
+  in.load = load_;
+  if (keys_.rest_from) in.rest_from = *keys_.rest_from / 2;
   in.angle_deg = keys_.angle.value_or(0);
   in.climb = cp_.direction != CutDirection::conventional;
   in.tolerance = c_.tolerance;
@@ -228,14 +240,25 @@ void PocketCut::cut_level(size_t k) {
       // above cleared, then in.
       if (!ms_.pos_known) rapid({0, 0, safe_}, kAxisZ);
       if (ms_.pos.z < clear_) rapid({ms_.pos.x, ms_.pos.y, clear_});
-      const Entry e = entry_for(pass, k == 0);
+      const Entry e = entry_of(plan_.passes[i], k == 0);
       if (ms_.pos.x != e.at.x || ms_.pos.y != e.at.y) rapid({e.at.x, e.at.y, ms_.pos.z});
       if (ms_.pos.z > clear_) rapid({e.at.x, e.at.y, clear_});
       if (z_from < clear_) line({e.at.x, e.at.y, z_from}, cp_.plunge_feed);
-      enter(e, pass, z_from, z);
+      if (plan_.passes[i].in_cleared)
+        line(start, cp_.plunge_feed);  // down through what this level's passes cleared
+      else
+        enter(e, pass, z_from, z);
     }
     for (size_t j = 1; j < pass.size(); ++j) line({pass[j].x, pass[j].y, z}, cp_.feed);
   }
+}
+
+// The planner's helix (adaptive: its bore is counted as cleared), the start
+// itself for a pass in cleared material, else a helix near the start.
+PocketCut::Entry PocketCut::entry_of(const PocketPass& p, bool count) {
+  if (p.helix) return {true, p.pts.front(), quantize(*p.helix, c_.decimals)};
+  if (p.in_cleared) return {false, p.pts.front(), {}};
+  return entry_for(p.pts, count);
 }
 
 PocketCut::Entry PocketCut::entry_for(const std::vector<Vec3>& pass, bool count) {
@@ -348,6 +371,8 @@ void PocketCut::certify() {
   in.from = first_move_;
   in.to = c_.program.moves.size();
   in.start = start_;
+  if (pattern_ == PocketPattern::adaptive) in.load = load_;
+  in.cleared_before = plan_.before.loops();
   const PocketCertificate cert = check_pocket(in);
   const double keep = radius_ + cp_.stock_to_leave;
   const std::string units = to_string(c_.job.units);
@@ -373,6 +398,11 @@ void PocketCut::certify() {
     p.warnings.push_back(name() + ": the check finds " + fmt_num(cert.uncut_area, 4) + " " + units +
                          "^2 uncut that the tool could reach, beyond the limit " + fmt_num(cert.uncut_limit, 4) +
                          ", near (" + fmt_num(cert.uncut_at.x, 4) + ", " + fmt_num(cert.uncut_at.y, 4) + ")");
+  if (!cert.engagement_kept())
+    p.warnings.push_back(name() + ": the check reads an engagement of " + fmt_num(cert.engagement_deg, 4) +
+                         " degrees near (" + fmt_num(cert.engagement_at.x, 4) + ", " +
+                         fmt_num(cert.engagement_at.y, 4) + "), above the bound " + fmt_num(cert.engagement_bound, 4) +
+                         " that load " + fmt_num(load_) + " gives");
   if (!cert.unreachable.empty()) {
     std::string w = name() + ": " + fmt_num(cert.unreachable_area, 4) + " " + units +
                     "^2 of material the tool (diameter " + fmt_num(2 * radius_) +

@@ -161,6 +161,41 @@ std::vector<std::pair<Vec3, size_t>> PocketGrid::components(const std::vector<ui
   return out;
 }
 
+std::vector<double> PocketGrid::distance(const std::vector<uint8_t>& bits) const {
+  // Two passes of the 8-neighbour chamfer distance (steps 1 and sqrt 2, in cells).
+  const double big = 1e30, diag = std::sqrt(2.0);
+  std::vector<double> dist(size(), big);
+  for (size_t k = 0; k < size(); ++k)
+    if (bits[k]) dist[k] = 0;
+  auto at = [&](long i, long j) -> double& { return dist[static_cast<size_t>(j * nx + i)]; };
+  for (long j = 0; j < ny; ++j)
+    for (long i = 0; i < nx; ++i) {
+      double& v = at(i, j);
+      if (i > 0) v = std::min(v, at(i - 1, j) + 1);
+      if (j > 0) v = std::min(v, at(i, j - 1) + 1);
+      if (i > 0 && j > 0) v = std::min(v, at(i - 1, j - 1) + diag);
+      if (i + 1 < nx && j > 0) v = std::min(v, at(i + 1, j - 1) + diag);
+    }
+  for (long j = ny; j-- > 0;)
+    for (long i = nx; i-- > 0;) {
+      double& v = at(i, j);
+      if (i + 1 < nx) v = std::min(v, at(i + 1, j) + 1);
+      if (j + 1 < ny) v = std::min(v, at(i, j + 1) + 1);
+      if (i + 1 < nx && j + 1 < ny) v = std::min(v, at(i + 1, j + 1) + diag);
+      if (i > 0 && j + 1 < ny) v = std::min(v, at(i - 1, j + 1) + diag);
+    }
+  for (double& v : dist) v *= cell;
+  return dist;
+}
+
+std::vector<uint8_t> PocketGrid::dilated(const std::vector<uint8_t>& bits, double d) const {
+  if (!(d > 0)) return bits;
+  const std::vector<double> dist = distance(bits);
+  std::vector<uint8_t> out(size());
+  for (size_t k = 0; k < size(); ++k) out[k] = dist[k] <= d;
+  return out;
+}
+
 std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces, double r,
                                                std::vector<uint8_t> material) const {
   constexpr int kSamples = 90;  // 2 degrees each over the front half
@@ -172,7 +207,7 @@ std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces,
   };
   for (const Piece& p : pieces) {
     const double len = std::hypot(p.b.x - p.a.x, p.b.y - p.a.y);
-    if (len > 0) {
+    if (len > 0 && p.measure) {
       const double ux = (p.b.x - p.a.x) / len, uy = (p.b.y - p.a.y) / len;
       const int steps = std::max(1, static_cast<int>(std::ceil(len / cell)));
       for (int s = 0; s <= steps; ++s) {

@@ -14,7 +14,8 @@ namespace bezcam::detail {
 struct Piece {
   Vec3 a, b;
   bool rapid = false;
-  size_t move = 0;  ///< the move it comes from
+  size_t move = 0;      ///< the move it comes from
+  bool measure = true;  ///< engagement: read along it (else it only removes material)
 };
 
 /// Distance from p to the segment ab in XY.
@@ -37,6 +38,11 @@ struct PocketGrid {
   /// sample of each (the one farthest from the piece's edge) and its count,
   /// largest first.
   std::vector<std::pair<Vec3, size_t>> components(const std::vector<uint8_t>& bits, size_t min) const;
+  /// Each sample's distance to the nearest set sample: the 8-connected
+  /// chamfer distance, at least the Euclidean one and at most 1.09 times it.
+  std::vector<double> distance(const std::vector<uint8_t>& bits) const;
+  /// The samples within `d` of a set sample by that distance.
+  std::vector<uint8_t> dilated(const std::vector<uint8_t>& bits, double d) const;
   /// The largest engagement angle (degrees) along the pieces in order,
   /// against `material` (copied; cleared as the tool sweeps it), and where.
   std::pair<double, Vec3> engagement(const std::vector<Piece>& pieces, double r, std::vector<uint8_t> material) const;

@@ -19,6 +19,13 @@ namespace {
 
 double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
+PocketPass pass_of(std::vector<Vec3> pts, bool linked) {
+  PocketPass p;
+  p.pts = std::move(pts);
+  p.linked = linked;
+  return p;
+}
+
 // A ring as a closed pass in the direction asked: Boost's rings run
 // clockwise round the area (outer rings) and counter-clockwise round its
 // holes; climb milling keeps the wall on the tool's right, against that.
@@ -91,7 +98,7 @@ std::vector<PocketPass> offset_rings(const Area& region, const PocketPlanInput& 
   std::vector<PocketPass> out;
   std::function<void(size_t)> walk = [&](size_t n) {
     for (size_t c : nodes[n].children) walk(c);
-    for (auto& ring : nodes[n].area.rings()) out.push_back({closed_pass(std::move(ring), in.climb), false});
+    for (auto& ring : nodes[n].area.rings()) out.push_back(pass_of(closed_pass(std::move(ring), in.climb), false));
   };
   for (size_t r : roots) walk(r);
   return out;
@@ -164,12 +171,13 @@ std::vector<PocketPass> zigzag_lines(const Area& region, const PocketPlanInput& 
     Seg& s = segs[best];
     s.done = true;
     const Vec3 p = flip ? s.b : s.a, q = flip ? s.a : s.b;
-    out.push_back({{p, q}, near});
+    out.push_back(pass_of({p, q}, near));
     at = q;
     cur_line = s.line;
   }
   // The ring along the walls.
-  for (auto& ring : region.eroded(d0, sag).rings()) out.push_back({closed_pass(std::move(ring), in.climb), false});
+  for (auto& ring : region.eroded(d0, sag).rings())
+    out.push_back(pass_of(closed_pass(std::move(ring), in.climb), false));
   return out;
 }
 
@@ -200,7 +208,7 @@ void start_where_helix_fits(std::vector<Vec3>& pts, const Area& centres, double 
   }
 }
 
-void link(std::vector<PocketPass>& passes, const Area& centres, double r, double helix_r) {
+void link(std::vector<PocketPass>& passes, const Area& centres, double r, double helix_r, const Area& free) {
   if (!passes.empty()) start_where_helix_fits(passes.front().pts, centres, helix_r);
   for (size_t i = 1; i < passes.size(); ++i) {
     auto& p = passes[i];
@@ -214,7 +222,7 @@ void link(std::vector<PocketPass>& passes, const Area& centres, double r, double
     for (int k = 1; k <= n && cleared; ++k) {
       const double t = static_cast<double>(k) / n;
       const Vec3 q{end.x + (to.x - end.x) * t, end.y + (to.y - end.y) * t, 0};
-      bool near = false;
+      bool near = free.covers(q);
       for (size_t j = i; j-- > 0 && !near;)
         for (size_t m = 0; m + 1 < passes[j].pts.size() && !near; ++m)
           near = point_segment(q, passes[j].pts[m], passes[j].pts[m + 1]) <= r;
@@ -229,11 +237,15 @@ void link(std::vector<PocketPass>& passes, const Area& centres, double r, double
 // nearest pass to a point within r of it, and back. Repeats until the grid
 // finds none (or no such move stays in the centres' area).
 size_t clean_up(std::vector<PocketPass>& passes, const Area& region, const Area& centres, const PocketPlanInput& in,
-                double sag) {
+                double sag, const Area& before) {
   const double r = in.radius;
   const Area reach = region.eroded(r + in.stock, sag).eroded(-r, sag);
   PocketGrid g(in.walls, in.cell, 2'000'000);
-  const std::vector<uint8_t> in_reach = g.fill(reach.loops());
+  std::vector<uint8_t> in_reach = g.fill(reach.loops());
+  if (!before.empty()) {
+    const std::vector<uint8_t> b = g.fill(before.loops());
+    for (size_t k = 0; k < g.size(); ++k) in_reach[k] = in_reach[k] && !b[k];
+  }
   size_t added = 0;
   for (int round = 0; round < 12; ++round) {
     std::vector<uint8_t> left = in_reach;
@@ -279,6 +291,63 @@ size_t clean_up(std::vector<PocketPass>& passes, const Area& region, const Area&
   return added;
 }
 
+// Rest machining: the parts of the passes whose tool reaches what the tool
+// before left (the reachable set less `before`, grown by a tenth of the
+// radius into `before`), each from a point where the tool reaches none of it.
+std::vector<PocketPass> rest_parts(const std::vector<PocketPass>& passes, const Area& region, const Area& before,
+                                   const PocketPlanInput& in, double sag) {
+  const double r = in.radius;
+  const Area reach = region.eroded(r + in.stock, sag).eroded(-r, sag);
+  PocketGrid g(in.walls, std::max(in.cell, r / 40), 1'000'000);
+  const std::vector<uint8_t> in_reach = g.fill(reach.loops());
+  std::vector<uint8_t> left = in_reach;
+  const std::vector<uint8_t> b = g.fill(before.loops());
+  for (size_t k = 0; k < g.size(); ++k) left[k] = left[k] && !b[k];
+  // Grown by a tenth of the radius into what the tool before cut.
+  left = g.dilated(left, r / 10);
+  for (size_t k = 0; k < g.size(); ++k) left[k] = left[k] && in_reach[k];
+  // Whether the tool at p reaches a sample of `left`: the samples within r.
+  const long reach_cells = static_cast<long>(std::ceil(r / g.cell)) + 1;
+  auto touches = [&](const Vec3& p) {
+    const long ci = static_cast<long>(std::floor((p.x - g.x0) / g.cell)),
+               cj = static_cast<long>(std::floor((p.y - g.y0) / g.cell));
+    for (long j = std::max(0L, cj - reach_cells); j <= std::min(g.ny - 1, cj + reach_cells); ++j)
+      for (long i = std::max(0L, ci - reach_cells); i <= std::min(g.nx - 1, ci + reach_cells); ++i) {
+        const size_t k = static_cast<size_t>(j * g.nx + i);
+        if (left[k] && dxy(g.sample(k), p) <= r + g.cell) return true;
+      }
+    return false;
+  };
+  std::vector<PocketPass> out;
+  for (const PocketPass& pass : passes) {
+    std::vector<Vec3> dense;
+    for (size_t i = 0; i + 1 < pass.pts.size(); ++i) {
+      const int m = std::max(1, static_cast<int>(std::ceil(dxy(pass.pts[i], pass.pts[i + 1]) / (r / 4))));
+      for (int k = 0; k < m; ++k) {
+        const double t = static_cast<double>(k) / m;
+        dense.push_back({pass.pts[i].x + (pass.pts[i + 1].x - pass.pts[i].x) * t,
+                         pass.pts[i].y + (pass.pts[i + 1].y - pass.pts[i].y) * t, 0});
+      }
+    }
+    if (!pass.pts.empty()) dense.push_back(pass.pts.back());
+    std::vector<uint8_t> t(dense.size());
+    for (size_t i = 0; i < dense.size(); ++i) t[i] = touches(dense[i]);
+    for (size_t i = 0; i < dense.size();) {
+      if (!t[i]) {
+        ++i;
+        continue;
+      }
+      size_t j = i;
+      while (j < dense.size() && t[j]) ++j;
+      const size_t a = i > 0 ? i - 1 : 0, e = std::min(j, dense.size() - 1);
+      out.push_back(pass_of(
+          std::vector<Vec3>(dense.begin() + static_cast<long>(a), dense.begin() + static_cast<long>(e) + 1), false));
+      i = j + 1;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<Vec3> helix_centre(const Area& centres, const Vec3& p, double R, double grow, double& used) {
@@ -310,13 +379,26 @@ PocketPlan plan_pocket(const PocketPlanInput& in) {
   const double d0 = d_wall + in.finish;
   plan.centres = region.eroded(d_wall, sag);
   if (plan.centres.empty()) return plan;
+  if (in.rest_from) {
+    // What the tool before reached, by the same rule: the region eroded by
+    // its radius + stock and grown back by its radius.
+    const double rb = *in.rest_from;
+    plan.before = region.eroded(rb + in.stock, sag).eroded(-rb, sag);
+  }
+  if (in.pattern == PocketPattern::adaptive) {
+    plan.passes = adaptive_passes(region, plan.centres, plan.before, in, d_wall);
+    std::erase_if(plan.passes, [](const PocketPass& p) { return p.pts.size() < 2; });
+    return plan;
+  }
   plan.passes =
       in.pattern == PocketPattern::offset ? offset_rings(region, in, d0, sag) : zigzag_lines(region, in, d0, sag);
   if (in.finish > 0)
-    for (auto& ring : plan.centres.rings()) plan.passes.push_back({closed_pass(std::move(ring), in.climb), false});
+    for (auto& ring : plan.centres.rings())
+      plan.passes.push_back(pass_of(closed_pass(std::move(ring), in.climb), false));
+  if (in.rest_from) plan.passes = rest_parts(plan.passes, region, plan.before, in, sag);
   std::erase_if(plan.passes, [](const PocketPass& p) { return p.pts.size() < 2; });
-  link(plan.passes, plan.centres, in.radius, in.helix_radius);
-  plan.cleanup = clean_up(plan.passes, region, plan.centres, in, sag);
+  link(plan.passes, plan.centres, in.radius, in.helix_radius, plan.before.eroded(in.radius, sag));
+  plan.cleanup = clean_up(plan.passes, region, plan.centres, in, sag, plan.before);
   return plan;
 }
 

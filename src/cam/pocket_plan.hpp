@@ -24,6 +24,7 @@ struct PocketPlanInput {
   /// chords and rounding, so that no pass comes nearer than r + stock.
   double margin = 0;
   std::optional<double> rest_from;  ///< the radius of the tool before
+  double load = 0;                  ///< adaptive: the radial depth of cut
   double cell = 0;                  ///< the grid the search for material left reads
   double helix_radius = 0;          ///< the entry's helix (0: no helix): rings start where one fits
 };
@@ -33,15 +34,29 @@ struct PocketPlanInput {
 struct PocketPass {
   std::vector<Vec3> pts;
   /// Reached from the previous pass's end by a straight feed at depth
-  /// (inside the centres' area, no longer than the tool's diameter).
+  /// (inside the centres' area, through cleared material).
   bool linked = false;
+  /// Not linked, but its start is in material this level already cleared:
+  /// the tool feeds straight down there.
+  bool in_cleared = false;
+  /// Adaptive: the entry's helix about this centre, of radius `helix_r`
+  /// (its first point on the circle), which the passes count as cleared.
+  std::optional<Vec3> helix;
+  double helix_r = 0;
 };
 
 struct PocketPlan {
   std::vector<PocketPass> passes;
   Area centres;        ///< where the tool centre may go: the region eroded by r + stock (+ margin)
   size_t cleanup = 0;  ///< the extra moves added where rings left material
+  Area before;         ///< rest_from: what the tool before cleared (its reachable set)
 };
+
+/// The adaptive passes (pocket_adaptive.cpp): rings along the edge of the
+/// cleared area where the tool's arc in material keeps to the load,
+/// entered from a helix in each piece of `centres`, then the walls.
+std::vector<PocketPass> adaptive_passes(const Area& region, const Area& centres, const Area& before,
+                                        const PocketPlanInput& in, double d_wall);
 
 /// The centre of a helix of radius R or less (R, 3/4, 1/2, 1/4 of it; the
 /// one used in `used`) whose circle, enlarged by `grow`, lies in `centres`

@@ -20,12 +20,12 @@ using json = nlohmann::json;
 
 /// The cutting parameters, at job and entity level (docs/job-format.md);
 /// the last, `order`, is the job's only.
-inline constexpr std::array<std::string_view, 36> kParamKeys = {
+inline constexpr std::array<std::string_view, 37> kParamKeys = {
     "feed", "plunge_feed", "safe_z", "cut_z", "spindle_rpm", "tool", "tool_radius", "gouge", "coolant", "clearance",
     "top_z", "before", "after", "side", "tool_diameter", "stock_to_leave", "step_down", "direction", "lead", "tabs",
     "compensation", "tolerance_side",
     // Pocket clearing (job_json_pocket.cpp).
-    "operation", "region", "pattern", "angle", "stepover", "finish", "entry", "rest_from",
+    "operation", "region", "pattern", "angle", "stepover", "finish", "entry", "rest_from", "load",
     // Drilling (job_json_pocket.cpp).
     "to", "peck", "chip_break", "dwell", "retract_z", "order"};
 /// The keys of `lead` and `tabs`.

@@ -1,5 +1,5 @@
 // The pocket keys (docs/pocket.md): `operation`, `region`, `pattern`,
-// `angle`, `stepover`, `finish`, `entry`, `rest_from`; the drilling keys
+// `angle`, `stepover`, `load`, `finish`, `entry`, `rest_from`; the drilling keys
 // (docs/holes.md): `to`, `peck`, `chip_break`, `dwell`, `retract_z`.
 #include <cmath>
 
@@ -17,6 +17,7 @@ PocketKeys PocketKeys::over(const PocketKeys& base) const {
   if (stepover) r.stepover = stepover;
   if (finish_stock) r.finish_stock = finish_stock;
   if (rest_from) r.rest_from = rest_from;
+  if (load) r.load = load;
   if (entry) r.entry = entry;
   return r;
 }
@@ -103,10 +104,11 @@ PocketKeys parse_pocket_keys(const JsonCtx& ctx, const json& obj, const std::str
       k.pattern = PocketPattern::offset;
     else if (v == "zigzag")
       k.pattern = PocketPattern::zigzag;
+    else if (v == "adaptive")
+      k.pattern = PocketPattern::adaptive;
     else
       ctx.fail(sub("pattern"), errc::job_pocket,
-               "expected \"offset\" or \"zigzag\", found " + describe(*it) +
-                   (v == "adaptive" ? " (adaptive clearing is not done by this version)" : ""));
+               "expected \"offset\", \"zigzag\" or \"adaptive\", found " + describe(*it));
   }
   if (auto it = obj.find("angle"); it != obj.end()) k.angle = ctx.number(*it, sub("angle"));
   if (auto it = obj.find("stepover"); it != obj.end()) {
@@ -115,6 +117,14 @@ PocketKeys parse_pocket_keys(const JsonCtx& ctx, const json& obj, const std::str
       ctx.fail(sub("stepover"), errc::job_pocket,
                "expected a stepover > 0 (the distance between neighbouring passes), found " + fmt_num(s));
     k.stepover = s;
+  }
+  if (auto it = obj.find("load"); it != obj.end()) {
+    const double l = ctx.number(*it, sub("load"));
+    if (!(l > 0))
+      ctx.fail(
+          sub("load"), errc::job_pocket,
+          "expected a load > 0 (adaptive: the radial depth of cut, at most the tool's radius), found " + fmt_num(l));
+    k.load = l;
   }
   if (auto it = obj.find("finish"); it != obj.end()) {
     const std::string kp = sub("finish");

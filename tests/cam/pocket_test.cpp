@@ -267,7 +267,12 @@ TEST(Pocket, RefusalsNameTheKey) {
       {R"("entry":{"helix":{"radius":10}})", {polygon(rect(0, 0, 40, 7))}, "job.pocket", "entities[0].entry"},
       // An island crossing the outline.
       {"", {polygon(rect(0, 0, 30, 20)), polygon(rect(25, 5, 35, 15))}, "job.pocket", "entities[1]"},
-      {R"("rest_from":10)", {polygon(rect(0, 0, 30, 20))}, "job.pocket", "entities[0].rest_from"},
+      // Rest machining after a tool no larger than this one.
+      {R"("rest_from":6)", {polygon(rect(0, 0, 30, 20))}, "job.pocket", "entities[0].rest_from"},
+      {R"("rest_from":4)", {polygon(rect(0, 0, 30, 20))}, "job.pocket", "entities[0].rest_from"},
+      // A load above the radius, and a load without the adaptive pattern.
+      {R"("pattern":"adaptive","load":3.5)", {polygon(rect(0, 0, 30, 20))}, "job.pocket", "entities[0].load"},
+      {R"("load":1)", {polygon(rect(0, 0, 30, 20))}, "job.pocket", "entities[0].load"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.keys + " " + c.path);

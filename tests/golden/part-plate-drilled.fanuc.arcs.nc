@@ -9,7 +9,7 @@ N60 (estimated cycle time 9 min 55 s on the motion model of machine fanuc [accel
 N70 (order shortest: 9 nested contours cut before what encloses them; rapids 317.3 mm in XY instead of 430.5 mm as written [113.2 mm saved])
 N80 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03638 mm grid)
 N90 (pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.001 mm at 70.62, 37.6, asked r + stock 3)
-N100 (pocket recess: largest engagement 180 deg at 49.99, 24.76 [a full slot: 180]; no rapid through material)
+N100 (pocket recess: largest engagement 180 deg at 46.4, 24.04 [a full slot: 180]; no rapid through material)
 N110 G21 G90 G17
 N120 G40 G49 G80 G94
 N130 G54

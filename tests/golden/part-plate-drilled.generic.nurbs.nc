@@ -8,7 +8,7 @@
 (order shortest: 9 nested contours cut before what encloses them; rapids 317.3 mm in XY instead of 430.5 mm as written [113.2 mm saved])
 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03638 mm grid)
 (pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.001 mm at 70.62, 37.6, asked r + stock 3)
-(pocket recess: largest engagement 180 deg at 49.99, 24.76 [a full slot: 180]; no rapid through material)
+(pocket recess: largest engagement 180 deg at 46.4, 24.04 [a full slot: 180]; no rapid through material)
 (machine generic has no NURBS words: nurbs output cuts with arcs [G02/G03] and G01 lines)
 G21 G90 G17
 G40 G49 G80 G94

@@ -7,7 +7,7 @@ N40 (estimated cycle time 9 min 19 s on the motion model of machine fanuc [accel
 N50 (order shortest: 5 nested contours cut before what encloses them; rapids 124.8 mm in XY instead of 152.7 mm as written [27.9 mm saved])
 N60 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03638 mm grid)
 N70 (pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.001 mm at 70.62, 37.6, asked r + stock 3)
-N80 (pocket recess: largest engagement 180 deg at 49.99, 24.76 [a full slot: 180]; no rapid through material)
+N80 (pocket recess: largest engagement 180 deg at 46.4, 24.04 [a full slot: 180]; no rapid through material)
 N90 G21 G90 G17
 N100 G40 G49 G80 G94
 N110 G54

@@ -17,6 +17,10 @@
 /// along the moves of each level: the share of the front half of the
 /// tool's circle that lies on samples still holding material (the region
 /// less what the moves before removed); a full slot reads 180 degrees.
+/// The moves that descend into a level (a helix, a ramp) remove material
+/// of that level before the moves at it; the material the tool cannot
+/// reach, and with `load` the reachable material within that of it, is
+/// not counted.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -52,6 +56,14 @@ struct PocketCheckInput {
   double cell = 0;          ///< 0: the tolerance, coarser to stay within `max_cells`
   size_t max_cells = 2'000'000;
   bool engagement = true;  ///< measure the engagement (the slowest part)
+  /// Rest machining: what a larger tool cleared before (closed loops,
+  /// even-odd). It holds no material, and the coverage is measured on the
+  /// reachable set less it.
+  PocketLoops cleared_before;
+  /// Adaptive: the radial depth of cut. The engagement does not count the
+  /// reachable material within `load` of the unreachable places (the last
+  /// sliver of a sharp corner), and is held to arccos(1 - load / r) + 2 deg.
+  double load = 0;
 };
 
 /// Material the tool cannot reach (a neck narrower than the tool, a corner
@@ -64,7 +76,8 @@ struct PocketPlace {
 struct PocketCertificate {
   double cell = 0;                       ///< the grid's pitch
   double region_area = 0;                ///< inside the walls
-  double reachable_area = 0;             ///< R
+  double reachable_area = 0;             ///< R (less `cleared_before`)
+  bool rest = false;                     ///< coverage measured against R less `cleared_before`
   double unreachable_area = 0;           ///< the region less R less the stock left on the walls
   std::vector<PocketPlace> unreachable;  ///< largest first
   double perimeter = 0;                  ///< of the walls
@@ -79,11 +92,13 @@ struct PocketCertificate {
   Vec3 wall_at;
   double engagement_deg = 0;  ///< the largest engagement angle
   Vec3 engagement_at;
+  double engagement_bound = 0;    ///< adaptive: arccos(1 - load / r) + 2 degrees (0: none promised)
   size_t rapids_in_material = 0;  ///< G00 moves below the stock's top other than straight up
   Vec3 rapid_at;
   double seconds = 0;  ///< the time the check took
 
   bool covered() const { return uncut_area <= uncut_limit; }
+  bool engagement_kept() const { return engagement_bound == 0 || engagement_deg <= engagement_bound; }
   bool walls_kept(double radius, double stock, double tolerance) const {
     return wall_distance >= radius + stock - tolerance;
   }

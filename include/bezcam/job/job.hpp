@@ -52,8 +52,9 @@ struct Tabs {
 /// make a hole at a point or a circle: drill it, or bore it with an end
 /// mill (docs/holes.md).
 enum class Operation { profile, pocket, drill, bore };
-/// How a pocket is cleared: rings parallel to the walls, or parallel lines.
-enum class PocketPattern { offset, zigzag };
+/// How a pocket is cleared: rings parallel to the walls, parallel lines,
+/// or passes that keep the tool's engagement at or below what `load` gives.
+enum class PocketPattern { offset, zigzag, adaptive };
 /// How the tool gets down into a pocket.
 struct PocketEntry {
   enum class Kind { helix, ramp, plunge };
@@ -66,7 +67,7 @@ struct PocketKeys {
   std::optional<Operation> operation;
   std::optional<std::string> region;
   std::optional<PocketPattern> pattern;
-  std::optional<double> angle, stepover, finish_stock, rest_from;
+  std::optional<double> angle, stepover, finish_stock, rest_from, load;
   std::optional<PocketEntry> entry;
   /// Values set here win; the rest come from `base`.
   PocketKeys over(const PocketKeys& base) const;

@@ -1,0 +1,340 @@
+// Adaptive clearing (docs/pocket.md, "Adaptive"): the cleared area grows
+// ring by ring. A grid holds the material still there; each ring is the
+// edge of the set of tool centres whose circle has at most `load`'s share
+// of material on it (arccos(1 - load / r) each side of the normal), inside
+// the centres' area: where the cleared edge bulges the ring steps less.
+// The ring is kept only where it reaches material, entered along a smooth
+// curve from cleared material, and its engagement is read on the grid
+// before it is taken (the step shrinks until it keeps to the load).
+#include "pocket_adaptive.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numbers>
+#include <optional>
+
+namespace bezcam::detail {
+
+namespace {
+constexpr int kCircle = kAdaptiveCircle;
+}  // namespace
+
+// The samples of piece `cur` not yet settled within 1.5 load of the settled
+// ones (Chebyshev steps over the grid), with the material on the circle of
+// each, and the settled ones on their edge.
+Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::vector<int>& comp, int cur) const {
+  Band b;
+  auto in_piece = [&](size_t k) { return comp[k] == cur; };
+  for (size_t k = 0; k < g_.size(); ++k) {
+    if (!settled[k] || !in_piece(k)) continue;
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    bool edge = false;
+    for (const auto& [di, dj] : {std::pair{1L, 0L}, {-1L, 0L}, {0L, 1L}, {0L, -1L}}) {
+      if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
+      const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
+      edge = edge || (!settled[n] && in_piece(n));
+    }
+    if (edge) b.frontier.push_back(k);
+  }
+  const long steps = static_cast<long>(std::ceil((1.5 * load_ + 3 * g_.cell) / g_.cell));
+  std::vector<int>& seen = seen_;
+  seen.resize(g_.size(), -1);
+  std::deque<size_t> q;
+  for (size_t k : b.frontier) seen[k] = 0, q.push_back(k);
+  while (!q.empty()) {
+    const size_t k = q.front();
+    q.pop_front();
+    const long d = seen[k];
+    if (d >= steps) continue;
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    for (long dj = -1; dj <= 1; ++dj)
+      for (long di = -1; di <= 1; ++di) {
+        if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
+        const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
+        if (settled[n] || stuck_[n] || !in_piece(n) || seen[n] >= 0) continue;
+        seen[n] = static_cast<int>(d + 1);
+        q.push_back(n);
+        b.cells.push_back(n);
+      }
+  }
+  for (size_t k : b.frontier) seen[k] = -1;
+  for (size_t k : b.cells) seen[k] = -1;
+  // One front at a time: the 8-connected piece of the band nearest the tool.
+  std::vector<int>& label = seen;
+  for (size_t k : b.cells) label[k] = -2;
+  int best = -1, pieces = 0;
+  double best_d = 1e300;
+  for (size_t s0 : b.cells) {
+    if (label[s0] != -2) continue;
+    std::deque<size_t> w{s0};
+    label[s0] = pieces;
+    while (!w.empty()) {
+      const size_t k = w.front();
+      w.pop_front();
+      const double d = have_cur_ ? dxy(g_.sample(k), cur_) : 0;
+      if (d < best_d) best_d = d, best = pieces;
+      const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+      for (long dj = -1; dj <= 1; ++dj)
+        for (long di = -1; di <= 1; ++di) {
+          if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
+          const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
+          if (label[n] == -2) label[n] = pieces, w.push_back(n);
+        }
+    }
+    ++pieces;
+  }
+  std::vector<size_t> chosen;
+  for (size_t k : b.cells)
+    if (label[k] == best) chosen.push_back(k);
+  for (size_t k : b.cells) label[k] = -1;
+  b.cells = std::move(chosen);
+  for (size_t k : b.cells) active_[k] = 1;
+  for (size_t k : b.frontier) {
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    for (long dj = -1; dj <= 1 && !active_[k]; ++dj)
+      for (long di = -1; di <= 1; ++di) {
+        if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
+        if (active_[static_cast<size_t>((j + dj) * g_.nx + i + di)] == 1) {
+          active_[k] = 2;
+          break;
+        }
+      }
+  }
+  const int cap = static_cast<int>(std::ceil(2 * (target_ / 180) * kCircle)) + 1;
+  b.count.resize(b.cells.size());
+  for (size_t m = 0; m < b.cells.size(); ++m) b.count[m] = on_circle(g_.sample(b.cells[m]), r_, cap);
+  return b;
+}
+
+// The next ring round the settled samples of piece `cur`: the edge of the
+// centres (inside the walls' limit) whose circle holds at most `lambda`
+// of material, grown from the settled ones; `grown` gets the new samples.
+std::vector<Adaptive::Chain> Adaptive::ring(const Band& b, const std::vector<uint8_t>& settled,
+                                            const std::vector<int>& comp, int cur, double lambda,
+                                            std::vector<size_t>& grown) const {
+  grown.clear();
+  if (b.frontier.empty()) return {};
+  std::vector<float>& f = f_;
+  std::vector<uint8_t>& has = has_;  // 1: in the band, 2: and reached
+  f.resize(g_.size());
+  has.resize(g_.size(), 0);
+  long i0 = g_.nx, j0 = g_.ny, i1 = 0, j1 = 0;
+  auto box = [&](size_t k) {
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    i0 = std::min(i0, i), j0 = std::min(j0, j), i1 = std::max(i1, i), j1 = std::max(j1, j);
+  };
+  for (size_t k : b.frontier) box(k);
+  for (size_t m = 0; m < b.cells.size(); ++m) {
+    const size_t k = b.cells[m];
+    const float wall = fwall_[k] / static_cast<float>(r_);
+    f[k] = std::max(static_cast<float>(b.count[m]) / kCircle - static_cast<float>(lambda), wall);
+    has[k] = 1;
+    box(k);
+  }
+  // Only what grows from the settled samples (4-connected through f < 0).
+  std::deque<size_t> q(b.frontier.begin(), b.frontier.end());
+  while (!q.empty()) {
+    const size_t k = q.front();
+    q.pop_front();
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    for (const auto& [di, dj] : {std::pair{1L, 0L}, {-1L, 0L}, {0L, 1L}, {0L, -1L}}) {
+      if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
+      const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
+      if (has[n] != 1 || f[n] >= 0) continue;
+      has[n] = 2;
+      grown.push_back(n);
+      q.push_back(n);
+    }
+  }
+  auto val = [&](size_t k) -> float {
+    if (has[k]) return f[k] < 0 && has[k] != 2 ? 0.01f : f[k];
+    if (settled[k] && comp[k] == cur) return std::max(-1.0f, fwall_[k] / static_cast<float>(r_));
+    return 1.0f;
+  };
+  std::vector<std::vector<Vec3>> open;
+  auto closed = contours(g_, val, std::max(0L, i0 - 1), std::max(0L, j0 - 1), std::min(g_.nx - 1, i1 + 1),
+                         std::min(g_.ny - 1, j1 + 1), open);
+  for (size_t k : b.cells) has[k] = 0;
+  std::vector<Chain> out;
+  for (auto& l : closed) out.push_back({std::move(l), true});
+  for (auto& l : open) out.push_back({std::move(l), false});
+  for (auto& c : out) {
+    smooth(c.pts, c.closed);
+    if (!in_.climb) std::reverse(c.pts.begin(), c.pts.end());
+  }
+  return out;
+}
+
+// Resampled at equal steps of about a twelfth of the radius (the contour's
+// points lie on the grid's edges, a cell or less apart), then four passes of
+// a [1 2 1] / 4 average; a point the averaging takes nearer the walls than
+// the centres' limit keeps its place.
+void Adaptive::smooth(std::vector<Vec3>& loop, bool closed) const {
+  if (!closed) {
+    // A chain the window cut: resampled likewise, its ends kept.
+    std::vector<Vec3> even{loop.front()};
+    const double step = std::max(2 * g_.cell, r_ / 12);
+    for (size_t i = 1; i < loop.size(); ++i)
+      if (dxy(loop[i], even.back()) >= step || i + 1 == loop.size()) even.push_back(loop[i]);
+    for (int pass = 0; pass < 4; ++pass)
+      for (size_t i = 1; i + 1 < even.size(); ++i) {
+        const Vec3 q{(even[i - 1].x + 2 * even[i].x + even[i + 1].x) / 4,
+                     (even[i - 1].y + 2 * even[i].y + even[i + 1].y) / 4, 0};
+        if (inside(q)) even[i] = q;
+      }
+    std::erase_if(even, [&](const Vec3& p) { return !inside(p); });
+    loop = std::move(even);
+    return;
+  }
+  double perim = 0;
+  for (size_t i = 0; i < loop.size(); ++i) perim += dxy(loop[i], loop[(i + 1) % loop.size()]);
+  const size_t n = std::max<size_t>(8, static_cast<size_t>(std::ceil(perim / std::max(2 * g_.cell, r_ / 12))));
+  if (n < loop.size()) {
+    std::vector<Vec3> even;
+    const double step = perim / static_cast<double>(n);
+    double at = 0, next = 0;
+    for (size_t i = 0; i < loop.size() && even.size() < n; ++i) {
+      const Vec3 &a = loop[i], &b = loop[(i + 1) % loop.size()];
+      const double l = dxy(a, b);
+      while (next <= at + l && even.size() < n) {
+        const Vec3 p = mix(a, b, l > 0 ? (next - at) / l : 0);
+        even.push_back(inside(p) ? p : (inside(a) ? a : b));
+        next += step;
+      }
+      at += l;
+    }
+    loop = std::move(even);
+  }
+  const size_t m = loop.size();
+  for (int pass = 0; pass < 4; ++pass) {
+    std::vector<Vec3> s(m);
+    for (size_t i = 0; i < m; ++i) {
+      const Vec3 &a = loop[(i + m - 1) % m], &b = loop[i], &c = loop[(i + 1) % m];
+      s[i] = {(a.x + 2 * b.x + c.x) / 4, (a.y + 2 * b.y + c.y) / 4, 0};
+      if (!inside(s[i])) s[i] = b;
+    }
+    loop = std::move(s);
+  }
+  std::erase_if(loop, [&](const Vec3& p) { return !inside(p); });
+}
+
+// A helix in piece `cur`, about its deepest sample, whose bore the rings
+// grow from; false when no helix of an eighth of the tool's radius fits.
+bool Adaptive::seed(const std::vector<int>& comp, int cur, const std::vector<double>& depth) {
+  size_t best = g_.size();
+  for (size_t k = 0; k < g_.size(); ++k)
+    if (comp[k] == cur && (best == g_.size() || depth[k] > depth[best])) best = k;
+  if (best == g_.size()) return false;
+  const Vec3 c = g_.sample(best);
+  double rad = std::min(in_.helix_radius > 0 ? in_.helix_radius : r_ / 2, depth[best] / 1.09 - 2 * g_.cell);
+  for (int t = 0; t < 6 && rad >= r_ / 8; ++t, rad *= 0.75) {
+    std::vector<Vec3> poly;
+    const double out = rad / std::cos(std::numbers::pi / 24) + in_.margin;
+    for (int j = 0; j < 24; ++j) {
+      const double a = 2 * std::numbers::pi * j / 24;
+      poly.push_back({c.x + out * std::cos(a), c.y + out * std::sin(a), 0});
+    }
+    if (!centres_.covers_polygon(poly)) continue;
+    // The helix turns the way the rings run; its last point starts them.
+    const double a0 = 0;
+    const Vec3 start{c.x + rad * std::cos(a0), c.y + rad * std::sin(a0), 0};
+    std::vector<Vec3> bore;
+    for (int j = 0; j <= 72; ++j) {
+      const double a = (in_.climb ? 1 : -1) * 2 * std::numbers::pi * j / 72;
+      bore.push_back({c.x + rad * std::cos(a), c.y + rad * std::sin(a), 0});
+    }
+    stamp(bore);
+    PocketPass p;
+    p.pts = {start};
+    p.helix = c;
+    p.helix_r = rad;
+    cur_ = start;
+    dir_ = {0, in_.climb ? 1.0 : -1.0, 0};
+    have_cur_ = true;
+    pending_ = std::move(p);
+    turn_ = bore;
+    return true;
+  }
+  return false;
+}
+
+std::vector<PocketPass> Adaptive::run() {
+  std::vector<int> comp(g_.size(), -1);
+  std::vector<uint8_t> outside(g_.size());
+  for (size_t k = 0; k < g_.size(); ++k) outside[k] = !(fwall_[k] < 0);
+  int pieces = 0;
+  for (size_t s = 0; s < g_.size(); ++s) {
+    if (outside[s] || comp[s] >= 0) continue;
+    std::deque<size_t> q{s};
+    comp[s] = pieces;
+    while (!q.empty()) {
+      const size_t k = q.front();
+      q.pop_front();
+      const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+      for (const auto& [di, dj] : {std::pair{1L, 0L}, {-1L, 0L}, {0L, 1L}, {0L, -1L}}) {
+        if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
+        const size_t m = static_cast<size_t>((j + dj) * g_.nx + i + di);
+        if (!outside[m] && comp[m] < 0) comp[m] = pieces, q.push_back(m);
+      }
+    }
+    ++pieces;
+  }
+  const std::vector<double> depth = g_.distance(outside);
+  active_.assign(g_.size(), 0);
+  stuck_.assign(g_.size(), 0);
+  std::vector<uint8_t> settled(g_.size(), 0);
+  // Rest machining: the rings grow from what the tool before cleared.
+  for (size_t k = 0; k < g_.size(); ++k) settled[k] = comp[k] >= 0 && before_[k] && clear(g_.sample(k));
+  for (int cur = 0; cur < pieces; ++cur) {
+    bool any = false;
+    for (size_t k = 0; k < g_.size() && !any; ++k) any = comp[k] == cur && settled[k];
+    if (!any) {
+      if (!seed(comp, cur, depth)) continue;
+      for (size_t k = 0; k < g_.size(); ++k)
+        if (comp[k] == cur && dxy(g_.sample(k), *pending_->helix) <= pending_->helix_r) settled[k] = 1;
+    }
+    for (int round = 0; round < 20000; ++round) {
+      double lambda = 2 * target_ / 360;
+      std::vector<size_t> grown;
+      std::vector<Chain> loops;
+      const Band b = band(settled, comp, cur);
+      for (int attempt = 0; attempt < 6; ++attempt, lambda *= 0.8) {
+        loops = ring(b, settled, comp, cur, lambda, grown);
+        const double w = ring_worst(loops);
+        if (w <= target_) break;
+      }
+      bool cut = false;
+      for (auto& l : loops) cut = take(std::move(l.pts), l.closed) || cut;
+      for (size_t k : grown) settled[k] = 1;
+      for (size_t k : b.cells) active_[k] = 0;
+      for (size_t k : b.frontier) active_[k] = 0;
+      if (b.cells.empty()) break;
+      if (!cut && grown.empty())
+        for (size_t k : b.cells) stuck_[k] = 1;
+    }
+  }
+  // The walls: the edge of the centres' area, where anything is left.
+  for (auto ring : centres_.rings()) {
+    if (in_.climb) std::reverse(ring.begin(), ring.end());
+    std::vector<Vec3> dense;
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Vec3 &a = ring[i], &b = ring[(i + 1) % ring.size()];
+      const int m = std::max(1, static_cast<int>(std::ceil(dxy(a, b) / g_.cell)));
+      for (int k = 0; k < m; ++k) dense.push_back(mix(a, b, static_cast<double>(k) / m));
+    }
+    whole(std::move(dense));
+  }
+  if (pending_) {
+    pending_->pts.push_back(pending_->pts.front());
+    out_.push_back(std::move(*pending_));
+  }
+  return out_;
+}
+
+std::vector<PocketPass> adaptive_passes(const Area& region, const Area& centres, const Area& before,
+                                        const PocketPlanInput& in, double d_wall) {
+  return Adaptive(region, centres, before, in, d_wall).run();
+}
+
+}  // namespace bezcam::detail

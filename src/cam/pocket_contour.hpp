@@ -1,0 +1,149 @@
+#pragma once
+// Internal to cam: the exact distance to a pocket's walls, and the
+// contours of a function sampled on the pocket grid (marching squares),
+// for the adaptive passes (pocket_adaptive.hpp).
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "pocket_grid.hpp"
+
+namespace bezcam::detail {
+
+// The exact distance from a point to the walls' segments, up to a cap,
+// through buckets of segments.
+class WallField {
+ public:
+  WallField(const PocketLoops& walls, double cap) : cap_(cap) {
+    for (const auto& l : walls)
+      for (size_t i = 0; i < l.size(); ++i) segs_.push_back({l[i], l[(i + 1) % l.size()]});
+    x0_ = y0_ = 1e300;
+    double x1 = -1e300, y1 = -1e300;
+    for (const auto& [a, b] : segs_)
+      for (const Vec3& p : {a, b})
+        x0_ = std::min(x0_, p.x), y0_ = std::min(y0_, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    b_ = std::max(cap, (x1 - x0_ + y1 - y0_) / 512);
+    nx_ = static_cast<long>((x1 - x0_) / b_) + 1, ny_ = static_cast<long>((y1 - y0_) / b_) + 1;
+    bucket_.resize(static_cast<size_t>(nx_ * ny_));
+    for (size_t k = 0; k < segs_.size(); ++k) {
+      const auto& [a, b] = segs_[k];
+      for (long j = cy(std::min(a.y, b.y)); j <= cy(std::max(a.y, b.y)); ++j)
+        for (long i = cx(std::min(a.x, b.x)); i <= cx(std::max(a.x, b.x)); ++i)
+          bucket_[static_cast<size_t>(j * nx_ + i)].push_back(k);
+    }
+  }
+  double dist(const Vec3& p) const {
+    double d = cap_;
+    for (long j = cy(p.y - cap_); j <= cy(p.y + cap_); ++j)
+      for (long i = cx(p.x - cap_); i <= cx(p.x + cap_); ++i)
+        for (size_t k : bucket_[static_cast<size_t>(j * nx_ + i)])
+          d = std::min(d, point_segment(p, segs_[k].first, segs_[k].second));
+    return d;
+  }
+
+ private:
+  long cx(double x) const { return std::clamp(static_cast<long>((x - x0_) / b_), 0L, nx_ - 1); }
+  long cy(double y) const { return std::clamp(static_cast<long>((y - y0_) / b_), 0L, ny_ - 1); }
+  double cap_, x0_, y0_, b_;
+  long nx_, ny_;
+  std::vector<std::pair<Vec3, Vec3>> segs_;
+  std::vector<std::vector<size_t>> bucket_;
+};
+
+// Closed loops round the samples where f < 0 (marching squares), each
+// with that set on its left.
+template <class F>
+inline std::vector<std::vector<Vec3>> contours(const PocketGrid& g, const F& f, long i0, long j0, long i1, long j1,
+                                               std::vector<std::vector<Vec3>>& open) {
+  auto val = [&](long i, long j) { return static_cast<double>(f(static_cast<size_t>(j * g.nx + i))); };
+  auto pos = [&](long i, long j) {
+    return Vec3{g.x0 + (static_cast<double>(i) + 0.5) * g.cell, g.y0 + (static_cast<double>(j) + 0.5) * g.cell, 0};
+  };
+  // Edge ids: 2 (j nx + i) for the edge from (i, j) to (i + 1, j), + 1 for (i, j) to (i, j + 1).
+  std::unordered_map<long, std::pair<long, Vec3>> next;  // from edge: to edge, and the point on "from"
+  for (long j = j0; j < j1; ++j)
+    for (long i = i0; i < i1; ++i) {
+      const long ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
+      double v[4];
+      bool in[4];
+      for (int k = 0; k < 4; ++k) v[k] = val(ci[k], cj[k]), in[k] = v[k] < 0;
+      const int n_in = in[0] + in[1] + in[2] + in[3];
+      if (n_in == 0 || n_in == 4) continue;
+      // Edge k joins corner k and k + 1.
+      const long eid[4] = {2 * (j * g.nx + i), 2 * (j * g.nx + i + 1) + 1, 2 * ((j + 1) * g.nx + i),
+                           2 * (j * g.nx + i) + 1};
+      auto cross_pt = [&](int k) {
+        const int a = k, b = (k + 1) % 4;
+        const double t = v[a] / (v[a] - v[b]);
+        const Vec3 u = pos(ci[a], cj[a]), w = pos(ci[b], cj[b]);
+        const double s = std::clamp(t, 0.0, 1.0);
+        return Vec3{u.x + (w.x - u.x) * s, u.y + (w.y - u.y) * s, 0};
+      };
+      auto add = [&](int ea, int eb, int corner) {
+        // A segment between edges ea and eb, corner k on its left when inside.
+        Vec3 p = cross_pt(ea);
+        Vec3 q = cross_pt(eb);
+        const Vec3 c = pos(ci[corner], cj[corner]);
+        const double side = (q.x - p.x) * (c.y - p.y) - (q.y - p.y) * (c.x - p.x);
+        long from = eid[ea], to = eid[eb];
+        if ((side > 0) != in[corner]) std::swap(from, to), std::swap(p, q);
+        next[from] = {to, p};
+      };
+      if (n_in == 2 && in[0] == in[2]) {  // a saddle
+        const bool centre_in = (v[0] + v[1] + v[2] + v[3]) < 0;
+        for (int k = 0; k < 4; ++k)
+          if (in[k] != centre_in) add((k + 3) % 4, k, k);
+        continue;
+      }
+      int e[2], m = 0;
+      for (int k = 0; k < 4 && m < 2; ++k)
+        if (in[k] != in[(k + 1) % 4]) e[m++] = k;
+      add(e[0], e[1], in[e[0]] ? e[0] : (e[0] + 1) % 4);
+    }
+  // Chains cut open by the window start on an edge no segment ends on.
+  std::unordered_map<long, int> ends;
+  for (const auto& [from, to] : next) ends[to.first] = 1;
+  std::vector<std::vector<Vec3>> loops;
+  for (auto it = next.begin(); it != next.end();) {
+    if (ends.count(it->first)) {
+      ++it;
+      continue;
+    }
+    std::vector<Vec3> chain;
+    long at = it->first;
+    it = next.end();
+    while (true) {
+      auto jt = next.find(at);
+      if (jt == next.end()) break;
+      chain.push_back(jt->second.second);
+      at = jt->second.first;
+      next.erase(jt);
+    }
+    if (chain.size() >= 2) open.push_back(std::move(chain));
+    it = next.begin();
+  }
+  while (!next.empty()) {
+    const long start = next.begin()->first;
+    std::vector<Vec3> loop;
+    long at = start;
+    bool closed = false;
+    while (true) {
+      auto it = next.find(at);
+      if (it == next.end()) break;
+      loop.push_back(it->second.second);
+      const long to = it->second.first;
+      next.erase(it);
+      at = to;
+      if (at == start) {
+        closed = true;
+        break;
+      }
+    }
+    if (closed && loop.size() >= 3) loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace bezcam::detail

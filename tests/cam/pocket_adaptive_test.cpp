@@ -1,0 +1,220 @@
+// Adaptive clearing and rest machining (docs/pocket.md): the certificate
+// bezcam prints, measured by its independent check, holds on pockets a new
+// user draws; the check itself catches a path that breaks the bound.
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <numbers>
+#include <sstream>
+
+#include "bezcam/cam/pocket_check.hpp"
+#include "bezcam/cam/program.hpp"
+#include "bezcam/job/job_json.hpp"
+
+namespace bezcam {
+namespace {
+
+using Pts = std::vector<std::pair<double, double>>;
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+std::string polygon(const Pts& p) {
+  std::string s = R"({"type":"path","closed":true,"segments":[)";
+  for (size_t i = 0; i < p.size(); ++i) {
+    const auto& a = p[i];
+    const auto& b = p[(i + 1) % p.size()];
+    s += std::string(i ? "," : "") + R"({"type":"bezier","points":[[)" + num(a.first) + "," + num(a.second) + "],[" +
+         num(b.first) + "," + num(b.second) + "]]}";
+  }
+  return s + "]}";
+}
+
+Program build(const std::string& keys, const std::vector<std::string>& entities) {
+  std::string e;
+  for (const auto& x : entities) e += (e.empty() ? "" : ",") + x;
+  const std::string json = R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,)"
+                           R"("top_z":0,"clearance":1,"cut_z":-3,"tool_diameter":6,"operation":"pocket",)"
+                           R"("region":"p",)" +
+                           keys + R"(},"entities":[)" + e + "]}";
+  return build_program(parse_job(json, "adaptive.json"), load_machine_profile("linuxcnc"), ConvertOptions{});
+}
+
+const PocketCertificate& cert(const Program& p) {
+  for (const auto& e : p.entities)
+    if (e.pocket) return *e.pocket;
+  throw std::logic_error("no pocket in the program");
+}
+
+// The length of the feed moves in XY.
+double fed(const Program& p) {
+  double len = 0;
+  Vec3 cur;
+  for (const Move& mv : p.moves) {
+    const Motion* m = motion_of(mv);
+    if (!m) continue;
+    Vec3 to = cur;
+    if (m->axes & kAxisX) to.x = m->to.x;
+    if (m->axes & kAxisY) to.y = m->to.y;
+    if (m->axes & kAxisZ) to.z = m->to.z;
+    if (!is_rapid(mv)) len += std::hypot(to.x - cur.x, to.y - cur.y);
+    cur = to;
+  }
+  return len;
+}
+
+// Adaptive: everything reachable cut, the walls kept, no rapid through
+// material, and the engagement within arccos(1 - load / r) + 2 degrees.
+void expect_adaptive(const Program& p, double r, double load) {
+  const PocketCertificate& c = cert(p);
+  EXPECT_EQ(c.uncut_area, 0) << "at " << c.uncut_at.x << ", " << c.uncut_at.y;
+  EXPECT_TRUE(c.walls_kept(r, 0, 0.01)) << c.wall_distance;
+  EXPECT_GE(c.wall_distance, r) << "at " << c.wall_at.x << ", " << c.wall_at.y;
+  EXPECT_EQ(c.rapids_in_material, 0u);
+  const double bound = std::acos(1 - load / r) * 180 / std::numbers::pi + 2;
+  EXPECT_NEAR(c.engagement_bound, bound, 1e-9);
+  EXPECT_TRUE(c.engagement_kept());
+  EXPECT_LE(c.engagement_deg, bound) << "at " << c.engagement_at.x << ", " << c.engagement_at.y;
+  EXPECT_GT(c.engagement_deg, 0);
+  const auto line = std::find_if(p.notes.begin(), p.notes.end(), [](const std::string& s) {
+    return s.find("largest engagement") != std::string::npos &&
+           s.find("bound arccos(1 - load/r) + 2") != std::string::npos;
+  });
+  EXPECT_NE(line, p.notes.end());
+}
+
+TEST(PocketAdaptive, SixteenMillimetreSquareWithAQuarterInchTool) {
+  const Program p =
+      build(R"("pattern":"adaptive","tool_diameter":6.35)", {polygon({{0, 0}, {16, 0}, {16, 16}, {0, 16}})});
+  expect_adaptive(p, 3.175, 0.15 * 6.35);
+  EXPECT_EQ(cert(p).unreachable.size(), 4u);  // the corners' last sliver
+}
+
+TEST(PocketAdaptive, LShapeKeepsTheBoundInBothArms) {
+  const Program p =
+      build(R"("pattern":"adaptive","load":1.2)", {polygon({{0, 0}, {36, 0}, {36, 16}, {16, 16}, {16, 36}, {0, 36}})});
+  expect_adaptive(p, 3, 1.2);
+}
+
+TEST(PocketAdaptive, NeckNarrowerThanTheToolIsCutWhereItFitsAndNamed) {
+  const Program p = build(R"("pattern":"adaptive")", {polygon({{0, 0},
+                                                               {20, 0},
+                                                               {20, 8},
+                                                               {30, 8},
+                                                               {30, 0},
+                                                               {50, 0},
+                                                               {50, 20},
+                                                               {30, 20},
+                                                               {30, 12},
+                                                               {20, 12},
+                                                               {20, 20},
+                                                               {0, 20}})});
+  expect_adaptive(p, 3, 0.9);
+  const PocketCertificate& c = cert(p);
+  ASSERT_FALSE(c.unreachable.empty());
+  EXPECT_GT(c.unreachable.front().at.x, 19);  // the neck, largest first
+  EXPECT_LT(c.unreachable.front().at.x, 31);
+  EXPECT_TRUE(std::any_of(p.warnings.begin(), p.warnings.end(),
+                          [](const std::string& w) { return w.find("cannot reach") != std::string::npos; }));
+}
+
+TEST(PocketAdaptive, EachPieceIsEnteredByAHelixInsideIt) {
+  // The two rooms of the neck each get a helix (G02/G03 descending), and
+  // no move at depth joins them (the neck holds no tool position).
+  const Program p = build(R"("pattern":"adaptive")", {polygon({{0, 0},
+                                                               {20, 0},
+                                                               {20, 8},
+                                                               {30, 8},
+                                                               {30, 0},
+                                                               {50, 0},
+                                                               {50, 20},
+                                                               {30, 20},
+                                                               {30, 12},
+                                                               {20, 12},
+                                                               {20, 20},
+                                                               {0, 20}})});
+  Vec3 cur;
+  int crossings = 0;
+  for (const Move& mv : p.moves) {
+    const Motion* m = motion_of(mv);
+    if (!m) continue;
+    Vec3 to = cur;
+    if (m->axes & kAxisX) to.x = m->to.x;
+    if (m->axes & kAxisY) to.y = m->to.y;
+    if (m->axes & kAxisZ) to.z = m->to.z;
+    if (!is_rapid(mv) && to.z < -2.9 && cur.z < -2.9 && (cur.x < 25) != (to.x < 25)) ++crossings;
+    cur = to;
+  }
+  EXPECT_EQ(crossings, 0);
+}
+
+TEST(PocketRest, OnlyWhatTheLargerToolLeftIsCut) {
+  const std::string rect = polygon({{0, 0}, {40, 0}, {40, 30}, {0, 30}});
+  const Program full = build(R"("pattern":"offset")", {rect});
+  const Program rest = build(R"("pattern":"offset","rest_from":16)", {rect});
+  const PocketCertificate& c = cert(rest);
+  EXPECT_TRUE(c.rest);
+  EXPECT_EQ(c.uncut_area, 0) << "at " << c.uncut_at.x << ", " << c.uncut_at.y;
+  // The 16 mm tool left the four corners: r^2 (1 - pi/4) less this tool's,
+  // each (8^2 - 3^2)(1 - pi/4) = 11.8.
+  EXPECT_NEAR(c.reachable_area, 4 * (64 - 9) * (1 - std::numbers::pi / 4), 2);
+  EXPECT_LT(fed(rest), fed(full) / 3);
+  const auto line = std::find_if(rest.notes.begin(), rest.notes.end(), [](const std::string& s) {
+    return s.find("the tool before left") != std::string::npos;
+  });
+  EXPECT_NE(line, rest.notes.end());
+  // Every move at depth is near a corner: within 8 + 3 of one, on both axes.
+  Vec3 cur;
+  for (const Move& mv : rest.moves) {
+    const Motion* m = motion_of(mv);
+    if (!m) continue;
+    Vec3 to = cur;
+    if (m->axes & kAxisX) to.x = m->to.x;
+    if (m->axes & kAxisY) to.y = m->to.y;
+    if (m->axes & kAxisZ) to.z = m->to.z;
+    if (!is_rapid(mv) && std::abs(to.z + 3) < 1e-9 && std::abs(cur.z + 3) < 1e-9) {
+      const bool corner_x = to.x < 11 || to.x > 29, corner_y = to.y < 11 || to.y > 19;
+      EXPECT_TRUE(corner_x && corner_y) << to.x << ", " << to.y;
+    }
+    cur = to;
+  }
+}
+
+TEST(PocketRest, AdaptiveRestCutsTheCornersWithinTheBound) {
+  const Program p = build(R"("pattern":"adaptive","rest_from":16)", {polygon({{0, 0}, {40, 0}, {40, 30}, {0, 30}})});
+  expect_adaptive(p, 3, 0.9);
+  EXPECT_TRUE(cert(p).rest);
+}
+
+TEST(PocketCheck, TheEngagementBoundCatchesASlot) {
+  // A straight pass through fresh material is a slot: 180 degrees, far
+  // above what a load of a tenth of the radius allows.
+  PocketCheckInput in;
+  in.walls = {{{0, 0, 0}, {40, 0, 0}, {40, 20, 0}, {0, 20, 0}}};
+  in.radius = 3;
+  in.tolerance = 0.01;
+  in.levels = {-3};
+  in.load = 0.3;
+  std::vector<Move> moves;
+  LineMove down;
+  down.to = {5, 10, -3};
+  down.feed = 100;
+  moves.push_back({down});
+  LineMove across = down;
+  across.to = {35, 10, -3};
+  moves.push_back({across});
+  in.moves = &moves;
+  in.to = moves.size();
+  in.start = {5, 10, 5};
+  const PocketCertificate c = check_pocket(in);
+  EXPECT_GE(c.engagement_deg, 170);
+  EXPECT_FALSE(c.engagement_kept());
+  EXPECT_NEAR(c.engagement_bound, std::acos(0.9) * 180 / std::numbers::pi + 2, 1e-9);
+}
+
+}  // namespace
+}  // namespace bezcam
