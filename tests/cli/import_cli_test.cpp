@@ -103,7 +103,7 @@ TEST(ImportCommand, PerEntitySettingsFromTheCommandLine) {
   EXPECT_EQ(r.err_first_line(),
             "bezcam: error: --skip: samples/part.dxf has no layer and no entity matching \"HOLE\"; its layers are "
             "\"HOLES\", \"NOTES\", \"OUTLINE\", its entities \"OUTLINE:2F+7\", \"HOLES:37\", \"HOLES:38\", "
-            "\"HOLES:39\", \"HOLES:3A\", \"HOLES:3B\", \"NOTES:3C\"");
+            "\"HOLES:39\", \"HOLES:3A\", \"HOLES:3B\", \"NOTES:3C\"; its circles' diameters are 5");
   r = bezcam({"convert", "samples/curve-semicircle.json", "--only", "x", "-o", direct.string()});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err_first_line().rfind("bezcam: error: --only: ", 0), 0u) << r.err;
