@@ -7,8 +7,10 @@
 //
 // `check` reads the program's text (LinuxCNC's dialect), replays its
 // moves and runs check_pocket() on them against the case's walls, the
-// same check bezcam's own programs carry in their header: largest
-// engagement and where, uncut area against its limit, the tool centre's
+// same check bezcam's own programs carry in their header, with the case's
+// `load` (adaptive's bound, arccos(1 - load / r) + 2 degrees, and the
+// material near the unreachable places left out): largest engagement
+// and where, uncut area against its limit, the tool centre's
 // nearest approach to a wall, G00 moves below the stock's top; then the
 // length cut and the cycle time on the linuxcnc profile's motion model.
 // One line of JSON.
@@ -151,6 +153,9 @@ int check(const json& doc, const json& c, const char* program) {
   in.from = 0;
   in.to = moves.size();
   in.start = blocks.front().from;
+  // Every program is read with the case's load: the same material near
+  // the unreachable places left out, the same bound on the engagement.
+  in.load = c["load"];
   const PocketCertificate cert = check_pocket(in);
   Timeline tl;
   tl.blocks = blocks;
@@ -158,6 +163,7 @@ int check(const json& doc, const json& c, const char* program) {
   json out = {{"length_mm", length},
               {"engagement_deg", cert.engagement_deg},
               {"engagement_at", {cert.engagement_at.x, cert.engagement_at.y}},
+              {"engagement_bound_deg", cert.engagement_bound},
               {"uncut_mm2", cert.uncut_area},
               {"uncut_limit_mm2", cert.uncut_limit},
               {"unreachable_mm2", cert.unreachable_area},

@@ -30,8 +30,9 @@ cases = json.load(open(sys.argv[1]))["cases"]
 c, secs, who, f = cases[int(sys.argv[2])], float(sys.argv[3]), sys.argv[4], json.loads(sys.argv[5])
 walls = "yes" if f["wall_distance_mm"] >= f["wall_distance_needed_mm"] else "NO (%.3f)" % f["wall_distance_mm"]
 covered = "yes" if f["uncut_mm2"] <= f["uncut_limit_mm2"] else "NO"
-print("| %s | %s | %.3f | %.0f | %.1f | %.1f at %.2f, %.2f | %.2f (limit %.2f) %s | %s | %d |" % (
-    c["name"], who, secs, f["length_mm"], f["cycle_s_linuxcnc"], f["engagement_deg"], f["engagement_at"][0],
+kept = "" if f["engagement_deg"] <= f["engagement_bound_deg"] else " (over %.1f)" % f["engagement_bound_deg"]
+print("| %s | %s | %.3f | %.0f | %.1f | %.1f%s at %.2f, %.2f | %.2f (limit %.2f) %s | %s | %d |" % (
+    c["name"], who, secs, f["length_mm"], f["cycle_s_linuxcnc"], f["engagement_deg"], kept, f["engagement_at"][0],
     f["engagement_at"][1], f["uncut_mm2"], f["uncut_limit_mm2"], covered, walls, f["rapids_below_top"]))
 EOF
 }
