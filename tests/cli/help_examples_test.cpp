@@ -13,19 +13,9 @@
 
 #include "cli/command_line.hpp"
 #include "support/run_process.hpp"
+#include "support/shell_words.hpp"
 
 namespace fs = std::filesystem;
-
-namespace {
-
-std::vector<std::string> words(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> w;
-  for (std::string x; in >> x;) w.push_back(x);
-  return w;
-}
-
-}  // namespace
 
 TEST(HelpExamples, EveryCommandsHelpEndsWithExamples) {
   bezcam::cli::CommandLine cl;
@@ -43,7 +33,7 @@ TEST(HelpExamples, RunAsWritten) {
   size_t ran = 0;
   for (const auto& [command, lines] : bezcam::cli::help_examples()) {
     for (const auto& line : lines) {
-      std::vector<std::string> args = words(line);
+      std::vector<std::string> args = testproc::shell_words(line);
       ASSERT_GE(args.size(), 2u);
       EXPECT_EQ(args[0], "bezcam") << line;
       EXPECT_EQ(args[1], command) << line;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "support/run_process.hpp"
+#include "support/shell_words.hpp"
 
 namespace fs = std::filesystem;
 
@@ -31,15 +32,14 @@ std::vector<std::string> example_lines() {
   return out;
 }
 
-std::vector<std::string> words(std::string line) {
-  if (const size_t hash = line.find(" #"); hash != std::string::npos) line.resize(hash);
-  std::istringstream in(line);
-  std::vector<std::string> w;
-  for (std::string x; in >> x;) w.push_back(x);
-  return w;
-}
-
 }  // namespace
+
+TEST(ReadmeExamples, LinesAreSplitAsTheShellSplitsThem) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(testproc::shell_words("a  b\tc # note"), (V{"a", "b", "c"}));
+  EXPECT_EQ(testproc::shell_words(R"(--set 'k={"a": 1, "b": 2}' x#y)"), (V{"--set", R"(k={"a": 1, "b": 2})", "x#y"}));
+  EXPECT_EQ(testproc::shell_words(R"(--set "circle<4:t=\"2\"" a\ b '')"), (V{"--set", R"(circle<4:t="2")", "a b", ""}));
+}
 
 TEST(ReadmeExamples, RunAsWritten) {
   const auto lines = example_lines();
@@ -53,7 +53,7 @@ TEST(ReadmeExamples, RunAsWritten) {
       ++left_out;
       continue;
     }
-    std::vector<std::string> args = words(line);
+    std::vector<std::string> args = testproc::shell_words(line);
     args.erase(args.begin());  // build/bezcam
     const auto r = testproc::run(BEZCAM_EXE, args, {{"BEZCAM_PROGRESS", "off"}}, dir.path().string());
     EXPECT_EQ(r.status, 0) << line << "\n" << r.err;
