@@ -24,52 +24,14 @@
 #include "bezcam/cam/program_motion.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/machine/planner.hpp"
+#include "support/pocket_shapes.hpp"
 
 using namespace bezcam;
 using Clock = std::chrono::steady_clock;
 
 namespace {
 
-using Pts = std::vector<std::pair<double, double>>;
-
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
-std::string polygon(const Pts& p) {
-  std::string s = R"({"type":"path","closed":true,"segments":[)";
-  for (size_t i = 0; i < p.size(); ++i) {
-    const auto &a = p[i], &b = p[(i + 1) % p.size()];
-    s += std::string(i ? "," : "") + R"({"type":"bezier","points":[[)" + num(a.first) + "," + num(a.second) + "],[" +
-         num(b.first) + "," + num(b.second) + "]]}";
-  }
-  return s + "]}";
-}
-
-std::string circle(double cx, double cy, double r) {
-  const double w = std::sqrt(0.5);
-  std::string s = R"({"type":"path","closed":true,"segments":[)";
-  for (int k = 0; k < 4; ++k) {
-    const double a0 = k * std::numbers::pi / 2, a1 = a0 + std::numbers::pi / 2;
-    s += std::string(k ? "," : "") + R"({"type":"bezier","points":[[)" + num(cx + r * std::cos(a0)) + "," +
-         num(cy + r * std::sin(a0)) + "],[" + num(cx + r * (std::cos(a0) - std::sin(a0))) + "," +
-         num(cy + r * (std::sin(a0) + std::cos(a0))) + "],[" + num(cx + r * std::cos(a1)) + "," +
-         num(cy + r * std::sin(a1)) + "]],\"weights\":[1," + num(w) + ",1]}";
-  }
-  return s + "]}";
-}
-
-Pts star(int n, double ro, double ri) {
-  Pts p;
-  for (int k = 0; k < 2 * n; ++k) {
-    const double a = std::numbers::pi * k / n + std::numbers::pi / 2, r = k % 2 ? ri : ro;
-    p.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  return p;
-}
+using namespace bezcam::test::shapes;
 
 struct Case {
   const char* name;
@@ -97,25 +59,8 @@ std::vector<Case> cases() {
        {polygon({{0, 0}, {16, 0}, {16, 16}, {0, 16}})},
        5},
       {"star, 30 deg tips, 4 mm tool", R"("tool_diameter":4,"stepover":1.6)", {polygon(star(5, 30, 11.46))}, 1.6},
-      {"L 60 x 60, arms 20",
-       R"("tool_diameter":6,"stepover":2.4)",
-       {polygon({{0, 0}, {60, 0}, {60, 20}, {20, 20}, {20, 60}, {0, 60}})},
-       2.4},
-      {"rooms joined by a 4 mm neck",
-       R"("tool_diameter":6,"stepover":2.4)",
-       {polygon({{0, 0},
-                 {20, 0},
-                 {20, 8},
-                 {30, 8},
-                 {30, 0},
-                 {50, 0},
-                 {50, 20},
-                 {30, 20},
-                 {30, 12},
-                 {20, 12},
-                 {20, 20},
-                 {0, 20}})},
-       2.4},
+      {"L 60 x 60, arms 20", R"("tool_diameter":6,"stepover":2.4)", {polygon(l_shape())}, 2.4},
+      {"rooms joined by a 4 mm neck", R"("tool_diameter":6,"stepover":2.4)", {polygon(rooms_with_neck())}, 2.4},
       {"100x100, 2 islands, adaptive",
        R"("tool_diameter":6,"pattern":"adaptive")",
        {polygon(square100), circle(30, 50, 10), circle(70, 50, 10)},
@@ -131,25 +76,10 @@ std::vector<Case> cases() {
        {polygon(star(5, 30, 11.46))},
        0.6,
        true},
-      {"L 60 x 60, arms 20, adaptive",
-       R"("tool_diameter":6,"pattern":"adaptive")",
-       {polygon({{0, 0}, {60, 0}, {60, 20}, {20, 20}, {20, 60}, {0, 60}})},
-       0.9,
-       true},
+      {"L 60 x 60, arms 20, adaptive", R"("tool_diameter":6,"pattern":"adaptive")", {polygon(l_shape())}, 0.9, true},
       {"rooms, 4 mm neck, adaptive",
        R"("tool_diameter":6,"pattern":"adaptive")",
-       {polygon({{0, 0},
-                 {20, 0},
-                 {20, 8},
-                 {30, 8},
-                 {30, 0},
-                 {50, 0},
-                 {50, 20},
-                 {30, 20},
-                 {30, 12},
-                 {20, 12},
-                 {20, 20},
-                 {0, 20}})},
+       {polygon(rooms_with_neck())},
        0.9,
        true},
   };

@@ -10,29 +10,12 @@
 #include "bezcam/cam/pocket_check.hpp"
 #include "bezcam/cam/program.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "support/pocket_shapes.hpp"
 
 namespace bezcam {
 namespace {
 
-using Pts = std::vector<std::pair<double, double>>;
-
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
-std::string polygon(const Pts& p) {
-  std::string s = R"({"type":"path","closed":true,"segments":[)";
-  for (size_t i = 0; i < p.size(); ++i) {
-    const auto& a = p[i];
-    const auto& b = p[(i + 1) % p.size()];
-    s += std::string(i ? "," : "") + R"({"type":"bezier","points":[[)" + num(a.first) + "," + num(a.second) + "],[" +
-         num(b.first) + "," + num(b.second) + "]]}";
-  }
-  return s + "]}";
-}
+using namespace test::shapes;
 
 Program build(const std::string& keys, const std::vector<std::string>& entities) {
   std::string e;
@@ -101,18 +84,7 @@ TEST(PocketAdaptive, LShapeKeepsTheBoundInBothArms) {
 }
 
 TEST(PocketAdaptive, NeckNarrowerThanTheToolIsCutWhereItFitsAndNamed) {
-  const Program p = build(R"("pattern":"adaptive")", {polygon({{0, 0},
-                                                               {20, 0},
-                                                               {20, 8},
-                                                               {30, 8},
-                                                               {30, 0},
-                                                               {50, 0},
-                                                               {50, 20},
-                                                               {30, 20},
-                                                               {30, 12},
-                                                               {20, 12},
-                                                               {20, 20},
-                                                               {0, 20}})});
+  const Program p = build(R"("pattern":"adaptive")", {polygon(rooms_with_neck())});
   expect_adaptive(p, 3, 0.9);
   const PocketCertificate& c = cert(p);
   ASSERT_FALSE(c.unreachable.empty());
@@ -125,18 +97,7 @@ TEST(PocketAdaptive, NeckNarrowerThanTheToolIsCutWhereItFitsAndNamed) {
 TEST(PocketAdaptive, EachPieceIsEnteredByAHelixInsideIt) {
   // The two rooms of the neck each get a helix (G02/G03 descending), and
   // no move at depth joins them (the neck holds no tool position).
-  const Program p = build(R"("pattern":"adaptive")", {polygon({{0, 0},
-                                                               {20, 0},
-                                                               {20, 8},
-                                                               {30, 8},
-                                                               {30, 0},
-                                                               {50, 0},
-                                                               {50, 20},
-                                                               {30, 20},
-                                                               {30, 12},
-                                                               {20, 12},
-                                                               {20, 20},
-                                                               {0, 20}})});
+  const Program p = build(R"("pattern":"adaptive")", {polygon(rooms_with_neck())});
   Vec3 cur;
   int crossings = 0;
   for (const Move& mv : p.moves) {

@@ -11,57 +11,19 @@
 #include "bezcam/cam/program.hpp"
 #include "bezcam/error_ids.hpp"
 #include "bezcam/job/job_json.hpp"
+#include "support/pocket_shapes.hpp"
 #include "support/refusal.hpp"
 
 namespace bezcam {
 namespace {
 
-using Pts = std::vector<std::pair<double, double>>;
-
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
-std::string polygon(const Pts& p, const std::string& extra = "") {
-  std::string s = R"({"type":"path","closed":true)" + extra + R"(,"segments":[)";
-  for (size_t i = 0; i < p.size(); ++i) {
-    const auto& a = p[i];
-    const auto& b = p[(i + 1) % p.size()];
-    s += std::string(i ? "," : "") + R"({"type":"bezier","points":[[)" + num(a.first) + "," + num(a.second) + "],[" +
-         num(b.first) + "," + num(b.second) + "]]}";
-  }
-  return s + "]}";
-}
-
-// A circle as four rational quarters.
-std::string circle(double cx, double cy, double r) {
-  const double w = std::sqrt(0.5);
-  std::string s = R"({"type":"path","closed":true,"segments":[)";
-  for (int k = 0; k < 4; ++k) {
-    const double a0 = k * std::numbers::pi / 2, a1 = a0 + std::numbers::pi / 2;
-    const double mx = cx + r * (std::cos(a0) - std::sin(a0)), my = cy + r * (std::sin(a0) + std::cos(a0));
-    s += std::string(k ? "," : "") + R"({"type":"bezier","points":[[)" + num(cx + r * std::cos(a0)) + "," +
-         num(cy + r * std::sin(a0)) + "],[" + num(mx) + "," + num(my) + "],[" + num(cx + r * std::cos(a1)) + "," +
-         num(cy + r * std::sin(a1)) + "]],\"weights\":[1," + num(w) + ",1]}";
-  }
-  return s + "]}";
-}
+using namespace test::shapes;
 
 Pts rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
 // A star of n points whose tips have the interior angle `tip` (degrees).
-Pts star(int n, double ro, double tip) {
-  auto pts = [&](double ri) {
-    Pts p;
-    for (int k = 0; k < 2 * n; ++k) {
-      const double a = std::numbers::pi * k / n + std::numbers::pi / 2, r = k % 2 ? ri : ro;
-      p.push_back({r * std::cos(a), r * std::sin(a)});
-    }
-    return p;
-  };
+Pts star_with_tips(int n, double ro, double tip) {
+  auto pts = [&](double ri) { return star(n, ro, ri); };
   auto angle = [&](double ri) {
     const Pts p = pts(ri);
     const double ax = p[1].first - p[0].first, ay = p[1].second - p[0].second;
@@ -163,7 +125,7 @@ TEST(Pocket, RectangleWithTwoBossesIsClearedAroundThem) {
 }
 
 TEST(Pocket, StarWithThirtyDegreeTipsIsClearedWhereTheToolFits) {
-  const Program p = build(R"("tool_diameter":4)", {polygon(star(5, 30, 30))});
+  const Program p = build(R"("tool_diameter":4)", {polygon(star_with_tips(5, 30, 30))});
   expect_certified(p, 2);
   // Each tip holds what a 4 mm tool cannot reach: five places.
   EXPECT_EQ(cert(p).unreachable.size(), 5u);
@@ -171,7 +133,7 @@ TEST(Pocket, StarWithThirtyDegreeTipsIsClearedWhereTheToolFits) {
 }
 
 TEST(Pocket, LShapeIsClearedAtEveryStepDown) {
-  const Program p = build(R"("step_down":1.5)", {polygon({{0, 0}, {60, 0}, {60, 20}, {20, 20}, {20, 60}, {0, 60}})});
+  const Program p = build(R"("step_down":1.5)", {polygon(l_shape())});
   expect_certified(p, 3);
   for (double z : {-1.5, -3.0}) {
     const auto path = path_at(p, z);
@@ -185,18 +147,7 @@ TEST(Pocket, LShapeIsClearedAtEveryStepDown) {
 TEST(Pocket, NeckNarrowerThanTheToolIsCutWhereItFitsAndNamed) {
   // Two 20 x 20 rooms joined by a neck 4 wide: a 6 mm tool clears both
   // rooms and says what is left in the neck.
-  const Program p = build("", {polygon({{0, 0},
-                                        {20, 0},
-                                        {20, 8},
-                                        {30, 8},
-                                        {30, 0},
-                                        {50, 0},
-                                        {50, 20},
-                                        {30, 20},
-                                        {30, 12},
-                                        {20, 12},
-                                        {20, 20},
-                                        {0, 20}})});
+  const Program p = build("", {polygon(rooms_with_neck())});
   expect_certified(p, 3);
   const auto path = path_at(p, -3);
   EXPECT_LE(nearest(path, 10, 10), 3);
