@@ -22,11 +22,13 @@ constexpr int kCircle = kAdaptiveCircle;
 
 // The samples of piece `cur` not yet settled within 1.5 load of the settled
 // ones (Chebyshev steps over the grid), with the material on the circle of
-// each, and the settled ones on their edge.
-Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::vector<int>& comp, int cur) const {
+// each, and the settled ones on their edge, of those in `near` (in grid
+// order; every settled sample on the edge is there).
+Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::vector<int>& comp, int cur,
+                              const std::vector<size_t>& near) const {
   Band b;
   auto in_piece = [&](size_t k) { return comp[k] == cur; };
-  for (size_t k = 0; k < g_.size(); ++k) {
+  for (size_t k : near) {
     if (!settled[k] || !in_piece(k)) continue;
     const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
     bool edge = false;
@@ -101,6 +103,32 @@ Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::ve
         }
       }
   }
+  // The squares the ring is looked for from: within reach of the front of
+  // every point smoothing can take onto it (four passes over steps of at
+  // most a twelfth of the radius, or two cells), in grid order.
+  const long reach = static_cast<long>(std::ceil(4 * std::max(2 * g_.cell, r_ / 12) / g_.cell)) + 2;
+  std::deque<size_t> wq;
+  for (size_t k : b.cells) seen[k] = 0, wq.push_back(k), b.seeds.push_back(k);
+  for (size_t k : b.frontier)
+    if (active_[k] == 2) seen[k] = 0, wq.push_back(k), b.seeds.push_back(k);
+  while (!wq.empty()) {
+    const size_t k = wq.front();
+    wq.pop_front();
+    const long d = seen[k];
+    if (d >= reach) continue;
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    for (long dj = -1; dj <= 1; ++dj)
+      for (long di = -1; di <= 1; ++di) {
+        if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
+        const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
+        if (seen[n] >= 0) continue;
+        seen[n] = static_cast<int>(d + 1);
+        wq.push_back(n);
+        b.seeds.push_back(n);
+      }
+  }
+  for (size_t k : b.seeds) seen[k] = -1;
+  std::sort(b.seeds.begin(), b.seeds.end());
   const int cap = static_cast<int>(std::ceil(2 * (target_ / 180) * kCircle)) + 1;
   b.count.resize(b.cells.size());
   for (size_t m = 0; m < b.cells.size(); ++m) b.count[m] = on_circle(g_.sample(b.cells[m]), r_, cap);
@@ -119,18 +147,11 @@ std::vector<Adaptive::Chain> Adaptive::ring(const Band& b, const std::vector<uin
   std::vector<uint8_t>& has = has_;  // 1: in the band, 2: and reached
   f.resize(g_.size());
   has.resize(g_.size(), 0);
-  long i0 = g_.nx, j0 = g_.ny, i1 = 0, j1 = 0;
-  auto box = [&](size_t k) {
-    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
-    i0 = std::min(i0, i), j0 = std::min(j0, j), i1 = std::max(i1, i), j1 = std::max(j1, j);
-  };
-  for (size_t k : b.frontier) box(k);
   for (size_t m = 0; m < b.cells.size(); ++m) {
     const size_t k = b.cells[m];
     const float wall = fwall_[k] / static_cast<float>(r_);
     f[k] = std::max(static_cast<float>(b.count[m]) / kCircle - static_cast<float>(lambda), wall);
     has[k] = 1;
-    box(k);
   }
   // Only what grows from the settled samples (4-connected through f < 0).
   std::deque<size_t> q(b.frontier.begin(), b.frontier.end());
@@ -153,8 +174,8 @@ std::vector<Adaptive::Chain> Adaptive::ring(const Band& b, const std::vector<uin
     return 1.0f;
   };
   std::vector<std::vector<Vec3>> open;
-  auto closed = contours(g_, val, std::max(0L, i0 - 1), std::max(0L, j0 - 1), std::min(g_.nx - 1, i1 + 1),
-                         std::min(g_.ny - 1, j1 + 1), open);
+  done_.resize(g_.size(), 0);
+  auto closed = contours(g_, val, b.seeds, done_, open);
   for (size_t k : b.cells) has[k] = 0;
   std::vector<Chain> out;
   for (auto& l : closed) out.push_back({std::move(l), true});
@@ -294,11 +315,16 @@ std::vector<PocketPass> Adaptive::run() {
       for (size_t k = 0; k < g_.size(); ++k)
         if (comp[k] == cur && dxy(g_.sample(k), *pending_->helix) <= pending_->helix_r) settled[k] = 1;
     }
+    // The settled samples that may lie on the edge (the edge only moves
+    // out, onto samples just grown).
+    std::vector<size_t> near;
+    for (size_t k = 0; k < g_.size(); ++k)
+      if (comp[k] == cur && settled[k]) near.push_back(k);
     for (int round = 0; round < 20000; ++round) {
       double lambda = 2 * target_ / 360;
       std::vector<size_t> grown;
       std::vector<Chain> loops;
-      const Band b = band(settled, comp, cur);
+      const Band b = band(settled, comp, cur, near);
       for (int attempt = 0; attempt < 6; ++attempt, lambda *= 0.8) {
         loops = ring(b, settled, comp, cur, lambda, grown);
         const double w = ring_worst(loops);
@@ -307,6 +333,10 @@ std::vector<PocketPass> Adaptive::run() {
       bool cut = false;
       for (auto& l : loops) cut = take(std::move(l.pts), l.closed) || cut;
       for (size_t k : grown) settled[k] = 1;
+      near = b.frontier;
+      near.insert(near.end(), grown.begin(), grown.end());
+      std::sort(near.begin(), near.end());
+      near.erase(std::unique(near.begin(), near.end()), near.end());
       for (size_t k : b.cells) active_[k] = 0;
       for (size_t k : b.frontier) active_[k] = 0;
       if (b.cells.empty()) break;

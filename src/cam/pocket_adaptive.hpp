@@ -143,8 +143,10 @@ class Adaptive {
   struct Band {
     std::vector<size_t> frontier, cells;
     std::vector<int> count;
+    std::vector<size_t> seeds;  // the squares the ring is looked for from
   };
-  Band band(const std::vector<uint8_t>& settled, const std::vector<int>& comp, int cur) const;
+  Band band(const std::vector<uint8_t>& settled, const std::vector<int>& comp, int cur,
+            const std::vector<size_t>& near) const;
   struct Chain {
     std::vector<Vec3> pts;
     bool closed = true;
@@ -185,6 +187,7 @@ class Adaptive {
   std::vector<Vec3> turn_;             // the last closed turn cut, ending where the tool is
   mutable std::vector<int> seen_;      // scratch, all -1 between uses
   mutable std::vector<float> f_;
+  mutable std::vector<uint8_t> done_;    // scratch, all 0 between uses
   mutable std::vector<uint8_t> has_;     // scratch, all 0 between uses
   mutable std::vector<uint8_t> active_;  // the front this round works on
   std::vector<uint8_t> stuck_;           // band samples of fronts that no ring reached

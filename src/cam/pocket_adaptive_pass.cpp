@@ -237,8 +237,15 @@ bool Adaptive::take(std::vector<Vec3> loop, bool closed) {
     return true;
   }
   if (closed) {
-    size_t s0 = 0;
-    while (t[s0]) ++s0;
+    // Cut open in the middle of its longest stretch off the material, so
+    // that no run's way out to a free point stops at the cut.
+    size_t s0 = 0, best = 0;
+    for (size_t i = 0; i < n; ++i) {
+      if (t[i] || !t[(i + n - 1) % n]) continue;
+      size_t len = 0;
+      while (!t[(i + len) % n]) ++len;
+      if (len > best) best = len, s0 = (i + len / 2) % n;
+    }
     std::rotate(loop.begin(), loop.begin() + static_cast<long>(s0), loop.end());
     std::rotate(t.begin(), t.begin() + static_cast<long>(s0), t.end());
     loop.push_back(loop.front());

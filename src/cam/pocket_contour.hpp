@@ -52,97 +52,128 @@ class WallField {
   std::vector<std::vector<size_t>> bucket_;
 };
 
-// Closed loops round the samples where f < 0 (marching squares), each
-// with that set on its left.
+// The loops round the samples where f < 0 (marching squares), each with
+// that set on its left, that pass through one of the squares `seeds` (by
+// their lower left sample, in order): each is followed square by square
+// from the first seed it crosses, whatever its length, and none other is
+// looked at. A chain the grid's edge cuts goes to `open`. `done` is
+// scratch, all 0 between uses.
 template <class F>
-inline std::vector<std::vector<Vec3>> contours(const PocketGrid& g, const F& f, long i0, long j0, long i1, long j1,
-                                               std::vector<std::vector<Vec3>>& open) {
+inline std::vector<std::vector<Vec3>> contours(const PocketGrid& g, const F& f, const std::vector<size_t>& seeds,
+                                               std::vector<uint8_t>& done, std::vector<std::vector<Vec3>>& open) {
   auto val = [&](long i, long j) { return static_cast<double>(f(static_cast<size_t>(j * g.nx + i))); };
   auto pos = [&](long i, long j) {
     return Vec3{g.x0 + (static_cast<double>(i) + 0.5) * g.cell, g.y0 + (static_cast<double>(j) + 0.5) * g.cell, 0};
   };
   // Edge ids: 2 (j nx + i) for the edge from (i, j) to (i + 1, j), + 1 for (i, j) to (i, j + 1).
   std::unordered_map<long, std::pair<long, Vec3>> next;  // from edge: to edge, and the point on "from"
-  for (long j = j0; j < j1; ++j)
-    for (long i = i0; i < i1; ++i) {
-      const long ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
-      double v[4];
-      bool in[4];
-      for (int k = 0; k < 4; ++k) v[k] = val(ci[k], cj[k]), in[k] = v[k] < 0;
-      const int n_in = in[0] + in[1] + in[2] + in[3];
-      if (n_in == 0 || n_in == 4) continue;
-      // Edge k joins corner k and k + 1.
-      const long eid[4] = {2 * (j * g.nx + i), 2 * (j * g.nx + i + 1) + 1, 2 * ((j + 1) * g.nx + i),
-                           2 * (j * g.nx + i) + 1};
-      auto cross_pt = [&](int k) {
-        const int a = k, b = (k + 1) % 4;
-        const double t = v[a] / (v[a] - v[b]);
-        const Vec3 u = pos(ci[a], cj[a]), w = pos(ci[b], cj[b]);
-        const double s = std::clamp(t, 0.0, 1.0);
-        return Vec3{u.x + (w.x - u.x) * s, u.y + (w.y - u.y) * s, 0};
-      };
-      auto add = [&](int ea, int eb, int corner) {
-        // A segment between edges ea and eb, corner k on its left when inside.
-        Vec3 p = cross_pt(ea);
-        Vec3 q = cross_pt(eb);
-        const Vec3 c = pos(ci[corner], cj[corner]);
-        const double side = (q.x - p.x) * (c.y - p.y) - (q.y - p.y) * (c.x - p.x);
-        long from = eid[ea], to = eid[eb];
-        if ((side > 0) != in[corner]) std::swap(from, to), std::swap(p, q);
-        next[from] = {to, p};
-      };
-      if (n_in == 2 && in[0] == in[2]) {  // a saddle
-        const bool centre_in = (v[0] + v[1] + v[2] + v[3]) < 0;
-        for (int k = 0; k < 4; ++k)
-          if (in[k] != centre_in) add((k + 3) % 4, k, k);
-        continue;
-      }
-      int e[2], m = 0;
-      for (int k = 0; k < 4 && m < 2; ++k)
-        if (in[k] != in[(k + 1) % 4]) e[m++] = k;
-      add(e[0], e[1], in[e[0]] ? e[0] : (e[0] + 1) % 4);
+  std::unordered_map<long, long> prev;                   // to edge: from edge
+  std::vector<size_t> touched;
+  // The segments of square (i, j), once; their "from" edges go to `from`.
+  auto square = [&](long i, long j, std::vector<long>* from) {
+    if (i < 0 || j < 0 || i + 1 >= g.nx || j + 1 >= g.ny) return;
+    const size_t sq = static_cast<size_t>(j * g.nx + i);
+    if (done[sq]) return;
+    done[sq] = 1;
+    touched.push_back(sq);
+    const long ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
+    double v[4];
+    bool in[4];
+    for (int k = 0; k < 4; ++k) v[k] = val(ci[k], cj[k]), in[k] = v[k] < 0;
+    const int n_in = in[0] + in[1] + in[2] + in[3];
+    if (n_in == 0 || n_in == 4) return;
+    // Edge k joins corner k and k + 1.
+    const long eid[4] = {2 * (j * g.nx + i), 2 * (j * g.nx + i + 1) + 1, 2 * ((j + 1) * g.nx + i),
+                         2 * (j * g.nx + i) + 1};
+    auto cross_pt = [&](int k) {
+      const int a = k, b = (k + 1) % 4;
+      const double t = v[a] / (v[a] - v[b]);
+      const Vec3 u = pos(ci[a], cj[a]), w = pos(ci[b], cj[b]);
+      const double s = std::clamp(t, 0.0, 1.0);
+      return Vec3{u.x + (w.x - u.x) * s, u.y + (w.y - u.y) * s, 0};
+    };
+    auto add = [&](int ea, int eb, int corner) {
+      // A segment between edges ea and eb, corner k on its left when inside.
+      Vec3 p = cross_pt(ea);
+      Vec3 q = cross_pt(eb);
+      const Vec3 c = pos(ci[corner], cj[corner]);
+      const double side = (q.x - p.x) * (c.y - p.y) - (q.y - p.y) * (c.x - p.x);
+      long e0 = eid[ea], e1 = eid[eb];
+      if ((side > 0) != in[corner]) std::swap(e0, e1), std::swap(p, q);
+      next[e0] = {e1, p};
+      prev[e1] = e0;
+      if (from) from->push_back(e0);
+    };
+    if (n_in == 2 && in[0] == in[2]) {  // a saddle
+      const bool centre_in = (v[0] + v[1] + v[2] + v[3]) < 0;
+      for (int k = 0; k < 4; ++k)
+        if (in[k] != centre_in) add((k + 3) % 4, k, k);
+      return;
     }
-  // Chains cut open by the window start on an edge no segment ends on.
-  std::unordered_map<long, int> ends;
-  for (const auto& [from, to] : next) ends[to.first] = 1;
+    int e[2], m = 0;
+    for (int k = 0; k < 4 && m < 2; ++k)
+      if (in[k] != in[(k + 1) % 4]) e[m++] = k;
+    add(e[0], e[1], in[e[0]] ? e[0] : (e[0] + 1) % 4);
+  };
+  // The two squares an edge lies between.
+  auto sides = [&](long e) {
+    const long k = e / 2, i = k % g.nx, j = k / g.nx;
+    square(i, j, nullptr);
+    if (e % 2)
+      square(i - 1, j, nullptr);
+    else
+      square(i, j - 1, nullptr);
+  };
+  auto find_next = [&](long e) {
+    auto it = next.find(e);
+    if (it == next.end()) sides(e), it = next.find(e);
+    return it;
+  };
+  auto find_prev = [&](long e) {
+    auto it = prev.find(e);
+    if (it == prev.end()) sides(e), it = prev.find(e);
+    return it;
+  };
   std::vector<std::vector<Vec3>> loops;
-  for (auto it = next.begin(); it != next.end();) {
-    if (ends.count(it->first)) {
-      ++it;
-      continue;
-    }
-    std::vector<Vec3> chain;
-    long at = it->first;
-    it = next.end();
-    while (true) {
-      auto jt = next.find(at);
-      if (jt == next.end()) break;
-      chain.push_back(jt->second.second);
-      at = jt->second.first;
-      next.erase(jt);
-    }
-    if (chain.size() >= 2) open.push_back(std::move(chain));
-    it = next.begin();
-  }
-  while (!next.empty()) {
-    const long start = next.begin()->first;
-    std::vector<Vec3> loop;
-    long at = start;
-    bool closed = false;
-    while (true) {
-      auto it = next.find(at);
-      if (it == next.end()) break;
-      loop.push_back(it->second.second);
-      const long to = it->second.first;
-      next.erase(it);
-      at = to;
-      if (at == start) {
-        closed = true;
-        break;
+  std::vector<long> from;
+  for (size_t sq : seeds) {
+    from.clear();
+    square(static_cast<long>(sq) % g.nx, static_cast<long>(sq) / g.nx, &from);
+    for (long start : from) {
+      if (!next.count(start)) continue;  // taken by a loop already followed
+      std::vector<Vec3> loop;
+      long at = start;
+      bool closed = false;
+      while (!closed) {
+        auto it = find_next(at);
+        if (it == next.end()) break;
+        loop.push_back(it->second.second);
+        const long to = it->second.first;
+        next.erase(it);
+        prev.erase(to);
+        at = to;
+        closed = at == start;
       }
+      if (!closed) {
+        // The grid's edge cuts the chain: its part before `start`, back to that edge.
+        std::vector<Vec3> before;
+        for (auto it = find_prev(start); it != prev.end(); it = find_prev(start)) {
+          const long e = it->second;
+          prev.erase(it);
+          const auto jt = next.find(e);
+          before.push_back(jt->second.second);
+          next.erase(jt);
+          start = e;
+        }
+        loop.insert(loop.begin(), before.rbegin(), before.rend());
+      }
+      if (closed && loop.size() >= 3)
+        loops.push_back(std::move(loop));
+      else if (!closed && loop.size() >= 2)
+        open.push_back(std::move(loop));
     }
-    if (closed && loop.size() >= 3) loops.push_back(std::move(loop));
   }
+  for (size_t sq : touched) done[sq] = 0;
   return loops;
 }
 
