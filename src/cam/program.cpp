@@ -694,7 +694,9 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   for (const Entity& e : job.entities) {
     if (opt.on_entity) opt.on_entity(e.index, job.entities.size(), e.label());
     try {
+      const size_t first = p.entities.size();
       cut_entity(e);
+      for (size_t i = first; i < p.entities.size(); ++i) p.entities[i].plunge_feed = cut_params(job, e, m).plunge_feed;
     } catch (const InputError& x) {
       refusals.add(x, e);
     }

@@ -20,7 +20,8 @@ void add_resume_options(CLI::App* cmd, ResumeArgs& r) {
                   "profile's safe_z)")
       ->needs(from);
   cmd->add_option("--plunge-feed", r.plunge_feed,
-                  "with --from-line: the feed (mm/min) the preamble plunges at (default: the profile's plunge_feed)")
+                  "with --from-line: the feed (mm/min) the preamble plunges at (default: the plunge feed the program's "
+                  "header records for the tool there, else the profile's plunge_feed)")
       ->check(positive_number())
       ->needs(from);
 }
@@ -44,7 +45,8 @@ std::string Resume::apply(std::string program, const std::string& file, const Ma
     if (!r.reason.empty()) std::cerr << ", not " << r.asked_line << " as asked: " << r.reason;
     std::cerr << "\nbezcam: " << who << ": a " << r.preamble_lines << "-line preamble restores the modal state of line "
               << r.start_line << ", retracts to Z" << fmt_num(r.safe_z)
-              << ", moves over the resume point and plunges at F" << fmt_num(r.plunge_feed)
+              << ", moves over the resume point and plunges at F" << fmt_num(r.plunge_feed) << " (" << r.plunge_from
+              << ")"
               << "; the controller numbers the resumed program's lines from 1: line " << r.preamble_lines + 1
               << " is line " << r.start_line << " of " << file << " (add " << r.line_offset()
               << " to the line numbers after " << r.preamble_lines << ")\n";

@@ -92,6 +92,72 @@ std::string barrier(const MachineState& st, const GcodeInterpreter::Continuation
   return {};
 }
 
+// The text of a line's comment in parentheses ("" without one); a line
+// number `N10` before it is allowed.
+std::string_view comment_text(std::string_view l) {
+  const std::size_t open = l.find('('), close = l.rfind(')');
+  if (open == std::string_view::npos || close == std::string_view::npos || close < open) return {};
+  return l.substr(open + 1, close - open - 1);
+}
+
+// The job's plunge feed at the resume line, from the program's header (the
+// writer's lines `T2 plunge feed 200 mm/min`, and `T1 plunge feed 150
+// mm/min: outline` where a tool's entities differ): the tool in the spindle
+// there and, when its entities differ, the entity that the last `entity
+// LABEL:` comment before the line names (the lowest of the tool's feeds
+// when none is named). Unset when the header records none.
+struct HeaderPlunge {
+  double mm_min = 0;
+  std::string what;  ///< where it comes from, for the messages
+};
+std::optional<HeaderPlunge> header_plunge(const std::vector<std::string_view>& lines, int start, int tool) {
+  struct Record {
+    double mm_min;
+    std::string labels;  // "" when the tool's entities share it
+  };
+  std::vector<Record> records;
+  std::string entity;  // the last entity comment before `start`
+  const std::string tool_word = "T" + std::to_string(tool) + " ";
+  for (int l = 1; l < start; ++l) {
+    const std::string_view c = comment_text(lines[static_cast<size_t>(l - 1)]);
+    if (c.rfind("entity ", 0) == 0) entity = std::string(c.substr(7));
+    std::size_t at = c.find("plunge feed ");
+    if (at == std::string_view::npos || !(at == 0 || c.substr(0, at) == tool_word)) continue;
+    at += 12;
+    double v = 0;
+    const auto [end, ec] = std::from_chars(c.data() + at, c.data() + c.size(), v);
+    if (ec != std::errc() || !(v > 0) || !std::isfinite(v)) continue;
+    std::string_view rest = c.substr(static_cast<std::size_t>(end - c.data()));
+    double unit = 0;
+    if (rest.rfind(" mm/min", 0) == 0)
+      unit = 1;
+    else if (rest.rfind(" in/min", 0) == 0)
+      unit = 25.4;
+    else
+      continue;
+    rest.remove_prefix(7);
+    records.push_back({v * unit, rest.rfind(": ", 0) == 0 ? std::string(rest.substr(2)) : std::string()});
+  }
+  if (records.empty()) return std::nullopt;
+  const std::string who =
+      tool > 0 ? "the program's plunge feed for T" + std::to_string(tool) : "the program's plunge feed";
+  if (records.size() == 1) return HeaderPlunge{records.front().mm_min, who};
+  // Per entity: the record that lists the entity the resume line cuts.
+  for (const Record& r : records) {
+    std::size_t i = 0;
+    while (i < r.labels.size()) {
+      std::size_t j = r.labels.find(", ", i);
+      if (j == std::string::npos) j = r.labels.size();
+      const std::string label = r.labels.substr(i, j - i);
+      if (!label.empty() && entity.rfind(label + ":", 0) == 0) return HeaderPlunge{r.mm_min, who + ", entity " + label};
+      i = j + 2;
+    }
+  }
+  const auto low = std::min_element(records.begin(), records.end(),
+                                    [](const Record& a, const Record& b) { return a.mm_min < b.mm_min; });
+  return HeaderPlunge{low->mm_min, who + ", the lowest of its entities'"};
+}
+
 struct Snapshot {
   int line = 0;
   MachineState state;
@@ -197,23 +263,20 @@ ResumePlan plan_resume(std::string_view program, const MachineProfile* profile, 
                      "cannot resume there: the program has " + std::to_string(total) + " line" +
                          (total == 1 ? "" : "s") + (line < 1 ? " and lines count from 1" : ""));
 
-  // Safe height and plunge feed, in mm until the program's units are known.
-  std::optional<double> safe_mm = settings.safe_z_mm, plunge_mm = settings.plunge_feed_mm_min;
+  // Safe height, in mm until the program's units are known; the plunge
+  // feed once the tool at the resume line is known (plunge_feed_mm()).
+  std::optional<double> safe_mm = settings.safe_z_mm;
   if (!safe_mm && profile) safe_mm = profile->defaults.safe_z;
-  if (!plunge_mm && profile) plunge_mm = profile->defaults.plunge_feed;
   const std::string from_where = profile ? ", and machine \"" + profile->name + "\" has no default" : "";
   if (!safe_mm)
     throw InputError(errc::resume_setting, Place::at_setting("safe_z"),
                      "the safe height to retract to is not given" + from_where);
-  if (!plunge_mm)
-    throw InputError(errc::resume_setting, Place::at_setting("plunge_feed"),
-                     "the plunge feed is not given" + from_where);
   if (!std::isfinite(*safe_mm))
     throw InputError(errc::resume_setting, Place::at_setting("safe_z"),
                      "expected a finite safe height, found " + fmt_num(*safe_mm));
-  if (!(*plunge_mm > 0) || !std::isfinite(*plunge_mm))
+  if (settings.plunge_feed_mm_min && !(*settings.plunge_feed_mm_min > 0 && std::isfinite(*settings.plunge_feed_mm_min)))
     throw InputError(errc::resume_setting, Place::at_setting("plunge_feed"),
-                     "expected a plunge feed > 0 mm/min, found " + fmt_num(*plunge_mm));
+                     "expected a plunge feed > 0 mm/min, found " + fmt_num(*settings.plunge_feed_mm_min));
 
   // Run the lines before `line` through the reader, remembering the last
   // line where a cut may begin and the state before it.
@@ -265,6 +328,25 @@ ResumePlan plan_resume(std::string_view program, const MachineProfile* profile, 
   if (snap.line != line) plan.reason = "line " + std::to_string(line) + " is no place to begin a cut: " + why_not;
   const double unit = mm_per_unit(snap.state.units);
   plan.safe_z = *safe_mm / unit;
+  // The plunge feed: as given, else the job's from the program's header,
+  // else the profile's.
+  std::optional<double> plunge_mm = settings.plunge_feed_mm_min;
+  plan.plunge_from = "--plunge-feed";
+  if (!plunge_mm) {
+    if (const auto h = header_plunge(lines, snap.line, snap.state.tool)) {
+      plunge_mm = h->mm_min;
+      plan.plunge_from = h->what;
+    } else if (profile && profile->defaults.plunge_feed) {
+      plunge_mm = profile->defaults.plunge_feed;
+      plan.plunge_from = "machine " + profile->name + "'s plunge_feed";
+    }
+  }
+  if (!plunge_mm)
+    throw InputError(errc::resume_setting, Place::at_setting("plunge_feed"),
+                     "the plunge feed is not given, the program's header records none" + from_where);
+  if (!(*plunge_mm > 0) || !std::isfinite(*plunge_mm))
+    throw InputError(errc::resume_setting, Place::at_setting("plunge_feed"),
+                     "expected a plunge feed > 0 mm/min, found " + fmt_num(*plunge_mm));
   plan.plunge_feed = *plunge_mm / unit;
 
   std::vector<std::string> blocks = preamble_blocks(snap, plan.safe_z, plan.plunge_feed);

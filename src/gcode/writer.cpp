@@ -67,6 +67,7 @@ class Writer {
          format_bound(p_.max_bound, 4) + " " + u + ", rounding included");
     if (m_.comments) {
       tools();
+      plunge_feeds();
       registers();
       cycle_time();
     }
@@ -138,6 +139,28 @@ class Writer {
                ": ";
       note("T" + std::to_string(tool) + ": " + what + labels);
     }
+  }
+  // The plunge feed of each tool (`T2 plunge feed 200 mm/min`), per entity
+  // where a tool's entities differ (`T1 plunge feed 150 mm/min: outline`):
+  // a resume plunges at the job's feed, not the profile's (resume.hpp).
+  void plunge_feeds() {
+    std::vector<std::pair<int, std::vector<std::pair<double, std::string>>>> by_tool;  // tool -> (feed, labels)
+    for (const EntityReport& e : p_.entities) {
+      if (!(e.plunge_feed > 0)) continue;
+      auto t = std::find_if(by_tool.begin(), by_tool.end(), [&](const auto& x) { return x.first == e.tool; });
+      if (t == by_tool.end()) t = by_tool.insert(by_tool.end(), {e.tool, {}});
+      auto f =
+          std::find_if(t->second.begin(), t->second.end(), [&](const auto& x) { return x.first == e.plunge_feed; });
+      if (f == t->second.end())
+        t->second.push_back({e.plunge_feed, e.label});
+      else
+        f->second += ", " + e.label;
+    }
+    const std::string u = p_.units == Units::inch ? " in/min" : " mm/min";
+    for (const auto& [tool, feeds] : by_tool)
+      for (const auto& [feed, labels] : feeds)
+        note((tool >= 0 ? "T" + std::to_string(tool) + " " : std::string()) + "plunge feed " +
+             format_significant(feed, 6) + u + (feeds.size() > 1 ? ": " + labels : std::string()));
   }
   // Under the controller's compensation (G41/G42 D-), what each D register
   // must hold, next to the tools: the operator sets the tool table from it.

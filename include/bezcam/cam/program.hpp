@@ -32,6 +32,9 @@ struct EntityReport {
   /// between passes. NaN: none (safe Z).
   double clear_z = std::numeric_limits<double>::quiet_NaN();
   int tool = -1;  ///< the tool that cuts it
+  /// The feed (units/min) it plunges at, the job's `plunge_feed` for it; the
+  /// program's header records it for resuming (docs/resume.md).
+  double plunge_feed = 0;
   /// Part cutting: the tool centre's distance from the curve (tool radius +
   /// stock to leave; 0 on the curve), and the stretches of the curve the
   /// tool cannot reach (material left).

@@ -26,8 +26,10 @@
 namespace bezcam {
 
 /// Safe height and plunge feed of the preamble, in mm and mm/min (converted
-/// for a G20 program). Unset: the profile's defaults (`safe_z`,
-/// `plunge_feed`).
+/// for a G20 program). Unset: the profile's `safe_z`; the plunge feed the
+/// program's header records for the tool (and entity) at the resume line
+/// (`T2 plunge feed 200 mm/min`, as bezcam writes it), else the profile's
+/// `plunge_feed`.
 struct ResumeSettings {
   std::optional<double> safe_z_mm;
   std::optional<double> plunge_feed_mm_min;
@@ -42,6 +44,9 @@ struct ResumePlan {
   MachineState state;      ///< the reader's state before start_line, in a run from the start
   double safe_z = 0;       ///< the preamble's safe height, program units
   double plunge_feed = 0;  ///< the preamble's plunge feed, program units per minute
+  /// Where the plunge feed comes from: "--plunge-feed" (given), "the
+  /// program's plunge feed for T2" (its header), "machine M's plunge_feed".
+  std::string plunge_from;
   std::string preamble;    ///< the preamble's text, one block per line, each ended by '\n'
   int preamble_lines = 0;  ///< its line count
   std::string program;     ///< preamble + the original text from start_line on
