@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-bspline-3d-ramp.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009623 mm, proven bound 0.009995 mm, rounding included)
 (T2: ramp)
+(T2 plunge feed 200 mm/min)
 (estimated cycle time 23 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 13.24 s; the exact path's bound on this machine 13.21 s [x1.001; rapids, plunges and pauses not counted])
 G21 G90 G17

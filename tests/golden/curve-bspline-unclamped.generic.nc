@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-bspline-unclamped.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009502 mm, proven bound 0.009606 mm, rounding included)
 (T1: uniform-cubic)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 22 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 12.81 s; the exact path's bound on this machine 12.78 s [x1.002; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-bspline-wave.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009541 mm, proven bound 0.00996 mm, rounding included)
 (T1: wave)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 20 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 11.22 s; the exact path's bound on this machine 11.19 s [x1.002; rapids, plunges and pauses not counted])
 G21 G90 G17

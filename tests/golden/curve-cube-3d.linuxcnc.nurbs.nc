@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-cube-3d.json, machine linuxcnc, output nurbs)
 (tolerance 0.001 mm; largest deviation measured 0.0009976 mm, proven bound 0.0009996 mm, rounding included)
 (T1: cube-base-curve)
+(T1 plunge feed 100 mm/min)
 (estimated cycle time 4 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 (cutting along the curves 0.28 s; the exact path's bound on this machine 0.25 s [x1.064; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-exercise-1.json, machine linuxcnc, output nurbs)
 (tolerance 0.01 mm; largest deviation measured 0 mm, proven bound 0 mm, rounding included)
 (T1: seed-ex-1)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 2 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 (cutting along the curves 0.23 s; the exact path's bound on this machine 0.21 s [x1.042; rapids, plunges and pauses not counted])
 G21 G90 G17

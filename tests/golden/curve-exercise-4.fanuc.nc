@@ -3,28 +3,29 @@ O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-4.json, machine fanuc, output lines)
 N20 (tolerance 0.01 mm; largest deviation measured 0.00913 mm, proven bound 0.009541 mm, rounding included)
 N30 (T1: seed-ex-4)
-N40 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
-N50 (cutting along the curves 0.31 s; the exact path's bound on this machine 0.27 s [x1.150; rapids, plunges and pauses not counted])
-N60 G21 G90 G17
-N70 G40 G49 G80 G94
-N80 G54
-N90 G53 G00 Z0.
-N100 T1 M06
-N110 G43 H1
-N120 S12000 M03
-N130 (entity seed-ex-4: bezier, degree 3, 2D)
-N140 G00 Z5.
-N150 X0. Y0.
-N160 G01 Z-0.5 F200.
-N170 X0.372 Y0.035 F600.
-N180 X0.783 Y0.186
-N190 X1.057 Y0.389
-N200 X1.16 Y0.574
-N210 X1.129 Y0.731
-N220 X0.958 Y0.867
-N230 X0.575 Y0.972
-N240 X0. Y1.
-N250 G00 Z5.
-N260 M05
-N270 M30
+N40 (T1 plunge feed 200 mm/min)
+N50 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
+N60 (cutting along the curves 0.31 s; the exact path's bound on this machine 0.27 s [x1.150; rapids, plunges and pauses not counted])
+N70 G21 G90 G17
+N80 G40 G49 G80 G94
+N90 G54
+N100 G53 G00 Z0.
+N110 T1 M06
+N120 G43 H1
+N130 S12000 M03
+N140 (entity seed-ex-4: bezier, degree 3, 2D)
+N150 G00 Z5.
+N160 X0. Y0.
+N170 G01 Z-0.5 F200.
+N180 X0.372 Y0.035 F600.
+N190 X0.783 Y0.186
+N200 X1.057 Y0.389
+N210 X1.16 Y0.574
+N220 X1.129 Y0.731
+N230 X0.958 Y0.867
+N240 X0.575 Y0.972
+N250 X0. Y1.
+N260 G00 Z5.
+N270 M05
+N280 M30
 %

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-exercise-7.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009371 mm, proven bound 0.009967 mm, rounding included)
 (T1: seed-ex-7)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 0.36 s; the exact path's bound on this machine 0.34 s [x1.044; rapids, plunges and pauses not counted])
 G21 G90 G17

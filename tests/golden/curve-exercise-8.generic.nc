@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-exercise-8.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009338 mm, proven bound 0.009741 mm, rounding included)
 (T1: seed-ex-8)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 0.35 s; the exact path's bound on this machine 0.33 s [x1.049; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-interpolate-airfoil.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009438 mm, proven bound 0.009589 mm, rounding included)
 (T1: upper-surface)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 17 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 7.93 s; the exact path's bound on this machine 7.90 s [x1.003; rapids, plunges and pauses not counted])
 G21 G90 G17

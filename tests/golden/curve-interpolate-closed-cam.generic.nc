@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-interpolate-closed-cam.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.00946 mm, proven bound 0.009942 mm, rounding included)
 (T1: cam)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 24 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 14.77 s; the exact path's bound on this machine 14.74 s [x1.002; rapids, plunges and pauses not counted])
 G21 G90 G17

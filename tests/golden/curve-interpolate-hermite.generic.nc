@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-interpolate-hermite.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.00944 mm, proven bound 0.009832 mm, rounding included)
 (T1: swoosh, clamped-wave)
+(T1 plunge feed 250 mm/min)
 (estimated cycle time 20 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 9.52 s; the exact path's bound on this machine 9.47 s [x1.005; rapids, plunges and pauses not counted])
 (order shortest: 0 nested contours cut before what encloses them; rapids 15.6 mm in XY instead of 71 mm as written [55.4 mm saved])

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-nurbs-circle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009814 mm, proven bound 0.01 mm, rounding included)
 (T1: circle-d80)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 24 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 15.10 s; the exact path's bound on this machine 15.07 s [x1.002; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -3,6 +3,7 @@ O1000 (BEZCAM)
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine fanuc-g063, output nurbs)
 (tolerance 0.01 mm; largest deviation measured 0.0002591 mm, proven bound 0.0002913 mm, rounding included)
 (T1: quarter-circle-r10)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 8 s on the motion model of machine fanuc-g063 [acceleration, corners, tool changes])
 (cutting along the curves 0.98 s; the exact path's bound on this machine 0.94 s [x1.040; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-rational-quarter-circle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009731 mm, proven bound 0.009992 mm, rounding included)
 (T1: quarter-circle-r10)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 0.97 s; the exact path's bound on this machine 0.94 s [x1.025; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output arcs)
 (tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004892 mm, rounding included)
 (T1: semicircle-r3)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 0.72 s; the exact path's bound on this machine 0.71 s [x1.015; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output lines)
 (tolerance 0.005 mm; largest deviation measured 0.004592 mm, proven bound 0.004713 mm, rounding included)
 (T1: semicircle-r3)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 0.73 s; the exact path's bound on this machine 0.71 s [x1.028; rapids, plunges and pauses not counted])
 G21 G90 G17

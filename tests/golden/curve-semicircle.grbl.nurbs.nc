@@ -1,6 +1,7 @@
 (bezcam 0.1.0: curve-semicircle.json, machine grbl, output nurbs)
 (tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004892 mm, rounding included)
 (T1: semicircle-r3)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 6 s on the motion model of machine grbl [acceleration, corners, tool changes])
 (cutting along the curves 0.74 s; the exact path's bound on this machine 0.71 s [x1.034; rapids, plunges and pauses not counted])
 (machine grbl has no NURBS words: nurbs output cuts with arcs [G02/G03] and G01 lines)

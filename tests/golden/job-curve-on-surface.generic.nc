@@ -3,6 +3,8 @@
 (tolerance 0.01 mm; largest deviation measured 0.009758 mm, proven bound 0.009999 mm, rounding included)
 (T1: 10 mm ball end mill: wing)
 (T2: wheel-arch)
+(T1 plunge feed 400 mm/min)
+(T2 plunge feed 400 mm/min)
 (estimated cycle time 38 min 37 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 0 nested contours cut before what encloses them; rapids 917.9 mm in XY instead of 917.9 mm as written [0 mm saved])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: job-exercises-all.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009643 mm, proven bound 0.009993 mm, rounding included)
 (T1: seed-ex-1, seed-ex-4, seed-ex-7, seed-ex-8, seed-ex-5, seed-ex-2, seed-ex-3, seed-ex-6, seed-ex-9)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 28 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 2.86 s; the exact path's bound on this machine 2.70 s [x1.054; rapids, plunges and pauses not counted])
 (order shortest: 0 nested contours cut before what encloses them; rapids 33.4 mm in XY instead of 76.8 mm as written [43.4 mm saved])

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: job-finish-pass.json, machine generic, output lines)
 (tolerance 0.001 mm; largest deviation measured 0.000885 mm, proven bound 0.0009863 mm, rounding included)
 (T2: teardrop-finish)
+(T2 plunge feed 300 mm/min)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 1.37 s; the exact path's bound on this machine 1.17 s [x1.167; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: job-inch-semicircle.json, machine generic, output lines)
 (tolerance 0.0005 inch; largest deviation measured 0.0004705 inch, proven bound 0.000472 inch, rounding included)
 (T1: semicircle-inch)
+(T1 plunge feed 10 in/min)
 (estimated cycle time 24 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 14.30 s; the exact path's bound on this machine 14.27 s [x1.002; rapids, plunges and pauses not counted])
 G20 G90 G17

@@ -3,6 +3,8 @@
 (tolerance 0.01 mm; largest deviation measured 0.009512 mm, proven bound 0.009806 mm, rounding included)
 (T2: engraving)
 (T1: pocket-outline)
+(T2 plunge feed 250 mm/min)
+(T1 plunge feed 250 mm/min)
 (estimated cycle time 23 s on the motion model of machine grbl [acceleration, corners, tool changes])
 (cutting along the curves 15.32 s; the exact path's bound on this machine 15.23 s [x1.005; rapids, plunges and pauses not counted])
 (order shortest: 1 nested contour cut before what encloses them; rapids 26.9 mm in XY instead of 13.5 mm as written [13.5 mm more: nested contours first, one tool at a time])

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: part-cam-notch.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009805 mm, proven bound 0.01 mm, rounding included)
 (T1: 8 mm flat end mill: cam-profile, notched-disc)
+(T1 plunge feed 250 mm/min)
 (estimated cycle time 1 min 22 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 0 nested contours cut before what encloses them; rapids 70 mm in XY instead of 118.9 mm as written [48.9 mm saved])
 G21 G90 G17

@@ -3,6 +3,8 @@
 (tolerance 0.01 mm; largest deviation measured 0.009892 mm, proven bound 0.01 mm, rounding included)
 (T2: 3 mm flat end mill: bolt-1, bolt-2, bolt-3, bolt-4)
 (T1: 6 mm bull nose end mill [bull D6 r0.5 flutes 2.5]: bore, outline)
+(T2 plunge feed 200 mm/min)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 2 min 49 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 5 nested contours cut before what encloses them; rapids 215.2 mm in XY instead of 242.3 mm as written [27 mm saved])
 G21 G90 G17

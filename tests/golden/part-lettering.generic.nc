@@ -2,6 +2,7 @@
 (bezcam 0.1.0: part-lettering.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.00969 mm, proven bound 0.009999 mm, rounding included)
 (T3: S, C)
+(T3 plunge feed 100 mm/min)
 (estimated cycle time 23 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 0 nested contours cut before what encloses them; rapids 67.2 mm in XY instead of 67.2 mm as written [0 mm saved])
 G21 G90 G17

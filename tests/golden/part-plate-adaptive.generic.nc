@@ -2,6 +2,7 @@
 (bezcam 0.1.0: part-plate-adaptive.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.00961 mm, proven bound 0.009977 mm, rounding included)
 (T1: 6 mm flat end mill: recess, outline)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 9 min 31 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 3 nested contours cut before what encloses them; rapids 79.1 mm in XY instead of 79.1 mm as written [0 mm saved])
 (pocket recess: uncut 0 mm^2 at the worst level, limit 1.626 = tolerance x perimeter; checked on a 0.02529 mm grid)

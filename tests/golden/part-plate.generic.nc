@@ -2,6 +2,7 @@
 (bezcam 0.1.0: part-plate.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009595 mm, proven bound 0.009993 mm, rounding included)
 (T1: 6 mm flat end mill: recess, outline)
+(T1 plunge feed 200 mm/min)
 (estimated cycle time 9 min 19 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 5 nested contours cut before what encloses them; rapids 124.8 mm in XY instead of 152.7 mm as written [27.9 mm saved])
 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03638 mm grid)

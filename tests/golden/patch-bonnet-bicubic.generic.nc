@@ -2,6 +2,7 @@
 (bezcam 0.1.0: patch-bonnet-bicubic.json, machine generic, output lines)
 (tolerance 0.05 mm; largest deviation measured 0.04702 mm, proven bound 0.04801 mm, rounding included)
 (T1: 20 mm ball end mill: bonnet)
+(T1 plunge feed 500 mm/min)
 (estimated cycle time 43 min 20 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94

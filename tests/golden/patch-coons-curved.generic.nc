@@ -2,6 +2,7 @@
 (bezcam 0.1.0: patch-coons-curved.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009014 mm, proven bound 0.009991 mm, rounding included)
 (T2: 8 mm ball end mill: coons-panel)
+(T2 plunge feed 250 mm/min)
 (estimated cycle time 27 min 56 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: patch-saddle.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.008946 mm, proven bound 0.009981 mm, rounding included)
 (T3: 6 mm ball end mill: saddle)
+(T3 plunge feed 300 mm/min)
 (estimated cycle time 5 min 53 s on the motion model of machine generic [acceleration, corners, tool changes])
 G21 G90 G17
 G40 G49 G80 G94

@@ -3,6 +3,7 @@ O1000 (BEZCAM)
 (bezcam 0.1.0: path-closed-teardrop.json, machine fanuc-g063, output nurbs)
 (tolerance 0.01 mm; largest deviation measured 0 mm, proven bound 0 mm, rounding included)
 (T2: teardrop)
+(T2 plunge feed 300 mm/min)
 (estimated cycle time 14 s on the motion model of machine fanuc-g063 [acceleration, corners, tool changes])
 (cutting along the curves 7.10 s; the exact path's bound on this machine 7.05 s [x1.005; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: path-closed-teardrop.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.00946 mm, proven bound 0.009865 mm, rounding included)
 (T2: teardrop)
+(T2 plunge feed 300 mm/min)
 (estimated cycle time 16 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 7.08 s; the exact path's bound on this machine 7.05 s [x1.003; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: path-mixed-bezier-bspline.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009405 mm, proven bound 0.009798 mm, rounding included)
 (T1: lead-in-spline-lead-out)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 21 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 12.34 s; the exact path's bound on this machine 12.32 s [x1.002; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: path-mixed-closed-keyhole.json, machine generic, output lines)
 (tolerance 0.01 mm; largest deviation measured 0.009764 mm, proven bound 0.009982 mm, rounding included)
 (T3: keyhole)
+(T3 plunge feed 300 mm/min)
 (estimated cycle time 17 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 8.76 s; the exact path's bound on this machine 8.71 s [x1.005; rapids, plunges and pauses not counted])
 G21 G90 G17

@@ -3,131 +3,132 @@ O1000 (BEZCAM)
 N10 (bezcam 0.1.0: logo.svg, machine fanuc, output nurbs)
 N20 (tolerance 0.01 mm; largest deviation measured 0.000425 mm, proven bound 0.0004621 mm, rounding included)
 N30 (T1: dot, b, b.2, z, wave, eye, frame)
-N40 (estimated cycle time 30 s on the motion model of machine fanuc [acceleration, corners, tool changes])
-N50 (cutting along the curves 14.97 s; the exact path's bound on this machine 14.50 s [x1.032; rapids, plunges and pauses not counted])
-N60 (order shortest: 6 nested contours cut before what encloses them; rapids 53.1 mm in XY instead of 118.5 mm as written [65.4 mm saved])
-N70 G21 G90 G17
-N80 G40 G49 G80 G94
-N90 G54
-N100 G53 G00 Z0.
-N110 T1 M06
-N120 G43 H1
-N130 S12000 M03
-N140 (entity dot: path, degree 2, rational, 2D)
-N150 G00 Z5.
-N160 X7. Y6.
-N170 G01 Z-0.5 F300.
-N180 G06.2 P3 K0. X7. Y6. Z-0.5 R1. F1200.
-N190 K0. X8. Y6. Z-0.5 R0.7071
-N200 K0. X8. Y5. Z-0.5 R1.
-N210 K1. X8. Y4. Z-0.5 R0.7071
-N220 K1. X7. Y4. Z-0.5 R1.
-N230 K2. X6. Y4. Z-0.5 R0.7071
-N240 K2. X6. Y5. Z-0.5 R1.
-N250 K3. X6. Y6. Z-0.5 R0.7071
-N260 K3. X7. Y6. Z-0.5 R1.
-N270 K4.
+N40 (T1 plunge feed 300 mm/min)
+N50 (estimated cycle time 30 s on the motion model of machine fanuc [acceleration, corners, tool changes])
+N60 (cutting along the curves 14.97 s; the exact path's bound on this machine 14.50 s [x1.032; rapids, plunges and pauses not counted])
+N70 (order shortest: 6 nested contours cut before what encloses them; rapids 53.1 mm in XY instead of 118.5 mm as written [65.4 mm saved])
+N80 G21 G90 G17
+N90 G40 G49 G80 G94
+N100 G54
+N110 G53 G00 Z0.
+N120 T1 M06
+N130 G43 H1
+N140 S12000 M03
+N150 (entity dot: path, degree 2, rational, 2D)
+N160 G00 Z5.
+N170 X7. Y6.
+N180 G01 Z-0.5 F300.
+N190 G06.2 P3 K0. X7. Y6. Z-0.5 R1. F1200.
+N200 K0. X8. Y6. Z-0.5 R0.7071
+N210 K0. X8. Y5. Z-0.5 R1.
+N220 K1. X8. Y4. Z-0.5 R0.7071
+N230 K1. X7. Y4. Z-0.5 R1.
+N240 K2. X6. Y4. Z-0.5 R0.7071
+N250 K2. X6. Y5. Z-0.5 R1.
+N260 K3. X6. Y6. Z-0.5 R0.7071
+N270 K3. X7. Y6. Z-0.5 R1.
 N280 K4.
 N290 K4.
-N300 G00 Z5.
-N310 (entity b: path, degree 1, 2D)
-N320 G01 Z-0.5 F300.
-N330 Y24. F1200.
-N340 G00 Z5.
-N350 (entity b.2: path, degree 2, rational, 2D)
-N360 X11. Y14.
-N370 G01 Z-0.5 F300.
-N380 G06.2 P3 K0. X11. Y14. Z-0.5 R1. F1200.
-N390 K0. X15. Y14. Z-0.5 R0.7071
-N400 K0. X15. Y10. Z-0.5 R1.
-N410 K1. X15. Y6. Z-0.5 R0.7071
-N420 K1. X11. Y6. Z-0.5 R1.
-N430 K2. X7. Y6. Z-0.5 R0.7071
-N440 K2. X7. Y10. Z-0.5 R1.
-N450 K3. X7. Y14. Z-0.5 R0.7071
-N460 K3. X11. Y14. Z-0.5 R1.
-N470 K4.
+N300 K4.
+N310 G00 Z5.
+N320 (entity b: path, degree 1, 2D)
+N330 G01 Z-0.5 F300.
+N340 Y24. F1200.
+N350 G00 Z5.
+N360 (entity b.2: path, degree 2, rational, 2D)
+N370 X11. Y14.
+N380 G01 Z-0.5 F300.
+N390 G06.2 P3 K0. X11. Y14. Z-0.5 R1. F1200.
+N400 K0. X15. Y14. Z-0.5 R0.7071
+N410 K0. X15. Y10. Z-0.5 R1.
+N420 K1. X15. Y6. Z-0.5 R0.7071
+N430 K1. X11. Y6. Z-0.5 R1.
+N440 K2. X7. Y6. Z-0.5 R0.7071
+N450 K2. X7. Y10. Z-0.5 R1.
+N460 K3. X7. Y14. Z-0.5 R0.7071
+N470 K3. X11. Y14. Z-0.5 R1.
 N480 K4.
 N490 K4.
-N500 G00 Z5.
-N510 (entity z: path, degree 1, 2D)
-N520 X19.
-N530 G01 Z-0.5 F300.
-N540 X26. F1200.
-N550 X19. Y6.
-N560 X26.
-N570 G00 Z5.
-N580 (entity wave: path, degree 3, 2D)
-N590 X30. Y10.
-N600 G01 Z-0.5 F300.
-N610 G06.2 P4 K0. X30. Y10. Z-0.5 R1. F1200.
-N620 K0. X32. Y15. Z-0.5 R1.
-N630 K0. X34. Y15. Z-0.5 R1.
-N640 K0. X36. Y10. Z-0.5 R1.
-N650 K1. X38. Y5. Z-0.5 R1.
-N660 K1. X40. Y5. Z-0.5 R1.
-N670 K1. X42. Y10. Z-0.5 R1.
-N680 K2.
+N500 K4.
+N510 G00 Z5.
+N520 (entity z: path, degree 1, 2D)
+N530 X19.
+N540 G01 Z-0.5 F300.
+N550 X26. F1200.
+N560 X19. Y6.
+N570 X26.
+N580 G00 Z5.
+N590 (entity wave: path, degree 3, 2D)
+N600 X30. Y10.
+N610 G01 Z-0.5 F300.
+N620 G06.2 P4 K0. X30. Y10. Z-0.5 R1. F1200.
+N630 K0. X32. Y15. Z-0.5 R1.
+N640 K0. X34. Y15. Z-0.5 R1.
+N650 K0. X36. Y10. Z-0.5 R1.
+N660 K1. X38. Y5. Z-0.5 R1.
+N670 K1. X40. Y5. Z-0.5 R1.
+N680 K1. X42. Y10. Z-0.5 R1.
 N690 K2.
 N700 K2.
 N710 K2.
-N720 G06.2 P3 K0. X42. Y10. Z-0.5 R1.
-N730 K0. X45. Y15. Z-0.5 R1.
-N740 K0. X48. Y10. Z-0.5 R1.
-N750 K1. X51. Y5. Z-0.5 R1.
-N760 K1. X54. Y10. Z-0.5 R1.
-N770 K2.
+N720 K2.
+N730 G06.2 P3 K0. X42. Y10. Z-0.5 R1.
+N740 K0. X45. Y15. Z-0.5 R1.
+N750 K0. X48. Y10. Z-0.5 R1.
+N760 K1. X51. Y5. Z-0.5 R1.
+N770 K1. X54. Y10. Z-0.5 R1.
 N780 K2.
 N790 K2.
-N800 G00 Z5.
-N810 (entity eye: path, degree 2, rational, 2D)
-N820 X52.819 Y23.026
-N830 G01 Z-0.5 F300.
-N840 G06.2 P3 K0. X52.819 Y23.026 Z-0.5 R1. F1200.
-N850 K0. X53.332 Y21.617 Z-0.5 R0.7071
-N860 K0. X50.513 Y20.59 Z-0.5 R1.
-N870 K1. X47.694 Y19.564 Z-0.5 R0.7071
-N880 K1. X47.181 Y20.974 Z-0.5 R1.
-N890 K2. X46.668 Y22.383 Z-0.5 R0.7071
-N900 K2. X49.487 Y23.41 Z-0.5 R1.
-N910 K3. X52.306 Y24.436 Z-0.5 R0.7071
-N920 K3. X52.819 Y23.026 Z-0.5 R1.
-N930 K4.
+N800 K2.
+N810 G00 Z5.
+N820 (entity eye: path, degree 2, rational, 2D)
+N830 X52.819 Y23.026
+N840 G01 Z-0.5 F300.
+N850 G06.2 P3 K0. X52.819 Y23.026 Z-0.5 R1. F1200.
+N860 K0. X53.332 Y21.617 Z-0.5 R0.7071
+N870 K0. X50.513 Y20.59 Z-0.5 R1.
+N880 K1. X47.694 Y19.564 Z-0.5 R0.7071
+N890 K1. X47.181 Y20.974 Z-0.5 R1.
+N900 K2. X46.668 Y22.383 Z-0.5 R0.7071
+N910 K2. X49.487 Y23.41 Z-0.5 R1.
+N920 K3. X52.306 Y24.436 Z-0.5 R0.7071
+N930 K3. X52.819 Y23.026 Z-0.5 R1.
 N940 K4.
 N950 K4.
-N960 G00 Z5.
-N970 (entity frame: path, degree 2, rational, 2D)
-N980 X55. Y29.
-N990 G01 Z-0.5 F300.
-N1000 G06.2 P3 K0. X55. Y29. Z-0.5 R1. F1200.
-N1010 K0. X59. Y29. Z-0.5 R0.7071
-N1020 K0. X59. Y25. Z-0.5 R1.
-N1030 K1.
+N960 K4.
+N970 G00 Z5.
+N980 (entity frame: path, degree 2, rational, 2D)
+N990 X55. Y29.
+N1000 G01 Z-0.5 F300.
+N1010 G06.2 P3 K0. X55. Y29. Z-0.5 R1. F1200.
+N1020 K0. X59. Y29. Z-0.5 R0.7071
+N1030 K0. X59. Y25. Z-0.5 R1.
 N1040 K1.
 N1050 K1.
-N1060 G01 Y5.
-N1070 G06.2 P3 K0. X59. Y5. Z-0.5 R1.
-N1080 K0. X59. Y1. Z-0.5 R0.7071
-N1090 K0. X55. Y1. Z-0.5 R1.
-N1100 K1.
+N1060 K1.
+N1070 G01 Y5.
+N1080 G06.2 P3 K0. X59. Y5. Z-0.5 R1.
+N1090 K0. X59. Y1. Z-0.5 R0.7071
+N1100 K0. X55. Y1. Z-0.5 R1.
 N1110 K1.
 N1120 K1.
-N1130 G01 X5.
-N1140 G06.2 P3 K0. X5. Y1. Z-0.5 R1.
-N1150 K0. X1. Y1. Z-0.5 R0.7071
-N1160 K0. X1. Y5. Z-0.5 R1.
-N1170 K1.
+N1130 K1.
+N1140 G01 X5.
+N1150 G06.2 P3 K0. X5. Y1. Z-0.5 R1.
+N1160 K0. X1. Y1. Z-0.5 R0.7071
+N1170 K0. X1. Y5. Z-0.5 R1.
 N1180 K1.
 N1190 K1.
-N1200 G01 Y25.
-N1210 G06.2 P3 K0. X1. Y25. Z-0.5 R1.
-N1220 K0. X1. Y29. Z-0.5 R0.7071
-N1230 K0. X5. Y29. Z-0.5 R1.
-N1240 K1.
+N1200 K1.
+N1210 G01 Y25.
+N1220 G06.2 P3 K0. X1. Y25. Z-0.5 R1.
+N1230 K0. X1. Y29. Z-0.5 R0.7071
+N1240 K0. X5. Y29. Z-0.5 R1.
 N1250 K1.
 N1260 K1.
-N1270 G01 X55.
-N1280 G00 Z5.
-N1290 M05
-N1300 M30
+N1270 K1.
+N1280 G01 X55.
+N1290 G00 Z5.
+N1300 M05
+N1310 M30
 %

@@ -2,6 +2,7 @@
 (bezcam 0.1.0: logo.svg, machine generic, output arcs)
 (tolerance 0.01 mm; largest deviation measured 0.009976 mm, proven bound 0.009982 mm, rounding included)
 (T1: dot, b, b.2, z, wave, eye, frame)
+(T1 plunge feed 300 mm/min)
 (estimated cycle time 36 s on the motion model of machine generic [acceleration, corners, tool changes])
 (cutting along the curves 17.56 s; the exact path's bound on this machine 17.40 s [x1.009; rapids, plunges and pauses not counted])
 (order shortest: 6 nested contours cut before what encloses them; rapids 53.1 mm in XY instead of 118.5 mm as written [65.4 mm saved])
