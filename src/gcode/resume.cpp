@@ -331,7 +331,7 @@ ResumePlan plan_resume(std::string_view program, const MachineProfile* profile, 
   // The plunge feed: as given, else the job's from the program's header,
   // else the profile's.
   std::optional<double> plunge_mm = settings.plunge_feed_mm_min;
-  plan.plunge_from = "--plunge-feed";
+  plan.plunge_from = "the plunge feed asked for";
   if (!plunge_mm) {
     if (const auto h = header_plunge(lines, snap.line, snap.state.tool)) {
       plunge_mm = h->mm_min;

@@ -66,17 +66,18 @@ TEST(Program, StructureOfEveryProgram) {
   EXPECT_NE(lines[2].find("tolerance 0.01 mm; largest deviation measured"), std::string::npos);
   // The tool list (each tool with the entities it cuts) and the estimate.
   EXPECT_EQ(lines[3], "(T3: a, b)");
-  EXPECT_EQ(lines[4].rfind("(estimated cycle time ", 0), 0u) << lines[4];
+  EXPECT_EQ(lines[4], "(T3 plunge feed 200 mm/min)");  // what a resumed program plunges at
+  EXPECT_EQ(lines[5].rfind("(estimated cycle time ", 0), 0u) << lines[5];
   // The cuts along the curves beside their exact path's bound.
-  EXPECT_EQ(lines[5].rfind("(cutting along the curves ", 0), 0u) << lines[5];
-  EXPECT_NE(lines[5].find("; the exact path's bound on this machine "), std::string::npos) << lines[5];
+  EXPECT_EQ(lines[6].rfind("(cutting along the curves ", 0), 0u) << lines[6];
+  EXPECT_NE(lines[6].find("; the exact path's bound on this machine "), std::string::npos) << lines[6];
   // The cut order and what it saved: b's end is nearer the origin.
-  EXPECT_EQ(lines[6].rfind("(order shortest: 0 nested contours cut before what encloses them; rapids ", 0), 0u)
-      << lines[6];
-  EXPECT_EQ(lines[7], "G21 G90 G17");
-  EXPECT_EQ(lines[8], "G40 G49 G80 G94");  // the profile's preamble: the safety line
-  EXPECT_EQ(lines[9], "T3 M06");
-  EXPECT_EQ(lines[10], "S9000 M03");
+  EXPECT_EQ(lines[7].rfind("(order shortest: 0 nested contours cut before what encloses them; rapids ", 0), 0u)
+      << lines[7];
+  EXPECT_EQ(lines[8], "G21 G90 G17");
+  EXPECT_EQ(lines[9], "G40 G49 G80 G94");  // the profile's preamble: the safety line
+  EXPECT_EQ(lines[10], "T3 M06");
+  EXPECT_EQ(lines[11], "S9000 M03");
   EXPECT_EQ(lines.back(), "%");
   EXPECT_EQ(lines[lines.size() - 2], "M30");
   // One retract at the end, then the spindle stops: not two retracts.

@@ -61,9 +61,9 @@ TEST(SimulateStock, AToolTheTableLacksIsRefusedAtItsLine) {
   const auto r = test::run_bezcam({"simulate", "--program", kNotch, "--stock", kNotchBox, "--cell", "0.5"}, dir);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("(error id: verify.tool)"), std::string::npos) << r.err;
-  // Line 12 moves from where the tool is not yet known (it sweeps nothing);
-  // line 14 is the first move the tool makes.
-  EXPECT_NE(r.err.find("line 14: "), std::string::npos) << r.err;
+  // Line 13 moves from where the tool is not yet known (it sweeps nothing);
+  // line 15 is the first move the tool makes.
+  EXPECT_NE(r.err.find("line 15: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("tool T1"), std::string::npos) << r.err;
 }
 

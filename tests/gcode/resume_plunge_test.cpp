@@ -77,7 +77,7 @@ TEST(ResumePlunge, PlungesAtTheJobsFeedForTheToolAndEntityThere) {
   // Given, --plunge-feed wins.
   const ResumePlan given = plan_resume(f.gcode, &f.m, f.line_in("outline"), ResumeSettings{std::nullopt, 90.0});
   EXPECT_NE(f.plunge(given).find(" F90"), std::string::npos) << given.preamble;
-  EXPECT_EQ(given.plunge_from, "--plunge-feed");
+  EXPECT_EQ(given.plunge_from, "the plunge feed asked for");
 }
 
 TEST(ResumePlunge, WithoutAHeaderRecordTheProfilesPlungeFeed) {
