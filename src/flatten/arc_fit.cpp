@@ -295,6 +295,46 @@ Vec3 convex_side(const Bezier& b, double t) {
 double span_deviation(const Bezier& piece, double t0, double t1, const PrintedArc& arc, double budget,
                       double resolution, bool helical);
 
+// The printed arcs from S' to E' round the grid points next to the centre
+// c (the rounded centre alone when nothing is rounded) that keep their
+// radius within `rtol`, their sweep within the limit and `keep`, tried
+// best estimate (over the samples P and the ends) first: the first of at
+// most three whose certified deviation is within `budget_xy`.
+template <class Keep>
+std::optional<ArcCandidate> certify_near(const Span& sp, const Vec3& c, bool ccw,
+                                         const std::array<Vec3, kFitSamples - 1>& P, double q, int decimals,
+                                         double rtol, bool helical, double budget_xy, Keep&& keep) {
+  struct Option {
+    PrintedArc arc;
+    Vec3 ij;
+    double estimate;
+  };
+  std::vector<Option> opts;
+  const Vec3 ij0{quantize(c.x - sp.Sr.x, decimals), quantize(c.y - sp.Sr.y, decimals), 0};
+  for (int di = -1; di <= 1; ++di)
+    for (int dj = -1; dj <= 1; ++dj) {
+      if (q == 0 && (di || dj)) continue;
+      const Vec3 ij{quantize(ij0.x + di * q, decimals), quantize(ij0.y + dj * q, decimals), 0};
+      PrintedArc a;
+      a.from = sp.Sr;
+      a.to = sp.Er;
+      a.center = {sp.Sr.x + ij.x, sp.Sr.y + ij.y, sp.Sr.z};
+      a.ccw = ccw;
+      if (std::abs(a.r_start() - a.r_end()) > rtol || a.sweep() > kMaxSweep || !keep(a)) continue;
+      const ArcGeometry g(a, helical);
+      double est = std::max(g.dist_end(sp.S, sp.Sr), g.dist_end(sp.E, sp.Er));
+      for (const auto& p : P) est = std::max(est, g.d(p));
+      opts.push_back({a, ij, est});
+    }
+  std::sort(opts.begin(), opts.end(), [](const Option& x, const Option& y) { return x.estimate < y.estimate; });
+  for (size_t i = 0; i < opts.size() && i < 3; ++i) {
+    if (opts[i].estimate > budget_xy) break;
+    const double B = span_deviation(sp.b, sp.t0, sp.t1, opts[i].arc, budget_xy, 0, helical);
+    if (B <= budget_xy) return ArcCandidate{opts[i].arc, opts[i].ij, B};
+  }
+  return std::nullopt;
+}
+
 std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, double budget_xy, double rtol) {
   const Vec3 chord{sp.E.x - sp.S.x, sp.E.y - sp.S.y, 0};
   const double L = norm2(chord);
@@ -338,37 +378,8 @@ std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, do
   const bool ccw = bb < 0;  // bulge to the left of S->E means clockwise travel
 
   // Printed centres: the rounded one and its grid neighbours, best first.
-  struct Option {
-    PrintedArc arc;
-    Vec3 ij;
-    double estimate;
-  };
-  std::vector<Option> opts;
-  const Vec3 ij0{quantize(c.x - sp.Sr.x, opt.decimals), quantize(c.y - sp.Sr.y, opt.decimals), 0};
-  for (int di = -1; di <= 1; ++di)
-    for (int dj = -1; dj <= 1; ++dj) {
-      if (q == 0 && (di || dj)) continue;
-      const Vec3 ij{quantize(ij0.x + di * q, opt.decimals), quantize(ij0.y + dj * q, opt.decimals), 0};
-      PrintedArc a;
-      a.from = sp.Sr;
-      a.to = sp.Er;
-      a.center = {sp.Sr.x + ij.x, sp.Sr.y + ij.y, sp.Sr.z};
-      a.ccw = ccw;
-      const double rs = a.r_start(), re = a.r_end();
-      if (std::abs(rs - re) > rtol) continue;
-      if (a.sweep() > kMaxSweep) continue;
-      const ArcGeometry g(a, opt.helical);
-      double est = std::max(g.dist_end(sp.S, sp.Sr), g.dist_end(sp.E, sp.Er));
-      for (const auto& p : P) est = std::max(est, g.d(p));
-      opts.push_back({a, ij, est});
-    }
-  std::sort(opts.begin(), opts.end(), [](const Option& x, const Option& y) { return x.estimate < y.estimate; });
-  for (size_t i = 0; i < opts.size() && i < 3; ++i) {
-    if (opts[i].estimate > budget_xy) break;
-    const double B = span_deviation(sp.b, sp.t0, sp.t1, opts[i].arc, budget_xy, 0, opt.helical);
-    if (B <= budget_xy) return ArcCandidate{opts[i].arc, opts[i].ij, B};
-  }
-  return std::nullopt;
+  return certify_near(sp, c, ccw, P, q, opt.decimals, rtol, opt.helical, budget_xy,
+                      [](const PrintedArc&) { return true; });
 }
 
 // An arc found for a span ending at t1 (curve point E).
@@ -428,41 +439,14 @@ std::optional<ArcCandidate> try_tangent_arc(const Span& sp, const ArcFitOptions&
   const bool ccw = k > 0;
   std::array<Vec3, kFitSamples - 1> P;
   for (int j = 1; j < kFitSamples; ++j) P[j - 1] = point_at(sp.b, sp.t0 + (sp.t1 - sp.t0) * j / kFitSamples);
-  struct Option {
-    PrintedArc arc;
-    Vec3 ij;
-    double estimate;
-  };
-  std::vector<Option> opts;
-  const Vec3 ij0{quantize(c.x - sp.Sr.x, opt.decimals), quantize(c.y - sp.Sr.y, opt.decimals), 0};
-  for (int di = -1; di <= 1; ++di)
-    for (int dj = -1; dj <= 1; ++dj) {
-      if (q == 0 && (di || dj)) continue;
-      const Vec3 ij{quantize(ij0.x + di * q, opt.decimals), quantize(ij0.y + dj * q, opt.decimals), 0};
-      PrintedArc a;
-      a.from = sp.Sr;
-      a.to = sp.Er;
-      a.center = {sp.Sr.x + ij.x, sp.Sr.y + ij.y, sp.Sr.z};
-      a.ccw = ccw;
-      if (std::abs(a.r_start() - a.r_end()) > rtol || a.sweep() > kMaxSweep) continue;
-      FitMove m;
-      m.kind = ccw ? FitKind::arc_ccw : FitKind::arc_cw;
-      m.to = a.to;
-      m.center = a.center;
-      const Vec3 t = move_tangent(a.from, m, true);
-      if (std::abs(directed_angle(tin, t, true)) > tangent_slack(q, a.r_start())) continue;
-      const ArcGeometry g(a, false);
-      double est = std::max(g.dist_end(sp.S, sp.Sr), g.dist_end(sp.E, sp.Er));
-      for (const auto& p : P) est = std::max(est, g.d(p));
-      opts.push_back({a, ij, est});
-    }
-  std::sort(opts.begin(), opts.end(), [](const Option& x, const Option& y) { return x.estimate < y.estimate; });
-  for (size_t i = 0; i < opts.size() && i < 3; ++i) {
-    if (opts[i].estimate > budget_xy) break;
-    const double B = span_deviation(sp.b, sp.t0, sp.t1, opts[i].arc, budget_xy, 0, false);
-    if (B <= budget_xy) return ArcCandidate{opts[i].arc, opts[i].ij, B};
-  }
-  return std::nullopt;
+  // Printed centres whose start tangent stays within the rounding's slack.
+  return certify_near(sp, c, ccw, P, q, opt.decimals, rtol, false, budget_xy, [&](const PrintedArc& a) {
+    FitMove m;
+    m.kind = ccw ? FitKind::arc_ccw : FitKind::arc_cw;
+    m.to = a.to;
+    m.center = a.center;
+    return std::abs(directed_angle(tin, move_tangent(a.from, m, true), true)) <= tangent_slack(q, a.r_start());
+  });
 }
 
 }  // namespace
