@@ -112,26 +112,14 @@ JobBuilder& JobBuilder::text(std::string id, const std::vector<Glyph>& glyphs, J
     throw InputError(errc::text_empty, Place::in_json(job_.source, at, "text"),
                      "expected letters to cut, found only spaces (no glyph with an outline)");
   const std::optional<CutSide> side = params.side ? params.side : job_.params.side;
-  const std::optional<CutSide> hole_side = side == CutSide::inside    ? std::optional(CutSide::outside)
-                                           : side == CutSide::outside ? std::optional(CutSide::inside)
-                                                                      : side;
   const size_t file_index = file_entities_;
   for (size_t g = 0; g < glyphs.size(); ++g)
     for (const GlyphContour& c : glyphs[g].contours) {
       JobParams p = params;
-      if (c.hole && (side == CutSide::inside || side == CutSide::outside)) p.side = hole_side;
-      std::vector<CurveSegment> segs;
-      for (size_t k = 0; k < c.pieces.size(); ++k) {
-        CurveSegment s;
-        s.kind = "bezier";
-        s.degree = c.pieces[k].degree();
-        s.first_piece = k;
-        s.piece_count = 1;
-        segs.push_back(std::move(s));
-      }
+      if (c.hole && (side == CutSide::inside || side == CutSide::outside)) p.side = hole_side(side);
       CurveGeometry geometry;
       try {
-        geometry = make_path(std::move(segs), c.pieces, true, 2);
+        geometry = make_path(glyph_segments(c), c.pieces, true, 2);
       } catch (const InputError& e) {
         throw InputError(e.id(), Place::in_json(job_.source, at, e.place().relative_path()), e.message());
       }

@@ -40,14 +40,6 @@ TextSpec read_spec(const JsonCtx& ctx, const json& obj, const std::string& path)
   return s;
 }
 
-// A part's side for a hole of a letter: the other one (the material of
-// "B" is outside its counters).
-std::optional<CutSide> side_of_hole(std::optional<CutSide> side) {
-  if (side == CutSide::outside) return CutSide::inside;
-  if (side == CutSide::inside) return CutSide::outside;
-  return side;
-}
-
 }  // namespace
 
 void parse_text_entity(const JsonCtx& ctx, const json& obj, const std::string& path, const Entity& e,
@@ -72,20 +64,11 @@ void parse_text_entity(const JsonCtx& ctx, const json& obj, const std::string& p
       Entity ge = e;
       ge.id = base + "/" + std::to_string(g);
       ge.glyph = glyphs[g].characters;
-      if (c.hole && (side == CutSide::inside || side == CutSide::outside)) ge.params.side = side_of_hole(side);
+      if (c.hole && (side == CutSide::inside || side == CutSide::outside)) ge.params.side = hole_side(side);
       size_t points = 0;
-      std::vector<CurveSegment> segs;
-      for (size_t k = 0; k < c.pieces.size(); ++k) {
-        CurveSegment s;
-        s.kind = "bezier";
-        s.degree = c.pieces[k].degree();
-        s.first_piece = k;
-        s.piece_count = 1;
-        segs.push_back(std::move(s));
-        points += c.pieces[k].points.size();
-      }
+      for (const Bezier& b : c.pieces) points += b.points.size();
       ctx.count_bezier_points(points, path + ".text");
-      ge.curve = ctx.at(path, [&] { return make_path(std::move(segs), c.pieces, true, 2); });
+      ge.curve = ctx.at(path, [&] { return make_path(glyph_segments(c), c.pieces, true, 2); });
       out.push_back(std::move(ge));
     }
   }

@@ -6,10 +6,13 @@
 /// and fontconfig), and makes each glyph contour an entity.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bezcam/job/job.hpp"
 #include "bezcam/kernel/bezier.hpp"
+#include "bezcam/kernel/curve.hpp"
 
 namespace bezcam {
 
@@ -47,5 +50,14 @@ struct Glyph {
 /// InputError whose place's JSON path is the key at fault, relative to the
 /// entity (`font`, `text`, `size`), with what to change.
 using TextOutliner = std::function<std::vector<Glyph>(const TextSpec&)>;
+
+/// The side a glyph's hole is cut on when its letter is cut on `side`: the
+/// other one (the material of "B" is outside its counters); no side and
+/// "on" stay as they are.
+std::optional<CutSide> hole_side(std::optional<CutSide> side);
+
+/// A glyph contour's pieces as the segments of its closed path entity: one
+/// Bézier segment per piece (make_path() of kernel/curve.hpp).
+std::vector<CurveSegment> glyph_segments(const GlyphContour& c);
 
 }  // namespace bezcam
