@@ -106,8 +106,12 @@ struct Builder {
   // The acceleration a curved move may use in all: the plane's.
   double arc_accel(double a_plane) const { return a_plane; }
   // Speed and tangential acceleration of a curved move of radius R asking
-  // speed v with acceleration a in all (planner_segments.cpp).
-  void curved_limits(PlanSegment& s, double v, SpeedLimit why, double R, double a) const;
+  // speed v with acceleration a in all, the machine's top speed in its
+  // plane being vm (planner_segments.cpp).
+  void curved_limits(PlanSegment& s, double v, SpeedLimit why, double R, double a, double vm) const;
+  // LinuxCNC: the share of the acceleration an arc of radius R keeps for
+  // the tangent, sized for the top speed vm: 1/2, or what vm^2/R leaves.
+  static double linuxcnc_tangential_share(double R, double a, double vm);
   // Segments of one block, appended to `out`.
   void add_block(int bi, std::vector<PlanSegment>& out);
   // The segment of an arc block, and the segments of a curve block, of
@@ -145,6 +149,17 @@ struct Builder {
   // and at what speed.
   bool tangent(PlanSegment& prev, PlanSegment& next, const Vec3& u1, const Vec3& u2, double phi, double& vj,
                double& kink_scale) const;
+  // LinuxCNC: whether a blend arc can join the two moves at all: the
+  // corner's plane must be the arcs' plane (their normals and the normal of
+  // the two directions parallel within 1e-6 rad).
+  bool blend_arc_plane(const PlanSegment& prev, const PlanSegment& next, const Vec3& u1, const Vec3& u2) const;
+  // LinuxCNC: the speed of a parabolic blend between the two moves (both
+  // overlapping, each with half its acceleration once `halved`, else only
+  // the first as when LinuxCNC weighs it against the other blends).
+  double parabolic_speed(const PlanSegment& prev, const PlanSegment& next, double phi, double tol, bool halved) const;
+  // LinuxCNC: the corner taken as a parabolic blend: both moves keep half
+  // their acceleration (an arc's speed cap follows). Returns its speed.
+  double parabolic_corner(PlanSegment& prev, PlanSegment& next, double phi, double tol);
   // The speed of a corner where an arc or a curve meets another move; -1
   // when no blend fits.
   double curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk, const MotionBlock&,

@@ -80,8 +80,8 @@ void Builder::take_block(size_t bi, const MotionBlock& b) {
                          s.pieces.front().shape == PlanSegment::Shape::line && prev.pieces.size() == 1 &&
                          s.pieces.size() == 1;
       double kink_scale = -1;  // LinuxCNC: the kink's share of the acceleration
-      if (tol <= 0 || phi > kPi - 2 * kPi / 180 || (prev.rapid != s.rapid && !linuxcnc())) {
-        vj = 0;  // exact stop: asked, a reversal, or a generic controller between rapid and feed
+      if (tol <= 0 || phi > kPi - 2 * kPi / 180 || prev.rapid != s.rapid) {
+        vj = 0;  // exact stop: asked, a reversal, or between rapid and feed
       } else if (tangent(prev, s, u1, u2, phi, vj, kink_scale)) {
         // vj set
       } else if (lines) {
@@ -96,15 +96,22 @@ void Builder::take_block(size_t bi, const MotionBlock& b) {
         }
         vj = r;
       } else {
-        vj = curved_corner(prev, s, pbk, b, u1, u2, phi, tol);
+        vj = linuxcnc() && !blend_arc_plane(prev, s, u1, u2) ? -1 : curved_corner(prev, s, pbk, b, u1, u2, phi, tol);
         if (vj < 0) {
-          // No blend fits (too sharp for the arcs' share): LinuxCNC takes
-          // the corner as a kink at a reduced speed; others stop.
+          // No blend arc: LinuxCNC takes the corner as a parabolic blend or
+          // as a kink at a reduced speed, whichever it rates faster (a
+          // parabolic blend at half its speed: it halves both moves'
+          // acceleration); others stop.
           vj = 0;
           if (linuxcnc() && kink_scale > 0) {
-            vj = std::min(prev.vmax, s.vmax) * kKinkRatio / kink_scale;
-            prev.kink_reduce = std::max(prev.kink_reduce, kKinkRatio);
-            s.kink_reduce = std::max(s.kink_reduce, kKinkRatio);
+            const double v_kink = std::min(prev.vmax, s.vmax) * kKinkRatio / kink_scale;
+            if (parabolic_speed(prev, s, phi, tol, false) / 2 > v_kink) {
+              vj = parabolic_corner(prev, s, phi, tol);
+            } else {
+              vj = v_kink;
+              prev.kink_reduce = std::max(prev.kink_reduce, kKinkRatio);
+              s.kink_reduce = std::max(s.kink_reduce, kKinkRatio);
+            }
           }
         }
       }
@@ -150,7 +157,7 @@ void Builder::exact_stop_end(Stop why) {
     f = 0.9;
   else if (why == Stop::end || why == Stop::pause)
     f = 0.5;
-  if (f == 1) return;
+  if (f == 1 || (f == 0.5 && s.parabolic)) return;  // a parabolic blend halved it already
   s.overall_accel *= f;
   s.accel = s.curved ? kTangentialShare * s.overall_accel : std::min(s.accel * f, s.overall_accel);
 }
@@ -275,6 +282,78 @@ bool Builder::tangent(PlanSegment& prev, PlanSegment& next, const Vec3& u1, cons
   prev.kink_reduce = std::max(prev.kink_reduce, spike);
   next.kink_reduce = std::max(next.kink_reduce, spike);
   return true;
+}
+
+bool Builder::blend_arc_plane(const PlanSegment& prev, const PlanSegment& next, const Vec3& u1, const Vec3& u2) const {
+  const Vec3 binormal = cross(u1, u2);
+  if (norm(binormal) < 1e-12) return true;
+  const Vec3 bn = unit(binormal);
+  constexpr double kParallel = 1e-6;  // rad
+  // The plane of a curved piece: a blend's own; an arc block's plane (a
+  // helix too: its corner's directions then leave the plane); curve
+  // blocks, which LinuxCNC's interpreter makes into arcs, in XY.
+  auto in_plane_of = [&](const PlanSegment::Piece& piece) {
+    Vec3 n;
+    if (piece.shape == PlanSegment::Shape::arc) {
+      n = unit(cross(piece.u, piece.w));
+    } else if (piece.shape == PlanSegment::Shape::block) {
+      const MotionBlock& b = block(static_cast<size_t>(piece.block));
+      n = b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw ? from_plane({0, 0, 1}, b.plane) : Vec3{0, 0, 1};
+    } else {
+      return true;
+    }
+    return norm(cross(bn, n)) <= kParallel;
+  };
+  return in_plane_of(prev.pieces.back()) && in_plane_of(next.pieces.front());
+}
+
+double Builder::parabolic_speed(const PlanSegment& prev, const PlanSegment& next, double phi, double tol,
+                                bool halved) const {
+  const double a1 = prev.parabolic ? prev.accel : 0.5 * prev.accel;
+  const double a2 = halved && !next.parabolic ? 0.5 * next.accel : next.accel;
+  if (!(a1 > 0) || !(a2 > 0)) return 0;
+  // The speed each may reach: over half its length (a blend may take up
+  // to that), at its own top speed.
+  const double vr1 = std::min(std::sqrt(a1 * 0.5 * prev.length), prev.vmax);
+  const double vr2 = std::min(std::sqrt(a2 * 0.5 * next.length), next.vmax);
+  if (!(vr1 > 0) || !(vr2 > 0)) return 0;
+  const double t_blend = std::min(std::min(prev.length / vr1, next.length / vr2), std::max(vr1 / a1, vr2 / a2));
+  double v1 = std::min(vr1, t_blend * a1), v2 = std::min(vr2, t_blend * a2);
+  const double theta = 0.5 * (kPi - phi);  // half the angle between the moves
+  if (std::isfinite(tol) && tol > 0 && std::cos(theta) > std::sin(1e-3)) {
+    // Within the path tolerance: decelerating at a1, the corner is passed
+    // at 2 T / cos(theta) from its end.
+    const double v_tol = 2 * std::sqrt(a1 * tol / std::cos(theta));
+    v1 = std::min(v1, v_tol);
+    v2 = std::min(v2, v_tol);
+  }
+  return std::sin(theta) * 0.5 * (v1 + v2);
+}
+
+double Builder::parabolic_corner(PlanSegment& prev, PlanSegment& next, double phi, double tol) {
+  const double v = parabolic_speed(prev, next, phi, tol, true);
+  for (PlanSegment* sg : {&prev, &next}) {
+    if (sg->parabolic) continue;
+    sg->parabolic = true;
+    sg->overall_accel *= 0.5;
+    sg->accel *= 0.5;
+    if (sg->curved && !sg->blend && std::isfinite(sg->radius) && sg->radius > 0) {
+      const PlanSegment::Piece& piece = sg->pieces.front();
+      Vec3 n{0, 0, 1};
+      if (piece.shape == PlanSegment::Shape::block) {
+        const MotionBlock& b = block(static_cast<size_t>(piece.block));
+        if (b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw) n = from_plane({0, 0, 1}, b.plane);
+      }
+      sg->accel = linuxcnc_tangential_share(sg->radius, sg->overall_accel, in_plane(n, lim.vmax)) * sg->overall_accel;
+      const double cap = std::sqrt(kNormalShare * sg->overall_accel * sg->radius);
+      if (cap < sg->vmax) {
+        sg->vmax = cap;
+        sg->limit = SpeedLimit::curvature;
+      }
+    }
+  }
+  junction.back() = std::min(junction.back(), prev.vmax);
+  return std::min({v, prev.vmax, next.vmax});
 }
 
 // A corner where an arc or a curve meets another move: the speed of a

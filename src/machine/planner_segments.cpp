@@ -174,14 +174,15 @@ PlanSegment Builder::line_segment(int bi, const Vec3& a, const Vec3& b, bool rap
 // Speed and tangential acceleration of a curved move of radius R asking
 // speed v with acceleration a in all: the centripetal part v^2/R takes at
 // most sqrt(3)/2 of a (the speed drops until it fits), the tangential
-// part what is left of a, at least half of it.
-void Builder::curved_limits(PlanSegment& s, double v, SpeedLimit why, double R, double a) const {
+// part what is left of a, at least half of it. LinuxCNC sizes the
+// tangential part for the machine's top speed in the plane `vm`, not for
+// the feed asked (its arc's own speed limit): half of a where that speed
+// would need more than sqrt(3)/2 of a across, else what it leaves.
+void Builder::curved_limits(PlanSegment& s, double v, SpeedLimit why, double R, double a, double vm) const {
   const double an_max = kNormalShare * a;
   double tan_share = 1;
   if (linuxcnc()) {
-    // LinuxCNC keeps half of the acceleration for the tangent on every
-    // arc (and on the arcs its interpreter makes of curves).
-    tan_share = kTangentialShare;
+    tan_share = linuxcnc_tangential_share(R, a, vm);
     if (std::isfinite(R) && R > 0 && v * v / R > an_max) {
       v = std::sqrt(an_max * R);
       why = SpeedLimit::curvature;
@@ -200,6 +201,13 @@ void Builder::curved_limits(PlanSegment& s, double v, SpeedLimit why, double R, 
   s.limit = why;
   s.accel = tan_share * a;
   s.overall_accel = a;
+}
+
+double Builder::linuxcnc_tangential_share(double R, double a, double vm) {
+  if (!(std::isfinite(R) && R > 0) || !(a > 0)) return 1;
+  const double an = vm * vm / R;
+  if (an > kNormalShare * a) return kTangentialShare;
+  return std::sqrt(std::max(0.0, 1 - (an / a) * (an / a)));
 }
 
 // Segments of one block, appended to `out`.
@@ -270,7 +278,7 @@ void Builder::add_arc_segment(int bi, PlannedBlock& pb, std::vector<PlanSegment>
   p.t = {0, 1};
   s.pieces.push_back(std::move(p));
   s.length = pb.length;
-  curved_limits(s, v, why, R, aplane);
+  curved_limits(s, v, why, R, aplane, vplane);
   s.curved = true;
   Vec3 c = to_plane(b.center, b.plane);
   c.z = to_plane(b.to, b.plane).z;
@@ -340,7 +348,7 @@ void Builder::add_curve_segments(int bi, PlannedBlock& pb, std::vector<PlanSegme
     }
     const double v = vfeed;
     s.limit = base;
-    curved_limits(s, v, s.limit, rmin, aax);
+    curved_limits(s, v, s.limit, rmin, aax, in_plane({0, 0, 1}, lim.vmax));
     s.curved = true;
     s.radius = rmin;
     s.angle = std::isfinite(rmin) && rmin > 0 ? len / rmin : 0;

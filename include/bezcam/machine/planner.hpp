@@ -104,6 +104,9 @@ struct PlanSegment {
   double kink_reduce = 0;
   /// The acceleration the move may use in all (accel is its tangential part).
   double overall_accel = 0;
+  /// LinuxCNC: a parabolic blend at either end (both moves then share the
+  /// acceleration: each keeps half of it).
+  bool parabolic = false;
   double v0 = 0, v1 = 0, vpeak = 0;           ///< planned entry, exit, peak speed (units/s)
   double t_start = 0;                         ///< when it starts (s)
   double t_acc = 0, t_cruise = 0, t_dec = 0;  ///< phases (s)
