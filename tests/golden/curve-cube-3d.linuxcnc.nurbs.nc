@@ -4,7 +4,7 @@
 (T1: cube-base-curve)
 (T1 plunge feed 100 mm/min)
 (estimated cycle time 4 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 0.28 s; the exact path's bound on this machine 0.25 s [x1.064; rapids, plunges and pauses not counted])
+(cutting along the curves 0.28 s; the exact path's bound on this machine 0.25 s [x1.077; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 G54

@@ -3,8 +3,8 @@
 (tolerance 0.01 mm; largest deviation measured 0.009955 mm, proven bound 0.009994 mm, rounding included)
 (T3: groove-xz, arch-yz)
 (T3 plunge feed 200 mm/min)
-(estimated cycle time 10 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 6.33 s; the exact path's bound on this machine 6.30 s [x1.004; rapids, plunges and pauses not counted])
+(estimated cycle time 11 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
+(cutting along the curves 6.37 s; the exact path's bound on this machine 6.30 s [x1.012; rapids, plunges and pauses not counted])
 (order shortest: 0 nested contours cut before what encloses them; rapids 30 mm in XY instead of 38.3 mm as written [8.3 mm saved])
 G21 G90 G17
 G40 G49 G80 G94

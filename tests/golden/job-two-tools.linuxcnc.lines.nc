@@ -7,7 +7,7 @@
 (T2 plunge feed 250 mm/min)
 (T1 plunge feed 250 mm/min)
 (estimated cycle time 18 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 15.28 s; the exact path's bound on this machine 15.23 s [x1.003; rapids, plunges and pauses not counted])
+(cutting along the curves 15.27 s; the exact path's bound on this machine 15.23 s [x1.002; rapids, plunges and pauses not counted])
 (order shortest: 1 nested contour cut before what encloses them; rapids 26.9 mm in XY instead of 13.5 mm as written [13.5 mm more: nested contours first, one tool at a time])
 G21 G90 G17
 G40 G49 G80 G94
