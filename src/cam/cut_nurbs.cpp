@@ -53,14 +53,16 @@ size_t append_exact_block(CutContext& c, const ExactBlock& b, const std::functio
     c.program.moves.push_back({l, entity});
   } else {
     CurveMove cv;
-    cv.form = b.kind == ExactKind::bezier ? CurveMove::Form::bezier : CurveMove::Form::nurbs;
+    CurveShape& sh = *cv.shape;
+    sh.form = b.kind == ExactKind::bezier ? CurveMove::Form::bezier : CurveMove::Form::nurbs;
     cv.to = at(b.ctrl.back());
     cv.feed = c.params.feed;
     cv.axes = c.machine.nurbs == NurbsDialect::linuxcnc ? 3u : 7u;  // G5.x never moves Z
-    for (const auto& p : b.ctrl) cv.ctrl.push_back(at(p));
-    cv.weights = b.weights;
-    cv.knots = b.knots;
-    cv.order = b.kind == ExactKind::nurbs ? b.order : static_cast<int>(b.ctrl.size());
+    sh.ctrl.reserve(b.ctrl.size());
+    for (const auto& p : b.ctrl) sh.ctrl.push_back(at(p));
+    sh.weights = b.weights;
+    sh.knots = b.knots;
+    sh.order = b.kind == ExactKind::nurbs ? b.order : static_cast<int>(b.ctrl.size());
     c.program.moves.push_back({std::move(cv), entity});
   }
   return block_lines(b, c.machine.nurbs);

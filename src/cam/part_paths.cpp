@@ -31,12 +31,12 @@ std::vector<PathPiece> printed_path(const std::vector<Move>& moves, size_t from,
       cur = a->to;
     } else if (const auto* c = std::get_if<CurveMove>(&mv.what)) {
       std::vector<Vec3> ctrl;
-      for (const auto& p : c->ctrl) ctrl.push_back(xy(p));
+      for (const auto& p : c->shape->ctrl) ctrl.push_back(xy(p));
       std::vector<Bezier> pieces;
-      if (c->form == CurveMove::Form::bezier)
+      if (c->shape->form == CurveMove::Form::bezier)
         pieces.push_back(Bezier::make(ctrl, {}, 2));
       else
-        pieces = to_bezier(NurbsCurve::make(c->order - 1, ctrl, c->knots, c->weights, 2));
+        pieces = to_bezier(NurbsCurve::make(c->shape->order - 1, ctrl, c->shape->knots, c->shape->weights, 2));
       for (const Bezier& b : pieces) out.push_back(PathPiece::of(b));
       cur = c->to;
     } else if (const auto* m = motion_of(mv)) {

@@ -412,8 +412,10 @@ void move_part(Program& p, const Vec3& offset) {
           if constexpr (std::is_base_of_v<Motion, T>) shift(x.to);
           if constexpr (std::is_same_v<T, ArcMove>) shift(x.center);
           if constexpr (std::is_same_v<T, CannedCycle>) shift(x.at);
-          if constexpr (std::is_same_v<T, CurveMove>)
-            for (auto& c : x.ctrl) shift(c);
+          if constexpr (std::is_same_v<T, CurveMove>) {
+            x.shape = std::make_shared<CurveShape>(*x.shape);  // copies of the move keep their own
+            for (auto& c : x.shape->ctrl) shift(c);
+          }
         },
         mv.what);
   const bool rounded = d.x != offset.x || d.y != offset.y;

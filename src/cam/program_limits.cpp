@@ -55,8 +55,9 @@ std::size_t program_lines(const Program& p, std::size_t first) {
     // Fanuc: a block per control point, then `order` knot-only blocks;
     // LinuxCNC G5.2: a line per point and G5.3.
     const auto* cv = std::get_if<CurveMove>(&p.moves[i].what);
-    n += cv && cv->form == CurveMove::Form::nurbs ? cv->ctrl.size() + static_cast<std::size_t>(std::max(cv->order, 1))
-                                                  : 1;
+    n += cv && cv->shape->form == CurveMove::Form::nurbs
+             ? cv->shape->ctrl.size() + static_cast<std::size_t>(std::max(cv->shape->order, 1))
+             : 1;
   }
   return n;
 }

@@ -65,11 +65,12 @@ void for_each_motion_block(const Program& p, const std::function<void(MotionBloc
       b.plane = arc->plane;
     }
     if (const auto* cv = std::get_if<CurveMove>(&mv.what)) {
-      b.kind = cv->form == CurveMove::Form::bezier ? BlockKind::bezier : BlockKind::nurbs;
-      b.ctrl = cv->ctrl;
-      b.weights = cv->weights;
-      b.knots = cv->knots;
-      b.order = cv->form == CurveMove::Form::bezier ? static_cast<int>(cv->ctrl.size()) : cv->order;
+      b.kind = cv->shape->form == CurveMove::Form::bezier ? BlockKind::bezier : BlockKind::nurbs;
+      b.ctrl = cv->shape->ctrl;
+      b.weights = cv->shape->weights;
+      b.knots = cv->shape->knots;
+      b.order =
+          cv->shape->form == CurveMove::Form::bezier ? static_cast<int>(cv->shape->ctrl.size()) : cv->shape->order;
     }
     Vec3 to = pos;
     for (int a = 0; a < 3; ++a)

@@ -87,7 +87,7 @@ void validate_program(const Program& p, const MachineProfile& m) {
     } else {
       b.add(to);
       if (const auto* cv = std::get_if<CurveMove>(&mv.what))
-        for (const auto& c : cv->ctrl) b.add(c);  // NURBS / Bézier: hull contains the curve
+        for (const auto& c : cv->shape->ctrl) b.add(c);  // NURBS / Bézier: hull contains the curve
     }
     check_box(mv, b, mo->axes | known);
     const bool moves_xy = (mo->axes & 3) && ((known & 3) != 3 || to.x != pos.x || to.y != pos.y);

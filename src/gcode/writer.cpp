@@ -387,7 +387,7 @@ class Writer {
   }
 
   void curve(const CurveMove& mv) {
-    if (mv.form == CurveMove::Form::bezier) {
+    if (mv.shape->form == CurveMove::Form::bezier) {
       if (m_.nurbs != NurbsDialect::linuxcnc) throw std::logic_error("a G5/G5.1 move for a machine without them");
       g5(mv);
     } else if (m_.nurbs == NurbsDialect::fanuc) {
@@ -442,24 +442,24 @@ class Writer {
     auto coord = [&](double v) { return fx ? fixed(v, p_.decimals) : num(v); };
     auto knot = [&](double k) { return "K" + (fx ? fixed(k, m_.knot_decimals) : format_number(k, m_.knot_decimals)); };
     auto point = [&](size_t i) {
-      const Vec3& p = mv.ctrl[i];
-      const double w = mv.weights.empty() ? 1.0 : mv.weights[i];
+      const Vec3& p = mv.shape->ctrl[i];
+      const double w = mv.shape->weights.empty() ? 1.0 : mv.shape->weights[i];
       std::string xyz[3] = {"X" + coord(p.x), "Y" + coord(p.y), "Z" + coord(p.z)};
       std::string r = "R" + (fx ? fixed(w, m_.weight_decimals) : format_number(w, m_.weight_decimals));
       if (m_.modal && i > 0) {
         // Modal words: a coordinate equal to the previous point's, and a
         // weight of 1 (the default when R is omitted), are left out.
         for (int a = 0; a < 3; ++a)
-          if (coord(p[a]) == coord(mv.ctrl[i - 1][a])) xyz[a].clear();
+          if (coord(p[a]) == coord(mv.shape->ctrl[i - 1][a])) xyz[a].clear();
         if (format_number(w, m_.weight_decimals) == "1.") r.clear();
       }
-      return join({knot(mv.knots[i]), xyz[0], xyz[1], xyz[2], r});
+      return join({knot(mv.shape->knots[i]), xyz[0], xyz[1], xyz[2], r});
     };
-    line(join({m_.nurbs_start_word, "P" + std::to_string(mv.order), point(0), feed(mv.feed)}));
-    for (size_t i = 1; i < mv.ctrl.size(); ++i) line(point(i));
-    for (size_t j = mv.ctrl.size(); j < mv.knots.size(); ++j) line(knot(mv.knots[j]));
+    line(join({m_.nurbs_start_word, "P" + std::to_string(mv.shape->order), point(0), feed(mv.feed)}));
+    for (size_t i = 1; i < mv.shape->ctrl.size(); ++i) line(point(i));
+    for (size_t j = mv.shape->ctrl.size(); j < mv.shape->knots.size(); ++j) line(knot(mv.shape->knots[j]));
     motion_.clear();  // the next G00/G01/G02/G03 must say so: it ends the mode
-    arrived(mv.ctrl.back());
+    arrived(mv.shape->ctrl.back());
   }
 
   // LinuxCNC G5.2 ... G5.3: the current position is the first point; its
@@ -467,19 +467,20 @@ class Writer {
   // always: older versions do not default it to 1).
   void g52_block(const CurveMove& mv) {
     auto w = [&](size_t i) {
-      return "P" + format_number(mv.weights.empty() ? 1.0 : mv.weights[i], m_.weight_decimals);
+      return "P" + format_number(mv.shape->weights.empty() ? 1.0 : mv.shape->weights[i], m_.weight_decimals);
     };
-    line(join({"G5.2", w(0), "L" + std::to_string(mv.order), feed(mv.feed)}));
-    for (size_t i = 1; i < mv.ctrl.size(); ++i) line(join({"X" + num(mv.ctrl[i].x), "Y" + num(mv.ctrl[i].y), w(i)}));
+    line(join({"G5.2", w(0), "L" + std::to_string(mv.shape->order), feed(mv.feed)}));
+    for (size_t i = 1; i < mv.shape->ctrl.size(); ++i)
+      line(join({"X" + num(mv.shape->ctrl[i].x), "Y" + num(mv.shape->ctrl[i].y), w(i)}));
     line("G5.3");
     motion_.clear();
-    arrived({mv.ctrl.back().x, mv.ctrl.back().y, pos_.z});
+    arrived({mv.shape->ctrl.back().x, mv.shape->ctrl.back().y, pos_.z});
   }
 
   // LinuxCNC G5 (cubic: I J = P1 - P0, P Q = P2 - P3) and G5.1 (quadratic:
   // I J = P1 - P0), X and Y always, Z never.
   void g5(const CurveMove& mv) {
-    const auto& c = mv.ctrl;
+    const auto& c = mv.shape->ctrl;
     const Vec3& to = c.back();
     std::string s = std::string(c.size() == 4 ? "G5" : "G5.1") + " X" + num(to.x) + " Y" + num(to.y) + " I" +
                     num(c[1].x - c[0].x) + " J" + num(c[1].y - c[0].y);

@@ -139,9 +139,9 @@ TEST(Limits, AProgramOverTheLineLimitIsRefusedNamingTheEntity) {
   // per knot-only block.
   Program p;
   CurveMove nurbs;
-  nurbs.form = CurveMove::Form::nurbs;
-  nurbs.ctrl.resize(5);
-  nurbs.order = 4;
+  nurbs.shape->form = CurveMove::Form::nurbs;
+  nurbs.shape->ctrl.resize(5);
+  nurbs.shape->order = 4;
   p.moves = {Move{}, Move{nurbs}, Move{}};
   EXPECT_EQ(program_lines(p), 1u + 9u + 1u);
   EXPECT_EQ(program_lines(p, 2), 1u);
@@ -150,10 +150,11 @@ TEST(Limits, AProgramOverTheLineLimitIsRefusedNamingTheEntity) {
                                      {"id": "b", "type": "bezier", "points": [[0,0],[1,1]]})"),
                           "job.json");
   ProgramLength length;
-  std::get<CurveMove>(p.moves[1].what).ctrl.resize(kMaxProgramLines - 20);  // one huge block, not millions of moves
+  std::get<CurveMove>(p.moves[1].what)
+      .shape->ctrl.resize(kMaxProgramLines - 20);  // one huge block, not millions of moves
   length.after_entity(p, j, j.entities[0]);
   EXPECT_EQ(length.lines(), kMaxProgramLines - 20 + 4 + 2);
-  nurbs.ctrl.resize(30);
+  nurbs.shape->ctrl.resize(30);
   p.moves.push_back({nurbs});
   const Refusal r = refusal_of([&] { length.after_entity(p, j, j.entities[1]); });
   EXPECT_EQ(r.id, "limit.program-length");

@@ -227,7 +227,7 @@ std::vector<Expected> expected_calls(const Program& p) {
       e.plane = arc->plane;
     } else if (const auto* cv = std::get_if<CurveMove>(&move.what)) {
       e.name = "NURBS_FEED";
-      e.order = cv->order;
+      e.order = cv->shape->order;
       e.axes = 3;
     } else {
       // The writer prints only what changes; a move that changes nothing

@@ -9,6 +9,7 @@
 /// to the decimals they will be printed with (so what is validated and
 /// measured is what the controller will read). Axis words are modal: a
 /// motion sets only the axes named in `axes`.
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -44,15 +45,22 @@ struct ArcMove : Motion {
   bool ccw = false;
   Plane plane = Plane::xy;
 };
-/// An exact curve block: a NURBS block (Fanuc G06.2 / LinuxCNC G5.2) or a
-/// LinuxCNC G5 / G5.1 Bézier move. `ctrl` starts at the current position.
-struct CurveMove : Motion {
+/// The curve of a CurveMove: its control points, weights and knots.
+struct CurveShape {
   enum class Form { nurbs, bezier };
   Form form = Form::nurbs;
   std::vector<Vec3> ctrl;
   std::vector<double> weights;  ///< nurbs: one per point (empty: all 1)
   std::vector<double> knots;    ///< nurbs: ctrl.size() + order values
   int order = 0;                ///< degree + 1
+};
+/// An exact curve block: a NURBS block (Fanuc G06.2 / LinuxCNC G5.2) or a
+/// LinuxCNC G5 / G5.1 Bézier move. `ctrl` starts at the current position.
+/// The curve is held apart (shared by copies of the move), so that every
+/// move of a long program stays as small as a line's or an arc's.
+struct CurveMove : Motion {
+  using Form = CurveShape::Form;
+  std::shared_ptr<CurveShape> shape = std::make_shared<CurveShape>();
 };
 /// The profile's move to the tool-change position (`tool_change_position`
 /// lines), before a tool change.
@@ -111,8 +119,8 @@ struct CompensationMove {
 /// canned cycles, and prints them (without the cycle) on one without.
 struct CannedCycle {
   Vec3 at;
-  int code = 81;  ///< 81, 82, 83 or 73
   double r = 0, z = 0, q = 0, p = 0, feed = 0;
+  int code = 81;      ///< 81, 82, 83 or 73
   bool to_r = false;  ///< G99 (true) or G98
 };
 
