@@ -22,12 +22,20 @@ def plate(msp):
     msp.add_lwpolyline([(-10, -10), (130, -10), (130, 60), (-10, 60)], close=True, dxfattribs={"layer": "OUTLINE"})
 
 
+def plated(style=None, font=None):
+    # A drawing with the plate, and a text style `style` of `font` if given.
+    doc = new()
+    msp = doc.modelspace()
+    plate(msp)
+    if style:
+        doc.styles.new(style, dxfattribs={"font": font})
+    return doc, msp
+
+
 # text.dxf: TEXT left on the baseline, rotated and centred in the middle,
 # top right, bottom left, aligned between two points; MTEXT with inline
 # formatting codes, turned 90 degrees, attached at its middle centre.
-doc = new()
-msp = doc.modelspace()
-plate(msp)
+doc, msp = plated()
 a = {"layer": "NOTES", "style": "SANS"}
 msp.add_text("HELLO", height=5, dxfattribs=dict(a, insert=(10, 10)))
 msp.add_text("HIH", height=4, rotation=30, dxfattribs=a).set_placement(
@@ -41,26 +49,18 @@ mt = msp.add_mtext("{\\fDejaVu Sans|b0|i0;M}\\H1.2x;TEXT\\~%%p0.1 \\S1/2;",
 doc.saveas(f"{out}/text.dxf")
 
 # text-shx.dxf: a text in a style whose font is an SHX file.
-doc = new()
-msp = doc.modelspace()
-plate(msp)
-doc.styles.new("ROMANS", dxfattribs={"font": "romans.shx"})
+doc, msp = plated("ROMANS", "romans.shx")
 msp.add_text("PART 7", height=5, dxfattribs={"layer": "NOTES", "style": "ROMANS", "insert": (20, 25)})
 doc.saveas(f"{out}/text-shx.dxf")
 
 # text-missing-font.dxf: a style naming a TrueType font that is not
 # installed (the stand-in is used, with a warning).
-doc = new()
-msp = doc.modelspace()
-plate(msp)
-doc.styles.new("GONE", dxfattribs={"font": "no-such-font-bezcam.ttf"})
+doc, msp = plated("GONE", "no-such-font-bezcam.ttf")
 msp.add_text("HIH", height=5, dxfattribs={"layer": "NOTES", "style": "GONE", "insert": (20, 25)})
 doc.saveas(f"{out}/text-missing-font.dxf")
 
 # text-lines.dxf: an MTEXT of two lines (refused).
-doc = new()
-msp = doc.modelspace()
-plate(msp)
+doc, msp = plated()
 msp.add_mtext("FIRST\\PSECOND", dxfattribs={"layer": "NOTES", "style": "SANS", "char_height": 3,
                                             "insert": (10, 40)})
 doc.saveas(f"{out}/text-lines.dxf")
