@@ -88,27 +88,38 @@ void disk(const Vec3& c, double r, double y, double& lo, double& hi) {
 }  // namespace
 
 void PocketGrid::stamp(const Vec3& a, const Vec3& b, double radius, std::vector<uint8_t>& bits, uint8_t v) const {
-  const long j0 = std::max(0L, static_cast<long>(std::floor((std::min(a.y, b.y) - radius - y0) / cell - 0.5)));
-  const long j1 = std::min(ny - 1, static_cast<long>(std::ceil((std::max(a.y, b.y) + radius - y0) / cell - 0.5)));
-  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy, l = std::sqrt(l2);
+  const Capsule c(a, b, radius);
+  const auto [j0, j1] = rows(c);
   for (long j = j0; j <= j1; ++j) {
-    const double y = y0 + (static_cast<double>(j) + 0.5) * cell;
-    // The capsule meets the row in one interval: the union of the end
-    // disks and the band along the segment.
-    double lo = 1e300, hi = -1e300;
-    disk(a, radius, y, lo, hi);
-    disk(b, radius, y, lo, hi);
-    if (l2 > 0) {
-      double blo = -1e300, bhi = 1e300;
-      clip(((-a.x) * dx + (y - a.y) * dy) / l2, dx / l2, 0, 1, blo, bhi);
-      clip(((-a.x) * -dy + (y - a.y) * dx) / l, -dy / l, -radius, radius, blo, bhi);
-      if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
-    }
-    if (lo > hi) continue;
-    const long i0 = std::max(0L, static_cast<long>(std::ceil((lo - x0) / cell - 0.5)));
-    const long i1 = std::min(nx - 1, static_cast<long>(std::floor((hi - x0) / cell - 0.5)));
-    for (long i = i0; i <= i1; ++i) bits[static_cast<size_t>(j * nx + i)] = v;
+    const auto [i0, i1] = span(c, j);
+    const size_t row = static_cast<size_t>(j * nx);
+    for (long i = i0; i <= i1; ++i) bits[row + static_cast<size_t>(i)] = v;
   }
+}
+
+std::pair<long, long> PocketGrid::rows(const Capsule& c) const {
+  return {std::max(0L, static_cast<long>(std::floor((std::min(c.a.y, c.b.y) - c.radius - y0) / cell - 0.5))),
+          std::min(ny - 1, static_cast<long>(std::ceil((std::max(c.a.y, c.b.y) + c.radius - y0) / cell - 0.5)))};
+}
+
+std::pair<long, long> PocketGrid::span(const Capsule& c, long j) const {
+  const Vec3 &a = c.a, &b = c.b;
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = c.l2, l = c.l;
+  const double y = y0 + (static_cast<double>(j) + 0.5) * cell;
+  // The capsule meets the row in one interval: the union of the end
+  // disks and the band along the segment.
+  double lo = 1e300, hi = -1e300;
+  disk(a, c.radius, y, lo, hi);
+  disk(b, c.radius, y, lo, hi);
+  if (l2 > 0) {
+    double blo = -1e300, bhi = 1e300;
+    clip(((-a.x) * dx + (y - a.y) * dy) / l2, dx / l2, 0, 1, blo, bhi);
+    clip(((-a.x) * -dy + (y - a.y) * dx) / l, -dy / l, -c.radius, c.radius, blo, bhi);
+    if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
+  }
+  if (lo > hi) return {0, -1};
+  return {std::max(0L, static_cast<long>(std::ceil((lo - x0) / cell - 0.5))),
+          std::min(nx - 1, static_cast<long>(std::floor((hi - x0) / cell - 0.5)))};
 }
 
 std::vector<std::pair<Vec3, size_t>> PocketGrid::components(const std::vector<uint8_t>& bits, size_t min) const {
@@ -199,6 +210,11 @@ std::vector<uint8_t> PocketGrid::dilated(const std::vector<uint8_t>& bits, doubl
 std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces, double r,
                                                std::vector<uint8_t> material) const {
   constexpr int kSamples = 90;  // 2 degrees each over the front half
+  double cs[kSamples], sn[kSamples];
+  for (int k = 0; k < kSamples; ++k) {
+    const double th = -std::numbers::pi / 2 + (k + 0.5) * std::numbers::pi / kSamples;
+    cs[k] = std::cos(th), sn[k] = std::sin(th);
+  }
   double best = 0;
   Vec3 at;
   auto held = [&](double x, double y) {
@@ -214,8 +230,7 @@ std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces,
         const double t = len * s / steps, cx = p.a.x + ux * t, cy = p.a.y + uy * t;
         int n = 0;
         for (int k = 0; k < kSamples; ++k) {
-          const double th = -std::numbers::pi / 2 + (k + 0.5) * std::numbers::pi / kSamples;
-          const double dx = ux * std::cos(th) - uy * std::sin(th), dy = ux * std::sin(th) + uy * std::cos(th);
+          const double dx = ux * cs[k] - uy * sn[k], dy = ux * sn[k] + uy * cs[k];
           n += held(cx + r * dx, cy + r * dy);
         }
         const double deg = 180.0 * n / kSamples;

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to cam: the square grid of samples the pocket certificate
 // (pocket_check.hpp) and the planner's search for material left read.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -34,6 +35,18 @@ struct PocketGrid {
   std::vector<uint8_t> fill(const PocketLoops& loops) const;
   /// Sets `v` on every sample within `radius` of the segment ab.
   void stamp(const Vec3& a, const Vec3& b, double radius, std::vector<uint8_t>& bits, uint8_t v) const;
+  /// The points within `radius` of the segment ab.
+  struct Capsule {
+    Capsule(const Vec3& a_, const Vec3& b_, double r)
+        : a(a_), b(b_), radius(r), l2((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y)), l(std::sqrt(l2)) {}
+    Vec3 a, b;
+    double radius, l2, l;
+  };
+  /// The rows (first, last) the capsule's samples may lie on.
+  std::pair<long, long> rows(const Capsule& c) const;
+  /// The capsule's samples on row j: columns from first to last (first
+  /// above last when none).
+  std::pair<long, long> span(const Capsule& c, long j) const;
   /// The 4-connected pieces of set samples of at least `min` samples: a
   /// sample of each (the one farthest from the piece's edge) and its count,
   /// largest first.
