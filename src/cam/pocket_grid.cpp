@@ -207,19 +207,22 @@ std::vector<uint8_t> PocketGrid::dilated(const std::vector<uint8_t>& bits, doubl
   return out;
 }
 
-std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces, double r,
-                                               std::vector<uint8_t> material) const {
+PocketGrid::Engagement PocketGrid::engagement(const std::vector<Piece>& pieces, double r, std::vector<uint8_t> material,
+                                              const std::function<bool(const Vec3&)>& in_zone, double limit) const {
   constexpr int kSamples = 90;  // 2 degrees each over the front half
   double cs[kSamples], sn[kSamples];
   for (int k = 0; k < kSamples; ++k) {
     const double th = -std::numbers::pi / 2 + (k + 0.5) * std::numbers::pi / kSamples;
     cs[k] = std::cos(th), sn[k] = std::sin(th);
   }
-  double best = 0;
-  Vec3 at;
-  auto held = [&](double x, double y) {
+  Engagement e;
+  auto at = [&](double x, double y) -> long {
     const long i = static_cast<long>(std::floor((x - x0) / cell)), j = static_cast<long>(std::floor((y - y0) / cell));
-    return i >= 0 && j >= 0 && i < nx && j < ny && material[static_cast<size_t>(j * nx + i)];
+    return i >= 0 && j >= 0 && i < nx && j < ny ? j * nx + i : -1;
+  };
+  auto held = [&](double x, double y) {
+    const long k = at(x, y);
+    return k >= 0 && material[static_cast<size_t>(k)];
   };
   for (const Piece& p : pieces) {
     const double len = std::hypot(p.b.x - p.a.x, p.b.y - p.a.y);
@@ -234,12 +237,25 @@ std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces,
           n += held(cx + r * dx, cy + r * dy);
         }
         const double deg = 180.0 * n / kSamples;
-        if (deg > best) best = deg, at = {cx, cy, p.a.z};
+        const Vec3 c{cx, cy, p.a.z};
+        if (deg > e.deg) e.deg = deg, e.at = c;
+        if (deg <= e.away_deg && deg <= limit) continue;
+        if (!in_zone(c)) {
+          if (deg > e.away_deg) e.away_deg = deg, e.away_at = c;
+        } else if (deg > limit) {
+          auto near = std::find_if(e.zone_over.begin(), e.zone_over.end(), [&](const auto& z) {
+            return std::hypot(z.second.x - cx, z.second.y - cy) <= 2 * r;
+          });
+          if (near == e.zone_over.end())
+            e.zone_over.push_back({deg, c});
+          else if (deg > near->first)
+            *near = {deg, c};
+        }
       }
     }
     stamp(p.a, p.b, r, material, 0);
   }
-  return {best, at};
+  return e;
 }
 
 }  // namespace bezcam::detail

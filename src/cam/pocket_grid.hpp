@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -56,9 +57,18 @@ struct PocketGrid {
   std::vector<double> distance(const std::vector<uint8_t>& bits) const;
   /// The samples within `d` of a set sample by that distance.
   std::vector<uint8_t> dilated(const std::vector<uint8_t>& bits, double d) const;
-  /// The largest engagement angle (degrees) along the pieces in order,
-  /// against `material` (copied; cleared as the tool sweeps it), and where.
-  std::pair<double, Vec3> engagement(const std::vector<Piece>& pieces, double r, std::vector<uint8_t> material) const;
+  /// The engagement read along the pieces in order against `material`
+  /// (copied; cleared as the tool sweeps it): the largest angle (degrees)
+  /// and where; the largest at positions not `in_zone` (corners sharper
+  /// than the tool) and where; and the positions in the zone above
+  /// `limit`, at most one per 2 r (the largest).
+  struct Engagement {
+    double deg = 0, away_deg = 0;
+    Vec3 at, away_at;
+    std::vector<std::pair<double, Vec3>> zone_over;
+  };
+  Engagement engagement(const std::vector<Piece>& pieces, double r, std::vector<uint8_t> material,
+                        const std::function<bool(const Vec3&)>& in_zone, double limit) const;
 };
 
 }  // namespace bezcam::detail
