@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <deque>
 #include <numbers>
 #include <optional>
@@ -18,6 +19,18 @@ namespace bezcam::detail {
 
 namespace {
 constexpr int kCircle = kAdaptiveCircle;
+
+// Sorts sample indices below `n` (a radix sort, 11 bits a pass).
+void sort_samples(std::vector<size_t>& v, size_t n) {
+  std::vector<size_t> tmp(v.size());
+  for (unsigned shift = 0; shift < 64 && (n >> shift) > 0; shift += 11) {
+    size_t at[2049] = {};
+    for (size_t k : v) ++at[((k >> shift) & 2047) + 1];
+    for (size_t d = 1; d < 2049; ++d) at[d] += at[d - 1];
+    for (size_t k : v) tmp[at[(k >> shift) & 2047]++] = k;
+    v.swap(tmp);
+  }
+}
 }  // namespace
 
 // The samples of piece `cur` not yet settled within 1.5 load of the settled
@@ -42,24 +55,8 @@ Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::ve
   const long steps = static_cast<long>(std::ceil((1.5 * load_ + 3 * g_.cell) / g_.cell));
   std::vector<int>& seen = seen_;
   seen.resize(g_.size(), -1);
-  std::deque<size_t> q;
-  for (size_t k : b.frontier) seen[k] = 0, q.push_back(k);
-  while (!q.empty()) {
-    const size_t k = q.front();
-    q.pop_front();
-    const long d = seen[k];
-    if (d >= steps) continue;
-    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
-    for (long dj = -1; dj <= 1; ++dj)
-      for (long di = -1; di <= 1; ++di) {
-        if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
-        const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
-        if (settled[n] || stuck_[n] || !in_piece(n) || seen[n] >= 0) continue;
-        seen[n] = static_cast<int>(d + 1);
-        q.push_back(n);
-        b.cells.push_back(n);
-      }
-  }
+  spread(
+      b.frontier, steps, [&](size_t n) { return !settled[n] && !stuck_[n] && in_piece(n); }, b.cells);
   for (size_t k : b.frontier) seen[k] = -1;
   for (size_t k : b.cells) seen[k] = -1;
   // One front at a time: the 8-connected piece of the band nearest the tool.
@@ -69,12 +66,13 @@ Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::ve
   double best_d = 1e300;
   for (size_t s0 : b.cells) {
     if (label[s0] != -2) continue;
-    std::deque<size_t> w{s0};
+    std::vector<size_t> w{s0};
     label[s0] = pieces;
     while (!w.empty()) {
-      const size_t k = w.front();
-      w.pop_front();
-      const double d = have_cur_ ? dxy(g_.sample(k), cur_) : 0;
+      const size_t k = w.back();
+      w.pop_back();
+      const Vec3 c = g_.sample(k);
+      const double d = have_cur_ ? (c.x - cur_.x) * (c.x - cur_.x) + (c.y - cur_.y) * (c.y - cur_.y) : 0;
       if (d < best_d) best_d = d, best = pieces;
       const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
       for (long dj = -1; dj <= 1; ++dj)
@@ -107,32 +105,76 @@ Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::ve
   // every point smoothing can take onto it (four passes over steps of at
   // most a twelfth of the radius, or two cells), in grid order.
   const long reach = static_cast<long>(std::ceil(4 * std::max(2 * g_.cell, r_ / 12) / g_.cell)) + 2;
-  std::deque<size_t> wq;
-  for (size_t k : b.cells) seen[k] = 0, wq.push_back(k), b.seeds.push_back(k);
+  std::vector<size_t> from = b.cells;
   for (size_t k : b.frontier)
-    if (active_[k] == 2) seen[k] = 0, wq.push_back(k), b.seeds.push_back(k);
-  while (!wq.empty()) {
-    const size_t k = wq.front();
-    wq.pop_front();
+    if (active_[k] == 2) from.push_back(k);
+  b.seeds = from;
+  spread(
+      from, reach, [](size_t) { return true; }, b.seeds);
+  for (size_t k : b.seeds) seen[k] = -1;
+  sort_samples(b.seeds, g_.size());
+  const int cap = static_cast<int>(std::ceil(2 * (target_ / 180) * kCircle)) + 1;
+  b.count.resize(b.cells.size());
+  for (size_t m = 0; m < b.cells.size(); ++m) b.count[m] = std::min(circle_count(b.cells[m]), cap + 1);
+  return b;
+}
+
+// The samples within `steps` 8-connected steps of `from` through samples
+// that satisfy `ok`, each once, appended to `out` (`from` not included).
+// seen_ holds each one's steps afterwards: the caller resets it to -1.
+template <class Ok>
+void Adaptive::spread(const std::vector<size_t>& from, long steps, const Ok& ok, std::vector<size_t>& out) const {
+  std::vector<int>& seen = seen_;
+  seen.resize(g_.size(), -1);
+  std::vector<size_t> q(from);
+  for (size_t k : from) seen[k] = 0;
+  for (size_t head = 0; head < q.size(); ++head) {
+    const size_t k = q[head];
     const long d = seen[k];
-    if (d >= reach) continue;
+    if (d >= steps) continue;
     const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
     for (long dj = -1; dj <= 1; ++dj)
       for (long di = -1; di <= 1; ++di) {
         if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
         const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
-        if (seen[n] >= 0) continue;
+        if (seen[n] >= 0 || !ok(n)) continue;
         seen[n] = static_cast<int>(d + 1);
-        wq.push_back(n);
-        b.seeds.push_back(n);
+        q.push_back(n);
+        out.push_back(n);
       }
   }
-  for (size_t k : b.seeds) seen[k] = -1;
-  std::sort(b.seeds.begin(), b.seeds.end());
-  const int cap = static_cast<int>(std::ceil(2 * (target_ / 180) * kCircle)) + 1;
-  b.count.resize(b.cells.size());
-  for (size_t m = 0; m < b.cells.size(); ++m) b.count[m] = on_circle(g_.sample(b.cells[m]), r_, cap);
-  return b;
+}
+
+// Clears the material within r of the segment ab, and the counts of the
+// circles through what it clears.
+void Adaptive::cut(const Vec3& a, const Vec3& b) {
+  const PocketGrid::Capsule c(a, b, r_);
+  const auto [j0, j1] = g_.rows(c);
+  for (long j = j0; j <= j1; ++j) {
+    const auto [i0, i1] = g_.span(c, j);
+    if (i0 > i1) continue;
+    uint8_t* const row = mat_.data() + j * g_.nx;
+    for (long i = i0; i <= i1; ++i) {
+      // The next sample still in material on the row (most are cleared).
+      const void* at = std::memchr(row + i, 1, static_cast<size_t>(i1 - i + 1));
+      if (!at) break;
+      i = static_cast<const uint8_t*>(at) - row;
+      row[i] = 0;
+      const long k = j * g_.nx + i;
+      if (i >= ring_reach_ && j >= ring_reach_ && i + ring_reach_ < g_.nx && j + ring_reach_ < g_.ny) {
+        for (const long o : ring_lin_) {
+          int16_t& n = count_[static_cast<size_t>(k - o)];
+          if (n > 0) --n;
+        }
+        continue;
+      }
+      for (const auto& [di, dj] : ring_off_)
+        if (i - di >= 0 && j - dj >= 0 && i - di < g_.nx && j - dj < g_.ny) {
+          int16_t& n = count_[static_cast<size_t>((j - dj) * g_.nx + i - di)];
+          if (n > 0) --n;
+        }
+    }
+  }
 }
 
 // The next ring round the settled samples of piece `cur`: the edge of the
@@ -154,10 +196,10 @@ std::vector<Adaptive::Chain> Adaptive::ring(const Band& b, const std::vector<uin
     has[k] = 1;
   }
   // Only what grows from the settled samples (4-connected through f < 0).
-  std::deque<size_t> q(b.frontier.begin(), b.frontier.end());
+  std::vector<size_t> q(b.frontier);
   while (!q.empty()) {
-    const size_t k = q.front();
-    q.pop_front();
+    const size_t k = q.back();
+    q.pop_back();
     const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
     for (const auto& [di, dj] : {std::pair{1L, 0L}, {-1L, 0L}, {0L, 1L}, {0L, -1L}}) {
       if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
@@ -327,15 +369,14 @@ std::vector<PocketPass> Adaptive::run() {
       const Band b = band(settled, comp, cur, near);
       for (int attempt = 0; attempt < 6; ++attempt, lambda *= 0.8) {
         loops = ring(b, settled, comp, cur, lambda, grown);
-        const double w = ring_worst(loops);
-        if (w <= target_) break;
+        if (ring_worst(loops, target_) <= target_) break;
       }
       bool cut = false;
       for (auto& l : loops) cut = take(std::move(l.pts), l.closed) || cut;
       for (size_t k : grown) settled[k] = 1;
       near = b.frontier;
       near.insert(near.end(), grown.begin(), grown.end());
-      std::sort(near.begin(), near.end());
+      sort_samples(near, g_.size());
       near.erase(std::unique(near.begin(), near.end()), near.end());
       for (size_t k : b.cells) active_[k] = 0;
       for (size_t k : b.frontier) active_[k] = 0;

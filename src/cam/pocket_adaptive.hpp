@@ -3,7 +3,9 @@
 // the cleared area ring by ring, pocket_adaptive_pass.cpp turns rings into
 // passes and links).
 #include <cmath>
+#include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "pocket_contour.hpp"
@@ -47,11 +49,13 @@ class Adaptive {
     }
     const std::vector<uint8_t> in_region = g_.fill(in.walls);
     fwall_.assign(g_.size(), 1.0f);
+    wdist_.assign(g_.size(), -1.0f);
     std::vector<uint8_t> lost(g_.size(), 0);
     for (size_t k = 0; k < g_.size(); ++k) {
       if (!in_region[k]) continue;
       const double d = walls_.dist(g_.sample(k));
       fwall_[k] = static_cast<float>(d_wall_ + delta_ - d);
+      wdist_[k] = static_cast<float>(d);
       lost[k] = !mat_[k] && d > in.stock + in.tolerance / 2;
     }
     strip_.assign(g_.size(), 0);
@@ -62,20 +66,51 @@ class Adaptive {
     // it, the ring along the walls takes it.
     const std::vector<uint8_t> near_lost = g_.dilated(lost, load_);
     for (size_t k = 0; k < g_.size(); ++k) mat_[k] = mat_[k] && !near_lost[k];
+    // The circle about a sample meets the grid at fixed offsets from it.
+    for (int k = 0; k < kAdaptiveCircle; ++k) {
+      const long di = static_cast<long>(std::floor(0.5 + r_ * cs_[k] / g_.cell)),
+                 dj = static_cast<long>(std::floor(0.5 + r_ * sn_[k] / g_.cell));
+      ring_off_[k] = {di, dj};
+      ring_lin_[k] = dj * g_.nx + di;
+      ring_reach_ = std::max({ring_reach_, std::abs(di), std::abs(dj)});
+    }
+    count_.assign(g_.size(), -1);
   }
 
   std::vector<PocketPass> run();
 
  private:
+  // The grid square holding (x, y); false outside the grid.
+  bool square_of(double x, double y, size_t& k) const {
+    const double u = (x - g_.x0) / g_.cell, v = (y - g_.y0) / g_.cell;
+    if (!(u >= 0 && v >= 0 && u < static_cast<double>(g_.nx) && v < static_cast<double>(g_.ny))) return false;
+    k = static_cast<size_t>(static_cast<long>(v) * g_.nx + static_cast<long>(u));  // floor: u, v >= 0
+    return true;
+  }
   bool held(double x, double y) const {
-    const long i = static_cast<long>(std::floor((x - g_.x0) / g_.cell)),
-               j = static_cast<long>(std::floor((y - g_.y0) / g_.cell));
-    return i >= 0 && j >= 0 && i < g_.nx && j < g_.ny && mat_[static_cast<size_t>(j * g_.nx + i)];
+    size_t k = 0;
+    return square_of(x, y, k) && mat_[k];
   }
   // Material samples on the circle of radius rad about p; stops above `limit`.
   int on_circle(const Vec3& p, double rad, int limit = kAdaptiveCircle) const {
     int n = 0;
     for (int k = 0; k < kAdaptiveCircle && n <= limit; ++k) n += held(p.x + rad * cs_[k], p.y + rad * sn_[k]);
+    return n;
+  }
+  // on_circle(g_.sample(k), r_), kept up to date as material is cut.
+  int circle_count(size_t k) const {
+    if (count_[k] >= 0) return count_[k];
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    int n = 0;
+    if (i >= ring_reach_ && j >= ring_reach_ && i + ring_reach_ < g_.nx && j + ring_reach_ < g_.ny) {
+      for (const long o : ring_lin_) n += mat_[static_cast<size_t>(static_cast<long>(k) + o)];
+      count_[k] = static_cast<int16_t>(n);
+      return n;
+    }
+    for (const auto& [di, dj] : ring_off_)
+      if (i + di >= 0 && j + dj >= 0 && i + di < g_.nx && j + dj < g_.ny)
+        n += mat_[static_cast<size_t>((j + dj) * g_.nx + i + di)];
+    count_[k] = static_cast<int16_t>(n);
     return n;
   }
   // No material under the tool at p, but for what lies within a cell and a
@@ -104,16 +139,19 @@ class Adaptive {
   bool free(const Vec3& p) const {
     if (!clear(p) || on_circle(p, r_, 0) > 0) return false;
     for (int k = 0; k < kAdaptiveCircle; ++k) {
-      const double x = p.x + (r_ + g_.cell) * cs_[k], y = p.y + (r_ + g_.cell) * sn_[k];
-      const long i = static_cast<long>(std::floor((x - g_.x0) / g_.cell)),
-                 j = static_cast<long>(std::floor((y - g_.y0) / g_.cell));
-      if (i < 0 || j < 0 || i >= g_.nx || j >= g_.ny) continue;
-      const size_t c = static_cast<size_t>(j * g_.nx + i);
-      if (mat_[c] && !strip_[c]) return false;
+      size_t c = 0;
+      if (square_of(p.x + (r_ + g_.cell) * cs_[k], p.y + (r_ + g_.cell) * sn_[k], c) && mat_[c] && !strip_[c])
+        return false;
     }
     return true;
   }
-  bool inside(const Vec3& p) const { return walls_.dist(p) >= d_wall_; }
+  // At least d_wall from the walls: read from the sample's distance where
+  // that decides it (the distance changes by at most the way to the sample).
+  bool inside(const Vec3& p) const {
+    size_t k = 0;
+    if (square_of(p.x, p.y, k) && wdist_[k] >= d_wall_ + 0.75 * g_.cell + 1e-4) return true;
+    return walls_.dist(p) >= d_wall_;
+  }
   bool segment_clear(const Vec3& a, const Vec3& b) const {
     const int n = std::max(1, static_cast<int>(std::ceil(dxy(a, b) / g_.cell)));
     for (int k = 0; k <= n; ++k) {
@@ -123,9 +161,10 @@ class Adaptive {
     return true;
   }
   void stamp(const std::vector<Vec3>& pts) {
-    for (size_t k = 0; k + 1 < pts.size(); ++k) g_.stamp(pts[k], pts[k + 1], r_, mat_, 0);
-    if (pts.size() == 1) g_.stamp(pts[0], pts[0], r_, mat_, 0);
+    for (size_t k = 0; k + 1 < pts.size(); ++k) cut(pts[k], pts[k + 1]);
+    if (pts.size() == 1) cut(pts[0], pts[0]);
   }
+  void cut(const Vec3& a, const Vec3& b);
   double worst(const std::vector<Vec3>& pts, size_t from, size_t to) const {
     double w = 0;
     // Both ways the tool leaves and reaches each point (the check reads
@@ -147,6 +186,8 @@ class Adaptive {
   };
   Band band(const std::vector<uint8_t>& settled, const std::vector<int>& comp, int cur,
             const std::vector<size_t>& near) const;
+  template <class Ok>
+  void spread(const std::vector<size_t>& from, long steps, const Ok& ok, std::vector<size_t>& out) const;
   struct Chain {
     std::vector<Vec3> pts;
     bool closed = true;
@@ -160,7 +201,7 @@ class Adaptive {
   void closed_loop(const std::vector<Vec3>& loop);
   bool spiral(const std::vector<Vec3>& loop);
   std::optional<std::vector<Vec3>> spiral_turn(const std::vector<Vec3>& loop) const;
-  double ring_worst(const std::vector<Chain>& chains) const;
+  double ring_worst(const std::vector<Chain>& chains, double stop) const;
   void finish(PocketPass p);
   void push(PocketPass p) {
     turn_.clear();
@@ -180,6 +221,11 @@ class Adaptive {
   double hc_[180], hs_[180];  // the front half, a degree apart
   std::vector<uint8_t> mat_;
   std::vector<float> fwall_;
+  std::vector<float> wdist_;                         // distance to the walls (capped) of samples inside them, else -1
+  std::pair<long, long> ring_off_[kAdaptiveCircle];  // the circle's samples about a sample, in cells
+  long ring_lin_[kAdaptiveCircle];                   // the same as index offsets
+  long ring_reach_ = 0;                              // their largest coordinate
+  mutable std::vector<int16_t> count_;               // circle_count per sample, -1 until read
   std::vector<PocketPass> out_;
   Vec3 cur_, dir_;
   bool have_cur_ = false;

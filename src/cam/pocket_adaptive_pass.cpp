@@ -195,13 +195,15 @@ bool Adaptive::spiral(const std::vector<Vec3>& loop) {
 
 // The largest engagement the ring's loops would cut with: a loop in
 // material all round as the spiral turn that would cut it, else where it
-// reaches material.
-double Adaptive::ring_worst(const std::vector<Chain>& chains) const {
+// reaches material. Once above `stop` the reading ends (the ring is not
+// taken whatever the rest reads).
+double Adaptive::ring_worst(const std::vector<Chain>& chains, double stop) const {
   double w = 0;
   for (const auto& ch : chains) {
+    if (w > stop) break;
     const auto& l = ch.pts;
     if (!ch.closed) {
-      for (size_t i = 0; i < l.size(); ++i)
+      for (size_t i = 0; i < l.size() && w <= stop; ++i)
         if (on_front(l[i]) && !clear(l[i])) w = std::max(w, worst(l, i, i + 1));
       continue;
     }
@@ -217,7 +219,7 @@ double Adaptive::ring_worst(const std::vector<Chain>& chains) const {
     std::vector<Vec3> c = l;
     c.push_back(l.front());
     c.insert(c.begin(), l.back());
-    for (size_t i = 0; i < n; ++i)
+    for (size_t i = 0; i < n && w <= stop; ++i)
       if (t[i]) w = std::max(w, worst(c, i + 1, i + 2));
   }
   return w;

@@ -124,6 +124,24 @@ void rapids(const PocketCheckInput& in, const std::vector<Piece>& path, PocketCe
   }
 }
 
+// The point of segment ab nearest p.
+Vec3 nearest_on(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0;
+  return {a.x + t * dx, a.y + t * dy, 0};
+}
+
+// A place in a sharp corner where the engagement passes the bound: kept
+// once per corner (the largest).
+void corner_over(PocketCertificate& c, double deg, const Vec3& at, double r) {
+  for (auto& p : c.engagement_corners)
+    if (std::hypot(p.at.x - at.x, p.at.y - at.y) <= 2 * r) {
+      if (deg > p.deg) p.deg = deg, p.at = at;
+      return;
+    }
+  c.engagement_corners.push_back({at, deg});
+}
+
 }  // namespace
 
 PocketCertificate check_pocket(const PocketCheckInput& in) {
@@ -165,6 +183,51 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
   // before, less the places the tool cannot reach (and the sliver near them).
   std::vector<uint8_t> material = in_region;
   const std::vector<uint8_t> never = g.dilated(lost, in.load);
+  // The tool positions whose edge comes within `load` of what no tool
+  // position reaches (a sample of it): working in a corner sharper than
+  // the tool. The grid's distance (at most 1.09 times the true one) rules
+  // most out; the rest are measured.
+  const std::vector<double> to_lost = g.distance(lost);
+  const double wrap = r + in.load;
+  // Or in a gap narrower than the tool and a load each side: walls on
+  // two sides (their nearest points more than 90 degrees apart round the
+  // position) nearer together than 2 (r + load).
+  auto wedged = [&](const Vec3& p) {
+    Vec3 n1;
+    double d1 = 1e300;
+    for (const auto& l : in.walls)
+      for (size_t i = 0; i < l.size(); ++i) {
+        const Vec3 q = nearest_on(p, l[i], l[(i + 1) % l.size()]);
+        const double d = std::hypot(q.x - p.x, q.y - p.y);
+        if (d < d1) d1 = d, n1 = q;
+      }
+    for (const auto& l : in.walls)
+      for (size_t i = 0; i < l.size(); ++i) {
+        const Vec3 q = nearest_on(p, l[i], l[(i + 1) % l.size()]);
+        const double d = std::hypot(q.x - p.x, q.y - p.y);
+        if (d1 + d < 2 * wrap && (q.x - p.x) * (n1.x - p.x) + (q.y - p.y) * (n1.y - p.y) < 0) return true;
+      }
+    return false;
+  };
+  auto corner = [&](const Vec3& p) {
+    if (wedged(p)) return true;
+    const long i = static_cast<long>(std::floor((p.x - g.x0) / g.cell)),
+               j = static_cast<long>(std::floor((p.y - g.y0) / g.cell));
+    if (i < 0 || j < 0 || i >= g.nx || j >= g.ny ||
+        to_lost[static_cast<size_t>(j * g.nx + i)] > 1.09 * wrap + 2 * g.cell)
+      return false;
+    const long m = static_cast<long>(std::ceil(wrap / g.cell)) + 1;
+    for (long v = std::max(0L, j - m); v <= std::min(g.ny - 1, j + m); ++v)
+      for (long u = std::max(0L, i - m); u <= std::min(g.nx - 1, i + m); ++u) {
+        const size_t k = static_cast<size_t>(v * g.nx + u);
+        if (!lost[k]) continue;
+        const Vec3 q = g.sample(k);
+        if (std::hypot(q.x - p.x, q.y - p.y) <= wrap) return true;
+      }
+    return false;
+  };
+  const double bound =
+      in.load > 0 ? std::acos(std::clamp(1 - in.load / r, -1.0, 1.0)) * 180 / std::numbers::pi + 2 : 1e300;
   for (size_t k = 0; k < g.size(); ++k) material[k] = material[k] && !before[k] && !never[k];
 
   const std::vector<Piece> path = replay(in, sag);
@@ -194,11 +257,15 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
       c.uncut_z = z;
     }
     if (in.engagement) {
-      const auto e = g.engagement(into, r, material);
-      if (e.first > c.engagement_deg) c.engagement_deg = e.first, c.engagement_at = e.second;
+      const auto e = g.engagement(into, r, material, corner, bound);
+      if (e.deg > c.engagement_deg) c.engagement_deg = e.deg, c.engagement_at = e.at;
+      if (e.away_deg > c.engagement_away_deg) c.engagement_away_deg = e.away_deg, c.engagement_away_at = e.away_at;
+      for (const auto& [deg, where] : e.zone_over) corner_over(c, deg, where, r);
     }
   }
-  if (in.load > 0) c.engagement_bound = std::acos(std::clamp(1 - in.load / r, -1.0, 1.0)) * 180 / std::numbers::pi + 2;
+  std::sort(c.engagement_corners.begin(), c.engagement_corners.end(),
+            [](const PocketEngagementPlace& p, const PocketEngagementPlace& q) { return p.deg > q.deg; });
+  if (in.load > 0) c.engagement_bound = bound;
   wall_distance(in, path, r + s + 10 * tol + g.cell, c);
   rapids(in, path, c);
   c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -222,6 +289,10 @@ std::vector<std::string> certificate_lines(const std::string& label, const Pocke
                     sig(c.engagement_at.y) +
                     (c.engagement_bound > 0 ? ", bound arccos(1 - load/r) + 2 = " + sig(c.engagement_bound) : "") +
                     " [a full slot: 180]; ";
+  if (!c.engagement_corners.empty())
+    eng += "elsewhere than " + std::to_string(c.engagement_corners.size()) + " sharp " +
+           (c.engagement_corners.size() == 1 ? "corner" : "corners") + " at most " + sig(c.engagement_away_deg) +
+           " deg at " + sig(c.engagement_away_at.x) + ", " + sig(c.engagement_away_at.y) + "; ";
   eng += c.rapids_in_material == 0 ? "no rapid through material"
                                    : std::to_string(c.rapids_in_material) + " rapids through material";
   return {uncut, reach, eng};

@@ -398,11 +398,23 @@ void PocketCut::certify() {
     p.warnings.push_back(name() + ": the check finds " + fmt_num(cert.uncut_area, 4) + " " + units +
                          "^2 uncut that the tool could reach, beyond the limit " + fmt_num(cert.uncut_limit, 4) +
                          ", near (" + fmt_num(cert.uncut_at.x, 4) + ", " + fmt_num(cert.uncut_at.y, 4) + ")");
-  if (!cert.engagement_kept())
-    p.warnings.push_back(name() + ": the check reads an engagement of " + fmt_num(cert.engagement_deg, 4) +
-                         " degrees near (" + fmt_num(cert.engagement_at.x, 4) + ", " +
-                         fmt_num(cert.engagement_at.y, 4) + "), above the bound " + fmt_num(cert.engagement_bound, 4) +
-                         " that load " + fmt_num(load_) + " gives");
+  if (!cert.engagement_kept()) {
+    std::string w = name() + ": the check reads an engagement of " + fmt_num(cert.engagement_deg, 4) +
+                    " degrees near (" + fmt_num(cert.engagement_at.x, 4) + ", " + fmt_num(cert.engagement_at.y, 4) +
+                    "), above the bound " + fmt_num(cert.engagement_bound, 4) + " that load " + fmt_num(load_) +
+                    " gives";
+    const auto& hot = cert.engagement_corners;
+    if (!hot.empty()) {
+      w += "; in corners sharper than the tool (its edge within the load of material it cannot reach, which wraps "
+           "it): ";
+      for (size_t i = 0; i < hot.size() && i < 6; ++i)
+        w += (i ? ", " : "") + fmt_num(hot[i].deg, 4) + " at (" + fmt_num(hot[i].at.x, 4) + ", " +
+             fmt_num(hot[i].at.y, 4) + ")";
+      if (hot.size() > 6) w += " and " + std::to_string(hot.size() - 6) + " more";
+      w += "; elsewhere at most " + fmt_num(cert.engagement_away_deg, 4);
+    }
+    p.warnings.push_back(w);
+  }
   if (!cert.unreachable.empty()) {
     std::string w = name() + ": " + fmt_num(cert.unreachable_area, 4) + " " + units +
                     "^2 of material the tool (diameter " + fmt_num(2 * radius_) +

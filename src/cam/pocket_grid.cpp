@@ -88,27 +88,38 @@ void disk(const Vec3& c, double r, double y, double& lo, double& hi) {
 }  // namespace
 
 void PocketGrid::stamp(const Vec3& a, const Vec3& b, double radius, std::vector<uint8_t>& bits, uint8_t v) const {
-  const long j0 = std::max(0L, static_cast<long>(std::floor((std::min(a.y, b.y) - radius - y0) / cell - 0.5)));
-  const long j1 = std::min(ny - 1, static_cast<long>(std::ceil((std::max(a.y, b.y) + radius - y0) / cell - 0.5)));
-  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy, l = std::sqrt(l2);
+  const Capsule c(a, b, radius);
+  const auto [j0, j1] = rows(c);
   for (long j = j0; j <= j1; ++j) {
-    const double y = y0 + (static_cast<double>(j) + 0.5) * cell;
-    // The capsule meets the row in one interval: the union of the end
-    // disks and the band along the segment.
-    double lo = 1e300, hi = -1e300;
-    disk(a, radius, y, lo, hi);
-    disk(b, radius, y, lo, hi);
-    if (l2 > 0) {
-      double blo = -1e300, bhi = 1e300;
-      clip(((-a.x) * dx + (y - a.y) * dy) / l2, dx / l2, 0, 1, blo, bhi);
-      clip(((-a.x) * -dy + (y - a.y) * dx) / l, -dy / l, -radius, radius, blo, bhi);
-      if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
-    }
-    if (lo > hi) continue;
-    const long i0 = std::max(0L, static_cast<long>(std::ceil((lo - x0) / cell - 0.5)));
-    const long i1 = std::min(nx - 1, static_cast<long>(std::floor((hi - x0) / cell - 0.5)));
-    for (long i = i0; i <= i1; ++i) bits[static_cast<size_t>(j * nx + i)] = v;
+    const auto [i0, i1] = span(c, j);
+    const size_t row = static_cast<size_t>(j * nx);
+    for (long i = i0; i <= i1; ++i) bits[row + static_cast<size_t>(i)] = v;
   }
+}
+
+std::pair<long, long> PocketGrid::rows(const Capsule& c) const {
+  return {std::max(0L, static_cast<long>(std::floor((std::min(c.a.y, c.b.y) - c.radius - y0) / cell - 0.5))),
+          std::min(ny - 1, static_cast<long>(std::ceil((std::max(c.a.y, c.b.y) + c.radius - y0) / cell - 0.5)))};
+}
+
+std::pair<long, long> PocketGrid::span(const Capsule& c, long j) const {
+  const Vec3 &a = c.a, &b = c.b;
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = c.l2, l = c.l;
+  const double y = y0 + (static_cast<double>(j) + 0.5) * cell;
+  // The capsule meets the row in one interval: the union of the end
+  // disks and the band along the segment.
+  double lo = 1e300, hi = -1e300;
+  disk(a, c.radius, y, lo, hi);
+  disk(b, c.radius, y, lo, hi);
+  if (l2 > 0) {
+    double blo = -1e300, bhi = 1e300;
+    clip(((-a.x) * dx + (y - a.y) * dy) / l2, dx / l2, 0, 1, blo, bhi);
+    clip(((-a.x) * -dy + (y - a.y) * dx) / l, -dy / l, -c.radius, c.radius, blo, bhi);
+    if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
+  }
+  if (lo > hi) return {0, -1};
+  return {std::max(0L, static_cast<long>(std::ceil((lo - x0) / cell - 0.5))),
+          std::min(nx - 1, static_cast<long>(std::floor((hi - x0) / cell - 0.5)))};
 }
 
 std::vector<std::pair<Vec3, size_t>> PocketGrid::components(const std::vector<uint8_t>& bits, size_t min) const {
@@ -196,14 +207,22 @@ std::vector<uint8_t> PocketGrid::dilated(const std::vector<uint8_t>& bits, doubl
   return out;
 }
 
-std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces, double r,
-                                               std::vector<uint8_t> material) const {
+PocketGrid::Engagement PocketGrid::engagement(const std::vector<Piece>& pieces, double r, std::vector<uint8_t> material,
+                                              const std::function<bool(const Vec3&)>& in_zone, double limit) const {
   constexpr int kSamples = 90;  // 2 degrees each over the front half
-  double best = 0;
-  Vec3 at;
-  auto held = [&](double x, double y) {
+  double cs[kSamples], sn[kSamples];
+  for (int k = 0; k < kSamples; ++k) {
+    const double th = -std::numbers::pi / 2 + (k + 0.5) * std::numbers::pi / kSamples;
+    cs[k] = std::cos(th), sn[k] = std::sin(th);
+  }
+  Engagement e;
+  auto at = [&](double x, double y) -> long {
     const long i = static_cast<long>(std::floor((x - x0) / cell)), j = static_cast<long>(std::floor((y - y0) / cell));
-    return i >= 0 && j >= 0 && i < nx && j < ny && material[static_cast<size_t>(j * nx + i)];
+    return i >= 0 && j >= 0 && i < nx && j < ny ? j * nx + i : -1;
+  };
+  auto held = [&](double x, double y) {
+    const long k = at(x, y);
+    return k >= 0 && material[static_cast<size_t>(k)];
   };
   for (const Piece& p : pieces) {
     const double len = std::hypot(p.b.x - p.a.x, p.b.y - p.a.y);
@@ -214,17 +233,29 @@ std::pair<double, Vec3> PocketGrid::engagement(const std::vector<Piece>& pieces,
         const double t = len * s / steps, cx = p.a.x + ux * t, cy = p.a.y + uy * t;
         int n = 0;
         for (int k = 0; k < kSamples; ++k) {
-          const double th = -std::numbers::pi / 2 + (k + 0.5) * std::numbers::pi / kSamples;
-          const double dx = ux * std::cos(th) - uy * std::sin(th), dy = ux * std::sin(th) + uy * std::cos(th);
+          const double dx = ux * cs[k] - uy * sn[k], dy = ux * sn[k] + uy * cs[k];
           n += held(cx + r * dx, cy + r * dy);
         }
         const double deg = 180.0 * n / kSamples;
-        if (deg > best) best = deg, at = {cx, cy, p.a.z};
+        const Vec3 c{cx, cy, p.a.z};
+        if (deg > e.deg) e.deg = deg, e.at = c;
+        if (deg <= e.away_deg && deg <= limit) continue;
+        if (!in_zone(c)) {
+          if (deg > e.away_deg) e.away_deg = deg, e.away_at = c;
+        } else if (deg > limit) {
+          auto near = std::find_if(e.zone_over.begin(), e.zone_over.end(), [&](const auto& z) {
+            return std::hypot(z.second.x - cx, z.second.y - cy) <= 2 * r;
+          });
+          if (near == e.zone_over.end())
+            e.zone_over.push_back({deg, c});
+          else if (deg > near->first)
+            *near = {deg, c};
+        }
       }
     }
     stamp(p.a, p.b, r, material, 0);
   }
-  return {best, at};
+  return e;
 }
 
 }  // namespace bezcam::detail

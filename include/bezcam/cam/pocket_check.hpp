@@ -73,6 +73,12 @@ struct PocketPlace {
   double area = 0;
 };
 
+/// A place where the engagement passes the bound, and the largest there.
+struct PocketEngagementPlace {
+  Vec3 at;
+  double deg = 0;
+};
+
 struct PocketCertificate {
   double cell = 0;                       ///< the grid's pitch
   double region_area = 0;                ///< inside the walls
@@ -92,6 +98,14 @@ struct PocketCertificate {
   Vec3 wall_at;
   double engagement_deg = 0;  ///< the largest engagement angle
   Vec3 engagement_at;
+  /// The largest engagement where the tool's edge stays farther than
+  /// `load` from every unreachable place, and where.
+  double engagement_away_deg = 0;
+  Vec3 engagement_away_at;
+  /// Adaptive: the places where the tool's edge comes within `load` of an
+  /// unreachable place (a corner sharper than the tool) and the engagement
+  /// passes the bound, largest first.
+  std::vector<PocketEngagementPlace> engagement_corners;
   double engagement_bound = 0;    ///< adaptive: arccos(1 - load / r) + 2 degrees (0: none promised)
   size_t rapids_in_material = 0;  ///< G00 moves below the stock's top other than straight up
   Vec3 rapid_at;
