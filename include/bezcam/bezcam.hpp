@@ -62,6 +62,7 @@
 #include "bezcam/cam/validate.hpp"
 
 // gcode/: text in the profile's dialect, and back
+#include "bezcam/gcode/best_output.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/lint.hpp"
 #include "bezcam/gcode/number_format.hpp"

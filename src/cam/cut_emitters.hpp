@@ -69,8 +69,9 @@ struct CutContext {
   const Entity& entity;
   const MachineProfile& machine;
   const CutParams& params;
-  int decimals;      // coordinate decimals of the program's units
-  double tolerance;  // job units
+  OutputMode output;  // the entity's output mode (ConvertOptions::output_of())
+  int decimals;       // coordinate decimals of the program's units
+  double tolerance;   // job units
   bool measure;
   Program& program;
   /// Where a curve emitter leaves its measurement (null: measure at once);

@@ -127,7 +127,7 @@ void PartCut::check_curve_and_controller() {
     fail("compensation", "machine \"" + c.machine.name +
                              "\" has no cutter radius compensation (G41/G42): use \"cam\" "
                              "(the default): bezcam offsets the path itself");
-  if (p.output == OutputMode::nurbs)
+  if (c.output == OutputMode::nurbs)
     fail("compensation",
          std::string("compensation \"controller\" cannot be written as NURBS blocks: ") +
              (c.machine.nurbs == NurbsDialect::linuxcnc
@@ -367,10 +367,11 @@ double PartCut::cut(std::vector<Bezier> pieces, double z, double budget) {
   e.curve = make_single(seg, std::move(pieces), 2);
   CutParams zp = cp;
   zp.cut_z = z;
-  CutContext sub{c.job, e, c.machine, zp, dec, budget, c.measure && measure_pass, p, c.later, c.report, c.owned};
+  CutContext sub{c.job, e,       c.machine, zp,     c.output, dec, budget, c.measure && measure_pass,
+                 p,     c.later, c.report,  c.owned};
   EntityReport part_r;
   part_r.label = r.label;
-  switch (p.output) {
+  switch (c.output) {
     case OutputMode::lines:
       if (controller) {
         double bound = 0;
@@ -542,7 +543,7 @@ void PartCut::check_compensation(const Stretch& st, size_t first_move, bool last
   if (c.measure && last_pass) r.measured = std::max(r.measured, reading);
   if (stray > 0.02 * tol)
     fail("compensation",
-         "the controller's compensation of these " + std::string(to_string(p.output)) + " strays " +
+         "the controller's compensation of these " + std::string(to_string(c.output)) + " strays " +
              fmt_num(std::round(stray * 1e5) / 1e5) + " " + to_string(job.units) +
              " beyond the tolerance (its tool path lies " + fmt_num(std::round(m.min_distance * 1e5) / 1e5) + " to " +
              fmt_num(std::round(m.max_distance * 1e5) / 1e5) + " from the part, reaching the offset within " +

@@ -42,6 +42,12 @@ const char* to_string(OutputMode m) {
   return "?";
 }
 
+std::string output_name(const Program& p) {
+  if (p.best) return "best";
+  if (p.per_entity_output) return "per entity";
+  return to_string(p.output);
+}
+
 namespace {
 // The profile's defaults in the job's units (a profile's are in mm), and
 // tool 1 where the profile names none.
@@ -435,7 +441,8 @@ bool cut_pocket_region(const Job& job, const MachineProfile& m, const ConvertOpt
   detail::change_tool_and_spindle(p, m, cp, safe, ms, -1);
   EntityReport r;
   r.entity = static_cast<int>(e.index);
-  detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
+  detail::CutContext ctx{job,         e,           m, cp,     opt.output_of(e.index), p.decimals,
+                         p.tolerance, opt.measure, p, &later, p.entities.size()};
   const double clear = cp.clearance ? std::min(safe, quantize(cp.top_z + *cp.clearance, p.decimals)) : safe;
   if (clear < safe) r.clear_z = clear;
   push({Comment{"pocket: " + std::to_string(members.size()) + (members.size() == 1 ? " curve" : " curves") + " from " +
@@ -457,11 +464,12 @@ bool cut_pocket_region(const Job& job, const MachineProfile& m, const ConvertOpt
 bool cut_hole_entity(const Job& job, const MachineProfile& m, const ConvertOptions& opt, const Entity& e,
                      const CutParams& cp, double safe, detail::MotionState ms, Program& p, detail::Measurements& later,
                      ProgramLength& length, bool& joins) {
-  detail::CutContext hc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
+  const OutputMode mode = opt.output_of(e.index);
+  detail::CutContext hc{job, e, m, cp, mode, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
   const size_t i = static_cast<size_t>(&e - job.entities.data());
   const bool joins_next =
       detail::holes_join(job, m, e, i + 1 < job.entities.size() ? &job.entities[i + 1] : nullptr, p.decimals);
-  const bool hole = detail::cut_hole(hc, ms, safe, joins, joins_next, opt.output != OutputMode::lines && m.arcs);
+  const bool hole = detail::cut_hole(hc, ms, safe, joins, joins_next, mode != OutputMode::lines && m.arcs);
   joins = hole && joins_next;
   if (!hole) return false;
   later.release();
@@ -574,8 +582,11 @@ void cut_curve(const Job& job, const MachineProfile& m, const ConvertOptions& op
                            "; rapid moves at safe_z would cross it: raise safe_z");
   }
   detail::change_tool_and_spindle(p, m, cp, safe, ms, -1);
+  const OutputMode mode = opt.output_of(e.index);
+  // Each entity in its own mode: the program says which, where it is cut.
   push({Comment{"entity " + e.label() + ": " + e.type + ", degree " + std::to_string(g.max_degree()) +
-                (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D")}});
+                (g.rational() ? ", rational" : "") + (g.dim == 3 ? ", 3D" : ", 2D") +
+                (p.per_entity_output ? std::string(", ") + to_string(mode) : "")}});
 
   EntityReport r;
   r.label = e.label();
@@ -583,7 +594,7 @@ void cut_curve(const Job& job, const MachineProfile& m, const ConvertOptions& op
   r.type = e.type;
   r.degree = g.max_degree();
   r.length = g.length();
-  detail::CutContext ctx{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
+  detail::CutContext ctx{job, e, m, cp, mode, p.decimals, p.tolerance, opt.measure, p, &later, p.entities.size()};
   const Vec3 start = detail::cut_point(ctx, quantize(g.pieces.front().front(), p.decimals));
   const int entity = static_cast<int>(e.index);
   r.tool = cp.tool;
@@ -602,7 +613,7 @@ void cut_curve(const Job& job, const MachineProfile& m, const ConvertOptions& op
     detail::emit_part(ctx, ms, r, safe, clear);  // ends retracted, pos set
   } else {
     detail::approach(p, entity, start, safe, clear, cp.plunge_feed, ms);
-    cut_along(ctx, opt.output, r);
+    cut_along(ctx, mode, r);
     ms.pos = motion_of(p.moves.back())->to;  // the cut ends with a motion
     RapidMove retract;
     retract.to = {ms.pos.x, ms.pos.y, safe};
@@ -627,6 +638,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
   p.machine = m.name;
   p.units = job.units;
   p.output = opt.output;
+  p.per_entity_output = !opt.entity_output.empty();
   p.tolerance = opt.tolerance.value_or(job.tolerance);
   p.decimals = m.decimals(job.units);
   // Decimals from the tolerance: where the profile's default would use up
@@ -677,7 +689,7 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
     p.safe_z = p.entities.empty() ? safe : std::min(p.safe_z, safe);
     const auto& g = e.curve;
     if (e.surface) {  // patches and curves on surfaces: surface_emitter.cpp
-      detail::CutContext sc{job, e, m, cp, p.decimals, p.tolerance, opt.measure, p, nullptr, 0};
+      detail::CutContext sc{job, e, m, cp, opt.output_of(e.index), p.decimals, p.tolerance, opt.measure, p, nullptr, 0};
       detail::MotionState ms{cur_tool, cur_rpm, pos, pos_known, cur_coolant};
       const EntityReport r = detail::emit_surface(sc, ms);
       for (const auto& line : cp.after)
@@ -698,7 +710,10 @@ Program build_program_unchecked(const Job& original_job, const MachineProfile& m
     try {
       const size_t first = p.entities.size();
       cut_entity(e);
-      for (size_t i = first; i < p.entities.size(); ++i) p.entities[i].plunge_feed = cut_params(job, e, m).plunge_feed;
+      for (size_t i = first; i < p.entities.size(); ++i) {
+        p.entities[i].plunge_feed = cut_params(job, e, m).plunge_feed;
+        p.entities[i].output = opt.output_of(e.index);
+      }
     } catch (const InputError& x) {
       refusals.add(x, e);
     }

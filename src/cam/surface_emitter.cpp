@@ -95,8 +95,8 @@ class SurfaceEmitter {
     rep_.degree = std::max(s_.degree_u(), s_.degree_v());
     // Exact-curve blocks need a dialect that moves all three axes in one
     // block (Fanuc G06.2); LinuxCNC's G5.x move in X and Y only.
-    arcs_ = c.program.output == OutputMode::arcs && c.machine.arcs;
-    blocks_ = arcs_ || (c.program.output == OutputMode::nurbs && c.machine.nurbs == NurbsDialect::fanuc);
+    arcs_ = c.output == OutputMode::arcs && c.machine.arcs;
+    blocks_ = arcs_ || (c.output == OutputMode::nurbs && c.machine.nurbs == NurbsDialect::fanuc);
     // Passes: the printed blocks may stray from the verified polylines by
     // twice the tolerance, so the passes are planned 4 tolerances closer
     // (plan_passes() needs at least 4 tolerances of its own).
@@ -186,7 +186,7 @@ class SurfaceEmitter {
       comment(r_ > 0
                   ? "cut as NURBS blocks: cubic pieces within a proven distance of the ball-end tip curves"
                   : "cut as NURBS blocks: the exact curves on the surface (reduced to cubics where of higher degree)");
-    const OutputMode out = c_.program.output;
+    const OutputMode out = c_.output;
     if (out != OutputMode::lines && !blocks_ && rep_.blocks == 0) {
       std::string why;
       if (out == OutputMode::arcs && !c_.machine.arcs)

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "bezcam/error.hpp"
+#include "bezcam/gcode/best_output.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/import/drawing.hpp"
@@ -22,7 +23,7 @@ CLI::App* setup_check(CLI::App& app, CheckArgs& o) {
                                "continuity at path joints); writes no G-code.");
   s->add_option("JOB", o.job, "job file (JSON)")->required();
   add_post_options(s, o.post);
-  add_conversion_options(s, o.conv, "the output mode convert would use: lines, arcs or nurbs");
+  add_conversion_options(s, o.conv, "the output mode convert would use: lines, arcs, nurbs or best", true);
   s->footer(
       "check runs every validation convert runs for the machine (the job's, --machine, else generic): "
       "travel, feeds, safe Z, decimals against the tolerance, the proven and measured deviation; "
@@ -115,19 +116,31 @@ int run_check(const CheckArgs& o) {
   // job convert accepts for the same machine and settings.
   MachineProfile m = resolve_profile(job, o.conv.machine);
   ConvertOptions opt;
-  opt.output = parse_output_mode(o.conv.output);
+  const bool best = o.conv.output == "best";
+  if (!best) opt.output = parse_output_mode(o.conv.output);
   if (o.conv.tolerance > 0) opt.tolerance = o.conv.tolerance;
   apply_post_options(o.post, job, m, opt);
   std::vector<std::string> warnings;
   const auto fmt_sig = [](double v) { return format_significant(v, 3); };
   try {
-    const ConvertResult r = convert(job, m, opt);
+    if (best && !m.motion)
+      throw InputError(errc::usage_output, Place::at_option("--output"),
+                       "best chooses by the planned cycle time, and machine \"" + m.name +
+                           "\" has no motion model (key \"motion\", docs/machines.md) to plan it with");
+    // What convert writes, text included.
+    const ConvertResult r = [&] {
+      if (!best) return convert(job, m, opt);
+      ConvertResult b = convert_best(job, m, opt).result;
+      b.gcode = write_gcode(b.program, m, b.plan ? &*b.plan : nullptr);
+      return b;
+    }();
     warnings = shown_warnings(r.program.warnings, o.conv);
     refuse_warnings_if_strict(warnings, o.conv);
     std::cout << "machine " << m.name << ", " << o.conv.output << ": " << r.program.entities.size() << " entit"
               << (r.program.entities.size() == 1 ? "y" : "ies") << " cut, deviation measured "
               << fmt_sig(r.program.max_measured) << ", proven below " << format_bound(r.program.max_bound, 3) << " "
               << u << " (tolerance " << fmt_sig(r.program.tolerance) << ")\n";
+    if (best) std::cout << r.program.notes.back() << "\n";  // what each entity got
   } catch (const Error& e) {
     // The job's own warnings count even when the machine refuses it
     // (with --strict they are the refusal).

@@ -6,7 +6,7 @@
 
 namespace bezcam::cli {
 
-void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string& output_help) {
+void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string& output_help, bool takes_best) {
   s->add_option("--machine", o.machine,
                 "machine profile: a name in machines/ or a .json file "
                 "(default: the job's \"machine\", else generic)");
@@ -14,14 +14,16 @@ void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string
       ->check(positive_number());
   s->add_option("--output", o.output, output_help)
       ->check(CLI::Validator(
-          [](std::string& v) -> std::string {
-            if (v == "lines" || v == "arcs" || v == "nurbs") return {};
+          [takes_best](std::string& v) -> std::string {
+            if (v == "lines" || v == "arcs" || v == "nurbs" || (takes_best && v == "best")) return {};
+            const std::string expected = takes_best ? "lines, arcs, nurbs or best" : "lines, arcs or nurbs";
             // `--output out.nc`: the program's file is -o.
             if (v.find('.') != std::string::npos || v.find('/') != std::string::npos)
-              return "expected lines, arcs or nurbs, found \"" + v + "\"; to name the program file, use -o " + v;
-            return "expected lines, arcs or nurbs, found \"" + v + "\"";
+              return "expected " + expected + ", found \"" + v + "\"; to name the program file, use -o " + v;
+            if (v == "best") return "expected " + expected + ": best is taken by convert, check and sheet";
+            return "expected " + expected + ", found \"" + v + "\"";
           },
-          "lines|arcs|nurbs"))
+          takes_best ? "lines|arcs|nurbs|best" : "lines|arcs|nurbs"))
       ->capture_default_str();
   s->add_flag("--strict", o.strict,
               "take every warning as an error: exit status 2, nothing written (every unknown key of a job "

@@ -12,7 +12,7 @@ namespace bezcam::cli {
 struct ConversionOptions {
   std::string machine;               ///< --machine: a profile name or a .json file; empty: the job's, else generic
   double tolerance = 0;              ///< --tolerance: overrides the job's when > 0
-  std::string output = "lines";      ///< --output: lines, arcs or nurbs
+  std::string output = "lines";      ///< --output: lines, arcs, nurbs or (where the command takes it) best
   bool strict = false;               ///< --strict: warnings are errors (exit 2, nothing written)
   std::vector<std::string> no_warn;  ///< --no-warn KIND: warnings of these kinds are not given
   std::vector<std::string> sets;     ///< --set KEY=VALUE: job settings of a drawing (.svg, .dxf)
@@ -26,8 +26,8 @@ struct ConversionOptions {
 
 /// Adds --machine, --tolerance, --output, --strict, --set and --layer to
 /// `s`; `output_help` is the help of --output (what it means for this
-/// command).
-void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string& output_help);
+/// command); `takes_best`: --output best is one of its choices.
+void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string& output_help, bool takes_best = false);
 
 /// --set, --layer, --only and --skip: how a drawing (.svg, .dxf) given instead of a job is
 /// read (import).

@@ -9,7 +9,7 @@ namespace bezcam::cli {
 
 JobConversion convert_job_file(const std::string& path, const ConversionOptions& conv, const PostOptions& post,
                                bool quiet, const char* command) {
-  JobConversion c{read_job(path, conv), {}, {}, {}};
+  JobConversion c{read_job(path, conv), {}, {}, {}, {}};
   try {
     c.machine = resolve_profile(c.job, conv.machine);
   } catch (const Error&) {
@@ -17,13 +17,30 @@ JobConversion convert_job_file(const std::string& path, const ConversionOptions&
     throw;
   }
   ConvertOptions& opt = c.options;
-  opt.output = parse_output_mode(conv.output);
+  const bool best = conv.output == "best";
+  if (best && !c.machine.motion) {
+    if (!quiet) print_warnings(c.job.warnings);
+    throw InputError(errc::usage_output, Place::at_option("--output"),
+                     "best chooses by the planned cycle time, and machine \"" + c.machine.name +
+                         "\" has no motion model (key \"motion\", docs/machines.md) to plan it with; choose lines, "
+                         "arcs or nurbs");
+  }
+  if (!best) opt.output = parse_output_mode(conv.output);
   if (conv.tolerance > 0) opt.tolerance = conv.tolerance;
   apply_post_options(post, c.job, c.machine, opt);
   Progress progress(command, "entities", c.job.entities.size(), progress_config(quiet));
   opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
   try {
-    c.result = convert_program(c.job, c.machine, opt);  // every refusal before a byte is written
+    // Every refusal before a byte is written.
+    if (best) {
+      BestConversion b = convert_best(c.job, c.machine, opt);
+      c.result = std::move(b.result);
+      c.best = std::move(b.choice);
+      opt.entity_output.assign(c.job.entities.size(), OutputMode::lines);
+      for (const Entity& e : c.job.entities) opt.entity_output[e.index] = c.best->output_of(e.index);
+    } else {
+      c.result = convert_program(c.job, c.machine, opt);
+    }
   } catch (const Error&) {
     progress.finish();
     if (!quiet) print_warnings(c.job.warnings);

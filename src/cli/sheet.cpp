@@ -24,7 +24,8 @@ CLI::App* setup_sheet(CLI::App& app, SheetArgs& o) {
   s->add_option("JOB", o.job, "job file (JSON) or drawing (.svg, .dxf), as for convert")->required();
   s->add_option("-o,--output-file", o.out, "HTML file to write; written whole or not at all")->required();
   add_post_options(s, o.post);
-  add_conversion_options(s, o.conv, "cutting moves of the program the sheet describes: lines, arcs or nurbs");
+  add_conversion_options(s, o.conv, "cutting moves of the program the sheet describes: lines, arcs, nurbs or best",
+                         true);
   s->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   return s;
 }

@@ -1,24 +1,23 @@
 #include "bezcam/gcode/convert.hpp"
 
 #include "bezcam/cam/program_motion.hpp"
+#include "convert_plan.hpp"
 
 namespace bezcam {
 
-namespace {
+namespace detail {
 
-// Whether the profile's tool change position lines (e.g. G53 G00 Z0.) run
-// after the program has moved: a motion the program's moves do not hold.
-bool retracts_between_tools(const Program& p, const MachineProfile& m) {
-  if (m.tool_change_position.empty()) return false;
+bool plans_from_moves(const Program& p, const MachineProfile& m) {
+  if (m.tool_change_position.empty()) return true;
   bool moved = false;
   for (const Move& mv : p.moves) {
-    if (moved && std::holds_alternative<ToolChangePosition>(mv.what)) return true;
+    if (moved && std::holds_alternative<ToolChangePosition>(mv.what)) return false;
     moved = moved || motion_of(mv) != nullptr;
   }
-  return false;
+  return true;
 }
 
-}  // namespace
+}  // namespace detail
 
 ConvertResult convert(const Job& job, const MachineProfile& m, const ConvertOptions& opt) {
   ConvertResult r = convert_program(job, m, opt);
@@ -41,7 +40,7 @@ ConvertResult convert_program(const Job& job, const MachineProfile& m, const Con
     // profile's tool change position lines move the machine between tools:
     // those moves are in the text only, and the report plans the text read
     // back.
-    if (m.motion && !retracts_between_tools(p, m)) r.plan = plan_program_summary(p, *m.motion);
+    if (m.motion && detail::plans_from_moves(p, m)) r.plan = plan_program_summary(p, *m.motion);
   });
   return r;
 }

@@ -56,7 +56,7 @@ class Writer {
     }
     const char* u = to_string(p_.units);
     note(std::string("bezcam ") + kVersion + ": " + p_.job_name + ", machine " + m_.name + ", output " +
-         to_string(p_.output));
+         output_name(p_));
     // A number the header does not print (no O word on this controller).
     if (p_.program_number && !numbered) note("program " + std::to_string(*p_.program_number));
     // Figures in comments in significant digits, never the coordinate

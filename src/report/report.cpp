@@ -12,6 +12,7 @@
 #include "bezcam/flatten/deviation.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/report/motion_report.hpp"
+#include "output_choice.hpp"
 #include "plan_json.hpp"
 
 namespace bezcam {
@@ -105,6 +106,7 @@ ProgramReport report_of(const Program& p, const MachineProfile& m, const GcodeCo
   r.machine = p.machine;
   r.units = p.units;
   r.output = p.output;
+  r.output_name = output_name(p);
   r.tolerance = p.tolerance;
   r.decimals = p.decimals;
   r.max_measured = p.max_measured;
@@ -217,7 +219,7 @@ std::string report_json(const ProgramReport& r) {
   j["job"] = r.job;
   j["machine"] = r.machine;
   j["units"] = to_string(r.units);
-  j["output"] = to_string(r.output);
+  j["output"] = r.output_name;
   j["tolerance"] = r.tolerance;
   j["decimals"] = r.decimals;
   j["max_measured_deviation"] = r.max_measured;
@@ -232,6 +234,7 @@ std::string report_json(const ProgramReport& r) {
     x["degree"] = e.report.degree;
     x["length"] = e.report.length;
     x["blocks"] = e.report.blocks;
+    if (r.output_name != to_string(r.output)) x["output"] = to_string(e.report.output);
     x["measured_deviation"] = e.report.measured;
     x["proven_bound"] = e.report.bound;
     if (e.report.time_bound_s > 0) x["time_bound_s"] = floor_to(e.report.time_bound_s, 1e-6);
@@ -264,13 +267,14 @@ std::string report_json(const ProgramReport& r) {
     auto& alt = j["compare_outputs"] = nlohmann::ordered_json::array();
     for (const auto& a : r.alternatives) {
       nlohmann::ordered_json x;
-      x["output"] = to_string(a.output);
+      x["output"] = a.best ? "best" : to_string(a.output);
       x["cutting_blocks"] = a.blocks;
       x["gcode_bytes"] = a.gcode_bytes;
       x["planned"] = planned_json(a.planned, r.path_bound_s);
       alt.push_back(std::move(x));
     }
   }
+  if (r.choice) j["output_choice"] = detail::output_choice_json(r);
   if (r.order) {
     auto& o = j["order"];
     o["mode"] = "shortest";
@@ -295,12 +299,13 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
   const size_t n = r.entities.size();
   std::string s = "bezcam: " + std::to_string(n) + (n == 1 ? " entity, " : " entities, ") + std::to_string(blocks) +
                   " cutting block" + (blocks == 1 ? "" : "s") + " for machine " + r.machine + " (output " +
-                  to_string(r.output) + ", tolerance " + format_significant(r.tolerance, 6) + u + ")\n";
+                  r.output_name + ", tolerance " + format_significant(r.tolerance, 6) + u + ")\n";
   for (size_t i = 0; i < n && i < max_entities; ++i) {
     const EntityReport& e = r.entities[i].report;
     s += "  " + e.label + ": " + e.type + ", degree " + std::to_string(e.degree) + ", length " +
          format_significant(e.length, 6) + u + ", " + std::to_string(e.blocks) + " block" + (e.blocks == 1 ? "" : "s") +
-         ", deviation " + measured(e.measured, e.bound) + " (proven bound " + format_bound(e.bound, 3) + u + ")\n";
+         (r.output_name != to_string(r.output) ? std::string(" in ") + to_string(e.output) : "") + ", deviation " +
+         measured(e.measured, e.bound) + " (proven bound " + format_bound(e.bound, 3) + u + ")\n";
     if (e.pocket)
       for (const auto& line :
            certificate_lines(e.label, *e.pocket, e.tool_width / 2, e.offset - e.tool_width / 2, to_string(r.units)))
@@ -335,23 +340,8 @@ std::string report_text(const ProgramReport& r, size_t max_entities) {
     s += std::string("; about ") + tbuf + " (rapids at " + format_significant(r.rapid_rate, 6) + u +
          "/min, no acceleration: machine " + r.machine + " has no motion model)\n";
   }
-  if (!r.alternatives.empty()) {
-    s += "  the same job in each output mode on machine " + r.machine + ":\n";
-    const bool bound = r.path_bound_s > 0;
-    s += std::string("    output  blocks   cycle        mean feed  starved") + (bound ? "  path/bound" : "") + "\n";
-    for (const auto& a : r.alternatives) {
-      char b[200], ratio[32] = "";
-      if (bound && a.planned.path_time_s > 0)
-        std::snprintf(ratio, sizeof ratio, "x%.3f", a.planned.path_time_s / r.path_bound_s);
-      std::snprintf(
-          b, sizeof b,
-          bound ? "    %-6s  %6zu   %-11s  %5.0f %%    %-7zu%s%s\n" : "    %-6s  %6zu   %-11s  %5.0f %%    %zu%s%s\n",
-          to_string(a.output), a.blocks, format_seconds(a.planned.cycle_time_s).c_str(),
-          a.planned.mean_feed_ratio * 100, a.planned.starved_blocks, ratio,
-          a.output == r.output ? "   (this program)" : "");
-      s += b;
-    }
-  }
+  s += detail::output_choice_text(r, max_entities);
+  s += detail::alternatives_text(r);
   return s;
 }
 

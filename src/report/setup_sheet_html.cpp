@@ -295,7 +295,7 @@ std::string setup_sheet_html(const SetupSheetInput& in) {
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Setup sheet: " << esc(in.title)
     << "</title><style>" << kStyle << "</style></head><body>\n";
   h << "<h1>Setup sheet: " << esc(in.title) << "</h1><p class=\"sub\">machine " << esc(in.machine->name) << ", "
-    << to_string(p.units) << ", output " << to_string(p.output)
+    << to_string(p.units) << ", output " << output_name(p)
     << (p.program_number ? ", program " + std::to_string(*p.program_number) : std::string()) << "; bezcam " << kVersion
     << "</p>\n";
   h << "<div class=\"cards\"><div class=\"card\"><span>cycle time</span><b>"

@@ -17,6 +17,12 @@
 
 namespace bezcam {
 
+/// How cutting moves are written: G01 lines, G02/G03 arcs (with lines
+/// where no arc fits), or exact NURBS/Bezier blocks (docs/cli.md).
+enum class OutputMode { lines, arcs, nurbs };
+OutputMode parse_output_mode(const std::string& s);  ///< throws InputError
+const char* to_string(OutputMode m);
+
 /// What was asked for and achieved, per entity.
 struct EntityReport {
   std::string label, type;
@@ -49,14 +55,17 @@ struct EntityReport {
   /// its exact curve once at its feed (machine/path_bound.hpp; 0: none).
   size_t cut_first = 0, cut_end = 0;
   double time_bound_s = 0;
+  /// The output mode it was cut in (ConvertOptions::output_of()).
+  OutputMode output = OutputMode::lines;
 };
-
-enum class OutputMode { lines, arcs, nurbs };
-OutputMode parse_output_mode(const std::string& s);  ///< throws InputError
-const char* to_string(OutputMode m);
 
 struct ConvertOptions {
   OutputMode output = OutputMode::lines;
+  /// Per entity (by Entity::index), the output mode that cuts it in place
+  /// of `output`: what `--output best` chose (gcode/convert.hpp
+  /// convert_best()). Empty, or an index beyond its end: `output`.
+  std::vector<OutputMode> entity_output;
+  OutputMode output_of(size_t entity) const { return entity < entity_output.size() ? entity_output[entity] : output; }
   std::optional<double> tolerance;  ///< overrides the job's
   bool measure = true;              ///< measure the printed path (header, report)
   /// Called by build_program() before each entity with (entities done so
@@ -89,6 +98,9 @@ struct Program {
   std::string machine;
   Units units = Units::mm;
   OutputMode output = OutputMode::lines;
+  /// Each entity cut in its own output mode (ConvertOptions::entity_output,
+  /// EntityReport::output); `best`: the modes convert_best() chose.
+  bool per_entity_output = false, best = false;
   double tolerance = 0;
   double max_measured = 0;  ///< largest deviation measured (units)
   double max_bound = 0;     ///< largest proven bound (units)
@@ -110,6 +122,10 @@ struct Program {
   std::string order_summary;
   std::optional<OrderFigures> order;
 };
+
+/// How the program's header and reports name its output mode: "best",
+/// "per entity" or the one mode.
+std::string output_name(const Program& p);
 
 /// Builds the canonical program: header state, per entity a retract, rapid,
 /// plunge, cut and retract, and the final retract. Does not validate.

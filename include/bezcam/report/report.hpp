@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bezcam/gcode/best_output.hpp"
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/gcode/writer.hpp"
 #include "bezcam/machine/motion.hpp"
@@ -28,6 +29,7 @@ struct ProgramReport {
   std::string job, machine;
   Units units = Units::mm;
   OutputMode output = OutputMode::lines;
+  std::string output_name = "lines";  ///< output_name(): "best" for a program convert_best() composed
   double tolerance = 0;
   int decimals = 3;
   double max_measured = 0, max_bound = 0;
@@ -62,8 +64,13 @@ struct ProgramReport {
     OutputMode output = OutputMode::lines;
     size_t blocks = 0, gcode_bytes = 0;
     Planned planned;
+    bool best = false;  ///< the program convert_best() composed (`output` is not its mode)
   };
   std::vector<Alternative> alternatives;
+  /// The output modes weighed per entity (gcode/best_output.hpp): what
+  /// convert_best() chose for this program, or, with `compare_outputs`,
+  /// what it would choose; each entity's planned time and blocks per mode.
+  std::optional<OutputChoice> choice;
   /// What the cut order saved (Program::order), when it was planned.
   std::optional<OrderFigures> order;
   std::vector<std::string> warnings;
