@@ -40,7 +40,8 @@ bool same_motion(const Move& a, const Move& b) {
   }
   if (const auto* cv = std::get_if<CurveMove>(&a.what)) {
     const auto& other = std::get<CurveMove>(b.what);
-    return cv->ctrl == other.ctrl && cv->weights == other.weights && cv->knots == other.knots;
+    return cv->shape->ctrl == other.shape->ctrl && cv->shape->weights == other.shape->weights &&
+           cv->shape->knots == other.shape->knots;
   }
   return true;
 }
