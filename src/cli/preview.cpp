@@ -219,6 +219,8 @@ int run_program(const PreviewArgs& o) {
 }  // namespace
 
 int run_preview(const PreviewArgs& o) {
+  // No SVG rasteriser is built in: a .png name would get SVG text.
+  require_output_extension(o.out, "-o", {".svg"}, "preview writes SVG only (no PNG)");
   if (!o.program.empty()) return run_program(o);
   if (o.job.empty())
     throw InputError(errc::usage_preview, Place::at_option("JOB"),
