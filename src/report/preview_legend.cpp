@@ -137,7 +137,8 @@ double svg_legend_keys(std::string& o, const PreviewInput& in, const PreviewOpti
       unmeasured = unmeasured || (is_feed(in.motion[i]) && !is_plunge(in.motion, i) && dev_of[i] < 0);
     if (unmeasured)
       key("key-feed-unmeasured", line_sample(kFeedColour, 3, ""),
-          in.program_measured >= 0 ? "surfaces, parts: measured when built" : "surfaces, parts: not measured");
+          in.program_measured >= 0 ? "leads, pockets, surfaces: measured when built"
+                                   : "leads, pockets, surfaces: not measured");
   } else {
     key("key-feed", line_sample(kFeedColour, 3, ""), "feed (cutting)");
   }
@@ -251,8 +252,10 @@ double svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& 
       largest = "no curve block to measure";
     sc.cls = "deviation-scale";
     sc.data_max = fmt_num(in.tolerance);
-    sc.caption = "deviation of each cutting block from the true curve, relative to the tolerance " +
-                 format_significant(in.tolerance, 4) + " " + unit + " (" + largest + ")";
+    sc.caption =
+        "deviation of each cutting block from the true curve (beside a part: from its exact offset at the "
+        "tool's distance), relative to the tolerance " +
+        format_significant(in.tolerance, 4) + " " + unit + " (" + largest + ")";
     sc.gradient = "deviation-gradient";
     sc.gap = 90;
     sc.ticks = {{0.0, "0"}, {0.5, "50 %"}, {1.0, "100 % = " + format_significant(in.tolerance, 4)}};

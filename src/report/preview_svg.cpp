@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/report/motion_report.hpp"
@@ -257,7 +259,7 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   dr.dev_of.assign(in.motion.size(), -1);
   double dev_max = 0;
   if (opt.deviation)
-    for (const auto& d : block_deviations(*job, in.motion, in.tolerance, opt.on_entity))
+    for (const auto& d : block_deviations(*job, in.motion, in.tolerance, opt.on_entity, in.parts))
       dr.dev_of[d.block] = d.deviation, dev_max = std::max(dev_max, d.deviation);
 
   if (job)
@@ -286,11 +288,21 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
 void add_part_cutting(PreviewInput& in, const Program& p, size_t entities) {
   in.entity_tool_radius.assign(entities, 0);
   in.entity_left.assign(entities, {});
-  for (const auto& r : p.entities)
+  in.parts.offset.assign(entities, 0);
+  std::vector<char> lead_move(p.moves.size(), 0);
+  for (const auto& r : p.entities) {
     if (r.entity >= 0 && static_cast<size_t>(r.entity) < entities) {
       in.entity_tool_radius[static_cast<size_t>(r.entity)] = r.tool_width / 2;
       in.entity_left[static_cast<size_t>(r.entity)] = r.left;
+      in.parts.offset[static_cast<size_t>(r.entity)] = r.offset;
     }
+    for (const auto& [first, end] : r.lead_moves)
+      for (size_t i = first; i < end && i < lead_move.size(); ++i) lead_move[i] = 1;
+  }
+  in.parts.lead.clear();
+  for_each_motion_block(p, [&](MotionBlock&, size_t source) { in.parts.lead.push_back(lead_move[source]); });
+  if (in.parts.lead.size() != in.motion.size())
+    throw std::logic_error("add_part_cutting: the preview's motion is not the program's");
 }
 
 }  // namespace bezcam
