@@ -472,6 +472,7 @@ void PartCut::cut_pass(const Stretch& st, size_t d) {
   const size_t in_from = p.moves.size();
   if (!st.in.empty()) lead_bound = std::max(lead_bound, cut(st.in, z, lead_budget));
   const size_t first_move = p.moves.size();
+  if (first_move > in_from) r.lead_moves.push_back({in_from, first_move});
   const bool tabbed = st.tabs && z < tab_top;
   for (size_t run = 0; run < st.runs.size(); ++run) {
     if (st.runs[run].empty()) continue;
@@ -510,6 +511,7 @@ void PartCut::cut_pass(const Stretch& st, size_t d) {
     last_leads.insert(last_leads.end(), lead_in_path.begin(), lead_in_path.end());
     last_leads.insert(last_leads.end(), lead_out_path.begin(), lead_out_path.end());
   }
+  if (p.moves.size() > path_to) r.lead_moves.push_back({path_to, p.moves.size()});
   const Vec3 last = motion_of(p.moves.back())->to;
   RapidMove up;
   up.to = {last.x, last.y, safe};

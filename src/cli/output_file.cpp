@@ -2,6 +2,7 @@
 // symbolic links, devices and FIFOs, or to standard output.
 #include "output_file.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -139,6 +140,22 @@ void write_output(const std::string& path, const OutputProducer& produce) {
 
 void write_output(const std::string& path, const std::string& data) {
   write_output(path, [&](const OutputSink& out) { out(data); });
+}
+
+void require_output_extension(const std::string& path, const std::string& option,
+                              std::initializer_list<std::string_view> exts, const std::string& writes) {
+  const std::string given = std::filesystem::path(path).extension().string();
+  if (given.empty()) return;
+  std::string ext = given;
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  std::string names;
+  for (std::string_view e : exts) {
+    if (ext == e) return;
+    names += (names.empty() ? "" : " or ") + std::string(e);
+  }
+  throw InputError(errc::usage_option, Place::at_option(option),
+                   writes + ", and \"" + path + "\" names a " + given + " file; give a file name ending in " + names +
+                       " (or without an extension)");
 }
 
 }  // namespace bezcam::cli

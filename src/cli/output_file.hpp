@@ -2,6 +2,7 @@
 // Where a command's output goes: a file written whole or not at all, a
 // device or FIFO written through, or standard output.
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 
@@ -29,5 +30,13 @@ using OutputProducer = std::function<void(const OutputSink&)>;
 /// file, or the old one. Standard output and devices receive the pieces
 /// as they come.
 void write_output(const std::string& path, const OutputProducer& produce);
+
+/// Refuses (InputError naming `option`, before anything is written) an
+/// output file whose extension names another format than the one the
+/// command writes: `path`'s extension, in any case, must be one of `exts`
+/// (".svg") or absent (also standard output "-" and devices). `writes`
+/// says what the command writes ("preview writes SVG only").
+void require_output_extension(const std::string& path, const std::string& option,
+                              std::initializer_list<std::string_view> exts, const std::string& writes);
 
 }  // namespace bezcam::cli

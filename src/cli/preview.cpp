@@ -17,6 +17,7 @@
 #include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
+#include "bezcam/gcode/number_format.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/job/job_json.hpp"
@@ -25,6 +26,7 @@
 #include "bezcam/report/motion_report.hpp"
 #include "bezcam/report/preview_svg.hpp"
 #include "bezcam/report/report.hpp"
+#include "bezcam/report/setup_sheet.hpp"
 #include "commands.hpp"
 #include "job_input.hpp"
 #include "output_file.hpp"
@@ -65,8 +67,7 @@ std::string read_text(const std::string& path, const char* what) {
 }
 
 // --feed: the motion planned on the machine's model; the preview draws it
-// and says what it found. `in.plan` points into the returned plan once the
-// caller keeps it (set again by the caller's copy).
+// and says what it found (the cycle time is the header's line).
 MotionPlan feed_plan(const MachineProfile& m, const Timeline& tl, PreviewInput& in) {
   if (!m.motion)
     throw InputError(
@@ -75,12 +76,27 @@ MotionPlan feed_plan(const MachineProfile& m, const Timeline& tl, PreviewInput& 
   MotionPlan plan = plan_motion(tl, *m.motion);
   in.machine = m.name;
   char b[200];
-  std::snprintf(b, sizeof b, "; mean feed %.0f %% of programmed; %zu starved block%s", plan.mean_feed_ratio * 100,
+  std::snprintf(b, sizeof b, "mean feed %.0f %% of programmed; %zu starved block%s", plan.mean_feed_ratio * 100,
                 plan.starved_blocks, plan.starved_blocks == 1 ? "" : "s");
-  in.notes.push_back("planned on the motion model of machine " + m.name + ": cycle " +
-                     format_seconds(plan.cycle_time_s) + " (cutting " + format_seconds(plan.cutting_time_s) +
-                     ", rapids " + format_seconds(plan.rapid_time_s) + ")" + b);
+  in.notes.push_back("feed reached on the motion model of machine " + m.name + ": " + b + " (of the cycle: cutting " +
+                     format_seconds(plan.cutting_time_s) + ", rapids " + format_seconds(plan.rapid_time_s) + ")");
   return plan;
+}
+
+// The cycle time of a program read from its text, worded as a program's
+// header words it: planned on the machine's motion model when the profile
+// has one (as `simulate --program` plans it), else feeds as programmed and
+// rapids at the maximum feed.
+std::string program_cycle_time(const MachineProfile& m, std::string_view text, std::span<const MotionBlock> motion,
+                               Units units) {
+  if (m.motion)
+    return "estimated cycle time " +
+           bezcam::format_clock(plan_motion(read_timeline(text, &m), *m.motion, PlanDetail::summary).cycle_time_s) +
+           " on the motion model of machine " + m.name + " (acceleration, corners, tool changes)";
+  const double rapid = m.max_feed_mm_min / mm_per_unit(units);
+  return "estimated cycle time " + bezcam::format_clock(motion_totals(motion, rapid).time_s()) +
+         ": feeds as programmed, " + "rapids at " + format_significant(rapid, 6) + " " + to_string(units) +
+         "/min, no acceleration, tool changes not counted";
 }
 
 // --program: the motion of a G-code file, read line by line with progress
@@ -170,9 +186,8 @@ int run_program(const PreviewArgs& o) {
   const MotionTotals t = motion_totals(in.motion, rapid_rate);
   in.notes.push_back(std::to_string(line_no) + " lines, " + std::to_string(t.feed_blocks) + " feed and " +
                      std::to_string(t.rapid_blocks) + " rapid blocks; " + format_significant(t.feed_length, 6) + " " +
-                     u + " at feed, " + format_significant(t.rapid_length, 6) + " " + u + " rapid; about " +
-                     format_duration(t.time_s()) + " (rapids at " + format_significant(rapid_rate, 6) + " " + u +
-                     "/min, the maximum feed of machine " + m.name + ")");
+                     u + " at feed, " + format_significant(t.rapid_length, 6) + " " + u + " rapid");
+  in.notes.push_back(program_cycle_time(m, text, in.motion, in.units));
   if (named) {
     const auto findings = lint_gcode(text, m);
     for (size_t i = 0; i < findings.size() && i < 5; ++i)
@@ -204,6 +219,8 @@ int run_program(const PreviewArgs& o) {
 }  // namespace
 
 int run_preview(const PreviewArgs& o) {
+  // No SVG rasteriser is built in: a .png name would get SVG text.
+  require_output_extension(o.out, "-o", {".svg"}, "preview writes SVG only (no PNG)");
   if (!o.program.empty()) return run_program(o);
   if (o.job.empty())
     throw InputError(errc::usage_preview, Place::at_option("JOB"),
@@ -246,9 +263,12 @@ int run_preview(const PreviewArgs& o) {
   for (const auto& e : p.entities) blocks += e.blocks;
   in.notes.push_back(std::to_string(n) + (n == 1 ? " entity, " : " entities, ") + std::to_string(blocks) +
                      " cutting blocks; " + format_significant(rep.total.feed_length, 6) + " " + u + " at feed, " +
-                     format_significant(rep.total.rapid_length, 6) + " " + u + " rapid; about " +
-                     format_duration(rep.total.time_s()) + " (rapids at " + format_significant(rep.rapid_rate, 6) +
-                     " " + u + "/min)");
+                     format_significant(rep.total.rapid_length, 6) + " " + u + " rapid");
+  // The cycle time as the program's header says it.
+  SetupSheetInput timed;
+  timed.program = &p;
+  timed.machine = &m;
+  in.notes.push_back(sheet_cycle_time(timed));
   // A program convert would refuse is still drawn (seeing where it leaves
   // the travel helps to fix it), with the refusal in red.
   try {

@@ -83,6 +83,7 @@ std::string picture(const Job& job, const Program& p, const MachineProfile& m) {
 }  // namespace
 
 int run_sheet(const SheetArgs& o) {
+  require_output_extension(o.out, "-o", {".html", ".htm"}, "sheet writes one HTML page");
   const JobConversion c = convert_job_file(o.job, o.conv, o.post, o.quiet, "sheet");
   const Job& job = c.job;
   const MachineProfile& m = c.machine;

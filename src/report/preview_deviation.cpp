@@ -2,11 +2,13 @@
 // preview_svg.hpp): the curve sampled densely, each block measured both
 // ways against it.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/offset_measure.hpp"
 #include "bezcam/report/motion_report.hpp"
 #include "preview_draw.hpp"
 
@@ -132,18 +134,31 @@ double measure_block(const DenseCurve& c, std::span<const Vec3> P, size_t& hint,
   hint = last.seg;
   return dev;
 }
+
+// A part's path against the exact offset of its curve at `r`: each point's
+// distance from the nearest point of the exact curve, less r. Never more
+// than the point's distance from the offset curve (the distance to the
+// curve changes no faster than the point moves), and equal to it wherever
+// the tool reaches the curve; the program's own check reads the same
+// distances (offset_measure.hpp).
+double measure_offset_block(PartDistance& part, std::span<const Vec3> P, double r) {
+  double dev = 0;
+  for (const Vec3& x : P) dev = std::max(dev, std::abs(dist(x, part.nearest(x)) - r));
+  return dev;
+}
+
 }  // namespace
 
 // A part cut beside its curve (`side` other than "on"): its path is meant to
-// be a tool's radius away, so it is not coloured by its distance from the
-// curve (the program measured it against its offset: offset_measure.hpp).
+// be a tool's radius away, so it is measured against the offset, not the
+// curve.
 bool beside_its_curve(const Job& job, const Entity& e) {
   const auto side = e.params.side ? e.params.side : job.params.side;
   return side && *side != CutSide::on;
 }
 
 std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const MotionBlock> motion, double tolerance,
-                                             const EntityProgress& on_entity) {
+                                             const EntityProgress& on_entity, const PartPaths& parts) {
   if (!(tolerance > 0))
     throw InputError(errc::preview_tolerance, Place::at_setting("deviation"),
                      "needs a tolerance > 0 to measure against");
@@ -174,8 +189,20 @@ std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const Mot
       auto it = by_entity.find(static_cast<int>(e.index));
       if (it == by_entity.end()) continue;
       const Shape sh = entity_shape(e);
-      if (sh.measure.empty() || beside_its_curve(job, e)) continue;
-      measure_run(dense_curve(e, sh, tolerance), it->second);
+      if (sh.measure.empty()) continue;
+      if (!beside_its_curve(job, e)) {
+        measure_run(dense_curve(e, sh, tolerance), it->second);
+        continue;
+      }
+      // A part: its path against the exact offset, its leads left out.
+      const double r = e.index < parts.offset.size() ? parts.offset[e.index] : 0;
+      if (!(r > 0) || sh.dim != 2 || parts.lead.size() != motion.size()) continue;
+      const std::vector<std::vector<Bezier>> curves{sh.measure};
+      PartDistance part(curves, 0.01 * tolerance);
+      for (size_t i : it->second)
+        if (!parts.lead[i])
+          out.push_back(
+              {i, static_cast<int>(e.index), measure_offset_block(part, measuring_points(motion[i], tolerance, 2), r)});
     }
   } else {
     // A program read from text: each block against the nearest curve.

@@ -111,8 +111,13 @@ std::string arrow_d(P2 tip, P2 d, double len, double half_width);
 // Tangent of the curve at t, falling back to a nearby chord where the
 // derivative vanishes (repeated control points).
 Vec3 tangent(const Bezier& b, double t);
-// `s` broken into lines of at most `width` characters at spaces.
-std::vector<std::string> wrap(const std::string& s, size_t width);
+// The width of `s` drawn in a sans-serif font of `font_size` pixels, never
+// below what the common sans-serif fonts take (an estimate from above: text
+// laid out with it is not clipped).
+double text_width(std::string_view s, double font_size, bool bold = false);
+// `s` broken at spaces into lines at most `width` pixels wide by
+// text_width() (a single word wider than that stays whole).
+std::vector<std::string> wrap(const std::string& s, double width, double font_size);
 
 // ---- The parts of the page ------------------------------------------------
 
@@ -137,7 +142,9 @@ void svg_entity(std::string& o, const View& v, const PreviewInput& in, const Ent
 // (preview_legend.cpp).
 void svg_axes(std::string& o, const View& v);
 void svg_scale_bar(std::string& o, const View& v, double pad, const std::string& unit);
-void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& opt, const std::vector<double>& dev_of,
-                double dev_max, double margin, double legend_y);
+// The legend is laid out in rows across the page `width` wide (`tabs`: the
+// views draw holding tabs); returns its bottom.
+double svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& opt, const std::vector<double>& dev_of,
+                  double dev_max, bool tabs, double width, double margin, double legend_y);
 
 }  // namespace bezcam::preview

@@ -3,8 +3,10 @@
 // the feed or deviation colour scale).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "bezcam/error.hpp"
+#include "bezcam/gcode/number_format.hpp"
 #include "bezcam/report/motion_report.hpp"
 #include "bezcam/report/report.hpp"
 #include "preview_draw.hpp"
@@ -92,88 +94,150 @@ void svg_scale_bar(std::string& o, const View& v, double pad, const std::string&
   }
 }
 
-// The legend below the views: the line styles, and the deviation scale
-// when coloured.
-void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& opt, const std::vector<double>& dev_of,
-                double dev_max, double margin, double legend_y) {
-  const std::string unit = to_string(in.units);
-  o += "<g class=\"legend\">\n";
-  double lx = margin;
-  const double ly = legend_y + 12;
-  auto key = [&](const std::string& cls, const std::string& sample, const std::string& label) {
-    o += "<g class=\"legend-key " + cls + "\">" + sample + "<text x=\"" + n3(lx + 34) + "\" y=\"" + n3(ly + 4) + "\">" +
-         esc(label) + "</text></g>\n";
-    lx += 44 + 6.8 * double(label.size());
-  };
-  auto line = [&](const std::string& colour, double width, const char* dash) {
-    return "<path d=\"M" + n3(lx) + " " + n3(ly) + " L" + n3(lx + 28) + " " + n3(ly) + "\" stroke=\"" + colour +
+namespace {
+
+// A legend key's sample, drawn with its left end at (x, y).
+using Sample = std::function<std::string(double x, double y)>;
+
+Sample line_sample(const std::string& colour, double width, const char* dash) {
+  return [=](double x, double y) {
+    return "<path d=\"M" + n3(x) + " " + n3(y) + " L" + n3(x + 28) + " " + n3(y) + "\" stroke=\"" + colour +
            "\" stroke-width=\"" + n3(width) + "\"" + (*dash ? std::string(" stroke-dasharray=\"") + dash + "\"" : "") +
            " fill=\"none\"/>";
   };
-  key("key-curve", line(kCurveColour, 1.2, ""), "true curve (surfaces: iso lines)");
-  if (opt.control) key("key-control", line(kControlColour, 0.8, ""), "control polygon");
+}
+
+// The line styles, as many rows as the width needs; returns the last row's
+// baseline.
+double svg_legend_keys(std::string& o, const PreviewInput& in, const PreviewOptions& opt,
+                       const std::vector<double>& dev_of, bool tabs, double right, double margin, double top) {
+  double lx = margin, ly = top + 12;
+  auto key = [&](const std::string& cls, const Sample& sample, const std::string& label) {
+    const double w = 34 + text_width(label, 12);
+    if (lx > margin && lx + w > right) lx = margin, ly += 20;  // a new row
+    o += "<g class=\"legend-key " + cls + "\">" + sample(lx, ly) + "<text x=\"" + n3(lx + 34) + "\" y=\"" + n3(ly + 4) +
+         "\">" + esc(label) + "</text></g>\n";
+    lx += w + 16;
+  };
+  key("key-curve", line_sample(kCurveColour, 1.2, ""), "true curve (surfaces: iso lines)");
+  if (opt.control) key("key-control", line_sample(kControlColour, 0.8, ""), "control polygon");
   if (in.plan) {
-    key("key-feed", line(preview_feed_colour(1, 1), 3, ""), "feed, coloured by the speed reached");
-    key("key-starved",
-        "<path d=\"M" + n3(lx) + " " + n3(ly) + " L" + n3(lx + 28) + " " + n3(ly) + "\" stroke=\"" + kOverColour +
-            "\" stroke-opacity=\"0.45\" stroke-width=\"9\" fill=\"none\"/>",
+    key("key-feed", line_sample(preview_feed_colour(1, 1), 3, ""), "feed, coloured by the speed reached");
+    key(
+        "key-starved",
+        [](double x, double y) {
+          return "<path d=\"M" + n3(x) + " " + n3(y) + " L" + n3(x + 28) + " " + n3(y) + "\" stroke=\"" + kOverColour +
+                 "\" stroke-opacity=\"0.45\" stroke-width=\"9\" fill=\"none\"/>";
+        },
         "starved blocks (red halo)");
   } else if (opt.deviation) {
-    key("key-feed", line(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
+    key("key-feed", line_sample(deviation_colour(0, 1), 3, ""), "feed, coloured by deviation");
     bool unmeasured = false;
     for (size_t i = 0; i < in.motion.size(); ++i)
       unmeasured = unmeasured || (is_feed(in.motion[i]) && !is_plunge(in.motion, i) && dev_of[i] < 0);
     if (unmeasured)
-      key("key-feed-unmeasured", line(kFeedColour, 3, ""),
-          in.program_measured >= 0 ? "surfaces, parts: measured when built" : "surfaces, parts: not measured");
+      key("key-feed-unmeasured", line_sample(kFeedColour, 3, ""),
+          in.program_measured >= 0 ? "leads, pockets, surfaces: measured when built"
+                                   : "leads, pockets, surfaces: not measured");
   } else {
-    key("key-feed", line(kFeedColour, 3, ""), "feed (cutting)");
+    key("key-feed", line_sample(kFeedColour, 3, ""), "feed (cutting)");
   }
-  key("key-rapid", line(kRapidColour, 1, "6 4"), "rapid");
+  key("key-rapid", line_sample(kRapidColour, 1, "6 4"), "rapid");
   // Part cutting, when the drawing has it.
   bool swept = false, left = false;
   for (double r : in.entity_tool_radius) swept = swept || r > 0;
   for (const auto& l : in.entity_left) left = left || !l.empty();
-  // (Only as many as the row holds; every mark has its own tooltip.)
-  auto fits = [&](const std::string& label) { return lx + 44 + 6.8 * double(label.size()) <= opt.width - margin; };
-  if (swept && fits("tool's width")) key("key-swept", line("#9ecae1", 9, ""), "tool's width");
-  if (swept && o.find("class=\"tab\"") != std::string::npos && fits("holding tab"))
-    key("key-tab",
-        "<rect x=\"" + n3(lx + 10) + "\" y=\"" + n3(ly - 4) +
-            "\" width=\"8\" height=\"8\" fill=\"#ff9f1c\" stroke=\"#7a4a00\"/>",
+  if (swept) key("key-swept", line_sample("#9ecae1", 9, ""), "tool's width");
+  if (swept && tabs)
+    key(
+        "key-tab",
+        [](double x, double y) {
+          return "<rect x=\"" + n3(x + 10) + "\" y=\"" + n3(y - 4) +
+                 "\" width=\"8\" height=\"8\" fill=\"#ff9f1c\" stroke=\"#7a4a00\"/>";
+        },
         "holding tab");
-  if (left && fits("material left")) key("key-material-left", line("#d62728", 7, ""), "material left");
-  key("key-start",
-      "<circle cx=\"" + n3(lx + 6) + "\" cy=\"" + n3(ly) + "\" r=\"3.5\" fill=\"" + kCurveColour + "\"/><path d=\"" +
-          arrow_d({lx + 26, ly}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>",
+  if (left) key("key-material-left", line_sample("#d62728", 7, ""), "material left");
+  key(
+      "key-start",
+      [](double x, double y) {
+        return "<circle cx=\"" + n3(x + 6) + "\" cy=\"" + n3(y) + "\" r=\"3.5\" fill=\"" + kCurveColour +
+               "\"/><path d=\"" + arrow_d({x + 26, y}, {1, 0}, 9, 4) + "\" fill=\"" + kCurveColour + "\"/>";
+      },
       "start and direction");
+  return ly;
+}
+
+// A colour scale: its caption (wrapped to the width), the gradient `gw`
+// wide with its ticks, and a count beside it (below it when the row is too
+// narrow; `mark`: a sample drawn before the count). Returns its bottom.
+struct Scale {
+  std::string cls, data_max, caption, gradient;
+  std::vector<std::pair<double, std::string>> ticks;  // (fraction, label)
+  double gw = 240, gap = 60;
+  std::string count_cls, count, count_style, mark_colour;
+};
+
+double svg_scale(std::string& o, const Scale& sc, double right, double margin, double top) {
+  const double gx = margin;
+  double y = top + 12;
+  o += "<g class=\"" + sc.cls + "\" data-max=\"" + sc.data_max + "\">\n";
+  for (const auto& l : wrap(sc.caption, right - margin, 12)) {
+    o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(y) + "\">" + esc(l) + "</text>\n";
+    y += 16;
+  }
+  const double gy = y - 6;
+  o += "<rect x=\"" + n3(gx) + "\" y=\"" + n3(gy) + "\" width=\"" + n3(sc.gw) + "\" height=\"12\" fill=\"url(#" +
+       sc.gradient + ")\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
+  for (const auto& [f, label] : sc.ticks) {
+    const double x = gx + f * sc.gw;
+    o += "<path d=\"M" + n3(x) + " " + n3(gy + 12) + " L" + n3(x) + " " + n3(gy + 16) +
+         "\" stroke=\"#000000\" stroke-width=\"1\"/>";
+    // The end labels stay inside the page: anchored at their inner side.
+    const double w = text_width(label, 11);
+    const char* anchor = x - w / 2 < 0 ? "start" : x + w / 2 > right + margin ? "end" : "middle";
+    o += "<text x=\"" + n3(x) + "\" y=\"" + n3(gy + 28) + "\" text-anchor=\"" + anchor + "\" font-size=\"11\">" +
+         esc(label) + "</text>\n";
+  }
+  double bottom = gy + 32;
+  const double mark = sc.mark_colour.empty() ? 0 : 30;
+  double sx = gx + sc.gw + sc.gap, sy = gy + 10;
+  if (sx + mark + text_width(sc.count, 12, !sc.count_style.empty()) > right) sx = gx, sy = gy + 48, bottom = sy + 6;
+  if (!sc.mark_colour.empty())
+    o += "<rect x=\"" + n3(sx) + "\" y=\"" + n3(sy - 12) + "\" width=\"24\" height=\"16\" fill=\"" + sc.mark_colour +
+         "\"/>";
+  o += "<text class=\"" + sc.count_cls + "\" x=\"" + n3(sx + mark) + "\" y=\"" + n3(sy) + "\"" + sc.count_style + ">" +
+       esc(sc.count) + "</text>\n";
+  o += "</g>\n";
+  return bottom;
+}
+
+}  // namespace
+
+double svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& opt, const std::vector<double>& dev_of,
+                  double dev_max, bool tabs, double width, double margin, double legend_y) {
+  const std::string unit = to_string(in.units);
+  const double right = width - margin;
+  o += "<g class=\"legend\">\n";
+  double bottom = svg_legend_keys(o, in, opt, dev_of, tabs, right, margin, legend_y) + 8;
+  Scale sc;
   if (in.plan) {
     const MotionPlan& plan = *in.plan;
     const double top = feed_scale_top(plan);
-    const double gy = ly + 30, gx = margin, gw = 320;
-    o += "<g class=\"feed-scale\" data-max=\"" + fmt_num(top) + "\">\n";
-    o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(gy - 6) + "\">feed reached on machine " + esc(in.machine) + ", " +
-         unit + "/min (cycle " + esc(format_seconds(plan.cycle_time_s)) + ", mean " +
-         format_significant(100 * plan.mean_feed_ratio, 3) + " % of the programmed feed)</text>\n";
-    o += "<rect x=\"" + n3(gx) + "\" y=\"" + n3(gy) + "\" width=\"" + n3(gw) +
-         "\" height=\"12\" fill=\"url(#feed-gradient)\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
-    for (double f : {0.0, 0.25, 0.5, 0.75, 1.0}) {
-      const double x = gx + f * gw;
-      o += "<path d=\"M" + n3(x) + " " + n3(gy + 12) + " L" + n3(x) + " " + n3(gy + 16) +
-           "\" stroke=\"#000000\" stroke-width=\"1\"/>";
-      o += "<text x=\"" + n3(x) + "\" y=\"" + n3(gy + 28) + "\" text-anchor=\"middle\" font-size=\"11\">" +
-           format_significant(f * top, 4) + "</text>\n";
-    }
-    const double sx = gx + gw + 60;
-    o += "<text class=\"starved-count\" x=\"" + n3(sx) + "\" y=\"" + n3(gy + 10) + "\"" +
-         (plan.starved_blocks ? " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"" : "") +
-         ">starved blocks (red halo): " +
-         (plan.starved_blocks ? std::to_string(plan.starved_blocks) + " of " + std::to_string(plan.blocks.size())
-                              : std::string("none")) +
-         "</text>\n";
-    o += "</g>\n";
+    sc.cls = "feed-scale";
+    sc.data_max = fmt_num(top);
+    sc.caption = "feed reached on machine " + in.machine + ", " + unit + "/min (estimated cycle time " +
+                 format_clock(plan.cycle_time_s) + ", mean " + format_significant(100 * plan.mean_feed_ratio, 3) +
+                 " % of the programmed feed)";
+    sc.gradient = "feed-gradient";
+    sc.gw = 320;
+    for (double f : {0.0, 0.25, 0.5, 0.75, 1.0}) sc.ticks.push_back({f, format_significant(f * top, 4)});
+    sc.count_cls = "starved-count";
+    sc.count = "starved blocks (red halo): " +
+               (plan.starved_blocks ? std::to_string(plan.starved_blocks) + " of " + std::to_string(plan.blocks.size())
+                                    : std::string("none"));
+    if (plan.starved_blocks) sc.count_style = " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"";
+    bottom = svg_scale(o, sc, right, margin, bottom);
   } else if (opt.deviation) {
-    const double gy = ly + 30, gx = margin, gw = 240;
     size_t measured = 0, over = 0;
     for (double d : dev_of)
       if (d >= 0) ++measured, over += over_tolerance(d, in.tolerance);
@@ -186,31 +250,24 @@ void svg_legend(std::string& o, const PreviewInput& in, const PreviewOptions& op
                 format_significant(in.program_measured, 3) + " " + unit;
     else
       largest = "no curve block to measure";
-    o += "<g class=\"deviation-scale\" data-max=\"" + fmt_num(in.tolerance) + "\">\n";
-    o += "<text x=\"" + n3(gx) + "\" y=\"" + n3(gy - 6) + "\">deviation of each cutting block from the true curve, " +
-         "relative to the tolerance " + format_significant(in.tolerance, 4) + " " + unit + " (" + esc(largest) +
-         ")</text>\n";
-    o += "<rect x=\"" + n3(gx) + "\" y=\"" + n3(gy) + "\" width=\"" + n3(gw) +
-         "\" height=\"12\" fill=\"url(#deviation-gradient)\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
-    for (double f : {0.0, 0.5, 1.0}) {
-      const double x = gx + f * gw;
-      o += "<path d=\"M" + n3(x) + " " + n3(gy + 12) + " L" + n3(x) + " " + n3(gy + 16) +
-           "\" stroke=\"#000000\" stroke-width=\"1\"/>";
-      o += "<text x=\"" + n3(x) + "\" y=\"" + n3(gy + 28) + "\" text-anchor=\"middle\" font-size=\"11\">" +
-           (f == 0     ? std::string("0")
-            : f == 0.5 ? std::string("50 %")
-                       : "100 % = " + format_significant(in.tolerance, 4)) +
-           "</text>\n";
-    }
-    const double sx = gx + gw + 90;
-    o += "<rect x=\"" + n3(sx) + "\" y=\"" + n3(gy - 2) + "\" width=\"24\" height=\"16\" fill=\"" + kOverColour +
-         "\"/><text class=\"over-tolerance-count\" x=\"" + n3(sx + 30) + "\" y=\"" + n3(gy + 10) + "\"" +
-         (over ? " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"" : "") +
-         ">above the tolerance (ringed): " +
-         (over ? std::to_string(over) + " block" + (over == 1 ? "" : "s") : std::string("none")) + "</text>\n";
-    o += "</g>\n";
+    sc.cls = "deviation-scale";
+    sc.data_max = fmt_num(in.tolerance);
+    sc.caption =
+        "deviation of each cutting block from the true curve (beside a part: from its exact offset at the "
+        "tool's distance), relative to the tolerance " +
+        format_significant(in.tolerance, 4) + " " + unit + " (" + largest + ")";
+    sc.gradient = "deviation-gradient";
+    sc.gap = 90;
+    sc.ticks = {{0.0, "0"}, {0.5, "50 %"}, {1.0, "100 % = " + format_significant(in.tolerance, 4)}};
+    sc.count_cls = "over-tolerance-count";
+    sc.count = "above the tolerance (ringed): " +
+               (over ? std::to_string(over) + " block" + (over == 1 ? "" : "s") : std::string("none"));
+    if (over) sc.count_style = " fill=\"" + std::string(kOverColour) + "\" font-weight=\"bold\"";
+    sc.mark_colour = kOverColour;
+    bottom = svg_scale(o, sc, right, margin, bottom);
   }
   o += "</g>\n";
+  return bottom;
 }
 
 }  // namespace bezcam::preview

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/report/motion_report.hpp"
@@ -78,18 +80,24 @@ std::vector<std::vector<Vec3>> fit_views(std::vector<View>& views, const std::ve
 struct Page {
   static constexpr double margin = 20, pad = 36, bar_room = 34;
   double W = 0, H = 0, legend_y = 0;
-  std::vector<std::string> warn_lines;
+  std::vector<std::string> title_lines, note_lines, warn_lines;
 };
 
 // Lays out the page `W` wide: scales and places every view.
-Page lay_out(std::vector<View>& views, const PreviewInput& in, const PreviewOptions& opt, double W) {
+Page lay_out(std::vector<View>& views, const PreviewInput& in, double W) {
   Page pg;
   pg.W = W;
   const double margin = Page::margin, pad = Page::pad, bar_room = Page::bar_room;
-  const size_t chars = static_cast<size_t>((W - 2 * margin) / 6.8);
+  // The title leaves room for the units at its right.
+  const std::string title = in.title.empty() ? "bezcam preview" : in.title;
+  pg.title_lines = wrap(title, W - 2 * margin - text_width("units: " + std::string(to_string(in.units)), 12) - 12,
+                        16 * 1.12);  // bold
+  for (const auto& nline : in.notes)
+    for (auto& l : wrap(nline, W - 2 * margin, 12)) pg.note_lines.push_back(l);
   for (const auto& w : in.warnings)
-    for (auto& l : wrap(w, chars)) pg.warn_lines.push_back(l);
-  const double header_h = 30 + 17.0 * double(in.notes.size()) + 17.0 * double(pg.warn_lines.size()) + 8;
+    for (auto& l : wrap(w, W - 2 * margin, 12 * 1.12)) pg.warn_lines.push_back(l);  // bold
+  const double header_h = 30 + 20.0 * double(pg.title_lines.size() - 1) + 17.0 * double(pg.note_lines.size()) +
+                          17.0 * double(pg.warn_lines.size()) + 8;
   const double nv = double(views.size());
   const double pw = (W - margin * (nv + 1)) / nv;
   const double max_inner_h = (views.size() == 1 ? 0.62 * W : 1.05 * pw) - 2 * pad - bar_room;
@@ -113,8 +121,6 @@ Page lay_out(std::vector<View>& views, const PreviewInput& in, const PreviewOpti
     v.oy = v.py + pad + (ph - 2 * pad - bar_room - (v.maxy - v.miny) * v.s) / 2;
   }
   pg.legend_y = header_h + ph + 14;
-  const double legend_h = opt.deviation || in.plan ? 92 : 46;
-  pg.H = pg.legend_y + legend_h + 10;
   return pg;
 }
 
@@ -168,15 +174,18 @@ void svg_document_head(std::string& o, const Page& pg, const PreviewInput& in, c
 }
 
 // The header: the title, the units, the notes, the warnings in red.
-void svg_header(std::string& o, const Page& pg, const PreviewInput& in, const std::string& unit) {
+void svg_header(std::string& o, const Page& pg, const std::string& unit) {
   const double margin = Page::margin;
   o += "<g class=\"header\">\n";
   double ty = 24;
-  o += "<text class=\"title\" x=\"" + n3(margin) + "\" y=\"" + n3(ty) + "\" font-size=\"16\" font-weight=\"bold\">" +
-       esc(in.title.empty() ? "bezcam preview" : in.title) + "</text>\n";
   o += "<text class=\"units\" x=\"" + n3(pg.W - margin) + "\" y=\"" + n3(ty) + "\" text-anchor=\"end\">units: " + unit +
        "</text>\n";
-  for (const auto& nline : in.notes) {
+  for (size_t k = 0; k < pg.title_lines.size(); ++k) {
+    if (k > 0) ty += 20;
+    o += "<text class=\"title\" x=\"" + n3(margin) + "\" y=\"" + n3(ty) + "\" font-size=\"16\" font-weight=\"bold\">" +
+         esc(pg.title_lines[k]) + "</text>\n";
+  }
+  for (const auto& nline : pg.note_lines) {
     ty += 17;
     o += "<text class=\"note\" x=\"" + n3(margin) + "\" y=\"" + n3(ty) + "\" fill=\"#333333\">" + esc(nline) +
          "</text>\n";
@@ -250,22 +259,28 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
   dr.dev_of.assign(in.motion.size(), -1);
   double dev_max = 0;
   if (opt.deviation)
-    for (const auto& d : block_deviations(*job, in.motion, in.tolerance, opt.on_entity))
+    for (const auto& d : block_deviations(*job, in.motion, in.tolerance, opt.on_entity, in.parts))
       dr.dev_of[d.block] = d.deviation, dev_max = std::max(dev_max, d.deviation);
 
   if (job)
     for (const auto& e : job->entities) dr.shapes.push_back(entity_shape(e));
   std::vector<View> views = page_views(dr.shapes, in.motion);
   dr.msamples = fit_views(views, dr.shapes, in.motion, opt.control);
-  const Page pg = lay_out(views, in, opt, std::max(400.0, opt.width));
+  Page pg = lay_out(views, in, std::max(400.0, opt.width));
   dr.curve_pts = sample_curves(dr.shapes, views, in.tolerance);
 
+  // The views and the legend first: the page's height is the legend's
+  // bottom.
+  std::string body;
+  body.reserve(1 << 16);
+  for (const View& v : views) svg_view(body, v, in, opt, dr, unit);
+  const bool tabs = body.find("class=\"tab\"") != std::string::npos;
+  pg.H = svg_legend(body, in, opt, dr.dev_of, dev_max, tabs, pg.W, Page::margin, pg.legend_y) + 10;
   std::string o;
-  o.reserve(1 << 16);
+  o.reserve(body.size() + 4096);
   svg_document_head(o, pg, in, opt, unit);
-  svg_header(o, pg, in, unit);
-  for (const View& v : views) svg_view(o, v, in, opt, dr, unit);
-  svg_legend(o, in, opt, dr.dev_of, dev_max, Page::margin, pg.legend_y);
+  svg_header(o, pg, unit);
+  o += body;
   o += "</svg>\n";
   return o;
 }
@@ -273,11 +288,21 @@ std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt) {
 void add_part_cutting(PreviewInput& in, const Program& p, size_t entities) {
   in.entity_tool_radius.assign(entities, 0);
   in.entity_left.assign(entities, {});
-  for (const auto& r : p.entities)
+  in.parts.offset.assign(entities, 0);
+  std::vector<char> lead_move(p.moves.size(), 0);
+  for (const auto& r : p.entities) {
     if (r.entity >= 0 && static_cast<size_t>(r.entity) < entities) {
       in.entity_tool_radius[static_cast<size_t>(r.entity)] = r.tool_width / 2;
       in.entity_left[static_cast<size_t>(r.entity)] = r.left;
+      in.parts.offset[static_cast<size_t>(r.entity)] = r.offset;
     }
+    for (const auto& [first, end] : r.lead_moves)
+      for (size_t i = first; i < end && i < lead_move.size(); ++i) lead_move[i] = 1;
+  }
+  in.parts.lead.clear();
+  for_each_motion_block(p, [&](MotionBlock&, size_t source) { in.parts.lead.push_back(lead_move[source]); });
+  if (in.parts.lead.size() != in.motion.size())
+    throw std::logic_error("add_part_cutting: the preview's motion is not the program's");
 }
 
 }  // namespace bezcam

@@ -105,7 +105,27 @@ Vec3 tangent(const Bezier& b, double t) {
   return t < 0.5 ? d : -d;
 }
 
-std::vector<std::string> wrap(const std::string& s, size_t width) {
+double text_width(std::string_view s, double font_size, bool bold) {
+  // Per character, at least its advance in DejaVu Sans (the widest of the
+  // common sans-serif fonts, Debian's default), in ems.
+  double em = 0;
+  for (unsigned char ch : s) {
+    if ((ch & 0xC0) == 0x80) continue;  // UTF-8 continuation byte
+    if (ch >= 0x80 || std::string_view("mwMW%@").find(char(ch)) != std::string_view::npos)
+      em += 1.0;
+    else if (std::string_view("=+<>#&~^*").find(char(ch)) != std::string_view::npos)
+      em += 0.85;
+    else if (std::string_view(" ijlftrI.,:;'|!()[]{}-/\\\"`").find(char(ch)) != std::string_view::npos)
+      em += 0.42;
+    else if (ch >= 'A' && ch <= 'Z')
+      em += 0.8;
+    else
+      em += 0.65;
+  }
+  return em * font_size * (bold ? 1.12 : 1.0);
+}
+
+std::vector<std::string> wrap(const std::string& s, double width, double font_size) {
   std::vector<std::string> out;
   std::string line;
   size_t i = 0;
@@ -113,8 +133,13 @@ std::vector<std::string> wrap(const std::string& s, size_t width) {
     size_t j = s.find(' ', i);
     if (j == std::string::npos) j = s.size();
     const std::string word = s.substr(i, j - i);
-    if (!line.empty() && line.size() + 1 + word.size() > width) out.push_back(line), line.clear();
-    line += (line.empty() ? "" : " ") + word;
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && text_width(longer, font_size) > width) {
+      out.push_back(line);
+      line = word;
+    } else {
+      line = longer;
+    }
     i = j + 1;
   }
   if (!line.empty()) out.push_back(line);

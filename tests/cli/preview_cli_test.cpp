@@ -2,7 +2,8 @@
 // atomically (also for a G-code file, against a job), draws a program that
 // convert would refuse with the refusal in red; `convert --report` writes
 // the JSON report beside an unchanged program and a short summary on
-// stderr; progress appears as plain lines or as a bar when asked for.
+// stderr; progress appears as plain lines or as a bar when asked for; an
+// output file named for another format than SVG is refused.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -192,6 +193,31 @@ TEST(PreviewCommand, AProgramFarFromItsJobIsSaid) {
   const auto near = bezcam({"preview", "--program", nc.string(), "samples/job-two-tools.json", "-o", svg.string()});
   ASSERT_EQ(near.status, 0) << near.err;
   EXPECT_EQ(near.err.find("cutting moves lie"), std::string::npos) << near.err;
+}
+
+TEST(PreviewCommand, RefusesAnOutputFileNamedForAnotherFormat) {
+  testproc::TempDir dir;
+  // preview writes SVG, sheet HTML: a .png or .pdf name is refused before
+  // anything is written, naming the option and the extensions written.
+  const fs::path png = dir / "flange.png";
+  testproc::write_file(png, "old picture");
+  const auto p = bezcam({"preview", "samples/part-flange.json", "-o", png.string()});
+  EXPECT_EQ(p.status, 2);
+  EXPECT_EQ(p.err_first_line().rfind("bezcam: error: -o: preview writes SVG only", 0), 0u) << p.err;
+  EXPECT_NE(p.err_first_line().find("ending in .svg"), std::string::npos) << p.err;
+  EXPECT_EQ(testproc::slurp(png), "old picture");
+  const auto g =
+      bezcam({"preview", "--program", "tests/golden/curve-bspline-wave.generic.nc", "-o", (dir / "g.PNG").string()});
+  EXPECT_EQ(g.status, 2) << g.err;
+  const auto s = bezcam({"sheet", "samples/part-flange.json", "-o", (dir / "sheet.pdf").string()});
+  EXPECT_EQ(s.status, 2);
+  EXPECT_EQ(s.err_first_line().rfind("bezcam: error: -o: sheet writes one HTML page", 0), 0u) << s.err;
+  EXPECT_NE(s.err_first_line().find("ending in .html or .htm"), std::string::npos) << s.err;
+  EXPECT_EQ(dir.files(), std::vector<std::string>{"flange.png"});
+  // The format's own extension, in any case, or none, is written.
+  for (const char* name : {"a.svg", "b.SVG", "c"})
+    EXPECT_EQ(bezcam({"preview", "samples/part-flange.json", "-o", (dir / name).string(), "-q"}).status, 0) << name;
+  EXPECT_EQ(bezcam({"sheet", "samples/part-flange.json", "-o", (dir / "s.HTML").string(), "-q"}).status, 0);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <climits>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -25,6 +26,7 @@
 #include "bezcam/machine/machine_profile.hpp"
 #include "bezcam/sim/sim_controller.hpp"
 #include "bezcam/sim/trace.hpp"
+#include "bezcam/verify/machined_program.hpp"
 #include "support/link_test_util.hpp"
 
 using namespace bezcam;
@@ -340,18 +342,23 @@ TEST(PacedProgress, TheTraceAtMachinePaceIsTheTraceAsFastAsPossible) {
 }
 
 // `bezcam stream` stopped with Ctrl-C says where the machine stopped and
-// the --from-line that goes on from there; resumed from it, nothing of the
-// program is skipped or run twice: the stopped run's trace holds the lines
-// before it, the resumed run's the lines from it on, together the whole
-// program's.
+// the --from-line that goes on from there. Resumed with the line it
+// prints, on the same controller (which keeps its stock from program to
+// program), nothing of the program is skipped or run twice: the stopped
+// run executed the lines before it, the resumed run's trace holds the
+// lines from it on as the whole program's does, and the stock both runs
+// cut is the stock the whole program cuts without a stop.
 TEST(PacedProgress, CtrlCPrintsTheFromLineThatGoesOnWhereTheMachineStopped) {
   const MachineProfile m = load_machine_profile("generic");
   test::TempDir dir;
   const auto file = dir / "arcs.nc";
-  const std::string prog = arcs_program(100);
+  std::string prog = arcs_program(100);
+  prog.insert(prog.find("S10000 M3"), "T1 M6\n");  // the stock is cut with T1, a 3 mm flat end mill
   test::write_file(file, prog);
   const auto trace_file = dir / "trace.txt";
-  test::SimProcess sim(dir, {"--machine", "generic", "--time-scale", "50", "--trace", trace_file.string(), "-q"});
+  const StockBox box{-5, -10, -3, 1005, 10, 0};
+  test::SimProcess sim(dir, {"--machine", "generic", "--time-scale", "50", "--trace", trace_file.string(), "--stock",
+                             "-5,-10,-3,1005,10,0", "--cell", "0.25", "--tool-diameter", "1=3", "-q"});
   const std::string to = "127.0.0.1:" + std::to_string(sim.port());
   test::Child stream({BEZCAM_EXE, "stream", file.string(), "--to", to, "--progress", "off"}, dir / "stream-err.txt");
   for (;;) {
@@ -366,28 +373,37 @@ TEST(PacedProgress, CtrlCPrintsTheFromLineThatGoesOnWhereTheMachineStopped) {
   const ControllerReport after = controller_status(Endpoint{"127.0.0.1", sim.port()}, std::chrono::milliseconds(5000));
   const long executed = after.status.lines_executed;
   ASSERT_GE(executed, 40);
-  ASSERT_LT(executed, 108);
-  const long next = executed + 1;  // every line of the cut holds a block
-  EXPECT_NE(err.find("the machine stopped after line " + std::to_string(executed) + " of " + file.string() +
-                     "; resume with --from-line " + std::to_string(next) + " (bezcam stream " + file.string() +
-                     " --to " + to + " --from-line " + std::to_string(next) + ")"),
+  ASSERT_LT(executed, 109);
+  // The line to go on from, as printed.
+  std::smatch said;
+  ASSERT_TRUE(std::regex_search(
+      err, said, std::regex(R"(; resume with --from-line (\d+) \(bezcam stream (\S+) --to (\S+) --from-line (\d+)\))")))
+      << err;
+  const long next = std::stol(said[1]);
+  EXPECT_EQ(said[2], file.string());
+  EXPECT_EQ(said[3], to);
+  EXPECT_EQ(said[4], said[1]);
+  EXPECT_NE(err.find("the machine stopped after line " + std::to_string(executed) + " of " + file.string()),
             std::string::npos)
       << err;
-  EXPECT_EQ(sim.stop(), 0);
-  const std::string stopped = test::slurp(trace_file);
+  // The controller ran every line before it and none after.
+  EXPECT_EQ(next, executed + 1);
 
-  // Resumed from there on a controller as fast as possible.
-  const auto trace2 = dir / "trace2.txt";
-  test::SimProcess sim2(dir, {"--machine", "generic", "--trace", trace2.string(), "-q"});
-  const auto r = test::run_bezcam({"stream", file.string(), "--to", "127.0.0.1:" + std::to_string(sim2.port()),
-                                   "--progress", "off", "--from-line", std::to_string(next)},
-                                  dir);
+  // Resumed from the printed line on the same controller, as fast as the
+  // link goes (its trace file restarts with the resumed program).
+  const auto r =
+      test::run_bezcam({"stream", file.string(), "--to", to, "--progress", "off", "--from-line", said[1]}, dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(sim2.stop(), 0);
+  const std::string resumed = test::slurp(trace_file);
+  EXPECT_EQ(sim.stop(), 0);
   const ResumePlan plan = plan_resume(prog, &m, static_cast<int>(next));
   ASSERT_EQ(plan.start_line, next);
   const std::string full = immediate_trace(prog, m);
-  EXPECT_EQ(lines_of(stopped, 1, executed), lines_of(full, 1, executed));
-  EXPECT_EQ(lines_of(test::slurp(trace2), plan.preamble_lines + 1, LONG_MAX, plan.line_offset()),
-            lines_of(full, next, LONG_MAX));
+  // Every line from it on exactly once, as the whole program runs it.
+  EXPECT_EQ(lines_of(resumed, plan.preamble_lines + 1, LONG_MAX, plan.line_offset()), lines_of(full, next, LONG_MAX));
+  // The stock: what the program cuts in one run, as verify cuts it.
+  StockCutter whole(box, 0.25, {{1, ToolShape::flat(3)}});
+  cut_timeline(whole, read_timeline(prog, &m));
+  const std::string last = resumed.substr(resumed.rfind('\n', resumed.size() - 2) + 1);
+  EXPECT_EQ(last.rfind("stock hash " + whole.grid().hash_hex() + " ", 0), 0u) << last;
 }

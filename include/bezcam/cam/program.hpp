@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bezcam/cam/move.hpp"
@@ -47,6 +48,10 @@ struct EntityReport {
   double offset = 0;
   double tool_width = 0;  ///< part cutting: the tool's diameter (0: none given)
   std::vector<MaterialLeft> left;
+  /// Part cutting: the moves [first, end) of Program::moves that lead the
+  /// tool in to its path and out of it, on every pass (measured against
+  /// their own lines and arcs, not against the offset).
+  std::vector<std::pair<size_t, size_t>> lead_moves;
   /// A pocket's region (type "pocket"): its certificate.
   std::optional<PocketCertificate> pocket;
   /// A curve cut along its line (not as a part, a pocket or a surface), on

@@ -46,6 +46,18 @@ struct PreviewOptions {
   EntityProgress on_entity;
 };
 
+/// Part cutting, for measuring (PreviewInput::parts, block_deviations()):
+/// how far from each entity's curve its path is meant to be, and which
+/// blocks lead the tool in and out.
+struct PartPaths {
+  /// Index = entity: the tool centre's distance from the curve
+  /// (EntityReport::offset); 0 or absent: cut on the curve.
+  std::vector<double> offset;
+  /// Index = motion block: 1 for the blocks of a lead in or out
+  /// (EntityReport::lead_moves), measured when built, not here.
+  std::vector<char> lead;
+};
+
 struct PreviewInput {
   /// The true geometry; null when only a program is drawn.
   const Job* job = nullptr;
@@ -70,6 +82,7 @@ struct PreviewInput {
   /// stretches of the curve the tool cannot reach (material left).
   std::vector<double> entity_tool_radius;
   std::vector<std::vector<MaterialLeft>> entity_left;
+  PartPaths parts;                    ///< offsets and leads, for deviation colouring
   std::string title;                  ///< first header line
   std::vector<std::string> notes;     ///< further header lines
   std::vector<std::string> warnings;  ///< drawn in red under the header
@@ -107,16 +120,26 @@ struct BlockDeviation {
 /// 0.2 % of `tolerance`; the largest of them agrees with the program's
 /// measured deviation (deviation.hpp) to that accuracy. Blocks of entities
 /// without curves (surfaces) are left out.
+///
+/// A part cut beside its curve (`parts.offset` > 0 for its entity) is
+/// measured against the exact offset instead: each point of a block at
+/// its distance from the curve (the nearest point of the exact curve,
+/// offset_measure.hpp) less the offset, which is never more than its
+/// distance from the exact offset curve and equal to it wherever the tool
+/// reaches the curve; its leads (`parts.lead`) are left out. Without
+/// `parts` (a program read from text), such parts are left out.
 std::vector<BlockDeviation> block_deviations(const Job& job, std::span<const MotionBlock> motion, double tolerance,
-                                             const EntityProgress& on_entity = {});
+                                             const EntityProgress& on_entity = {}, const PartPaths& parts = {});
 
 /// The SVG document. Throws InputError when there is nothing to draw (no
 /// entities and no motion) or when deviation colouring is asked for without
 /// a job or a tolerance.
 std::string preview_svg(const PreviewInput& in, const PreviewOptions& opt);
 
-/// Fills the part-cutting fields of `in` (tool widths, material left) from
-/// a built program's reports; `entities`: the job's entity count.
+/// Fills the part-cutting fields of `in` (tool widths, material left,
+/// offsets, the blocks of leads) from a built program's reports;
+/// `entities`: the job's entity count; `in.motion` must be the program's
+/// motion (program_motion()).
 void add_part_cutting(PreviewInput& in, const Program& p, size_t entities);
 
 }  // namespace bezcam
