@@ -16,6 +16,7 @@
 
 #include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
+#include "bezcam/gcode/best_output.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/gcode/reader.hpp"
@@ -43,7 +44,8 @@ CLI::App* setup_preview(CLI::App& app, PreviewArgs& o) {
   s->add_option("--program", o.program,
                 "draw this G-code program instead of building one (with JOB: against the job's curves)");
   s->add_option("-o,--output-file", o.out, "SVG file to write; written whole or not at all")->required();
-  add_conversion_options(s, o.conv, "cutting moves, as for convert: lines, arcs or nurbs (not with --program)");
+  add_conversion_options(s, o.conv, "cutting moves, as for convert: lines, arcs, nurbs or best (not with --program)",
+                         true);
   add_tool_diameter_option(s, o.tool_diameters);
   s->add_flag("--no-control", o.no_control, "leave out control polygons and control points");
   s->add_flag("--deviation", o.deviation,
@@ -233,10 +235,16 @@ int run_preview(const PreviewArgs& o) {
 
   // The same program convert would build, from the same options.
   ConvertOptions copt;
-  copt.output = parse_output_mode(o.conv.output);
+  const bool best = o.conv.output == "best";
+  if (best && !m.motion)
+    throw InputError(errc::usage_output, Place::at_option("--output"),
+                     "best chooses by the planned cycle time, and machine \"" + m.name +
+                         "\" has no motion model (key \"motion\", docs/machines.md) to plan it with; choose lines, "
+                         "arcs or nurbs");
+  if (!best) copt.output = parse_output_mode(o.conv.output);
   if (o.conv.tolerance > 0) copt.tolerance = o.conv.tolerance;
   copt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
-  Program p = build_program(job, m, copt);
+  Program p = best ? convert_best(job, m, copt).result.program : build_program(job, m, copt);
   progress.finish();
   p.warnings = shown_warnings(p.warnings, o.conv);
   refuse_warnings_if_strict(p.warnings, o.conv);
@@ -254,8 +262,8 @@ int run_preview(const PreviewArgs& o) {
   in.title = "bezcam preview: " + job.source;
   const char* u = to_string(p.units);
   in.notes.push_back(
-      "machine " + m.name + ", output " + to_string(p.output) + ", tolerance " + format_significant(p.tolerance, 6) +
-      " " + u + " (largest deviation measured " +
+      "machine " + m.name + ", output " + output_name(p) + ", tolerance " + format_significant(p.tolerance, 6) + " " +
+      u + " (largest deviation measured " +
       measured_text(p.max_measured, p.max_bound, p.tolerance, [](double v) { return format_significant(v, 3); }) + " " +
       u + ", proven bound " + format_bound(p.max_bound, 3) + " " + u + ")");
   const ProgramReport rep = make_report(p, m);
