@@ -75,14 +75,17 @@ MotionPlan feed_plan(const MachineProfile& m, const Timeline& tl, PreviewInput& 
     throw InputError(
         errc::usage_option, Place::at_option("--feed"),
         "machine \"" + m.name + "\" has no motion model (key \"motion\", docs/machines.md) to plan the feed with");
-  MotionPlan plan = plan_motion(tl, *m.motion);
   in.machine = m.name;
+  return plan_motion(tl, *m.motion);
+}
+
+// The note on the feed the plan reaches, its times the cycle's.
+void add_feed_note(const MachineProfile& m, const MotionPlan& plan, PreviewInput& in) {
   char b[200];
   std::snprintf(b, sizeof b, "mean feed %.0f %% of programmed; %zu starved block%s", plan.mean_feed_ratio * 100,
                 plan.starved_blocks, plan.starved_blocks == 1 ? "" : "s");
   in.notes.push_back("feed reached on the motion model of machine " + m.name + ": " + b + " (of the cycle: cutting " +
                      format_seconds(plan.cutting_time_s) + ", rapids " + format_seconds(plan.rapid_time_s) + ")");
-  return plan;
 }
 
 // The cycle time of a program read from its text, worded as a program's
@@ -202,7 +205,10 @@ int run_program(const PreviewArgs& o) {
   }
   std::optional<MotionPlan> plan;
   if (o.feed) plan = feed_plan(m, read_timeline(text), in);
-  if (plan) in.plan = &*plan;
+  if (plan) {
+    add_feed_note(m, *plan, in);
+    in.plan = &*plan;
+  }
   PreviewOptions popt;
   popt.control = !o.no_control;
   popt.deviation = o.deviation;
@@ -290,8 +296,11 @@ int run_preview(const PreviewArgs& o) {
   for (const auto& w : p.warnings) in.warnings.push_back("warning: " + w);  // the job's and the program's own
 
   std::optional<MotionPlan> plan;
-  if (o.feed) plan = feed_plan(m, program_timeline(p), in);
-  if (plan) in.plan = &*plan;
+  if (o.feed) plan = program_plan(p, m, feed_plan(m, program_timeline(p), in));  // the header's times
+  if (plan) {
+    add_feed_note(m, *plan, in);
+    in.plan = &*plan;
+  }
   PreviewOptions popt;
   popt.control = !o.no_control;
   popt.deviation = o.deviation;

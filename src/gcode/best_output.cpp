@@ -14,15 +14,6 @@ namespace bezcam {
 
 namespace {
 
-// The whole program's cycle as its report plans it: the moves' plan, or
-// the text read back (the tool change position lines in it) planned.
-double whole_cycle_s(const Program& p, const MachineProfile& m, const MotionPlan& moves_plan) {
-  if (detail::plans_from_moves(p, m)) return moves_plan.cycle_time_s;
-  const MachineProfile set_up = with_compensation_registers(m, p);
-  Timeline tl = read_timeline(write_gcode(p, m, &moves_plan), &set_up);
-  return plan_motion(std::move(tl), *m.motion, PlanDetail::summary).cycle_time_s;
-}
-
 // Whether `a` (time, blocks) beats `b`: shorter by more than a tie, or
 // tied with fewer blocks.
 bool beats(double ta, size_t ba, double tb, size_t bb) {
@@ -129,7 +120,7 @@ OutputTiming time_output(const Job& job, const Program& p, const MachineProfile&
     t.entity_time_s[static_cast<size_t>(e)] += plan.blocks[b].time_s;
     t.entity_moves[static_cast<size_t>(e)] = 1;
   }
-  t.cycle_time_s = whole_cycle_s(p, m, plan);
+  t.cycle_time_s = program_cycle_time_s(p, m, plan);
   return t;
 }
 
@@ -206,7 +197,8 @@ BestConversion convert_best(const Job& job, const MachineProfile& m, const Conve
   b.result = convert_program(job, m, composed);
   b.result.program.best = true;
   const auto cycle_of = [&](const ConvertResult& r) {
-    return r.plan ? r.plan->cycle_time_s : whole_cycle_s(r.program, m, plan_program_summary(r.program, *m.motion));
+    return r.plan ? r.plan->cycle_time_s
+                  : program_cycle_time_s(r.program, m, plan_program_summary(r.program, *m.motion));
   };
   b.choice.cycle_time_s = cycle_of(b.result);
   // The choice is per entity; the program is planned whole. Where a single

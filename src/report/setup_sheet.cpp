@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "bezcam/cam/program_motion.hpp"
+#include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/machine/motion.hpp"
 
@@ -17,9 +18,9 @@ namespace bezcam {
 double sheet_cycle_seconds(const SetupSheetInput& in) {
   const Program& p = *in.program;
   const MachineProfile& m = *in.machine;
-  if (m.motion)  // as the header plans it: the program's moves
-    return in.plan ? in.plan->cycle_time_s
-                   : plan_motion(program_timeline(p), *m.motion, PlanDetail::summary).cycle_time_s;
+  if (m.motion)  // as the header gives it (gcode/convert.hpp)
+    return program_cycle_time_s(p, m,
+                                in.plan ? *in.plan : plan_motion(program_timeline(p), *m.motion, PlanDetail::summary));
   return motion_totals(program_motion(p), m.max_feed_mm_min / mm_per_unit(p.units)).time_s();
 }
 

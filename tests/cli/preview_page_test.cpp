@@ -1,10 +1,12 @@
 // The preview's page through the executable: its header gives the cycle
-// time the program's header gives, and no text of the header or the legend
+// time the program's header, the report and the sheet give, and no text of the header or the legend
 // runs off the page.
 #include <functional>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <regex>
 
+#include "bezcam/gcode/number_format.hpp"
 #include "support/mini_xml.hpp"
 #include "support/run_process.hpp"
 
@@ -32,15 +34,26 @@ std::string all_text(const testxml::Element& e) {
   return s;
 }
 
-TEST(PreviewPage, GivesTheCycleTimeOfTheProgramsHeader) {
+TEST(PreviewPage, GivesTheCycleTimeOfTheProgramsHeaderAsReportAndSheetDo) {
   testproc::TempDir dir;
   for (const char* machine : {"linuxcnc", "fanuc", "generic", "grbl"})
     for (const char* job : {"samples/part-flange.json", "samples/part-lettering.json"}) {
       SCOPED_TRACE(std::string(job) + " on " + machine);
       const fs::path nc = dir / "p.nc", svg = dir / "p.svg";
-      ASSERT_EQ(bezcam({"convert", job, "--machine", machine, "-o", nc.string(), "-q"}).status, 0);
+      const fs::path report = dir / "r.json", html = dir / "s.html";
+      ASSERT_EQ(
+          bezcam({"convert", job, "--machine", machine, "-o", nc.string(), "--report", report.string(), "-q"}).status,
+          0);
       const auto header = cycle_times(testproc::slurp(nc));
       ASSERT_EQ(header.size(), 1u);
+      // The report's and the sheet's are the same (the tool change
+      // position lines of a program with two tools included).
+      const auto rep = nlohmann::json::parse(testproc::slurp(report));
+      if (rep["program"].contains("planned"))
+        EXPECT_EQ("cycle time " + bezcam::format_clock(rep["program"]["planned"]["cycle_time_s"].get<double>()),
+                  header[0]);
+      ASSERT_EQ(bezcam({"sheet", job, "--machine", machine, "-o", html.string(), "-q"}).status, 0);
+      for (const auto& t : cycle_times(testproc::slurp(html))) EXPECT_EQ(t, header[0]);
       for (const char* colour : {"", "--feed"}) {
         std::vector<std::string> args{"preview", job, "--machine", machine, "-o", svg.string(), "-q"};
         if (*colour) args.push_back(colour);
