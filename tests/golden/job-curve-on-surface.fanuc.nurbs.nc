@@ -6,7 +6,7 @@ N30 (T1: 10 mm ball end mill: wing)
 N40 (T2: wheel-arch)
 N50 (T1 plunge feed 400 mm/min)
 N60 (T2 plunge feed 400 mm/min)
-N70 (estimated cycle time 39 min 01 s on the motion model of machine fanuc [acceleration, corners, tool changes])
+N70 (estimated cycle time 39 min 02 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N80 (order shortest: 0 nested contours cut before what encloses them; rapids 917.9 mm in XY instead of 917.9 mm as written [0 mm saved])
 N90 G21 G90 G17
 N100 G40 G49 G80 G94

@@ -6,7 +6,7 @@ N30 (T2: engraving)
 N40 (T1: pocket-outline)
 N50 (T2 plunge feed 250 mm/min)
 N60 (T1 plunge feed 250 mm/min)
-N70 (estimated cycle time 27 s on the motion model of machine fanuc [acceleration, corners, tool changes])
+N70 (estimated cycle time 28 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N80 (cutting along the curves 15.31 s; the exact path's bound on this machine 15.23 s [x1.005; rapids, plunges and pauses not counted])
 N90 (order shortest: 1 nested contour cut before what encloses them; rapids 26.9 mm in XY instead of 13.5 mm as written [13.5 mm more: nested contours first, one tool at a time])
 N100 G21 G90 G17

@@ -7,7 +7,7 @@
 (T1 plunge feed 200 mm/min)
 (T2 plunge feed 200 mm/min)
 (T3 plunge feed 200 mm/min)
-(estimated cycle time 9 min 42 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
+(estimated cycle time 9 min 43 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 (order shortest: 9 nested contours cut before what encloses them; rapids 317.3 mm in XY instead of 430.5 mm as written [113.2 mm saved])
 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03638 mm grid)
 (pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.001 mm at 38.08, 26, asked r + stock 3)
