@@ -157,7 +157,8 @@ void Builder::exact_stop_end(Stop why) {
     f = 0.9;
   else if (why == Stop::end || why == Stop::pause)
     f = 0.5;
-  if (f == 1 || (f == 0.5 && s.parabolic)) return;  // a parabolic blend halved it already
+  if (f == 1) return;
+  if (f == 0.5 && s.parabolic) f = 1;  // a parabolic blend halved it already (the arc's share still applies)
   s.overall_accel *= f;
   s.accel = s.curved ? kTangentialShare * s.overall_accel : std::min(s.accel * f, s.overall_accel);
 }

@@ -93,3 +93,15 @@ TEST(LinuxcncPlanner, AnArcKeepsForTheTangentWhatItsTopSpeedLeaves) {
   EXPECT_NEAR(t[0]->accel, 0.5 * 1000, 1e-9);
   EXPECT_NEAR(w[0]->accel, std::sqrt(1 - 0.01) * 1000, 1e-9);
 }
+
+TEST(LinuxcncPlanner, ALastArcBlendedParabolicallyKeepsHalfOfHalf) {
+  // A ramp into a wide arc that ends the program: the parabolic blend
+  // halves its acceleration, and as the last move LinuxCNC never sizes its
+  // tangential share for its radius: half of that half.
+  const MotionPlan p = plan("G1 X20 Y0 Z0 F6000\nG1 X40 Y0 Z-2\nG3 X40 Y200 I0 J100\n");
+  const auto arc = segments_of(p, 5);
+  ASSERT_EQ(arc.size(), 1u);
+  EXPECT_TRUE(arc[0]->parabolic);
+  EXPECT_NEAR(arc[0]->overall_accel, 500, 1e-9);
+  EXPECT_NEAR(arc[0]->accel, 0.5 * 500, 1e-9);
+}
