@@ -123,10 +123,7 @@ int run_check(const CheckArgs& o) {
   std::vector<std::string> warnings;
   const auto fmt_sig = [](double v) { return format_significant(v, 3); };
   try {
-    if (best && !m.motion)
-      throw InputError(errc::usage_output, Place::at_option("--output"),
-                       "best chooses by the planned cycle time, and machine \"" + m.name +
-                           "\" has no motion model (key \"motion\", docs/machines.md) to plan it with");
+    if (best) refuse_best_without_motion(m);
     // What convert writes, text included.
     const ConvertResult r = [&] {
       if (!best) return convert(job, m, opt);

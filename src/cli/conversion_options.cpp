@@ -1,6 +1,7 @@
 // --machine, --tolerance, --output, --strict, --set and --layer.
 #include "conversion_options.hpp"
 
+#include "bezcam/error.hpp"
 #include "bezcam/warnings.hpp"
 #include "validators.hpp"
 
@@ -72,6 +73,14 @@ void add_drawing_options(CLI::App* s, ConversionOptions& o) {
   s->add_option("--skip", o.skip,
                 "leave out the drawing's entities whose layer or id matches SELECTOR, a glob; repeatable")
       ->type_name("SELECTOR");
+}
+
+void refuse_best_without_motion(const MachineProfile& m) {
+  if (!m.motion)
+    throw InputError(errc::usage_output, Place::at_option("--output"),
+                     "best chooses by the planned cycle time, and machine \"" + m.name +
+                         "\" has no motion model (key \"motion\", docs/machines.md) to plan it with; choose lines, "
+                         "arcs or nurbs");
 }
 
 }  // namespace bezcam::cli

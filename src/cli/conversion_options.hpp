@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "bezcam/machine/machine_profile.hpp"
+
 namespace bezcam::cli {
 
 struct ConversionOptions {
@@ -28,6 +30,10 @@ struct ConversionOptions {
 /// `s`; `output_help` is the help of --output (what it means for this
 /// command); `takes_best`: --output best is one of its choices.
 void add_conversion_options(CLI::App* s, ConversionOptions& o, const std::string& output_help, bool takes_best = false);
+
+/// --output best chooses by the planned cycle time: refused at --output
+/// (exit 2, what to choose instead) when `m` has no motion model.
+void refuse_best_without_motion(const MachineProfile& m);
 
 /// --set, --layer, --only and --skip: how a drawing (.svg, .dxf) given instead of a job is
 /// read (import).

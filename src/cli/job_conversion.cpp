@@ -20,10 +20,7 @@ JobConversion convert_job_file(const std::string& path, const ConversionOptions&
   const bool best = conv.output == "best";
   if (best && !c.machine.motion) {
     if (!quiet) print_warnings(c.job.warnings);
-    throw InputError(errc::usage_output, Place::at_option("--output"),
-                     "best chooses by the planned cycle time, and machine \"" + c.machine.name +
-                         "\" has no motion model (key \"motion\", docs/machines.md) to plan it with; choose lines, "
-                         "arcs or nurbs");
+    refuse_best_without_motion(c.machine);
   }
   if (!best) opt.output = parse_output_mode(conv.output);
   if (conv.tolerance > 0) opt.tolerance = conv.tolerance;

@@ -242,11 +242,7 @@ int run_preview(const PreviewArgs& o) {
   // The same program convert would build, from the same options.
   ConvertOptions copt;
   const bool best = o.conv.output == "best";
-  if (best && !m.motion)
-    throw InputError(errc::usage_output, Place::at_option("--output"),
-                     "best chooses by the planned cycle time, and machine \"" + m.name +
-                         "\" has no motion model (key \"motion\", docs/machines.md) to plan it with; choose lines, "
-                         "arcs or nurbs");
+  if (best) refuse_best_without_motion(m);
   if (!best) copt.output = parse_output_mode(o.conv.output);
   if (o.conv.tolerance > 0) copt.tolerance = o.conv.tolerance;
   copt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };
