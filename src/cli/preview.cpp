@@ -21,6 +21,7 @@
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/gcode/reader.hpp"
 #include "bezcam/gcode/timeline.hpp"
+#include "bezcam/gcode/writer.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "bezcam/kernel/surface.hpp"
 #include "bezcam/limits.hpp"
@@ -94,14 +95,9 @@ void add_feed_note(const MachineProfile& m, const MotionPlan& plan, PreviewInput
 // rapids at the maximum feed.
 std::string program_cycle_time(const MachineProfile& m, std::string_view text, std::span<const MotionBlock> motion,
                                Units units) {
-  if (m.motion)
-    return "estimated cycle time " +
-           bezcam::format_clock(plan_motion(read_timeline(text, &m), *m.motion, PlanDetail::summary).cycle_time_s) +
-           " on the motion model of machine " + m.name + " (acceleration, corners, tool changes)";
-  const double rapid = m.max_feed_mm_min / mm_per_unit(units);
-  return "estimated cycle time " + bezcam::format_clock(motion_totals(motion, rapid).time_s()) +
-         ": feeds as programmed, " + "rapids at " + format_significant(rapid, 6) + " " + to_string(units) +
-         "/min, no acceleration, tool changes not counted";
+  const double s = m.motion ? plan_motion(read_timeline(text, &m), *m.motion, PlanDetail::summary).cycle_time_s
+                            : motion_totals(motion, m.max_feed_mm_min / mm_per_unit(units)).time_s();
+  return cycle_time_words(m, s, units);
 }
 
 // --program: the motion of a G-code file, read line by line with progress

@@ -186,16 +186,14 @@ class Writer {
     if (m_.motion) {
       const MotionPlan own = plan_ ? MotionPlan{} : plan_motion(program_timeline(p_), *m_.motion, PlanDetail::summary);
       const MotionPlan& plan = plan_ ? *plan_ : own;
-      note("estimated cycle time " + format_clock(plan.cycle_time_s) + " on the motion model of machine " + m_.name +
-           " (acceleration, corners, tool changes)");
+      note(cycle_time_words(m_, plan.cycle_time_s, p_.units));
       path_bound(plan.path_time_s);
       return;
     }
     const double rapid = m_.max_feed_mm_min / mm_per_unit(p_.units);
     const auto motion = program_motion(p_);
     const double s = motion_totals(motion, rapid).time_s();
-    note("estimated cycle time " + format_clock(s) + ": feeds as programmed, rapids at " +
-         format_significant(rapid, 6) + " " + to_string(p_.units) + "/min, no acceleration, tool changes not counted");
+    note(cycle_time_words(m_, s, p_.units));
   }
   // The cutting along curves beside the time-optimal bound of their exact
   // path (machine/path_bound.hpp), when the program has such cuts.
@@ -505,6 +503,15 @@ class Writer {
 };
 
 }  // namespace
+
+std::string cycle_time_words(const MachineProfile& m, double seconds, Units units) {
+  if (m.motion)
+    return "estimated cycle time " + format_clock(seconds) + " on the motion model of machine " + m.name +
+           " (acceleration, corners, tool changes)";
+  return "estimated cycle time " + format_clock(seconds) + ": feeds as programmed, rapids at " +
+         format_significant(m.max_feed_mm_min / mm_per_unit(units), 6) + " " + to_string(units) +
+         "/min, no acceleration, tool changes not counted";
+}
 
 std::string write_gcode(const Program& p, const MachineProfile& m) { return Writer(p, m).run(); }
 

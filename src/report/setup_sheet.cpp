@@ -11,6 +11,7 @@
 #include "bezcam/cam/program_motion.hpp"
 #include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
+#include "bezcam/gcode/writer.hpp"
 #include "bezcam/machine/motion.hpp"
 
 namespace bezcam {
@@ -25,15 +26,7 @@ double sheet_cycle_seconds(const SetupSheetInput& in) {
 }
 
 std::string sheet_cycle_time(const SetupSheetInput& in) {
-  const Program& p = *in.program;
-  const MachineProfile& m = *in.machine;
-  const std::string when = format_clock(sheet_cycle_seconds(in));
-  if (m.motion)
-    return "estimated cycle time " + when + " on the motion model of machine " + m.name +
-           " (acceleration, corners, tool changes)";
-  return "estimated cycle time " + when + ": feeds as programmed, rapids at " +
-         format_significant(m.max_feed_mm_min / mm_per_unit(p.units), 6) + " " + to_string(p.units) +
-         "/min, no acceleration, tool changes not counted";
+  return cycle_time_words(*in.machine, sheet_cycle_seconds(in), in.program->units);
 }
 
 std::string sheet_chord_error(const Program& p) {

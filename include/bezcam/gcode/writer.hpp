@@ -21,6 +21,12 @@ struct MotionPlan;
 /// header's cycle time is its, not a second plan's. Null: as above.
 std::string write_gcode(const Program& p, const MachineProfile& m, const MotionPlan* plan);
 
+/// The header's words for a cycle time of `seconds`: on the machine's
+/// motion model when `m` has one, else feeds as programmed and rapids at
+/// the machine's maximum feed (in `units` per minute). The sheet and the
+/// preview say it in the same words.
+std::string cycle_time_words(const MachineProfile& m, double seconds, Units units);
+
 /// Receives the program's text in order, in pieces of about 64 KiB.
 using GcodeSink = std::function<void(std::string_view)>;
 /// The same text, streamed: never held whole in memory.
