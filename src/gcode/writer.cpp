@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "bezcam/cam/program_motion.hpp"
+#include "bezcam/gcode/convert.hpp"
 #include "bezcam/gcode/number_format.hpp"
 #include "bezcam/limits.hpp"
 #include "bezcam/machine/motion.hpp"
@@ -186,7 +187,9 @@ class Writer {
     if (m_.motion) {
       const MotionPlan own = plan_ ? MotionPlan{} : plan_motion(program_timeline(p_), *m_.motion, PlanDetail::summary);
       const MotionPlan& plan = plan_ ? *plan_ : own;
-      note(cycle_time_words(m_, plan.cycle_time_s, p_.units));
+      // Given, the plan is the program's (program_plan()); planned here,
+      // the moves' with the text's time where they differ.
+      note(cycle_time_words(m_, plan_ ? plan.cycle_time_s : program_cycle_time_s(p_, m_, own), p_.units));
       path_bound(plan.path_time_s);
       return;
     }
