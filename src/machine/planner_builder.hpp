@@ -92,6 +92,10 @@ struct Builder {
   MotionPlan plan;
   double junction_pending_ = 0;
   std::vector<bool> lookahead_limited_;
+  // LinuxCNC's parabolic blends: at junction i (0 on paper: each move
+  // plans to stop there) the speed at which the next move starts while the
+  // one before still decelerates; 0 elsewhere.
+  std::vector<double> overlap_;
 
   // ---- segments (planner_segments.cpp) ----
   // The segment's figures for the passes, the share its kinks take off its
@@ -154,12 +158,17 @@ struct Builder {
   // the two directions parallel within 1e-6 rad).
   bool blend_arc_plane(const PlanSegment& prev, const PlanSegment& next, const Vec3& u1, const Vec3& u2) const;
   // LinuxCNC: the speed of a parabolic blend between the two moves (both
-  // overlapping, each with half its acceleration once `halved`, else only
-  // the first as when LinuxCNC weighs it against the other blends).
-  double parabolic_speed(const PlanSegment& prev, const PlanSegment& next, double phi, double tol, bool halved) const;
+  // overlapping, each with half its acceleration; when `rating`, as
+  // LinuxCNC weighs it against the other blends: a kink's share off too).
+  double parabolic_speed(const PlanSegment& prev, const PlanSegment& next, const Vec3& u1, const Vec3& u2,
+                         const Vec3& P, double tol, bool rating, double* v_first = nullptr) const;
   // LinuxCNC: the corner taken as a parabolic blend: both moves keep half
-  // their acceleration (an arc's speed cap follows). Returns its speed.
-  double parabolic_corner(PlanSegment& prev, PlanSegment& next, double phi, double tol);
+  // their acceleration (an arc's speed cap follows) and each plans to stop
+  // at the corner; the next starts once the first has slowed to the
+  // blend's speed, and the two then run together. Records that speed for
+  // the junction about to be pushed.
+  void parabolic_corner(PlanSegment& prev, PlanSegment& next, const Vec3& u1, const Vec3& u2, const Vec3& P,
+                        double tol);
   // The speed of a corner where an arc or a curve meets another move; -1
   // when no blend fits.
   double curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk, const MotionBlock&,

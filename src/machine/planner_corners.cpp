@@ -97,23 +97,28 @@ void Builder::take_block(size_t bi, const MotionBlock& b) {
         vj = r;
       } else {
         vj = linuxcnc() && !blend_arc_plane(prev, s, u1, u2) ? -1 : curved_corner(prev, s, pbk, b, u1, u2, phi, tol);
-        if (vj < 0) {
-          // No blend arc: LinuxCNC takes the corner as a parabolic blend or
-          // as a kink at a reduced speed, whichever it rates faster (a
-          // parabolic blend at half its speed: it halves both moves'
-          // acceleration); others stop.
-          vj = 0;
-          if (linuxcnc() && kink_scale > 0) {
-            const double v_kink = std::min(prev.vmax, s.vmax) * kKinkRatio / kink_scale;
-            if (parabolic_speed(prev, s, phi, tol, false) / 2 > v_kink) {
-              vj = parabolic_corner(prev, s, phi, tol);
-            } else {
-              vj = v_kink;
-              prev.kink_reduce = std::max(prev.kink_reduce, kKinkRatio);
-              s.kink_reduce = std::max(s.kink_reduce, kKinkRatio);
-            }
+        if (linuxcnc() && kink_scale > 0) {
+          // LinuxCNC rates the blend arc (its speed), the kink (at a
+          // reduced speed, 10 % less acceleration) and a parabolic blend
+          // (at half its speed: it halves both moves' acceleration), and
+          // takes the fastest.
+          const double v_kink = std::min(prev.vmax, s.vmax) * kKinkRatio / kink_scale;
+          const double v_parabolic = parabolic_speed(prev, s, u1, u2, pbk.to, tol, true) / 2;
+          if (vj >= v_kink && vj >= v_parabolic) {
+            // the blend arc
+          } else if (v_parabolic > v_kink) {
+            parabolic_corner(prev, s, u1, u2, pbk.to, tol);
+            cap_segment_time(s);
+            junction.push_back(0);
+            segs.push_back(std::move(s));
+            continue;
+          } else {
+            vj = v_kink;
+            prev.kink_reduce = std::max(prev.kink_reduce, kKinkRatio);
+            s.kink_reduce = std::max(s.kink_reduce, kKinkRatio);
           }
         }
+        vj = std::max(vj, 0.0);  // no blend elsewhere: a stop
       }
       if (vj <= 0) exact_stop_end(tol <= 0 ? Stop::exact_mode : Stop::corner);
       cap_segment_time(s);
@@ -308,10 +313,14 @@ bool Builder::blend_arc_plane(const PlanSegment& prev, const PlanSegment& next, 
   return in_plane_of(prev.pieces.back()) && in_plane_of(next.pieces.front());
 }
 
-double Builder::parabolic_speed(const PlanSegment& prev, const PlanSegment& next, double phi, double tol,
-                                bool halved) const {
-  const double a1 = prev.parabolic ? prev.accel : 0.5 * prev.accel;
-  const double a2 = halved && !next.parabolic ? 0.5 * next.accel : next.accel;
+double Builder::parabolic_speed(const PlanSegment& prev, const PlanSegment& next, const Vec3& u1, const Vec3& u2,
+                                const Vec3& P, double tol, bool rating, double* v_first) const {
+  // Both moves take half their acceleration; while LinuxCNC rates the
+  // blend, a kink's share (at least the kink ratio) is off it too.
+  auto share = [&](const PlanSegment& sg) {
+    return (sg.parabolic ? 1.0 : 0.5) * (rating ? 1 - std::max(sg.kink_reduce, kKinkRatio) : 1.0);
+  };
+  const double a1 = share(prev) * prev.accel, a2 = share(next) * next.accel;
   if (!(a1 > 0) || !(a2 > 0)) return 0;
   // The speed each may reach: over half its length (a blend may take up
   // to that), at its own top speed.
@@ -320,7 +329,20 @@ double Builder::parabolic_speed(const PlanSegment& prev, const PlanSegment& next
   if (!(vr1 > 0) || !(vr2 > 0)) return 0;
   const double t_blend = std::min(std::min(prev.length / vr1, next.length / vr2), std::max(vr1 / a1, vr2 / a2));
   double v1 = std::min(vr1, t_blend * a1), v2 = std::min(vr2, t_blend * a2);
-  const double theta = 0.5 * (kPi - phi);  // half the angle between the moves
+  // The angle between the direction the first move ends in and the one
+  // the next move starts accelerating in: an arc's leans towards its
+  // centre, by the centripetal acceleration of half its speed against its
+  // whole acceleration.
+  Vec3 w2 = u2;
+  if (next.curved && !next.blend && std::isfinite(next.radius) && next.radius > 0) {
+    Vec3 inward = next.center - P;
+    inward = inward - u2 * dot(inward, u2);
+    if (norm(inward) > 1e-12) {
+      const double an = 0.25 * next.vmax * next.vmax / next.radius;
+      w2 = unit(u2 * (share(next) * next.overall_accel) + unit(inward) * an);
+    }
+  }
+  const double theta = 0.5 * std::acos(std::clamp(-dot(u1, w2), -1.0, 1.0));
   if (std::isfinite(tol) && tol > 0 && std::cos(theta) > std::sin(1e-3)) {
     // Within the path tolerance: decelerating at a1, the corner is passed
     // at 2 T / cos(theta) from its end.
@@ -328,11 +350,14 @@ double Builder::parabolic_speed(const PlanSegment& prev, const PlanSegment& next
     v1 = std::min(v1, v_tol);
     v2 = std::min(v2, v_tol);
   }
+  if (v_first) *v_first = v1;
   return std::sin(theta) * 0.5 * (v1 + v2);
 }
 
-double Builder::parabolic_corner(PlanSegment& prev, PlanSegment& next, double phi, double tol) {
-  const double v = parabolic_speed(prev, next, phi, tol, true);
+void Builder::parabolic_corner(PlanSegment& prev, PlanSegment& next, const Vec3& u1, const Vec3& u2, const Vec3& P,
+                               double tol) {
+  double v_first = 0;
+  parabolic_speed(prev, next, u1, u2, P, tol, false, &v_first);
   for (PlanSegment* sg : {&prev, &next}) {
     if (sg->parabolic) continue;
     sg->parabolic = true;
@@ -354,8 +379,88 @@ double Builder::parabolic_corner(PlanSegment& prev, PlanSegment& next, double ph
     }
   }
   junction.back() = std::min(junction.back(), prev.vmax);
-  return std::min({v, prev.vmax, next.vmax});
+  if (overlap_.size() <= junction.size()) overlap_.resize(junction.size() + 1, 0);
+  overlap_[junction.size()] = std::min({v_first, prev.vmax, next.vmax});
 }
+
+namespace {
+
+// The arc at a corner: its centre and radius, whether the corner lies on
+// its outer side (LinuxCNC's convexity), and the most of its sweep a blend
+// may take (0: not an arc).
+struct ArcEnd {
+  Vec3 center;
+  double radius = 0;
+  bool convex = false;
+  double phi_max = 0;
+  bool arc_block = false;  // a G2/G3 block: its circle is known exactly
+};
+
+// The length of the circle of radius R tangent to both arcs at the corner
+// P (inside an arc where the corner is convex to it, outside otherwise),
+// the one nearer P; -1 where it does not exist, strays more than `tol`
+// from P, or takes more of an arc than its share.
+double arc_arc_blend_length(const Vec3& P, const ArcEnd& a, const ArcEnd& b, double R, double tol) {
+  const double d1 = (a.convex ? -R : R) + a.radius, d2 = (b.convex ? -R : R) + b.radius;
+  const Vec3 c12 = b.center - a.center;
+  const double cx = norm(c12);
+  if (!(cx > 1e-12)) return -1;
+  const Vec3 uc = c12 / cx;
+  const double Cx = (d2 * d2 - d1 * d1 - cx * cx) / (-2 * cx);
+  const double Cy = std::sqrt(std::max(0.0, d1 * d1 - Cx * Cx));
+  // The direction across the line of centres, in the corner's plane.
+  Vec3 across = (P - a.center) - uc * dot(P - a.center, uc);
+  if (norm(across) < 1e-12) return -1;
+  across = unit(across);
+  const Vec3 c1 = a.center + uc * Cx + across * Cy, c2 = a.center + uc * Cx - across * Cy;
+  const Vec3 C = norm(c1 - P) <= norm(c2 - P) ? c1 : c2;
+  if (norm(C - P) - R > tol) return -1;
+  auto angle = [](const Vec3& x, const Vec3& y) { return std::acos(std::clamp(dot(unit(x), unit(y)), -1.0, 1.0)); };
+  if (angle(P - a.center, C - a.center) > a.phi_max || angle(P - b.center, C - b.center) > b.phi_max) return -1;
+  const Vec3 start = a.center + unit(C - a.center) * a.radius, end = b.center + unit(C - b.center) * b.radius;
+  return R * angle(start - C, end - C);
+}
+
+// The length of the circle of radius R tangent to the line through P along
+// u (before P when `line_first`, after it otherwise: LinuxCNC solves both
+// for the distance along the line nearer P in size) and to the arc, on the
+// side the corner turns to; -1 where it does not exist, strays more than
+// `tol` from P, or takes more of the arc than its share.
+double line_arc_blend_length(const Vec3& P, const Vec3& u, const Vec3& binormal, bool line_first, const ArcEnd& arc,
+                             double R, double tol) {
+  const Vec3 n = unit(cross(binormal, u));
+  const double d = (arc.convex ? -R : R) + arc.radius;
+  const Vec3 r = arc.center - P;
+  const double cu = dot(r, u), cn = dot(r, n);
+  const double disc = cu * cu - (cu * cu - d * d + (R - cn) * (R - cn));
+  if (disc < 0) return -1;
+  const double dL = std::min(std::abs(-cu + std::sqrt(disc)), std::abs(-cu - std::sqrt(disc)));
+  const Vec3 on_line = P + u * (line_first ? -dL : dL);
+  const Vec3 C = on_line + n * R;
+  if (norm(C - P) - R > tol) return -1;
+  auto angle = [](const Vec3& x, const Vec3& y) { return std::acos(std::clamp(dot(unit(x), unit(y)), -1.0, 1.0)); };
+  if (angle(P - arc.center, C - arc.center) > arc.phi_max) return -1;
+  const Vec3 on_arc = arc.center + unit(C - arc.center) * arc.radius;
+  return R * angle(on_line - C, on_arc - C);
+}
+
+// LinuxCNC's circle for an arc at the corner P where its tangent is u: an
+// arc block's centre moved along u by its spiral (end radius - start
+// radius) per radian, through P; other curves as they are.
+ArcEnd spiral_fit(const PlanSegment& sg, const MotionBlock& b, const Vec3& P, const Vec3& u) {
+  ArcEnd e{sg.center, sg.radius};
+  if ((b.kind != BlockKind::arc_cw && b.kind != BlockKind::arc_ccw) || !(arc_sweep(b) > 0)) return e;
+  Vec3 c = to_plane(b.center, b.plane);
+  c.z = to_plane(P, b.plane).z;  // in P's plane
+  Vec3 r0 = to_plane(b.from, b.plane) - c, r1 = to_plane(b.to, b.plane) - c;
+  r0.z = r1.z = 0;
+  e.center = from_plane(c, b.plane) + u * ((norm(r1) - norm(r0)) / arc_sweep(b));
+  e.radius = norm(P - e.center);
+  e.arc_block = true;
+  return e;
+}
+
+}  // namespace
 
 // A corner where an arc or a curve meets another move: the speed of a
 // blend arc within the tolerance between the secants of the arcs' ends
@@ -363,15 +468,18 @@ double Builder::parabolic_corner(PlanSegment& prev, PlanSegment& next, double ph
 // 1/3 of the one after, and half of it for a line), the shape kept.
 // -1 when no blend fits.
 double Builder::curved_corner(const PlanSegment& prev, const PlanSegment& next, const MotionBlock& pbk,
-                              const MotionBlock&, const Vec3& u1, const Vec3& u2, double phi, double tol) {
+                              const MotionBlock& nbk, const Vec3& u1, const Vec3& u2, double phi, double tol) {
   const Vec3 P = pbk.to;
   const double theta_tan = 0.5 * (kPi - phi);
   double theta = theta_tan, L1, L2;
+  ArcEnd end1 = spiral_fit(prev, pbk, P, u1), end2 = spiral_fit(next, nbk, P, u2);
   if (prev.curved && std::isfinite(prev.radius)) {
     const bool convex = dot(P - prev.center, u2) < 0;
     const double phi_max = std::min(prev.angle * 2 / 3, convex ? theta_tan : kPi / 2);
     if (convex) theta = std::min(theta, theta_tan - phi_max / 4);
     L1 = convex ? std::sin(phi_max / 4) * prev.radius : phi_max * prev.radius;
+    end1.convex = convex;
+    end1.phi_max = phi_max;
   } else {
     L1 = std::min(prev.length, kBlendFraction * plan.blocks[static_cast<size_t>(prev.block)].length);
   }
@@ -380,6 +488,8 @@ double Builder::curved_corner(const PlanSegment& prev, const PlanSegment& next, 
     const double phi_max = std::min(next.angle / 3, convex ? theta_tan : kPi / 2);
     if (convex) theta = std::min(theta, theta_tan - phi_max / 4);
     L2 = convex ? std::sin(phi_max / 4) * next.radius : phi_max * next.radius;
+    end2.convex = convex;
+    end2.phi_max = phi_max;
   } else {
     L2 = kBlendFraction * next.length;
   }
@@ -403,7 +513,28 @@ double Builder::curved_corner(const PlanSegment& prev, const PlanSegment& next, 
   const double s_blend = std::min(std::sqrt(2 * a_par * d_geom), v_plan) / a_par * v_plan;
   const double R = std::max(v_plan * v_plan / an, std::min(s_blend / turn, R_geom));
   double v = v_plan;
-  if (model.min_segment_periods > 0) v = std::min(v, R * turn / (model.min_segment_periods * period));
+  // (A curve block's arcs are LinuxCNC's interpreter's, known only
+  // approximately here: their corners keep the estimate below.)
+  const bool exact1 = end1.phi_max > 0 ? end1.arc_block : !prev.curved;
+  const bool exact2 = end2.phi_max > 0 ? end2.arc_block : !next.curved;
+  if (linuxcnc() && (end1.phi_max > 0 || end2.phi_max > 0) && exact1 && exact2) {
+    // LinuxCNC places the blend circle tangent to both moves: it must stay
+    // within the tolerance and within each arc's share, and it is as long
+    // as the turn between the points where it touches them (an arc's own
+    // turn along its stretch counts); a blend runs at most its length in
+    // one period.
+    const Vec3 bn = cross(u1, u2);
+    double len = -1;
+    if (end1.phi_max > 0 && end2.phi_max > 0)
+      len = arc_arc_blend_length(P, end1, end2, R, T);
+    else if (norm(bn) > 1e-12)
+      len = end1.phi_max > 0 ? line_arc_blend_length(P, u2, unit(bn), false, end1, R, T)
+                             : line_arc_blend_length(P, u1, unit(bn), true, end2, R, T);
+    if (len < 0) return -1;
+    v = std::min(v, len / period);
+  } else if (model.min_segment_periods > 0) {
+    v = std::min(v, R * turn / (model.min_segment_periods * period));
+  }
   const double dev = R / std::sin(theta) - R;
   if (dev > plan.max_path_deviation) {
     plan.max_path_deviation = dev;

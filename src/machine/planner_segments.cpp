@@ -86,16 +86,20 @@ Vec3 block_tangent(const MotionBlock& b, bool end) {
     case BlockKind::arc_cw:
     case BlockKind::arc_ccw: {
       // In the plane's coordinates (a, b, axis), every plane is G17's.
-      const Vec3 p = to_plane(end ? b.to : b.from, b.plane);
-      Vec3 r = p - to_plane(b.center, b.plane);
-      r.z = 0;
+      // The radius runs linearly from the start's to the end's: a
+      // spiral leans the tangent outwards by (end - start radius) / sweep.
+      const Vec3 c = to_plane(b.center, b.plane);
+      Vec3 r = to_plane(end ? b.to : b.from, b.plane) - c, r0 = to_plane(b.from, b.plane) - c,
+           r1 = to_plane(b.to, b.plane) - c;
+      r.z = r0.z = r1.z = 0;
       Vec3 t = b.kind == BlockKind::arc_ccw ? Vec3{-r.y, r.x, 0} : Vec3{r.y, -r.x, 0};
       t = unit(t);
       const double L = block_length(b);
       const double sweep = arc_sweep(b);
       const double rr = norm(r);
       const int h = world_axis(b.plane, 2);
-      if (L > 0 && rr > 0) t = unit(t * (rr * sweep) + Vec3{0, 0, b.to[h] - b.from[h]});
+      if (L > 0 && rr > 0 && sweep > 0)
+        t = unit(t * (rr * sweep) + r * ((norm(r1) - norm(r0)) / rr) + Vec3{0, 0, b.to[h] - b.from[h]});
       return from_plane(t, b.plane);
     }
     default: {

@@ -212,16 +212,23 @@ void Builder::totals() {
     if (i == lean.size()) break;
     const Lean& s = lean[i];
     if (!summary) segs[i].t_start = t;
-    t += s.time();
-    (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += s.time();
+    // A parabolic blend at its end: the next move starts once this one has
+    // slowed to the blend's speed, and the rest of its ramp down runs
+    // together with the next move's start.
+    const double ov = i + 1 < overlap_.size() && overlap_[i + 1] > 0 && s.accel > 0
+                          ? std::min(overlap_[i + 1], s.vpeak) / s.accel
+                          : 0;
+    const double own = std::max(0.0, s.time() - ov);
+    t += own;
+    (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += own;
     const size_t b = static_cast<size_t>(s.block);
     // The cut along a curve, with the blends at both its ends (where the
     // machine turns from the plunge and into the retract).
     auto marked = [&](size_t k) { return k < tl.on_path.size() && tl.on_path[k]; };
     if (marked(b) || (s.blend && i + 1 < lean.size() && marked(static_cast<size_t>(lean[i + 1].block))))
-      plan.path_time_s += s.time();
+      plan.path_time_s += own;
     PlannedBlock& pb = plan.blocks[b];
-    pb.time_s += s.time();
+    pb.time_s += own;
     pb.peak_feed = std::max(pb.peak_feed, s.vpeak * 60);
     SpeedLimit l = s.limit;
     if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
@@ -233,7 +240,7 @@ void Builder::totals() {
     const double want = pb.programmed_feed / 60;
     if (!(want > 0)) continue;
     cut += s.length;
-    at_feed += s.time() * want;
+    at_feed += own * want;
   }
   while (pause < tl.pauses.size()) {
     plan.pause_start_s[pause] = t;

@@ -4,9 +4,11 @@
 // halves both moves' acceleration, a wide arc keeps more than half of the
 // acceleration for the tangent. The cycle times against LinuxCNC itself
 // are the anchor's (tests/lcnc/).
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <string>
+#include <utility>
 
 #include "bezcam/gcode/timeline.hpp"
 #include "bezcam/machine/planner.hpp"
@@ -104,4 +106,42 @@ TEST(LinuxcncPlanner, ALastArcBlendedParabolicallyKeepsHalfOfHalf) {
   EXPECT_TRUE(arc[0]->parabolic);
   EXPECT_NEAR(arc[0]->overall_accel, 500, 1e-9);
   EXPECT_NEAR(arc[0]->accel, 0.5 * 500, 1e-9);
+}
+
+TEST(LinuxcncPlanner, ANearTangentJointBetweenArcsIsAKinkWhereItsBlendArcIsSlower) {
+  // Two arcs turning the same way (R 20 then R 80) meet at a kink of 1e-3
+  // rad. LinuxCNC sizes a blend circle tangent to both: its radius is huge
+  // but the arcs turn along it, so it is 0.04 mm long and could run at 40
+  // mm/s (its length in one period). LinuxCNC takes the faster of the
+  // three ways: here the kink, at the speed whose one-period turn is 0.1
+  // of the axes' limits (doubled at arcs), and the two arcs lose 0.1 of
+  // their acceleration.
+  MotionModel m = linuxcnc_model();
+  m.max_velocity_mm_min = {10000, 10000, 5000};
+  m.max_acceleration_mm_s2 = {1000, 1000, 500};
+  const MotionPlan p = plan_motion(read_timeline("G21 G90 G17\nG0 X0 Y0 Z0\nG1 X10 Y0 F6000\n"
+                                                 "G3 X20 Y2.6795 I0 J20\n"
+                                                 "G3 X31.431 Y10.6665 I-39.9307 J69.322\nM30\n"),
+                                   m);
+  const auto first = segments_of(p, 4), second = segments_of(p, 5);
+  ASSERT_EQ(first.size(), 1u);
+  ASSERT_EQ(second.size(), 1u);
+  // The directions at the joint (a ccw tangent is the radius turned by
+  // 90 degrees) and the spike of turning between them within a period at
+  // 100 mm/s.
+  const double px = 20, py = 2.6795;
+  auto ccw = [&](double cx, double cy) {
+    const double rx = px - cx, ry = py - cy, r = std::hypot(rx, ry);
+    return std::pair<double, double>{-ry / r, rx / r};
+  };
+  const auto [ax, ay] = ccw(10, 20);
+  const auto [bx, by] = ccw(20 - 39.9307, 2.6795 + 69.322);
+  const double a_inst = 100 / 0.001 + 1000;
+  const double spike = std::max(std::abs(bx - ax), std::abs(by - ay)) * a_inst / 1000 / 0.5;
+  ASSERT_GT(spike, 0.1);  // not tangent for LinuxCNC
+  const double v_kink = 100 * 0.1 / spike;
+  EXPECT_NEAR(first[0]->v1, v_kink, 0.005 * v_kink);
+  EXPECT_NEAR(second[0]->v0, v_kink, 0.005 * v_kink);
+  EXPECT_NEAR(first[0]->kink_reduce, 0.1, 1e-12);
+  EXPECT_NEAR(second[0]->kink_reduce, 0.1, 1e-12);
 }
