@@ -16,7 +16,7 @@ version and the profile's motion object it was measured for.
 --check (ctest LinuxCNC.CycleTimeReference; no LinuxCNC needed, seconds):
 runs `bezcam simulate --program P --machine PROFILE --report R` on every
 program and compares with reference.tsv; fails if any is off by more than
-5 %, or if the reference does not hold the program as it is (its
+3 %, or if the reference does not hold the program as it is (its
 fingerprint) or the profile's motion object as it is.
 
 Without --check (the live anchor, minutes; the build target
@@ -27,11 +27,11 @@ periods (at most 4 runs): a run LinuxCNC's task fed too slowly (a busy
 machine) is slower and does not repeat. Each run's late servo invocations
 and the motion queue's low-water mark are shown. It prints a table
 (program, LinuxCNC s, runs, reference s, bezcam s, ratio), fails if bezcam
-is off by more than 5 %, and reports where LinuxCNC's time or a program
+is off by more than 3 %, and reports where LinuxCNC's time or a program
 differs from reference.tsv; --update rewrites reference.tsv and the
 programs in programs/bz/ from this run instead.
 
-Exit status: 0 all within 5 % (and, live, the reference reproduced or
+Exit status: 0 all within 3 % (and, live, the reference reproduced or
 updated), 1 a program off by more, a run failed or did not reproduce, or
 the reference differs, 2 usage or a profile without `motion`, 77 LinuxCNC
 is not installed (live; ctest counts that as skipped). --lcnc-only runs the
@@ -55,7 +55,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 import lcnc_run  # noqa: E402
 
-TOLERANCE = 0.05   # fail above
+TOLERANCE = 0.03   # fail above
 GOOD = 0.02        # counted as agreeing closely
 SKIP = 77
 REFERENCE = os.path.join(HERE, "reference.tsv")
@@ -299,11 +299,11 @@ def check(a, profile, motion):
                 "%.3f" % row["bezcam"] if "bezcam" in row else "-",
                 "%.3f" % row["ratio"] if "ratio" in row else "-",
                 "   " + row["error"] if "error" in row else
-                "   OFF BY MORE THAN 5 %" if abs(row["ratio"] - 1) > TOLERANCE else ""), flush=True)
+                "   OFF BY MORE THAN 3 %" if abs(row["ratio"] - 1) > TOLERANCE else ""), flush=True)
     compared = [r for r in rows if "ratio" in r]
     off = [r for r in compared if abs(r["ratio"] - 1) > TOLERANCE]
     close = [r for r in compared if abs(r["ratio"] - 1) <= GOOD]
-    print("%d programs, %d of %d within 2 %%, %d off by more than 5 %% (%.1f s)"
+    print("%d programs, %d of %d within 2 %%, %d off by more than 3 %% (%.1f s)"
           % (len(rows), len(close), len(compared), len(off), time.monotonic() - t_start))
     for fl in failures:
         print("FAILED " + fl)
@@ -450,7 +450,7 @@ def main(argv=None):
                     row["bezcam"] = bezcam_cycle(a.bezcam, path, profile, tmp)
                     row["ratio"] = row["bezcam"] / row["lcnc"]
                     if abs(row["ratio"] - 1) > TOLERANCE:
-                        notes.insert(0, "OFF BY MORE THAN 5 %")
+                        notes.insert(0, "OFF BY MORE THAN 3 %")
             except (RuntimeError, FileNotFoundError, KeyError, ValueError) as ex:
                 row["error"] = str(ex).splitlines()[0]
                 failures.append("%s: %s" % (name, ex))
@@ -507,7 +507,7 @@ def main(argv=None):
         len(rows), sum(r.get("runs", 0) for r in rows), sum(r.get("lcnc", 0) for r in rows),
         time.monotonic() - t_start))
     if not a.lcnc_only:
-        print("%d of %d within 2 %%, %d off by more than 5 %%"
+        print("%d of %d within 2 %%, %d off by more than 3 %%"
               % (len(close), len(compared), len(off)))
     for d in ref_diffs:
         print("REFERENCE " + d)

@@ -211,15 +211,15 @@ class Check(unittest.TestCase):
         self.assertEqual(motion_fp, anchor.fingerprint(MOTION))
         self.assertEqual(rows["square-F3000"]["cycle_time_s"], 3.442)
 
-    def test_within_five_per_cent_passes(self):
+    def test_within_three_per_cent_passes(self):
         rc, out = self.check(3.40, self.reference(3.442))
         self.assertEqual(rc, 0, out)
         self.assertIn("1 of 1 within 2 %", out)
 
     def test_off_by_more_fails(self):
-        rc, out = self.check(3.0, self.reference(3.442))
+        rc, out = self.check(3.33, self.reference(3.442))  # 3.3 % short
         self.assertEqual(rc, 1, out)
-        self.assertIn("OFF BY MORE THAN 5 %", out)
+        self.assertIn("OFF BY MORE THAN 3 %", out)
 
     def test_a_program_not_the_one_linuxcnc_timed_fails(self):
         rc, out = self.check(3.442, self.reference(3.442, sha="0123456789abcdef"))

@@ -20,6 +20,11 @@ starts at an unknown position and times no move out of it, starts there too.
                    as the planner can: no path tolerance)
   g64-square-F<f>  the square under G64 without P
   arcs-s-F<f>      G2/G3 arcs of 10 and 20 mm radius meeting tangentially
+  arcs-kinked-<k>-F<f>  G3/G2 arcs of R10 and 60 degrees turning opposite
+                   ways, each joint a kink of k rad (0.01: LinuxCNC blends
+                   them by arcs; 0.45: by parabolic blends)
+  chain-F<f>       lines and arcs of 1 to 60 mm radius, tangent or meeting
+                   at kinks of up to 1.5 rad (a fixed pseudo-random chain)
   helix-ramp-F<f>  arcs running into a Z ramp and out of it, and a helix
   dxf2gcode-plate-F<f>   a plate in dxf2gcode's LinuxCNC layout (G64
                    without P, the feed on a line of its own, padded words)
@@ -139,6 +144,54 @@ def arcs_s(feed):
            "G3 X30 Y60 I0 J20", "G2 X50 Y60 I10 J0", "G3 X70 Y60 I10 J0",
            "G1 X0 Y0"]
     write("arcs-s-F%d" % feed, out, "G2/G3 arcs meeting tangentially, F%d" % feed)
+
+
+def arcs_kinked(kink, feed):
+    x = y = h = 0.0
+    out = ["G1 X0 Y0 Z-1 F300", "F%d" % feed]
+    for i in range(20):
+        s = 1 if i % 2 == 0 else -1  # G3, then G2
+        cx, cy = x - s * 10 * math.sin(h), y + s * 10 * math.cos(h)
+        h += s * math.radians(60)
+        ex, ey = cx + s * 10 * math.sin(h), cy - s * 10 * math.cos(h)
+        out.append("%s X%s Y%s I%s J%s" % ("G3" if s > 0 else "G2", fmt(ex), fmt(ey), fmt(cx - x), fmt(cy - y)))
+        x, y = ex, ey
+        h += s * kink
+    out.append("G0 Z5")
+    write("arcs-kinked-%s-F%d" % (fmt(kink), feed), out,
+          "R10 arcs turning opposite ways with kinks of %s rad, F%d" % (fmt(kink), feed))
+
+
+def chain(feed):
+    # a linear congruential generator: the same chain on every Python
+    state = [12345]
+
+    def rnd():
+        state[0] = (1103515245 * state[0] + 12345) % 2**31
+        return state[0] / 2**31
+
+    x = y = h = 0.0
+    out = ["G1 X0 Y0 Z-1 F300", "F%d" % feed]
+    for _ in range(25):
+        if rnd() < 0.3:
+            length = 0.5 + 14.5 * rnd()
+            x, y = x + length * math.cos(h), y + length * math.sin(h)
+            out.append("G1 X%s Y%s" % (fmt(x), fmt(y)))
+        else:
+            r = 1 + 4 * rnd() if rnd() < 0.5 else 5 + 55 * rnd()
+            sweep = 0.1 + 1.7 * rnd()
+            s = 1 if rnd() < 0.5 else -1
+            cx, cy = x - s * r * math.sin(h), y + s * r * math.cos(h)
+            h += s * sweep
+            ex, ey = cx + s * r * math.sin(h), cy - s * r * math.cos(h)
+            out.append("%s X%s Y%s I%s J%s" % ("G3" if s > 0 else "G2", fmt(ex), fmt(ey), fmt(cx - x), fmt(cy - y)))
+            x, y = ex, ey
+        u = rnd()
+        if u >= 0.3:
+            span = (0.002, 0.05, 0.6, 1.5)[int(4 * rnd()) % 4]
+            h += span * (2 * rnd() - 1)
+    out.append("G0 Z5")
+    write("chain-F%d" % feed, out, "lines and arcs, tangent or at kinks, F%d" % feed)
 
 
 def helix_ramp(feed):
@@ -267,6 +320,9 @@ if __name__ == "__main__":
     g64_chords(0.5, 6000)
     g64_square(6000)
     arcs_s(6000)
+    arcs_kinked(0.01, 6000)
+    arcs_kinked(0.45, 6000)
+    chain(9000)
     helix_ramp(3000)
     dxf2gcode_plate(3000)
     dxf2gcode_spline(4000)
