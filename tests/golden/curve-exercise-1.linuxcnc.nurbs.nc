@@ -4,7 +4,7 @@
 (T1: seed-ex-1)
 (T1 plunge feed 200 mm/min)
 (estimated cycle time 2 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 0.24 s; the exact path's bound on this machine 0.21 s [x1.097; rapids, plunges and pauses not counted])
+(cutting along the curves 0.25 s; the exact path's bound on this machine 0.21 s [x1.138; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 G54

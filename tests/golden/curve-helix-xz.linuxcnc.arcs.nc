@@ -4,7 +4,7 @@
 (T3: groove-xz, arch-yz)
 (T3 plunge feed 200 mm/min)
 (estimated cycle time 11 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 6.37 s; the exact path's bound on this machine 6.30 s [x1.012; rapids, plunges and pauses not counted])
+(cutting along the curves 6.42 s; the exact path's bound on this machine 6.30 s [x1.020; rapids, plunges and pauses not counted])
 (order shortest: 0 nested contours cut before what encloses them; rapids 30 mm in XY instead of 38.3 mm as written [8.3 mm saved])
 G21 G90 G17
 G40 G49 G80 G94

@@ -4,7 +4,7 @@
 (T1: circle-d80)
 (T1 plunge feed 300 mm/min)
 (estimated cycle time 17 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 15.11 s; the exact path's bound on this machine 15.07 s [x1.002; rapids, plunges and pauses not counted])
+(cutting along the curves 15.12 s; the exact path's bound on this machine 15.07 s [x1.003; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 G54

@@ -4,7 +4,7 @@
 (T2: teardrop)
 (T2 plunge feed 300 mm/min)
 (estimated cycle time 9 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 7.08 s; the exact path's bound on this machine 7.05 s [x1.003; rapids, plunges and pauses not counted])
+(cutting along the curves 7.09 s; the exact path's bound on this machine 7.05 s [x1.004; rapids, plunges and pauses not counted])
 G21 G90 G17
 G40 G49 G80 G94
 G54

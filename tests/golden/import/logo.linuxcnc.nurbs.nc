@@ -4,7 +4,7 @@
 (T1: dot, b, b.2, z, wave, eye, frame)
 (T1 plunge feed 300 mm/min)
 (estimated cycle time 29 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
-(cutting along the curves 17.67 s; the exact path's bound on this machine 17.40 s [x1.015; rapids, plunges and pauses not counted])
+(cutting along the curves 17.72 s; the exact path's bound on this machine 17.40 s [x1.018; rapids, plunges and pauses not counted])
 (order shortest: 6 nested contours cut before what encloses them; rapids 53.1 mm in XY instead of 118.5 mm as written [65.4 mm saved])
 G21 G90 G17
 G40 G49 G80 G94
