@@ -116,7 +116,7 @@ constexpr double kMaxRadiusPerChord = 1000;
 // tangent where a line (its chord) would turn by up to 1 / (2 x this).
 constexpr double kMaxTangentRadiusPerChord = 100000;
 // A chain starts again where a free arc would be this many times longer.
-constexpr double kChainRestart = 2;
+constexpr double kChainRestart = 4;
 // Curve samples used to choose the centre (the proof does not rely on them).
 constexpr int kFitSamples = 16;
 // The band: a line's inner end is shifted off the curve by this share of
