@@ -1,5 +1,5 @@
 (bezcam 0.1.0: curve-semicircle.json, machine grbl, output nurbs)
-(tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004892 mm, rounding included)
+(tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004941 mm, rounding included)
 (T1: semicircle-r3)
 (T1 plunge feed 200 mm/min)
 (estimated cycle time 6 s on the motion model of machine grbl [acceleration, corners, tool changes])
@@ -16,10 +16,10 @@ G0 Z5.
 X-3. Y0.
 G1 Z-0.5 F200.
 G2 X-2.372 Y1.925 I3.023 J0.079 F800.
-G2 X-0.267 Y2.989 I2.286 J-1.909
-G2 X2.131 Y2.187 I0.295 J-3.104
-G2 X2.995 Y0.19 I-2.031 J-2.064
-G1 X3. Y0.
+G2 X-1.73 Y2.503 I1.9 J-1.465
+G2 X1.926 Y2.364 I1.727 J-2.723
+G2 X2.579 Y1.628 I-1.455 J-1.949
+G2 X3. Y0. I-2.74 J-1.577
 G0 Z5.
 M5
 M30

@@ -4,7 +4,7 @@
 (T1: HOLES:37, HOLES:3A, NOTES:3C/0, NOTES:3C/1, NOTES:3C/2, NOTES:3C/3, NOTES:3C/4, HOLES:3B, HOLES:38, HOLES:39, OUTLINE:2F+7)
 (T1 plunge feed 300 mm/min)
 (estimated cycle time 57 s on the motion model of machine generic [acceleration, corners, tool changes])
-(cutting along the curves 27.82 s; the exact path's bound on this machine 27.02 s [x1.029; rapids, plunges and pauses not counted])
+(cutting along the curves 27.83 s; the exact path's bound on this machine 27.02 s [x1.030; rapids, plunges and pauses not counted])
 (order shortest: 16 nested contours cut before what encloses them; rapids 150.4 mm in XY instead of 235.7 mm as written [85.3 mm saved])
 G21 G90 G17
 G40 G49 G80 G94
@@ -55,7 +55,9 @@ G02 X31.991 Y44.841 I0. J-1.495
 G02 X32.083 Y44.772 I-0.145 J-0.289
 G02 X32.302 Y44.412 I-0.77 J-0.715
 G02 X32.341 Y44.104 I-0.674 J-0.242
-G02 X32.083 Y43.433 I-0.859 J-0.055
+G02 X32.286 Y43.74 I-3.179 J0.294
+G02 X32.111 Y43.459 I-0.474 J0.1
+G03 X32.083 Y43.433 I0.143 J-0.182
 G00 Z5.
 (entity NOTES:3C/1: text, degree 1, 2D)
 X33.074 Y43.107
