@@ -44,8 +44,10 @@ struct Case {
 
 std::vector<Case> cases() {
   const Pts square100{{0, 0}, {100, 0}, {100, 100}, {0, 100}};
-  // A five-pointed star, tips at 30 mm, inner corners at 11.46 mm: each
-  // tip is 36 degrees (2 atan(ri sin(pi/5) / (ro - ri cos(pi/5)))).
+  // A five-pointed star, tips at 30 mm, each tip 30 degrees: the inner
+  // corners at 30 sin 15 / sin 51 = 9.991 mm (star_with_tips gives the
+  // radius from the tip angle exactly).
+  const Pts star30 = star_with_tips(5, 30, 30);
   return {
       {"100x100, 2 islands, offset",
        R"("tool_diameter":6,"stepover":2.4)",
@@ -59,7 +61,7 @@ std::vector<Case> cases() {
        R"("tool_diameter":6.35,"stepover":5)",
        {polygon({{0, 0}, {16, 0}, {16, 16}, {0, 16}})},
        5},
-      {"star, 36 deg tips, 4 mm tool", R"("tool_diameter":4,"stepover":1.6)", {polygon(star(5, 30, 11.46))}, 1.6},
+      {"star, 30 deg tips, 4 mm tool", R"("tool_diameter":4,"stepover":1.6)", {polygon(star30)}, 1.6},
       {"L 60 x 60, arms 20", R"("tool_diameter":6,"stepover":2.4)", {polygon(l_shape())}, 2.4},
       {"rooms joined by a 4 mm neck", R"("tool_diameter":6,"stepover":2.4)", {polygon(rooms_with_neck())}, 2.4},
       {"100x100, 2 islands, adaptive",
@@ -72,11 +74,7 @@ std::vector<Case> cases() {
        {polygon({{0, 0}, {16, 0}, {16, 16}, {0, 16}})},
        0.15 * 6.35,
        true},
-      {"star, 36 deg tips, 4 mm, adaptive",
-       R"("tool_diameter":4,"pattern":"adaptive")",
-       {polygon(star(5, 30, 11.46))},
-       0.6,
-       true},
+      {"star, 30 deg tips, 4 mm, adaptive", R"("tool_diameter":4,"pattern":"adaptive")", {polygon(star30)}, 0.6, true},
       {"L 60 x 60, arms 20, adaptive", R"("tool_diameter":6,"pattern":"adaptive")", {polygon(l_shape())}, 0.9, true},
       {"rooms, 4 mm neck, adaptive",
        R"("tool_diameter":6,"pattern":"adaptive")",

@@ -62,44 +62,45 @@ Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::ve
   // One front at a time: the 8-connected piece of the band nearest the tool.
   std::vector<int>& label = seen;
   for (size_t k : b.cells) label[k] = -2;
-  int best = -1, pieces = 0;
-  double best_d = 1e300;
+  int pieces = 0;
+  std::vector<size_t> w;
   for (size_t s0 : b.cells) {
     if (label[s0] != -2) continue;
-    std::vector<size_t> w{s0};
+    w.assign(1, s0);
     label[s0] = pieces;
     while (!w.empty()) {
       const size_t k = w.back();
       w.pop_back();
-      const Vec3 c = g_.sample(k);
-      const double d = have_cur_ ? (c.x - cur_.x) * (c.x - cur_.x) + (c.y - cur_.y) * (c.y - cur_.y) : 0;
-      if (d < best_d) best_d = d, best = pieces;
-      const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
-      for (long dj = -1; dj <= 1; ++dj)
-        for (long di = -1; di <= 1; ++di) {
-          if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
-          const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
-          if (label[n] == -2) label[n] = pieces, w.push_back(n);
-        }
+      around(k, [&](size_t n) {
+        if (label[n] == -2) label[n] = pieces, w.push_back(n);
+      });
     }
     ++pieces;
   }
-  std::vector<size_t> chosen;
-  for (size_t k : b.cells)
-    if (label[k] == best) chosen.push_back(k);
-  for (size_t k : b.cells) label[k] = -1;
-  b.cells = std::move(chosen);
+  if (pieces > 1) {
+    // The piece of the sample nearest the tool (the first piece of those
+    // as near).
+    std::vector<double> near_d(static_cast<size_t>(pieces), 1e300);
+    for (size_t k : b.cells) {
+      const Vec3 c = g_.sample(k);
+      const double d = have_cur_ ? (c.x - cur_.x) * (c.x - cur_.x) + (c.y - cur_.y) * (c.y - cur_.y) : 0;
+      double& m = near_d[static_cast<size_t>(label[k])];
+      m = std::min(m, d);
+    }
+    const int best = static_cast<int>(std::min_element(near_d.begin(), near_d.end()) - near_d.begin());
+    std::vector<size_t> chosen;
+    for (size_t k : b.cells)
+      if (label[k] == best) chosen.push_back(k);
+    for (size_t k : b.cells) label[k] = -1;
+    b.cells = std::move(chosen);
+  } else {
+    for (size_t k : b.cells) label[k] = -1;
+  }
   for (size_t k : b.cells) active_[k] = 1;
   for (size_t k : b.frontier) {
-    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
-    for (long dj = -1; dj <= 1 && !active_[k]; ++dj)
-      for (long di = -1; di <= 1; ++di) {
-        if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
-        if (active_[static_cast<size_t>((j + dj) * g_.nx + i + di)] == 1) {
-          active_[k] = 2;
-          break;
-        }
-      }
+    bool next_to = false;
+    around(k, [&](size_t n) { next_to = next_to || active_[n] == 1; });
+    if (next_to) active_[k] = 2;
   }
   // The squares the ring is looked for from: within reach of the front of
   // every point smoothing can take onto it (four passes over steps of at
@@ -113,6 +114,18 @@ Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::ve
       from, reach, [](size_t) { return true; }, b.seeds);
   for (size_t k : b.seeds) seen[k] = -1;
   sort_samples(b.seeds, g_.size());
+  // Of those, the squares with settled corners and others: a ring crosses
+  // only these and the squares about the samples it grows over.
+  auto inside = [&](long i, long j) {
+    const size_t k = static_cast<size_t>(j * g_.nx + i);
+    return settled[k] && in_piece(k);
+  };
+  for (size_t sq : b.seeds) {
+    const long i = static_cast<long>(sq) % g_.nx, j = static_cast<long>(sq) / g_.nx;
+    if (i + 1 >= g_.nx || j + 1 >= g_.ny) continue;
+    const int n = inside(i, j) + inside(i + 1, j) + inside(i, j + 1) + inside(i + 1, j + 1);
+    if (n > 0 && n < 4) b.edge.push_back(sq);
+  }
   const int cap = static_cast<int>(std::ceil(2 * (target_ / 180) * kCircle)) + 1;
   b.count.resize(b.cells.size());
   for (size_t m = 0; m < b.cells.size(); ++m) b.count[m] = std::min(circle_count(b.cells[m]), cap + 1);
@@ -130,18 +143,14 @@ void Adaptive::spread(const std::vector<size_t>& from, long steps, const Ok& ok,
   for (size_t k : from) seen[k] = 0;
   for (size_t head = 0; head < q.size(); ++head) {
     const size_t k = q[head];
-    const long d = seen[k];
+    const int d = seen[k];
     if (d >= steps) continue;
-    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
-    for (long dj = -1; dj <= 1; ++dj)
-      for (long di = -1; di <= 1; ++di) {
-        if (i + di < 0 || j + dj < 0 || i + di >= g_.nx || j + dj >= g_.ny) continue;
-        const size_t n = static_cast<size_t>((j + dj) * g_.nx + i + di);
-        if (seen[n] >= 0 || !ok(n)) continue;
-        seen[n] = static_cast<int>(d + 1);
-        q.push_back(n);
-        out.push_back(n);
-      }
+    around(k, [&](size_t n) {
+      if (seen[n] >= 0 || !ok(n)) return;
+      seen[n] = d + 1;
+      q.push_back(n);
+      out.push_back(n);
+    });
   }
 }
 
@@ -150,10 +159,16 @@ void Adaptive::spread(const std::vector<size_t>& from, long steps, const Ok& ok,
 void Adaptive::cut(const Vec3& a, const Vec3& b) {
   const PocketGrid::Capsule c(a, b, r_);
   const auto [j0, j1] = g_.rows(c);
+  // The columns of the capsule's box, a cell wider each side: a row with no
+  // material there has none in the capsule's span (most rows behind the
+  // tool).
+  const long b0 = std::max(0L, static_cast<long>(std::floor((std::min(a.x, b.x) - r_ - g_.x0) / g_.cell)) - 2),
+             b1 = std::min(g_.nx - 1, static_cast<long>(std::ceil((std::max(a.x, b.x) + r_ - g_.x0) / g_.cell)) + 1);
   for (long j = j0; j <= j1; ++j) {
+    uint8_t* const row = mat_.data() + j * g_.nx;
+    if (b0 > b1 || !std::memchr(row + b0, 1, static_cast<size_t>(b1 - b0 + 1))) continue;
     const auto [i0, i1] = g_.span(c, j);
     if (i0 > i1) continue;
-    uint8_t* const row = mat_.data() + j * g_.nx;
     for (long i = i0; i <= i1; ++i) {
       // The next sample still in material on the row (most are cleared).
       const void* at = std::memchr(row + i, 1, static_cast<size_t>(i1 - i + 1));
@@ -180,9 +195,7 @@ void Adaptive::cut(const Vec3& a, const Vec3& b) {
 // The next ring round the settled samples of piece `cur`: the edge of the
 // centres (inside the walls' limit) whose circle holds at most `lambda`
 // of material, grown from the settled ones; `grown` gets the new samples.
-std::vector<Adaptive::Chain> Adaptive::ring(const Band& b, const std::vector<uint8_t>& settled,
-                                            const std::vector<int>& comp, int cur, double lambda,
-                                            std::vector<size_t>& grown) const {
+std::vector<Adaptive::Chain> Adaptive::ring(const Band& b, double lambda, std::vector<size_t>& grown) const {
   grown.clear();
   if (b.frontier.empty()) return {};
   std::vector<float>& f = f_;
@@ -210,15 +223,30 @@ std::vector<Adaptive::Chain> Adaptive::ring(const Band& b, const std::vector<uin
       q.push_back(n);
     }
   }
-  auto val = [&](size_t k) -> float {
-    if (has[k]) return f[k] < 0 && has[k] != 2 ? 0.01f : f[k];
-    if (settled[k] && comp[k] == cur) return std::max(-1.0f, fwall_[k] / static_cast<float>(r_));
-    return 1.0f;
+  // The contoured function: f on the band, but 0.01 where not reached;
+  // elsewhere level_ holds it.
+  for (size_t k : b.cells) level_[k] = f[k] < 0 && has[k] != 2 ? 0.01f : f[k];
+  auto val = [&](size_t k) { return level_[k]; };
+  // The seed squares the contour may cross (the others' corners are all
+  // in or all out): those on the settled edge and those about grown samples.
+  std::vector<uint8_t>& mark = mark_;
+  mark.resize(g_.size(), 0);
+  auto about = [&](size_t k, uint8_t v) {
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    for (long dj = -1; dj <= 0; ++dj)
+      for (long di = -1; di <= 0; ++di)
+        if (i + di >= 0 && j + dj >= 0) mark[static_cast<size_t>((j + dj) * g_.nx + i + di)] = v;
   };
+  for (size_t sq : b.edge) mark[sq] = 1;
+  for (size_t k : grown) about(k, 1);
+  std::vector<size_t> live;
+  for (size_t sq : b.seeds)
+    if (mark[sq]) live.push_back(sq);
+  for (size_t sq : b.edge) mark[sq] = 0;
+  for (size_t k : grown) about(k, 0);
   std::vector<std::vector<Vec3>> open;
-  done_.resize(g_.size(), 0);
-  auto closed = contours(g_, val, b.seeds, done_, open);
-  for (size_t k : b.cells) has[k] = 0;
+  auto closed = contours(g_, val, live, contour_, open);
+  for (size_t k : b.cells) has[k] = 0, level_[k] = 1.0f;
   std::vector<Chain> out;
   for (auto& l : closed) out.push_back({std::move(l), true});
   for (auto& l : open) out.push_back({std::move(l), false});
@@ -349,6 +377,7 @@ std::vector<PocketPass> Adaptive::run() {
   std::vector<uint8_t> settled(g_.size(), 0);
   // Rest machining: the rings grow from what the tool before cleared.
   for (size_t k = 0; k < g_.size(); ++k) settled[k] = comp[k] >= 0 && before_[k] && clear(g_.sample(k));
+  level_.resize(g_.size());
   for (int cur = 0; cur < pieces; ++cur) {
     bool any = false;
     for (size_t k = 0; k < g_.size() && !any; ++k) any = comp[k] == cur && settled[k];
@@ -357,6 +386,7 @@ std::vector<PocketPass> Adaptive::run() {
       for (size_t k = 0; k < g_.size(); ++k)
         if (comp[k] == cur && dxy(g_.sample(k), *pending_->helix) <= pending_->helix_r) settled[k] = 1;
     }
+    for (size_t k = 0; k < g_.size(); ++k) level_[k] = settled[k] && comp[k] == cur ? settled_level(k) : 1.0f;
     // The settled samples that may lie on the edge (the edge only moves
     // out, onto samples just grown).
     std::vector<size_t> near;
@@ -368,12 +398,12 @@ std::vector<PocketPass> Adaptive::run() {
       std::vector<Chain> loops;
       const Band b = band(settled, comp, cur, near);
       for (int attempt = 0; attempt < 6; ++attempt, lambda *= 0.8) {
-        loops = ring(b, settled, comp, cur, lambda, grown);
+        loops = ring(b, lambda, grown);
         if (ring_worst(loops, target_) <= target_) break;
       }
       bool cut = false;
       for (auto& l : loops) cut = take(std::move(l.pts), l.closed) || cut;
-      for (size_t k : grown) settled[k] = 1;
+      for (size_t k : grown) settled[k] = 1, level_[k] = settled_level(k);
       near = b.frontier;
       near.insert(near.end(), grown.begin(), grown.end());
       sort_samples(near, g_.size());

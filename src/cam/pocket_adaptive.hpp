@@ -82,7 +82,7 @@ class Adaptive {
  private:
   // The grid square holding (x, y); false outside the grid.
   bool square_of(double x, double y, size_t& k) const {
-    const double u = (x - g_.x0) / g_.cell, v = (y - g_.y0) / g_.cell;
+    const double u = (x - g_.x0) * inv_cell_, v = (y - g_.y0) * inv_cell_;
     if (!(u >= 0 && v >= 0 && u < static_cast<double>(g_.nx) && v < static_cast<double>(g_.ny))) return false;
     k = static_cast<size_t>(static_cast<long>(v) * g_.nx + static_cast<long>(u));  // floor: u, v >= 0
     return true;
@@ -183,17 +183,31 @@ class Adaptive {
     std::vector<size_t> frontier, cells;
     std::vector<int> count;
     std::vector<size_t> seeds;  // the squares the ring is looked for from
+    std::vector<size_t> edge;   // those the settled samples' edge crosses
   };
   Band band(const std::vector<uint8_t>& settled, const std::vector<int>& comp, int cur,
             const std::vector<size_t>& near) const;
+  // Calls f with each of the (up to) 8 neighbours of sample k.
+  template <class F>
+  void around(size_t k, const F& f) const {
+    const long i = static_cast<long>(k) % g_.nx, j = static_cast<long>(k) / g_.nx;
+    const size_t nx = static_cast<size_t>(g_.nx);
+    if (i > 0 && j > 0 && i + 1 < g_.nx && j + 1 < g_.ny) {
+      f(k - nx - 1), f(k - nx), f(k - nx + 1), f(k - 1), f(k + 1), f(k + nx - 1), f(k + nx), f(k + nx + 1);
+      return;
+    }
+    for (long dj = -1; dj <= 1; ++dj)
+      for (long di = -1; di <= 1; ++di)
+        if ((di || dj) && i + di >= 0 && j + dj >= 0 && i + di < g_.nx && j + dj < g_.ny)
+          f(static_cast<size_t>((j + dj) * g_.nx + i + di));
+  }
   template <class Ok>
   void spread(const std::vector<size_t>& from, long steps, const Ok& ok, std::vector<size_t>& out) const;
   struct Chain {
     std::vector<Vec3> pts;
     bool closed = true;
   };
-  std::vector<Chain> ring(const Band& b, const std::vector<uint8_t>& settled, const std::vector<int>& comp, int cur,
-                          double lambda, std::vector<size_t>& grown) const;
+  std::vector<Chain> ring(const Band& b, double lambda, std::vector<size_t>& grown) const;
   void smooth(std::vector<Vec3>& loop, bool closed) const;
   bool seed(const std::vector<int>& comp, int cur, const std::vector<double>& depth);
   bool take(std::vector<Vec3> loop, bool closed = true);
@@ -216,6 +230,7 @@ class Adaptive {
   const Area& centres_;
   PocketGrid g_;
   double r_, load_, d_wall_, delta_, alpha_ = 0, target_ = 0;
+  double inv_cell_ = 1 / g_.cell;  // square_of multiplies by it
   WallField walls_;
   double cs_[kAdaptiveCircle], sn_[kAdaptiveCircle];
   double hc_[180], hs_[180];  // the front half, a degree apart
@@ -233,7 +248,12 @@ class Adaptive {
   std::vector<Vec3> turn_;             // the last closed turn cut, ending where the tool is
   mutable std::vector<int> seen_;      // scratch, all -1 between uses
   mutable std::vector<float> f_;
-  mutable std::vector<uint8_t> done_;    // scratch, all 0 between uses
+  mutable ContourScratch contour_;
+  // The function the rings are contours of, off the band: negative on the
+  // settled samples of the piece worked on (the walls' limit there), else 1.
+  mutable std::vector<float> level_;
+  float settled_level(size_t k) const { return std::max(-1.0f, fwall_[k] / static_cast<float>(r_)); }
+  mutable std::vector<uint8_t> mark_;    // scratch, all 0 between uses
   mutable std::vector<uint8_t> has_;     // scratch, all 0 between uses
   mutable std::vector<uint8_t> active_;  // the front this round works on
   std::vector<uint8_t> stuck_;           // band samples of fronts that no ring reached

@@ -4,7 +4,7 @@
 // for the adaptive passes (pocket_adaptive.hpp).
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -52,30 +52,58 @@ class WallField {
   std::vector<std::vector<size_t>> bucket_;
 };
 
+// Scratch for contours(): whether each square was looked at, and each
+// grid edge's slot in `links` (-1: none); all clear between uses.
+struct ContourScratch {
+  // The crossing on an edge: the edge its segment leads to (-1 once taken
+  // or none) and the point on it, and the edge whose segment leads to it.
+  struct Link {
+    long next = -1, prev = -1;
+    Vec3 at;
+  };
+  std::vector<uint8_t> done;
+  std::vector<int32_t> slot;
+  std::vector<Link> links;
+  std::vector<long> edges;      // the edges given a slot
+  std::vector<size_t> squares;  // the squares looked at
+};
+
 // The loops round the samples where f < 0 (marching squares), each with
 // that set on its left, that pass through one of the squares `seeds` (by
 // their lower left sample, in order): each is followed square by square
 // from the first seed it crosses, whatever its length, and none other is
-// looked at. A chain the grid's edge cuts goes to `open`. `done` is
-// scratch, all 0 between uses.
+// looked at. A chain the grid's edge cuts goes to `open`.
 template <class F>
 inline std::vector<std::vector<Vec3>> contours(const PocketGrid& g, const F& f, const std::vector<size_t>& seeds,
-                                               std::vector<uint8_t>& done, std::vector<std::vector<Vec3>>& open) {
+                                               ContourScratch& sc, std::vector<std::vector<Vec3>>& open) {
   auto val = [&](long i, long j) { return static_cast<double>(f(static_cast<size_t>(j * g.nx + i))); };
   auto pos = [&](long i, long j) {
     return Vec3{g.x0 + (static_cast<double>(i) + 0.5) * g.cell, g.y0 + (static_cast<double>(j) + 0.5) * g.cell, 0};
   };
+  sc.done.resize(g.size(), 0);
+  sc.slot.resize(2 * g.size(), -1);
   // Edge ids: 2 (j nx + i) for the edge from (i, j) to (i + 1, j), + 1 for (i, j) to (i, j + 1).
-  std::unordered_map<long, std::pair<long, Vec3>> next;  // from edge: to edge, and the point on "from"
-  std::unordered_map<long, long> prev;                   // to edge: from edge
-  std::vector<size_t> touched;
+  auto link = [&](long e) -> ContourScratch::Link& {
+    int32_t& s = sc.slot[static_cast<size_t>(e)];
+    if (s < 0) {
+      s = static_cast<int32_t>(sc.links.size());
+      sc.links.emplace_back();
+      sc.edges.push_back(e);
+    }
+    return sc.links[static_cast<size_t>(s)];
+  };
+  // The link of edge e, or null when it has none.
+  auto find = [&](long e) -> ContourScratch::Link* {
+    const int32_t s = sc.slot[static_cast<size_t>(e)];
+    return s < 0 ? nullptr : &sc.links[static_cast<size_t>(s)];
+  };
   // The segments of square (i, j), once; their "from" edges go to `from`.
   auto square = [&](long i, long j, std::vector<long>* from) {
     if (i < 0 || j < 0 || i + 1 >= g.nx || j + 1 >= g.ny) return;
     const size_t sq = static_cast<size_t>(j * g.nx + i);
-    if (done[sq]) return;
-    done[sq] = 1;
-    touched.push_back(sq);
+    if (sc.done[sq]) return;
+    sc.done[sq] = 1;
+    sc.squares.push_back(sq);
     const long ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
     double v[4];
     bool in[4];
@@ -100,8 +128,9 @@ inline std::vector<std::vector<Vec3>> contours(const PocketGrid& g, const F& f, 
       const double side = (q.x - p.x) * (c.y - p.y) - (q.y - p.y) * (c.x - p.x);
       long e0 = eid[ea], e1 = eid[eb];
       if ((side > 0) != in[corner]) std::swap(e0, e1), std::swap(p, q);
-      next[e0] = {e1, p};
-      prev[e1] = e0;
+      ContourScratch::Link& l0 = link(e0);
+      l0.next = e1, l0.at = p;
+      link(e1).prev = e0;
       if (from) from->push_back(e0);
     };
     if (n_in == 2 && in[0] == in[2]) {  // a saddle
@@ -124,15 +153,17 @@ inline std::vector<std::vector<Vec3>> contours(const PocketGrid& g, const F& f, 
     else
       square(i, j - 1, nullptr);
   };
+  // The edge the segment from e leads to, its squares looked at first; -1
+  // when none.
   auto find_next = [&](long e) {
-    auto it = next.find(e);
-    if (it == next.end()) sides(e), it = next.find(e);
-    return it;
+    const ContourScratch::Link* l = find(e);
+    if (!l || l->next < 0) sides(e), l = find(e);
+    return l ? l->next : -1;
   };
   auto find_prev = [&](long e) {
-    auto it = prev.find(e);
-    if (it == prev.end()) sides(e), it = prev.find(e);
-    return it;
+    const ContourScratch::Link* l = find(e);
+    if (!l || l->prev < 0) sides(e), l = find(e);
+    return l ? l->prev : -1;
   };
   std::vector<std::vector<Vec3>> loops;
   std::vector<long> from;
@@ -140,29 +171,28 @@ inline std::vector<std::vector<Vec3>> contours(const PocketGrid& g, const F& f, 
     from.clear();
     square(static_cast<long>(sq) % g.nx, static_cast<long>(sq) / g.nx, &from);
     for (long start : from) {
-      if (!next.count(start)) continue;  // taken by a loop already followed
+      if (find(start)->next < 0) continue;  // taken by a loop already followed
       std::vector<Vec3> loop;
       long at = start;
       bool closed = false;
       while (!closed) {
-        auto it = find_next(at);
-        if (it == next.end()) break;
-        loop.push_back(it->second.second);
-        const long to = it->second.first;
-        next.erase(it);
-        prev.erase(to);
+        const long to = find_next(at);
+        if (to < 0) break;
+        ContourScratch::Link& l = *find(at);
+        loop.push_back(l.at);
+        l.next = -1;
+        find(to)->prev = -1;
         at = to;
         closed = at == start;
       }
       if (!closed) {
         // The grid's edge cuts the chain: its part before `start`, back to that edge.
         std::vector<Vec3> before;
-        for (auto it = find_prev(start); it != prev.end(); it = find_prev(start)) {
-          const long e = it->second;
-          prev.erase(it);
-          const auto jt = next.find(e);
-          before.push_back(jt->second.second);
-          next.erase(jt);
+        for (long e = find_prev(start); e >= 0; e = find_prev(start)) {
+          find(start)->prev = -1;
+          ContourScratch::Link& l = *find(e);
+          before.push_back(l.at);
+          l.next = -1;
           start = e;
         }
         loop.insert(loop.begin(), before.rbegin(), before.rend());
@@ -173,7 +203,9 @@ inline std::vector<std::vector<Vec3>> contours(const PocketGrid& g, const F& f, 
         open.push_back(std::move(loop));
     }
   }
-  for (size_t sq : touched) done[sq] = 0;
+  for (size_t sq : sc.squares) sc.done[sq] = 0;
+  for (long e : sc.edges) sc.slot[static_cast<size_t>(e)] = -1;
+  sc.squares.clear(), sc.edges.clear(), sc.links.clear();
   return loops;
 }
 

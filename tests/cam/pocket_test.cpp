@@ -21,20 +21,6 @@ using namespace test::shapes;
 
 Pts rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
-// A star of n points whose tips have the interior angle `tip` (degrees).
-Pts star_with_tips(int n, double ro, double tip) {
-  auto pts = [&](double ri) { return star(n, ro, ri); };
-  auto angle = [&](double ri) {
-    const Pts p = pts(ri);
-    const double ax = p[1].first - p[0].first, ay = p[1].second - p[0].second;
-    const double bx = p.back().first - p[0].first, by = p.back().second - p[0].second;
-    return std::acos((ax * bx + ay * by) / std::hypot(ax, ay) / std::hypot(bx, by)) * 180 / std::numbers::pi;
-  };
-  double lo = 0.1 * ro, hi = 0.99 * ro;
-  for (int i = 0; i < 80; ++i) (angle((lo + hi) / 2) < tip ? lo : hi) = (lo + hi) / 2;
-  return pts(lo);
-}
-
 Program build(const std::string& keys, const std::vector<std::string>& entities, const std::string& top = "") {
   std::string e;
   for (const auto& x : entities) e += (e.empty() ? "" : ",") + x;
@@ -122,6 +108,24 @@ TEST(Pocket, RectangleWithTwoBossesIsClearedAroundThem) {
     EXPECT_LE(nearest(path, 30, 20), 3);
     EXPECT_EQ(cert(p).unreachable.size(), 4u);  // the outline's four corners
   }
+}
+
+TEST(Pocket, StarWithTipsHasTheTipAngleAsked) {
+  for (double tip : {30.0, 36.0, 50.0}) {
+    const Pts p = star_with_tips(5, 30, tip);
+    // At each tip, the angle between the edges to the inner corners beside it.
+    for (size_t k = 0; k < p.size(); k += 2) {
+      const auto& [x, y] = p[k];
+      const auto& [ax, ay] = p[(k + 1) % p.size()];
+      const auto& [bx, by] = p[(k + p.size() - 1) % p.size()];
+      const double ux = ax - x, uy = ay - y, vx = bx - x, vy = by - y;
+      const double deg =
+          std::acos((ux * vx + uy * vy) / std::hypot(ux, uy) / std::hypot(vx, vy)) * 180 / std::numbers::pi;
+      EXPECT_NEAR(deg, tip, 1e-9) << tip << " at tip " << k / 2;
+    }
+  }
+  // The regular pentagram's tips are 36 degrees: inner corners at 11.46.
+  EXPECT_NEAR(std::hypot(star_with_tips(5, 30, 36)[1].first, star_with_tips(5, 30, 36)[1].second), 11.4590, 1e-4);
 }
 
 TEST(Pocket, StarWithThirtyDegreeTipsIsClearedWhereTheToolFits) {

@@ -58,6 +58,16 @@ inline Pts star(int n, double ro, double ri) {
   return p;
 }
 
+/// A star of n points, tips at radius ro, whose tips have the interior
+/// angle `tip` (degrees). A tip's half angle h and the half angle pi / n
+/// between a tip and the next inner corner make the triangle (centre,
+/// tip, inner corner) have angles pi / n, h and pi - pi / n - h, so by
+/// the sine rule the inner corners lie at ro sin h / sin(pi / n + h).
+inline Pts star_with_tips(int n, double ro, double tip) {
+  const double h = tip / 2 * std::numbers::pi / 180;
+  return star(n, ro, ro * std::sin(h) / std::sin(std::numbers::pi / n + h));
+}
+
 /// An L 60 x 60 with arms 20 wide.
 inline Pts l_shape() { return {{0, 0}, {60, 0}, {60, 20}, {20, 20}, {20, 60}, {0, 60}}; }
 
