@@ -57,34 +57,48 @@ double reachable(double v0, double L, double a, double j, double cap) {
 void Builder::speeds() {
   const size_t n = lean.size();
   const double j = lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0;
-  // junction has n + 1 entries: entering each segment, then the end.
-  std::vector<double> v(junction);
+  // junction has n + 1 entries: entering each segment, then the end (read
+  // here only: taken, not copied).
+  std::vector<double> v(std::move(junction));
   for (size_t i = 0; i < n; ++i) {
     v[i] = std::min(v[i], lean[i].vmax);
     if (i > 0) v[i] = std::min(v[i], lean[i - 1].vmax);
   }
   // Look-ahead: at each segment the controller must be able to stop
-  // within the segments it sees (counted in blocks).
+  // within the segments it sees (counted in blocks). One pass, every
+  // index it reads moving forward only: the sums of lengths and the counts
+  // of blocks before a segment are kept as they go, in the order a table
+  // of them would add them, not stored for every segment.
   const int window = std::max(1, model.lookahead_blocks);
-  std::vector<double> look(n + 1, kInf);
   {
     // Only where the window is short compared with a stop.
-    std::vector<double> prefix(n + 1, 0);
-    for (size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + lean[i].length;
-    std::vector<size_t> end_of(n);
-    // Window end: the segment after `window` distinct blocks.
+    // Distinct blocks and path length before a segment, at a cursor
+    // moving forward.
+    struct Before {
+      size_t at = 0;
+      int blocks = 0;
+      double length = 0;
+    };
+    const auto advance = [&](Before& c, size_t to) {
+      for (; c.at < to; ++c.at) {
+        if (c.at == 0 || lean[c.at].block != lean[c.at - 1].block) ++c.blocks;
+        c.length += lean[c.at].length;
+      }
+    };
+    // Window end of segment k: the segment after `window` distinct blocks
+    // (segments [k, e) are seen); asked for k = 0, 0, 1, 2 ... in order.
     size_t e = 0;
-    int last_block = -2;
-    std::vector<int> bcount(n + 1, 0);
-    for (size_t i = 0; i < n; ++i) {
-      bcount[i + 1] = bcount[i] + (lean[i].block != last_block ? 1 : 0);
-      last_block = lean[i].block;
-    }
-    for (size_t i = 0; i < n; ++i) {
-      if (e < i) e = i;
-      while (e < n && bcount[e + 1] - bcount[i] <= window) ++e;
-      end_of[i] = e;  // segments [i, e) are seen
-    }
+    Before at_k, after_e, at_i, at_stop;
+    const auto end_of = [&](size_t k) {
+      if (e < k) e = k;
+      advance(at_k, k);
+      while (e < n) {
+        advance(after_e, e + 1);
+        if (after_e.blocks - at_k.blocks > window) break;
+        ++e;
+      }
+      return e;
+    };
     // The least acceleration over each window, by a sliding minimum (both
     // ends only move forward).
     std::deque<size_t> mins;
@@ -92,7 +106,7 @@ void Builder::speeds() {
     for (size_t i = 0; i < n; ++i) {
       // Entering segment i, the controller is still executing segment
       // i - 1: it sees the window that began there.
-      const size_t stop = end_of[i > 0 ? i - 1 : 0];
+      const size_t stop = end_of(i > 0 ? i - 1 : 0);
       if (stop >= n) continue;  // sees the program's end: the normal passes cover it
       for (; pushed < stop; ++pushed) {
         while (!mins.empty() && lean[mins.back()].accel >= lean[pushed].accel) mins.pop_back();
@@ -102,17 +116,17 @@ void Builder::speeds() {
       const double a_min = mins.empty() ? lean[i].accel : lean[mins.front()].accel;
       // A window long enough to stop from the top speed does not limit.
       const double dist_needed = ramp_distance(0, lean[i].vmax, a_min, 0);
-      if (prefix[stop] - prefix[i] >= dist_needed * 1.0001) continue;
+      advance(at_i, i);
+      advance(at_stop, stop);
+      if (at_stop.length - at_i.length >= dist_needed * 1.0001) continue;
       double w = 0;
       for (size_t k = stop; k-- > i;) w = std::min(reachable(w, lean[k].length, lean[k].accel, 0, lean[k].vmax), v[k]);
-      look[i] = w;
-    }
-  }
-  for (size_t i = 0; i < n; ++i) {
-    if (look[i] < v[i]) {
-      v[i] = look[i];
-      lookahead_limited_.resize(n, false);
-      lookahead_limited_[i] = true;
+      // The window read v from i on only: taken at once.
+      if (w < v[i]) {
+        v[i] = w;
+        lookahead_limited_.resize(n, false);
+        lookahead_limited_[i] = true;
+      }
     }
   }
   // Backward then forward (speeds by the acceleration; the jerk's share
