@@ -56,7 +56,6 @@ double reachable(double v0, double L, double a, double j, double cap) {
 
 void Builder::speeds() {
   const size_t n = lean.size();
-  const double j = lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0;
   // junction has n + 1 entries: entering each segment, then the end (read
   // here only: taken, not copied).
   std::vector<double> v(std::move(junction));
@@ -135,45 +134,66 @@ void Builder::speeds() {
     v[i] = std::min(v[i], reachable(v[i + 1], lean[i].length, lean[i].accel, 0, lean[i].vmax));
   for (size_t i = 0; i < n; ++i)
     v[i + 1] = std::min(v[i + 1], reachable(v[i], lean[i].length, lean[i].accel, 0, lean[i].vmax));
-  // Trapezoids, then (with a jerk limit) S-curves: a ramp's build-up and
-  // wind-down where the acceleration starts and ends, not at every joint.
-  for (size_t i = 0; i < n; ++i) profile_one(lean[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
-  if (j > 0) {
-    std::vector<char> acc_in(n, 1), acc_out(n, 1), dec_in(n, 1), dec_out(n, 1);
-    // A phase counts when it covers more than rounding would leave of the
-    // segment (1e-9 of its length, at most its peak speed times its
-    // duration): a cruise or a ramp of a few ulps, left where the speeds
-    // meet exactly on paper, must not decide whether a ramp continues into
-    // the next segment (that would move the time by a jerk's share of a
-    // ramp for a change of 1e-12 in a length).
-    auto has = [](const Lean& q, double t) { return t * q.vpeak > 1e-9 * q.length; };
-    auto ends_acc = [&](const Lean& q) { return has(q, q.t_acc) && !has(q, q.t_cruise) && !has(q, q.t_dec); };
-    auto starts_acc = [&](const Lean& q) { return has(q, q.t_acc); };
-    auto ends_dec = [&](const Lean& q) { return has(q, q.t_dec); };
-    auto starts_dec = [&](const Lean& q) { return has(q, q.t_dec) && !has(q, q.t_acc) && !has(q, q.t_cruise); };
-    for (size_t i = 0; i + 1 < n; ++i) {
-      if (ends_acc(lean[i]) && starts_acc(lean[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
-      if (ends_dec(lean[i]) && starts_dec(lean[i + 1])) dec_out[i] = dec_in[i + 1] = 0;
-    }
-    for (size_t i = 0; i < n; ++i) {
-      std::array<char, 4> f{acc_in[i], acc_out[i], dec_in[i], dec_out[i]};
-      profile_one(lean[i], v[i], v[i + 1], j, f);
-    }
-  }
-  if (!summary)
-    for (size_t i = 0; i < n; ++i) {
-      PlanSegment& sg = segs[i];
-      sg.v0 = v[i];
-      sg.v1 = v[i + 1];
-      sg.vpeak = lean[i].vpeak;
-      sg.t_acc = lean[i].t_acc;
-      sg.t_cruise = lean[i].t_cruise;
-      sg.t_dec = lean[i].t_dec;
-    }
+  speed_ = std::move(v);
 }
 
+// The segments' profiles, one after the other (each made once, when
+// read): trapezoids, then (with a jerk limit) S-curves, a ramp's build-up
+// and wind-down where the acceleration starts and ends, not at every
+// joint, as the trapezoids of the segment and its neighbours say.
+class Builder::Profiles {
+ public:
+  explicit Profiles(const Builder& b) : b_(b), j_(b.jerk()) {
+    if (j_ > 0 && !b_.lean.empty()) {
+      here_ = trapezoid(0);
+      if (b_.lean.size() > 1) next_ = trapezoid(1);
+    }
+  }
+  // Segment i's profile: asked for i = 0, 1, 2 ... in order.
+  Profile next(size_t i) {
+    if (j_ <= 0) return trapezoid(i);
+    const size_t n = b_.lean.size();
+    if (i > 0) {
+      before_ = here_;
+      here_ = next_;
+      next_ = i + 1 < n ? trapezoid(i + 1) : Profile{};
+    }
+    const Lean& q = b_.lean[i];
+    const bool in = i > 0, out = i + 1 < n;
+    const Lean& p = b_.lean[in ? i - 1 : i];
+    const Lean& r = b_.lean[out ? i + 1 : i];
+    std::array<char, 4> f{1, 1, 1, 1};
+    if (in && ends_acc(p, before_) && starts_acc(q, here_)) f[0] = 0;
+    if (out && ends_acc(q, here_) && starts_acc(r, next_)) f[1] = 0;
+    if (in && ends_dec(p, before_) && starts_dec(q, here_)) f[2] = 0;
+    if (out && ends_dec(q, here_) && starts_dec(r, next_)) f[3] = 0;
+    return profile_one(q, b_.speed_[i], b_.speed_[i + 1], j_, f);
+  }
+
+ private:
+  Profile trapezoid(size_t k) const { return profile_one(b_.lean[k], b_.speed_[k], b_.speed_[k + 1], 0, {1, 1, 1, 1}); }
+  // A phase counts when it covers more than rounding would leave of the
+  // segment (1e-9 of its length, at most its peak speed times its
+  // duration): a cruise or a ramp of a few ulps, left where the speeds
+  // meet exactly on paper, must not decide whether a ramp continues into
+  // the next segment (that would move the time by a jerk's share of a
+  // ramp for a change of 1e-12 in a length).
+  static bool has(const Lean& q, const Profile& s, double t) { return t * s.vpeak > 1e-9 * q.length; }
+  static bool ends_acc(const Lean& q, const Profile& s) {
+    return has(q, s, s.t_acc) && !has(q, s, s.t_cruise) && !has(q, s, s.t_dec);
+  }
+  static bool starts_acc(const Lean& q, const Profile& s) { return has(q, s, s.t_acc); }
+  static bool ends_dec(const Lean& q, const Profile& s) { return has(q, s, s.t_dec); }
+  static bool starts_dec(const Lean& q, const Profile& s) {
+    return has(q, s, s.t_dec) && !has(q, s, s.t_acc) && !has(q, s, s.t_cruise);
+  }
+  const Builder& b_;
+  double j_;
+  Profile before_, here_, next_;  // the trapezoids of segments i - 1, i, i + 1
+};
+
 // One segment from v0 to v1: the highest peak that fits its length.
-void Builder::profile_one(Lean& s, double v0, double v1, double j, std::array<char, 4> f) {
+Profile Builder::profile_one(const Lean& s, double v0, double v1, double j, std::array<char, 4> f) {
   const double a = s.accel;
   auto up = [&](double vp) { return ramp_time(v0, vp, a, j, f[0], f[1]); };
   auto down = [&](double vp) { return ramp_time(vp, v1, a, j, f[2], f[3]); };
@@ -191,11 +211,13 @@ void Builder::profile_one(Lean& s, double v0, double v1, double j, std::array<ch
       vp = lo;
     }
   }
-  s.vpeak = vp;
-  s.t_acc = up(vp);
-  s.t_dec = down(vp);
+  Profile r;
+  r.vpeak = vp;
+  r.t_acc = up(vp);
+  r.t_dec = down(vp);
   const double rest = s.length - used(vp);
-  s.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
+  r.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
+  return r;
 }
 
 void Builder::totals() {
@@ -216,6 +238,7 @@ void Builder::totals() {
   std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
   std::vector<double> top(plan.blocks.size(), 0);
   double cut = 0, at_feed = 0;
+  Profiles profiles(*this);
   for (size_t i = 0; i <= lean.size(); ++i) {
     while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, block_count)] <= i) {
       plan.pause_start_s[pause] = t;
@@ -225,14 +248,24 @@ void Builder::totals() {
     }
     if (i == lean.size()) break;
     const Lean& s = lean[i];
-    if (!summary) segs[i].t_start = t;
+    const Profile pr = profiles.next(i);
+    if (!summary) {
+      PlanSegment& sg = segs[i];
+      sg.v0 = speed_[i];
+      sg.v1 = speed_[i + 1];
+      sg.vpeak = pr.vpeak;
+      sg.t_acc = pr.t_acc;
+      sg.t_cruise = pr.t_cruise;
+      sg.t_dec = pr.t_dec;
+      sg.t_start = t;
+    }
     // A parabolic blend at its end: the next move starts once this one has
     // slowed to the blend's speed, and the rest of its ramp down runs
     // together with the next move's start.
     const double ov = i + 1 < overlap_.size() && overlap_[i + 1] > 0 && s.accel > 0
-                          ? std::min(overlap_[i + 1], s.vpeak) / s.accel
+                          ? std::min(overlap_[i + 1], pr.vpeak) / s.accel
                           : 0;
-    const double own = std::max(0.0, s.time() - ov);
+    const double own = std::max(0.0, pr.time() - ov);
     t += own;
     (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += own;
     const size_t b = static_cast<size_t>(s.block);
@@ -243,8 +276,8 @@ void Builder::totals() {
       plan.path_time_s += own;
     PlannedBlock& pb = plan.blocks[b];
     pb.time_s += own;
-    pb.peak_feed = std::max(pb.peak_feed, s.vpeak * 60);
-    SpeedLimit l = s.limit;
+    pb.peak_feed = std::max(pb.peak_feed, pr.vpeak * 60);
+    SpeedLimit l = static_cast<SpeedLimit>(s.limit);
     if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
     if (s.vmax >= top[b]) {
       top[b] = s.vmax;
