@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <deque>
+#include <numeric>
 
 #include "planner_builder.hpp"
 
@@ -223,10 +225,20 @@ Profile Builder::profile_one(const Lean& s, double v0, double v1, double j, std:
 void Builder::totals() {
   double t = 0;
   size_t pause = 0;
-  // Pauses sit before the first segment of their block.
-  std::vector<size_t> first_seg(block_count + 1, lean.size());
-  for (size_t i = lean.size(); i-- > 0;) first_seg[static_cast<size_t>(lean[i].block)] = i;
-  for (size_t b = block_count; b-- > 0;) first_seg[b] = std::min(first_seg[b], first_seg[b + 1]);
+  // Pauses sit before the first segment of their block (or of the next
+  // block that has one): per pause, found in one pass over the segments
+  // with the pauses taken by block (a pause not reached until the end).
+  std::vector<size_t> pause_seg(tl.pauses.size(), lean.size());
+  {
+    const auto block_of = [&](size_t k) { return std::min(tl.pauses[k].before_block, block_count); };
+    std::vector<size_t> by_block(tl.pauses.size());
+    std::iota(by_block.begin(), by_block.end(), size_t{0});
+    std::stable_sort(by_block.begin(), by_block.end(), [&](size_t a, size_t b) { return block_of(a) < block_of(b); });
+    size_t k = 0;
+    for (size_t i = 0; i < lean.size() && k < by_block.size(); ++i)
+      for (; k < by_block.size() && block_of(by_block[k]) <= static_cast<size_t>(lean[i].block); ++k)
+        pause_seg[by_block[k]] = i;
+  }
   plan.pause_start_s.assign(tl.pauses.size(), 0);
   // One pass over the segments, in order: the times, per block what held
   // it below its programmed feed (the limit of its fastest segment), and
@@ -235,12 +247,12 @@ void Builder::totals() {
   // stretch of path counts by its length, blends with their block). A
   // cutting segment's block is a cutting block, whose programmed feed
   // add_block() took from the block as it is.
-  std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
+  std::vector<std::uint8_t> why(plan.blocks.size(), static_cast<std::uint8_t>(SpeedLimit::programmed));
   std::vector<double> top(plan.blocks.size(), 0);
   double cut = 0, at_feed = 0;
   Profiles profiles(*this);
   for (size_t i = 0; i <= lean.size(); ++i) {
-    while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, block_count)] <= i) {
+    while (pause < tl.pauses.size() && pause_seg[pause] <= i) {
       plan.pause_start_s[pause] = t;
       t += tl.pauses[pause].seconds;
       plan.pause_time_s += tl.pauses[pause].seconds;
@@ -281,7 +293,7 @@ void Builder::totals() {
     if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
     if (s.vmax >= top[b]) {
       top[b] = s.vmax;
-      why[b] = l;
+      why[b] = static_cast<std::uint8_t>(l);
     }
     if (s.rapid) continue;
     const double want = pb.programmed_feed / 60;
@@ -310,7 +322,7 @@ void Builder::totals() {
     if (want > 0) plan.programmed_feed_time_s += pb.length / want * 60;
     if (pb.clamped) ++plan.clamped_blocks;
     if (pb.peak_feed < want * (1 - 1e-6)) {
-      pb.limit = why[b];
+      pb.limit = static_cast<SpeedLimit>(why[b]);
       if (pb.limit == SpeedLimit::programmed) pb.limit = SpeedLimit::acceleration;
     }
     pb.starved = pb.peak_feed < want * 0.99 && is_starvation(pb.limit);
