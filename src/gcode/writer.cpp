@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
+#include <unordered_set>
 
 #include "bezcam/cam/program_motion.hpp"
 #include "bezcam/gcode/convert.hpp"
@@ -113,14 +115,18 @@ class Writer {
   // operator loads them from this. A flat or ball end reads the same with
   // a table as with `tool_diameter`.
   void tools() {
-    // Each label once per tool: the contours of one glyph share its label.
+    // Each label once per tool: the contours of one glyph share its label
+    // (the labels seen, per tool, in a set: a job of many entities).
     std::vector<std::pair<int, std::vector<std::string>>> cuts;
+    std::vector<std::unordered_set<std::string_view>> seen;
     for (const EntityReport& e : p_.entities) {
       auto it = std::find_if(cuts.begin(), cuts.end(), [&](const auto& t) { return t.first == e.tool; });
-      if (it == cuts.end())
+      if (it == cuts.end()) {
         cuts.push_back({e.tool, {e.label}});
-      else if (std::find(it->second.begin(), it->second.end(), e.label) == it->second.end())
+        seen.push_back({e.label});
+      } else if (seen[static_cast<size_t>(it - cuts.begin())].insert(e.label).second) {
         it->second.push_back(e.label);
+      }
     }
     std::vector<std::pair<int, std::string>> list;
     for (const auto& [tool, labels] : cuts) {

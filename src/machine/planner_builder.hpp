@@ -3,7 +3,9 @@
 // runs it): Builder turns a timeline into segments (planner_segments.cpp),
 // joins them at corners (planner_corners.cpp), gives them speeds and sums
 // their times (planner_speeds.cpp).
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -55,17 +57,23 @@ double circumradius(const Vec3& a, const Vec3& b, const Vec3& c);
 /// How many pieces the planner cuts a curve block into (Builder::add_block).
 int curve_pieces(const MotionBlock& b);
 
-// What the speed passes and the totals read and write of a segment, packed:
+// What the speed passes and the totals read of a segment, packed:
 // they run over every segment of a long program, and a summary keeps only
 // this of a segment once no blend can reach it (PlanSegment holds its
 // geometry too, several times the size).
 struct Lean {
   double length = 0, vmax = 0, accel = 0;  // accel: tangential, the kinks' share taken off
   int block = -1;
-  SpeedLimit limit = SpeedLimit::programmed;
+  std::uint8_t limit = 0;  // a SpeedLimit
   bool rapid = false;
   bool blend = false;
-  double vpeak = 0, t_acc = 0, t_cruise = 0, t_dec = 0;  // entry and exit speeds: speeds()'s v
+};
+static_assert(sizeof(Lean) <= 32);
+
+// A segment's speed profile between its entry and exit speeds (speeds()'s
+// speed_): made from them when totals() reads it, never stored.
+struct Profile {
+  double vpeak = 0, t_acc = 0, t_cruise = 0, t_dec = 0;
   double time() const { return t_acc + t_cruise + t_dec; }
 };
 
@@ -175,11 +183,15 @@ struct Builder {
                        const Vec3& u1, const Vec3& u2, double phi, double tol);
 
   // ---- speeds (planner_speeds.cpp) ----
-  // Every junction's speed and every segment's profile.
+  // Every junction's speed (speed_).
   void speeds();
+  std::vector<double> speed_;  // speed_[i]: entering lean[i]; then the end
+  double jerk() const { return lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0; }
   // One segment from v0 to v1: the highest peak that fits its length.
-  static void profile_one(Lean& s, double v0, double v1, double j, std::array<char, 4> f);
-  // The plan's times and per-block figures.
+  static Profile profile_one(const Lean& s, double v0, double v1, double j, std::array<char, 4> f);
+  class Profiles;  // every segment's profile, in order
+  // Every segment's profile (a full plan's segments take theirs), the
+  // plan's times and per-block figures.
   void totals();
 };
 

@@ -132,7 +132,7 @@ void Builder::add_lean(PlanSegment& sg) {
   l.vmax = sg.vmax;
   l.accel = sg.accel;
   l.block = sg.block;
-  l.limit = sg.limit;
+  l.limit = static_cast<std::uint8_t>(sg.limit);
   l.rapid = sg.rapid;
   l.blend = sg.blend;
   lean.push_back(l);

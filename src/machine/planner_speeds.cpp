@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <deque>
+#include <numeric>
 
 #include "planner_builder.hpp"
 
@@ -56,35 +58,48 @@ double reachable(double v0, double L, double a, double j, double cap) {
 
 void Builder::speeds() {
   const size_t n = lean.size();
-  const double j = lim.jerk ? std::min({lim.jmax.x, lim.jmax.y, lim.jmax.z}) : 0;
-  // junction has n + 1 entries: entering each segment, then the end.
-  std::vector<double> v(junction);
+  // junction has n + 1 entries: entering each segment, then the end (read
+  // here only: taken, not copied).
+  std::vector<double> v(std::move(junction));
   for (size_t i = 0; i < n; ++i) {
     v[i] = std::min(v[i], lean[i].vmax);
     if (i > 0) v[i] = std::min(v[i], lean[i - 1].vmax);
   }
   // Look-ahead: at each segment the controller must be able to stop
-  // within the segments it sees (counted in blocks).
+  // within the segments it sees (counted in blocks). One pass, every
+  // index it reads moving forward only: the sums of lengths and the counts
+  // of blocks before a segment are kept as they go, in the order a table
+  // of them would add them, not stored for every segment.
   const int window = std::max(1, model.lookahead_blocks);
-  std::vector<double> look(n + 1, kInf);
   {
     // Only where the window is short compared with a stop.
-    std::vector<double> prefix(n + 1, 0);
-    for (size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + lean[i].length;
-    std::vector<size_t> end_of(n);
-    // Window end: the segment after `window` distinct blocks.
+    // Distinct blocks and path length before a segment, at a cursor
+    // moving forward.
+    struct Before {
+      size_t at = 0;
+      int blocks = 0;
+      double length = 0;
+    };
+    const auto advance = [&](Before& c, size_t to) {
+      for (; c.at < to; ++c.at) {
+        if (c.at == 0 || lean[c.at].block != lean[c.at - 1].block) ++c.blocks;
+        c.length += lean[c.at].length;
+      }
+    };
+    // Window end of segment k: the segment after `window` distinct blocks
+    // (segments [k, e) are seen); asked for k = 0, 0, 1, 2 ... in order.
     size_t e = 0;
-    int last_block = -2;
-    std::vector<int> bcount(n + 1, 0);
-    for (size_t i = 0; i < n; ++i) {
-      bcount[i + 1] = bcount[i] + (lean[i].block != last_block ? 1 : 0);
-      last_block = lean[i].block;
-    }
-    for (size_t i = 0; i < n; ++i) {
-      if (e < i) e = i;
-      while (e < n && bcount[e + 1] - bcount[i] <= window) ++e;
-      end_of[i] = e;  // segments [i, e) are seen
-    }
+    Before at_k, after_e, at_i, at_stop;
+    const auto end_of = [&](size_t k) {
+      if (e < k) e = k;
+      advance(at_k, k);
+      while (e < n) {
+        advance(after_e, e + 1);
+        if (after_e.blocks - at_k.blocks > window) break;
+        ++e;
+      }
+      return e;
+    };
     // The least acceleration over each window, by a sliding minimum (both
     // ends only move forward).
     std::deque<size_t> mins;
@@ -92,7 +107,7 @@ void Builder::speeds() {
     for (size_t i = 0; i < n; ++i) {
       // Entering segment i, the controller is still executing segment
       // i - 1: it sees the window that began there.
-      const size_t stop = end_of[i > 0 ? i - 1 : 0];
+      const size_t stop = end_of(i > 0 ? i - 1 : 0);
       if (stop >= n) continue;  // sees the program's end: the normal passes cover it
       for (; pushed < stop; ++pushed) {
         while (!mins.empty() && lean[mins.back()].accel >= lean[pushed].accel) mins.pop_back();
@@ -102,17 +117,17 @@ void Builder::speeds() {
       const double a_min = mins.empty() ? lean[i].accel : lean[mins.front()].accel;
       // A window long enough to stop from the top speed does not limit.
       const double dist_needed = ramp_distance(0, lean[i].vmax, a_min, 0);
-      if (prefix[stop] - prefix[i] >= dist_needed * 1.0001) continue;
+      advance(at_i, i);
+      advance(at_stop, stop);
+      if (at_stop.length - at_i.length >= dist_needed * 1.0001) continue;
       double w = 0;
       for (size_t k = stop; k-- > i;) w = std::min(reachable(w, lean[k].length, lean[k].accel, 0, lean[k].vmax), v[k]);
-      look[i] = w;
-    }
-  }
-  for (size_t i = 0; i < n; ++i) {
-    if (look[i] < v[i]) {
-      v[i] = look[i];
-      lookahead_limited_.resize(n, false);
-      lookahead_limited_[i] = true;
+      // The window read v from i on only: taken at once.
+      if (w < v[i]) {
+        v[i] = w;
+        lookahead_limited_.resize(n, false);
+        lookahead_limited_[i] = true;
+      }
     }
   }
   // Backward then forward (speeds by the acceleration; the jerk's share
@@ -121,45 +136,66 @@ void Builder::speeds() {
     v[i] = std::min(v[i], reachable(v[i + 1], lean[i].length, lean[i].accel, 0, lean[i].vmax));
   for (size_t i = 0; i < n; ++i)
     v[i + 1] = std::min(v[i + 1], reachable(v[i], lean[i].length, lean[i].accel, 0, lean[i].vmax));
-  // Trapezoids, then (with a jerk limit) S-curves: a ramp's build-up and
-  // wind-down where the acceleration starts and ends, not at every joint.
-  for (size_t i = 0; i < n; ++i) profile_one(lean[i], v[i], v[i + 1], 0, {1, 1, 1, 1});
-  if (j > 0) {
-    std::vector<char> acc_in(n, 1), acc_out(n, 1), dec_in(n, 1), dec_out(n, 1);
-    // A phase counts when it covers more than rounding would leave of the
-    // segment (1e-9 of its length, at most its peak speed times its
-    // duration): a cruise or a ramp of a few ulps, left where the speeds
-    // meet exactly on paper, must not decide whether a ramp continues into
-    // the next segment (that would move the time by a jerk's share of a
-    // ramp for a change of 1e-12 in a length).
-    auto has = [](const Lean& q, double t) { return t * q.vpeak > 1e-9 * q.length; };
-    auto ends_acc = [&](const Lean& q) { return has(q, q.t_acc) && !has(q, q.t_cruise) && !has(q, q.t_dec); };
-    auto starts_acc = [&](const Lean& q) { return has(q, q.t_acc); };
-    auto ends_dec = [&](const Lean& q) { return has(q, q.t_dec); };
-    auto starts_dec = [&](const Lean& q) { return has(q, q.t_dec) && !has(q, q.t_acc) && !has(q, q.t_cruise); };
-    for (size_t i = 0; i + 1 < n; ++i) {
-      if (ends_acc(lean[i]) && starts_acc(lean[i + 1])) acc_out[i] = acc_in[i + 1] = 0;
-      if (ends_dec(lean[i]) && starts_dec(lean[i + 1])) dec_out[i] = dec_in[i + 1] = 0;
-    }
-    for (size_t i = 0; i < n; ++i) {
-      std::array<char, 4> f{acc_in[i], acc_out[i], dec_in[i], dec_out[i]};
-      profile_one(lean[i], v[i], v[i + 1], j, f);
-    }
-  }
-  if (!summary)
-    for (size_t i = 0; i < n; ++i) {
-      PlanSegment& sg = segs[i];
-      sg.v0 = v[i];
-      sg.v1 = v[i + 1];
-      sg.vpeak = lean[i].vpeak;
-      sg.t_acc = lean[i].t_acc;
-      sg.t_cruise = lean[i].t_cruise;
-      sg.t_dec = lean[i].t_dec;
-    }
+  speed_ = std::move(v);
 }
 
+// The segments' profiles, one after the other (each made once, when
+// read): trapezoids, then (with a jerk limit) S-curves, a ramp's build-up
+// and wind-down where the acceleration starts and ends, not at every
+// joint, as the trapezoids of the segment and its neighbours say.
+class Builder::Profiles {
+ public:
+  explicit Profiles(const Builder& b) : b_(b), j_(b.jerk()) {
+    if (j_ > 0 && !b_.lean.empty()) {
+      here_ = trapezoid(0);
+      if (b_.lean.size() > 1) next_ = trapezoid(1);
+    }
+  }
+  // Segment i's profile: asked for i = 0, 1, 2 ... in order.
+  Profile next(size_t i) {
+    if (j_ <= 0) return trapezoid(i);
+    const size_t n = b_.lean.size();
+    if (i > 0) {
+      before_ = here_;
+      here_ = next_;
+      next_ = i + 1 < n ? trapezoid(i + 1) : Profile{};
+    }
+    const Lean& q = b_.lean[i];
+    const bool in = i > 0, out = i + 1 < n;
+    const Lean& p = b_.lean[in ? i - 1 : i];
+    const Lean& r = b_.lean[out ? i + 1 : i];
+    std::array<char, 4> f{1, 1, 1, 1};
+    if (in && ends_acc(p, before_) && starts_acc(q, here_)) f[0] = 0;
+    if (out && ends_acc(q, here_) && starts_acc(r, next_)) f[1] = 0;
+    if (in && ends_dec(p, before_) && starts_dec(q, here_)) f[2] = 0;
+    if (out && ends_dec(q, here_) && starts_dec(r, next_)) f[3] = 0;
+    return profile_one(q, b_.speed_[i], b_.speed_[i + 1], j_, f);
+  }
+
+ private:
+  Profile trapezoid(size_t k) const { return profile_one(b_.lean[k], b_.speed_[k], b_.speed_[k + 1], 0, {1, 1, 1, 1}); }
+  // A phase counts when it covers more than rounding would leave of the
+  // segment (1e-9 of its length, at most its peak speed times its
+  // duration): a cruise or a ramp of a few ulps, left where the speeds
+  // meet exactly on paper, must not decide whether a ramp continues into
+  // the next segment (that would move the time by a jerk's share of a
+  // ramp for a change of 1e-12 in a length).
+  static bool has(const Lean& q, const Profile& s, double t) { return t * s.vpeak > 1e-9 * q.length; }
+  static bool ends_acc(const Lean& q, const Profile& s) {
+    return has(q, s, s.t_acc) && !has(q, s, s.t_cruise) && !has(q, s, s.t_dec);
+  }
+  static bool starts_acc(const Lean& q, const Profile& s) { return has(q, s, s.t_acc); }
+  static bool ends_dec(const Lean& q, const Profile& s) { return has(q, s, s.t_dec); }
+  static bool starts_dec(const Lean& q, const Profile& s) {
+    return has(q, s, s.t_dec) && !has(q, s, s.t_acc) && !has(q, s, s.t_cruise);
+  }
+  const Builder& b_;
+  double j_;
+  Profile before_, here_, next_;  // the trapezoids of segments i - 1, i, i + 1
+};
+
 // One segment from v0 to v1: the highest peak that fits its length.
-void Builder::profile_one(Lean& s, double v0, double v1, double j, std::array<char, 4> f) {
+Profile Builder::profile_one(const Lean& s, double v0, double v1, double j, std::array<char, 4> f) {
   const double a = s.accel;
   auto up = [&](double vp) { return ramp_time(v0, vp, a, j, f[0], f[1]); };
   auto down = [&](double vp) { return ramp_time(vp, v1, a, j, f[2], f[3]); };
@@ -177,20 +213,32 @@ void Builder::profile_one(Lean& s, double v0, double v1, double j, std::array<ch
       vp = lo;
     }
   }
-  s.vpeak = vp;
-  s.t_acc = up(vp);
-  s.t_dec = down(vp);
+  Profile r;
+  r.vpeak = vp;
+  r.t_acc = up(vp);
+  r.t_dec = down(vp);
   const double rest = s.length - used(vp);
-  s.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
+  r.t_cruise = vp > 0 ? std::max(0.0, rest) / vp : 0;
+  return r;
 }
 
 void Builder::totals() {
   double t = 0;
   size_t pause = 0;
-  // Pauses sit before the first segment of their block.
-  std::vector<size_t> first_seg(block_count + 1, lean.size());
-  for (size_t i = lean.size(); i-- > 0;) first_seg[static_cast<size_t>(lean[i].block)] = i;
-  for (size_t b = block_count; b-- > 0;) first_seg[b] = std::min(first_seg[b], first_seg[b + 1]);
+  // Pauses sit before the first segment of their block (or of the next
+  // block that has one): per pause, found in one pass over the segments
+  // with the pauses taken by block (a pause not reached until the end).
+  std::vector<size_t> pause_seg(tl.pauses.size(), lean.size());
+  {
+    const auto block_of = [&](size_t k) { return std::min(tl.pauses[k].before_block, block_count); };
+    std::vector<size_t> by_block(tl.pauses.size());
+    std::iota(by_block.begin(), by_block.end(), size_t{0});
+    std::stable_sort(by_block.begin(), by_block.end(), [&](size_t a, size_t b) { return block_of(a) < block_of(b); });
+    size_t k = 0;
+    for (size_t i = 0; i < lean.size() && k < by_block.size(); ++i)
+      for (; k < by_block.size() && block_of(by_block[k]) <= static_cast<size_t>(lean[i].block); ++k)
+        pause_seg[by_block[k]] = i;
+  }
   plan.pause_start_s.assign(tl.pauses.size(), 0);
   // One pass over the segments, in order: the times, per block what held
   // it below its programmed feed (the limit of its fastest segment), and
@@ -199,11 +247,12 @@ void Builder::totals() {
   // stretch of path counts by its length, blends with their block). A
   // cutting segment's block is a cutting block, whose programmed feed
   // add_block() took from the block as it is.
-  std::vector<SpeedLimit> why(plan.blocks.size(), SpeedLimit::programmed);
+  std::vector<std::uint8_t> why(plan.blocks.size(), static_cast<std::uint8_t>(SpeedLimit::programmed));
   std::vector<double> top(plan.blocks.size(), 0);
   double cut = 0, at_feed = 0;
+  Profiles profiles(*this);
   for (size_t i = 0; i <= lean.size(); ++i) {
-    while (pause < tl.pauses.size() && first_seg[std::min(tl.pauses[pause].before_block, block_count)] <= i) {
+    while (pause < tl.pauses.size() && pause_seg[pause] <= i) {
       plan.pause_start_s[pause] = t;
       t += tl.pauses[pause].seconds;
       plan.pause_time_s += tl.pauses[pause].seconds;
@@ -211,14 +260,24 @@ void Builder::totals() {
     }
     if (i == lean.size()) break;
     const Lean& s = lean[i];
-    if (!summary) segs[i].t_start = t;
+    const Profile pr = profiles.next(i);
+    if (!summary) {
+      PlanSegment& sg = segs[i];
+      sg.v0 = speed_[i];
+      sg.v1 = speed_[i + 1];
+      sg.vpeak = pr.vpeak;
+      sg.t_acc = pr.t_acc;
+      sg.t_cruise = pr.t_cruise;
+      sg.t_dec = pr.t_dec;
+      sg.t_start = t;
+    }
     // A parabolic blend at its end: the next move starts once this one has
     // slowed to the blend's speed, and the rest of its ramp down runs
     // together with the next move's start.
     const double ov = i + 1 < overlap_.size() && overlap_[i + 1] > 0 && s.accel > 0
-                          ? std::min(overlap_[i + 1], s.vpeak) / s.accel
+                          ? std::min(overlap_[i + 1], pr.vpeak) / s.accel
                           : 0;
-    const double own = std::max(0.0, s.time() - ov);
+    const double own = std::max(0.0, pr.time() - ov);
     t += own;
     (s.rapid ? plan.rapid_time_s : plan.cutting_time_s) += own;
     const size_t b = static_cast<size_t>(s.block);
@@ -229,12 +288,12 @@ void Builder::totals() {
       plan.path_time_s += own;
     PlannedBlock& pb = plan.blocks[b];
     pb.time_s += own;
-    pb.peak_feed = std::max(pb.peak_feed, s.vpeak * 60);
-    SpeedLimit l = s.limit;
+    pb.peak_feed = std::max(pb.peak_feed, pr.vpeak * 60);
+    SpeedLimit l = static_cast<SpeedLimit>(s.limit);
     if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
     if (s.vmax >= top[b]) {
       top[b] = s.vmax;
-      why[b] = l;
+      why[b] = static_cast<std::uint8_t>(l);
     }
     if (s.rapid) continue;
     const double want = pb.programmed_feed / 60;
@@ -263,7 +322,7 @@ void Builder::totals() {
     if (want > 0) plan.programmed_feed_time_s += pb.length / want * 60;
     if (pb.clamped) ++plan.clamped_blocks;
     if (pb.peak_feed < want * (1 - 1e-6)) {
-      pb.limit = why[b];
+      pb.limit = static_cast<SpeedLimit>(why[b]);
       if (pb.limit == SpeedLimit::programmed) pb.limit = SpeedLimit::acceleration;
     }
     pb.starved = pb.peak_feed < want * 0.99 && is_starvation(pb.limit);

@@ -33,9 +33,9 @@ struct ProgramTotals {
   std::vector<MotionTotals> by_entity;
 };
 
-// The totals in one pass over the blocks, no copy of them (a pass per
-// entity would make a job of many entities quadratic), each block measured
-// once; the sums in block order, as motion_totals() makes them.
+// The totals in one pass over the blocks as they are made, none kept (a
+// pass per entity would make a job of many entities quadratic), each block
+// measured once; the sums in block order, as motion_totals() makes them.
 ProgramTotals program_totals(const Program& p) {
   ProgramTotals r;
   const auto add = [](MotionTotals& t, const MotionTotals& one) {
@@ -45,13 +45,13 @@ ProgramTotals program_totals(const Program& p) {
     t.feed_blocks += one.feed_blocks;
     t.rapid_blocks += one.rapid_blocks;
   };
-  for (const MotionBlock& b : program_motion(p)) {
+  for_each_motion_block(p, [&](const MotionBlock& b, size_t) {
     const MotionTotals one = motion_totals(std::span(&b, 1), 0);
     add(r.total, one);
-    if (b.entity < 0) continue;
+    if (b.entity < 0) return;
     if (r.by_entity.size() <= static_cast<size_t>(b.entity)) r.by_entity.resize(b.entity + 1);
     add(r.by_entity[b.entity], one);
-  }
+  });
   return r;
 }
 
