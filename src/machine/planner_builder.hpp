@@ -193,6 +193,22 @@ struct Builder {
   // Every segment's profile (a full plan's segments take theirs), the
   // plan's times and per-block figures.
   void totals();
+  // The profiles and times of lean's segments [0, n), added to the plan's
+  // (the time goes on from the segments timed before), and the end: the
+  // pauses left, the cycle, the per-block figures.
+  void totals_part(size_t n);
+  void totals_end();
+  // A summary times its segments in parts as the blocks come: the ones
+  // before a stop whose look-ahead windows all lie in `lean` are timed and
+  // dropped (their speeds depend on nothing after the stop), so `lean`
+  // never holds a long program whole.
+  void time_done_part();
+  size_t next_part_at_ = size_t{1} << 16;  // lean's size at which to look for one
+  double t_done_ = 0, cut_done_ = 0, at_feed_done_ = 0;
+  size_t pause_done_ = 0;
+  bool timed_any_ = false;
+  std::vector<std::uint8_t> why_;  // per block: the limit of its fastest segment
+  std::vector<double> top_;        // per block: that segment's top speed
 };
 
 }  // namespace bezcam::planner_detail

@@ -132,6 +132,7 @@ void Builder::take_block(size_t bi, const MotionBlock& b) {
     if (summary && segs.size() > 2) {
       for (size_t k = 0; k + 2 < segs.size(); ++k) add_lean(segs[k]);
       segs.erase(segs.begin(), segs.end() - 2);
+      if (lean.size() >= next_part_at_) time_done_part();
     }
   }
   // Blocks made one at a time: the next corner reads the last block that

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <numeric>
 
 #include "planner_builder.hpp"
@@ -58,6 +59,7 @@ double reachable(double v0, double L, double a, double j, double cap) {
 
 void Builder::speeds() {
   const size_t n = lean.size();
+  lookahead_limited_.clear();
   // junction has n + 1 entries: entering each segment, then the end (read
   // here only: taken, not copied).
   std::vector<double> v(std::move(junction));
@@ -145,16 +147,17 @@ void Builder::speeds() {
 // joint, as the trapezoids of the segment and its neighbours say.
 class Builder::Profiles {
  public:
-  explicit Profiles(const Builder& b) : b_(b), j_(b.jerk()) {
-    if (j_ > 0 && !b_.lean.empty()) {
+  // The profiles of lean's segments [0, n).
+  Profiles(const Builder& b, size_t n) : b_(b), j_(b.jerk()), n_(n) {
+    if (j_ > 0 && n_ > 0) {
       here_ = trapezoid(0);
-      if (b_.lean.size() > 1) next_ = trapezoid(1);
+      if (n_ > 1) next_ = trapezoid(1);
     }
   }
   // Segment i's profile: asked for i = 0, 1, 2 ... in order.
   Profile next(size_t i) {
     if (j_ <= 0) return trapezoid(i);
-    const size_t n = b_.lean.size();
+    const size_t n = n_;
     if (i > 0) {
       before_ = here_;
       here_ = next_;
@@ -191,6 +194,7 @@ class Builder::Profiles {
   }
   const Builder& b_;
   double j_;
+  size_t n_;
   Profile before_, here_, next_;  // the trapezoids of segments i - 1, i, i + 1
 };
 
@@ -223,23 +227,36 @@ Profile Builder::profile_one(const Lean& s, double v0, double v1, double j, std:
 }
 
 void Builder::totals() {
-  double t = 0;
-  size_t pause = 0;
+  totals_part(lean.size());
+  totals_end();
+}
+
+void Builder::totals_part(size_t n) {
+  double t = t_done_;
+  size_t pause = pause_done_;
+  if (!timed_any_) {
+    timed_any_ = true;
+    plan.pause_start_s.assign(tl.pauses.size(), 0);
+  }
+  // (Blocks still come while a summary times its first parts.)
+  why_.resize(plan.blocks.size(), static_cast<std::uint8_t>(SpeedLimit::programmed));
+  top_.resize(plan.blocks.size(), 0);
   // Pauses sit before the first segment of their block (or of the next
   // block that has one): per pause, found in one pass over the segments
-  // with the pauses taken by block (a pause not reached until the end).
-  std::vector<size_t> pause_seg(tl.pauses.size(), lean.size());
+  // with the pauses taken by block (a pause whose block comes later waits
+  // for the part that holds it, or the end).
+  constexpr size_t kLater = std::numeric_limits<size_t>::max();
+  std::vector<size_t> pause_seg(tl.pauses.size(), kLater);
   {
     const auto block_of = [&](size_t k) { return std::min(tl.pauses[k].before_block, block_count); };
-    std::vector<size_t> by_block(tl.pauses.size());
-    std::iota(by_block.begin(), by_block.end(), size_t{0});
+    std::vector<size_t> by_block(tl.pauses.size() - pause);
+    std::iota(by_block.begin(), by_block.end(), pause);
     std::stable_sort(by_block.begin(), by_block.end(), [&](size_t a, size_t b) { return block_of(a) < block_of(b); });
     size_t k = 0;
-    for (size_t i = 0; i < lean.size() && k < by_block.size(); ++i)
+    for (size_t i = 0; i < n && k < by_block.size(); ++i)
       for (; k < by_block.size() && block_of(by_block[k]) <= static_cast<size_t>(lean[i].block); ++k)
         pause_seg[by_block[k]] = i;
   }
-  plan.pause_start_s.assign(tl.pauses.size(), 0);
   // One pass over the segments, in order: the times, per block what held
   // it below its programmed feed (the limit of its fastest segment), and
   // the mean feed ratio over the cutting moves: the length cut over the
@@ -247,18 +264,14 @@ void Builder::totals() {
   // stretch of path counts by its length, blends with their block). A
   // cutting segment's block is a cutting block, whose programmed feed
   // add_block() took from the block as it is.
-  std::vector<std::uint8_t> why(plan.blocks.size(), static_cast<std::uint8_t>(SpeedLimit::programmed));
-  std::vector<double> top(plan.blocks.size(), 0);
-  double cut = 0, at_feed = 0;
-  Profiles profiles(*this);
-  for (size_t i = 0; i <= lean.size(); ++i) {
+  Profiles profiles(*this, n);
+  for (size_t i = 0; i < n; ++i) {
     while (pause < tl.pauses.size() && pause_seg[pause] <= i) {
       plan.pause_start_s[pause] = t;
       t += tl.pauses[pause].seconds;
       plan.pause_time_s += tl.pauses[pause].seconds;
       ++pause;
     }
-    if (i == lean.size()) break;
     const Lean& s = lean[i];
     const Profile pr = profiles.next(i);
     if (!summary) {
@@ -291,24 +304,37 @@ void Builder::totals() {
     pb.peak_feed = std::max(pb.peak_feed, pr.vpeak * 60);
     SpeedLimit l = static_cast<SpeedLimit>(s.limit);
     if (i < lookahead_limited_.size() && lookahead_limited_[i]) l = SpeedLimit::lookahead;
-    if (s.vmax >= top[b]) {
-      top[b] = s.vmax;
-      why[b] = static_cast<std::uint8_t>(l);
+    if (s.vmax >= top_[b]) {
+      top_[b] = s.vmax;
+      why_[b] = static_cast<std::uint8_t>(l);
     }
     if (s.rapid) continue;
     const double want = pb.programmed_feed / 60;
     if (!(want > 0)) continue;
-    cut += s.length;
-    at_feed += own * want;
+    cut_done_ += s.length;
+    at_feed_done_ += own * want;
   }
-  while (pause < tl.pauses.size()) {
+  // The pauses before the first segment after the part.
+  while (pause < tl.pauses.size() && pause_seg[pause] <= n) {
     plan.pause_start_s[pause] = t;
     t += tl.pauses[pause].seconds;
     plan.pause_time_s += tl.pauses[pause].seconds;
     ++pause;
   }
+  t_done_ = t;
+  pause_done_ = pause;
+}
+
+void Builder::totals_end() {
+  if (!timed_any_) totals_part(0);
+  double t = t_done_;
+  for (size_t pause = pause_done_; pause < tl.pauses.size(); ++pause) {
+    plan.pause_start_s[pause] = t;
+    t += tl.pauses[pause].seconds;
+    plan.pause_time_s += tl.pauses[pause].seconds;
+  }
   plan.cycle_time_s = t;
-  plan.mean_feed_ratio = at_feed > 0 ? cut / at_feed : 1;
+  plan.mean_feed_ratio = at_feed_done_ > 0 ? cut_done_ / at_feed_done_ : 1;
   // Per block (add_block() gave a cutting block its programmed feed, a
   // rapid the axes' rate along it).
   for (size_t b = 0; b < plan.blocks.size(); ++b) {
@@ -322,12 +348,43 @@ void Builder::totals() {
     if (want > 0) plan.programmed_feed_time_s += pb.length / want * 60;
     if (pb.clamped) ++plan.clamped_blocks;
     if (pb.peak_feed < want * (1 - 1e-6)) {
-      pb.limit = static_cast<SpeedLimit>(why[b]);
+      pb.limit = static_cast<SpeedLimit>(why_[b]);
       if (pb.limit == SpeedLimit::programmed) pb.limit = SpeedLimit::acceleration;
     }
     pb.starved = pb.peak_feed < want * 0.99 && is_starvation(pb.limit);
     if (pb.starved) ++plan.starved_blocks;
   }
+}
+
+void Builder::time_done_part() {
+  // The last stop (a junction at rest, not a parabolic blend's) with more
+  // than the look-ahead's blocks after it, and two to spare: every window
+  // of a segment before it ends inside `lean`, so the passes give those
+  // segments the speeds a plan of the whole program would.
+  const size_t window = static_cast<size_t>(std::max(1, model.lookahead_blocks));
+  const size_t n = lean.size();
+  size_t blocks_after = 0, J = 0;
+  for (size_t i = n; i-- > 1;) {
+    if (lean[i].block != lean[i - 1].block) ++blocks_after;
+    if (blocks_after < window + 3) continue;
+    if (junction[i] == 0 && (i >= overlap_.size() || overlap_[i] == 0)) {
+      J = i;
+      break;
+    }
+  }
+  next_part_at_ = n + (size_t{1} << 14);
+  if (J < 2) return;
+  std::vector<double> keep(junction.begin() + static_cast<std::ptrdiff_t>(J), junction.end());
+  std::vector<double> keep_overlap;
+  if (overlap_.size() > J) keep_overlap.assign(overlap_.begin() + static_cast<std::ptrdiff_t>(J), overlap_.end());
+  speeds();  // takes `junction`
+  totals_part(J);
+  lean.erase(lean.begin(), lean.begin() + static_cast<std::ptrdiff_t>(J));
+  junction = std::move(keep);
+  overlap_ = std::move(keep_overlap);
+  lookahead_limited_.clear();
+  speed_.clear();
+  next_part_at_ = lean.size() + (size_t{1} << 16);
 }
 
 }  // namespace bezcam::planner_detail
