@@ -104,21 +104,17 @@ void Builder::take_block(size_t bi, const MotionBlock& b) {
           // takes the fastest.
           const double v_kink = std::min(prev.vmax, s.vmax) * kKinkRatio / kink_scale;
           const double v_parabolic = parabolic_speed(prev, s, u1, u2, pbk.to, tol, true) / 2;
-          if (vj >= v_kink && vj >= v_parabolic) {
-            // the blend arc
-          } else if (v_parabolic > v_kink) {
+          const bool arc_best = vj >= v_kink && vj >= v_parabolic;
+          if (!arc_best && v_parabolic > v_kink) {
             parabolic_corner(prev, s, u1, u2, pbk.to, tol);
-            cap_segment_time(s);
-            junction.push_back(0);
-            segs.push_back(std::move(s));
-            continue;
-          } else {
+            vj = 0;  // each move plans to stop here; overlap_ times them together
+          } else if (!arc_best) {
             vj = v_kink;
             prev.kink_reduce = std::max(prev.kink_reduce, kKinkRatio);
             s.kink_reduce = std::max(s.kink_reduce, kKinkRatio);
           }
         }
-        vj = std::max(vj, 0.0);  // no blend elsewhere: a stop
+        vj = std::max(vj, 0.0);  // no blend elsewhere: a stop (a corner's keeps the acceleration)
       }
       if (vj <= 0) exact_stop_end(tol <= 0 ? Stop::exact_mode : Stop::corner);
       cap_segment_time(s);
@@ -397,29 +393,36 @@ struct ArcEnd {
   bool arc_block = false;  // a G2/G3 block: its circle is known exactly
 };
 
+// The angle between two directions.
+double angle_between(const Vec3& x, const Vec3& y) { return std::acos(std::clamp(dot(unit(x), unit(y)), -1.0, 1.0)); }
+
+// The length of the blend circle of centre C and radius R from `from` to
+// `to` (where it touches the moves); -1 where C strays more than `tol`
+// from the corner P.
+double blend_length(const Vec3& P, const Vec3& C, const Vec3& from, const Vec3& to, double R, double tol) {
+  if (norm(C - P) - R > tol) return -1;
+  return R * angle_between(from - C, to - C);
+}
+
 // The length of the circle of radius R tangent to both arcs at the corner
 // P (inside an arc where the corner is convex to it, outside otherwise),
-// the one nearer P; -1 where it does not exist, strays more than `tol`
-// from P, or takes more of an arc than its share.
-double arc_arc_blend_length(const Vec3& P, const ArcEnd& a, const ArcEnd& b, double R, double tol) {
+// in the corner's plane (normal `binormal`), the one nearer P; -1 where it
+// does not exist, strays more than `tol` from P, or takes more of an arc
+// than its share.
+double arc_arc_blend_length(const Vec3& P, const Vec3& binormal, const ArcEnd& a, const ArcEnd& b, double R,
+                            double tol) {
   const double d1 = (a.convex ? -R : R) + a.radius, d2 = (b.convex ? -R : R) + b.radius;
   const Vec3 c12 = b.center - a.center;
   const double cx = norm(c12);
   if (!(cx > 1e-12)) return -1;
-  const Vec3 uc = c12 / cx;
+  const Vec3 uc = c12 / cx, across = unit(cross(binormal, uc));
   const double Cx = (d2 * d2 - d1 * d1 - cx * cx) / (-2 * cx);
   const double Cy = std::sqrt(std::max(0.0, d1 * d1 - Cx * Cx));
-  // The direction across the line of centres, in the corner's plane.
-  Vec3 across = (P - a.center) - uc * dot(P - a.center, uc);
-  if (norm(across) < 1e-12) return -1;
-  across = unit(across);
   const Vec3 c1 = a.center + uc * Cx + across * Cy, c2 = a.center + uc * Cx - across * Cy;
   const Vec3 C = norm(c1 - P) <= norm(c2 - P) ? c1 : c2;
-  if (norm(C - P) - R > tol) return -1;
-  auto angle = [](const Vec3& x, const Vec3& y) { return std::acos(std::clamp(dot(unit(x), unit(y)), -1.0, 1.0)); };
-  if (angle(P - a.center, C - a.center) > a.phi_max || angle(P - b.center, C - b.center) > b.phi_max) return -1;
-  const Vec3 start = a.center + unit(C - a.center) * a.radius, end = b.center + unit(C - b.center) * b.radius;
-  return R * angle(start - C, end - C);
+  if (angle_between(P - a.center, C - a.center) > a.phi_max || angle_between(P - b.center, C - b.center) > b.phi_max)
+    return -1;
+  return blend_length(P, C, a.center + unit(C - a.center) * a.radius, b.center + unit(C - b.center) * b.radius, R, tol);
 }
 
 // The length of the circle of radius R tangent to the line through P along
@@ -433,16 +436,13 @@ double line_arc_blend_length(const Vec3& P, const Vec3& u, const Vec3& binormal,
   const double d = (arc.convex ? -R : R) + arc.radius;
   const Vec3 r = arc.center - P;
   const double cu = dot(r, u), cn = dot(r, n);
-  const double disc = cu * cu - (cu * cu - d * d + (R - cn) * (R - cn));
+  const double disc = d * d - (R - cn) * (R - cn);
   if (disc < 0) return -1;
   const double dL = std::min(std::abs(-cu + std::sqrt(disc)), std::abs(-cu - std::sqrt(disc)));
   const Vec3 on_line = P + u * (line_first ? -dL : dL);
   const Vec3 C = on_line + n * R;
-  if (norm(C - P) - R > tol) return -1;
-  auto angle = [](const Vec3& x, const Vec3& y) { return std::acos(std::clamp(dot(unit(x), unit(y)), -1.0, 1.0)); };
-  if (angle(P - arc.center, C - arc.center) > arc.phi_max) return -1;
-  const Vec3 on_arc = arc.center + unit(C - arc.center) * arc.radius;
-  return R * angle(on_line - C, on_arc - C);
+  if (angle_between(P - arc.center, C - arc.center) > arc.phi_max) return -1;
+  return blend_length(P, C, on_line, arc.center + unit(C - arc.center) * arc.radius, R, tol);
 }
 
 // LinuxCNC's circle for an arc at the corner P where its tangent is u: an
@@ -453,9 +453,8 @@ ArcEnd spiral_fit(const PlanSegment& sg, const MotionBlock& b, const Vec3& P, co
   if ((b.kind != BlockKind::arc_cw && b.kind != BlockKind::arc_ccw) || !(arc_sweep(b) > 0)) return e;
   Vec3 c = to_plane(b.center, b.plane);
   c.z = to_plane(P, b.plane).z;  // in P's plane
-  Vec3 r0 = to_plane(b.from, b.plane) - c, r1 = to_plane(b.to, b.plane) - c;
-  r0.z = r1.z = 0;
-  e.center = from_plane(c, b.plane) + u * ((norm(r1) - norm(r0)) / arc_sweep(b));
+  const Arc a = block_arc(b);
+  e.center = from_plane(c, b.plane) + u * ((a.r_end() - a.r_start()) / arc_sweep(b));
   e.radius = norm(P - e.center);
   e.arc_block = true;
   return e;
@@ -526,11 +525,13 @@ double Builder::curved_corner(const PlanSegment& prev, const PlanSegment& next, 
     // one period.
     const Vec3 bn = cross(u1, u2);
     double len = -1;
-    if (end1.phi_max > 0 && end2.phi_max > 0)
-      len = arc_arc_blend_length(P, end1, end2, R, T);
-    else if (norm(bn) > 1e-12)
-      len = end1.phi_max > 0 ? line_arc_blend_length(P, u2, unit(bn), false, end1, R, T)
-                             : line_arc_blend_length(P, u1, unit(bn), true, end2, R, T);
+    if (norm(bn) > 1e-12) {
+      if (end1.phi_max > 0 && end2.phi_max > 0)
+        len = arc_arc_blend_length(P, unit(bn), end1, end2, R, T);
+      else
+        len = end1.phi_max > 0 ? line_arc_blend_length(P, u2, unit(bn), false, end1, R, T)
+                               : line_arc_blend_length(P, u1, unit(bn), true, end2, R, T);
+    }
     if (len < 0) return -1;
     v = std::min(v, len / period);
   } else if (model.min_segment_periods > 0) {

@@ -88,10 +88,9 @@ Vec3 block_tangent(const MotionBlock& b, bool end) {
       // In the plane's coordinates (a, b, axis), every plane is G17's.
       // The radius runs linearly from the start's to the end's: a
       // spiral leans the tangent outwards by (end - start radius) / sweep.
-      const Vec3 c = to_plane(b.center, b.plane);
-      Vec3 r = to_plane(end ? b.to : b.from, b.plane) - c, r0 = to_plane(b.from, b.plane) - c,
-           r1 = to_plane(b.to, b.plane) - c;
-      r.z = r0.z = r1.z = 0;
+      Vec3 r = to_plane(end ? b.to : b.from, b.plane) - to_plane(b.center, b.plane);
+      r.z = 0;
+      const Arc a = block_arc(b);
       Vec3 t = b.kind == BlockKind::arc_ccw ? Vec3{-r.y, r.x, 0} : Vec3{r.y, -r.x, 0};
       t = unit(t);
       const double L = block_length(b);
@@ -99,7 +98,7 @@ Vec3 block_tangent(const MotionBlock& b, bool end) {
       const double rr = norm(r);
       const int h = world_axis(b.plane, 2);
       if (L > 0 && rr > 0 && sweep > 0)
-        t = unit(t * (rr * sweep) + r * ((norm(r1) - norm(r0)) / rr) + Vec3{0, 0, b.to[h] - b.from[h]});
+        t = unit(t * (rr * sweep) + r * ((a.r_end() - a.r_start()) / rr) + Vec3{0, 0, b.to[h] - b.from[h]});
       return from_plane(t, b.plane);
     }
     default: {
