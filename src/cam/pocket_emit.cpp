@@ -33,6 +33,7 @@ class PocketCut {
     read_region();
     read_keys();
     plan();
+    fit_passes();
     plan_depths();
     for (size_t k = 0; k < levels_.size(); ++k) cut_level(k);
     up(safe_);
@@ -54,6 +55,7 @@ class PocketCut {
   void read_region();
   void read_keys();
   void plan();
+  void fit_passes();
   void plan_depths();
   void cut_level(size_t k);
   struct Entry {
@@ -90,6 +92,7 @@ class PocketCut {
       rapid({ms_.pos.x, ms_.pos.y, z});
   }
   int entity() const { return static_cast<int>(c_.entity.index); }
+  bool arcs_out() const { return c_.machine.arcs && c_.output != OutputMode::lines; }
 
   CutContext& c_;
   MotionState& ms_;
@@ -104,6 +107,10 @@ class PocketCut {
   PocketPattern pattern_ = PocketPattern::offset;
   PocketEntry entry_;
   PocketPlan plan_;
+  /// Arcs output: how far the passes' arcs may stand from their polylines
+  /// (0: lines), and each pass's moves in XY.
+  double fit_ = 0, sag_ = 0;
+  std::vector<std::vector<FitMove>> fits_;
   std::vector<double> levels_;
   size_t helix_fallbacks_ = 0;
   size_t first_move_ = 0;
@@ -114,7 +121,12 @@ void PocketCut::read_region() {
   const Entity& first = c_.entity;
   region_ = keys_.region.value_or(first.id.empty() ? first.label() : first.id);
   std::vector<std::vector<Bezier>> curves;
-  const double h = c_.tolerance / 4;
+  // Arcs output spends a share of the tolerance on drawing the passes as
+  // arcs (read_keys()): the walls take a quarter of what they take with
+  // lines, with their vertices on the curve, so that an offset ring's
+  // vertices lie on the exact offset and only its chords dip inside (half
+  // the band's spread about it, which the arcs through its vertices cover).
+  const double h = c_.tolerance / (arcs_out() ? 16 : 4);
   for (const Entity* e : members_) {
     const auto& g = e->curve;
     if (e->surface || g.pieces.empty())
@@ -128,6 +140,7 @@ void PocketCut::read_region() {
     curves.push_back(g.pieces);
     std::vector<Vec3> poly;
     FlattenOptions fo{h, -1};
+    fo.on_curve = arcs_out();
     wall_bound_ = std::max(wall_bound_, flatten_into(g.pieces, fo, poly));
     if (poly.size() > 1 && dxy(poly.front(), poly.back()) <= c_.tolerance) poly.pop_back();
     for (Vec3& v : poly) v.z = 0;
@@ -178,7 +191,19 @@ void PocketCut::read_keys() {
                         "\"center_cutting\": true in the tool table if it is)");
   }
   if (!entry_.radius) entry_.radius = radius_ / 2;
-  margin_ = wall_bound_ + max_rounding_displacement(c_.decimals, 2) + c_.tolerance * 1e-3;
+  const double rho = max_rounding_displacement(c_.decimals, 2);
+  margin_ = wall_bound_ + rho + c_.tolerance * 1e-3;
+  // Arcs (and NURBS, whose exact form of an offset is arcs): each pass is
+  // drawn as arcs within fit_ of its polyline, so the polylines keep fit_
+  // more off the walls. A ring's vertices lie on the exact offset of the
+  // walls, its chords dip inside by the walls' bound and the offsets' two
+  // errors (sag_, finer than with lines): fit_ covers that and the rounding
+  // of the centre words.
+  if (arcs_out()) {
+    sag_ = c_.tolerance / 80;
+    fit_ = wall_bound_ + 2 * sag_ + 2 * rho + c_.tolerance * 1e-3;
+    margin_ += fit_;
+  }
 }
 
 void PocketCut::plan() {
@@ -198,6 +223,8 @@ void PocketCut::plan() {
   in.margin = margin_;
   in.cell = c_.tolerance;
   in.helix_radius = entry_.kind == PocketEntry::Kind::helix ? *entry_.radius : 0;
+  in.fit = fit_;
+  in.sag = sag_;
   plan_ = plan_pocket(in);
   for (auto& pass : plan_.passes)
     for (Vec3& v : pass.pts) v = quantize(v, c_.decimals);
@@ -209,6 +236,14 @@ void PocketCut::plan() {
   if (entry_.kind == PocketEntry::Kind::helix && plan_.centres.eroded(*entry_.radius / 4, c_.tolerance * 1e-4).empty())
     fail("entry", "a helix of radius " + fmt_num(*entry_.radius / 4) + " or more fits nowhere in " + name() +
                       ": give \"entry\": {\"ramp\": {\"angle\": 3}} (or a smaller helix radius)");
+}
+
+// The passes as arcs and lines within fit_ of their polylines (pocket_arcs.cpp:
+// the bound proven after rounding), in XY.
+void PocketCut::fit_passes() {
+  if (fit_ <= 0) return;
+  const double rtol = c_.machine.arc_tolerance_mm / mm_per_unit(c_.job.units);
+  for (const PocketPass& p : plan_.passes) fits_.push_back(polyline_arcs(p.pts, fit_, c_.decimals, rtol));
 }
 
 void PocketCut::plan_depths() {
@@ -249,7 +284,23 @@ void PocketCut::cut_level(size_t k) {
       else
         enter(e, pass, z_from, z);
     }
-    for (size_t j = 1; j < pass.size(); ++j) line({pass[j].x, pass[j].y, z}, cp_.feed);
+    if (fits_.empty()) {
+      for (size_t j = 1; j < pass.size(); ++j) line({pass[j].x, pass[j].y, z}, cp_.feed);
+      continue;
+    }
+    for (const FitMove& f : fits_[i]) {
+      if (f.kind == FitKind::line) {
+        line({f.to.x, f.to.y, z}, cp_.feed);
+        continue;
+      }
+      ArcMove a;
+      a.to = quantize(Vec3{f.to.x, f.to.y, z}, c_.decimals);
+      a.center = {f.center.x, f.center.y, a.to.z};
+      a.ccw = f.kind == FitKind::arc_ccw;
+      a.feed = cp_.feed;
+      c_.program.moves.push_back({a, entity()});
+      ms_.pos = a.to;
+    }
   }
 }
 

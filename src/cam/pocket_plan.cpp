@@ -250,7 +250,8 @@ size_t clean_up(std::vector<PocketPass>& passes, const Area& region, const Area&
   for (int round = 0; round < 12; ++round) {
     std::vector<uint8_t> left = in_reach;
     for (const auto& p : passes)
-      for (size_t k = 0; k + 1 < p.pts.size(); ++k) g.stamp(p.pts[k], p.pts[k + 1], r + in.tolerance / 2, left, 0);
+      for (size_t k = 0; k + 1 < p.pts.size(); ++k)
+        g.stamp(p.pts[k], p.pts[k + 1], r + in.tolerance / 2 - in.fit, left, 0);
     const auto pieces = g.components(left, 1);
     if (pieces.empty()) break;
     struct Spur {
@@ -374,7 +375,7 @@ std::optional<Vec3> helix_centre(const Area& centres, const Vec3& p, double R, d
 PocketPlan plan_pocket(const PocketPlanInput& in) {
   PocketPlan plan;
   const Area region(in.walls);
-  const double sag = in.tolerance / 20;
+  const double sag = in.sag > 0 ? in.sag : in.tolerance / 20;
   const double d_wall = in.radius + in.stock + in.margin + 2 * sag;
   const double d0 = d_wall + in.finish;
   plan.centres = region.eroded(d_wall, sag);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bezcam/cam/pocket_check.hpp"
+#include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/job/job.hpp"
 #include "pocket_area.hpp"
 
@@ -27,6 +28,11 @@ struct PocketPlanInput {
   double load = 0;                  ///< adaptive: the radial depth of cut
   double cell = 0;                  ///< the grid the search for material left reads
   double helix_radius = 0;          ///< the entry's helix (0: no helix): rings start where one fits
+  /// The passes will be drawn within this of their polylines (arcs output):
+  /// the search for material left reads them that much shorter.
+  double fit = 0;
+  /// The offsets' chord and simplification error (0: tolerance / 20).
+  double sag = 0;
 };
 
 /// One pass: a polyline in XY in the order of travel (a ring repeats its
@@ -62,6 +68,13 @@ std::vector<PocketPass> adaptive_passes(const Area& region, const Area& centres,
 /// one used in `used`) whose circle, enlarged by `grow`, lies in `centres`
 /// and passes near p (a short straight line in `centres` joins them).
 std::optional<Vec3> helix_centre(const Area& centres, const Vec3& p, double R, double grow, double& used);
+
+/// The polyline (XY, its vertices printed as they are) as arcs and lines,
+/// greedily the longest, each within `tol` of the polyline both ways after
+/// the rounding of its centre words to `decimals` (its `bound`, proven in
+/// closed form: pocket_arcs.cpp), with |r_start - r_end| <= radius_tol.
+/// The blocks end at vertices of the polyline.
+std::vector<FitMove> polyline_arcs(const std::vector<Vec3>& polyline, double tol, int decimals, double radius_tol);
 
 /// The passes; InputError-free: the caller refuses an empty `centres`.
 PocketPlan plan_pocket(const PocketPlanInput& in);

@@ -1,0 +1,219 @@
+// A pass's polyline as arcs and lines within a distance of it (pocket_plan.hpp
+// polyline_arcs()), each block's bound proven in closed form.
+//
+// The proof for an arc. The printed arc runs from S about c' (S plus the
+// rounded I, J) to E, both vertices of the polyline; a controller draws the
+// spiral whose radius moves from r_s = |S - c'| to r_e = |E - c'| with the
+// angle, so every drawn point lies at a radius in [r_lo, r_hi] = [min, max]
+// of the two. Every vertex of the polyline between S and E lies in the arc's
+// sector (its angle about c' between S's and E's, in the direction of travel),
+// a convex set for a sweep below pi, so every point of the polyline does.
+// Then (1) a polyline point q at angle a is within | |q - c'| - r(a) | of the
+// drawn point at a, and (2) since the polyline runs continuously from S's
+// angle to E's, every drawn point has a polyline point at its angle, within
+// the same distance. |q - c'| along a segment is convex: its largest value is
+// at an end, its smallest the distance from c' to the segment; so the
+// segment's points are within max(max(d_a, d_b) - r_lo, r_hi - d_min) of the
+// drawn arc, both ways.
+//
+// The proof for a line from S to E: every vertex between lies within the
+// bound of the segment [S, E], hence every point of the polyline (the
+// distance to a segment is convex); the polyline's projection onto the
+// segment covers it, so every point of the segment is within the bound of
+// the polyline point that projects onto it.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "bezcam/flatten/tolerance.hpp"
+#include "pocket_grid.hpp"
+#include "pocket_plan.hpp"
+
+namespace bezcam::detail {
+
+namespace {
+
+double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// The arcs' limits: a sweep short of a half turn (the centre words stay
+// well conditioned), a radius a controller prints without trouble (and at
+// least 100 units of the last printed digit).
+constexpr double kMaxSweep = std::numbers::pi - 0.02;
+constexpr double kMaxRadius = 1e4;
+
+struct Span {
+  FitMove move;
+  size_t end = 0;  ///< the polyline vertex it ends at
+  bool ok = false;
+};
+
+class Fitter {
+ public:
+  Fitter(const std::vector<Vec3>& pts, double tol, int decimals, double radius_tol)
+      : p_(pts), tol_(tol), dec_(decimals), rtol_(radius_tol) {}
+
+  Span line(size_t i, size_t j) const {
+    Span s;
+    double worst = 0;
+    for (size_t k = i + 1; k < j && worst <= tol_; ++k) worst = std::max(worst, point_segment(p_[k], p_[i], p_[j]));
+    s.ok = worst <= tol_;
+    s.end = j;
+    s.move.kind = FitKind::line;
+    s.move.to = p_[j];
+    s.move.bound = worst;
+    return s;
+  }
+
+  Span arc(size_t i, size_t j) const {
+    Span s;
+    const Vec3 S = p_[i], E = p_[j];
+    const double h = dxy(S, E) / 2;
+    if (!(h > 0) || j < i + 2) return s;
+    const Vec3 M{(S.x + E.x) / 2, (S.y + E.y) / 2, 0};
+    const Vec3 n{-(E.y - S.y) / (2 * h), (E.x - S.x) / (2 * h), 0};  // left of S -> E
+    // The signed sagitta (the arc's middle point is M + sigma n) of the
+    // circle through S, E and the middle vertex, then the one that makes the
+    // polyline's radial spread least (golden-section steps about it).
+    const Vec3& q = p_[(i + j) / 2];
+    const double along = ((q.x - M.x) * (E.x - S.x) + (q.y - M.y) * (E.y - S.y)) / (2 * h);
+    const double off = (q.x - M.x) * n.x + (q.y - M.y) * n.y;
+    if (std::abs(along) >= h || std::abs(off) < 1e-12) return s;
+    const double t0 = (along * along + off * off - h * h) / (2 * off);  // centre M + t0 n
+    const double sig0 = off > 0 ? t0 + std::hypot(h, t0) : t0 - std::hypot(h, t0);
+    auto centre = [&](double sig, double& R) {
+      R = (h * h + sig * sig) / (2 * std::abs(sig));
+      const double t = sig - (sig > 0 ? R : -R);
+      return Vec3{M.x + n.x * t, M.y + n.y * t, 0};
+    };
+    auto spread = [&](double sig) {
+      double R = 0;
+      const Vec3 c = centre(sig, R);
+      double lo = 0, hi = 0;
+      for (size_t k = i; k < j; ++k) {
+        lo = std::min(lo, point_segment(c, p_[k], p_[k + 1]) - R);
+        hi = std::max(hi, dxy(p_[k + 1], c) - R);
+      }
+      return std::max(-lo, hi);
+    };
+    double a = sig0 - 2 * tol_, b = sig0 + 2 * tol_;
+    if ((a > 0) != (sig0 > 0)) a = sig0 > 0 ? sig0 / 4 : a;
+    if ((b > 0) != (sig0 > 0)) b = sig0 < 0 ? sig0 / 4 : b;
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    double x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = spread(x1), f2 = spread(x2);
+    for (int it = 0; it < 24; ++it) {
+      if (f1 <= f2)
+        b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = spread(x1);
+      else
+        a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = spread(x2);
+    }
+    const double sig = f1 <= f2 ? x1 : x2;
+    if (std::abs(sig) >= h) return s;  // half a turn or more
+    double R = 0;
+    const Vec3 c = centre(sig, R);
+    // A radius a few printed digits long would be refused (LinuxCNC's
+    // "zero-radius arc") or drawn with a large relative error: lines there.
+    if (!(R < kMaxRadius) || R < 100 * std::pow(10.0, -dec_)) return s;
+    return certify(i, j, c, sig < 0);
+  }
+
+ private:
+  // The printed arc about c (rounded through I, J) from p_[i] to p_[j] and
+  // its proven distance from the polyline between (above: why).
+  Span certify(size_t i, size_t j, const Vec3& c, bool ccw) const {
+    Span s;
+    const Vec3 S = p_[i], E = p_[j];
+    const Vec3 ij = quantize(Vec3{c.x - S.x, c.y - S.y, 0}, dec_);
+    const Vec3 cc{S.x + ij.x, S.y + ij.y, 0};
+    const double rs = dxy(S, cc), re = dxy(E, cc);
+    if (std::abs(rs - re) > rtol_) return s;
+    const double lo = std::min(rs, re), hi = std::max(rs, re);
+    const double turn = ccw ? 1 : -1;
+    auto angle = [&](const Vec3& v) {  // from S about cc in the direction of travel, in [0, 2 pi)
+      const double ux = S.x - cc.x, uy = S.y - cc.y, vx = v.x - cc.x, vy = v.y - cc.y;
+      double t = std::atan2(turn * (ux * vy - uy * vx), ux * vx + uy * vy);
+      if (t < 0) t += 2 * std::numbers::pi;
+      return t;
+    };
+    const double sweep = angle(E);
+    if (!(sweep > 0) || sweep > kMaxSweep) return s;
+    double worst = 0;
+    for (size_t k = i; k < j; ++k) {
+      if (k > i && angle(p_[k]) > sweep) return s;
+      const double da = dxy(p_[k], cc), db = dxy(p_[k + 1], cc), dm = point_segment(cc, p_[k], p_[k + 1]);
+      worst = std::max({worst, std::max(da, db) - lo, hi - dm});
+      if (worst > tol_) return s;
+    }
+    // Rounding of the arithmetic: a few ulps of the coordinates' size.
+    worst += 1e-12 * (hi + std::abs(S.x) + std::abs(S.y));
+    if (worst > tol_) return s;
+    s.ok = true;
+    s.end = j;
+    s.move.kind = ccw ? FitKind::arc_ccw : FitKind::arc_cw;
+    s.move.to = E;
+    s.move.center = cc;
+    s.move.ij = ij;
+    s.move.bound = worst;
+    return s;
+  }
+
+  const std::vector<Vec3>& p_;
+  double tol_;
+  int dec_;
+  double rtol_;
+};
+
+// The farthest end j > i for which `fits` holds, searched by doubling and
+// bisection from i + first (taken to hold when nothing farther does).
+template <class F>
+Span farthest(size_t i, size_t first, size_t n, F fits) {
+  Span best;
+  size_t good = 0, step = 1, j = i + first;
+  if (j >= n) return best;
+  Span s = fits(j);
+  if (!s.ok) return best;
+  best = s, good = j;
+  size_t bad = n;
+  while (good + step < n) {
+    s = fits(good + step);
+    if (!s.ok) {
+      bad = good + step;
+      break;
+    }
+    best = s, good += step, step *= 2;
+  }
+  if (bad == n && good + 1 < n) {
+    s = fits(n - 1);
+    if (s.ok) return s;
+    bad = n - 1;
+  }
+  while (bad - good > 1) {
+    const size_t mid = good + (bad - good) / 2;
+    s = fits(mid);
+    if (s.ok)
+      best = s, good = mid;
+    else
+      bad = mid;
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<FitMove> polyline_arcs(const std::vector<Vec3>& polyline, double tol, int decimals, double radius_tol) {
+  std::vector<Vec3> p;
+  for (const Vec3& v : polyline)
+    if (p.empty() || dxy(p.back(), v) > 0) p.push_back({v.x, v.y, 0});
+  std::vector<FitMove> out;
+  const Fitter fit(p, tol, decimals, radius_tol);
+  for (size_t i = 0; i + 1 < p.size();) {
+    const Span ln = farthest(i, 1, p.size(), [&](size_t j) { return fit.line(i, j); });
+    const Span ar = farthest(i, 2, p.size(), [&](size_t j) { return fit.arc(i, j); });
+    const Span& take = ar.ok && ar.end > ln.end ? ar : ln;
+    out.push_back(take.move);
+    i = take.end;
+  }
+  return out;
+}
+
+}  // namespace bezcam::detail

@@ -1,0 +1,203 @@
+// A pocket's passes as arcs (cam/pocket_arcs.cpp, docs/pocket.md): every
+// block's bound is checked here by sampling both ways (the drawn arc, a
+// spiral when its printed radii differ, against the polyline), and a pocket
+// cut in arcs output is read back from its moves.
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <numbers>
+#include <random>
+
+#include "bezcam/cam/pocket_check.hpp"
+#include "bezcam/cam/program.hpp"
+#include "bezcam/flatten/tolerance.hpp"
+#include "bezcam/job/job_json.hpp"
+#include "cam/pocket_plan.hpp"
+#include "support/pocket_shapes.hpp"
+
+namespace bezcam {
+namespace {
+
+double seg_dist(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+  return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+}
+
+// Points of the block drawn from `from` (a controller's spiral: the radius
+// moving linearly with the angle from the start's to the end's).
+std::vector<Vec3> drawn(const Vec3& from, const FitMove& m, int n) {
+  std::vector<Vec3> out;
+  if (m.kind == FitKind::line) {
+    for (int k = 0; k <= n; ++k)
+      out.push_back({from.x + (m.to.x - from.x) * k / n, from.y + (m.to.y - from.y) * k / n, 0});
+    return out;
+  }
+  const Vec3 c = m.center;
+  const double rs = std::hypot(from.x - c.x, from.y - c.y), re = std::hypot(m.to.x - c.x, m.to.y - c.y);
+  const double a0 = std::atan2(from.y - c.y, from.x - c.x);
+  double sweep = std::atan2(m.to.y - c.y, m.to.x - c.x) - a0;
+  if (m.kind == FitKind::arc_ccw && sweep <= 0) sweep += 2 * std::numbers::pi;
+  if (m.kind == FitKind::arc_cw && sweep >= 0) sweep -= 2 * std::numbers::pi;
+  for (int k = 0; k <= n; ++k) {
+    const double t = static_cast<double>(k) / n, r = rs + (re - rs) * t;
+    out.push_back({c.x + r * std::cos(a0 + sweep * t), c.y + r * std::sin(a0 + sweep * t), 0});
+  }
+  return out;
+}
+
+// Each block against the stretch of polyline it replaces, both ways, by
+// sampling; returns the largest reading and checks it against each bound.
+double check_blocks(const std::vector<Vec3>& poly, const std::vector<FitMove>& moves, double tol) {
+  double worst = 0;
+  size_t at = 0;
+  Vec3 from = poly.front();
+  for (const FitMove& m : moves) {
+    EXPECT_LE(m.bound, tol);
+    // The block ends at a vertex of the polyline after `at`.
+    size_t end = at + 1;
+    while (end < poly.size() && !(poly[end].x == m.to.x && poly[end].y == m.to.y)) ++end;
+    EXPECT_LT(end, poly.size()) << "block ends off the polyline";
+    if (end >= poly.size()) return 1e300;
+    const int n = 2000;
+    const auto pts = drawn(from, m, n);
+    // The samples of the drawn block are chords of it: their sagitta is
+    // allowed on top of the bound.
+    double sag = 0;
+    if (m.kind != FitKind::line) {
+      const double r = std::max(std::hypot(from.x - m.center.x, from.y - m.center.y),
+                                std::hypot(m.to.x - m.center.x, m.to.y - m.center.y));
+      sag = r * (1 - std::cos(std::numbers::pi / n));
+    }
+    double d = 0;
+    for (const Vec3& p : pts) {
+      double best = 1e300;
+      for (size_t k = at; k < end; ++k) best = std::min(best, seg_dist(p, poly[k], poly[k + 1]));
+      d = std::max(d, best);
+    }
+    for (size_t k = at; k < end; ++k)
+      for (int s = 0; s <= 10; ++s) {
+        const Vec3 q{poly[k].x + (poly[k + 1].x - poly[k].x) * s / 10, poly[k].y + (poly[k + 1].y - poly[k].y) * s / 10,
+                     0};
+        double best = 1e300;
+        for (size_t i = 1; i < pts.size(); ++i) best = std::min(best, seg_dist(q, pts[i - 1], pts[i]));
+        d = std::max(d, best);
+      }
+    EXPECT_LE(d, m.bound + sag + 1e-9) << "block ending at " << m.to.x << ", " << m.to.y;
+    worst = std::max(worst, d - sag);
+    from = m.to;
+    at = end;
+  }
+  EXPECT_EQ(at, poly.size() - 1);
+  return worst;
+}
+
+TEST(PocketArcs, ARingRoundACircleWithItsChordErrorBecomesFourArcs) {
+  // The offset of a circle flattened with its vertices on the curve within
+  // 0.00125, 4 decimals: the vertices on the offset, the chords dipping.
+  std::vector<Vec3> poly;
+  const double a = 0.00125, R = 15;
+  const int n = static_cast<int>(std::ceil(std::numbers::pi / std::acos((R - a) / R)));
+  for (int i = 0; i <= n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    poly.push_back(quantize(Vec3{40 + R * std::cos(t), 30 + R * std::sin(t), 0}, 4));
+  }
+  poly.back() = poly.front();
+  const auto moves = detail::polyline_arcs(poly, 0.0025, 4, 0.002);
+  EXPECT_LE(moves.size(), 4u);
+  Vec3 from = poly.front();
+  for (const FitMove& m : moves) {
+    EXPECT_EQ(m.kind, FitKind::arc_ccw);
+    // Every arc longer than a tenth of the turn is the circle itself.
+    if (std::hypot(m.to.x - from.x, m.to.y - from.y) > 2 * 15 * std::sin(std::numbers::pi / 10))
+      EXPECT_NEAR(std::hypot(m.center.x - 40, m.center.y - 30), 0, 0.01);
+    from = m.to;
+  }
+  check_blocks(poly, moves, 0.0025);
+}
+
+TEST(PocketArcs, EveryBlockOfRandomPassesKeepsItsBound) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int run = 0; run < 12; ++run) {
+    SCOPED_TRACE(run);
+    // Arcs of random radii and turns, straight runs and corners, with noise.
+    std::vector<Vec3> poly{{0, 0, 0}};
+    double heading = u(rng) * std::numbers::pi;
+    for (int piece = 0; piece < 8; ++piece) {
+      const double radius = 2 + 20 * (u(rng) + 1), turn = u(rng) * 2, step = 0.2 + 0.3 * (u(rng) + 1);
+      const bool straight = u(rng) > 0.5;
+      for (int k = 0; k < 30; ++k) {
+        if (!straight) heading += turn * step / radius;
+        const Vec3& p = poly.back();
+        poly.push_back(quantize(
+            Vec3{p.x + step * std::cos(heading) + 0.002 * u(rng), p.y + step * std::sin(heading) + 0.002 * u(rng), 0},
+            3));
+      }
+      heading += u(rng) * 1.5;  // a corner
+    }
+    for (double tol : {0.002, 0.005, 0.02}) {
+      const auto moves = detail::polyline_arcs(poly, tol, 3, 0.002);
+      EXPECT_LT(moves.size(), poly.size() - 1);
+      EXPECT_LE(check_blocks(poly, moves, tol), tol + 1e-6);
+    }
+  }
+}
+
+TEST(PocketArcs, ALoopAFewDigitsAcrossStaysLines) {
+  // A pass's last, vanishing ring: LinuxCNC refuses an arc of radius 0.0009
+  // ("zero-radius arc"), and its words would hold a few digits.
+  const std::vector<Vec3> loop{{29.8753, 17.1806, 0},
+                               {29.8747, 17.1814, 0},
+                               {29.8753, 17.1822, 0},
+                               {29.8759, 17.1814, 0},
+                               {29.8753, 17.1806, 0}};
+  std::vector<Vec3> poly = loop;
+  for (const FitMove& m : detail::polyline_arcs(poly, 0.0005, 4, 0.002)) EXPECT_EQ(m.kind, FitKind::line);
+  // A loop of radius 0.5 is arcs.
+  poly.clear();
+  for (int i = 0; i <= 60; ++i) {
+    const double t = 2 * std::numbers::pi * i / 60;
+    poly.push_back(quantize(Vec3{29.875 + 0.5 * std::cos(t), 17.1814 + 0.5 * std::sin(t), 0}, 4));
+  }
+  poly.back() = poly.front();
+  const auto moves = detail::polyline_arcs(poly, 0.002, 4, 0.002);
+  EXPECT_TRUE(std::any_of(moves.begin(), moves.end(), [](const FitMove& m) { return m.kind != FitKind::line; }));
+}
+
+Program plate(const std::string& output, const std::string& machine) {
+  using namespace test::shapes;
+  const std::string json =
+      R"({"bezcam":1,"tolerance":0.01,"job":{"feed":600,"plunge_feed":100,"safe_z":5,"top_z":0,"clearance":1,)"
+      R"("cut_z":-3,"tool_diameter":6,"operation":"pocket","region":"p","stepover":2.4},"entities":[)" +
+      polygon({{0, 0}, {60, 0}, {60, 40}, {0, 40}}) + "," + circle(18, 20, 6) + "," + circle(42, 20, 6) + "]}";
+  ConvertOptions o;
+  o.output = parse_output_mode(output);
+  return build_program(parse_job(json, "pocket.json"), load_machine_profile(machine), o);
+}
+
+TEST(PocketArcs, ArcsOutputCutsThePocketInArcsWithTheSameCertificate) {
+  for (const char* machine : {"linuxcnc", "fanuc", "grbl"}) {
+    SCOPED_TRACE(machine);
+    const Program lines = plate("lines", machine), arcs = plate("arcs", machine);
+    size_t arc_moves = 0;
+    for (const Move& m : arcs.moves)
+      if (const auto* a = std::get_if<ArcMove>(&m.what); a && std::abs(a->to.z + 3) < 1e-9) ++arc_moves;
+    // The rings round the bosses are arcs at depth (the helix's full turn is 2).
+    EXPECT_GT(arc_moves, 20u);
+    EXPECT_LT(arcs.moves.size() * 3, lines.moves.size());
+    for (const Program* p : {&lines, &arcs}) {
+      const PocketCertificate* c = nullptr;
+      for (const auto& e : p->entities)
+        if (e.pocket) c = &*e.pocket;
+      ASSERT_NE(c, nullptr);
+      EXPECT_EQ(c->uncut_area, 0);
+      EXPECT_GE(c->wall_distance, 3);
+      EXPECT_LE(c->wall_distance, 3.01);
+      EXPECT_EQ(c->rapids_in_material, 0u);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bezcam
