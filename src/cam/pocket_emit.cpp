@@ -193,8 +193,8 @@ void PocketCut::read_keys() {
   if (!entry_.radius) entry_.radius = radius_ / 2;
   const double rho = max_rounding_displacement(c_.decimals, 2);
   margin_ = wall_bound_ + rho + c_.tolerance * 1e-3;
-  // Arcs (and NURBS, whose exact form of an offset is arcs): each pass is
-  // drawn as arcs within fit_ of its polyline, so the polylines keep fit_
+  // Arcs (and NURBS: the passes are arcs and lines, which G02/G03 print
+  // exactly): each pass is drawn as arcs within fit_ of its polyline, so the polylines keep fit_
   // more off the walls. A ring's vertices lie on the exact offset of the
   // walls, its chords dip inside by the walls' bound and the offsets' two
   // errors (sag_, finer than with lines): fit_ covers that and the rounding
