@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "run_command_line.hpp"
 
 namespace bezcam::cli {
 
@@ -60,11 +61,5 @@ class CommandLine {
   std::vector<Subcommand> subcommands_;
   std::vector<std::string> argv_;  ///< as parse() was given it
 };
-
-/// What main() does: parses `argv`, runs the subcommand and returns the
-/// exit status (exit_status.hpp). --help and --version print on stdout;
-/// usage errors and refusals on stderr as `bezcam: error: ...` with the
-/// error's id.
-int run_command_line(const std::vector<std::string>& argv);
 
 }  // namespace bezcam::cli

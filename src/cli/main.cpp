@@ -6,6 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "run_command_line.hpp"
 
 int main(int argc, char** argv) { return bezcam::cli::run_command_line(std::vector<std::string>(argv, argv + argc)); }

@@ -2,6 +2,8 @@
 // subcommand's options land in its arguments struct, CLI11's refusals come
 // before anything runs, and a command line run in-process prints what the
 // executable prints and ends with the same status.
+#include "cli/command_line.hpp"
+
 #include <algorithm>
 #include <gtest/gtest.h>
 #include <iterator>
@@ -15,8 +17,17 @@
 
 namespace {
 
-using bezcam::test::parse_cli;
 using bezcam::test::run_cli;
+
+/// The arguments a command line is parsed into (CLI::ParseError when
+/// CLI11 refuses it), without running the command.
+bezcam::cli::Arguments parse_cli(const std::vector<std::string>& args) {
+  bezcam::cli::CommandLine command_line;
+  std::vector<std::string> argv{"bezcam"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  command_line.parse(argv);
+  return command_line.args();
+}
 
 const std::string kSemicircle = std::string(BEZCAM_SOURCE_DIR) + "/samples/curve-semicircle.json";
 

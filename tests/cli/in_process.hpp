@@ -1,5 +1,5 @@
 #pragma once
-// bezcam command lines run in this process (src/cli/command_line.hpp): the
+// bezcam command lines run in this process (src/cli/run_command_line.hpp): the
 // exit status and what the command printed on stdout and stderr, as
 // testproc::run gives them for the executable, without starting it. For
 // tests of options, refusals and exit statuses; what needs a real process
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/command_line.hpp"
+#include "cli/run_command_line.hpp"
 #include "support/run_process.hpp"
 
 namespace bezcam::test {
@@ -53,16 +53,6 @@ inline testproc::Result run_cli(const std::vector<std::string>& args, const std:
   r.out = capture.out.str();
   r.err = capture.err.str();
   return r;
-}
-
-/// The arguments a command line is parsed into (CLI::ParseError when
-/// CLI11 refuses it), without running the command.
-inline cli::Arguments parse_cli(const std::vector<std::string>& args) {
-  cli::CommandLine command_line;
-  std::vector<std::string> argv{"bezcam"};
-  argv.insert(argv.end(), args.begin(), args.end());
-  command_line.parse(argv);
-  return command_line.args();
 }
 
 }  // namespace bezcam::test
