@@ -15,8 +15,6 @@ namespace bezcam::detail {
 
 namespace {
 
-double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
 // The tool centre's circle: its centre and radius as printed.
 struct BoreCircle {
   Vec3 centre;
@@ -110,7 +108,7 @@ void emit_bore(CutContext& c, MotionState& ms, EntityReport& r, const HoleShape&
       const double s = static_cast<double>(j) / chords;
       Vec3 to = point((k + s) * std::numbers::pi, z0 + (z1 - z0) * s);
       if (j == chords) to = point((k + 1) * std::numbers::pi, z1);  // the half turns' ends exactly opposite
-      measured = std::max(measured, std::abs(dxy(to, b.centre) - b.radius));
+      measured = std::max(measured, std::abs(dist_xy(to, b.centre) - b.radius));
       if (arcs) {
         ArcMove m;
         m.to = to;
@@ -121,7 +119,7 @@ void emit_bore(CutContext& c, MotionState& ms, EntityReport& r, const HoleShape&
       } else {
         // The chord's middle is nearer the centre than the circle by its sagitta.
         const Vec3 mid{(at.x + to.x) / 2, (at.y + to.y) / 2, 0};
-        measured = std::max(measured, b.radius - dxy(mid, b.centre));
+        measured = std::max(measured, b.radius - dist_xy(mid, b.centre));
         LineMove l;
         l.to = to;
         l.feed = feed;
@@ -158,8 +156,8 @@ void emit_bore(CutContext& c, MotionState& ms, EntityReport& r, const HoleShape&
   // shortfall, the printed points' rounding, the chords' sagitta, and the
   // circle's own distance from the drawn curve.
   const double sagitta = arcs ? 0 : b.radius * (1 - std::cos(std::numbers::pi / (2 * chords)));
-  r.measured = measured + b.shortfall + dxy(b.centre, h.centre);
-  r.bound = h.bound + b.shortfall + dxy(b.centre, h.centre) + sagitta + max_rounding_displacement(c.decimals, 2);
+  r.measured = measured + b.shortfall + dist_xy(b.centre, h.centre);
+  r.bound = h.bound + b.shortfall + dist_xy(b.centre, h.centre) + sagitta + max_rounding_displacement(c.decimals, 2);
 }
 
 }  // namespace bezcam::detail

@@ -18,8 +18,6 @@ namespace bezcam::detail {
 
 namespace {
 
-double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
 bool is_hole(const CutParams& cp) {
   return cp.pocket.operation == Operation::drill || cp.pocket.operation == Operation::bore;
 }
@@ -98,7 +96,7 @@ std::optional<HoleShape> fit_circle(std::span<const Bezier> pieces, bool closed,
       if (dir == 0 || (turn != 0 && dir != turn)) return std::nullopt;
       turn = dir;
       const Arc arc{s, e, h->centre, dir > 0, Plane::xy};
-      const double ends = std::max(std::abs(dxy(s, h->centre) - r), std::abs(dxy(e, h->centre) - r));
+      const double ends = std::max(std::abs(dist_xy(s, h->centre) - r), std::abs(dist_xy(e, h->centre) - r));
       if (ends > tolerance) return std::nullopt;
       const double d = arc_span_deviation(b, t0, t1, arc, -1, tolerance * 1e-3);
       if (!(d + ends <= tolerance)) return std::nullopt;
@@ -312,7 +310,7 @@ void emit_drill(CutContext& c, MotionState& ms, EntityReport& r, double safe, bo
   r.tool_width = d.diameter.value_or(0);
   // The hole's axis where the centre is, up to the printed digits; a
   // circle's centre within its proven distance from the curve.
-  r.measured = dxy(d.cycle.at, d.shape.centre);
+  r.measured = dist_xy(d.cycle.at, d.shape.centre);
   r.bound = d.shape.bound + max_rounding_displacement(c.decimals, 2);
 }
 

@@ -34,8 +34,6 @@ namespace bezcam::detail {
 
 namespace {
 
-double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
 // The arcs' limits: a sweep short of a half turn (the centre words stay
 // well conditioned), a radius a controller prints without trouble (and at
 // least 100 units of the last printed digit).
@@ -68,7 +66,7 @@ class Fitter {
   Span arc(size_t i, size_t j) const {
     Span s;
     const Vec3 S = p_[i], E = p_[j];
-    const double h = dxy(S, E) / 2;
+    const double h = dist_xy(S, E) / 2;
     if (!(h > 0) || j < i + 2) return s;
     const Vec3 M{(S.x + E.x) / 2, (S.y + E.y) / 2, 0};
     const Vec3 n{-(E.y - S.y) / (2 * h), (E.x - S.x) / (2 * h), 0};  // left of S -> E
@@ -92,7 +90,7 @@ class Fitter {
       double lo = 0, hi = 0;
       for (size_t k = i; k < j; ++k) {
         lo = std::min(lo, point_segment(c, p_[k], p_[k + 1]) - R);
-        hi = std::max(hi, dxy(p_[k + 1], c) - R);
+        hi = std::max(hi, dist_xy(p_[k + 1], c) - R);
       }
       return std::max(-lo, hi);
     };
@@ -125,7 +123,7 @@ class Fitter {
     const Vec3 S = p_[i], E = p_[j];
     const Vec3 ij = quantize(Vec3{c.x - S.x, c.y - S.y, 0}, dec_);
     const Vec3 cc{S.x + ij.x, S.y + ij.y, 0};
-    const double rs = dxy(S, cc), re = dxy(E, cc);
+    const double rs = dist_xy(S, cc), re = dist_xy(E, cc);
     if (std::abs(rs - re) > rtol_) return s;
     const double lo = std::min(rs, re), hi = std::max(rs, re);
     const double turn = ccw ? 1 : -1;
@@ -140,7 +138,7 @@ class Fitter {
     double worst = 0;
     for (size_t k = i; k < j; ++k) {
       if (k > i && angle(p_[k]) > sweep) return s;
-      const double da = dxy(p_[k], cc), db = dxy(p_[k + 1], cc), dm = point_segment(cc, p_[k], p_[k + 1]);
+      const double da = dist_xy(p_[k], cc), db = dist_xy(p_[k + 1], cc), dm = point_segment(cc, p_[k], p_[k + 1]);
       worst = std::max({worst, std::max(da, db) - lo, hi - dm});
       if (worst > tol_) return s;
     }
@@ -203,7 +201,7 @@ Span farthest(size_t i, size_t first, size_t n, F fits) {
 std::vector<FitMove> polyline_arcs(const std::vector<Vec3>& polyline, double tol, int decimals, double radius_tol) {
   std::vector<Vec3> p;
   for (const Vec3& v : polyline)
-    if (p.empty() || dxy(p.back(), v) > 0) p.push_back({v.x, v.y, 0});
+    if (p.empty() || dist_xy(p.back(), v) > 0) p.push_back({v.x, v.y, 0});
   std::vector<FitMove> out;
   const Fitter fit(p, tol, decimals, radius_tol);
   for (size_t i = 0; i + 1 < p.size();) {

@@ -19,8 +19,6 @@ namespace bezcam::detail {
 
 namespace {
 
-double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
 class PocketCut {
  public:
   PocketCut(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear,
@@ -132,7 +130,7 @@ void PocketCut::read_region() {
     if (e->surface || g.pieces.empty())
       fail("operation", e->label() + " is not a curve: only closed curves bound a pocket");
     const Vec3 a = g.pieces.front().front(), b = g.pieces.back().back();
-    if (!g.closed && dxy(a, b) > c_.tolerance)
+    if (!g.closed && dist_xy(a, b) > c_.tolerance)
       throw InputError(errc::job_pocket, Place::in_json(c_.job.source, e->json_path() + ".operation"),
                        e->label() + " is open (its ends (" + fmt_num(a.x, 6) + ", " + fmt_num(a.y, 6) + ") and (" +
                            fmt_num(b.x, 6) + ", " + fmt_num(b.y, 6) +
@@ -142,7 +140,7 @@ void PocketCut::read_region() {
     FlattenOptions fo{h, -1};
     fo.on_curve = arcs_out();
     wall_bound_ = std::max(wall_bound_, flatten_into(g.pieces, fo, poly));
-    if (poly.size() > 1 && dxy(poly.front(), poly.back()) <= c_.tolerance) poly.pop_back();
+    if (poly.size() > 1 && dist_xy(poly.front(), poly.back()) <= c_.tolerance) poly.pop_back();
     for (Vec3& v : poly) v.z = 0;
     walls_.push_back(std::move(poly));
   }
@@ -325,7 +323,7 @@ PocketCut::Entry PocketCut::entry_for(const std::vector<Vec3>& pass, bool count)
   }
   e.helix = true;
   e.cen = quantize(*found, c_.decimals);
-  const double far = dxy(e.cen, e.at);
+  const double far = dist_xy(e.cen, e.at);
   // The circle's point nearest the pass's start: the helix runs through it.
   e.at = quantize(Vec3{e.cen.x + (e.at.x - e.cen.x) * used / far, e.cen.y + (e.at.y - e.cen.y) * used / far, 0},
                   c_.decimals);
@@ -349,7 +347,7 @@ void PocketCut::enter(const Entry& e, const std::vector<Vec3>& pass, double z_fr
 // full turn at z.
 void PocketCut::helix(const Entry& e, double z_from, double z) {
   const Vec3 cen = e.cen, s0 = e.at;
-  const double rad = dxy(cen, s0);
+  const double rad = dist_xy(cen, s0);
   const double drop = std::numbers::pi * rad * std::tan(entry_.angle * std::numbers::pi / 180);
   int n = std::max(2, static_cast<int>(std::ceil((z_from - z) / drop)));
   n += n % 2;
@@ -372,7 +370,7 @@ void PocketCut::helix(const Entry& e, double z_from, double z) {
 // Down along the pass and back at the entry's angle until at z.
 void PocketCut::ramp(const std::vector<Vec3>& pass, double z_from, double z) {
   double len = 0;
-  for (size_t i = 1; i < pass.size(); ++i) len += dxy(pass[i - 1], pass[i]);
+  for (size_t i = 1; i < pass.size(); ++i) len += dist_xy(pass[i - 1], pass[i]);
   const double need = (z_from - z) / std::tan(entry_.angle * std::numbers::pi / 180);
   const double half = std::min(len, need / 2);
   if (!(half > 0)) {
@@ -385,7 +383,7 @@ void PocketCut::ramp(const std::vector<Vec3>& pass, double z_from, double z) {
   std::vector<Vec3> out{pass.front()};
   std::vector<double> at{0};
   for (size_t i = 1; i < pass.size() && at.back() < half; ++i) {
-    const double l = dxy(pass[i - 1], pass[i]);
+    const double l = dist_xy(pass[i - 1], pass[i]);
     if (at.back() + l <= half) {
       out.push_back(pass[i]);
       at.push_back(at.back() + l);

@@ -17,8 +17,6 @@ namespace bezcam::detail {
 
 namespace {
 
-double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
 PocketPass pass_of(std::vector<Vec3> pts, bool linked) {
   PocketPass p;
   p.pts = std::move(pts);
@@ -37,11 +35,11 @@ std::vector<Vec3> closed_pass(std::vector<Vec3> ring, bool climb) {
 
 // The ring turned to start at its vertex nearest `p`.
 void start_near(std::vector<Vec3>& pts, const Vec3& p) {
-  if (pts.size() < 3 || dxy(pts.front(), pts.back()) > 0) return;
+  if (pts.size() < 3 || dist_xy(pts.front(), pts.back()) > 0) return;
   pts.pop_back();
   size_t best = 0;
   for (size_t i = 1; i < pts.size(); ++i)
-    if (dxy(pts[i], p) < dxy(pts[best], p)) best = i;
+    if (dist_xy(pts[i], p) < dist_xy(pts[best], p)) best = i;
   std::rotate(pts.begin(), pts.begin() + static_cast<long>(best), pts.end());
   pts.push_back(pts.front());
 }
@@ -163,7 +161,7 @@ std::vector<PocketPass> zigzag_lines(const Area& region, const PocketPlanInput& 
       const bool adjacent = !out.empty() && (segs[k].line == cur_line + 1 || segs[k].line + 1 == cur_line);
       for (int e = 0; e < 2; ++e) {
         const Vec3& p = e == 0 ? segs[k].a : segs[k].b;
-        const double d = dxy(p, at);
+        const double d = dist_xy(p, at);
         const bool ok = adjacent && d <= 2 * in.stepover && inner.covers(at, p);
         if ((ok && !near) || (ok == near && d < bd)) best = k, flip = e == 1, bd = d, near = ok;
       }
@@ -189,13 +187,13 @@ std::vector<PocketPass> zigzag_lines(const Area& region, const PocketPlanInput& 
 // A ring entered anew starts where a helix fits: at its start, else at the
 // middle of one of its longest edges.
 void start_where_helix_fits(std::vector<Vec3>& pts, const Area& centres, double R) {
-  if (R <= 0 || pts.size() < 4 || dxy(pts.front(), pts.back()) > 0) return;
+  if (R <= 0 || pts.size() < 4 || dist_xy(pts.front(), pts.back()) > 0) return;
   double used = 0;
   if (helix_centre(centres, pts.front(), R, 0, used)) return;
   std::vector<size_t> edges(pts.size() - 1);
   for (size_t i = 0; i < edges.size(); ++i) edges[i] = i;
   std::sort(edges.begin(), edges.end(),
-            [&](size_t a, size_t b) { return dxy(pts[a], pts[a + 1]) > dxy(pts[b], pts[b + 1]); });
+            [&](size_t a, size_t b) { return dist_xy(pts[a], pts[a + 1]) > dist_xy(pts[b], pts[b + 1]); });
   for (size_t k = 0; k < edges.size() && k < 6; ++k) {
     const size_t e = edges[k];
     const Vec3 mid{(pts[e].x + pts[e + 1].x) / 2, (pts[e].y + pts[e + 1].y) / 2, 0};
@@ -215,7 +213,7 @@ void link(std::vector<PocketPass>& passes, const Area& centres, double r, double
     const Vec3 end = passes[i - 1].pts.back();
     start_near(p.pts, end);
     const Vec3 to = p.pts.front();
-    const double len = dxy(end, to);
+    const double len = dist_xy(end, to);
     if (!centres.covers(end, to)) continue;
     const int n = std::max(1, static_cast<int>(std::ceil(len / (r / 8))));
     bool cleared = true;
@@ -273,7 +271,7 @@ size_t clean_up(std::vector<PocketPass>& passes, const Area& region, const Area&
           bd = d;
           best = {i, k, {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), 0}, {}};
         }
-      const double d = dxy(q, best.a);
+      const double d = dist_xy(q, best.a);
       if (d <= r) continue;  // within reach already: a sample at the grid's edge
       const double f = (d - r + in.tolerance / 4) / d;
       best.t = {best.a.x + (q.x - best.a.x) * f, best.a.y + (q.y - best.a.y) * f, 0};
@@ -315,7 +313,7 @@ std::vector<PocketPass> rest_parts(const std::vector<PocketPass>& passes, const 
     for (long j = std::max(0L, cj - reach_cells); j <= std::min(g.ny - 1, cj + reach_cells); ++j)
       for (long i = std::max(0L, ci - reach_cells); i <= std::min(g.nx - 1, ci + reach_cells); ++i) {
         const size_t k = static_cast<size_t>(j * g.nx + i);
-        if (left[k] && dxy(g.sample(k), p) <= r + g.cell) return true;
+        if (left[k] && dist_xy(g.sample(k), p) <= r + g.cell) return true;
       }
     return false;
   };
@@ -323,7 +321,7 @@ std::vector<PocketPass> rest_parts(const std::vector<PocketPass>& passes, const 
   for (const PocketPass& pass : passes) {
     std::vector<Vec3> dense;
     for (size_t i = 0; i + 1 < pass.pts.size(); ++i) {
-      const int m = std::max(1, static_cast<int>(std::ceil(dxy(pass.pts[i], pass.pts[i + 1]) / (r / 4))));
+      const int m = std::max(1, static_cast<int>(std::ceil(dist_xy(pass.pts[i], pass.pts[i + 1]) / (r / 4))));
       for (int k = 0; k < m; ++k) {
         const double t = static_cast<double>(k) / m;
         dense.push_back({pass.pts[i].x + (pass.pts[i + 1].x - pass.pts[i].x) * t,

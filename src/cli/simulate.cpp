@@ -161,9 +161,6 @@ std::vector<std::uint64_t> parse_faults(const std::vector<std::string>& faults, 
   return out;
 }
 
-// At most kMaxProgramBytes, refused before it is read (limits.hpp).
-std::string read_file(const std::string& path) { return read_bounded(path, kMaxProgramBytes, "program file"); }
-
 // SIGINT and SIGTERM are blocked in every thread and taken by one waiting
 // thread, so that stopping happens in ordinary code, not in a handler.
 class SignalWaiter {
@@ -295,7 +292,8 @@ int run_simulate(const SimulateArgs& o) {
   Resume resume(o.resume);
   const std::string program = o.program.empty()
                                   ? std::string()
-                                  : resume.apply(read_file(o.program), o.program, &cfg.profile, o.quiet, "simulate");
+                                  : resume.apply(read_bounded(o.program, kMaxProgramBytes, "program file"), o.program,
+                                                 &cfg.profile, o.quiet, "simulate");
   SignalWaiter signals;  // before any thread exists, so that all inherit the mask
   // The stock's grid is checked against the memory limit before it is
   // allocated, and before any line runs.

@@ -161,9 +161,6 @@ class Display {
   std::chrono::steady_clock::time_point drawn_{};
 };
 
-// At most kMaxProgramBytes, refused before it is read (limits.hpp).
-std::string read_file(const std::string& path) { return read_bounded(path, kMaxProgramBytes, "program file"); }
-
 std::chrono::milliseconds ms(double seconds) {
   return std::chrono::milliseconds(static_cast<long long>(seconds * 1000.0 + 0.5));
 }
@@ -319,7 +316,7 @@ int Sender::run() {
   }
   if (o.file.empty())
     throw InputError(errc::usage_stream, Place::at_option("FILE"), "give the program to send (or --abort)");
-  const std::string file_text = read_file(o.file);
+  const std::string file_text = read_bounded(o.file, kMaxProgramBytes, "program file");
   std::string program = file_text;
   if (resume.active()) program = resume_for_controller(std::move(program), to);
   if (!o.no_preflight) preflight(program, to);

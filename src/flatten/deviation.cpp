@@ -76,7 +76,7 @@ struct PathPt {
 };
 
 // An arc of piece i over [t0, t1] in the exact nearest-point search.
-struct Arc {
+struct SearchArc {
   size_t i;
   double t0, t1;
   Vec3 p0, p1;
@@ -94,7 +94,7 @@ struct Scratch {
   std::vector<CurvePt> workc;  // the B&B's stacks of points
   std::vector<PathPt> workp;
   std::vector<int> depth;  // halvings of each arc on the stack
-  std::vector<Arc> arcs;
+  std::vector<SearchArc> arcs;
   ChainIndex index;
   static constexpr size_t kKeep = size_t{1} << 20;
   void trim() {
@@ -404,7 +404,7 @@ void Measure::foot(PathPt& q, size_t i, double t) {
 // |C''| exceeds sqrt(max |C - x| max |C''|). Then Newton steps kept in the
 // arc find its nearest point (noted in best, bi, bt when nearer), and the
 // tangent there bounds the rest: r^2 >= r^2(t) - |(r^2)'(t)| h.
-bool convex_min_at_least(const Piece& pc, const Arc& a, const Vec3& x, double floor, double& best, size_t& bi,
+bool convex_min_at_least(const Piece& pc, const SearchArc& a, const Vec3& x, double floor, double& best, size_t& bi,
                          double& bt) {
   const double h = a.t1 - a.t0, tm = 0.5 * (a.t0 + a.t1);
   const double A = std::max(pc.acc(a.t0), pc.acc(a.t1));
@@ -444,7 +444,7 @@ double Measure::exact_to_curve(const Vec3& x, size_t& piece, double& t) {
   for (size_t i = 0; i < P().size(); ++i) stack.push_back({i, 0, 1, P()[i].at(0), P()[i].at(1), 0});
   const double tiny = gap_;
   while (!stack.empty()) {
-    const Arc a = stack.back();
+    const SearchArc a = stack.back();
     stack.pop_back();
     const Piece& pc = P()[a.i];
     const double sag = pc.sag(a.t0, a.t1, a.p0, a.p1);

@@ -14,12 +14,11 @@
 namespace bezcam {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 Vec3 polar(const Vec3& c, double r, double ang) { return {c.x + r * std::cos(ang), c.y + r * std::sin(ang), 0}; }
 // Angle in (-pi, pi].
 double wrap(double a) {
-  while (a <= -kPi) a += 2 * kPi;
-  while (a > kPi) a -= 2 * kPi;
+  while (a <= -std::numbers::pi) a += 2 * std::numbers::pi;
+  while (a > std::numbers::pi) a -= 2 * std::numbers::pi;
   return a;
 }
 Vec3 flat(const Vec3& p) { return {p.x, p.y, 0}; }
@@ -96,7 +95,7 @@ double distance(const ArcSeg& s, const Vec3& p) {
   const double ang = std::atan2(q.y - s.c.y, q.x - s.c.x);
   double u = wrap(ang - s.a0);
   if (s.sweep < 0) u = -u;
-  if (u < 0) u += 2 * kPi;
+  if (u < 0) u += 2 * std::numbers::pi;
   if (u <= std::abs(s.sweep)) return std::abs(dist(q, s.c) - s.radius);
   return std::min(dist(q, s.a), dist(q, s.b));
 }
@@ -110,10 +109,10 @@ std::optional<double> arc_param(const ArcSeg& s, const Vec3& p) {
   double u = wrap(ang - s.a0);
   if (s.sweep < 0) u = -u;
   const double w = std::abs(s.sweep), slack = 1e-12;
-  if (u < -slack) u += 2 * kPi;
+  if (u < -slack) u += 2 * std::numbers::pi;
   if (u > w + slack) {
-    if (u - 2 * kPi >= -slack)
-      u -= 2 * kPi;
+    if (u - 2 * std::numbers::pi >= -slack)
+      u -= 2 * std::numbers::pi;
     else
       return std::nullopt;
   }
@@ -190,7 +189,7 @@ std::vector<Bezier> bezier_pieces(std::span<const ArcSeg> chain) {
       out.push_back(Bezier::make({s.a, s.b}, {}, 2));
       continue;
     }
-    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(s.sweep) / (kPi / 2) - 1e-12)));
+    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(s.sweep) / (std::numbers::pi / 2) - 1e-12)));
     const double th = s.sweep / n;
     for (int k = 0; k < n; ++k) {
       const double s0 = s.a0 + th * k, mid = s0 + th / 2;
@@ -275,7 +274,7 @@ ArcSeg offset_of(const ArcSeg& s, int hand, double r) {
   const double k = s.sweep > 0 ? s.radius - hand * r : s.radius + hand * r;
   ArcSeg o = s;
   o.radius = std::abs(k);
-  if (k < 0) o.a0 += kPi;
+  if (k < 0) o.a0 += std::numbers::pi;
   o.a = polar(o.c, o.radius, o.a0);
   o.b = polar(o.c, o.radius, o.a0 + o.sweep);
   return o;
@@ -323,7 +322,8 @@ class Region {
     for (const ArcSeg& a : A) {
       ring_.push_back(a.a);
       if (!a.arc) continue;
-      const double most = a.radius <= r / 4 ? kPi / 2 : std::min(kPi / 2, 2 * std::acos(1 - r / (2 * a.radius)));
+      const double most = a.radius <= r / 4 ? std::numbers::pi / 2
+                                            : std::min(std::numbers::pi / 2, 2 * std::acos(1 - r / (2 * a.radius)));
       const int parts = std::max(1, static_cast<int>(std::ceil(std::abs(a.sweep) / most)));
       for (int q = 1; q < parts; ++q) ring_.push_back(a.point(static_cast<double>(q) / parts));
     }
@@ -512,9 +512,11 @@ void OffsetBuilder::add_other_side() {
     // The caps round the two ends, from the other side to the side asked.
     const Vec3 t0 = A.front().tangent(0), t1 = A.back().tangent(1);
     others.push_back(
-        {about(A.front().a, A.front().a + Vec3{t0.y * side * r, -t0.x * side * r, 0}, -side * kPi), -1, true});
+        {about(A.front().a, A.front().a + Vec3{t0.y * side * r, -t0.x * side * r, 0}, -side * std::numbers::pi), -1,
+         true});
     others.push_back(
-        {about(A.back().b, A.back().b + Vec3{-t1.y * side * r, t1.x * side * r, 0}, -side * kPi), -1, true});
+        {about(A.back().b, A.back().b + Vec3{-t1.y * side * r, t1.x * side * r, 0}, -side * std::numbers::pi), -1,
+         true});
   }
   raw.insert(raw.end(), others.begin(), others.end());
 }

@@ -34,7 +34,7 @@ namespace {
 Vec3 xy(const Vec3& p) { return {p.x, p.y, 0}; }
 
 // One piece of the curve or of the path, evaluated in XY.
-struct Piece {
+struct MeasuredPiece {
   const Bezier* bez = nullptr;
   std::optional<ArcPoints> arc;
   double sweep = 0, radius = 0;  // arcs
@@ -56,7 +56,7 @@ struct Sample {
 // is its two ends; an arc is cut into equal angles; a curve is cut in
 // halves until the chord's midpoint and quarter points agree with it
 // within res / 4 (and the span is short against the piece).
-std::vector<Sample> sample_piece(const Piece& pc, double res) {
+std::vector<Sample> sample_piece(const MeasuredPiece& pc, double res) {
   std::vector<Sample> got;
   if (pc.arc) {
     double step = pc.sweep;
@@ -69,14 +69,14 @@ std::vector<Sample> sample_piece(const Piece& pc, double res) {
     return got;
   }
   if (pc.bez->points.size() == 2) return {{pc.at(0), 0}, {pc.at(1), 1}};
-  struct Span {
+  struct PieceSpan {
     double t0, t1;
     int depth;
   };
-  std::vector<Span> stack{{0, 1, 0}};
+  std::vector<PieceSpan> stack{{0, 1, 0}};
   got.push_back({pc.at(0), 0});
   while (!stack.empty()) {
-    const Span s = stack.back();
+    const PieceSpan s = stack.back();
     stack.pop_back();
     const Vec3 a = pc.at(s.t0), c = pc.at(s.t1);
     bool flat = s.depth >= 4;
@@ -236,7 +236,7 @@ struct Index {
 // The pieces of a curve or a path, their samples and the index of their
 // chords.
 struct Shape {
-  std::vector<Piece> pieces;
+  std::vector<MeasuredPiece> pieces;
   std::vector<std::vector<Sample>> samples;  // per piece
   Index index;
   double margin = 0;     // more than the chords' distance from the pieces
@@ -265,7 +265,7 @@ struct Shape {
     Vec3 at = x;
     index.within(x, d0 + margin, [&](size_t i) {
       const Index::Ref& g = index.refs[i];
-      const Piece& pc = pieces[g.piece];
+      const MeasuredPiece& pc = pieces[g.piece];
       const double w = g.t1 - g.t0;
       const double a = std::max(0.0, g.t0 - w), b = std::min(1.0, g.t1 + w);
       auto f = [&](double t) {
@@ -283,8 +283,8 @@ struct Shape {
   double exact(const Vec3& x) { return nearest_point(x).first; }
 };
 
-Piece piece_of(const PathPiece& p) {
-  Piece pc;
+MeasuredPiece piece_of(const PathPiece& p) {
+  MeasuredPiece pc;
   if (p.arc) {
     pc.arc.emplace(*p.arc);
     pc.sweep = p.arc->sweep();
@@ -549,7 +549,7 @@ OffsetReading measure_offset(std::span<const std::vector<Bezier>> curves, std::s
   std::vector<Bezier> all;
   for (size_t c = 0; c < curves.size(); ++c) {
     for (const Bezier& b : curves[c]) {
-      Piece pc;
+      MeasuredPiece pc;
       pc.bez = &b;
       curve.pieces.push_back(pc);
       all.push_back(b);
@@ -579,7 +579,7 @@ PartDistance::PartDistance(std::span<const std::vector<Bezier>> curves, double r
     : impl_(std::make_unique<Impl>()) {
   for (const auto& c : curves)
     for (const Bezier& b : c) {
-      Piece pc;
+      MeasuredPiece pc;
       pc.bez = &b;
       impl_->curve.pieces.push_back(pc);
     }

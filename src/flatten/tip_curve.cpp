@@ -17,7 +17,6 @@ namespace bezcam {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 const Vec3 kZ{0, 0, 1};
 
 [[noreturn]] void normal_undefined(const SurfaceCurve& c, double t) {
@@ -50,7 +49,7 @@ double second_derivative_bound(const Bezier& b) {
   if (!b.rational()) return derivative_bound(b, 2);
   const int n = b.degree();
   const Vec3 c = evaluate(b, 0.5);
-  double R = 0, wmin = kInf;
+  double R = 0, wmin = HUGE_VAL;
   Bezier h;  // H = w (P - c), as a polynomial curve
   Bezier w;  // w as a polynomial curve in x
   h.dim = w.dim = 3;
@@ -73,7 +72,7 @@ double min_norm_bound(const Bezier& n) {
   const double l = norm(m);
   if (!(l > 0)) return 0;
   const Vec3 d = m / l;
-  double lo = kInf;
+  double lo = HUGE_VAL;
   for (const auto& p : n.points) lo = std::min(lo, dot(p, d));
   return std::max(lo, 0.0);
 }
@@ -112,7 +111,7 @@ double tip_chord_bound(const Bezier& point, const Bezier* normal, double radius,
   if (radius > 0 && normal) {
     const Bezier n = subcurve(*normal, t0, t1);
     const double s = min_norm_bound(n);
-    if (!(s > 0)) return kInf;
+    if (!(s > 0)) return HUGE_VAL;
     const double n1 = derivative_bound(n, 1) / s, n2 = derivative_bound(n, 2) / s;
     m2 += radius * std::hypot(n2 + 2 * n1 * n1, n1 * n1);
   }
@@ -146,7 +145,7 @@ TipPolyline flatten_tip(const SurfaceCurve& c, double radius, const FlattenOptio
     double t0 = 0, dt = 0.25;
     while (t0 < 1) {
       // Longest step whose bound fits: the bound shrinks like dt^2.
-      double lo = 0, hi = kInf, best_t1 = t0, best_dev = 0, best_disp = 0;
+      double lo = 0, hi = HUGE_VAL, best_t1 = t0, best_dev = 0, best_disp = 0;
       Vec3 bestB, bestBr;
       bool found = false;
       for (int iter = 0; iter < 200; ++iter) {
@@ -316,7 +315,7 @@ Deviation measure_tip(const SurfaceCurve& c, double radius, const TipPolyline& p
   if (V.size() < 2) return d;
   auto tip = [&](double t) { return tip_point(c, radius, std::clamp(t, 0.0, 1.0)); };
   auto dist_poly = [&](const Vec3& x, size_t i) {  // to segments i-1 .. i+1
-    double m = kInf;
+    double m = HUGE_VAL;
     for (size_t j = i > 0 ? i - 1 : 0; j <= i + 1 && j + 1 < V.size(); ++j)
       m = std::min(m, dist_to_segment(x, V[j], V[j + 1]));
     return m;

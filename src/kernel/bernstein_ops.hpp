@@ -166,6 +166,13 @@ inline Poly<Hom> homogeneous(const Bezier& b) {
 /// The curve of homogeneous coefficients; `rational` false keeps only the
 /// points (their weights are 1 up to rounding). Weights are normalised so
 /// the first is 1. Does not validate (degrees may exceed kMaxBezierDegree).
+/// The weights of homogeneous coefficients.
+inline Poly<double> weights_of(const Poly<Hom>& h) {
+  Poly<double> r(h.size());
+  for (size_t i = 0; i < h.size(); ++i) r[i] = h[i].w;
+  return r;
+}
+
 inline Bezier from_homogeneous(const Poly<Hom>& h, bool rational, int dim = 3) {
   Bezier b;
   b.dim = dim;

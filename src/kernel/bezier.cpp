@@ -19,8 +19,6 @@ struct H {
   double w;
 };
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // Runs the de Casteljau cascade on homogeneous points; when `left`/`right`
 // are given they receive the control points of the two halves.
 H cascade(const Bezier& b, double t, std::vector<H>* left = nullptr, std::vector<H>* right = nullptr) {
@@ -73,7 +71,7 @@ Bezier from_homogeneous(const std::vector<H>& hs, const Bezier& like) {
 
 void validate_control_points(std::span<const Vec3> pts, std::span<const double> w, int dim) {
   for (size_t i = 0; i < pts.size(); ++i) {
-    if (!finite(pts[i]))
+    if (!all_finite(pts[i]))
       throw InputError(errc::curve_not_finite, Place::at_json("points[" + std::to_string(i) + "]"),
                        "expected finite coordinates");
     if (dim == 2 && pts[i].z != 0)

@@ -14,8 +14,6 @@ using detail::Poly;
 
 namespace {
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 std::string ij(size_t i, size_t j) { return "[" + std::to_string(i) + "][" + std::to_string(j) + "]"; }
 
 // The net in homogeneous coordinates (weights 1 for a polynomial patch).
@@ -50,11 +48,6 @@ Poly<Vec3> points_of(const Poly<Hom>& h) {
   for (size_t i = 0; i < h.size(); ++i) r[i] = h[i].p;
   return r;
 }
-Poly<double> weights_of(const Poly<Hom>& h) {
-  Poly<double> r(h.size());
-  for (size_t i = 0; i < h.size(); ++i) r[i] = h[i].w;
-  return r;
-}
 
 // Numerators of Su and Sv along a curve of homogeneous coefficients x(t),
 // given the tangent-direction polynomial `xt` = dx/dt and the
@@ -62,8 +55,8 @@ Poly<double> weights_of(const Poly<Hom>& h) {
 // S = X / w: dS = (dX w - X dw) / w^2, so the numerator is polynomial.
 Poly<Vec3> quotient_numerator(const Poly<Hom>& x, const Poly<Hom>& dx, bool rational) {
   if (!rational) return points_of(dx);
-  const Poly<Vec3> a = detail::bern_scale(points_of(dx), weights_of(x));
-  const Poly<Vec3> b = detail::bern_scale(points_of(x), weights_of(dx));
+  const Poly<Vec3> a = detail::bern_scale(points_of(dx), detail::weights_of(x));
+  const Poly<Vec3> b = detail::bern_scale(points_of(x), detail::weights_of(dx));
   Poly<Vec3> r = detail::bern_elevate(a, std::max(detail::degree_of(a), detail::degree_of(b)));
   const Poly<Vec3> bb = detail::bern_elevate(b, detail::degree_of(r));
   for (size_t i = 0; i < r.size(); ++i) r[i] -= bb[i];
@@ -87,7 +80,7 @@ BezierPatch BezierPatch::make(const std::vector<std::vector<Vec3>>& rows,
                        "expected a row of " + std::to_string(m1) + " points like points[0], found " +
                            std::to_string(rows[i].size()) + "; every row of the net has the same length");
     for (size_t j = 0; j < m1; ++j)
-      if (!finite(rows[i][j]))
+      if (!all_finite(rows[i][j]))
         throw InputError(errc::patch_not_finite, Place::at_json("points" + ij(i, j)), "expected finite coordinates");
   }
   const int nu = static_cast<int>(rows.size()) - 1, nv = static_cast<int>(m1) - 1;

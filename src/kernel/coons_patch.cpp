@@ -195,12 +195,6 @@ Poly<Hom> restrict_boundary(const BoundaryCurve& c, double ta, double tb) {
   return detail::bern_restrict(detail::homogeneous(c.pieces[k]), s0, s1);
 }
 
-Poly<double> weights_of(const Poly<Hom>& h) {
-  Poly<double> r(h.size());
-  for (size_t i = 0; i < h.size(); ++i) r[i] = h[i].w;
-  return r;
-}
-
 Poly<Hom> corner_poly(const Vec3& P, const Poly<double>& s) {
   Poly<Hom> r(s.size());
   for (size_t k = 0; k < s.size(); ++k) r[k] = Hom(P * s[k], s[k]);
@@ -239,10 +233,10 @@ PatchGrid to_bezier_cells(const CoonsPatch& s) {
       const Poly<double> f0v = detail::bern_restrict(F0, va, vb), f1v = detail::bern_restrict(F1, va, vb);
       // Common denominator W = alpha beta (u) gamma delta (v); each term is
       // (its point times its blend) * W written as a tensor product.
-      const Poly<double> al = rational ? weights_of(A) : Poly<double>{1.0};
-      const Poly<double> be = rational ? weights_of(B) : Poly<double>{1.0};
-      const Poly<double> ga = rational ? weights_of(C) : Poly<double>{1.0};
-      const Poly<double> de = rational ? weights_of(D) : Poly<double>{1.0};
+      const Poly<double> al = rational ? detail::weights_of(A) : Poly<double>{1.0};
+      const Poly<double> be = rational ? detail::weights_of(B) : Poly<double>{1.0};
+      const Poly<double> ga = rational ? detail::weights_of(C) : Poly<double>{1.0};
+      const Poly<double> de = rational ? detail::weights_of(D) : Poly<double>{1.0};
       const Poly<double> ab = detail::bern_product(al, be, dbl), gd = detail::bern_product(ga, de, dbl);
       const Poly<double> ab0 = detail::bern_product(ab, f0u, dbl), ab1 = detail::bern_product(ab, f1u, dbl);
       Poly<double> gd0 = detail::bern_product(gd, f0v, dbl), gd1 = detail::bern_product(gd, f1v, dbl);

@@ -9,7 +9,7 @@
 namespace bezcam {
 
 namespace {
-std::string at(size_t i) { return "knots[" + std::to_string(i) + "]"; }
+std::string knot_at(size_t i) { return "knots[" + std::to_string(i) + "]"; }
 }  // namespace
 
 void validate_knots(std::span<const double> knots, int degree, size_t n_points) {
@@ -27,11 +27,11 @@ void validate_knots(std::span<const double> knots, int degree, size_t n_points) 
                          std::to_string(degree) + " + 1), found " + std::to_string(knots.size()));
   for (size_t i = 0; i < knots.size(); ++i) {
     if (!std::isfinite(knots[i]))
-      throw InputError(errc::curve_not_finite, Place::at_json(at(i)),
+      throw InputError(errc::curve_not_finite, Place::at_json(knot_at(i)),
                        "expected a finite knot, found " + fmt_num(knots[i]));
     if (i > 0 && knots[i] < knots[i - 1])
       throw InputError(
-          errc::curve_knot_order, Place::at_json(at(i)),
+          errc::curve_knot_order, Place::at_json(knot_at(i)),
           "expected a knot >= " + fmt_num(knots[i - 1]) + " (knots must not decrease), found " + fmt_num(knots[i]));
   }
   const size_t p = static_cast<size_t>(degree), m = knots.size() - 1;
@@ -49,7 +49,7 @@ void validate_knots(std::span<const double> knots, int degree, size_t n_points) 
     const bool inside = knots[i] > a && knots[i] < b;
     const size_t limit = inside ? p : p + 1;
     if (mult > limit)
-      throw InputError(errc::curve_knot_multiplicity, Place::at_json(at(i + limit)),
+      throw InputError(errc::curve_knot_multiplicity, Place::at_json(knot_at(i + limit)),
                        "knot " + fmt_num(knots[i]) + " appears " + std::to_string(mult) + " times; " +
                            (inside ? "inside the domain a knot may repeat at most degree (" + std::to_string(p) +
                                          ") times, or the curve would break apart there"

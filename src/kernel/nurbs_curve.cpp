@@ -14,15 +14,15 @@ namespace {
 
 // Homogeneous point (w P, w): B-spline algorithms on these are exact for
 // NURBS (The NURBS Book, section 4.2).
-struct H {
+struct HPoint {
   Vec3 p;
   double w = 1;
-  H operator*(double s) const { return {p * s, w * s}; }
-  H operator+(const H& o) const { return {p + o.p, w + o.w}; }
+  HPoint operator*(double s) const { return {p * s, w * s}; }
+  HPoint operator+(const HPoint& o) const { return {p + o.p, w + o.w}; }
 };
 
-std::vector<H> homogeneous(const NurbsCurve& c) {
-  std::vector<H> hs(c.points.size());
+std::vector<HPoint> homogeneous(const NurbsCurve& c) {
+  std::vector<HPoint> hs(c.points.size());
   for (size_t i = 0; i < hs.size(); ++i) {
     const double w = c.weight(i);
     hs[i] = {c.points[i] * w, w};
@@ -30,7 +30,7 @@ std::vector<H> homogeneous(const NurbsCurve& c) {
   return hs;
 }
 
-NurbsCurve from_homogeneous(const NurbsCurve& like, const std::vector<H>& hs, std::vector<double> knots) {
+NurbsCurve from_homogeneous(const NurbsCurve& like, const std::vector<HPoint>& hs, std::vector<double> knots) {
   NurbsCurve out;
   out.dim = like.dim;
   out.degree = like.degree;
@@ -76,11 +76,11 @@ Vec3 evaluate(const NurbsCurve& c, double u) {
   const int span = find_span(c.knots, p, u);
   std::vector<double> N(p + 1);
   basis_functions(c.knots, p, span, u, N);
-  H sum{{0, 0, 0}, 0};
+  HPoint sum{{0, 0, 0}, 0};
   for (int j = 0; j <= p; ++j) {
     const size_t i = static_cast<size_t>(span - p + j);
     const double w = c.weight(i);
-    sum = sum + H{c.points[i] * w, w} * N[j];
+    sum = sum + HPoint{c.points[i] * w, w} * N[j];
   }
   return sum.p / sum.w;
 }
@@ -93,12 +93,12 @@ std::vector<Vec3> derivatives(const NurbsCurve& c, double u, int d) {
   const int span = find_span(c.knots, p, u);
   const auto nd = basis_derivatives(c.knots, p, span, u, std::min(d, p));
   // A3.2 on homogeneous points: A^(k) (vector part) and w^(k).
-  std::vector<H> ders(d + 1, H{{0, 0, 0}, 0});
+  std::vector<HPoint> ders(d + 1, HPoint{{0, 0, 0}, 0});
   for (int k = 0; k <= std::min(d, p); ++k)
     for (int j = 0; j <= p; ++j) {
       const size_t i = static_cast<size_t>(span - p + j);
       const double w = c.weight(i);
-      ders[k] = ders[k] + H{c.points[i] * w, w} * nd[k][j];
+      ders[k] = ders[k] + HPoint{c.points[i] * w, w} * nd[k][j];
     }
   // A4.2: C^(k) = (A^(k) - sum_{i=1..k} C(k,i) w^(i) C^(k-i)) / w.
   std::vector<Vec3> ck(d + 1);
@@ -125,16 +125,16 @@ NurbsCurve insert_knot(const NurbsCurve& c, double u, int r) {
   const int k = static_cast<int>(std::upper_bound(UP.begin(), UP.end(), u) - UP.begin()) - 1;
   const int np = static_cast<int>(c.points.size()) - 1;
   const int mp = np + p + 1;
-  const std::vector<H> Pw = homogeneous(c);
+  const std::vector<HPoint> Pw = homogeneous(c);
   // A5.1.
   std::vector<double> UQ(static_cast<size_t>(mp + r + 1));
   for (int i = 0; i <= k; ++i) UQ[i] = UP[i];
   for (int i = 1; i <= r; ++i) UQ[k + i] = u;
   for (int i = k + 1; i <= mp; ++i) UQ[i + r] = UP[i];
-  std::vector<H> Qw(static_cast<size_t>(np + r + 1));
+  std::vector<HPoint> Qw(static_cast<size_t>(np + r + 1));
   for (int i = 0; i <= k - p; ++i) Qw[i] = Pw[i];
   for (int i = k - s; i <= np; ++i) Qw[i + r] = Pw[i];
-  std::vector<H> Rw(static_cast<size_t>(p - s + 1));
+  std::vector<HPoint> Rw(static_cast<size_t>(p - s + 1));
   for (int i = 0; i <= p - s; ++i) Rw[i] = Pw[k - p + i];
   int L = 0;
   for (int j = 1; j <= r; ++j) {
@@ -187,10 +187,10 @@ std::vector<Bezier> to_bezier(const NurbsCurve& curve) {
   const int p = c.degree;
   const auto& U = c.knots;
   const int m = static_cast<int>(U.size()) - 1;
-  const std::vector<H> Pw = homogeneous(c);
+  const std::vector<HPoint> Pw = homogeneous(c);
   // A5.6 (DecomposeCurve): insert every interior knot up to multiplicity p,
   // reading off one Bézier segment per span as it completes.
-  std::vector<std::vector<H>> Qw(1, std::vector<H>(static_cast<size_t>(p) + 1));
+  std::vector<std::vector<HPoint>> Qw(1, std::vector<HPoint>(static_cast<size_t>(p) + 1));
   std::vector<double> alphas(static_cast<size_t>(p) + 1);
   int a = p, b = p + 1, nb = 0;
   for (int i = 0; i <= p; ++i) Qw[0][i] = Pw[i];

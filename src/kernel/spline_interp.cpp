@@ -12,7 +12,7 @@ namespace bezcam {
 
 namespace {
 
-std::string at(size_t k) { return "through[" + std::to_string(k) + "]"; }
+std::string through_at(size_t k) { return "through[" + std::to_string(k) + "]"; }
 
 double scale_of(std::span<const Vec3> pts) {
   double s = 0;
@@ -44,12 +44,12 @@ std::vector<double> chord_length_parameters(std::span<const Vec3> pts) {
   for (size_t k = 0; k < pts.size(); ++k) {
     const Vec3& p = pts[k];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw InputError(errc::curve_not_finite, Place::at_json(at(k)), "expected finite coordinates");
+      throw InputError(errc::curve_not_finite, Place::at_json(through_at(k)), "expected finite coordinates");
     if (k == 0) continue;
     const double d = dist(p, pts[k - 1]);
     // A chord below 1e-12 of the coordinates is rounding noise, not a step.
     if (d <= 1e-12 * std::max({max_abs(p), max_abs(pts[k - 1]), 1e-300}))
-      throw InputError(errc::curve_repeated_point, Place::at_json(at(k)),
+      throw InputError(errc::curve_repeated_point, Place::at_json(through_at(k)),
                        "expected a point different from through[" + std::to_string(k - 1) + "], found the same point " +
                            fmt_point(p, pts[k].z != 0 || pts[k - 1].z != 0 ? 3 : 2) +
                            ": a repeated point gives a zero chord length, so no parameter can separate the two; "
@@ -156,7 +156,7 @@ NurbsCurve periodic_cubic_spline(std::span<const Vec3> input, int dim) {
   const size_t n = pts.size();
   const double closing = dist(pts.back(), pts.front());
   if (closing <= 1e-12 * scale_of(pts))  // unreachable after dropping an exact repeat, kept for near repeats
-    throw InputError(errc::curve_repeated_point, Place::at_json(at(input.size() - 1)),
+    throw InputError(errc::curve_repeated_point, Place::at_json(through_at(input.size() - 1)),
                      "the last point repeats the first up to rounding: give it exactly equal, or drop it");
   // Parameters t_0..t_n with t_n = T (back at the first point), extended
   // periodically by three on each side.

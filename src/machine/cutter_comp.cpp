@@ -14,7 +14,6 @@ namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-bool is_arc(const MotionBlock& b) { return b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw; }
 Vec3 flat(Vec3 v) { return {v.x, v.y, 0}; }
 double cross2(const Vec3& a, const Vec3& b) { return a.x * b.y - a.y * b.x; }
 double dot2(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y; }

@@ -13,8 +13,6 @@ namespace bezcam {
 
 namespace {
 
-bool is_arc(const MotionBlock& b) { return b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw; }
-
 // A block for evaluation at t in [0, 1]: the reader's evaluate_block()
 // (lines, arcs by angle, Bézier blocks, NURBS over their knot domain), so
 // that the report and the preview follow exactly the motion the reader and

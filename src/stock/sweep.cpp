@@ -10,8 +10,6 @@ namespace bezcam {
 
 namespace {
 
-bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
 [[noreturn]] void refuse(const std::string& what) {
   throw InputError(errc::stock_move, Place::at_setting("move"), what);
 }
@@ -21,7 +19,7 @@ std::string str(const Vec3& p) { return "(" + fmt_num(p.x) + ", " + fmt_num(p.y)
 }  // namespace
 
 Sweep Sweep::line(const Vec3& from, const Vec3& to) {
-  if (!finite(from) || !finite(to)) refuse("a line's ends must be finite, not " + str(from) + " to " + str(to));
+  if (!all_finite(from) || !all_finite(to)) refuse("a line's ends must be finite, not " + str(from) + " to " + str(to));
   Sweep s;
   s.kind_ = SweepKind::line;
   s.from_ = from;
@@ -30,7 +28,7 @@ Sweep Sweep::line(const Vec3& from, const Vec3& to) {
 }
 
 Sweep Sweep::arc(const Arc& a) {
-  if (!finite(a.from) || !finite(a.to) || !finite(a.center))
+  if (!all_finite(a.from) || !all_finite(a.to) || !all_finite(a.center))
     refuse("an arc's ends and centre must be finite, not " + str(a.from) + " to " + str(a.to) + " around " +
            str(a.center));
   if (!(a.r_start() > 0) || !(a.r_end() > 0))
@@ -47,7 +45,7 @@ Sweep Sweep::arc(const Arc& a) {
 Sweep Sweep::polyline(std::vector<Vec3> points, double bound) {
   if (points.empty()) refuse("a polyline needs at least one point");
   for (std::size_t i = 0; i < points.size(); ++i)
-    if (!finite(points[i])) refuse("a polyline's point " + std::to_string(i) + " is not finite: " + str(points[i]));
+    if (!all_finite(points[i])) refuse("a polyline's point " + std::to_string(i) + " is not finite: " + str(points[i]));
   if (!std::isfinite(bound) || bound < 0)
     refuse("a polyline's bound must be a finite number >= 0, not " + fmt_num(bound));
   Sweep s;

@@ -51,6 +51,10 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline double norm(const Vec3& v) { return std::sqrt(dot(v, v)); }
 inline double dist(const Vec3& a, const Vec3& b) { return norm(a - b); }
+/// Distance in the xy plane (z is ignored).
+inline double dist_xy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+/// True when no coordinate is infinite or NaN.
+inline bool all_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 /// Largest absolute coordinate: the magnitude that sets floating-point error.
 inline double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 /// a + t (b - a).

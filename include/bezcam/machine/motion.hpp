@@ -36,6 +36,9 @@ struct MotionBlock {
   int entity = -1;
 };
 
+/// G2 or G3.
+inline bool is_arc(const MotionBlock& b) { return b.kind == BlockKind::arc_cw || b.kind == BlockKind::arc_ccw; }
+
 /// Point of a block at t in [0,1] (arcs by angle, NURBS over the knot domain).
 /// Arcs: the radius runs linearly from the start's to the end's (they may
 /// differ within the arc tolerance) and the plane's axis linearly (helix); t = 0 and t = 1
