@@ -267,7 +267,7 @@ void Adaptive::smooth(std::vector<Vec3>& loop, bool closed) const {
     std::vector<Vec3> even{loop.front()};
     const double step = std::max(2 * g_.cell, r_ / 12);
     for (size_t i = 1; i < loop.size(); ++i)
-      if (dxy(loop[i], even.back()) >= step || i + 1 == loop.size()) even.push_back(loop[i]);
+      if (dist_xy(loop[i], even.back()) >= step || i + 1 == loop.size()) even.push_back(loop[i]);
     for (int pass = 0; pass < 4; ++pass)
       for (size_t i = 1; i + 1 < even.size(); ++i) {
         const Vec3 q{(even[i - 1].x + 2 * even[i].x + even[i + 1].x) / 4,
@@ -279,7 +279,7 @@ void Adaptive::smooth(std::vector<Vec3>& loop, bool closed) const {
     return;
   }
   double perim = 0;
-  for (size_t i = 0; i < loop.size(); ++i) perim += dxy(loop[i], loop[(i + 1) % loop.size()]);
+  for (size_t i = 0; i < loop.size(); ++i) perim += dist_xy(loop[i], loop[(i + 1) % loop.size()]);
   const size_t n = std::max<size_t>(8, static_cast<size_t>(std::ceil(perim / std::max(2 * g_.cell, r_ / 12))));
   if (n < loop.size()) {
     std::vector<Vec3> even;
@@ -287,7 +287,7 @@ void Adaptive::smooth(std::vector<Vec3>& loop, bool closed) const {
     double at = 0, next = 0;
     for (size_t i = 0; i < loop.size() && even.size() < n; ++i) {
       const Vec3 &a = loop[i], &b = loop[(i + 1) % loop.size()];
-      const double l = dxy(a, b);
+      const double l = dist_xy(a, b);
       while (next <= at + l && even.size() < n) {
         const Vec3 p = mix(a, b, l > 0 ? (next - at) / l : 0);
         even.push_back(inside(p) ? p : (inside(a) ? a : b));
@@ -384,7 +384,7 @@ std::vector<PocketPass> Adaptive::run() {
     if (!any) {
       if (!seed(comp, cur, depth)) continue;
       for (size_t k = 0; k < g_.size(); ++k)
-        if (comp[k] == cur && dxy(g_.sample(k), *pending_->helix) <= pending_->helix_r) settled[k] = 1;
+        if (comp[k] == cur && dist_xy(g_.sample(k), *pending_->helix) <= pending_->helix_r) settled[k] = 1;
     }
     for (size_t k = 0; k < g_.size(); ++k) level_[k] = settled[k] && comp[k] == cur ? settled_level(k) : 1.0f;
     // The settled samples that may lie on the edge (the edge only moves
@@ -421,7 +421,7 @@ std::vector<PocketPass> Adaptive::run() {
     std::vector<Vec3> dense;
     for (size_t i = 0; i < ring.size(); ++i) {
       const Vec3 &a = ring[i], &b = ring[(i + 1) % ring.size()];
-      const int m = std::max(1, static_cast<int>(std::ceil(dxy(a, b) / g_.cell)));
+      const int m = std::max(1, static_cast<int>(std::ceil(dist_xy(a, b) / g_.cell)));
       for (int k = 0; k < m; ++k) dense.push_back(mix(a, b, static_cast<double>(k) / m));
     }
     whole(std::move(dense));

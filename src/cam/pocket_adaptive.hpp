@@ -17,7 +17,6 @@ namespace bezcam::detail {
 inline constexpr int kAdaptiveCircle = 144;  // samples round the tool's circle (2.5 degrees)
 
 class Adaptive {
-  static double dxy(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
   static Vec3 mix(const Vec3& a, const Vec3& b, double t) { return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, 0}; }
 
  public:
@@ -153,7 +152,7 @@ class Adaptive {
     return walls_.dist(p) >= d_wall_;
   }
   bool segment_clear(const Vec3& a, const Vec3& b) const {
-    const int n = std::max(1, static_cast<int>(std::ceil(dxy(a, b) / g_.cell)));
+    const int n = std::max(1, static_cast<int>(std::ceil(dist_xy(a, b) / g_.cell)));
     for (int k = 0; k <= n; ++k) {
       const Vec3 p = mix(a, b, static_cast<double>(k) / n);
       if (!free(p) || !inside(p)) return false;

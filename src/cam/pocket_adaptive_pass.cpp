@@ -14,8 +14,8 @@ void Adaptive::finish(PocketPass p) {
   if (pending_) {
     PocketPass h = std::move(*pending_);
     pending_.reset();
-    if (dxy(h.pts[0], p.pts[0]) < 1e-9 || segment_clear(h.pts[0], p.pts[0])) {
-      if (dxy(h.pts[0], p.pts[0]) >= 1e-9) p.pts.insert(p.pts.begin(), h.pts[0]);
+    if (dist_xy(h.pts[0], p.pts[0]) < 1e-9 || segment_clear(h.pts[0], p.pts[0])) {
+      if (dist_xy(h.pts[0], p.pts[0]) >= 1e-9) p.pts.insert(p.pts.begin(), h.pts[0]);
       p.helix = h.helix;
       p.helix_r = h.helix_r;
       push(std::move(p));
@@ -29,7 +29,7 @@ void Adaptive::finish(PocketPass p) {
   } else if (have_cur_) {
     // Through a point aside, in cleared material: the shortest such link.
     const Vec3 a = cur_, b = p.pts[0], mid = mix(a, b, 0.5);
-    const double len = dxy(a, b);
+    const double len = dist_xy(a, b);
     const Vec3 n = len > 0 ? Vec3{-(b.y - a.y) / len, (b.x - a.x) / len, 0} : Vec3{1, 0, 0};
     std::optional<Vec3> best;
     for (int k = 1; k <= 8 && !best; ++k)
@@ -61,7 +61,7 @@ void Adaptive::closed_loop(const std::vector<Vec3>& loop) {
   size_t ip = 0;
   if (have_cur_)
     for (size_t i = 1; i < n; ++i)
-      if (dxy(loop[i], cur_) < dxy(loop[ip], cur_)) ip = i;
+      if (dist_xy(loop[i], cur_) < dist_xy(loop[ip], cur_)) ip = i;
   auto tangent = [&](size_t i) {
     const Vec3 t = loop[(i + 1) % n] - loop[(i + n - 1) % n];
     const double l = std::hypot(t.x, t.y);
@@ -69,7 +69,7 @@ void Adaptive::closed_loop(const std::vector<Vec3>& loop) {
   };
   Vec3 q0 = loop[ip], t0 = tangent(ip);
   bool found = false;
-  if (have_cur_ && (pending_ || (dxy(cur_, loop[ip]) <= 3 * load_ + 2 * g_.cell && clear(cur_)))) {
+  if (have_cur_ && (pending_ || (dist_xy(cur_, loop[ip]) <= 3 * load_ + 2 * g_.cell && clear(cur_)))) {
     q0 = cur_;
     if (std::hypot(dir_.x, dir_.y) > 0) t0 = dir_ * (1 / std::hypot(dir_.x, dir_.y));
     found = true;
@@ -81,7 +81,7 @@ void Adaptive::closed_loop(const std::vector<Vec3>& loop) {
     if (clear(q) && inside(q)) q0 = q, found = true;
   }
   double perim = 0;
-  for (size_t i = 0; i < n; ++i) perim += dxy(loop[i], loop[(i + 1) % n]);
+  for (size_t i = 0; i < n; ++i) perim += dist_xy(loop[i], loop[(i + 1) % n]);
   std::vector<Vec3> best;
   size_t best_end = ip;
   double best_w = 1e300;
@@ -89,11 +89,11 @@ void Adaptive::closed_loop(const std::vector<Vec3>& loop) {
     if (!found || ell > perim / 2) break;
     size_t ie = ip;
     for (double walked = 0; walked < ell;) {
-      walked += dxy(loop[ie], loop[(ie + 1) % n]);
+      walked += dist_xy(loop[ie], loop[(ie + 1) % n]);
       ie = (ie + 1) % n;
     }
     const Vec3 p1 = loop[ie], t1 = tangent(ie);
-    const double len = dxy(q0, p1);
+    const double len = dist_xy(q0, p1);
     const int m = std::max(8, static_cast<int>(std::ceil(len / g_.cell)));
     std::vector<Vec3> h;
     bool ok = true;
@@ -129,17 +129,17 @@ void Adaptive::closed_loop(const std::vector<Vec3>& loop) {
 // smooth step), follows the ring round and on over that stretch again,
 // which takes the wedge its start left.
 std::optional<std::vector<Vec3>> Adaptive::spiral_turn(const std::vector<Vec3>& loop) const {
-  if (turn_.size() < 3 || !have_cur_ || dxy(turn_.back(), cur_) > 1e-9) return std::nullopt;
+  if (turn_.size() < 3 || !have_cur_ || dist_xy(turn_.back(), cur_) > 1e-9) return std::nullopt;
   const size_t n = loop.size(), m = turn_.size();
   size_t ip = 0;
   for (size_t i = 1; i < n; ++i)
-    if (dxy(loop[i], cur_) < dxy(loop[ip], cur_)) ip = i;
-  if (dxy(loop[ip], cur_) > 2 * load_ + 4 * g_.cell) return std::nullopt;
+    if (dist_xy(loop[i], cur_) < dist_xy(loop[ip], cur_)) ip = i;
+  if (dist_xy(loop[ip], cur_) > 2 * load_ + 4 * g_.cell) return std::nullopt;
   double perim = 0;
-  for (size_t i = 0; i < n; ++i) perim += dxy(loop[i], loop[(i + 1) % n]);
+  for (size_t i = 0; i < n; ++i) perim += dist_xy(loop[i], loop[(i + 1) % n]);
   // The turn before, from the tool's place round.
   std::vector<double> at(m, 0);
-  for (size_t j = 1; j < m; ++j) at[j] = at[j - 1] + dxy(turn_[j - 1], turn_[j]);
+  for (size_t j = 1; j < m; ++j) at[j] = at[j - 1] + dist_xy(turn_[j - 1], turn_[j]);
   const double tperim = at.back();
   if (!(tperim > 0) || !(perim > 0)) return std::nullopt;
   const double ell = std::min(perim / 2, 4 * r_);
@@ -147,7 +147,7 @@ std::optional<std::vector<Vec3>> Adaptive::spiral_turn(const std::vector<Vec3>& 
   double s = 0;
   for (size_t k = 0; k <= n; ++k) {
     const Vec3& v = loop[(ip + k) % n];
-    if (k > 0) s += dxy(loop[(ip + k - 1) % n], v);
+    if (k > 0) s += dist_xy(loop[(ip + k - 1) % n], v);
     const double f = std::min(1.0, s / perim), u = std::min(1.0, s / ell), w = u * u * (3 - 2 * u);
     // The nearest point of the turn before, near the same share of it.
     const double want = f * tperim;
@@ -176,7 +176,7 @@ std::optional<std::vector<Vec3>> Adaptive::spiral_turn(const std::vector<Vec3>& 
   // start left goes now, and the next turn starts where the ring is cut.
   s = 0;
   for (size_t k = 1; k <= n && s < ell; ++k) {
-    s += dxy(loop[(ip + k - 1) % n], loop[(ip + k) % n]);
+    s += dist_xy(loop[(ip + k - 1) % n], loop[(ip + k) % n]);
     pts.push_back(loop[(ip + k) % n]);
   }
   return pts;
@@ -296,7 +296,7 @@ void Adaptive::whole(std::vector<Vec3> loop) {
   size_t ip = 0;
   if (have_cur_)
     for (size_t i = 1; i < loop.size(); ++i)
-      if (dxy(loop[i], cur_) < dxy(loop[ip], cur_)) ip = i;
+      if (dist_xy(loop[i], cur_) < dist_xy(loop[ip], cur_)) ip = i;
   std::rotate(loop.begin(), loop.begin() + static_cast<long>(ip), loop.end());
   loop.push_back(loop.front());
   PocketPass p;

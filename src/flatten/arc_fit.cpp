@@ -126,7 +126,6 @@ constexpr double kBandShare = 0.96;
 double cross2(const Vec3& a, const Vec3& b) { return a.x * b.y - a.y * b.x; }
 double dot2(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y; }
 double norm2(const Vec3& v) { return std::hypot(v.x, v.y); }
-double dist2(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 // Angle from direction a to v, positive in the arc's direction, in (-pi, pi].
 double directed_angle(const Vec3& a, const Vec3& v, bool ccw) {
@@ -156,7 +155,7 @@ struct ArcGeometry {
     const double c1 = cross2(a, v), c2 = cross2(v, b);
     return arc.ccw ? (c1 >= 0 && c2 >= 0) : (c1 <= 0 && c2 <= 0);
   }
-  double dist_end(const Vec3& p, const Vec3& e) const { return helical ? dist(p, e) : dist2(p, e); }
+  double dist_end(const Vec3& p, const Vec3& e) const { return helical ? dist(p, e) : dist_xy(p, e); }
   // Helical: the height of D at the angle of v (in the sector), from S'.
   double h_at(const Vec3& v) const {
     const double th = std::clamp(directed_angle(a, v, arc.ccw), 0.0, W);
@@ -340,7 +339,7 @@ std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, do
   const double L = norm2(chord);
   const double q = opt.decimals >= 0 ? std::pow(10.0, -opt.decimals) : 0.0;
   // Printed ends that coincide would mean a full circle.
-  if (!(L > 0) || dist2(sp.Er, sp.Sr) < std::max(1.5 * q, 1e-12 * L)) return std::nullopt;
+  if (!(L > 0) || dist_xy(sp.Er, sp.Sr) < std::max(1.5 * q, 1e-12 * L)) return std::nullopt;
   const Vec3 u = chord / L, n{-u.y, u.x, 0};
   const Vec3 M = (sp.S + sp.E) * 0.5;
   std::array<Vec3, kFitSamples - 1> P;
@@ -358,9 +357,9 @@ std::optional<ArcCandidate> try_arc(const Span& sp, const ArcFitOptions& opt, do
   auto centre_of = [&](double bb) { return M + n * ((bb * bb - L * L / 4) / (2 * bb)); };
   auto misfit = [&](double bb) {
     const Vec3 c = centre_of(bb);
-    const double r = dist2(sp.S, c);
+    const double r = dist_xy(sp.S, c);
     double m = 0;
-    for (const auto& p : P) m = std::max(m, std::abs(dist2(p, c) - r));
+    for (const auto& p : P) m = std::max(m, std::abs(dist_xy(p, c) - r));
     return m;
   };
   const double sgn = b3 > 0 ? 1 : -1;
@@ -591,7 +590,7 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
       // of any length are tried, the line kept only when none fits.
       const bool chained = tangent && (tin.x != 0 || tin.y != 0);
       const bool line_tangent = !chained || std::abs(directed_angle(tin, move_tangent(Sr, best, true), true)) <=
-                                                tangent_slack(q, dist2(best.to, Sr));
+                                                tangent_slack(q, dist_xy(best.to, Sr));
       // Longest arc, only worth it beyond the chord.
       if (planar && budget_xy > 0 && (best.t < 1 || !line_tangent)) {
         // The longest span an arc fits from alo on (tangent to the chain
