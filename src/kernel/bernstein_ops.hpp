@@ -163,9 +163,6 @@ inline Poly<Hom> homogeneous(const Bezier& b) {
   return h;
 }
 
-/// The curve of homogeneous coefficients; `rational` false keeps only the
-/// points (their weights are 1 up to rounding). Weights are normalised so
-/// the first is 1. Does not validate (degrees may exceed kMaxBezierDegree).
 /// The weights of homogeneous coefficients.
 inline Poly<double> weights_of(const Poly<Hom>& h) {
   Poly<double> r(h.size());
@@ -173,6 +170,9 @@ inline Poly<double> weights_of(const Poly<Hom>& h) {
   return r;
 }
 
+/// The curve of homogeneous coefficients; `rational` false keeps only the
+/// points (their weights are 1 up to rounding). Weights are normalised so
+/// the first is 1. Does not validate (degrees may exceed kMaxBezierDegree).
 inline Bezier from_homogeneous(const Poly<Hom>& h, bool rational, int dim = 3) {
   Bezier b;
   b.dim = dim;
