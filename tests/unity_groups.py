@@ -5,11 +5,13 @@
 Files compiled together share one scope: two files of a group must not
 define the same name at file scope (helpers, constants, types, macros).
 This script reads each file's column-0 definitions (clang-format puts them
-there) and puts files whose names do not meet in groups of at most 6.
-With --check BUILD_DIR it also compiles each group (-fsyntax-only, with the
-flags of BUILD_DIR/compile_commands.json) and leaves a file that does not
-fit its group to compile alone. A file in no group compiles alone: a new
-test file needs no entry; run this script again to group it.
+there), puts files whose names do not meet in groups of at most 6, then
+compiles each group (-fsyntax-only, with the flags of the build's
+compile_commands.json) and leaves a file that does not fit its group to
+compile alone. A file in no group compiles alone: a new test file needs no
+entry; run this script again to group it.
+
+Usage: tests/unity_groups.py BUILD_DIR   (a configured build of the ci preset)
 """
 import glob
 import json
@@ -21,8 +23,6 @@ import sys
 
 MAX_GROUP = 6
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SUITES = ["kernel", "flatten", "stock", "job", "import", "text", "machine", "cam", "gcode", "report", "verify",
-          "link", "sim", "cli", "layout"]
 DEFINITION = [
     re.compile(r"^(?:static |inline |constexpr |const |\[\[nodiscard\]\] )*[\w:<>,\*& ]+?[ \*&](\w+)\s*\("),
     re.compile(r"^(?:static |inline )*(?:constexpr|const) [^=;(]*?\b(\w+)(?:\[\w*\])?\s*(?:=|\{)"),
@@ -62,27 +62,36 @@ def group(files):
     return [sorted(g) for g in groups if len(g) > 1]
 
 
-def compiles(files, commands):
-    first = commands[files[0]]
-    args = shlex.split(first["command"])
+def suite_command(suite, commands):
+    """The compile command of one of the suite's sources (a test file or, in
+    a unity build, a group's batch): every source of a suite has the same
+    flags."""
+    for c in commands:
+        if "/%s_tests.dir/" % suite in c["command"]:
+            return c
+    sys.exit("no source of %s_tests in compile_commands.json: configure the build first" % suite)
+
+
+def compiles(files, command):
+    args = shlex.split(command["command"])
     i = args.index("-o")
     del args[i:i + 2]
     batch = os.path.join(os.path.dirname(files[0]), "zz_unity_check.cpp")
     with open(batch, "w", encoding="utf-8") as f:
         f.write("".join('#include "%s"\n' % x for x in files))
     try:
-        args = [batch if a == files[0] else a for a in args] + ["-fsyntax-only"]
-        return subprocess.run(args, cwd=first["directory"], capture_output=True).returncode == 0
+        args = [batch if a == command["file"] else a for a in args] + ["-fsyntax-only"]
+        return subprocess.run(args, cwd=command["directory"], capture_output=True).returncode == 0
     finally:
         os.remove(batch)
 
 
-def checked(groups, commands):
+def checked(groups, command):
     out = []
     for g in groups:
         kept = [g[0]]
         for f in g[1:]:
-            if compiles(kept + [f], commands):
+            if compiles(kept + [f], command):
                 kept.append(f)
         if len(kept) > 1:
             out.append(kept)
@@ -91,17 +100,17 @@ def checked(groups, commands):
 
 
 def main():
-    commands = None
-    if len(sys.argv) == 3 and sys.argv[1] == "--check":
-        with open(os.path.join(sys.argv[2], "compile_commands.json"), encoding="utf-8") as f:
-            commands = {c["file"]: c for c in json.load(f)}
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    with open(os.path.join(sys.argv[1], "compile_commands.json"), encoding="utf-8") as f:
+        commands = json.load(f)
     lines = ["# Written by tests/unity_groups.py (read it before editing): the test",
              "# files each unity group compiles together. A file in no group compiles alone."]
-    for suite in SUITES:
+    # A suite is a folder of tests/ with *_test.cpp files (tests/CMakeLists.txt).
+    suites = sorted({os.path.basename(os.path.dirname(f)) for f in glob.glob(os.path.join(ROOT, "tests", "*", "*_test.cpp"))})
+    for suite in suites:
         files = sorted(glob.glob(os.path.join(ROOT, "tests", suite, "*.cpp")))
-        groups = group(files)
-        if commands is not None:
-            groups = checked(groups, commands)
+        groups = checked(group(files), suite_command(suite, commands))
         for n, g in enumerate(groups):
             lines.append("bezcam_unity_group(%s %d %s)" % (suite, n, " ".join(os.path.basename(f) for f in g)))
     with open(os.path.join(ROOT, "tests", "unity_groups.cmake"), "w", encoding="utf-8") as f:
