@@ -57,69 +57,26 @@ std::vector<uint8_t> PocketGrid::fill(const PocketLoops& loops) const {
     for (size_t k = 0; k + 1 < xs.size(); k += 2) {
       const long i0 = std::max(0L, static_cast<long>(std::ceil((xs[k] - x0) / cell - 0.5)));
       const long i1 = std::min(nx - 1, static_cast<long>(std::floor((xs[k + 1] - x0) / cell - 0.5)));
-      for (long i = i0; i <= i1; ++i) out[static_cast<size_t>(j * nx + i)] = 1;
+      if (i0 <= i1) std::fill_n(out.begin() + j * nx + i0, i1 - i0 + 1, uint8_t{1});
     }
   }
   return out;
 }
-
-namespace {
-
-// The x where the linear function c0 + c1 x satisfies lo <= f <= hi,
-// intersected into [x_lo, x_hi].
-void clip(double c0, double c1, double lo, double hi, double& x_lo, double& x_hi) {
-  if (c1 == 0) {
-    if (c0 < lo || c0 > hi) x_lo = 1, x_hi = 0;
-    return;
-  }
-  double a = (lo - c0) / c1, b = (hi - c0) / c1;
-  if (a > b) std::swap(a, b);
-  x_lo = std::max(x_lo, a), x_hi = std::min(x_hi, b);
-}
-
-// The interval of x where the disk of radius r about c meets the line y.
-void disk(const Vec3& c, double r, double y, double& lo, double& hi) {
-  const double h = r * r - (y - c.y) * (y - c.y);
-  if (h < 0) return;
-  const double w = std::sqrt(h);
-  lo = std::min(lo, c.x - w), hi = std::max(hi, c.x + w);
-}
-
-}  // namespace
 
 void PocketGrid::stamp(const Vec3& a, const Vec3& b, double radius, std::vector<uint8_t>& bits, uint8_t v) const {
   const Capsule c(a, b, radius);
   const auto [j0, j1] = rows(c);
   for (long j = j0; j <= j1; ++j) {
     const auto [i0, i1] = span(c, j);
-    const size_t row = static_cast<size_t>(j * nx);
-    for (long i = i0; i <= i1; ++i) bits[row + static_cast<size_t>(i)] = v;
+    // One run of bytes (a loop storing through the vector's uint8_t may
+    // alias its own pointer and writes a byte per iteration).
+    if (i0 <= i1) std::fill_n(bits.begin() + j * nx + i0, i1 - i0 + 1, v);
   }
 }
 
 std::pair<long, long> PocketGrid::rows(const Capsule& c) const {
   return {std::max(0L, static_cast<long>(std::floor((std::min(c.a.y, c.b.y) - c.radius - y0) / cell - 0.5))),
           std::min(ny - 1, static_cast<long>(std::ceil((std::max(c.a.y, c.b.y) + c.radius - y0) / cell - 0.5)))};
-}
-
-std::pair<long, long> PocketGrid::span(const Capsule& c, long j) const {
-  const Vec3 &a = c.a, &b = c.b;
-  const double dx = b.x - a.x, dy = b.y - a.y, l2 = c.l2, l = c.l;
-  const double y = y0 + (static_cast<double>(j) + 0.5) * cell;
-  // The capsule meets the row in one interval: the union of the end
-  // disks and the band along the segment.
-  double lo = 1e300, hi = -1e300;
-  disk(a, c.radius, y, lo, hi);
-  disk(b, c.radius, y, lo, hi);
-  if (l2 > 0) {
-    double blo = -1e300, bhi = 1e300;
-    clip(((-a.x) * dx + (y - a.y) * dy) / l2, dx / l2, 0, 1, blo, bhi);
-    clip(((-a.x) * -dy + (y - a.y) * dx) / l, -dy / l, -c.radius, c.radius, blo, bhi);
-    if (blo <= bhi) lo = std::min(lo, blo), hi = std::max(hi, bhi);
-  }
-  if (lo > hi) return {0, -1};
-  return {std::max(0L, static_cast<long>(std::ceil((lo - x0) / cell - 0.5))),
-          std::min(nx - 1, static_cast<long>(std::floor((hi - x0) / cell - 0.5)))};
 }
 
 std::vector<std::pair<Vec3, size_t>> PocketGrid::components(const std::vector<uint8_t>& bits, size_t min) const {
