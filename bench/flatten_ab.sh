@@ -16,14 +16,26 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 sed -E 's/\bflatten_pieces\b/flatten_pieces_v/g; s/\bflatten_into\b/flatten_into_v/g; s/\bFlattenResult flatten\(/FlattenResult flatten_v(/; s/\bdouble (chord_deviation|band_deviation|estimate_segments)\(/double \1_v(/' \
   "$variant" > "$out/variant.cpp"
-flags=$(sed -n 's/^CXX_FLAGS = //p' "$build/bench/CMakeFiles/flatten_bench.dir/flags.make" | tr ' ' '\n' | grep -E '^-O|^-g|^-D|^-std|^-m' | tr '\n' ' ')
-# (with the options CMakeLists.txt gives that file alone, -O3: read from
-# the Makefile generator's rule for it; none under another generator)
-own=$(grep -E '\$\(CXX_FLAGS\) .* -MD .*flatten_curve\.cpp\.o ' "$build/CMakeFiles/bezcam_flatten.dir/build.make" 2>/dev/null |
-  sed -E 's/.*\$\(CXX_FLAGS\) (.*) -MD .*/\1/' | head -1 || true)
+# The build's options for a source, from its compile_commands.json (any
+# generator): optimisation, debug, defines, standard and machine options.
+flags_of() {
+  python3 - "$build/compile_commands.json" "$1" <<'PY'
+import json, shlex, sys
+for e in json.load(open(sys.argv[1])):
+    if e["file"].endswith(sys.argv[2]):
+        args = e.get("arguments") or shlex.split(e["command"])
+        keep = [a for a in args if a[:2] in ("-O", "-g", "-D", "-m", "-f") or a.startswith("-std")]
+        print(" ".join(shlex.quote(a) for a in keep))
+        break
+PY
+}
+# The driver with the benchmarks' options; the variant with those the
+# library's copy is compiled with (its own -O3 included).
+eval "flags=($(flags_of bench/flatten_bench.cpp))"
+eval "own=($(flags_of src/flatten/flatten_curve.cpp))"
 inc="-I$src/include -I$src/src -I$build/include"
-c++ $flags $own $inc -c "$out/variant.cpp" -o "$out/variant.o"
-c++ $flags $inc -c "$src/bench/ab/flatten_ab.cpp" -o "$out/driver.o"
+c++ "${own[@]}" $inc -c "$out/variant.cpp" -o "$out/variant.o"
+c++ "${flags[@]}" $inc -c "$src/bench/ab/flatten_ab.cpp" -o "$out/driver.o"
 libs=("$build"/libbezcam_flatten.a "$build"/libbezcam_kernel.a "$build"/libbezcam_base.a)
-c++ $flags "$out/driver.o" "$out/variant.o" -o "$out/flatten_ab" "${libs[@]}" "${libs[@]}"
+c++ "${flags[@]}" "$out/driver.o" "$out/variant.o" -o "$out/flatten_ab" "${libs[@]}" "${libs[@]}"
 "$out/flatten_ab" "$corpus" "${4:-10}" "${5:-61}"
