@@ -72,9 +72,15 @@ class Segment {
     }
     box_.resize(m_);
     nv_.resize(m_);
+    ends_.resize(m_);
+    closed_.resize(m_);
+    flips_.resize(m_);
     for (size_t u = 0; u < m_; ++u) {
       for (const auto& p : c(u).outline) box_[u].add(p);
       nv_[u] = vertex_count(c(u));
+      if (!c(u).outline.empty()) ends_[u] = {c(u).outline.front(), c(u).outline.back()};
+      closed_[u] = c(u).closed;
+      flips_[u] = !c(u).closed && c(u).reversible;
     }
     build_neighbours();
   }
@@ -271,17 +277,17 @@ class Segment {
     return t;
   }
 
+  // The local search reads these for every candidate: from the compact
+  // copies of each contour's ends and kind, not through its outline.
   Vec3 entry(const Tour& t, uint32_t u) const {
     if (u == tail_) return to_.value_or(Vec3{});
-    const auto& o = c(u).outline;
-    if (c(u).closed) return o[t.start[u]];
-    return t.rev[u] ? o.back() : o.front();
+    if (closed_[u]) return c(u).outline[t.start[u]];
+    return t.rev[u] ? ends_[u].second : ends_[u].first;
   }
   Vec3 exit(const Tour& t, uint32_t u) const {
     if (u == home_) return from_;
-    const auto& o = c(u).outline;
-    if (c(u).closed) return o[t.start[u]];
-    return t.rev[u] ? o.front() : o.back();
+    if (closed_[u]) return c(u).outline[t.start[u]];
+    return t.rev[u] ? ends_[u].first : ends_[u].second;
   }
   /// Rapid from point p to the entry of v (nothing to a missing tail).
   double to(const Tour& t, const Vec3& p, uint32_t v) const {
@@ -291,7 +297,7 @@ class Segment {
   double link(const Tour& t, uint32_t u, uint32_t v) const { return to(t, exit(t, u), v); }
   /// A reversible open contour flips when a stretch holding it is reversed
   /// (so the links inside keep their length); others keep their direction.
-  bool flips(uint32_t u) const { return !c(u).closed && c(u).reversible; }
+  bool flips(uint32_t u) const { return flips_[u]; }
   Vec3 entry_r(const Tour& t, uint32_t u) const { return flips(u) ? exit(t, u) : entry(t, u); }
   Vec3 exit_r(const Tour& t, uint32_t u) const { return flips(u) ? entry(t, u) : exit(t, u); }
   void flip(Tour& t, uint32_t u) const {
@@ -652,6 +658,8 @@ class Segment {
   std::vector<std::vector<uint32_t>> preds_, succs_, nbrs_;
   std::vector<Box2> box_;
   std::vector<size_t> nv_;
+  std::vector<std::pair<Vec3, Vec3>> ends_;  // first and last point of each outline
+  std::vector<char> closed_, flips_;
   mutable std::vector<size_t> cands_;
 };
 
