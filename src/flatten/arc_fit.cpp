@@ -526,6 +526,8 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
   const bool tangent = opt.tangent && !opt.helical;
   const double q = opt.decimals >= 0 ? std::pow(10.0, -opt.decimals) : 0.0;
   Vec3 tin;
+  if (tangent && norm2(opt.start_direction) > 0)
+    tin = Vec3{opt.start_direction.x, opt.start_direction.y, 0} / norm2(opt.start_direction);
   for (size_t pi = 0; pi < pieces.size(); ++pi) {
     const Bezier& b = pieces[pi];
     // Helical arcs take any piece; their bound is 3D (dz = 0 below).

@@ -92,4 +92,33 @@ TEST(ArcFitTangent, JointsAreTangentAsLinuxCncJudgesThem) {
   }
 }
 
+TEST(ArcFitTangent, AChainStartsInTheDirectionGiven) {
+  // The direction a line before the curve ends in: the curve's own tangent
+  // at its start, and that turned by 2 mrad (a line that is not quite
+  // tangent). The first move leaves in it within its rounding, and the
+  // printed path stays within the proven bound.
+  const std::vector<Bezier> w = wave();
+  const Vec3 t0 = derivative(w.front(), 0) / norm(derivative(w.front(), 0));
+  for (const double turn : {0.0, 0.002}) {
+    SCOPED_TRACE(turn);
+    ArcFitOptions o;
+    o.tolerance = 0.01;
+    o.decimals = 4;
+    o.tangent = true;
+    o.start_direction = {t0.x * std::cos(turn) - t0.y * std::sin(turn), t0.x * std::sin(turn) + t0.y * std::cos(turn),
+                         0};
+    const ArcFitResult r = fit_arcs(w, o);
+    ASSERT_FALSE(r.moves.empty());
+    const Vec3 d = direction(r.start, r.moves.front(), true);
+    const double radius = r.moves.front().kind == FitKind::line ? norm(r.moves.front().to - r.start)
+                                                                : norm(r.start - r.moves.front().center);
+    EXPECT_LE(std::abs(std::atan2(o.start_direction.x * d.y - o.start_direction.y * d.x,
+                                  o.start_direction.x * d.x + o.start_direction.y * d.y)),
+              1e-4 / radius + 1e-9);
+    EXPECT_LE(r.bound, o.tolerance);
+    const Deviation dev = measure_deviation(w, drawn(r), o.tolerance);
+    EXPECT_LE(dev.max(), r.bound + 1e-3 * o.tolerance);
+  }
+}
+
 }  // namespace bezcam

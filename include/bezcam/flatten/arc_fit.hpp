@@ -68,6 +68,10 @@ struct ArcFitOptions {
   /// arc. false: each arc's centre chosen freely (one fewer constraint:
   /// longer spans, but the moves meet at small angles).
   bool tangent = false;
+  /// With `tangent`: the direction the move before the first piece ends in
+  /// (in the plane; zero: none). The chain then starts already: the first
+  /// arc leaves in this direction, as the arcs after it do.
+  Vec3 start_direction{};
 };
 
 enum class FitKind { line, arc_cw, arc_ccw };
