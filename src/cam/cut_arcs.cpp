@@ -10,22 +10,26 @@
 #include "bezcam/flatten/tolerance.hpp"
 #include "cut_emitters.hpp"
 #include "measure_path.hpp"
+#include "speed_stretches.hpp"
 
 namespace bezcam::detail {
 
-double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks) {
+void append_line(CutContext& c, const Vec3& to, std::vector<Vec3>& path, size_t& blocks) {
+  if (!path.empty() && to == path.back()) return;
+  LineMove l;
+  l.to = cut_point(c, to);
+  l.feed = c.params.feed;
+  c.program.moves.push_back({l, static_cast<int>(c.entity.index)});
+  path.push_back(to);
+  ++blocks;
+}
+
+double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks,
+                            Vec3* direction) {
   const int entity = static_cast<int>(c.entity.index);
   Vec3 from = quantize(pieces.front().front(), c.decimals);
   if (path.empty()) path.push_back(from);
-  auto push_line = [&](const Vec3& to) {
-    if (to == path.back()) return;  // a piece shorter than the rounding: the tool is there already
-    LineMove l;
-    l.to = cut_point(c, to);
-    l.feed = c.params.feed;
-    c.program.moves.push_back({l, entity});
-    path.push_back(to);
-    ++blocks;
-  };
+  auto push_line = [&](const Vec3& to) { append_line(c, to, path, blocks); };
   if (!c.machine.arcs) {
     FlattenOptions fo{c.tolerance, c.decimals};
     bool first = true;
@@ -46,6 +50,7 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
   // Arcs that meet tangentially: a controller's planner runs through their
   // joints instead of slowing down at each (docs/motion.md).
   ao.tangent = true;
+  if (direction) ao.start_direction = *direction;
   // `pl`: the arcs' plane (G18 and G19 for helical arcs only).
   auto emit = [&](const FitMove& f, Plane pl) {
     if (f.kind == FitKind::line) {
@@ -94,7 +99,18 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
     for (const FitMove& f : best.moves) emit(f, best.plane);
     return best.bound;
   }
-  return fit_arcs(pieces, ao, [&](const FitMove& f) { emit(f, Plane::xy); });
+  return fit_arcs(pieces, ao, [&](const FitMove& f) {
+    if (direction) {
+      // The direction the move ends in: along a line, square to an arc's
+      // radius at its end.
+      const Vec3 d = f.kind == FitKind::line      ? f.to - from
+                     : f.kind == FitKind::arc_ccw ? Vec3{f.center.y - f.to.y, f.to.x - f.center.x, 0}
+                                                  : Vec3{f.to.y - f.center.y, f.center.x - f.to.x, 0};
+      const double l = std::hypot(d.x, d.y);
+      *direction = l > 0 ? Vec3{d.x / l, d.y / l, 0} : Vec3{};
+    }
+    emit(f, Plane::xy);
+  });
 }
 
 void emit_arcs(CutContext& c, EntityReport& r) {
@@ -106,7 +122,29 @@ void emit_arcs(CutContext& c, EntityReport& r) {
   const auto& pieces = c.entity.curve.pieces;
   std::vector<Vec3> path;
   r.blocks = 0;
+  const size_t first = c.program.moves.size();
   r.bound = append_arcs_or_lines(c, pieces, path, r.blocks);
+  const auto& mm = c.machine.motion;
+  if (mm && arcs_accelerate_slower(*mm) && c.params.tolerance_side == ToleranceSide::both &&
+      std::all_of(pieces.begin(), pieces.end(), [](const Bezier& b) { return planar_xy(b); })) {
+    // This controller gives arcs less acceleration than lines: the arcs
+    // where the tool cruises at the feed, lines where it changes speed
+    // (docs/motion.md, "Arcs where the tool cruises"), when that is faster.
+    std::vector<Vec3> cruise_path;
+    double cruise_bound = 0;
+    const auto kept = keep_faster_cut(c, pieces.front().front(), first, r.blocks, [&]() -> std::optional<size_t> {
+      size_t n = 0;
+      cruise_bound = append_cruise(c, pieces, cruise_path, n, [&](std::span<const Bezier> run, Vec3& dir) {
+        return append_arcs_or_lines(c, run, cruise_path, n, &dir);
+      });
+      return n;
+    });
+    if (kept) {
+      path = std::move(cruise_path);
+      r.blocks = *kept;
+      r.bound = cruise_bound;
+    }
+  }
   if (c.measure)
     c.measure_with(r, [pieces = std::span<const Bezier>(pieces), path = std::move(path), tol = c.tolerance,
                        bound = r.bound, label = r.label] {

@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <thread>
 #include <vector>
@@ -190,6 +191,35 @@ size_t append_exact_block(CutContext& c, const ExactBlock& b, const std::functio
 /// The arc/line fallback for a run of pieces that starts at the current
 /// printed position: appends the moves, adds their count to `blocks`, the
 /// drawn path (model coordinates, dense) to `path`, returns the proven bound.
-double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks);
+/// `direction` (planar pieces): in, the direction the move before ends in,
+/// which a tangent chain then continues (zero: none); out, the direction
+/// the last move ends in.
+double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks,
+                            Vec3* direction = nullptr);
+
+/// Appends the moves of a run of pieces where the tool cruises at the feed
+/// (append_cruise()); `direction` as for append_arcs_or_lines(). Returns
+/// the proven bound.
+using SteadyEmitter = std::function<double(std::span<const Bezier> pieces, Vec3& direction)>;
+/// Planar pieces on a controller whose arcs accelerate more slowly than
+/// its lines (arcs_accelerate_slower()): the lines program's chords where
+/// the tool changes speed, `steady`'s moves where it cruises at the feed,
+/// joined by lines tangent to them where lines long enough for the feed
+/// fit (else lines there too). Returns the proven bound (cruise_arcs.cpp).
+double append_cruise(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks,
+                     const SteadyEmitter& steady);
+/// Replaces the moves of c.program from `first` on (a cut along a curve
+/// starting at `start`, `plain_blocks` blocks) by the ones `make` appends
+/// in their place (the same cut with lines where the tool changes speed,
+/// append_cruise(); `make` returns its block count, or nullopt when it
+/// cannot make it) when its plan is faster (take_cruise()); else puts the
+/// first cut back. Returns the block count of the cut kept when it is
+/// `make`'s (cruise_arcs.cpp).
+std::optional<size_t> keep_faster_cut(CutContext& c, const Vec3& start, size_t first, size_t plain_blocks,
+                                      const std::function<std::optional<size_t>()>& make);
+
+/// A G01 to `to` (model point) at the feed, unless the tool is there
+/// already (a piece shorter than the rounding); `path` and `blocks` follow.
+void append_line(CutContext& c, const Vec3& to, std::vector<Vec3>& path, size_t& blocks);
 
 }  // namespace bezcam::detail

@@ -26,11 +26,22 @@ const std::string kQuarter =
 const std::string kQuartic = R"({"id": "q4", "type": "bezier", "points": [[0,-1],[1,1],[0,0],[-1,0],[0,1]]})";
 const std::string kTwisted = R"({"id": "c3", "type": "bezier", "points": [[0,0,0],[1,0,0],[1,1,0],[1,1,1]]})";
 
-ConvertResult run(const Job& j, const std::string& machine, OutputMode mode) {
+// LinuxCNC's words with a planner that gives arcs the acceleration of
+// lines: arcs and exact blocks all along (no lines where the tool changes
+// speed, docs/motion.md), for the tests of the words themselves.
+MachineProfile words_of(const std::string& machine) {
+  MachineProfile m = load_machine_profile(machine);
+  if (m.motion) m.motion->planner = MotionModel::Planner::generic;
+  return m;
+}
+
+ConvertResult run(const Job& j, const MachineProfile& m, OutputMode mode) {
   ConvertOptions o;
   o.output = mode;
-  return convert(j, load_machine_profile(machine), o);
+  return convert(j, m, o);
 }
+
+ConvertResult run(const Job& j, const std::string& machine, OutputMode mode) { return run(j, words_of(machine), mode); }
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> out;

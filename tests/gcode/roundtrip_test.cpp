@@ -199,8 +199,13 @@ TEST(RoundTrip, EveryCurveSampleInEveryModeAndProfileReadsBackWithinTolerance) {
               << "), nurbs " << per.at(2).second << " (" << per.at(2).second / lines << ")\n";
     RecordProperty(name + std::string("_arcs_per_line"), std::to_string(per.at(1).second / lines));
     RecordProperty(name + std::string("_nurbs_per_line"), std::to_string(per.at(2).second / lines));
-    // Arcs take far fewer blocks than lines everywhere.
-    EXPECT_LT(per.at(1).second * 2, per.at(0).second) << name;
+    // Arcs take far fewer blocks than lines; on LinuxCNC, which gives arcs
+    // less acceleration, lines where the tool changes speed: fewer still.
+    const auto& motion = load_machine_profile(name).motion;
+    if (motion && motion->planner == MotionModel::Planner::linuxcnc)
+      EXPECT_LT(per.at(1).second * 3, per.at(0).second * 2) << name;
+    else
+      EXPECT_LT(per.at(1).second * 2, per.at(0).second) << name;
   }
 }
 

@@ -1,0 +1,57 @@
+#pragma once
+// Internal to the post layer: where along a cut the tool runs steadily at
+// its feed and where it changes speed, for controllers whose arcs
+// accelerate more slowly than their lines (docs/motion.md, "Arcs where the
+// tool cruises").
+#include <span>
+#include <vector>
+
+#include "bezcam/kernel/bezier.hpp"
+#include "bezcam/kernel/units.hpp"
+#include "bezcam/machine/machine_profile.hpp"
+
+namespace bezcam::detail {
+
+/// Planned times this close are the same (the report's rounding).
+inline constexpr double kSamePlannedTime = 1e-6;
+/// The share of a cut's planned time that lines where the tool changes
+/// speed must save before they replace arcs or exact blocks all along.
+inline constexpr double kCruiseGain = 0.005;
+
+/// Whether the cut with lines where the tool changes speed (planned time
+/// `cruise`, `cruise_blocks`) replaces the one with arcs or exact blocks
+/// all along (`plain`, `plain_blocks`): when it saves more than kCruiseGain
+/// of the time, or takes the same time in fewer blocks.
+inline bool take_cruise(double plain, size_t plain_blocks, double cruise, size_t cruise_blocks) {
+  if (cruise < plain * (1 - kCruiseGain)) return true;
+  return cruise <= plain + kSamePlannedTime && plain <= cruise + kSamePlannedTime && cruise_blocks < plain_blocks;
+}
+
+/// A run of pieces, end to end, cut from a curve's pieces at parameter
+/// values (split() of the pieces it starts or ends inside).
+struct SpeedStretch {
+  std::vector<Bezier> pieces;
+  /// true: the tool runs at the feed all along (the machine's speed limits
+  /// and its curvature allow it, with room to accelerate from rest at the
+  /// cut's start and to stop at its end); false: it speeds up or slows down.
+  bool steady = false;
+};
+
+/// Whether arcs on `model` accelerate more slowly along the path than
+/// lines: LinuxCNC's planner gives an arc tighter than the machine's top
+/// speed allows half of its acceleration for the tangent.
+bool arcs_accelerate_slower(const MotionModel& model);
+
+/// `pieces` (planar, in the program's `units`, cut at `feed` units/min
+/// from rest to rest) as alternating stretches: steady where the lines
+/// program of the curve (the flattener's chords within `tolerance` at
+/// `decimals`), planned on `model`, runs at the feed and the curve is no
+/// tighter than an arc at the feed allows (sqrt(3)/2 of the plane's
+/// acceleration), less the distance the lines need to stop from the feed
+/// at each steady run's end (arcs, with less acceleration, start slowing
+/// down earlier); not steady elsewhere. One stretch when the whole curve is
+/// one kind.
+std::vector<SpeedStretch> speed_stretches(std::span<const Bezier> pieces, double feed, const MotionModel& model,
+                                          Units units, double tolerance, int decimals);
+
+}  // namespace bezcam::detail
