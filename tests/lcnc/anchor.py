@@ -74,6 +74,18 @@ PROGRAMS_FROM_BEZCAM = [
     ("bz-wave-lines-F6000", "curve-bspline-wave.json", "lines", 6000),
     ("bz-wave-arcs-F6000", "curve-bspline-wave.json", "arcs", 6000),
     ("bz-wave-nurbs-F6000", "curve-bspline-wave.json", "nurbs", 6000),
+    ("bz-hermite-lines-F6000", "curve-interpolate-hermite.json", "lines", 6000),
+    ("bz-hermite-arcs-F6000", "curve-interpolate-hermite.json", "arcs", 6000),
+    ("bz-hermite-nurbs-F6000", "curve-interpolate-hermite.json", "nurbs", 6000),
+    ("bz-circle-lines-F6000", "curve-nurbs-circle.json", "lines", 6000),
+    ("bz-circle-arcs-F6000", "curve-nurbs-circle.json", "arcs", 6000),
+    ("bz-circle-nurbs-F6000", "curve-nurbs-circle.json", "nurbs", 6000),
+    ("bz-quarter-lines-F6000", "curve-rational-quarter-circle.json", "lines", 6000),
+    ("bz-quarter-arcs-F6000", "curve-rational-quarter-circle.json", "arcs", 6000),
+    ("bz-quarter-nurbs-F6000", "curve-rational-quarter-circle.json", "nurbs", 6000),
+    ("bz-finish-lines-F6000", "job-finish-pass.json", "lines", 6000),
+    ("bz-finish-arcs-F6000", "job-finish-pass.json", "arcs", 6000),
+    ("bz-finish-nurbs-F6000", "job-finish-pass.json", "nurbs", 6000),
 ]
 
 
