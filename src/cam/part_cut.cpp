@@ -256,7 +256,10 @@ void PartCut::build_chains() {
     chain_closed.push_back(closed);
   }
   if (side == 0) return;
-  const OffsetResult o = offset_curve(part, closed, {offset_by, side, fit});
+  // Arcs and exact blocks follow the offset's arcs: tangent ones, so that
+  // the controller runs through their joints.
+  const bool tangent = c.output != OutputMode::lines;
+  const OffsetResult o = offset_curve(part, closed, {offset_by, side, fit, tangent});
   if (o.chains.empty())
     fail("tool_diameter", "a tool of diameter " + fmt_num(cp.tool_diameter.value_or(0)) +
                               " does not fit: no point is " + fmt_num(offset_by) +
@@ -277,7 +280,7 @@ void PartCut::build_chains() {
   // the band's shift only (the part itself when both are zero).
   OffsetResult prog;
   if (controller && chains.empty())
-    prog = offset_curve(part, closed, {std::abs(program_by), program_by > 0 ? side : -side, fit});
+    prog = offset_curve(part, closed, {std::abs(program_by), program_by > 0 ? side : -side, fit, tangent});
   const OffsetResult& used = controller ? prog : o;
   fit_bound = controller ? (chains.empty() ? prog.bound : 0.0) : o.bound;
   // A lead stays in the path's band: it is cut within half the tolerance,

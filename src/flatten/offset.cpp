@@ -394,6 +394,7 @@ void OffsetBuilder::fit_spline(std::span<const Bezier> pieces) {
   ao.tolerance = opt.fit;
   ao.decimals = -1;
   ao.radius_tolerance = HUGE_VAL;
+  ao.tangent = opt.tangent;
   Vec3 from = flat(pieces.front().front());
   const double bound = fit_arcs(pieces, ao, [&](const FitMove& f) {
     const Vec3 to = flat(f.to);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <sstream>
 #include <string>
 
@@ -98,10 +99,12 @@ Joints arc_joints(const Program& p, double angle) {
   return j;
 }
 
-TEST(CruiseArcs, ArcsAndNurbsAreNoSlowerThanLinesAtF6000) {
+// Each sample at F6000 on linuxcnc and fanuc: arcs and NURBS programs take
+// at most 1 % longer than lines, within their proven bound.
+void expect_no_slower_than_lines(std::span<const char* const> samples) {
   for (const char* machine : {"linuxcnc", "fanuc"}) {
     const MachineProfile m = load_machine_profile(machine);
-    for (const char* name : kCurves) {
+    for (const char* name : samples) {
       SCOPED_TRACE(std::string(machine) + " " + name);
       const Job job = sample_at(name, 6000);
       const double lines = convert_as(job, m, OutputMode::lines).plan->cycle_time_s;
@@ -114,6 +117,8 @@ TEST(CruiseArcs, ArcsAndNurbsAreNoSlowerThanLinesAtF6000) {
     }
   }
 }
+
+TEST(CruiseArcs, ArcsAndNurbsAreNoSlowerThanLinesAtF6000) { expect_no_slower_than_lines(kCurves); }
 
 TEST(CruiseArcs, EveryArcJointIsTangentAsLinuxCncJudgesIt) {
   // LinuxCNC takes a joint as tangent when turning by it within one servo
@@ -174,6 +179,16 @@ TEST(CruiseArcs, LinesWhereTheToolSpeedsUpAndSlowsDownArcsBetween) {
   Program replanned = plain.program;
   EXPECT_LT(r.plan->cycle_time_s,
             plan_motion(program_timeline(replanned), *m.motion, PlanDetail::summary).cycle_time_s);
+}
+
+TEST(CruiseArcs, PartCutsInArcsAndNurbsAreNoSlowerThanLines) {
+  // Cut as parts, the curves' offsets follow tangent arc chains: the
+  // offsets of their arcs meet with no small joint arc between them (a
+  // tiny NURBS piece whose rounded control points kink the path).
+  // Without that the cam's NURBS program took 17 % longer than its lines
+  // on fanuc at F6000, the lettering's arcs program 5 % on linuxcnc.
+  const char* const parts[] = {"part-cam-notch", "part-lettering"};
+  expect_no_slower_than_lines(parts);
 }
 
 }  // namespace

@@ -62,6 +62,11 @@ struct OffsetOptions {
   double distance = 0;  ///< r > 0
   int side = 1;         ///< +1: left of the direction of travel, -1: right
   double fit = 0.005;   ///< how close the arc spline A follows the curve (two-sided)
+  /// A in tangent chains (ArcFitOptions::tangent): its arcs meet
+  /// tangentially, so their offsets meet with no joint arc between them
+  /// (a few more arcs; the path turns smoothly where a controller's
+  /// planner would slow at each small joint).
+  bool tangent = false;
 };
 
 /// A stretch of the curve the tool cannot touch (a bend tighter than the
