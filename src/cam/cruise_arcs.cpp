@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include "bezcam/cam/program_motion.hpp"
 #include "bezcam/flatten/arc_fit.hpp"
@@ -295,8 +296,14 @@ std::optional<size_t> keep_faster_cut(CutContext& c, const Vec3& start, size_t f
   moves.erase(at(), moves.end());
   const std::optional<size_t> blocks = make();
   if (blocks && take_cruise(planned_cut_time(c, start, plain), plain_blocks,
-                            planned_cut_time(c, start, {at(), moves.end()}), *blocks))
+                            planned_cut_time(c, start, {at(), moves.end()}), *blocks)) {
+    // Said once per program, in the header.
+    const std::string n = "G01 where the tool speeds up or slows down, where that is faster: machine " +
+                          c.machine.name + " gives arcs less acceleration than lines";
+    auto& notes = c.program.notes;
+    if (std::find(notes.begin(), notes.end(), n) == notes.end()) notes.push_back(n);
     return blocks;
+  }
   moves.erase(at(), moves.end());
   moves.insert(moves.end(), std::make_move_iterator(plain.begin()), std::make_move_iterator(plain.end()));
   return std::nullopt;

@@ -164,6 +164,9 @@ TEST(CruiseArcs, LinesWhereTheToolSpeedsUpAndSlowsDownArcsBetween) {
   ASSERT_GT(cut.size(), 6u);
   EXPECT_EQ(cut.front(), BlockKind::linear);
   EXPECT_EQ(cut.back(), BlockKind::linear);
+  EXPECT_NE(r.gcode.find("(G01 where the tool speeds up or slows down, where that is faster: machine linuxcnc gives "
+                         "arcs less acceleration than lines)\n"),
+            std::string::npos);
   size_t arcs = 0;
   for (const BlockKind k : cut) arcs += k == BlockKind::arc_ccw || k == BlockKind::arc_cw;
   EXPECT_GE(arcs, 4u);

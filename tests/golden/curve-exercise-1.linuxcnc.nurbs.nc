@@ -5,6 +5,7 @@
 (T1 plunge feed 200 mm/min)
 (estimated cycle time 2 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 (cutting along the curves 0.23 s; the exact path's bound on this machine 0.21 s [x1.071; rapids, plunges and pauses not counted])
+(G01 where the tool speeds up or slows down, where that is faster: machine linuxcnc gives arcs less acceleration than lines)
 G21 G90 G17
 G40 G49 G80 G94
 G54

@@ -6,6 +6,7 @@
 (estimated cycle time 29 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 (cutting along the curves 17.69 s; the exact path's bound on this machine 17.40 s [x1.016; rapids, plunges and pauses not counted])
 (order shortest: 6 nested contours cut before what encloses them; rapids 53.1 mm in XY instead of 118.5 mm as written [65.4 mm saved])
+(G01 where the tool speeds up or slows down, where that is faster: machine linuxcnc gives arcs less acceleration than lines)
 G21 G90 G17
 G40 G49 G80 G94
 G54

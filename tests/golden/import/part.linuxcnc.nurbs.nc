@@ -6,6 +6,7 @@
 (estimated cycle time 51 s on the motion model of machine linuxcnc [acceleration, corners, tool changes])
 (cutting along the curves 28.07 s; the exact path's bound on this machine 27.02 s [x1.039; rapids, plunges and pauses not counted])
 (order shortest: 16 nested contours cut before what encloses them; rapids 150.4 mm in XY instead of 235.7 mm as written [85.3 mm saved])
+(G01 where the tool speeds up or slows down, where that is faster: machine linuxcnc gives arcs less acceleration than lines)
 G21 G90 G17
 G40 G49 G80 G94
 G54
