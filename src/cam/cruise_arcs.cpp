@@ -52,10 +52,13 @@ std::optional<double> farthest(double lo, double hi, bool up, F ok) {
   return found;
 }
 
-// A printed line over the curve's parameters [t0, t1] of one piece.
+// A printed line of a joint: a line along a tangent (`t`: the parameter
+// where it meets the rest of the stretch) or a chord from or to one of the
+// lines program's vertices (`vertex`: its index).
 struct Joint {
-  double t = 0;  // the parameter where it meets the rest of the stretch
-  Vec3 a, b;     // printed ends
+  double t = 0;
+  size_t vertex = 0;
+  Vec3 a, b;  // printed ends
   double dev = 0;
 };
 
@@ -84,7 +87,7 @@ double on_piece(const FlatVertex& v, size_t p) {
 
 // Leaving a chain at vx[0] in direction `dir`: the longest line along
 // `dir` over the first piece on [0, t], then the longest chord from its
-// end to a vertex of the chords (index returned in `.second.t`), over the
+// end to a vertex of the chords (`.second.vertex`), over the
 // first piece only and before vertex `last`. Both proven by
 // band_deviation() between their printed ends.
 std::optional<std::pair<Joint, Joint>> leave_chain(const Bezier& b, const std::vector<FlatVertex>& vx, size_t last,
@@ -114,16 +117,16 @@ std::optional<std::pair<Joint, Joint>> leave_chain(const Bezier& b, const std::v
     if (!(tj > line.t)) continue;
     const double dev = band_deviation(b, line.t, tj, line.b, vx[j].point, bd.tol);
     if (!(dev <= bd.tol)) break;
-    back = {static_cast<double>(j), line.b, vx[j].point, dev};
+    back = {tj, j, line.b, vx[j].point, dev};
   }
-  if (!(back.t > 0) || dist(back.a, back.b) < bd.shortest) return std::nullopt;
+  if (back.vertex == 0 || dist(back.a, back.b) < bd.shortest) return std::nullopt;
   return std::make_pair(line, back);
 }
 
 // Entering a chain at the last vertex along the curve's tangent there: the
 // longest line ending there along that tangent, over the last piece `p` on
 // [t, 1], and the longest chord to its start from a vertex of the chords
-// after vertex `first` (index returned in `.first.t`).
+// after vertex `first` (`.first.vertex`).
 std::optional<std::pair<Joint, Joint>> enter_chain(const Bezier& b, size_t p, const std::vector<FlatVertex>& vx,
                                                    size_t first, const Budget& bd) {
   Vec3 dir = derivative(b, 1.0);
@@ -154,9 +157,9 @@ std::optional<std::pair<Joint, Joint>> enter_chain(const Bezier& b, size_t p, co
     if (tk < 0 || !(tk < line.t)) continue;
     const double dev = band_deviation(b, tk, line.t, vx[k].point, line.a, bd.tol);
     if (!(dev <= bd.tol)) break;
-    in = {static_cast<double>(k), vx[k].point, line.a, dev};
+    in = {tk, k, vx[k].point, line.a, dev};
   }
-  if (!(in.t > 0) || dist(in.a, in.b) < bd.shortest) return std::nullopt;
+  if (in.vertex == 0 || dist(in.a, in.b) < bd.shortest) return std::nullopt;
   return std::make_pair(in, line);
 }
 
@@ -233,12 +236,12 @@ double append_cruise(CutContext& c, std::span<const Bezier> pieces, std::vector<
     std::optional<std::pair<Joint, Joint>> leave;
     if (norm_xy(chain_end) > 0) leave = leave_chain(st.pieces.front(), vx, vx.size() - 1, chain_end, bd);
     chain_end = {};
-    const size_t from = leave ? static_cast<size_t>(leave->second.t) : 0;
+    const size_t from = leave ? leave->second.vertex : 0;
     // Into the next chain: a chord to a line along the curve's tangent at
     // its start.
     std::optional<std::pair<Joint, Joint>> enter;
     if (i + 1 < stretches.size()) enter = enter_chain(st.pieces.back(), st.pieces.size() - 1, vx, from, bd);
-    const size_t to = enter ? static_cast<size_t>(enter->first.t) : vx.size() - 1;
+    const size_t to = enter ? enter->first.vertex : vx.size() - 1;
     if (leave) push_line(leave->first.b, leave->first.dev);
     for (size_t k = from; k <= to; ++k)
       if (k > 0) push_line(vx[k].point, k == from && leave ? leave->second.dev : 0);

@@ -31,9 +31,9 @@ inline bool take_cruise(double plain, size_t plain_blocks, double cruise, size_t
 /// values (split() of the pieces it starts or ends inside).
 struct SpeedStretch {
   std::vector<Bezier> pieces;
-  /// true: the tool runs at the feed all along (the machine's speed limits
-  /// and its curvature allow it, with room to accelerate from rest at the
-  /// cut's start and to stop at its end); false: it speeds up or slows down.
+  /// true: the lines program of the stretch runs at the feed all along and
+  /// an arc at the feed fits its curvature (speed_stretches() gives the
+  /// rule); false: the tool speeds up or slows down there.
   bool steady = false;
 };
 
