@@ -12,7 +12,6 @@
 #include <gtest/gtest.h>
 #include <map>
 #include <sstream>
-#include <unistd.h>
 
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
@@ -20,6 +19,7 @@
 #include "bezcam/kernel/bezier.hpp"
 #include "bezcam/kernel/nurbs_curve.hpp"
 #include "bezcam/machine/machine_profile.hpp"
+#include "support/files.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -33,9 +33,8 @@ struct RefPoint {
 
 // The drawing and ezdxf's reference points, made once per test binary.
 const std::pair<fs::path, std::vector<RefPoint>>& ezdxf_part() {
+  static const test::TempDir dir;  // removed when the test program ends
   static const auto made = [] {
-    const fs::path dir = fs::temp_directory_path() / ("bezcam-dxf-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
     const fs::path dxf = dir / "part.dxf", ref = dir / "part.ref";
     const std::string cmd = "/usr/bin/python3 " + std::string(BEZCAM_SOURCE_DIR) + "/tests/import/data/ezdxf_part.py " +
                             dxf.string() + " " + ref.string();
@@ -195,14 +194,13 @@ TEST(DxfReader, LibreCadLibraryMatchesEzdxfsReading) {
   std::sort(all.begin(), all.end());
   std::vector<fs::path> files;
   for (size_t i = 0; i < all.size(); i += 40) files.push_back(all[i]);
-  const fs::path dir = fs::temp_directory_path() / ("bezcam-librecad-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const test::TempDir dir;
   {
     std::ofstream list(dir / "list.txt");
     for (const auto& f : files) list << f.string() << "\n";
   }
   const std::string cmd = "/usr/bin/python3 " + std::string(BEZCAM_SOURCE_DIR) + "/tests/import/data/ezdxf_points.py " +
-                          (dir / "list.txt").string() + " " + dir.string();
+                          (dir / "list.txt").string() + " " + dir.path().string();
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   // mm per drawing unit, $INSUNITS (the DXF reference's table).
   const std::map<int, double> mm = {{0, 1}, {1, 25.4}, {2, 304.8}, {4, 1}, {5, 10}, {6, 1000}};

@@ -12,7 +12,6 @@
 #include <map>
 #include <numbers>
 #include <sstream>
-#include <unistd.h>
 
 #include "bezcam/error.hpp"
 #include "bezcam/gcode/convert.hpp"
@@ -20,6 +19,7 @@
 #include "bezcam/import/read_drawing.hpp"
 #include "bezcam/kernel/bezier.hpp"
 #include "bezcam/machine/machine_profile.hpp"
+#include "support/files.hpp"
 
 namespace bezcam::import {
 namespace {
@@ -314,15 +314,14 @@ TEST(SvgReader, ElementTransformsUseAndViewportsMatchSvgelements) {
     if (e.path().extension() == ".svg") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   ASSERT_GE(files.size(), 6u);
-  const fs::path dir = fs::temp_directory_path() / ("bezcam-svgelements-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const test::TempDir dir;
   {
     std::ofstream list(dir / "list.txt");
     for (const auto& f : files) list << f.string() << "\n";
   }
   const std::string cmd = "/usr/bin/python3 " + std::string(BEZCAM_SOURCE_DIR) +
                           "/tests/import/data/svgelements_points.py " + (dir / "list.txt").string() + " " +
-                          dir.string();
+                          dir.path().string();
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   const double k = 25.4 / 96;  // mm per px
   size_t points = 0, subpaths = 0;
