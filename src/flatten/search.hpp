@@ -4,8 +4,8 @@
 // Each keeps the exact order of evaluations of the loops it replaced, so
 // that results are bit-identical.
 #include <algorithm>
-#include <queue>
 #include <utility>
+#include <vector>
 
 namespace bezcam::flatten_detail {
 
@@ -34,23 +34,30 @@ double sup_branch_and_bound(Node root, double lb, const SupStop& stop, Bound&& b
     Node node;
     bool operator<(const Entry& o) const { return ub < o.ub; }
   };
-  std::priority_queue<Entry> heap;
+  // A binary max-heap on ub, as std::priority_queue keeps it, but the node
+  // taken is moved out rather than copied (a Bézier node owns its points).
+  std::vector<Entry> heap;
+  const auto push = [&heap](double ub, Node&& n) {
+    heap.push_back({ub, std::move(n)});
+    std::push_heap(heap.begin(), heap.end());
+  };
   const double root_ub = bound(root);
-  heap.push({root_ub, std::move(root)});
+  push(root_ub, std::move(root));
   for (int iter = 0; iter < stop.max_splits; ++iter) {
-    const Entry& top = heap.top();
+    const Entry& top = heap.front();
     if (stop.budget >= 0 && top.ub <= stop.budget) return top.ub;  // certainly within
     if (stop.budget >= 0 && lb > stop.budget) return lb;           // certainly over
     if (top.ub - lb <= std::max(stop.relative * top.ub, stop.absolute)) return top.ub;
-    Entry e = heap.top();
-    heap.pop();
+    std::pop_heap(heap.begin(), heap.end());
+    const Node node = std::move(heap.back().node);
+    heap.pop_back();
     Node l, r;
-    lb = std::max(lb, split(e.node, l, r));
+    lb = std::max(lb, split(node, l, r));
     const double ul = bound(l), ur = bound(r);
-    heap.push({ul, std::move(l)});
-    heap.push({ur, std::move(r)});
+    push(ul, std::move(l));
+    push(ur, std::move(r));
   }
-  return heap.top().ub;
+  return heap.front().ub;
 }
 
 /// Where a golden-section search ended: the bracket [a, b] and the values
