@@ -39,12 +39,13 @@ std::vector<Piece> replay(const PocketCheckInput& in, double sag) {
       if (!a->ccw && sweep >= -1e-12) sweep -= 2 * std::numbers::pi;
       const double step = 2 * std::acos(std::clamp(1 - sag / std::max(rad, 1e-12), -1.0, 1.0));
       const int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / std::max(step, 1e-3))));
+      const double bulge = rad * (1 - std::cos(std::abs(sweep) / (2 * n)));
       Vec3 prev = cur;
       for (int k = 1; k <= n; ++k) {
         const double t = static_cast<double>(k) / n, ang = a0 + sweep * t;
         Vec3 q{a->center.x + rad * std::cos(ang), a->center.y + rad * std::sin(ang), cur.z + (to.z - cur.z) * t};
         if (k == n) q = to;
-        out.push_back({prev, q, false, i});
+        out.push_back({prev, q, false, i, true, bulge});
         prev = q;
       }
     } else {
@@ -66,7 +67,8 @@ double seg_seg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 }
 
 // The tool centre's nearest approach to a wall, over every piece below the
-// stock's top, looking no farther than `reach`.
+// stock's top, looking no farther than `reach`. A chord of an arc counts
+// its sagitta nearer: the arc may bulge that much towards the wall.
 void wall_distance(const PocketCheckInput& in, const std::vector<Piece>& path, double reach, PocketCertificate& c) {
   struct Seg {
     Vec3 a, b;
@@ -104,10 +106,10 @@ void wall_distance(const PocketCheckInput& in, const std::vector<Piece>& path, d
         for (uint32_t k : bucket[static_cast<size_t>(j * nx + i)]) {
           if (seen[k] == stamp) continue;
           seen[k] = stamp;
-          const double d = seg_seg(p.a, p.b, walls[k].a, walls[k].b);
+          const double d = seg_seg(p.a, p.b, walls[k].a, walls[k].b) - p.bulge;
           if (d < c.wall_distance) {
             c.wall_distance = d;
-            c.wall_at = detail::point_segment(p.a, walls[k].a, walls[k].b) <= d + 1e-12 ? p.a : p.b;
+            c.wall_at = detail::point_segment(p.a, walls[k].a, walls[k].b) <= d + p.bulge + 1e-12 ? p.a : p.b;
           }
         }
   }

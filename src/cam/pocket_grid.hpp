@@ -19,6 +19,7 @@ struct Piece {
   bool rapid = false;
   size_t move = 0;      ///< the move it comes from
   bool measure = true;  ///< engagement: read along it (else it only removes material)
+  double bulge = 0;     ///< a chord of an arc: the arc lies within this of it (its sagitta)
 };
 
 /// Distance from p to the segment ab in XY.

@@ -2,6 +2,7 @@
 // it must find the material, the rapids and the wall contacts they hold.
 #include "bezcam/cam/pocket_check.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -50,6 +51,30 @@ TEST(PocketCheck, FindsTheCentreThatPlainRingsLeave) {
   EXPECT_EQ(d.rapids_in_material, 1u);
   EXPECT_NEAR(d.wall_distance, 1, 1e-9);
   EXPECT_FALSE(d.walls_kept(3.175, 0, 0.01));
+}
+
+TEST(PocketCheck, AnArcsNearestApproachIsNeverAboveItsTrueOne) {
+  // A full circle of radius 6.9 about the middle of a 20 mm square, from 0.7
+  // rad round: it comes within 10 - 6.9 = 3.1 of each side at 0, 90, 180
+  // and 270 degrees, between the ends of the chords the check reads it by.
+  PocketCheckInput in;
+  in.walls = {{{0, 0, 0}, {20, 0, 0}, {20, 20, 0}, {0, 20, 0}}};
+  in.radius = 3;
+  in.tolerance = 0.01;
+  in.levels = {-3};
+  const double a = 0.7, rad = 6.9;
+  ArcMove arc;
+  arc.to = {10 + rad * std::cos(a), 10 + rad * std::sin(a), -3};
+  arc.center = {10, 10, -3};
+  arc.ccw = true;
+  arc.feed = 100;
+  std::vector<Move> moves{{arc}};
+  in.moves = &moves;
+  in.to = moves.size();
+  in.start = arc.to;
+  const PocketCertificate c = check_pocket(in);
+  EXPECT_LE(c.wall_distance, 10 - rad);
+  EXPECT_GE(c.wall_distance, 10 - rad - in.tolerance / 100 - 1e-12);
 }
 
 TEST(PocketCheck, TheRingAtRLeavesOnlyTheCornersOfAFullCut) {
