@@ -40,7 +40,7 @@ class Adaptive {
       hc_[k] = std::cos(th), hs_[k] = std::sin(th);
     }
     const double sag = in.tolerance / 20;
-    mat_ = g_.fill(region.eroded(r_ + in.stock, sag).eroded(-r_, sag).loops());
+    mat_ = g_.fill_within(region.eroded(r_ + in.stock, sag).loops(), r_);
     before_.assign(g_.size(), 0);
     if (!before.empty()) {
       before_ = g_.fill(before.loops());

@@ -152,12 +152,11 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
   const double r = in.radius, s = in.stock, tol = in.tolerance;
   const double sag = tol / 100;
   const detail::Area region(in.walls);
-  // R: the centres that keep r + stock off every wall, grown back by r.
-  const detail::Area reach = region.eroded(r + s, sag).eroded(-r, sag);
   PocketGrid g(in.walls, in.cell > 0 ? in.cell : tol, in.max_cells);
   c.cell = g.cell;
   const std::vector<uint8_t> in_region = g.fill(in.walls);
-  std::vector<uint8_t> in_reach = g.fill(reach.loops());
+  // R: the centres that keep r + stock off every wall, grown back by r.
+  std::vector<uint8_t> in_reach = g.fill_within(region.eroded(r + s, sag).loops(), r);
   std::vector<uint8_t> before(g.size(), 0);
   if (!in.cleared_before.empty()) {
     before = g.fill(in.cleared_before);
@@ -169,7 +168,6 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
   c.uncut_limit = tol * c.perimeter;
   const double a = g.cell * g.cell;
   c.region_area = region.area();
-  c.reachable_area = c.rest ? 0 : reach.area();
   // Unreachable: in the region, not in R, farther than the stock left (and
   // half the tolerance) from every wall.
   std::vector<uint8_t> strip(g.size(), 0);
@@ -179,8 +177,7 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
   for (size_t k = 0; k < g.size(); ++k) lost[k] = in_region[k] && !in_reach[k] && !strip[k];
   for (const auto& [at, n] : g.components(lost, 3)) c.unreachable.push_back({at, static_cast<double>(n) * a});
   for (const auto& p : c.unreachable) c.unreachable_area += p.area;
-  if (c.rest)
-    for (size_t k = 0; k < g.size(); ++k) c.reachable_area += in_reach[k] ? a : 0;
+  for (size_t k = 0; k < g.size(); ++k) c.reachable_area += in_reach[k] ? a : 0;
   // The material the engagement reads: the region less what was cleared
   // before, less the places the tool cannot reach (and the sliver near them).
   std::vector<uint8_t> material = in_region;

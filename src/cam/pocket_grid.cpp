@@ -63,6 +63,13 @@ std::vector<uint8_t> PocketGrid::fill(const PocketLoops& loops) const {
   return out;
 }
 
+std::vector<uint8_t> PocketGrid::fill_within(const PocketLoops& loops, double radius) const {
+  std::vector<uint8_t> out = fill(loops);
+  for (const auto& l : loops)
+    for (size_t i = 0, n = l.size(); i < n; ++i) stamp(l[i], l[(i + 1) % n], radius, out, 1);
+  return out;
+}
+
 void PocketGrid::stamp(const Vec3& a, const Vec3& b, double radius, std::vector<uint8_t>& bits, uint8_t v) const {
   const Capsule c(a, b, radius);
   const auto [j0, j1] = rows(c);

@@ -36,6 +36,10 @@ struct PocketGrid {
   Vec3 sample(size_t k) const;
   /// 1 for the samples inside the loops (even-odd), 0 elsewhere.
   std::vector<uint8_t> fill(const PocketLoops& loops) const;
+  /// 1 for the samples inside the loops (even-odd) or within `radius` of
+  /// them: the loops' area grown by `radius`, exactly (the reach of a disk
+  /// whose centre stays in the area).
+  std::vector<uint8_t> fill_within(const PocketLoops& loops, double radius) const;
   /// Sets `v` on every sample within `radius` of the segment ab.
   void stamp(const Vec3& a, const Vec3& b, double radius, std::vector<uint8_t>& bits, uint8_t v) const;
   /// The points within `radius` of the segment ab, with what each row's

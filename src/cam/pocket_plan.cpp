@@ -237,9 +237,8 @@ void link(std::vector<PocketPass>& passes, const Area& centres, double r, double
 size_t clean_up(std::vector<PocketPass>& passes, const Area& region, const Area& centres, const PocketPlanInput& in,
                 double sag, const Area& before) {
   const double r = in.radius;
-  const Area reach = region.eroded(r + in.stock, sag).eroded(-r, sag);
   PocketGrid g(in.walls, in.cell, 2'000'000);
-  std::vector<uint8_t> in_reach = g.fill(reach.loops());
+  std::vector<uint8_t> in_reach = g.fill_within(region.eroded(r + in.stock, sag).loops(), r);
   if (!before.empty()) {
     const std::vector<uint8_t> b = g.fill(before.loops());
     for (size_t k = 0; k < g.size(); ++k) in_reach[k] = in_reach[k] && !b[k];
@@ -296,9 +295,8 @@ size_t clean_up(std::vector<PocketPass>& passes, const Area& region, const Area&
 std::vector<PocketPass> rest_parts(const std::vector<PocketPass>& passes, const Area& region, const Area& before,
                                    const PocketPlanInput& in, double sag) {
   const double r = in.radius;
-  const Area reach = region.eroded(r + in.stock, sag).eroded(-r, sag);
   PocketGrid g(in.walls, std::max(in.cell, r / 40), 1'000'000);
-  const std::vector<uint8_t> in_reach = g.fill(reach.loops());
+  const std::vector<uint8_t> in_reach = g.fill_within(region.eroded(r + in.stock, sag).loops(), r);
   std::vector<uint8_t> left = in_reach;
   const std::vector<uint8_t> b = g.fill(before.loops());
   for (size_t k = 0; k < g.size(); ++k) left[k] = left[k] && !b[k];

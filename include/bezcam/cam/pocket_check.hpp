@@ -82,7 +82,7 @@ struct PocketEngagementPlace {
 struct PocketCertificate {
   double cell = 0;                       ///< the grid's pitch
   double region_area = 0;                ///< inside the walls
-  double reachable_area = 0;             ///< R (less `cleared_before`)
+  double reachable_area = 0;             ///< R (less `cleared_before`): its samples x cell^2
   bool rest = false;                     ///< coverage measured against R less `cleared_before`
   double unreachable_area = 0;           ///< the region less R less the stock left on the walls
   std::vector<PocketPlace> unreachable;  ///< largest first
