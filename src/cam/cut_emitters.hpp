@@ -82,6 +82,8 @@ struct CutContext {
   /// Geometry made while building (offsets, leads) that the deferred
   /// measurements read: kept alive until they have run.
   std::deque<Entity>* owned = nullptr;
+  /// ConvertOptions::memo (null: none).
+  ConversionMemo* memo = nullptr;
   /// Runs `f` now into `r.measured`, or leaves it for later.
   void measure_with(EntityReport& r, std::function<double()> f) const {
     if (later)

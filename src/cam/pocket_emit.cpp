@@ -13,6 +13,7 @@
 #include "bezcam/format.hpp"
 #include "bezcam/job/tools.hpp"
 #include "cut_emitters.hpp"
+#include "pocket_memo.hpp"
 #include "pocket_plan.hpp"
 
 namespace bezcam::detail {
@@ -223,7 +224,7 @@ void PocketCut::plan() {
   in.helix_radius = entry_.kind == PocketEntry::Kind::helix ? *entry_.radius : 0;
   in.fit = fit_;
   in.sag = sag_;
-  plan_ = plan_pocket(in);
+  plan_ = memo_plan(c_.memo, in);
   for (auto& pass : plan_.passes)
     for (Vec3& v : pass.pts) v = quantize(v, c_.decimals);
   if (plan_.centres.empty())
@@ -422,7 +423,7 @@ void PocketCut::certify() {
   in.start = start_;
   if (pattern_ == PocketPattern::adaptive) in.load = load_;
   in.cleared_before = plan_.before.loops();
-  const PocketCertificate cert = check_pocket(in);
+  const PocketCertificate cert = memo_check(c_.memo, in);
   const double keep = radius_ + cp_.stock_to_leave;
   const std::string units = to_string(c_.job.units);
   r_.label = region_;

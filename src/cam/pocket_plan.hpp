@@ -33,6 +33,7 @@ struct PocketPlanInput {
   double fit = 0;
   /// The offsets' chord and simplification error (0: tolerance / 20).
   double sag = 0;
+  bool operator==(const PocketPlanInput&) const = default;
 };
 
 /// One pass: a polyline in XY in the order of travel (a ring repeats its

@@ -443,6 +443,7 @@ bool cut_pocket_region(const Job& job, const MachineProfile& m, const ConvertOpt
   r.entity = static_cast<int>(e.index);
   detail::CutContext ctx{job,         e,           m, cp,     opt.output_of(e.index), p.decimals,
                          p.tolerance, opt.measure, p, &later, p.entities.size()};
+  ctx.memo = opt.memo.get();
   const double clear = cp.clearance ? std::min(safe, quantize(cp.top_z + *cp.clearance, p.decimals)) : safe;
   if (clear < safe) r.clear_z = clear;
   push({Comment{"pocket: " + std::to_string(members.size()) + (members.size() == 1 ? " curve" : " curves") + " from " +

@@ -24,6 +24,9 @@ JobConversion convert_job_file(const std::string& path, const ConversionOptions&
   }
   if (!best) opt.output = parse_output_mode(conv.output);
   if (conv.tolerance > 0) opt.tolerance = conv.tolerance;
+  // Kept with the options: --compare-outputs converts the job again in
+  // the other modes.
+  opt.memo = make_conversion_memo();
   apply_post_options(post, c.job, c.machine, opt);
   Progress progress(command, "entities", c.job.entities.size(), progress_config(quiet));
   opt.on_entity = [&](size_t done, size_t, const std::string& label) { progress.set(done, label); };

@@ -171,8 +171,12 @@ BestConversion convert_best(const Job& job, const MachineProfile& m, const Conve
   std::vector<OutputTiming> timed;
   std::vector<std::string> left_out;
   std::optional<InputError> first_refusal;
+  // The modes' programs and the composed one share what does not depend
+  // on the mode (a pocket's passes in arcs and NURBS, its certificate).
+  const std::shared_ptr<ConversionMemo> memo = opt.memo ? opt.memo : make_conversion_memo();
   for (OutputMode mode : modes) {
     ConvertOptions o = opt;
+    o.memo = memo;
     o.output = mode;
     o.entity_output.clear();
     o.measure = false;  // its moves only: the composed program is measured
@@ -191,6 +195,7 @@ BestConversion convert_best(const Job& job, const MachineProfile& m, const Conve
   b.choice = choose_outputs(job, m, std::move(timed));
   b.choice.left_out = std::move(left_out);
   ConvertOptions composed = opt;
+  composed.memo = memo;
   composed.entity_output.assign(job.entities.size(), OutputMode::lines);
   for (const EntityChoice& e : b.choice.entities) composed.entity_output[e.entity] = e.output;
   progress(composed);

@@ -29,13 +29,18 @@ struct Motion {
   Vec3 to;                   ///< end point (printed values)
   unsigned axes = kAxesXYZ;  ///< which of X, Y, Z `to` sets
   double feed = 0;           ///< units/min; 0 for rapids
+  bool operator==(const Motion&) const = default;
 };
 
 /// G00: straight, at the machine's rapid rate (only at or above safe Z, or
 /// straight up to it).
-struct RapidMove : Motion {};
+struct RapidMove : Motion {
+  bool operator==(const RapidMove&) const = default;
+};
 /// G01: straight, at `feed`.
-struct LineMove : Motion {};
+struct LineMove : Motion {
+  bool operator==(const LineMove&) const = default;
+};
 /// G02 (clockwise) / G03 in `plane` (G17, G18, G19), around `center`
 /// (absolute; printed as the plane's centre words I J, K I or J K relative to
 /// the start). The plane's axis moves linearly with the angle (a helix) when
@@ -44,6 +49,7 @@ struct ArcMove : Motion {
   Vec3 center;
   bool ccw = false;
   Plane plane = Plane::xy;
+  bool operator==(const ArcMove&) const = default;
 };
 /// The curve of a CurveMove: its control points, weights and knots.
 struct CurveShape {
@@ -53,6 +59,7 @@ struct CurveShape {
   std::vector<double> weights;  ///< nurbs: one per point (empty: all 1)
   std::vector<double> knots;    ///< nurbs: ctrl.size() + order values
   int order = 0;                ///< degree + 1
+  bool operator==(const CurveShape&) const = default;
 };
 /// An exact curve block: a NURBS block (Fanuc G06.2 / LinuxCNC G5.2) or a
 /// LinuxCNC G5 / G5.1 Bézier move. `ctrl` starts at the current position.
@@ -61,34 +68,46 @@ struct CurveShape {
 struct CurveMove : Motion {
   using Form = CurveShape::Form;
   std::shared_ptr<CurveShape> shape = std::make_shared<CurveShape>();
+  /// The same block: the same end, feed and curve (not the same copy of it).
+  friend bool operator==(const CurveMove& a, const CurveMove& b) {
+    return static_cast<const Motion&>(a) == b && (a.shape == b.shape || *a.shape == *b.shape);
+  }
 };
 /// The profile's move to the tool-change position (`tool_change_position`
 /// lines), before a tool change.
-struct ToolChangePosition {};
+struct ToolChangePosition {
+  bool operator==(const ToolChangePosition&) const = default;
+};
 /// M06 with a T word.
 struct ToolChange {
   int tool = 0;
+  bool operator==(const ToolChange&) const = default;
 };
 /// Spindle on at `rpm` (> 0), or off (0).
 struct SpindleMove {
   double rpm = 0;
+  bool operator==(const SpindleMove&) const = default;
 };
 /// A comment line.
 struct Comment {
   std::string text;
+  bool operator==(const Comment&) const = default;
 };
 /// G04: wait (the spindle reaching its speed).
 struct Dwell {
   double seconds = 0;
+  bool operator==(const Dwell&) const = default;
 };
 /// M07 mist, M08 flood, M09 off.
 struct CoolantMove {
   Coolant mode = Coolant::off;
+  bool operator==(const CoolantMove&) const = default;
 };
 /// M00: the program stops until the operator resumes it (a manual tool
 /// change on a machine without a changer), saying why.
 struct ProgramStop {
   std::string message;
+  bool operator==(const ProgramStop&) const = default;
 };
 
 /// A line printed as the job gives it: an entity's `before` / `after`
@@ -96,6 +115,7 @@ struct ProgramStop {
 /// job's author answers for it (`bezcam lint` reads it like any line).
 struct Verbatim {
   std::string text;
+  bool operator==(const Verbatim&) const = default;
 };
 
 /// Cutter radius compensation (cutter_comp.hpp): `G41 D-` (side +1: the
@@ -106,6 +126,7 @@ struct CompensationMove {
   int side = 0;
   int d = 0;
   double radius = 0;
+  bool operator==(const CompensationMove&) const = default;
 };
 
 /// A canned drilling cycle for one hole at `at` (x, y; z unused): G81
@@ -122,6 +143,7 @@ struct CannedCycle {
   double r = 0, z = 0, q = 0, p = 0, feed = 0;
   int code = 81;      ///< 81, 82, 83 or 73
   bool to_r = false;  ///< G99 (true) or G98
+  bool operator==(const CannedCycle&) const = default;
 };
 
 struct Move {
@@ -131,6 +153,7 @@ struct Move {
   int entity = -1;  ///< index of the job entity it cuts, -1 for none
   /// Part of the motion of the CannedCycle before it.
   bool in_cycle = false;
+  bool operator==(const Move&) const = default;
 };
 
 /// The motion part of a move; null for tool changes, spindle, coolant,

@@ -4,6 +4,7 @@
 /// G-code writer in the profile's dialect.
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -64,6 +65,14 @@ struct EntityReport {
   OutputMode output = OutputMode::lines;
 };
 
+/// What the conversions of one job in several output modes share
+/// (convert_best(), `--compare-outputs`): a pocket's passes and certificate
+/// made before from the same inputs (the same walls, tool, margins and, for
+/// the certificate, the same moves) are taken from it, not made again; the
+/// result is the same. Opaque; thread-safe.
+struct ConversionMemo;
+std::shared_ptr<ConversionMemo> make_conversion_memo();
+
 struct ConvertOptions {
   OutputMode output = OutputMode::lines;
   /// Per entity (by Entity::index), the output mode that cuts it in place
@@ -86,6 +95,8 @@ struct ConvertOptions {
   std::optional<Vec3> return_to;
   /// Overrides the job's `program_number`.
   std::optional<long> program_number;
+  /// Shared with the job's other conversions (null: none).
+  std::shared_ptr<ConversionMemo> memo;
 };
 
 /// What the cut order (`order: "shortest"`) did, in the program's units.
