@@ -246,10 +246,13 @@ std::vector<Expected> expected_calls(const Program& p) {
   return out;
 }
 
-// The program `convert --output MODE` writes (best: gcode/best_output.hpp).
-ConvertResult convert_in(const Job& job, const MachineProfile& m, const std::string& mode) {
+// The program `convert --output MODE` writes (best: gcode/best_output.hpp);
+// the modes of one job share `memo`, as --compare-outputs does.
+ConvertResult convert_in(const Job& job, const MachineProfile& m, const std::string& mode,
+                         const std::shared_ptr<ConversionMemo>& memo) {
   ConvertOptions opt;
   opt.measure = false;  // the meaning is checked here, the deviation elsewhere
+  opt.memo = memo;
   if (mode != "best") {
     opt.output = parse_output_mode(mode);
     return convert(job, m, opt);
@@ -284,10 +287,11 @@ void check_samples(const std::string& exe, const std::vector<std::string>& modes
   for (const auto& path : files) {
     const fs::directory_entry entry(path);
     const Job job = test::load_sample(entry.path());
+    const auto memo = make_conversion_memo();
     for (const std::string& mode : modes) {
       const std::string name = entry.path().filename().string() + ", --output " + mode;
       try {
-        cases.push_back({name, convert_in(job, m, mode)});
+        cases.push_back({name, convert_in(job, m, mode, memo)});
       } catch (const InputError& e) {
         // Only a tolerance the machine's decimals cannot honour may refuse,
         // and controller compensation asked of NURBS output.

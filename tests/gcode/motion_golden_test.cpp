@@ -67,10 +67,13 @@ std::string summary_rows(const char* machine) {
       "programmed_feed_time_s\tmean_feed_ratio\tstarved_blocks\tmax_path_deviation\n";
   for (const auto& s : samples()) {
     const Job job = test::load_sample(s);
+    // As --compare-outputs: the modes share a pocket's passes and certificate.
+    const auto memo = make_conversion_memo();
     for (OutputMode mode : {OutputMode::lines, OutputMode::arcs, OutputMode::nurbs}) {
       if (mode == OutputMode::nurbs && m.nurbs == NurbsDialect::none) continue;
       ConvertOptions o;
       o.output = mode;
+      o.memo = memo;
       const ConvertResult r = convert(job, m, o);
       if (r.program.output != mode) continue;  // replaced (surfaces stay in lines)
       const MotionPlan plan = plan_motion(read_timeline(r.gcode, &m), *m.motion);

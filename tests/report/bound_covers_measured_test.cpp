@@ -100,10 +100,13 @@ void expect_figures_in_order(const std::string& text, const std::string& what) {
 // how many converted.
 size_t expect_bound_covers_measured(const Case& c, const std::vector<Run>& runs) {
   size_t converted = 0;
+  // As --compare-outputs: the modes share a pocket's passes and certificate.
+  const auto memo = make_conversion_memo();
   for (const Run& run : runs) {
     const MachineProfile m = load_machine_profile(run.machine);
     ConvertOptions opt;
     opt.output = run.mode;
+    opt.memo = memo;
     ConvertResult r;
     try {
       r = convert(c.job, m, opt);
