@@ -64,6 +64,8 @@ struct PocketCheckInput {
   /// reachable material within `load` of the unreachable places (the last
   /// sliver of a sharp corner), and is held to arccos(1 - load / r) + 2 deg.
   double load = 0;
+  /// Field by field, `moves` as a pointer.
+  bool operator==(const PocketCheckInput&) const = default;
 };
 
 /// Material the tool cannot reach (a neck narrower than the tool, a corner
