@@ -15,6 +15,7 @@
 #include "bezcam/cam/cut_order.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -50,6 +51,10 @@ struct Tour {
   std::vector<uint32_t> seq;  // local nodes, with the home sentinel first and the tail sentinel last
   std::vector<size_t> start;  // per local node
   std::vector<char> rev;      // per local node
+  // Where each node is entered and left with its start and direction
+  // (home's exit is the start point, the tail's entry the end point): the
+  // local search reads these for every candidate.
+  std::vector<Vec3> in, out;
 };
 
 class Segment {
@@ -136,8 +141,7 @@ class Segment {
                           },
                           [&](double lower) { return lower > best; });
       t.seq.insert(t.seq.end() - 1, bu);
-      t.start[bu] = bs;
-      t.rev[bu] = br;
+      choose(t, bu, bs, br);
       p = exit(t, bu);
       set(bu, false);
       for (uint32_t o : succs_[bu])
@@ -250,8 +254,7 @@ class Segment {
     for (size_t d = m_; d >= 1; --d) {
       const uint32_t u = best_order[d];
       t.seq.insert(t.seq.begin() + 1, u);
-      t.start[u] = ch[u][k].start;
-      t.rev[u] = ch[u][k].rev;
+      choose(t, u, ch[u][k].start, ch[u][k].rev);
       k = best_back[d][k];
     }
     return t;
@@ -274,21 +277,28 @@ class Segment {
     t.seq = {home_, tail_};
     t.start.assign(m_, 0);
     t.rev.assign(m_, 0);
+    t.in.resize(m_ + 2);
+    t.out.resize(m_ + 2);
+    for (uint32_t u = 0; u < m_; ++u) choose(t, u, 0, 0);
+    t.out[home_] = from_;
+    t.in[tail_] = to_.value_or(Vec3{});
     return t;
   }
 
-  // The local search reads these for every candidate: from the compact
-  // copies of each contour's ends and kind, not through its outline.
-  Vec3 entry(const Tour& t, uint32_t u) const {
-    if (u == tail_) return to_.value_or(Vec3{});
-    if (closed_[u]) return c(u).outline[t.start[u]];
-    return t.rev[u] ? ends_[u].second : ends_[u].first;
+  /// Gives u the start vertex `start` and direction `rev`.
+  void choose(Tour& t, uint32_t u, size_t start, char rev) const {
+    t.start[u] = start;
+    t.rev[u] = rev;
+    if (closed_[u]) {
+      t.in[u] = t.out[u] = c(u).outline[start];
+    } else {
+      t.in[u] = rev ? ends_[u].second : ends_[u].first;
+      t.out[u] = rev ? ends_[u].first : ends_[u].second;
+    }
   }
-  Vec3 exit(const Tour& t, uint32_t u) const {
-    if (u == home_) return from_;
-    if (closed_[u]) return c(u).outline[t.start[u]];
-    return t.rev[u] ? ends_[u].first : ends_[u].second;
-  }
+
+  Vec3 entry(const Tour& t, uint32_t u) const { return t.in[u]; }
+  Vec3 exit(const Tour& t, uint32_t u) const { return t.out[u]; }
   /// Rapid from point p to the entry of v (nothing to a missing tail).
   double to(const Tour& t, const Vec3& p, uint32_t v) const {
     if (v == tail_ && !to_) return 0;
@@ -302,8 +312,8 @@ class Segment {
   Vec3 exit_r(const Tour& t, uint32_t u) const { return flips(u) ? entry(t, u) : exit(t, u); }
   void flip(Tour& t, uint32_t u) const {
     if (!flips(u)) return;
-    t.rev[u] = !t.rev[u];
-    t.start[u] = t.rev[u] ? c(u).outline.size() - 1 : 0;
+    const char rev = !t.rev[u];
+    choose(t, u, rev ? c(u).outline.size() - 1 : 0, rev);
   }
   /// The choices of u as (entry, exit, start vertex, reversed).
   struct Choice {
@@ -326,7 +336,7 @@ class Segment {
   /// found through the tree of the boxes (cut_order_tree.hpp): the same as
   /// comparing all pairs.
   void build_neighbours() {
-    constexpr size_t K = 10;
+    constexpr size_t K = kNeighbours;
     nbrs_.assign(m_, {});
     if (m_ < 2) return;
     std::vector<Vec3> ctr(m_);
@@ -427,7 +437,7 @@ class Segment {
         size_t s = 0;
         char r = 0;
         const double d = best_place(t, u, p, v, s, r);
-        if (d < now - eps_) t.start[u] = s, t.rev[u] = r, changed = true;
+        if (d < now - eps_) choose(t, u, s, r), changed = true;
       }
       if (!changed) break;
       any = true;
@@ -447,23 +457,23 @@ class Segment {
   bool starts_exact(Tour& t) const {
     if (m_ == 0) return false;
     const double before = cost(t);
-    std::vector<std::vector<double>> acc(m_ + 1);
-    std::vector<std::vector<uint32_t>> back(m_ + 1);
+    // back[first[i] + k]: the choice of seq[i-1] before choice k of seq[i]
+    std::vector<size_t> first(m_ + 2, 0);
+    std::vector<uint32_t> back;
     std::vector<Choice> prev = {{from_, from_, 0, 0}}, cur;
-    std::vector<double> prev_acc = {0.0};
-    std::vector<std::vector<Choice>> all(m_ + 1);
+    std::vector<double> prev_acc = {0.0}, acc;
     for (size_t i = 1; i <= m_; ++i) {
       choices(t.seq[i], cur);
-      acc[i].assign(cur.size(), HUGE_VAL);
-      back[i].assign(cur.size(), 0);
+      first[i] = back.size();
+      back.resize(back.size() + cur.size(), 0);
+      acc.assign(cur.size(), HUGE_VAL);
       for (size_t k = 0; k < cur.size(); ++k)
         for (size_t q = 0; q < prev.size(); ++q) {
           const double d = prev_acc[q] + dxy(prev[q].out, cur[k].in);
-          if (d < acc[i][k]) acc[i][k] = d, back[i][k] = static_cast<uint32_t>(q);
+          if (d < acc[k]) acc[k] = d, back[first[i] + k] = static_cast<uint32_t>(q);
         }
-      all[i] = cur;
       prev.swap(cur);
-      prev_acc = acc[i];
+      prev_acc.swap(acc);
     }
     size_t k = 0;
     double best = HUGE_VAL;
@@ -474,9 +484,9 @@ class Segment {
     if (!(best < before - eps_)) return false;
     for (size_t i = m_; i >= 1; --i) {
       const uint32_t u = t.seq[i];
-      t.start[u] = all[i][k].start;
-      t.rev[u] = all[i][k].rev;
-      k = back[i][k];
+      choices(u, cur);
+      choose(t, u, cur[k].start, cur[k].rev);
+      k = back[first[i] + k];
     }
     return true;
   }
@@ -513,13 +523,21 @@ class Segment {
         const uint32_t p = t.seq[i - 1], n = t.seq[i + L];
         const double gain = link(t, p, f) + link(t, l, n) - link(t, p, n);
         // candidate insertion points j (after seq[j])
+        // in ascending order, each once: 0 and m_ bound the neighbours' places
+        std::array<size_t, 2 * kNeighbours> near{};
+        size_t n_near = 0;
+        auto candidate = [&](size_t j) {  // insertion sort of a few
+          size_t at = n_near++;
+          for (; at > 0 && near[at - 1] > j; --at) near[at] = near[at - 1];
+          near[at] = j;
+        };
+        for (uint32_t c2 : nbrs_[f]) candidate(pos[c2] - 1);
+        for (uint32_t c2 : nbrs_[l]) candidate(pos[c2]);
         cands_.clear();
         cands_.push_back(0);
-        cands_.push_back(m_);
-        for (uint32_t c2 : nbrs_[f]) cands_.push_back(pos[c2] - 1);
-        for (uint32_t c2 : nbrs_[l]) cands_.push_back(pos[c2]);
-        std::sort(cands_.begin(), cands_.end());
-        cands_.erase(std::unique(cands_.begin(), cands_.end()), cands_.end());
+        for (size_t k = 0; k < n_near; ++k)
+          if (near[k] != cands_.back()) cands_.push_back(near[k]);
+        if (cands_.back() != m_) cands_.push_back(m_);
         double best = -eps_;
         size_t best_j = 0, bs = 0;
         char br = 0;
@@ -566,7 +584,7 @@ class Segment {
           for (uint32_t u : run) flip(t, u);
         }
         t.seq.insert(t.seq.begin() + static_cast<std::ptrdiff_t>(at), run.begin(), run.end());
-        if (L == 1) t.start[f] = bs, t.rev[f] = br;
+        if (L == 1) choose(t, f, bs, br);
         for (size_t k = std::min(i, at), hi = std::max(i, at) + L; k < hi; ++k) pos[t.seq[k]] = k;
         any = true;
       }
@@ -648,6 +666,7 @@ class Segment {
     return any;
   }
 
+  static constexpr size_t kNeighbours = 10;  // per contour, for the local search
   std::span<const OrderContour> cs_;
   std::vector<size_t> ids_;
   size_t m_;
