@@ -117,6 +117,9 @@ constexpr double kMaxRadiusPerChord = 1000;
 constexpr double kMaxTangentRadiusPerChord = 100000;
 // A chain starts again where a free arc would be this many times longer.
 constexpr double kChainRestart = 4;
+// An arc of a chain ends along the curve within this many times the budget
+// over its chord (ends_along_curve()).
+constexpr double kChainAlign = 2.5;
 // Curve samples used to choose the centre (the proof does not rely on them).
 constexpr int kFitSamples = 16;
 // The band: a line's inner end is shifted off the curve by this share of
@@ -448,6 +451,25 @@ std::optional<ArcCandidate> try_tangent_arc(const Span& sp, const ArcFitOptions&
   });
 }
 
+// Whether arc c of a tangent chain, over span sp, leaves its end in the
+// curve's direction closely enough for the next arc. The next arc starts
+// in this arc's end direction: started at an angle d off the curve, an arc
+// through the curve's points a chord L apart strays by about d L / 4 from
+// it, so a chain whose arcs end as far off as they may drifts, and its
+// arcs grow short until it must start again at a kink. Allowed: kChainAlign
+// x budget / L (the next arc, as long as this one, spending 5/8 of its
+// budget on it), plus the angle the printed centre's rounding may give.
+bool ends_along_curve(const Span& sp, const ArcCandidate& c, double budget_xy, double q) {
+  FitMove m;
+  m.kind = c.arc.ccw ? FitKind::arc_ccw : FitKind::arc_cw;
+  m.to = c.arc.to;
+  m.center = c.arc.center;
+  const Vec3 out = move_tangent(sp.Sr, m, false), along = derivative(sp.b, sp.t1);
+  const double off = std::abs(std::atan2(cross2(out, along), dot2(out, along)));
+  const double chord = norm2(Vec3{sp.Er.x - sp.Sr.x, sp.Er.y - sp.Sr.y, 0});
+  return off <= kChainAlign * budget_xy / chord + tangent_slack(q, c.arc.r_end());
+}
+
 }  // namespace
 
 bool planar_xy(const Bezier& piece) {
@@ -604,7 +626,9 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
             const double t1 = adt >= 1 - t0 ? 1.0 : t0 + adt;
             const Vec3 E = point_at(b, t1);
             const Span sp{.b = b, .t0 = t0, .t1 = t1, .S = S, .E = E, .Sr = Sr, .Er = quantize(E, opt.decimals)};
-            if (auto c = chain ? try_tangent_arc(sp, opt, budget_xy, rtol, tin) : try_arc(sp, opt, budget_xy, rtol)) {
+            auto c = chain ? try_tangent_arc(sp, opt, budget_xy, rtol, tin) : try_arc(sp, opt, budget_xy, rtol);
+            if (c && tangent && t1 < 1 && !ends_along_curve(sp, *c, budget_xy, q)) c.reset();
+            if (c) {
               f = {c, t1, E};
               alo = adt;
               if (t1 >= 1) break;
@@ -628,7 +652,6 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
         }
         const std::optional<ArcCandidate>& found = fd.arc;
         const double found_t1 = fd.t1;
-        const Vec3 foundE = fd.E;
         if (found) {
           arc_hint = found_t1 - t0;
           // Report a tight bound, not merely the accepted one.
@@ -642,7 +665,7 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
                   found_t1,
                   B};
           best.center.z = opt.helical ? Sr.z : best.to.z;
-          bestE = foundE;
+          bestE = fd.E;
         }
       }
       bound = std::max(bound, best.bound);

@@ -78,13 +78,12 @@ TEST(ArcFitTangent, JointsAreTangentAsLinuxCncJudgesThem) {
     o.tangent = true;
     const ArcFitResult chain = fit_arcs(wave(), o);
     SCOPED_TRACE("decimals " + std::to_string(decimals));
-    // Free arcs kink at most joints (24 and 26 of 29); a chain, which
-    // starts again only where a free arc would span four times as far, at
-    // 2 and 0 of 69 and 82, with more moves (70 and 83 against 30: shorter
-    // arcs hold the tangent).
+    // Free arcs kink at most joints (24 and 26 of 29); a chain, whose arcs
+    // end along the curve so that the next can go on from them, at none,
+    // in 54 moves against 30 (shorter arcs hold the tangent).
     EXPECT_GT(kinks(free_arcs, kink), free_arcs.moves.size() * 3 / 4);
-    EXPECT_LE(kinks(chain, kink), chain.moves.size() / 20);
-    EXPECT_LE(chain.moves.size(), free_arcs.moves.size() * 3);
+    EXPECT_EQ(kinks(chain, kink), 0u);
+    EXPECT_LE(chain.moves.size(), free_arcs.moves.size() * 2);
     // The printed path stays within the proven bound, and that within the tolerance.
     EXPECT_LE(chain.bound, o.tolerance);
     const Deviation d = measure_deviation(wave(), drawn(chain), o.tolerance);
