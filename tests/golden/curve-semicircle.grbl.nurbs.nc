@@ -1,5 +1,5 @@
 (bezcam 0.1.0: curve-semicircle.json, machine grbl, output nurbs)
-(tolerance 0.005 mm; largest deviation measured 0.004879 mm, proven bound 0.004941 mm, rounding included)
+(tolerance 0.005 mm; largest deviation measured 0.002522 mm, proven bound 0.002568 mm, rounding included)
 (T1: semicircle-r3)
 (T1 plunge feed 200 mm/min)
 (estimated cycle time 6 s on the motion model of machine grbl [acceleration, corners, tool changes])
@@ -15,11 +15,13 @@ G4 P2.
 G0 Z5.
 X-3. Y0.
 G1 Z-0.5 F200.
-G2 X-2.372 Y1.925 I3.023 J0.079 F800.
-G2 X-1.73 Y2.503 I1.9 J-1.465
-G2 X1.926 Y2.364 I1.727 J-2.723
-G2 X2.579 Y1.628 I-1.455 J-1.949
-G2 X3. Y0. I-2.74 J-1.577
+G2 X-2.782 Y1.215 I3.305 J0.035 F800.
+G2 X-1.845 Y2.424 I2.465 J-0.943
+G2 X-0.322 Y2.985 I1.797 J-2.531
+G2 X0.966 Y2.857 I0.307 J-3.458
+G2 X2.288 Y2.025 I-0.813 J-2.758
+G2 X2.779 Y1.223 I-1.902 J-1.716
+G2 X3. Y0. I-3.137 J-1.198
 G0 Z5.
 M5
 M30
