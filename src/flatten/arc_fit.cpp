@@ -117,6 +117,10 @@ constexpr double kMaxRadiusPerChord = 1000;
 constexpr double kMaxTangentRadiusPerChord = 100000;
 // A chain starts again where a free arc would be this many times longer.
 constexpr double kChainRestart = 4;
+// The largest turn a line inside a tangent chain may take (rad): what
+// LinuxCNC 2.9 takes as tangent between arcs at F6000 on 1000 mm/s^2 and a
+// 1 ms period (docs/motion.md).
+constexpr double kMaxLineTurn = 5e-4;
 // An arc of a chain ends along the curve within this many times the budget
 // over its chord (ends_along_curve()).
 constexpr double kChainAlign = 2.5;
@@ -420,6 +424,13 @@ Vec3 move_tangent(const Vec3& from, const FitMove& m, bool at_start) {
 // about q / r.
 double tangent_slack(double q, double r) { return r > 0 ? q / r + 1e-9 : 0.0; }
 
+// How far a line of length L in a chain may turn from the chain's
+// direction: its printed ends' rounding (q / L), but never more than
+// kMaxLineTurn. A short line's rounding would pass nearly any turn, where
+// a tangent arc over the same span, its slack the rounding over its
+// radius, stays tangent.
+double line_slack(double q, double L) { return L > 0 ? std::min(q / L, kMaxLineTurn) + 1e-9 : 0.0; }
+
 // Tangent-continuous chains (ArcFitOptions::tangent): the arc from the
 // printed start S' that leaves it in direction `tin` and ends at the
 // printed E' (its centre on the normal to `tin` at S', equidistant from
@@ -469,6 +480,63 @@ bool ends_along_curve(const Span& sp, const ArcCandidate& c, double budget_xy, d
   const double chord = norm2(Vec3{sp.Er.x - sp.Sr.x, sp.Er.y - sp.Sr.y, 0});
   return off <= kChainAlign * budget_xy / chord + tangent_slack(q, c.arc.r_end());
 }
+
+// The arcs from parameter t0 of piece b (printed start Sr, chain direction
+// tin) that fit_arcs() chooses from.
+struct ArcSearch {
+  const Bezier& b;
+  double t0;
+  Vec3 S, Sr, tin;
+  const ArcFitOptions& opt;
+  double budget_xy, rtol, q;
+  bool tangent;
+  // Unrounded (the path an offset is made from), the chain goes on into the
+  // next piece at a tangent joint: the piece's last arc ends along it too.
+  // (Not for printed fits, whose last arcs would then grow tighter: a
+  // controller's compensation refuses an arc tighter than its tool.)
+  bool goes_on;
+
+  // The arc over [t0, t1] (tangent to the chain or free), if one fits; in
+  // a chain only one that ends along the curve (at the piece's end too
+  // when `goes_on`).
+  Found at(bool chain, double t1) const {
+    const Vec3 E = point_at(b, t1);
+    const Span sp{.b = b, .t0 = t0, .t1 = t1, .S = S, .E = E, .Sr = Sr, .Er = quantize(E, opt.decimals)};
+    auto c = chain ? try_tangent_arc(sp, opt, budget_xy, rtol, tin) : try_arc(sp, opt, budget_xy, rtol);
+    if (c && tangent && (t1 < 1 || goes_on) && !ends_along_curve(sp, *c, budget_xy, q)) c.reset();
+    return c ? Found{c, t1, E} : Found{};
+  }
+
+  // The longest span an arc fits from alo on, searched from adt.
+  Found longest(bool chain, double alo, double adt) const {
+    Found f;
+    double ahi = kInf;
+    for (int iter = 0; iter < 60 && adt > alo * 1.0001; ++iter) {
+      const double t1 = adt >= 1 - t0 ? 1.0 : t0 + adt;
+      if (Found c = at(chain, t1); c.arc) {
+        f = std::move(c);
+        alo = adt;
+        if (t1 >= 1) break;
+        adt = ahi == kInf ? std::min(adt * 2, 1 - t0) : 0.5 * (alo + ahi);
+      } else {
+        ahi = adt;
+        adt = 0.5 * (alo + ahi);
+      }
+      if (ahi != kInf && ahi - alo <= 0.02 * alo) break;
+    }
+    // Unrounded, the fit is a path another is made from (an offset, which
+    // is printed): a stub it leaves at a piece's end would be printed as a
+    // move too short to turn along the curve (its chord's direction off by
+    // the rounding over its length). Where the stub is under a tenth of
+    // the arc, two arcs share the piece's rest.
+    if (tangent && f.arc && f.t1 < 1 && !(q > 0)) {
+      const double stub = dist_xy(b.back(), f.arc->arc.to), chord = dist_xy(f.arc->arc.to, Sr);
+      if (stub < 0.1 * chord)
+        if (Found half = at(chain, 0.5 * (t0 + 1)); half.arc) return half;
+    }
+    return f;
+  }
+};
 
 }  // namespace
 
@@ -614,33 +682,12 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
       // of any length are tried, the line kept only when none fits.
       const bool chained = tangent && (tin.x != 0 || tin.y != 0);
       const bool line_tangent = !chained || std::abs(directed_angle(tin, move_tangent(Sr, best, true), true)) <=
-                                                tangent_slack(q, dist_xy(best.to, Sr));
+                                                line_slack(q, dist_xy(best.to, Sr));
       // Longest arc, only worth it beyond the chord.
       if (planar && budget_xy > 0 && (best.t < 1 || !line_tangent)) {
-        // The longest span an arc fits from alo on (tangent to the chain
-        // or free), searched from adt.
-        auto search = [&](bool chain, double alo, double adt) {
-          Found f;
-          double ahi = kInf;
-          for (int iter = 0; iter < 60 && adt > alo * 1.0001; ++iter) {
-            const double t1 = adt >= 1 - t0 ? 1.0 : t0 + adt;
-            const Vec3 E = point_at(b, t1);
-            const Span sp{.b = b, .t0 = t0, .t1 = t1, .S = S, .E = E, .Sr = Sr, .Er = quantize(E, opt.decimals)};
-            auto c = chain ? try_tangent_arc(sp, opt, budget_xy, rtol, tin) : try_arc(sp, opt, budget_xy, rtol);
-            if (c && tangent && t1 < 1 && !ends_along_curve(sp, *c, budget_xy, q)) c.reset();
-            if (c) {
-              f = {c, t1, E};
-              alo = adt;
-              if (t1 >= 1) break;
-              adt = ahi == kInf ? std::min(adt * 2, 1 - t0) : 0.5 * (alo + ahi);
-            } else {
-              ahi = adt;
-              adt = 0.5 * (alo + ahi);
-            }
-            if (ahi != kInf && ahi - alo <= 0.02 * alo) break;
-          }
-          return f;
-        };
+        const bool goes_on = !(q > 0) && pi + 1 < pieces.size() && tangent_joint(b, pieces[pi + 1]);
+        const ArcSearch as{b, t0, S, Sr, tin, opt, budget_xy, rtol, q, tangent, goes_on};
+        auto search = [&](bool chain, double alo, double adt) { return as.longest(chain, alo, adt); };
         const double free_from = std::min(std::max(2 * lo, arc_hint), 1 - t0);
         Found fd = chained ? search(true, line_tangent ? lo : 0, line_tangent ? free_from : std::min(lo, 1 - t0))
                            : search(false, lo, free_from);
