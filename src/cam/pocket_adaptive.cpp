@@ -71,9 +71,10 @@ Adaptive::Band Adaptive::band(const std::vector<uint8_t>& settled, const std::ve
     while (!w.empty()) {
       const size_t k = w.back();
       w.pop_back();
-      around(k, [&](size_t n) {
-        if (label[n] == -2) label[n] = pieces, w.push_back(n);
-      });
+      around(
+          k, [&](size_t n) __attribute__((always_inline)) {
+            if (label[n] == -2) label[n] = pieces, w.push_back(n);
+          });
     }
     ++pieces;
   }
@@ -145,12 +146,13 @@ void Adaptive::spread(const std::vector<size_t>& from, long steps, const Ok& ok,
     const size_t k = q[head];
     const int d = seen[k];
     if (d >= steps) continue;
-    around(k, [&](size_t n) {
-      if (seen[n] >= 0 || !ok(n)) return;
-      seen[n] = d + 1;
-      q.push_back(n);
-      out.push_back(n);
-    });
+    around(
+        k, [&](size_t n) __attribute__((always_inline)) {
+          if (seen[n] >= 0 || !ok(n)) return;
+          seen[n] = d + 1;
+          q.push_back(n);
+          out.push_back(n);
+        });
   }
 }
 
