@@ -62,11 +62,15 @@ struct ArcFitOptions {
   /// of a chain, every arc leaves in the direction the move before ends
   /// in, its centre on the normal there, within the rounding of its centre
   /// words (about 10^-decimals / radius radians); a line is taken only
-  /// where it leaves in that direction too, else arcs of any length are
-  /// tried first. A chain starts again at the curve's own corners and
-  /// after a piece that gets no arcs. The bound is certified as for any
-  /// arc. false: each arc's centre chosen freely (one fewer constraint:
-  /// longer spans, but the moves meet at small angles).
+  /// where it leaves in that direction too (within its ends' rounding, at
+  /// most 5e-4 rad), else arcs of any length are tried first. Each arc
+  /// ends along the curve (its end direction within 2.5 x the budget over
+  /// its chord of the curve's), so that the next can go on from it. A
+  /// chain starts again at the curve's own corners, after a piece that
+  /// gets no arcs, and where a free arc would reach four times as far
+  /// (docs/motion.md). The bound is certified as for any arc. false: each
+  /// arc's centre chosen freely (one fewer constraint: longer spans, but
+  /// the moves meet at small angles).
   bool tangent = false;
   /// With `tangent`: the direction the move before the first piece ends in
   /// (in the plane; zero: none). The chain then starts already: the first
