@@ -686,15 +686,15 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
       // Longest arc, only worth it beyond the chord.
       if (planar && budget_xy > 0 && (best.t < 1 || !line_tangent)) {
         const bool goes_on = !(q > 0) && pi + 1 < pieces.size() && tangent_joint(b, pieces[pi + 1]);
-        const ArcSearch as{b, t0, S, Sr, tin, opt, budget_xy, rtol, q, tangent, goes_on};
-        auto search = [&](bool chain, double alo, double adt) { return as.longest(chain, alo, adt); };
+        const ArcSearch search{b, t0, S, Sr, tin, opt, budget_xy, rtol, q, tangent, goes_on};
         const double free_from = std::min(std::max(2 * lo, arc_hint), 1 - t0);
-        Found fd = chained ? search(true, line_tangent ? lo : 0, line_tangent ? free_from : std::min(lo, 1 - t0))
-                           : search(false, lo, free_from);
+        Found fd = chained
+                       ? search.longest(true, line_tangent ? lo : 0, line_tangent ? free_from : std::min(lo, 1 - t0))
+                       : search.longest(false, lo, free_from);
         // A chain that can go on only in much shorter spans than a free
         // arc takes starts again (one joint at a small angle).
         if (chained) {
-          const Found fr = search(false, lo, free_from);
+          const Found fr = search.longest(false, lo, free_from);
           if (fr.arc && (!fd.arc || kChainRestart * (fd.t1 - t0) < fr.t1 - t0)) fd = fr;
         }
         const std::optional<ArcCandidate>& found = fd.arc;
