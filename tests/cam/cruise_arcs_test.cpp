@@ -6,6 +6,7 @@
 #include <fstream>
 #include <gtest/gtest.h>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <sstream>
@@ -192,6 +193,31 @@ TEST(CruiseArcs, PartCutsInArcsAndNurbsAreNoSlowerThanLines) {
   // on fanuc at F6000, the lettering's arcs program 5 % on linuxcnc.
   const char* const parts[] = {"part-cam-notch", "part-lettering"};
   expect_no_slower_than_lines(parts);
+}
+
+TEST(CruiseArcs, PartOffsetsCarryNoStubsBetweenTheirPieces) {
+  // A part's offset is made from an unrounded arc fit of its curve: a stub
+  // that fit left at a piece's end, or a kink there, became a printed move
+  // of micrometres (its direction off by its rounding) in every pass. The
+  // flange's outline (lobes and concave flanks, tangent at every joint)
+  // keeps at most one such move per pass, where its closed offset starts
+  // and ends (four per pass without the fit's rules at the pieces' ends).
+  const MachineProfile m = load_machine_profile("linuxcnc");
+  const ConvertResult r = convert_as(sample_at("part-flange", 6000), m, OutputMode::arcs);
+  std::map<int, std::pair<size_t, size_t>> per_entity;  // passes (plunges), moves under 0.01 mm
+  for (const MotionBlock& b : program_motion(r.program)) {
+    if (b.kind == BlockKind::rapid) continue;
+    const Vec3 d = b.to - b.from;
+    auto& [passes, tiny] = per_entity[b.entity];
+    if (d.z < 0) ++passes;
+    if (d.z == 0 && std::hypot(d.x, d.y) < 0.01) ++tiny;
+  }
+  EXPECT_EQ(per_entity.size(), 6u);
+  for (const auto& [entity, counts] : per_entity) {
+    SCOPED_TRACE("entity " + std::to_string(entity));
+    EXPECT_GT(counts.first, 0u);
+    EXPECT_LE(counts.second, counts.first);
+  }
 }
 
 }  // namespace
