@@ -16,27 +16,8 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 sed -E 's/\bflatten_pieces\b/flatten_pieces_v/g; s/\bflatten_into\b/flatten_into_v/g; s/\bFlattenResult flatten\(/FlattenResult flatten_v(/; s/\bdouble (chord_deviation|band_deviation|estimate_segments)\(/double \1_v(/' \
   "$variant" > "$out/variant.cpp"
-# The build's options for a source, from its compile_commands.json (any
-# generator): optimisation, debug, defines, standard and machine options.
-flags_of() {
-  python3 - "$build/compile_commands.json" "$1" <<'PY'
-import json, shlex, sys
-for e in json.load(open(sys.argv[1])):
-    if e["file"].endswith(sys.argv[2]):
-        args = e.get("arguments") or shlex.split(e["command"])
-        keep = [a for a in args if a[:2] in ("-O", "-g", "-D", "-m", "-f") or a.startswith("-std")]
-        print(" ".join(shlex.quote(a) for a in keep))
-        sys.exit(0)
-sys.exit("flatten_ab.sh: %s is not in %s (build it first)" % (sys.argv[2], sys.argv[1]))
-PY
-}
-# The driver with the benchmarks' options; the variant with those the
-# library's copy is compiled with (its own -O3 included). Assigned first,
-# so that a source missing from the build stops the script.
-driver_flags=$(flags_of bench/flatten_bench.cpp)
-variant_flags=$(flags_of src/flatten/flatten_curve.cpp)
-eval "flags=($driver_flags)"
-eval "own=($variant_flags)"
+source "$src/bench/build_flags.sh"
+flatten_flags
 inc="-I$src/include -I$src/src -I$build/include"
 c++ "${own[@]}" $inc -c "$out/variant.cpp" -o "$out/variant.o"
 c++ "${flags[@]}" $inc -c "$src/bench/ab/flatten_ab.cpp" -o "$out/driver.o"

@@ -10,12 +10,14 @@ build=$(cd "${1:-build}" && pwd)
 corpus=(${2:+"$2"})
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-flags=$(grep -oE '^[^ ]+ .*-O[0-9s]?[^C]*' "$build/bench/CMakeFiles/flatten_bench.dir/link.txt" | head -1 | awk '{for (i = 2; i <= NF; ++i) if ($i ~ /^-O|^-g|^-D/) printf "%s ", $i}')
-c++ -std=c++20 $flags -DBEZCAM_FLATTEN_COUNTERS -I"$src/include" -I"$src/src" -c "$src/src/flatten/flatten_curve.cpp" -o "$out/flatten_curve.o"
-link=$(cat "$build/bench/CMakeFiles/flatten_bench.dir/link.txt")
-link=${link/CMakeFiles\/flatten_bench.dir\/flatten_bench.cpp.o/CMakeFiles/flatten_bench.dir/flatten_bench.cpp.o $out/flatten_curve.o}
-link=${link/-o ..\/flatten_bench/-o $out/flatten_bench}
-(cd "$build/bench" && eval "$link")
+source "$src/bench/build_flags.sh"
+flatten_flags
+inc="-I$src/include -I$src/src -I$build/include"
+c++ "${own[@]}" -DBEZCAM_FLATTEN_COUNTERS $inc -c "$src/src/flatten/flatten_curve.cpp" -o "$out/flatten_curve.o"
+c++ "${flags[@]}" $inc $(pkg-config --cflags cairo 2>/dev/null) -c "$src/bench/flatten_bench.cpp" -o "$out/flatten_bench.o"
+libs=("$build"/libbezcam_*.a)
+c++ "${flags[@]}" "$out/flatten_bench.o" "$out/flatten_curve.o" -o "$out/flatten_bench" "${libs[@]}" "${libs[@]}" \
+  $(pkg-config --libs cairo 2>/dev/null)
 for tol in 0.1 0.01 0.001; do
   echo "tol $tol mm:"
   "$out/flatten_bench" "${corpus[@]}" --quick --only bezcam --tol "$tol" 2>&1 >/dev/null | sed 's/^/  /'
