@@ -215,14 +215,16 @@ double append_cruise(CutContext& c, std::span<const Bezier> pieces, std::vector<
   const Budget bd{tb.budget, c.decimals, shortest};
   const FlattenOptions fo{c.tolerance, c.decimals};
   const std::vector<SpeedStretch> stretches =
-      joinable(speed_stretches(pieces, c.params.feed, mm, c.job.units, c.tolerance, c.decimals), fo, bd);
+      joinable(speed_stretches(pieces, c.params.feed, mm, c.job.units, c.tolerance, c.decimals, c.ends), fo, bd);
   if (path.empty()) path.push_back(quantize(pieces.front().front(), c.decimals));
   double bound = 0;
   auto push_line = [&](const Vec3& to, double dev) {
     bound = std::max(bound, dev);
     append_line(c, to, path, blocks);
   };
-  Vec3 chain_end;  // the direction the last chain ends in (zero: none)
+  // The direction the last chain ends in (zero: none); where the cut goes
+  // on from a tangent move, the one that move ends in.
+  Vec3 chain_end = incoming_direction(c, pieces);
   for (size_t i = 0; i < stretches.size(); ++i) {
     const SpeedStretch& st = stretches[i];
     if (st.steady) {
@@ -237,10 +239,11 @@ double append_cruise(CutContext& c, std::span<const Bezier> pieces, std::vector<
     if (norm_xy(chain_end) > 0) leave = leave_chain(st.pieces.front(), vx, vx.size() - 1, chain_end, bd);
     chain_end = {};
     const size_t from = leave ? leave->second.vertex : 0;
-    // Into the next chain: a chord to a line along the curve's tangent at
-    // its start.
+    // Into the next chain, or the tangent move the cut goes on into: a
+    // chord to a line along the curve's tangent there.
     std::optional<std::pair<Joint, Joint>> enter;
-    if (i + 1 < stretches.size()) enter = enter_chain(st.pieces.back(), st.pieces.size() - 1, vx, from, bd);
+    if (i + 1 < stretches.size() || !c.ends.to_rest)
+      enter = enter_chain(st.pieces.back(), st.pieces.size() - 1, vx, from, bd);
     const size_t to = enter ? enter->first.vertex : vx.size() - 1;
     if (leave) push_line(leave->first.b, leave->first.dev);
     for (size_t k = from; k <= to; ++k)
@@ -257,49 +260,64 @@ double append_cruise(CutContext& c, std::span<const Bezier> pieces, std::vector<
 
 namespace {
 
-// The planned time (machine.motion) of `moves` cut from `start` (a curve
-// point) after a plunge there and before a retract, as the program cuts
-// them: the cut's own blocks, the plunge's corner blended as the
-// controller blends it.
-double planned_cut_time(const CutContext& c, const Vec3& start, std::span<const Move> moves) {
+// The planned time (machine.motion) of `moves` cut along `pieces` as the
+// program cuts them: after a plunge at the start, or a straight run at the
+// feed along the curve's tangent where the cut goes on from a tangent move
+// (c.ends), and before a retract, or such a run; the cut's own blocks, its
+// ends blended as the controller blends them.
+double planned_cut_time(const CutContext& c, std::span<const Bezier> pieces, std::span<const Move> moves) {
   Program p;
   p.units = c.program.units;
   const int entity = static_cast<int>(c.entity.index);
-  const Vec3 at = cut_point(c, start);
-  const Vec3 above{at.x, at.y, at.z + kPlungeDepth / mm_per_unit(c.program.units)};
+  const Vec3 at = cut_point(c, pieces.front().front());
+  const double run = run_length(c.params.feed, *c.machine.motion, c.program.units);
+  const Vec3 t0 = end_direction(pieces, false), t1 = end_direction(pieces, true);
+  const bool run_in = !c.ends.from_rest && norm(t0) > 0, run_out = !c.ends.to_rest && norm(t1) > 0;
+  const Vec3 before = run_in ? at - t0 * run : at;
+  const Vec3 above{before.x, before.y, at.z + kPlungeDepth / mm_per_unit(c.program.units)};
   RapidMove over;
   over.to = above;
   p.moves.push_back({over, entity});
-  LineMove plunge;
-  plunge.to = at;
-  plunge.feed = c.params.plunge_feed > 0 ? c.params.plunge_feed : c.params.feed;
-  p.moves.push_back({plunge, entity});
+  LineMove down;
+  down.to = before;
+  down.feed = c.params.plunge_feed > 0 ? c.params.plunge_feed : c.params.feed;
+  p.moves.push_back({down, entity});
+  LineMove in;
+  in.to = at;
+  in.feed = c.params.feed;
+  if (run_in) p.moves.push_back({in, entity});
+  const size_t own = p.moves.size();
   p.moves.insert(p.moves.end(), moves.begin(), moves.end());
   const Vec3* end = nullptr;
   for (const Move& mv : moves)
     if (const Motion* m = motion_of(mv)) end = &m->to;
+  LineMove out;
+  out.to = (end ? *end : at) + t1 * run;
+  out.feed = c.params.feed;
+  if (run_out) p.moves.push_back({out, entity});
   RapidMove up;
-  up.to = end ? *end : at;
+  up.to = run_out ? out.to : end ? *end : at;
   up.to.z = above.z;
   p.moves.push_back({up, entity});
-  // After the rapid and the plunge, before the retract.
+  // The cut's own blocks: after the rapid, the plunge and the run in,
+  // before the run out and the retract.
   const MotionPlan plan = plan_motion(program_timeline(p), *c.machine.motion);
   double t = 0;
-  for (size_t i = 2; i + 1 < plan.blocks.size(); ++i) t += plan.blocks[i].time_s;
+  for (size_t i = own; i + (run_out ? 2 : 1) < plan.blocks.size(); ++i) t += plan.blocks[i].time_s;
   return t;
 }
 
 }  // namespace
 
-std::optional<size_t> keep_faster_cut(CutContext& c, const Vec3& start, size_t first, size_t plain_blocks,
+std::optional<size_t> keep_faster_cut(CutContext& c, std::span<const Bezier> pieces, size_t first, size_t plain_blocks,
                                       const std::function<std::optional<size_t>()>& make) {
   auto& moves = c.program.moves;
   const auto at = [&] { return moves.begin() + static_cast<std::ptrdiff_t>(first); };
   std::vector<Move> plain(std::make_move_iterator(at()), std::make_move_iterator(moves.end()));
   moves.erase(at(), moves.end());
   const std::optional<size_t> blocks = make();
-  if (blocks && take_cruise(planned_cut_time(c, start, plain), plain_blocks,
-                            planned_cut_time(c, start, {at(), moves.end()}), *blocks)) {
+  if (blocks && take_cruise(planned_cut_time(c, pieces, plain), plain_blocks,
+                            planned_cut_time(c, pieces, {at(), moves.end()}), *blocks)) {
     // Said once per program, in the header.
     const std::string n = "G01 where the tool speeds up or slows down, where that is faster: machine " +
                           c.machine.name + " gives arcs less acceleration than lines";

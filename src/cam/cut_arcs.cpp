@@ -24,6 +24,48 @@ void append_line(CutContext& c, const Vec3& to, std::vector<Vec3>& path, size_t&
   ++blocks;
 }
 
+namespace {
+
+// A cut that goes on from a tangent move starts along the move's printed
+// direction when it is within this angle (radians) of the curve's.
+constexpr double kContinueAngle = 0.05;
+
+}  // namespace
+
+Vec3 incoming_direction(const CutContext& c, std::span<const Bezier> pieces) {
+  if (c.ends.from_rest || pieces.empty()) return {};
+  const Vec3 along = end_direction(pieces, false);
+  const Vec3 start = cut_point(c, quantize(pieces.front().front(), c.decimals));
+  const auto& moves = c.program.moves;
+  size_t k = moves.size();
+  while (k > 0 && !motion_of(moves[k - 1])) --k;
+  if (k == 0) return {};
+  const Motion* last = motion_of(moves[k - 1]);
+  if (!(last->feed > 0) || std::abs(last->to.x - start.x) + std::abs(last->to.y - start.y) > 0 ||
+      std::abs(last->to.z - start.z) > 1e-9 * (1 + std::abs(start.z)))
+    return {};
+  Vec3 d;
+  if (const auto* a = std::get_if<ArcMove>(&moves[k - 1].what)) {
+    if (a->plane != Plane::xy) return {};
+    const Vec3 r = a->to - a->center;
+    d = a->ccw ? Vec3{-r.y, r.x, 0} : Vec3{r.y, -r.x, 0};
+  } else if (std::holds_alternative<LineMove>(moves[k - 1].what)) {
+    size_t j = k - 1;
+    while (j > 0 && !motion_of(moves[j - 1])) --j;
+    if (j == 0) return {};
+    d = last->to - motion_of(moves[j - 1])->to;
+    if (std::abs(d.z) > 0) return {};
+  } else {
+    return {};
+  }
+  d.z = 0;
+  const double l = std::hypot(d.x, d.y);
+  if (!(l > 0)) return {};
+  d = d / l;
+  const double turn = std::atan2(std::abs(d.x * along.y - d.y * along.x), d.x * along.x + d.y * along.y);
+  return turn <= kContinueAngle ? d : Vec3{};
+}
+
 double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks,
                             Vec3* direction) {
   const int entity = static_cast<int>(c.entity.index);
@@ -123,7 +165,9 @@ void emit_arcs(CutContext& c, EntityReport& r) {
   std::vector<Vec3> path;
   r.blocks = 0;
   const size_t first = c.program.moves.size();
-  r.bound = append_arcs_or_lines(c, pieces, path, r.blocks);
+  // (going on from a tangent move: its direction, which the chain continues)
+  Vec3 incoming = incoming_direction(c, pieces);
+  r.bound = append_arcs_or_lines(c, pieces, path, r.blocks, &incoming);
   const auto& mm = c.machine.motion;
   if (mm && arcs_accelerate_slower(*mm) && c.params.tolerance_side == ToleranceSide::both &&
       std::all_of(pieces.begin(), pieces.end(), [](const Bezier& b) { return planar_xy(b); })) {
@@ -132,7 +176,7 @@ void emit_arcs(CutContext& c, EntityReport& r) {
     // (docs/motion.md, "Arcs where the tool cruises"), when that is faster.
     std::vector<Vec3> cruise_path;
     double cruise_bound = 0;
-    const auto kept = keep_faster_cut(c, pieces.front().front(), first, r.blocks, [&]() -> std::optional<size_t> {
+    const auto kept = keep_faster_cut(c, pieces, first, r.blocks, [&]() -> std::optional<size_t> {
       size_t n = 0;
       cruise_bound = append_cruise(c, pieces, cruise_path, n, [&](std::span<const Bezier> run, Vec3& dir) {
         return append_arcs_or_lines(c, run, cruise_path, n, &dir);

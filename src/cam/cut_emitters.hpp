@@ -17,6 +17,7 @@
 
 #include "bezcam/cam/program.hpp"
 #include "bezcam/flatten/exact_blocks.hpp"
+#include "speed_stretches.hpp"
 
 namespace bezcam::detail {
 
@@ -84,6 +85,11 @@ struct CutContext {
   std::deque<Entity>* owned = nullptr;
   /// ConvertOptions::memo (null: none).
   ConversionMemo* memo = nullptr;
+  /// Whether the tool is at rest where the cut starts and ends, or goes on
+  /// at the feed from or into a tangent move (a part's leads and path): on
+  /// a controller whose arcs accelerate more slowly than its lines, where
+  /// append_cruise() puts arcs and how keep_faster_cut() times the cut.
+  CutEnds ends = {};
   /// Runs `f` now into `r.measured`, or leaves it for later.
   void measure_with(EntityReport& r, std::function<double()> f) const {
     if (later)
@@ -199,6 +205,14 @@ size_t append_exact_block(CutContext& c, const ExactBlock& b, const std::functio
 double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks,
                             Vec3* direction = nullptr);
 
+/// Where the cut goes on from a tangent move (c.ends.from_rest false): the
+/// unit direction in XY the program's last move ends in, when it is a feed
+/// move in the plane ending where the cut starts, within a few hundredths
+/// of a radian of `along` (the curve's own direction there); else zero.
+/// The cut's tangent chain starts along it, so that the joint turns by no
+/// more than the two printed moves' rounding.
+Vec3 incoming_direction(const CutContext& c, std::span<const Bezier> pieces);
+
 /// Appends the moves of a run of pieces where the tool cruises at the feed
 /// (append_cruise()); `direction` as for append_arcs_or_lines(). Returns
 /// the proven bound.
@@ -210,14 +224,14 @@ using SteadyEmitter = std::function<double(std::span<const Bezier> pieces, Vec3&
 /// fit (else lines there too). Returns the proven bound (cruise_arcs.cpp).
 double append_cruise(CutContext& c, std::span<const Bezier> pieces, std::vector<Vec3>& path, size_t& blocks,
                      const SteadyEmitter& steady);
-/// Replaces the moves of c.program from `first` on (a cut along a curve
-/// starting at `start`, `plain_blocks` blocks) by the ones `make` appends
+/// Replaces the moves of c.program from `first` on (a cut along the curve
+/// of `pieces`, `plain_blocks` blocks, ends as c.ends says) by the ones `make` appends
 /// in their place (the same cut with lines where the tool changes speed,
 /// append_cruise(); `make` returns its block count, or nullopt when it
 /// cannot make it) when its plan is faster (take_cruise()); else puts the
 /// first cut back. Returns the block count of the cut kept when it is
 /// `make`'s (cruise_arcs.cpp).
-std::optional<size_t> keep_faster_cut(CutContext& c, const Vec3& start, size_t first, size_t plain_blocks,
+std::optional<size_t> keep_faster_cut(CutContext& c, std::span<const Bezier> pieces, size_t first, size_t plain_blocks,
                                       const std::function<std::optional<size_t>()>& make);
 
 /// A G01 to `to` (model point) at the feed, unless the tool is there

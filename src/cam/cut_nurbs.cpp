@@ -137,7 +137,7 @@ void cruise_if_faster(CutContext& c, EntityReport& r, std::vector<Vec3>& path, d
   const auto& pieces = c.entity.curve.pieces;
   std::vector<Vec3> cpath{quantize(pieces.front().front(), c.decimals)};
   double csampled = sampled, cbound = 0;
-  const auto kept = keep_faster_cut(c, pieces.front().front(), first, r.blocks, [&]() -> std::optional<size_t> {
+  const auto kept = keep_faster_cut(c, pieces, first, r.blocks, [&]() -> std::optional<size_t> {
     size_t n = 0;
     bool exact = true;
     cbound = append_cruise(c, pieces, cpath, n, [&](std::span<const Bezier> run, Vec3& dir) {

@@ -361,7 +361,7 @@ void PartCut::plan_depths() {
 
 // Each stretch is cut by the output mode's emitter, as an entity of its own
 // (kept alive for the deferred measurements).
-double PartCut::cut(std::vector<Bezier> pieces, double z, double budget) {
+double PartCut::cut(std::vector<Bezier> pieces, double z, double budget, CutEnds ends) {
   Entity& e = c.owned->emplace_back(ent);
   CurveSegment seg;
   seg.kind = "offset";
@@ -372,6 +372,7 @@ double PartCut::cut(std::vector<Bezier> pieces, double z, double budget) {
   zp.cut_z = z;
   CutContext sub{c.job, e,       c.machine, zp,     c.output, dec, budget, c.measure && measure_pass,
                  p,     c.later, c.report,  c.owned};
+  sub.ends = ends;
   EntityReport part_r;
   part_r.label = r.label;
   switch (c.output) {
@@ -473,10 +474,18 @@ void PartCut::cut_pass(const Stretch& st, size_t d) {
   approach(p, entity, {entry.x, entry.y, zq}, safe, clear, cp.plunge_feed, ms);
   if (controller) p.moves.push_back({CompensationMove{side, cp.tool, tool_r}, entity});
   const size_t in_from = p.moves.size();
-  if (!st.in.empty()) lead_bound = std::max(lead_bound, cut(st.in, z, lead_budget));
+  // The lead-in runs on into the path and the path into the lead-out,
+  // tangent to each other, at the feed; the tool stops only at the
+  // plunge, a step onto or off a tab, and the retract.
+  if (!st.in.empty()) lead_bound = std::max(lead_bound, cut(st.in, z, lead_budget, {true, false}));
   const size_t first_move = p.moves.size();
   if (first_move > in_from) r.lead_moves.push_back({in_from, first_move});
   const bool tabbed = st.tabs && z < tab_top;
+  size_t last_run = st.runs.size();
+  for (size_t run = 0; run < st.runs.size(); ++run)
+    if (!st.runs[run].empty()) last_run = run;
+  // (ended on a tab: a step down before the lead-out)
+  const bool step_down = tabbed && st.runs.size() % 2 == 0;
   for (size_t run = 0; run < st.runs.size(); ++run) {
     if (st.runs[run].empty()) continue;
     const bool on_tab = tabbed && run % 2 == 1;
@@ -485,9 +494,10 @@ void PartCut::cut_pass(const Stretch& st, size_t d) {
       const Vec3 at = quantize(st.runs[run].front().front(), dec);
       line_to({at.x, at.y, quantize(rz, dec)}, cp.plunge_feed);
     }
-    out_bound = std::max(out_bound, cut(st.runs[run], rz, out_tol));
+    const CutEnds ends{!(run == 0 && !st.in.empty()), !(run == last_run && !st.out.empty() && !step_down)};
+    out_bound = std::max(out_bound, cut(st.runs[run], rz, out_tol, ends));
   }
-  if (tabbed && st.runs.size() % 2 == 0) {  // ended on a tab: back down for the lead-out
+  if (step_down) {  // ended on a tab: back down for the lead-out
     const Vec3 at = quantize(st.e, dec);
     line_to({at.x, at.y, zq}, cp.plunge_feed);
   }
@@ -496,12 +506,13 @@ void PartCut::cut_pass(const Stretch& st, size_t d) {
   const Vec3 before_out = motion_of(p.moves.back())->to;
   if (controller) {
     // The lead-out's arc compensated, G40, then its line: the exit move.
-    lead_bound = std::max(lead_bound, cut(std::vector<Bezier>(st.out.begin(), st.out.end() - 1), z, lead_budget));
+    lead_bound = std::max(
+        lead_bound, cut(std::vector<Bezier>(st.out.begin(), st.out.end() - 1), z, lead_budget, {step_down, false}));
     p.moves.push_back({CompensationMove{0, cp.tool, 0}, entity});
     const Vec3 to = quantize(st.out.back().back(), dec);
     line_to({to.x, to.y, zq}, cp.feed);
   } else if (!st.out.empty()) {
-    lead_bound = std::max(lead_bound, cut(st.out, z, lead_budget));
+    lead_bound = std::max(lead_bound, cut(st.out, z, lead_budget, {step_down, true}));
   }
   // The last pass's path and its leads, measured against the part once
   // every stretch of it is cut (finish(); the model's reading under

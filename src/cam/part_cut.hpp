@@ -105,8 +105,9 @@ struct PartCut {
   /// read on its model; refused when it strays beyond the tolerance.
   void check_compensation(const Stretch& st, size_t first_move, bool last_pass);
   /// Pieces cut at z within `budget` by the output mode's emitter, as an
-  /// entity of their own; returns their proven bound.
-  double cut(std::vector<Bezier> pieces, double z, double budget);
+  /// entity of their own, from and to rest or going on from and into the
+  /// tangent moves around them (`ends`); returns their proven bound.
+  double cut(std::vector<Bezier> pieces, double z, double budget, CutEnds ends);
   void line_to(const Vec3& to, double feed);
   /// The proven bound and the last pass measured against the part.
   void finish();

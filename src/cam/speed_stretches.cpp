@@ -26,10 +26,29 @@ double curvature(const Bezier& b, double t) {
 
 }  // namespace
 
+Vec3 end_direction(std::span<const Bezier> pieces, bool at_end) {
+  if (pieces.empty()) return {};
+  const Bezier& b = at_end ? pieces.back() : pieces.front();
+  Vec3 d = derivative(b, at_end ? 1.0 : 0.0);
+  // (where the end control points coincide, the curve leaves along the
+  // next distinct one)
+  for (size_t i = 1; std::hypot(d.x, d.y) == 0 && i < b.points.size(); ++i)
+    d = at_end ? b.back() - b.points[b.points.size() - 1 - i] : b.points[i] - b.front();
+  const double l = std::hypot(d.x, d.y);
+  return l > 0 ? Vec3{d.x / l, d.y / l, 0} : Vec3{};
+}
+
+double run_length(double feed, const MotionModel& model, Units units) {
+  const double vf = feed / 60;
+  const double accel = std::min(model.max_acceleration_mm_s2[0], model.max_acceleration_mm_s2[1]) / mm_per_unit(units);
+  // Twice the distance to reach the feed at the plane's acceleration.
+  return vf * vf / accel;
+}
+
 bool arcs_accelerate_slower(const MotionModel& model) { return model.planner == MotionModel::Planner::linuxcnc; }
 
 std::vector<SpeedStretch> speed_stretches(std::span<const Bezier> pieces, double feed, const MotionModel& model,
-                                          Units units, double tolerance, int decimals) {
+                                          Units units, double tolerance, int decimals, CutEnds ends) {
   std::vector<SpeedStretch> out;
   if (pieces.empty()) return out;
   // The lines program of the curve, as lines output makes it, planned.
@@ -39,29 +58,40 @@ std::vector<SpeedStretch> speed_stretches(std::span<const Bezier> pieces, double
     out.push_back({{pieces.begin(), pieces.end()}, false});
     return out;
   }
+  // Where the cut goes on from, or into, a tangent move at the feed, the
+  // plan has a straight run along the curve's tangent before or after it.
+  const double run = run_length(feed, model, units);
+  const Vec3 dir_in = end_direction(pieces, false), dir_out = end_direction(pieces, true);
+  const bool run_in = !ends.from_rest && norm(dir_in) > 0, run_out = !ends.to_rest && norm(dir_out) > 0;
   Timeline tl;
   tl.units = units;
-  tl.start = vx.front().point;
-  for (size_t i = 1; i < vx.size(); ++i) {
+  auto line = [&](const Vec3& from, const Vec3& to) {
     MotionBlock mb;
     mb.kind = BlockKind::linear;
-    mb.line = static_cast<int>(i);
+    mb.line = static_cast<int>(tl.blocks.size() + 1);
     mb.first_line = mb.line;
-    mb.from = vx[i - 1].point;
-    mb.to = vx[i].point;
+    mb.from = from;
+    mb.to = to;
     mb.feed = feed;
     tl.blocks.push_back(std::move(mb));
-  }
+  };
+  tl.start = run_in ? vx.front().point - dir_in * run : vx.front().point;
+  if (run_in) line(tl.start, vx.front().point);
+  for (size_t i = 1; i < vx.size(); ++i) line(vx[i - 1].point, vx[i].point);
+  if (run_out) line(vx.back().point, vx.back().point + dir_out * run);
   tl.path_tolerance.assign(tl.blocks.size(), -1);
   const MotionPlan plan = plan_motion(std::move(tl), model);
   const size_t nb = vx.size() - 1;
+  const int first_block = run_in ? 1 : 0;
   // Steady blocks: every segment of the block (and the blend after it) at
   // the feed, and the curve no tighter than an arc at the feed allows.
   const double vf = feed / 60;  // units/s
   std::vector<char> steady(nb, 1);
-  for (const PlanSegment& sg : plan.segments)
-    if (sg.block >= 0 && static_cast<size_t>(sg.block) < nb && !(std::min(sg.v0, sg.v1) >= vf * (1 - kSteadyShare)))
-      steady[static_cast<size_t>(sg.block)] = 0;
+  for (const PlanSegment& sg : plan.segments) {
+    const int b = sg.block - first_block;
+    if (b >= 0 && static_cast<size_t>(b) < nb && !(std::min(sg.v0, sg.v1) >= vf * (1 - kSteadyShare)))
+      steady[static_cast<size_t>(b)] = 0;
+  }
   const double k = mm_per_unit(units);
   const double accel = std::min(model.max_acceleration_mm_s2[0], model.max_acceleration_mm_s2[1]) / k;  // units/s^2
   const double kappa_max = std::sqrt(3.0) / 2.0 * accel / (vf * vf);
@@ -78,6 +108,7 @@ std::vector<SpeedStretch> speed_stretches(std::span<const Bezier> pieces, double
   for (size_t i = 0; i < nb;) {
     size_t j = i;
     while (j < nb && steady[j]) ++j;
+    if (j == nb && run_out) break;  // it goes on at the feed past the end
     double d = 0;
     for (size_t m = j; m-- > i && d < stop;) {
       d += dist(vx[m].point, vx[m + 1].point);

@@ -37,13 +37,32 @@ struct SpeedStretch {
   bool steady = false;
 };
 
+/// How a cut begins and ends: at rest (after a plunge, before a retract),
+/// or going on at the feed from, or into, a move that runs tangent to it
+/// (a part's lead-in into its path, the path into its lead-out).
+struct CutEnds {
+  bool from_rest = true;
+  bool to_rest = true;
+};
+
+/// The unit direction in XY the pieces start in (`at_end` false) or end
+/// in; zero where they stand still there.
+Vec3 end_direction(std::span<const Bezier> pieces, bool at_end);
+
+/// A straight run at `feed` (units/min) on `model` long enough for the
+/// lines to reach the feed from rest and to stop from it, with room to
+/// spare: the tool's path before a cut that does not start at rest, or
+/// after one that does not end at rest, as a plan models it.
+double run_length(double feed, const MotionModel& model, Units units);
+
 /// Whether arcs on `model` accelerate more slowly along the path than
 /// lines: LinuxCNC's planner gives an arc tighter than the machine's top
 /// speed allows half of its acceleration for the tangent.
 bool arcs_accelerate_slower(const MotionModel& model);
 
-/// `pieces` (planar, in the program's `units`, cut at `feed` units/min
-/// from rest to rest) as alternating stretches: steady where the lines
+/// `pieces` (planar, in the program's `units`, cut at `feed` units/min,
+/// from rest or going on from a tangent run at the feed, to rest or into
+/// one, as `ends` says) as alternating stretches: steady where the lines
 /// program of the curve (the flattener's chords within `tolerance` at
 /// `decimals`), planned on `model`, runs at the feed and the curve is no
 /// tighter than an arc at the feed allows (sqrt(3)/2 of the plane's
@@ -52,6 +71,6 @@ bool arcs_accelerate_slower(const MotionModel& model);
 /// down earlier); not steady elsewhere. One stretch when the whole curve is
 /// one kind.
 std::vector<SpeedStretch> speed_stretches(std::span<const Bezier> pieces, double feed, const MotionModel& model,
-                                          Units units, double tolerance, int decimals);
+                                          Units units, double tolerance, int decimals, CutEnds ends = {});
 
 }  // namespace bezcam::detail

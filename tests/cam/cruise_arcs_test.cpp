@@ -195,6 +195,34 @@ TEST(CruiseArcs, PartCutsInArcsAndNurbsAreNoSlowerThanLines) {
   expect_no_slower_than_lines(parts);
 }
 
+TEST(CruiseArcs, PartLeadsRunIntoAndOutOfThePathTangentially) {
+  // The cam's lead-in runs on into its path and the path into its
+  // lead-out at the feed: the tool stops only at the plunge and the
+  // retract, so the lead-in ends and the lead-out starts with arcs (not
+  // the lines of a tool slowing down or speeding up), each joint tangent
+  // as LinuxCNC judges it at F6000, none of them a corner. Cut as if each
+  // stopped there, lines met the path's arcs turning by up to 0.39 rad.
+  const double kink = 0.1 * 1000 / (2 * (100 / 0.001 + 1000));
+  const MachineProfile m = load_machine_profile("linuxcnc");
+  const ConvertResult r = convert_as(sample_at("part-cam-notch", 6000), m, OutputMode::arcs);
+  const std::vector<MotionBlock> mb = program_motion(r.program);
+  size_t joints = 0, leads = 0;
+  for (size_t i = 0; i + 1 < mb.size(); ++i) {
+    const MotionBlock &a = mb[i], &b = mb[i + 1];
+    if (a.entity != 0 || b.entity != 0 || (!is_arc(a) && !is_arc(b))) continue;
+    const Vec3 u = direction(a, true), v = direction(b, false);
+    if ((u.x == 0 && u.y == 0) || (v.x == 0 && v.y == 0)) continue;  // a plunge or a retract
+    ++joints;
+    // (the leads' arcs: the radius 5 the job asks)
+    leads += (is_arc(a) && std::abs(dist(a.to, a.center) - 5) < 0.01) ||
+             (is_arc(b) && std::abs(dist(b.from, b.center) - 5) < 0.01);
+    const double turn = std::atan2(std::abs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y);
+    EXPECT_LE(turn, kink) << "joint at X" << a.to.x << " Y" << a.to.y;
+  }
+  EXPECT_GT(joints, 50u);
+  EXPECT_GE(leads, 4u);  // per pass: the lead-in's arc into the path, the path into the lead-out's arc
+}
+
 TEST(CruiseArcs, PartOffsetsCarryNoStubsBetweenTheirPieces) {
   // A part's offset is made from an unrounded arc fit of its curve: a stub
   // that fit left at a piece's end, or a kink there, became a printed move
