@@ -9,7 +9,9 @@
 
 #include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
+#include "bezcam/flatten/tolerance.hpp"
 #include "offset_chain.hpp"
+#include "offset_close.hpp"
 
 namespace bezcam {
 
@@ -396,9 +398,14 @@ void OffsetBuilder::fit_spline(std::span<const Bezier> pieces) {
   ao.radius_tolerance = HUGE_VAL;
   ao.tangent = opt.tangent;
   Vec3 from = flat(pieces.front().front());
+  // Where the move before A's last ended on the curve (piece, parameter).
+  size_t prev_piece = 0, end_piece = 0;
+  double prev_t = 0, end_t = 0;
   const double bound = fit_arcs(pieces, ao, [&](const FitMove& f) {
     const Vec3 to = flat(f.to);
     if (to == from) return;
+    prev_piece = end_piece, prev_t = end_t;
+    end_piece = f.piece, end_t = f.t;
     if (f.kind == FitKind::line) {
       A.push_back(ArcSeg::line(from, to));
     } else {
@@ -411,6 +418,16 @@ void OffsetBuilder::fit_spline(std::span<const Bezier> pieces) {
   res.fitted = A.size();
   if (A.empty()) return;
   if (closed) A.back().b = A.front().a;
+  // A closed chain made tangent where it closes, on the last piece's span
+  // of its last move.
+  const size_t last = pieces.size() - 1;
+  if (closed && opt.tangent && A.size() >= 2 && end_piece == last &&
+      (prev_piece == last || (prev_piece + 1 == last && prev_t >= 1))) {
+    const double t_from = prev_piece == last ? prev_t : 0.0;
+    const double closing = flatten_detail::close_tangentially(
+        A, pieces.back(), t_from, check_tolerance(opt.fit, -1, 2, control_magnitude(pieces)).budget);
+    if (closing >= 0) res.bound = std::max(res.bound, closing), res.fitted = A.size();
+  }
   scale = r;
   for (const auto& s : A) scale = std::max({scale, max_abs(s.a), max_abs(s.b)});
   eps = 1e-9 * scale;  // floating-point margin of the tests below

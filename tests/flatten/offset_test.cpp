@@ -88,6 +88,39 @@ TEST(Offset, OpenCubicBothSidesWithinTheFit) {
   }
 }
 
+// The largest turn between consecutive moves of a closed chain, the
+// closing joint included.
+double largest_turn(const std::vector<ArcSeg>& chain) {
+  double worst = 0;
+  for (size_t i = 0; i < chain.size(); ++i) {
+    const Vec3 u = chain[i].tangent(1), v = chain[(i + 1) % chain.size()].tangent(0);
+    worst = std::max(worst, std::atan2(std::abs(u.x * v.y - u.y * v.x), u.x * v.x + u.y * v.y));
+  }
+  return worst;
+}
+
+TEST(Offset, ClosedSmoothCurveInTangentChainsIsTangentWhereItCloses) {
+  // An ellipse of four cubics, tangent at every joint: its arc spline in
+  // tangent chains starts free and closes on itself, and where the last
+  // arc met the first at a small angle the offsets met with a join arc of
+  // micrometres, a kink of the printed path in every pass. The last move
+  // is a biarc into the first: every joint is tangent, the bound kept.
+  const double k = 0.5522847498, a = 30, b = 17;
+  const std::vector<Bezier> part{Bezier::make({{a, 0}, {a, k * b}, {k * a, b}, {0, b}}),
+                                 Bezier::make({{0, b}, {-k * a, b}, {-a, k * b}, {-a, 0}}),
+                                 Bezier::make({{-a, 0}, {-a, -k * b}, {-k * a, -b}, {0, -b}}),
+                                 Bezier::make({{0, -b}, {k * a, -b}, {a, -k * b}, {a, 0}})};
+  for (int side : {1, -1}) {
+    SCOPED_TRACE(side);
+    const auto res = offset_curve(part, true, {3, side, 0.002, true});
+    ASSERT_EQ(res.chains.size(), 1u);
+    EXPECT_TRUE(res.closed[0]);
+    EXPECT_LE(largest_turn(res.chains[0]), 1e-9);
+    EXPECT_LE(res.bound, 0.002);
+    EXPECT_LE(measure(part, res, 3, side, 0.002).deviation(3), res.bound + 1e-5);
+  }
+}
+
 TEST(Offset, NotchTighterThanTheToolIsTrimmedAndSaid) {
   // A 40 x 30 block with a 4 mm wide slot 10 deep in its top edge (ccw).
   const auto part = polygon({{0, 0}, {40, 0}, {40, 30}, {22, 30}, {22, 20}, {18, 20}, {18, 30}, {0, 30}});

@@ -1,0 +1,92 @@
+// A closed arc spline made tangent where it closes (offset_close.hpp).
+#include "offset_close.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "bezcam/flatten/arc_fit.hpp"
+
+namespace bezcam::flatten_detail {
+
+namespace {
+
+// Above this turn (radians) where A closes, the curve has a corner there.
+constexpr double kCloseCorner = 0.05;
+
+double cross_xy(const Vec3& a, const Vec3& b) { return a.x * b.y - a.y * b.x; }
+double dot_xy(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y; }
+
+// The arc from p leaving in unit direction u through q (none where q lies
+// on the line through p along u, or behind a half turn).
+std::optional<Arc> arc_leaving(const Vec3& p, const Vec3& u, const Vec3& q) {
+  const Vec3 n{-u.y, u.x, 0}, w = q - p;
+  const double wn = dot_xy(w, n), ww = dot_xy(w, w);
+  if (!(std::abs(wn) > 1e-9 * std::sqrt(ww)) || !(dot_xy(w, u) > 0)) return std::nullopt;
+  const double s = ww / (2 * wn);  // signed radius: the centre on u's left when > 0
+  return Arc{p, q, p + n * s, s > 0};
+}
+
+// The parameter in [lo, hi] of the curve's point nearest q (sampled, then
+// golden section around the nearest sample).
+double nearest_t(const Bezier& b, double lo, double hi, const Vec3& q) {
+  constexpr int kSamples = 64;
+  auto d2 = [&](double t) {
+    const Vec3 m = evaluate(b, t);
+    return (m.x - q.x) * (m.x - q.x) + (m.y - q.y) * (m.y - q.y);
+  };
+  int best = 0;
+  double best_d = d2(lo);
+  for (int i = 1; i <= kSamples; ++i)
+    if (const double d = d2(lo + (hi - lo) * i / kSamples); d < best_d) best = i, best_d = d;
+  double a = lo + (hi - lo) * std::max(0, best - 1) / kSamples,
+         c = lo + (hi - lo) * std::min(kSamples, best + 1) / kSamples;
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  for (int i = 0; i < 60 && c - a > 1e-14; ++i) {
+    const double x1 = c - g * (c - a), x2 = a + g * (c - a);
+    if (d2(x1) < d2(x2))
+      c = x2;
+    else
+      a = x1;
+  }
+  return 0.5 * (a + c);
+}
+
+ArcSeg to_seg(const Arc& a) {
+  const double sweep = a.sweep();
+  return ArcSeg::make_arc(a.from, a.to, a.center, a.ccw ? sweep : -sweep);
+}
+
+}  // namespace
+
+double close_tangentially(std::vector<ArcSeg>& A, const Bezier& last_piece, double t_from, double budget) {
+  if (A.size() < 2 || !(t_from < 1)) return -1;
+  const ArcSeg& last = A.back();
+  const Vec3 p0 = last.a, p1 = A.front().a, u0 = last.tangent(0), u1 = A.front().tangent(0);
+  const Vec3 end = last.tangent(1);
+  const double turn = std::atan2(std::abs(cross_xy(end, u1)), dot_xy(end, u1));
+  if (!(turn > 1e-12) || turn > kCloseCorner) return -1;
+  // The biarc whose two tangent legs are equally long (d): its arcs meet
+  // at j, tangent to each other there.
+  const Vec3 v = p1 - p0, t = u0 + u1;
+  const double vt = dot_xy(v, t), vv = dot_xy(v, v), k = 2 * (1 - dot_xy(u0, u1));
+  const double d = k > 1e-12 ? (-vt + std::sqrt(vt * vt + k * vv)) / k : vv / (4 * dot_xy(v, u1));
+  if (!(d > 0) || !std::isfinite(d)) return -1;
+  const Vec3 j = (p0 + u0 * d + p1 - u1 * d) * 0.5;
+  const auto a1 = arc_leaving(p0, u0, j);
+  // (the second arc, travelled back from p1 against u1)
+  auto a2 = arc_leaving(p1, u1 * -1, j);
+  if (!a1 || !a2) return -1;
+  a2 = Arc{j, p1, a2->center, !a2->ccw};
+  const double tj = nearest_t(last_piece, t_from, 1, j);
+  if (!(tj > t_from) || !(tj < 1)) return -1;
+  const double dev1 = arc_span_deviation(last_piece, t_from, tj, *a1, budget);
+  if (!(dev1 <= budget)) return -1;
+  const double dev2 = arc_span_deviation(last_piece, tj, 1, *a2, budget);
+  if (!(dev2 <= budget)) return -1;
+  A.back() = to_seg(*a1);
+  A.push_back(to_seg(*a2));
+  A.back().b = p1;
+  return std::max(dev1, dev2);
+}
+
+}  // namespace bezcam::flatten_detail
