@@ -437,6 +437,7 @@ void PartCut::cut_stretches() {
     const std::vector<double> cuts = tab_cuts(st.s, chain_len[k]);
     leads_of(k, st);
     st.tabs = !cuts.empty();
+    st.path = chain;
     st.runs = cuts.empty() ? std::vector<std::vector<Bezier>>{chain} : split_at_lengths(chain, cuts);
     for (size_t d = 0; d < depths.size(); ++d) cut_pass(st, d);
   }
@@ -481,21 +482,26 @@ void PartCut::cut_pass(const Stretch& st, size_t d) {
   const size_t first_move = p.moves.size();
   if (first_move > in_from) r.lead_moves.push_back({in_from, first_move});
   const bool tabbed = st.tabs && z < tab_top;
-  size_t last_run = st.runs.size();
-  for (size_t run = 0; run < st.runs.size(); ++run)
-    if (!st.runs[run].empty()) last_run = run;
+  // Above the tabs the path is cut whole: split where the tabs lie, it
+  // would be printed as several cuts, with pieces as short as the gap
+  // between a tab's end and the path's next joint.
+  const std::vector<std::vector<Bezier>> whole{st.path};
+  const auto& runs = tabbed ? st.runs : whole;
+  size_t last_run = runs.size();
+  for (size_t run = 0; run < runs.size(); ++run)
+    if (!runs[run].empty()) last_run = run;
   // (ended on a tab: a step down before the lead-out)
-  const bool step_down = tabbed && st.runs.size() % 2 == 0;
-  for (size_t run = 0; run < st.runs.size(); ++run) {
-    if (st.runs[run].empty()) continue;
+  const bool step_down = tabbed && runs.size() % 2 == 0;
+  for (size_t run = 0; run < runs.size(); ++run) {
+    if (runs[run].empty()) continue;
     const bool on_tab = tabbed && run % 2 == 1;
     const double rz = on_tab ? tab_top : z;
     if (tabbed && run > 0) {  // up onto the tab, or back down after it
-      const Vec3 at = quantize(st.runs[run].front().front(), dec);
+      const Vec3 at = quantize(runs[run].front().front(), dec);
       line_to({at.x, at.y, quantize(rz, dec)}, cp.plunge_feed);
     }
     const CutEnds ends{!(run == 0 && !st.in.empty()), !(run == last_run && !st.out.empty() && !step_down)};
-    out_bound = std::max(out_bound, cut(st.runs[run], rz, out_tol, ends));
+    out_bound = std::max(out_bound, cut(runs[run], rz, out_tol, ends));
   }
   if (step_down) {  // ended on a tab: back down for the lead-out
     const Vec3 at = quantize(st.e, dec);

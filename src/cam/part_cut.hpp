@@ -91,6 +91,7 @@ struct PartCut {
     Vec3 s, e;                              // its ends
     Vec3 ts, te;                            // the directions its leads join it in
     std::vector<Bezier> in, out;            // its leads (none without)
+    std::vector<Bezier> path;               // the path, whole (passes above the tabs)
     std::vector<std::vector<Bezier>> runs;  // split at the tabs: odd runs lie on a tab
     bool tabs = false;
   };
