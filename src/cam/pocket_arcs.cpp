@@ -39,6 +39,13 @@ namespace {
 // least 100 units of the last printed digit).
 constexpr double kMaxSweep = std::numbers::pi - 0.02;
 constexpr double kMaxRadius = 1e4;
+// Tangent chains: a line goes on from the move before when its direction
+// is within this angle of that move's end (radians; LinuxCNC takes a joint
+// as tangent below 4.95e-4 at F6000 on the linuxcnc profile); the chain
+// starts again, free, where the free move reaches more than this many
+// times as far.
+constexpr double kChainLine = 4e-4;
+constexpr double kChainRestart = 2;
 
 struct Span {
   FitMove move;
@@ -61,6 +68,27 @@ class Fitter {
     s.move.to = p_[j];
     s.move.bound = worst;
     return s;
+  }
+
+  // The line from vertex i to j, when it leaves in direction u (unit).
+  Span tangent_line(size_t i, size_t j, const Vec3& u) const {
+    const Vec3 d{p_[j].x - p_[i].x, p_[j].y - p_[i].y, 0};
+    const double l = std::hypot(d.x, d.y);
+    if (!(l > 0) || std::atan2(std::abs(u.x * d.y - u.y * d.x), u.x * d.x + u.y * d.y) > kChainLine) return {};
+    return line(i, j);
+  }
+
+  // The arc from vertex i leaving in direction u (unit) to vertex j: its
+  // centre on the normal there (then rounded as any arc's).
+  Span tangent_arc(size_t i, size_t j, const Vec3& u) const {
+    const Vec3 S = p_[i], E = p_[j];
+    const Vec3 n{-u.y, u.x, 0}, w{E.x - S.x, E.y - S.y, 0};
+    const double wn = w.x * n.x + w.y * n.y, ww = w.x * w.x + w.y * w.y;
+    if (!(std::abs(wn) > 1e-12 * std::sqrt(ww)) || !(w.x * u.x + w.y * u.y > 0)) return {};
+    const double r = ww / (2 * wn);  // signed: the centre on u's left when > 0
+    const double R = std::abs(r);
+    if (!(R < kMaxRadius) || R < 100 * std::pow(10.0, -dec_)) return {};
+    return certify(i, j, Vec3{S.x + n.x * r, S.y + n.y * r, 0}, r > 0);
   }
 
   Span arc(size_t i, size_t j) const {
@@ -204,11 +232,28 @@ std::vector<FitMove> polyline_arcs(const std::vector<Vec3>& polyline, double tol
     if (p.empty() || dist_xy(p.back(), v) > 0) p.push_back({v.x, v.y, 0});
   std::vector<FitMove> out;
   const Fitter fit(p, tol, decimals, radius_tol);
+  Vec3 tin;  // the direction the last move ends in (zero: none)
   for (size_t i = 0; i + 1 < p.size();) {
     const Span ln = farthest(i, 1, p.size(), [&](size_t j) { return fit.line(i, j); });
     const Span ar = farthest(i, 2, p.size(), [&](size_t j) { return fit.arc(i, j); });
-    const Span& take = ar.ok && ar.end > ln.end ? ar : ln;
-    out.push_back(take.move);
+    Span take = ar.ok && ar.end > ln.end ? ar : ln;
+    // In a tangent chain: each move leaves in the direction the one
+    // before ends in, so that a controller's planner runs through the
+    // joint, unless a free move reaches much farther (one joint at an
+    // angle).
+    if (tin.x != 0 || tin.y != 0) {
+      const Span tl = farthest(i, 1, p.size(), [&](size_t j) { return fit.tangent_line(i, j, tin); });
+      const Span ta = farthest(i, 1, p.size(), [&](size_t j) { return fit.tangent_arc(i, j, tin); });
+      const Span& chain = ta.ok && (!tl.ok || ta.end > tl.end) ? ta : tl;
+      if (chain.ok && kChainRestart * double(chain.end - i) >= double(take.end - i)) take = chain;
+    }
+    const FitMove& m = take.move;
+    const Vec3 d = m.kind == FitKind::line      ? Vec3{m.to.x - p[i].x, m.to.y - p[i].y, 0}
+                   : m.kind == FitKind::arc_ccw ? Vec3{m.center.y - m.to.y, m.to.x - m.center.x, 0}
+                                                : Vec3{m.to.y - m.center.y, m.center.x - m.to.x, 0};
+    const double l = std::hypot(d.x, d.y);
+    tin = l > 0 ? Vec3{d.x / l, d.y / l, 0} : Vec3{};
+    out.push_back(m);
     i = take.end;
   }
   return out;
