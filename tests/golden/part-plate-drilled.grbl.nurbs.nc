@@ -9,7 +9,7 @@
 (estimated cycle time 10 min 13 s on the motion model of machine grbl [acceleration, corners, tool changes])
 (order shortest: 9 nested contours cut before what encloses them; rapids 317.3 mm in XY instead of 430.5 mm as written [113.2 mm saved])
 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03637 mm grid)
-(pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.002 mm at 56.09, 28.21, asked r + stock 3)
+(pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.002 mm at 76.02, 52, asked r + stock 3)
 (pocket recess: largest engagement 180 deg at 46.29, 23.96 [a full slot: 180]; no rapid through material)
 (machine grbl has no NURBS words: nurbs output cuts with arcs [G02/G03] and G01 lines)
 G21 G90 G17
@@ -190,7 +190,7 @@ Y49.596
 X69.45 Y43.634
 G2 X54.759 Y26.19 I-7.45 J-8.634
 G2 X69.028 Y43.98 I7.241 J8.81
-G2 X69.45 Y43.634 I-7.288 J-9.319
+G2 X69.45 Y43.634 I-7.408 J-9.465
 G0 Z1.
 X49.023 Y37.982
 G1 Z0. F200.
@@ -209,8 +209,8 @@ G3 X49.023 Y37.982 I-1.5 J0.
 G1 X49.007 F800.
 X49.112 Y37.565
 G2 X26.954 Y32.168 I-11.112 J-2.565
-G2 X48.818 Y38.607 I11.046 J2.833
-G2 X49.007 Y37.982 I-10.036 J-3.376
+G2 X48.961 Y38.147 I11.046 J2.832
+G2 X49.007 Y37.982 I-10.685 J-3.068
 G0 Z1.
 X24.026 Y51.987
 G1 Z0. F200.
@@ -245,12 +245,12 @@ G3 X75.987 Y51.996 I-0.996 J-0.034
 G1 X24.026
 X53.801 Y38.721
 G2 X70.285 Y31.473 I8.199 J-3.722
-G2 X53.635 Y38.33 I-8.284 J3.528
-G2 X53.801 Y38.721 I7.54 J-2.97
+G2 X55.575 Y28.693 I-8.284 J3.526
+G2 X53.801 Y38.721 I6.428 J6.308
 G1 X46.769 Y37.045
 G2 X29.283 Y32.746 I-8.769 J-2.044
-G2 X46.649 Y37.502 I8.717 J2.254
-G2 X46.769 Y37.045 I-12.663 J-3.569
+G2 X46.649 Y37.502 I8.717 J2.255
+G2 X46.769 Y37.045 I-9.188 J-2.657
 G0 Z1.
 X50.011 Y24.787
 G1 Z-2. F200.
@@ -421,7 +421,7 @@ Y49.596
 X69.45 Y43.634
 G2 X54.759 Y26.19 I-7.45 J-8.634
 G2 X69.028 Y43.98 I7.241 J8.81
-G2 X69.45 Y43.634 I-7.288 J-9.319
+G2 X69.45 Y43.634 I-7.408 J-9.465
 G0 Z1.
 X49.023 Y37.982
 G1 Z-2. F200.
@@ -440,8 +440,8 @@ G3 X49.023 Y37.982 I-1.5 J0.
 G1 X49.007 F800.
 X49.112 Y37.565
 G2 X26.954 Y32.168 I-11.112 J-2.565
-G2 X48.818 Y38.607 I11.046 J2.833
-G2 X49.007 Y37.982 I-10.036 J-3.376
+G2 X48.961 Y38.147 I11.046 J2.832
+G2 X49.007 Y37.982 I-10.685 J-3.068
 G0 Z1.
 X24.026 Y51.987
 G1 Z-2. F200.
@@ -476,12 +476,12 @@ G3 X75.987 Y51.996 I-0.996 J-0.034
 G1 X24.026
 X53.801 Y38.721
 G2 X70.285 Y31.473 I8.199 J-3.722
-G2 X53.635 Y38.33 I-8.284 J3.528
-G2 X53.801 Y38.721 I7.54 J-2.97
+G2 X55.575 Y28.693 I-8.284 J3.526
+G2 X53.801 Y38.721 I6.428 J6.308
 G1 X46.769 Y37.045
 G2 X29.283 Y32.746 I-8.769 J-2.044
-G2 X46.649 Y37.502 I8.717 J2.254
-G2 X46.769 Y37.045 I-12.663 J-3.569
+G2 X46.649 Y37.502 I8.717 J2.255
+G2 X46.769 Y37.045 I-9.188 J-2.657
 G0 Z5.
 M5
 M0 (change to tool 2, then resume)
