@@ -379,6 +379,7 @@ struct OffsetBuilder {
   std::vector<double> joint_turn;
 
   void fit_spline(std::span<const Bezier> pieces);
+  void smooth_joints(std::span<const Bezier> pieces, const std::vector<std::pair<size_t, double>>& ends);
   ArcSeg join(const Vec3& v, const Vec3& from, const Vec3& to) const;
   void offset_side();
   void round_open_ends(std::span<const Bezier> pieces);
@@ -398,14 +399,12 @@ void OffsetBuilder::fit_spline(std::span<const Bezier> pieces) {
   ao.radius_tolerance = HUGE_VAL;
   ao.tangent = opt.tangent;
   Vec3 from = flat(pieces.front().front());
-  // Where the move before A's last ended on the curve (piece, parameter).
-  size_t prev_piece = 0, end_piece = 0;
-  double prev_t = 0, end_t = 0;
+  // Where each move of A ends on the curve (piece, parameter).
+  std::vector<std::pair<size_t, double>> ends;
   const double bound = fit_arcs(pieces, ao, [&](const FitMove& f) {
     const Vec3 to = flat(f.to);
     if (to == from) return;
-    prev_piece = end_piece, prev_t = end_t;
-    end_piece = f.piece, end_t = f.t;
+    ends.emplace_back(f.piece, f.t);
     if (f.kind == FitKind::line) {
       A.push_back(ArcSeg::line(from, to));
     } else {
@@ -418,20 +417,46 @@ void OffsetBuilder::fit_spline(std::span<const Bezier> pieces) {
   res.fitted = A.size();
   if (A.empty()) return;
   if (closed) A.back().b = A.front().a;
-  // A closed chain made tangent where it closes, on the last piece's span
-  // of its last move.
-  const size_t last = pieces.size() - 1;
-  if (closed && opt.tangent && A.size() >= 2 && end_piece == last &&
-      (prev_piece == last || (prev_piece + 1 == last && prev_t >= 1))) {
-    const double t_from = prev_piece == last ? prev_t : 0.0;
-    const double closing = flatten_detail::close_tangentially(
-        A, pieces.back(), t_from, check_tolerance(opt.fit, -1, 2, control_magnitude(pieces)).budget);
-    if (closing >= 0) res.bound = std::max(res.bound, closing), res.fitted = A.size();
-  }
+  if (opt.tangent) smooth_joints(pieces, ends);
   scale = r;
   for (const auto& s : A) scale = std::max({scale, max_abs(s.a), max_abs(s.b)});
   eps = 1e-9 * scale;  // floating-point margin of the tests below
   joint_turn.assign(A.size(), 0.0);
+}
+
+// Where a tangent chain of A starts again at a small angle, and where a
+// closed curve's chain closes, on a stretch where the curve is smooth: the
+// move before the joint becomes a biarc into the next move's direction
+// (offset_close.hpp). From the last joint to the first, so that the moves
+// before a joint keep their places.
+void OffsetBuilder::smooth_joints(std::span<const Bezier> pieces, const std::vector<std::pair<size_t, double>>& ends) {
+  if (A.size() < 2 || ends.size() != A.size()) return;
+  const double budget = check_tolerance(opt.fit, -1, 2, control_magnitude(pieces)).budget;
+  // The curve is smooth at the end of move k: inside a piece, or where
+  // the piece's end direction is the next's start direction.
+  auto smooth_at = [&](size_t k) {
+    const auto [pi, t] = ends[k];
+    if (t < 1) return true;
+    const size_t next = pi + 1 < pieces.size() ? pi + 1 : 0;
+    if (pi + 1 >= pieces.size() && !closed) return false;
+    Vec3 a = derivative(pieces[pi], 1.0), b = derivative(pieces[next], 0.0);
+    const double la = std::hypot(a.x, a.y), lb = std::hypot(b.x, b.y);
+    if (!(la > 0) || !(lb > 0)) return false;
+    return std::abs(a.x * b.y - a.y * b.x) <= 1e-9 * la * lb && a.x * b.x + a.y * b.y > 0;
+  };
+  for (size_t k = A.size(); k-- > 0;) {
+    if (k + 1 == A.size() && !closed) continue;
+    const size_t next = k + 1 < A.size() ? k + 1 : 0;
+    if (!smooth_at(k)) continue;
+    const size_t pi = ends[k].first;
+    // The move's span of its piece: from the end of the one before when
+    // that is on the same piece, else from the piece's start.
+    const double t_from = k > 0 && ends[k - 1].first == pi ? ends[k - 1].second : 0.0;
+    if (k > 0 && ends[k - 1].first != pi && !(ends[k - 1].first + 1 == pi && ends[k - 1].second >= 1)) continue;
+    const double closing =
+        flatten_detail::smooth_joint(A, k, A[next].tangent(0), pieces[pi], t_from, ends[k].second, budget);
+    if (closing >= 0) res.bound = std::max(res.bound, closing), res.fitted = A.size();
+  }
 }
 
 // The arc of radius r about v from `from` to `to` (both r from v).

@@ -58,18 +58,19 @@ ArcSeg to_seg(const Arc& a) {
 
 }  // namespace
 
-double close_tangentially(std::vector<ArcSeg>& A, const Bezier& last_piece, double t_from, double budget) {
-  if (A.size() < 2 || !(t_from < 1)) return -1;
-  const ArcSeg& last = A.back();
-  const Vec3 p0 = last.a, p1 = A.front().a, u0 = last.tangent(0), u1 = A.front().tangent(0);
-  const Vec3 end = last.tangent(1);
+double smooth_joint(std::vector<ArcSeg>& A, size_t k, const Vec3& next_dir, const Bezier& piece, double t_from,
+                    double t_to, double budget) {
+  if (k >= A.size() || !(t_from < t_to)) return -1;
+  const ArcSeg& seg = A[k];
+  const Vec3 p0 = seg.a, p1 = seg.b, u0 = seg.tangent(0), u1 = next_dir;
+  const Vec3 end = seg.tangent(1);
   const double turn = std::atan2(std::abs(cross_xy(end, u1)), dot_xy(end, u1));
   if (!(turn > 1e-12) || turn > kCloseCorner) return -1;
   // The biarc whose two tangent legs are equally long (d): its arcs meet
   // at j, tangent to each other there.
   const Vec3 v = p1 - p0, t = u0 + u1;
-  const double vt = dot_xy(v, t), vv = dot_xy(v, v), k = 2 * (1 - dot_xy(u0, u1));
-  const double d = k > 1e-12 ? (-vt + std::sqrt(vt * vt + k * vv)) / k : vv / (4 * dot_xy(v, u1));
+  const double vt = dot_xy(v, t), vv = dot_xy(v, v), c = 2 * (1 - dot_xy(u0, u1));
+  const double d = c > 1e-12 ? (-vt + std::sqrt(vt * vt + c * vv)) / c : vv / (4 * dot_xy(v, u1));
   if (!(d > 0) || !std::isfinite(d)) return -1;
   const Vec3 j = (p0 + u0 * d + p1 - u1 * d) * 0.5;
   const auto a1 = arc_leaving(p0, u0, j);
@@ -77,15 +78,15 @@ double close_tangentially(std::vector<ArcSeg>& A, const Bezier& last_piece, doub
   auto a2 = arc_leaving(p1, u1 * -1, j);
   if (!a1 || !a2) return -1;
   a2 = Arc{j, p1, a2->center, !a2->ccw};
-  const double tj = nearest_t(last_piece, t_from, 1, j);
-  if (!(tj > t_from) || !(tj < 1)) return -1;
-  const double dev1 = arc_span_deviation(last_piece, t_from, tj, *a1, budget);
+  const double tj = nearest_t(piece, t_from, t_to, j);
+  if (!(tj > t_from) || !(tj < t_to)) return -1;
+  const double dev1 = arc_span_deviation(piece, t_from, tj, *a1, budget);
   if (!(dev1 <= budget)) return -1;
-  const double dev2 = arc_span_deviation(last_piece, tj, 1, *a2, budget);
+  const double dev2 = arc_span_deviation(piece, tj, t_to, *a2, budget);
   if (!(dev2 <= budget)) return -1;
-  A.back() = to_seg(*a1);
-  A.push_back(to_seg(*a2));
-  A.back().b = p1;
+  A[k] = to_seg(*a1);
+  A.insert(A.begin() + static_cast<std::ptrdiff_t>(k) + 1, to_seg(*a2));
+  A[k + 1].b = p1;
   return std::max(dev1, dev2);
 }
 

@@ -27,10 +27,12 @@ const char* const kCurves[] = {
     "job-finish-pass",           "curve-nurbs-circle",         "curve-rational-quarter-circle",
     "curve-semicircle"};
 
-// A curve sample with every feed set to `feed` mm/min.
-Job sample_at(const std::string& name, double feed) {
+// A curve sample with every feed set to `feed` mm/min (and the job's keys
+// in `job` set too).
+Job sample_at(const std::string& name, double feed, const nlohmann::json& job = nlohmann::json::object()) {
   std::ifstream in(std::string(BEZCAM_SOURCE_DIR) + "/samples/" + name + ".json");
   nlohmann::json j = nlohmann::json::parse(in);
+  for (const auto& [k, v] : job.items()) j["job"][k] = v;
   auto walk = [&](auto& self, nlohmann::json& n) -> void {
     if (n.is_object()) {
       for (auto& [k, v] : n.items()) {
@@ -221,6 +223,22 @@ TEST(CruiseArcs, PartLeadsRunIntoAndOutOfThePathTangentially) {
   }
   EXPECT_GT(joints, 50u);
   EXPECT_GE(leads, 4u);  // per pass: the lead-in's arc into the path, the path into the lead-out's arc
+}
+
+TEST(CruiseArcs, PartOffsetsAreTangentWhereTheirArcChainsStartAgain) {
+  // The flange with the tolerance on both sides of its outline: the arc
+  // spline its offset is made from could not go on from its concave
+  // flanks into its lobes and started a chain again at a small angle, and
+  // the offsets crossed there at a corner of 7e-3 rad in every pass. The
+  // move before such a joint is now a biarc into the next: no joint
+  // between two arcs turns by more than LinuxCNC's limit at F6000.
+  const MachineProfile m = load_machine_profile("linuxcnc");
+  const ConvertResult r = convert_as(sample_at("part-flange", 800, {{"tolerance_side", "both"}}), m, OutputMode::arcs);
+  const Joints j = arc_joints(r.program, 0.1 * 1000 / (2 * (100 / 0.001 + 1000)));
+  EXPECT_GT(j.arc_arc, 100u);
+  EXPECT_EQ(j.arc_arc_kinked, 0u) << "of " << j.arc_arc;
+  EXPECT_LE(r.program.max_measured, r.program.max_bound);
+  EXPECT_LE(r.program.max_bound, r.program.tolerance);
 }
 
 TEST(CruiseArcs, PartOffsetsCarryNoStubsBetweenTheirPieces) {
