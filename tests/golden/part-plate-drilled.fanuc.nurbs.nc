@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: part-plate-drilled.json, machine fanuc, output nurbs)
-N20 (tolerance 0.01 mm; largest deviation measured 0.005 mm, proven bound 0.005703 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.005 mm, proven bound 0.007378 mm, rounding included)
 N30 (T1: 6 mm flat end mill: recess)
 N40 (T2: 5 mm drill [drill D5 118deg flutes 30]: hole-2, hole-3, hole-4, hole-1)
 N50 (T3: 8 mm flat end mill: outline)
