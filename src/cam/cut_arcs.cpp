@@ -142,15 +142,7 @@ double append_arcs_or_lines(CutContext& c, std::span<const Bezier> pieces, std::
     return best.bound;
   }
   return fit_arcs(pieces, ao, [&](const FitMove& f) {
-    if (direction) {
-      // The direction the move ends in: along a line, square to an arc's
-      // radius at its end.
-      const Vec3 d = f.kind == FitKind::line      ? f.to - from
-                     : f.kind == FitKind::arc_ccw ? Vec3{f.center.y - f.to.y, f.to.x - f.center.x, 0}
-                                                  : Vec3{f.to.y - f.center.y, f.center.x - f.to.x, 0};
-      const double l = std::hypot(d.x, d.y);
-      *direction = l > 0 ? Vec3{d.x / l, d.y / l, 0} : Vec3{};
-    }
+    if (direction) *direction = move_tangent(from, f, false);  // the direction the move ends in
     emit(f, Plane::xy);
   });
 }

@@ -26,6 +26,7 @@
 #include <numbers>
 #include <optional>
 
+#include "bezcam/flatten/arc_fit.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "pocket_grid.hpp"
 #include "pocket_plan.hpp"
@@ -247,13 +248,8 @@ std::vector<FitMove> polyline_arcs(const std::vector<Vec3>& polyline, double tol
       const Span& chain = ta.ok && (!tl.ok || ta.end > tl.end) ? ta : tl;
       if (chain.ok && kChainRestart * double(chain.end - i) >= double(take.end - i)) take = chain;
     }
-    const FitMove& m = take.move;
-    const Vec3 d = m.kind == FitKind::line      ? Vec3{m.to.x - p[i].x, m.to.y - p[i].y, 0}
-                   : m.kind == FitKind::arc_ccw ? Vec3{m.center.y - m.to.y, m.to.x - m.center.x, 0}
-                                                : Vec3{m.to.y - m.center.y, m.center.x - m.to.x, 0};
-    const double l = std::hypot(d.x, d.y);
-    tin = l > 0 ? Vec3{d.x / l, d.y / l, 0} : Vec3{};
-    out.push_back(m);
+    tin = move_tangent(p[i], take.move, false);
+    out.push_back(take.move);
     i = take.end;
   }
   return out;

@@ -395,8 +395,8 @@ struct Found {
   Vec3 E;
 };
 
-// Whether the curve goes on from piece a into piece b without a corner
-// (their tangents within 1e-9 rad; a vanishing derivative counts as one).
+}  // namespace
+
 bool tangent_joint(const Bezier& a, const Bezier& b) {
   const Vec3 u = derivative(a, 1), v = derivative(b, 0);
   const double nu = norm2(u), nv = norm2(v);
@@ -404,8 +404,6 @@ bool tangent_joint(const Bezier& a, const Bezier& b) {
   return std::abs(cross2(u, v)) <= 1e-9 * nu * nv && dot2(u, v) > 0;
 }
 
-// The tangent of the printed move at its end (unit, in the plane), or at
-// its start (`at_start`): an arc's is square to its radius there.
 Vec3 move_tangent(const Vec3& from, const FitMove& m, bool at_start) {
   if (m.kind == FitKind::line) {
     const Vec3 d{m.to.x - from.x, m.to.y - from.y, 0};
@@ -417,6 +415,8 @@ Vec3 move_tangent(const Vec3& from, const FitMove& m, bool at_start) {
   if (!(l > 0)) return {};
   return m.kind == FitKind::arc_ccw ? Vec3{-r.y / l, r.x / l, 0} : Vec3{r.y / l, -r.x / l, 0};
 }
+
+namespace {
 
 // How far (radians) a printed start tangent may turn from the chain's for
 // an arc of radius r (or a line of length r) whose words are rounded to

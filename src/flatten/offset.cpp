@@ -433,16 +433,13 @@ void OffsetBuilder::smooth_joints(std::span<const Bezier> pieces, const std::vec
   if (A.size() < 2 || ends.size() != A.size()) return;
   const double budget = check_tolerance(opt.fit, -1, 2, control_magnitude(pieces)).budget;
   // The curve is smooth at the end of move k: inside a piece, or where
-  // the piece's end direction is the next's start direction.
+  // it goes on into the next piece (the first, where a closed one closes)
+  // without a corner.
   auto smooth_at = [&](size_t k) {
     const auto [pi, t] = ends[k];
     if (t < 1) return true;
-    const size_t next = pi + 1 < pieces.size() ? pi + 1 : 0;
-    if (pi + 1 >= pieces.size() && !closed) return false;
-    Vec3 a = derivative(pieces[pi], 1.0), b = derivative(pieces[next], 0.0);
-    const double la = std::hypot(a.x, a.y), lb = std::hypot(b.x, b.y);
-    if (!(la > 0) || !(lb > 0)) return false;
-    return std::abs(a.x * b.y - a.y * b.x) <= 1e-9 * la * lb && a.x * b.x + a.y * b.y > 0;
+    if (pi + 1 < pieces.size()) return tangent_joint(pieces[pi], pieces[pi + 1]);
+    return closed && tangent_joint(pieces[pi], pieces.front());
   };
   for (size_t k = A.size(); k-- > 0;) {
     if (k + 1 == A.size() && !closed) continue;

@@ -107,6 +107,16 @@ double fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt,
 /// Collecting wrapper around the callback core.
 ArcFitResult fit_arcs(std::span<const Bezier> pieces, const ArcFitOptions& opt);
 
+/// Whether the curve goes on from piece a into piece b without a corner
+/// (their tangents in the plane within 1e-9 rad; a vanishing derivative
+/// counts as one).
+bool tangent_joint(const Bezier& a, const Bezier& b);
+
+/// The unit direction in the plane a move printed from `from` ends in, or
+/// leaves in (`at_start`): along a line, square to an arc's radius; zero
+/// for a move of no length.
+Vec3 move_tangent(const Vec3& from, const FitMove& m, bool at_start);
+
 /// The plane for helical arcs along `pieces`: the one whose axis their
 /// control points (a hull of the curve) spread least along, so that its
 /// arcs climb least. Ties go to G17, then G18.
