@@ -11,7 +11,7 @@
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "offset_chain.hpp"
-#include "offset_close.hpp"
+#include "offset_smooth.hpp"
 
 namespace bezcam {
 
@@ -427,7 +427,7 @@ void OffsetBuilder::fit_spline(std::span<const Bezier> pieces) {
 // Where a tangent chain of A starts again at a small angle, and where a
 // closed curve's chain closes, on a stretch where the curve is smooth: the
 // move before the joint becomes a biarc into the next move's direction
-// (offset_close.hpp). From the last joint to the first, so that the moves
+// (offset_smooth.hpp). From the last joint to the first, so that the moves
 // before a joint keep their places.
 void OffsetBuilder::smooth_joints(std::span<const Bezier> pieces, const std::vector<std::pair<size_t, double>>& ends) {
   if (A.size() < 2 || ends.size() != A.size()) return;
@@ -446,13 +446,17 @@ void OffsetBuilder::smooth_joints(std::span<const Bezier> pieces, const std::vec
     const size_t next = k + 1 < A.size() ? k + 1 : 0;
     if (!smooth_at(k)) continue;
     const size_t pi = ends[k].first;
-    // The move's span of its piece: from the end of the one before when
-    // that is on the same piece, else from the piece's start.
-    const double t_from = k > 0 && ends[k - 1].first == pi ? ends[k - 1].second : 0.0;
-    if (k > 0 && ends[k - 1].first != pi && !(ends[k - 1].first + 1 == pi && ends[k - 1].second >= 1)) continue;
-    const double closing =
+    // The move's span of its piece: from where the move before ended on
+    // it, else from the piece's start (not where a piece before got no
+    // move).
+    double t_from = 0;
+    if (k > 0 && ends[k - 1].first == pi)
+      t_from = ends[k - 1].second;
+    else if (k > 0 ? !(ends[k - 1].first + 1 == pi && ends[k - 1].second >= 1) : pi != 0)
+      continue;
+    const double biarc =
         flatten_detail::smooth_joint(A, k, A[next].tangent(0), pieces[pi], t_from, ends[k].second, budget);
-    if (closing >= 0) res.bound = std::max(res.bound, closing), res.fitted = A.size();
+    if (biarc >= 0) res.bound = std::max(res.bound, biarc), res.fitted = A.size();
   }
 }
 

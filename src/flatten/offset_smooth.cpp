@@ -1,5 +1,5 @@
-// A closed arc spline made tangent where it closes (offset_close.hpp).
-#include "offset_close.hpp"
+// An arc spline made tangent where its chains start again (offset_smooth.hpp).
+#include "offset_smooth.hpp"
 
 #include <cmath>
 #include <optional>
@@ -10,8 +10,9 @@ namespace bezcam::flatten_detail {
 
 namespace {
 
-// Above this turn (radians) where A closes, the curve has a corner there.
-constexpr double kCloseCorner = 0.05;
+// A joint of A turning by more than this (radians) keeps its turn: a
+// biarc across it would bulge from the curve.
+constexpr double kMaxSmoothTurn = 0.05;
 
 double cross_xy(const Vec3& a, const Vec3& b) { return a.x * b.y - a.y * b.x; }
 double dot_xy(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y; }
@@ -65,7 +66,7 @@ double smooth_joint(std::vector<ArcSeg>& A, size_t k, const Vec3& next_dir, cons
   const Vec3 p0 = seg.a, p1 = seg.b, u0 = seg.tangent(0), u1 = next_dir;
   const Vec3 end = seg.tangent(1);
   const double turn = std::atan2(std::abs(cross_xy(end, u1)), dot_xy(end, u1));
-  if (!(turn > 1e-12) || turn > kCloseCorner) return -1;
+  if (!(turn > 1e-12) || turn > kMaxSmoothTurn) return -1;
   // The biarc whose two tangent legs are equally long (d): its arcs meet
   // at j, tangent to each other there.
   const Vec3 v = p1 - p0, t = u0 + u1;
