@@ -437,7 +437,7 @@ void PartCut::cut_stretches() {
     const std::vector<double> cuts = tab_cuts(st.s, chain_len[k]);
     leads_of(k, st);
     st.tabs = !cuts.empty();
-    st.path = chain;
+    st.whole = {chain};
     st.runs = cuts.empty() ? std::vector<std::vector<Bezier>>{chain} : split_at_lengths(chain, cuts);
     for (size_t d = 0; d < depths.size(); ++d) cut_pass(st, d);
   }
@@ -485,8 +485,7 @@ void PartCut::cut_pass(const Stretch& st, size_t d) {
   // Above the tabs the path is cut whole: split where the tabs lie, it
   // would be printed as several cuts, with pieces as short as the gap
   // between a tab's end and the path's next joint.
-  const std::vector<std::vector<Bezier>> whole{st.path};
-  const auto& runs = tabbed ? st.runs : whole;
+  const auto& runs = tabbed ? st.runs : st.whole;
   size_t last_run = runs.size();
   for (size_t run = 0; run < runs.size(); ++run)
     if (!runs[run].empty()) last_run = run;

@@ -88,11 +88,11 @@ struct PartCut {
   // ---- cutting (part_cut.cpp) ----
   /// One stretch of the path as its passes cut it.
   struct Stretch {
-    Vec3 s, e;                              // its ends
-    Vec3 ts, te;                            // the directions its leads join it in
-    std::vector<Bezier> in, out;            // its leads (none without)
-    std::vector<Bezier> path;               // the path, whole (passes above the tabs)
-    std::vector<std::vector<Bezier>> runs;  // split at the tabs: odd runs lie on a tab
+    Vec3 s, e;                               // its ends
+    Vec3 ts, te;                             // the directions its leads join it in
+    std::vector<Bezier> in, out;             // its leads (none without)
+    std::vector<std::vector<Bezier>> whole;  // the path as one run (passes above the tabs)
+    std::vector<std::vector<Bezier>> runs;   // split at the tabs: odd runs lie on a tab
     bool tabs = false;
   };
   /// Every stretch, pass after pass.
