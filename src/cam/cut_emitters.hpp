@@ -86,9 +86,11 @@ struct CutContext {
   /// ConvertOptions::memo (null: none).
   ConversionMemo* memo = nullptr;
   /// Whether the tool is at rest where the cut starts and ends, or goes on
-  /// at the feed from or into a tangent move (a part's leads and path): on
-  /// a controller whose arcs accelerate more slowly than its lines, where
-  /// append_cruise() puts arcs and how keep_faster_cut() times the cut.
+  /// at the feed from or into a tangent move (a part's leads and path):
+  /// the direction a cut that goes on starts in (incoming_direction()), and
+  /// on a controller whose arcs accelerate more slowly than its lines,
+  /// where append_cruise() puts arcs and how keep_faster_cut() times the
+  /// cut.
   CutEnds ends = {};
   /// Runs `f` now into `r.measured`, or leaves it for later.
   void measure_with(EntityReport& r, std::function<double()> f) const {
