@@ -24,8 +24,6 @@ constexpr double kTangentShare = 0.5;
 // Shortest tangent line, in rounding steps: its printed direction is good
 // to about one step over its length.
 constexpr double kTangentSteps = 100;
-// How far above the cut a candidate's plan starts its plunge (mm).
-constexpr double kPlungeDepth = 1;
 // Margin over the shortest line the controller runs at the feed.
 constexpr double kTangentMargin = 1.25;
 

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <optional>
 
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/error.hpp"
 #include "bezcam/flatten/flatten_curve.hpp"
 #include "bezcam/flatten/nesting.hpp"
@@ -15,10 +16,28 @@
 #include "cut_emitters.hpp"
 #include "pocket_memo.hpp"
 #include "pocket_plan.hpp"
+#include "speed_stretches.hpp"
 
 namespace bezcam::detail {
 
 namespace {
+
+// A pass's block at depth z, its end rounded as every move's.
+Move pass_move(const FitMove& f, double z, double feed, int decimals, int entity) {
+  const Vec3 to = quantize(Vec3{f.to.x, f.to.y, z}, decimals);
+  if (f.kind == FitKind::line) {
+    LineMove l;
+    l.to = to;
+    l.feed = feed;
+    return {l, entity};
+  }
+  ArcMove a;
+  a.to = to;
+  a.center = {f.center.x, f.center.y, to.z};
+  a.ccw = f.kind == FitKind::arc_ccw;
+  a.feed = feed;
+  return {a, entity};
+}
 
 class PocketCut {
  public:
@@ -34,7 +53,7 @@ class PocketCut {
     plan();
     fit_passes();
     plan_depths();
-    for (size_t k = 0; k < levels_.size(); ++k) cut_level(k);
+    cut_levels();
     up(safe_);
     certify();
   }
@@ -55,7 +74,10 @@ class PocketCut {
   void read_keys();
   void plan();
   void fit_passes();
+  double planned_pass_time(const std::vector<Vec3>& pass, const std::vector<FitMove>& moves) const;
   void plan_depths();
+  void cut_levels();
+  double planned_time() const;
   void cut_level(size_t k);
   struct Entry {
     bool helix = false;
@@ -110,6 +132,8 @@ class PocketCut {
   /// (0: lines), and each pass's moves in XY.
   double fit_ = 0, sag_ = 0;
   std::vector<std::vector<FitMove>> fits_;
+  /// The passes faster in lines than in arcs (fit_passes()), by index.
+  std::vector<std::pair<size_t, std::vector<FitMove>>> faster_;
   std::vector<double> levels_;
   size_t helix_fallbacks_ = 0;
   size_t first_move_ = 0;
@@ -243,6 +267,93 @@ void PocketCut::fit_passes() {
   if (fit_ <= 0) return;
   const double rtol = c_.machine.arc_tolerance_mm / mm_per_unit(c_.job.units);
   for (const PocketPass& p : plan_.passes) fits_.push_back(polyline_arcs(p.pts, fit_, c_.decimals, rtol));
+  // On a planner that gives arcs less acceleration than lines, a pass that
+  // speeds up and slows down often (an adaptive pass's tight turns) can be
+  // slower in arcs than in its own polyline's lines (the polyline itself:
+  // no farther from it than its arcs). Each pass is planned both ways on
+  // the machine's model, alone, from rest to rest; those faster in lines
+  // by more than kCruiseGain of their time are kept for cut_levels().
+  const auto& model = c_.machine.motion;
+  if (!model || !arcs_accelerate_slower(*model)) return;
+  for (size_t i = 0; i < fits_.size(); ++i) {
+    const auto& pts = plan_.passes[i].pts;
+    std::vector<FitMove> lines;
+    for (size_t j = 1; j < pts.size(); ++j)
+      if (dist_xy(pts[j], pts[j - 1]) > 0) {
+        FitMove l;
+        l.to = pts[j];
+        lines.push_back(l);
+      }
+    if (lines.size() <= fits_[i].size()) continue;  // (the fit is its lines already)
+    if (take_cruise(planned_pass_time(pts, fits_[i]), fits_[i].size(), planned_pass_time(pts, lines), lines.size()))
+      faster_.emplace_back(i, std::move(lines));
+  }
+}
+
+// The passes at every level; on a planner that gives arcs less
+// acceleration, also with the passes faster in lines cut in lines, and the
+// pocket that way when its plan saves more than kCruiseGain of the time.
+void PocketCut::cut_levels() {
+  const Vec3 pos = ms_.pos;
+  const bool known = ms_.pos_known;
+  const size_t fallbacks = helix_fallbacks_;
+  for (size_t k = 0; k < levels_.size(); ++k) cut_level(k);
+  if (faster_.empty()) return;
+  auto& moves = c_.program.moves;
+  const auto at = [&] { return moves.begin() + static_cast<std::ptrdiff_t>(first_move_); };
+  const double arcs_s = planned_time();
+  std::vector<Move> arcs(std::make_move_iterator(at()), std::make_move_iterator(moves.end()));
+  moves.erase(at(), moves.end());
+  const Vec3 arcs_pos = ms_.pos;
+  const size_t arcs_fallbacks = helix_fallbacks_;
+  ms_.pos = pos, ms_.pos_known = known, helix_fallbacks_ = fallbacks;
+  for (auto& [i, lines] : faster_) std::swap(fits_[i], lines);
+  for (size_t k = 0; k < levels_.size(); ++k) cut_level(k);
+  if (take_cruise(arcs_s, arcs.size(), planned_time(), moves.size() - first_move_)) {
+    const std::string n = "G01 for the pocket passes that are faster in lines: machine " + c_.machine.name +
+                          " gives arcs less acceleration than lines";
+    auto& notes = c_.program.notes;
+    if (std::find(notes.begin(), notes.end(), n) == notes.end()) notes.push_back(n);
+    return;
+  }
+  moves.erase(at(), moves.end());
+  moves.insert(moves.end(), std::make_move_iterator(arcs.begin()), std::make_move_iterator(arcs.end()));
+  ms_.pos = arcs_pos, ms_.pos_known = true, helix_fallbacks_ = arcs_fallbacks;
+}
+
+// The planned time (machine.motion) of the pocket's moves so far.
+double PocketCut::planned_time() const {
+  Program p;
+  p.units = c_.program.units;
+  const auto& m = c_.program.moves;
+  p.moves.assign(m.begin() + static_cast<std::ptrdiff_t>(first_move_), m.end());
+  return plan_motion(program_timeline(p), *c_.machine.motion, PlanDetail::summary).cycle_time_s;
+}
+
+// The planned time (machine.motion) of a pass's moves at the feed, from
+// rest at its start to rest at its end (a plunge before, a retract after).
+double PocketCut::planned_pass_time(const std::vector<Vec3>& pass, const std::vector<FitMove>& moves) const {
+  Program p;
+  p.units = c_.program.units;
+  const int e = entity();
+  const double z = 0, above = kPlungeDepth / mm_per_unit(c_.program.units);
+  RapidMove over;
+  over.to = Vec3{pass.front().x, pass.front().y, above};
+  p.moves.push_back({over, e});
+  LineMove down;
+  down.to = Vec3{pass.front().x, pass.front().y, z};
+  down.feed = cp_.plunge_feed > 0 ? cp_.plunge_feed : cp_.feed;
+  p.moves.push_back({down, e});
+  const size_t own = p.moves.size();
+  for (const FitMove& f : moves) p.moves.push_back(pass_move(f, z, cp_.feed, c_.decimals, e));
+  const Vec3 end = moves.empty() ? down.to : Vec3{moves.back().to.x, moves.back().to.y, z};
+  RapidMove up;
+  up.to = Vec3{end.x, end.y, above};
+  p.moves.push_back({up, e});
+  const MotionPlan plan = plan_motion(program_timeline(p), *c_.machine.motion, PlanDetail::full);
+  double t = 0;
+  for (size_t i = own; i + 1 < plan.blocks.size(); ++i) t += plan.blocks[i].time_s;
+  return t;
 }
 
 void PocketCut::plan_depths() {
@@ -288,17 +399,8 @@ void PocketCut::cut_level(size_t k) {
       continue;
     }
     for (const FitMove& f : fits_[i]) {
-      if (f.kind == FitKind::line) {
-        line({f.to.x, f.to.y, z}, cp_.feed);
-        continue;
-      }
-      ArcMove a;
-      a.to = quantize(Vec3{f.to.x, f.to.y, z}, c_.decimals);
-      a.center = {f.center.x, f.center.y, a.to.z};
-      a.ccw = f.kind == FitKind::arc_ccw;
-      a.feed = cp_.feed;
-      c_.program.moves.push_back({a, entity()});
-      ms_.pos = a.to;
+      c_.program.moves.push_back(pass_move(f, z, cp_.feed, c_.decimals, entity()));
+      ms_.pos = motion_of(c_.program.moves.back())->to;
     }
   }
 }

@@ -17,6 +17,8 @@ inline constexpr double kSamePlannedTime = 1e-6;
 /// The share of a cut's planned time that lines where the tool changes
 /// speed must save before they replace arcs or exact blocks all along.
 inline constexpr double kCruiseGain = 0.005;
+/// How far above the cut a candidate's plan starts its plunge (mm).
+inline constexpr double kPlungeDepth = 1;
 
 /// Whether the cut with lines where the tool changes speed (planned time
 /// `cruise`, `cruise_blocks`) replaces the one with arcs or exact blocks

@@ -11,6 +11,7 @@
 
 #include "bezcam/cam/pocket_check.hpp"
 #include "bezcam/cam/program.hpp"
+#include "bezcam/cam/program_motion.hpp"
 #include "bezcam/flatten/tolerance.hpp"
 #include "bezcam/job/job_json.hpp"
 #include "cam/pocket_plan.hpp"
@@ -250,6 +251,48 @@ TEST(PocketArcs, ArcsOutputCutsThePocketInArcsWithTheSameCertificate) {
       EXPECT_EQ(c->rapids_in_material, 0u);
     }
   }
+}
+
+// The plate cleared by adaptive passes at `feed` (the plunges at a sixth).
+Program adaptive_plate(const std::string& output, double feed) {
+  using namespace test::shapes;
+  const std::string json =
+      R"({"bezcam":1,"tolerance":0.01,"job":{"feed":)" + num(feed) + R"(,"plunge_feed":)" + num(feed / 6) +
+      R"(,"safe_z":5,"top_z":0,"clearance":1,"cut_z":-3,"tool_diameter":6,"operation":"pocket","region":"p",)"
+      R"("pattern":"adaptive","load":1},"entities":[)" +
+      polygon({{0, 0}, {60, 0}, {60, 40}, {0, 40}}) + "," + circle(18, 20, 6) + "," + circle(42, 20, 6) + "]}";
+  ConvertOptions o;
+  o.output = parse_output_mode(output);
+  return build_program(parse_job(json, "adaptive.json"), load_machine_profile("linuxcnc"), o);
+}
+
+bool has_note(const Program& p, const std::string& part) {
+  return std::any_of(p.notes.begin(), p.notes.end(), [&](const std::string& n) { return n.find(part) != n.npos; });
+}
+
+TEST(PocketArcs, AdaptivePassesInArcsAreNoSlowerThanLinesOnLinuxCnc) {
+  // LinuxCNC gives an arc half the tangential acceleration of a line: at
+  // F6000 the adaptive passes' tight turns, where the tool slows down and
+  // speeds up, took 10 % longer in arcs than in lines. The passes faster
+  // in lines are cut in lines.
+  const auto model = *load_machine_profile("linuxcnc").motion;
+  const Program lines = adaptive_plate("lines", 6000), arcs = adaptive_plate("arcs", 6000);
+  const double tl = plan_motion(program_timeline(lines), model, PlanDetail::summary).cycle_time_s;
+  const double ta = plan_motion(program_timeline(arcs), model, PlanDetail::summary).cycle_time_s;
+  std::cout << "F6000: lines " << tl << " s (" << lines.moves.size() << " moves), arcs " << ta << " s ("
+            << arcs.moves.size() << " moves)\n";
+  EXPECT_LE(ta, 1.01 * tl);
+  EXPECT_LT(arcs.moves.size(), lines.moves.size());
+  EXPECT_TRUE(has_note(arcs, "G01 for the pocket passes that are faster in lines"));
+  const PocketCertificate* c = nullptr;
+  for (const auto& e : arcs.entities)
+    if (e.pocket) c = &*e.pocket;
+  ASSERT_NE(c, nullptr);
+  EXPECT_TRUE(c->covered());
+  EXPECT_TRUE(c->walls_kept(3, 0, 0.01));
+  EXPECT_EQ(c->rapids_in_material, 0u);
+  // The offset rings at F600 stay arcs: lines would save nothing.
+  EXPECT_FALSE(has_note(plate("arcs", "linuxcnc"), "G01 for the pocket passes"));
 }
 
 }  // namespace
