@@ -352,6 +352,39 @@ bool Adaptive::seed(const std::vector<int>& comp, int cur, const std::vector<dou
   return false;
 }
 
+// The rings of piece `cur` grown from its settled samples, round after
+// round, until its band is empty (every sample settled or stuck).
+void Adaptive::grow(const std::vector<int>& comp, int cur, std::vector<uint8_t>& settled) {
+  for (size_t k = 0; k < g_.size(); ++k) level_[k] = settled[k] && comp[k] == cur ? settled_level(k) : 1.0f;
+  // The settled samples that may lie on the edge (the edge only moves
+  // out, onto samples just grown).
+  std::vector<size_t> near;
+  for (size_t k = 0; k < g_.size(); ++k)
+    if (comp[k] == cur && settled[k]) near.push_back(k);
+  for (int round = 0; round < 20000; ++round) {
+    double lambda = 2 * target_ / 360;
+    std::vector<size_t> grown;
+    std::vector<Chain> loops;
+    const Band b = band(settled, comp, cur, near);
+    for (int attempt = 0; attempt < 6; ++attempt, lambda *= 0.8) {
+      loops = ring(b, lambda, grown);
+      if (ring_worst(loops, target_) <= target_) break;
+    }
+    bool cut = false;
+    for (auto& l : loops) cut = take(std::move(l.pts), l.closed) || cut;
+    for (size_t k : grown) settled[k] = 1, level_[k] = settled_level(k);
+    near = b.frontier;
+    near.insert(near.end(), grown.begin(), grown.end());
+    sort_samples(near, g_.size());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (size_t k : b.cells) active_[k] = 0;
+    for (size_t k : b.frontier) active_[k] = 0;
+    if (b.cells.empty()) break;
+    if (!cut && grown.empty())
+      for (size_t k : b.cells) stuck_[k] = 1;
+  }
+}
+
 std::vector<PocketPass> Adaptive::run() {
   std::vector<int> comp(g_.size(), -1);
   std::vector<uint8_t> outside(g_.size());
@@ -388,33 +421,37 @@ std::vector<PocketPass> Adaptive::run() {
       for (size_t k = 0; k < g_.size(); ++k)
         if (comp[k] == cur && dist_xy(g_.sample(k), *pending_->helix) <= pending_->helix_r) settled[k] = 1;
     }
-    for (size_t k = 0; k < g_.size(); ++k) level_[k] = settled[k] && comp[k] == cur ? settled_level(k) : 1.0f;
-    // The settled samples that may lie on the edge (the edge only moves
-    // out, onto samples just grown).
-    std::vector<size_t> near;
-    for (size_t k = 0; k < g_.size(); ++k)
-      if (comp[k] == cur && settled[k]) near.push_back(k);
-    for (int round = 0; round < 20000; ++round) {
-      double lambda = 2 * target_ / 360;
-      std::vector<size_t> grown;
-      std::vector<Chain> loops;
-      const Band b = band(settled, comp, cur, near);
-      for (int attempt = 0; attempt < 6; ++attempt, lambda *= 0.8) {
-        loops = ring(b, lambda, grown);
-        if (ring_worst(loops, target_) <= target_) break;
+    grow(comp, cur, settled);
+    // Material the rings could not reach from where they grew (their
+    // front stuck at a gap it cannot pass within the load), deeper than
+    // the load: a helix of its own where it is deepest, and rings from
+    // there.
+    for (int again = 0; again < kAdaptiveReseeds; ++again) {
+      std::vector<uint8_t> done(g_.size());
+      std::vector<int> rest(g_.size(), -1);
+      bool left = false;
+      for (size_t k = 0; k < g_.size(); ++k) {
+        done[k] = outside[k] || settled[k];
+        if (comp[k] == cur && !settled[k]) rest[k] = cur, left = left || stuck_[k];
       }
-      bool cut = false;
-      for (auto& l : loops) cut = take(std::move(l.pts), l.closed) || cut;
-      for (size_t k : grown) settled[k] = 1, level_[k] = settled_level(k);
-      near = b.frontier;
-      near.insert(near.end(), grown.begin(), grown.end());
-      sort_samples(near, g_.size());
-      near.erase(std::unique(near.begin(), near.end()), near.end());
-      for (size_t k : b.cells) active_[k] = 0;
-      for (size_t k : b.frontier) active_[k] = 0;
-      if (b.cells.empty()) break;
-      if (!cut && grown.empty())
-        for (size_t k : b.cells) stuck_[k] = 1;
+      if (!left) break;
+      // (a sliver no deeper than the load the ring along the walls takes)
+      const std::vector<double> deep = g_.distance(done);
+      double deepest = 0;
+      for (size_t k = 0; k < g_.size(); ++k)
+        if (rest[k] == cur) deepest = std::max(deepest, deep[k]);
+      if (!(deepest > load_)) break;
+      if (pending_) {
+        pending_->pts.push_back(pending_->pts.front());
+        out_.push_back(std::move(*pending_));
+        pending_.reset();
+      }
+      if (!seed(rest, cur, deep)) break;
+      for (size_t k = 0; k < g_.size(); ++k) {
+        if (rest[k] == cur) stuck_[k] = 0;
+        if (rest[k] == cur && dist_xy(g_.sample(k), *pending_->helix) <= pending_->helix_r) settled[k] = 1;
+      }
+      grow(comp, cur, settled);
     }
   }
   // The walls: the edge of the centres' area, where anything is left.

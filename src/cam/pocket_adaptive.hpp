@@ -15,6 +15,9 @@
 namespace bezcam::detail {
 
 inline constexpr int kAdaptiveCircle = 144;  // samples round the tool's circle (2.5 degrees)
+/// Helices of its own at most, per piece, for material the rings could
+/// not reach from where they grew (Adaptive::run()).
+inline constexpr int kAdaptiveReseeds = 16;
 
 class Adaptive {
   static Vec3 mix(const Vec3& a, const Vec3& b, double t) { return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, 0}; }
@@ -209,6 +212,7 @@ class Adaptive {
   std::vector<Chain> ring(const Band& b, double lambda, std::vector<size_t>& grown) const;
   void smooth(std::vector<Vec3>& loop, bool closed) const;
   bool seed(const std::vector<int>& comp, int cur, const std::vector<double>& depth);
+  void grow(const std::vector<int>& comp, int cur, std::vector<uint8_t>& settled);
   bool take(std::vector<Vec3> loop, bool closed = true);
   void whole(std::vector<Vec3> loop);
   void closed_loop(const std::vector<Vec3>& loop);

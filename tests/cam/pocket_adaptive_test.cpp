@@ -153,6 +153,33 @@ TEST(PocketAdaptive, EachPieceIsEnteredByAHelixInsideIt) {
   EXPECT_EQ(crossings, 0);
 }
 
+TEST(PocketAdaptive, MaterialPastAGapTheRingsCannotPassGetsAHelixOfItsOwn) {
+  // A boss 7.5 mm from the long walls: the rings grown from the helix on
+  // the left stop at the gaps beside it (a ring through one would take
+  // more than the load), and the right half, out of their reach, was left
+  // to the ring along the walls: 47.5 mm^2 uncut, a full slot (180
+  // degrees). It now gets a helix and rings of its own.
+  const Program p =
+      build(R"("pattern":"adaptive","load":1)", {polygon({{0, 0}, {40, 0}, {40, 25}, {0, 25}}), circle(20, 12.5, 5)});
+  expect_adaptive(p, 3, 1);
+  // Helices: arcs going down, each about its own centre.
+  std::vector<Vec3> centres;
+  Vec3 cur;
+  for (const Move& mv : p.moves) {
+    const Motion* m = motion_of(mv);
+    if (!m) continue;
+    if (const auto* a = std::get_if<ArcMove>(&mv.what);
+        a && a->to.z < cur.z - 1e-9 &&
+        std::none_of(centres.begin(), centres.end(), [&](const Vec3& c) { return dist_xy(c, a->center) < 1e-6; }))
+      centres.push_back(a->center);
+    if (m->axes & kAxisX) cur.x = m->to.x;
+    if (m->axes & kAxisY) cur.y = m->to.y;
+    if (m->axes & kAxisZ) cur.z = m->to.z;
+  }
+  ASSERT_GE(centres.size(), 2u);
+  EXPECT_TRUE(std::any_of(centres.begin(), centres.end(), [](const Vec3& c) { return c.x > 25; }));
+}
+
 TEST(PocketRest, OnlyWhatTheLargerToolLeftIsCut) {
   const std::string rect = polygon({{0, 0}, {40, 0}, {40, 30}, {0, 30}});
   const Program full = build(R"("pattern":"offset")", {rect});
