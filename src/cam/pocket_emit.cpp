@@ -41,9 +41,21 @@ Move pass_move(const FitMove& f, double z, double feed, int decimals, int entity
 
 class PocketCut {
  public:
+  /// `lines`: the passes as lines output cuts them, whatever the output.
   PocketCut(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear,
-            const std::vector<const Entity*>& members)
-      : c_(c), ms_(ms), r_(r), safe_(safe), clear_(clear), members_(members), cp_(c.params), keys_(cp_.pocket) {}
+            const std::vector<const Entity*>& members, bool lines = false)
+      : c_(c),
+        ms_(ms),
+        r_(r),
+        safe_(safe),
+        clear_(clear),
+        members_(members),
+        cp_(c.params),
+        keys_(cp_.pocket),
+        lines_(lines) {}
+  /// Whether run() cut passes in lines that arcs output would cut in arcs
+  /// (cut_levels()).
+  bool lines_taken() const { return lines_taken_; }
 
   void run() {
     first_move_ = c_.program.moves.size();
@@ -113,7 +125,7 @@ class PocketCut {
       rapid({ms_.pos.x, ms_.pos.y, z});
   }
   int entity() const { return static_cast<int>(c_.entity.index); }
-  bool arcs_out() const { return c_.machine.arcs && c_.output != OutputMode::lines; }
+  bool arcs_out() const { return !lines_ && c_.machine.arcs && c_.output != OutputMode::lines; }
 
   CutContext& c_;
   MotionState& ms_;
@@ -122,6 +134,8 @@ class PocketCut {
   const std::vector<const Entity*>& members_;
   const CutParams& cp_;
   const PocketKeys& keys_;
+  const bool lines_;
+  bool lines_taken_ = false;
   std::string region_;
   PocketLoops walls_;
   double wall_bound_ = 0, radius_ = 0, stepover_ = 0, margin_ = 0, load_ = 0;
@@ -310,10 +324,7 @@ void PocketCut::cut_levels() {
   for (auto& [i, lines] : faster_) std::swap(fits_[i], lines);
   for (size_t k = 0; k < levels_.size(); ++k) cut_level(k);
   if (take_cruise(arcs_s, arcs.size(), planned_time(), moves.size() - first_move_)) {
-    const std::string n = "G01 for the pocket passes that are faster in lines: machine " + c_.machine.name +
-                          " gives arcs less acceleration than lines";
-    auto& notes = c_.program.notes;
-    if (std::find(notes.begin(), notes.end(), n) == notes.end()) notes.push_back(n);
+    lines_taken_ = true;
     return;
   }
   moves.erase(at(), moves.end());
@@ -589,7 +600,54 @@ void PocketCut::certify() {
 
 void emit_pocket(CutContext& c, MotionState& ms, EntityReport& r, double safe, double clear,
                  const std::vector<const Entity*>& members) {
-  PocketCut(c, ms, r, safe, clear, members).run();
+  PocketCut arcs(c, ms, r, safe, clear, members);
+  const size_t first = c.program.moves.size(), notes = c.program.notes.size(), warnings = c.program.warnings.size();
+  const EntityReport report = r;
+  const Vec3 pos = ms.pos;
+  const bool known = ms.pos_known;
+  arcs.run();
+  if (!arcs.lines_taken()) return;
+  // Some passes ran faster as lines: the arcs output's plan keeps its
+  // passes a little farther from the walls, and an adaptive plan made so
+  // can differ from lines output's and run longer. The pocket as lines
+  // output cuts it is planned too, and taken when it saves more than
+  // kCruiseGain of the time.
+  auto& p = c.program;
+  const auto tail = [&](auto& v, size_t from) {
+    using V = std::remove_reference_t<decltype(v)>;
+    V t(std::make_move_iterator(v.begin() + static_cast<std::ptrdiff_t>(from)), std::make_move_iterator(v.end()));
+    v.erase(v.begin() + static_cast<std::ptrdiff_t>(from), v.end());
+    return t;
+  };
+  auto time_of = [&](const std::vector<Move>& moves) {
+    Program q;
+    q.units = p.units;
+    q.moves = moves;
+    return plan_motion(program_timeline(q), *c.machine.motion, PlanDetail::summary).cycle_time_s;
+  };
+  std::vector<Move> arcs_moves = tail(p.moves, first);
+  std::vector<std::string> arcs_notes = tail(p.notes, notes), arcs_warnings = tail(p.warnings, warnings);
+  const EntityReport arcs_report = r;
+  const Vec3 arcs_pos = ms.pos;
+  r = report, ms.pos = pos, ms.pos_known = known;
+  PocketCut(c, ms, r, safe, clear, members, true).run();
+  std::vector<Move> lines_moves = tail(p.moves, first);
+  // (only a pocket its check finds as well cut: covered, the engagement
+  // kept, no more warnings)
+  auto sound = [](const EntityReport& e) { return e.pocket && e.pocket->covered() && e.pocket->engagement_kept(); };
+  const bool take_lines = (sound(r) || !sound(arcs_report)) && p.warnings.size() - warnings <= arcs_warnings.size() &&
+                          take_cruise(time_of(arcs_moves), arcs_moves.size(), time_of(lines_moves), lines_moves.size());
+  if (!take_lines) {
+    tail(p.notes, notes), tail(p.warnings, warnings);
+    p.notes.insert(p.notes.end(), arcs_notes.begin(), arcs_notes.end());
+    p.warnings.insert(p.warnings.end(), arcs_warnings.begin(), arcs_warnings.end());
+    r = arcs_report, ms.pos = arcs_pos, ms.pos_known = true;
+  }
+  p.moves.insert(p.moves.end(), std::make_move_iterator((take_lines ? lines_moves : arcs_moves).begin()),
+                 std::make_move_iterator((take_lines ? lines_moves : arcs_moves).end()));
+  const std::string n = "G01 for the pocket passes that are faster in lines: machine " + c.machine.name +
+                        " gives arcs less acceleration than lines";
+  if (std::find(p.notes.begin(), p.notes.end(), n) == p.notes.end()) p.notes.push_back(n);
 }
 
 }  // namespace bezcam::detail

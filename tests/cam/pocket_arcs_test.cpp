@@ -253,14 +253,18 @@ TEST(PocketArcs, ArcsOutputCutsThePocketInArcsWithTheSameCertificate) {
   }
 }
 
-// The plate cleared by adaptive passes at `feed` (the plunges at a sixth).
-Program adaptive_plate(const std::string& output, double feed) {
+// A plate cleared by adaptive passes at `feed` (the plunges at a sixth):
+// 60 x 40 round two bosses, or 40 x 25 round one.
+Program adaptive_plate(const std::string& output, double feed, bool small = false) {
   using namespace test::shapes;
+  const std::string walls =
+      small ? polygon({{0, 0}, {40, 0}, {40, 25}, {0, 25}}) + "," + circle(20, 12.5, 5)
+            : polygon({{0, 0}, {60, 0}, {60, 40}, {0, 40}}) + "," + circle(18, 20, 6) + "," + circle(42, 20, 6);
   const std::string json =
       R"({"bezcam":1,"tolerance":0.01,"job":{"feed":)" + num(feed) + R"(,"plunge_feed":)" + num(feed / 6) +
-      R"(,"safe_z":5,"top_z":0,"clearance":1,"cut_z":-3,"tool_diameter":6,"operation":"pocket","region":"p",)"
-      R"("pattern":"adaptive","load":1},"entities":[)" +
-      polygon({{0, 0}, {60, 0}, {60, 40}, {0, 40}}) + "," + circle(18, 20, 6) + "," + circle(42, 20, 6) + "]}";
+      R"(,"safe_z":5,"top_z":0,"clearance":1,"cut_z":-)" + (small ? "1" : "3") +
+      R"(,"tool_diameter":6,"operation":"pocket","region":"p","pattern":"adaptive","load":1},"entities":[)" + walls +
+      "]}";
   ConvertOptions o;
   o.output = parse_output_mode(output);
   return build_program(parse_job(json, "adaptive.json"), load_machine_profile("linuxcnc"), o);
@@ -273,24 +277,31 @@ bool has_note(const Program& p, const std::string& part) {
 TEST(PocketArcs, AdaptivePassesInArcsAreNoSlowerThanLinesOnLinuxCnc) {
   // LinuxCNC gives an arc half the tangential acceleration of a line: at
   // F6000 the adaptive passes' tight turns, where the tool slows down and
-  // speeds up, took 10 % longer in arcs than in lines. The passes faster
-  // in lines are cut in lines.
+  // speeds up, took 10 % longer in arcs than in lines on the large plate:
+  // the passes faster in lines are cut in lines. On the small one (9.7 %
+  // longer in arcs) the passes so chosen still took 1.2 % longer: the
+  // arcs output's plan keeps its passes a little farther from the walls,
+  // and its adaptive passes differ. The pocket is cut as lines output
+  // cuts it there.
   const auto model = *load_machine_profile("linuxcnc").motion;
-  const Program lines = adaptive_plate("lines", 6000), arcs = adaptive_plate("arcs", 6000);
-  const double tl = plan_motion(program_timeline(lines), model, PlanDetail::summary).cycle_time_s;
-  const double ta = plan_motion(program_timeline(arcs), model, PlanDetail::summary).cycle_time_s;
-  std::cout << "F6000: lines " << tl << " s (" << lines.moves.size() << " moves), arcs " << ta << " s ("
-            << arcs.moves.size() << " moves)\n";
-  EXPECT_LE(ta, 1.01 * tl);
-  EXPECT_LT(arcs.moves.size(), lines.moves.size());
-  EXPECT_TRUE(has_note(arcs, "G01 for the pocket passes that are faster in lines"));
-  const PocketCertificate* c = nullptr;
-  for (const auto& e : arcs.entities)
-    if (e.pocket) c = &*e.pocket;
-  ASSERT_NE(c, nullptr);
-  EXPECT_TRUE(c->covered());
-  EXPECT_TRUE(c->walls_kept(3, 0, 0.01));
-  EXPECT_EQ(c->rapids_in_material, 0u);
+  for (bool small : {false, true}) {
+    SCOPED_TRACE(small ? "40 x 25" : "60 x 40");
+    const Program lines = adaptive_plate("lines", 6000, small), arcs = adaptive_plate("arcs", 6000, small);
+    const double tl = plan_motion(program_timeline(lines), model, PlanDetail::summary).cycle_time_s;
+    const double ta = plan_motion(program_timeline(arcs), model, PlanDetail::summary).cycle_time_s;
+    std::cout << "F6000: lines " << tl << " s (" << lines.moves.size() << " moves), arcs " << ta << " s ("
+              << arcs.moves.size() << " moves)\n";
+    EXPECT_LE(ta, 1.01 * tl);
+    EXPECT_LE(arcs.moves.size(), lines.moves.size());
+    EXPECT_TRUE(has_note(arcs, "G01 for the pocket passes that are faster in lines"));
+    const PocketCertificate* c = nullptr;
+    for (const auto& e : arcs.entities)
+      if (e.pocket) c = &*e.pocket;
+    ASSERT_NE(c, nullptr);
+    EXPECT_TRUE(c->covered());
+    EXPECT_TRUE(c->walls_kept(3, 0, 0.01));
+    EXPECT_EQ(c->rapids_in_material, 0u);
+  }
   // The offset rings at F600 stay arcs: lines would save nothing.
   EXPECT_FALSE(has_note(plate("arcs", "linuxcnc"), "G01 for the pocket passes"));
 }
