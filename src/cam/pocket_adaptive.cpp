@@ -352,6 +352,14 @@ bool Adaptive::seed(const std::vector<int>& comp, int cur, const std::vector<dou
   return false;
 }
 
+// A seed's helix no ring has followed yet, as a pass of its own.
+void Adaptive::flush_pending() {
+  if (!pending_) return;
+  pending_->pts.push_back(pending_->pts.front());
+  out_.push_back(std::move(*pending_));
+  pending_.reset();
+}
+
 // The rings of piece `cur` grown from its settled samples, round after
 // round, until its band is empty (every sample settled or stuck).
 void Adaptive::grow(const std::vector<int>& comp, int cur, std::vector<uint8_t>& settled) {
@@ -441,11 +449,7 @@ std::vector<PocketPass> Adaptive::run() {
       for (size_t k = 0; k < g_.size(); ++k)
         if (rest[k] == cur) deepest = std::max(deepest, deep[k]);
       if (!(deepest > load_)) break;
-      if (pending_) {
-        pending_->pts.push_back(pending_->pts.front());
-        out_.push_back(std::move(*pending_));
-        pending_.reset();
-      }
+      flush_pending();
       if (!seed(rest, cur, deep)) break;
       for (size_t k = 0; k < g_.size(); ++k) {
         if (rest[k] == cur) stuck_[k] = 0;
@@ -465,10 +469,7 @@ std::vector<PocketPass> Adaptive::run() {
     }
     whole(std::move(dense));
   }
-  if (pending_) {
-    pending_->pts.push_back(pending_->pts.front());
-    out_.push_back(std::move(*pending_));
-  }
+  flush_pending();
   return out_;
 }
 

@@ -213,6 +213,7 @@ class Adaptive {
   void smooth(std::vector<Vec3>& loop, bool closed) const;
   bool seed(const std::vector<int>& comp, int cur, const std::vector<double>& depth);
   void grow(const std::vector<int>& comp, int cur, std::vector<uint8_t>& settled);
+  void flush_pending();
   bool take(std::vector<Vec3> loop, bool closed = true);
   void whole(std::vector<Vec3> loop);
   void closed_loop(const std::vector<Vec3>& loop);
