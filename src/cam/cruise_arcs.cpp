@@ -310,20 +310,17 @@ double planned_cut_time(const CutContext& c, std::span<const Bezier> pieces, std
 std::optional<size_t> keep_faster_cut(CutContext& c, std::span<const Bezier> pieces, size_t first, size_t plain_blocks,
                                       const std::function<std::optional<size_t>()>& make) {
   auto& moves = c.program.moves;
-  const auto at = [&] { return moves.begin() + static_cast<std::ptrdiff_t>(first); };
-  std::vector<Move> plain(std::make_move_iterator(at()), std::make_move_iterator(moves.end()));
-  moves.erase(at(), moves.end());
+  std::vector<Move> plain = split_off(moves, first);
   const std::optional<size_t> blocks = make();
-  if (blocks && take_cruise(planned_cut_time(c, pieces, plain), plain_blocks,
-                            planned_cut_time(c, pieces, {at(), moves.end()}), *blocks)) {
-    // Said once per program, in the header.
-    const std::string n = "G01 where the tool speeds up or slows down, where that is faster: machine " +
-                          c.machine.name + " gives arcs less acceleration than lines";
-    auto& notes = c.program.notes;
-    if (std::find(notes.begin(), notes.end(), n) == notes.end()) notes.push_back(n);
+  if (blocks &&
+      take_cruise(planned_cut_time(c, pieces, plain), plain_blocks,
+                  planned_cut_time(c, pieces, {moves.begin() + static_cast<std::ptrdiff_t>(first), moves.end()}),
+                  *blocks)) {
+    note_once(c.program, "G01 where the tool speeds up or slows down, where that is faster: machine " + c.machine.name +
+                             " gives arcs less acceleration than lines");
     return blocks;
   }
-  moves.erase(at(), moves.end());
+  moves.resize(first);
   moves.insert(moves.end(), std::make_move_iterator(plain.begin()), std::make_move_iterator(plain.end()));
   return std::nullopt;
 }

@@ -3,6 +3,7 @@
 // starts with the tool at the entity's first point at cutting depth and
 // appends the moves that cut the entity, filling the report's blocks,
 // measured deviation and bound.
+#include <algorithm>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -12,6 +13,7 @@
 #include <mutex>
 #include <optional>
 #include <span>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -235,6 +237,22 @@ double append_cruise(CutContext& c, std::span<const Bezier> pieces, std::vector<
 /// `make`'s (cruise_arcs.cpp).
 std::optional<size_t> keep_faster_cut(CutContext& c, std::span<const Bezier> pieces, size_t first, size_t plain_blocks,
                                       const std::function<std::optional<size_t>()>& make);
+
+/// The elements of `v` from `from` on, moved out of it (`v` keeps the
+/// ones before): a cut set aside while another is made in its place.
+template <class T>
+std::vector<T> split_off(std::vector<T>& v, size_t from) {
+  const auto at = v.begin() + static_cast<std::ptrdiff_t>(from);
+  std::vector<T> tail(std::make_move_iterator(at), std::make_move_iterator(v.end()));
+  v.erase(at, v.end());
+  return tail;
+}
+
+/// Adds `note` to the program's header notes unless it is there already
+/// (a rule said once per program).
+inline void note_once(Program& p, const std::string& note) {
+  if (std::find(p.notes.begin(), p.notes.end(), note) == p.notes.end()) p.notes.push_back(note);
+}
 
 /// A G01 to `to` (model point) at the feed, unless the tool is there
 /// already (a piece shorter than the rounding); `path` and `blocks` follow.

@@ -39,6 +39,14 @@ Move pass_move(const FitMove& f, double z, double feed, int decimals, int entity
   return {a, entity};
 }
 
+// The planned cycle time (`model`) of `moves` alone, in `units`.
+double moves_time(Units units, std::span<const Move> moves, const MotionModel& model) {
+  Program p;
+  p.units = units;
+  p.moves.assign(moves.begin(), moves.end());
+  return plan_motion(program_timeline(p), model, PlanDetail::summary).cycle_time_s;
+}
+
 class PocketCut {
  public:
   /// `lines`: the passes as lines output cuts them, whatever the output.
@@ -89,7 +97,11 @@ class PocketCut {
   double planned_pass_time(const std::vector<Vec3>& pass, const std::vector<FitMove>& moves) const;
   void plan_depths();
   void cut_levels();
-  double planned_time() const;
+  double planned_time() const {
+    const auto& m = c_.program.moves;
+    return moves_time(c_.program.units, {m.begin() + static_cast<std::ptrdiff_t>(first_move_), m.end()},
+                      *c_.machine.motion);
+  }
   void cut_level(size_t k);
   struct Entry {
     bool helix = false;
@@ -314,11 +326,10 @@ void PocketCut::cut_levels() {
   for (size_t k = 0; k < levels_.size(); ++k) cut_level(k);
   if (faster_.empty()) return;
   auto& moves = c_.program.moves;
-  const auto at = [&] { return moves.begin() + static_cast<std::ptrdiff_t>(first_move_); };
   const double arcs_s = planned_time();
-  std::vector<Move> arcs(std::make_move_iterator(at()), std::make_move_iterator(moves.end()));
-  moves.erase(at(), moves.end());
+  std::vector<Move> arcs = split_off(moves, first_move_);
   const Vec3 arcs_pos = ms_.pos;
+  const bool arcs_known = ms_.pos_known;
   const size_t arcs_fallbacks = helix_fallbacks_;
   ms_.pos = pos, ms_.pos_known = known, helix_fallbacks_ = fallbacks;
   for (auto& [i, lines] : faster_) std::swap(fits_[i], lines);
@@ -327,18 +338,9 @@ void PocketCut::cut_levels() {
     lines_taken_ = true;
     return;
   }
-  moves.erase(at(), moves.end());
+  moves.resize(first_move_);
   moves.insert(moves.end(), std::make_move_iterator(arcs.begin()), std::make_move_iterator(arcs.end()));
-  ms_.pos = arcs_pos, ms_.pos_known = true, helix_fallbacks_ = arcs_fallbacks;
-}
-
-// The planned time (machine.motion) of the pocket's moves so far.
-double PocketCut::planned_time() const {
-  Program p;
-  p.units = c_.program.units;
-  const auto& m = c_.program.moves;
-  p.moves.assign(m.begin() + static_cast<std::ptrdiff_t>(first_move_), m.end());
-  return plan_motion(program_timeline(p), *c_.machine.motion, PlanDetail::summary).cycle_time_s;
+  ms_.pos = arcs_pos, ms_.pos_known = arcs_known, helix_fallbacks_ = arcs_fallbacks;
 }
 
 // The planned time (machine.motion) of a pass's moves at the feed, from
@@ -613,41 +615,31 @@ void emit_pocket(CutContext& c, MotionState& ms, EntityReport& r, double safe, d
   // output cuts it is planned too, and taken when it saves more than
   // kCruiseGain of the time.
   auto& p = c.program;
-  const auto tail = [&](auto& v, size_t from) {
-    using V = std::remove_reference_t<decltype(v)>;
-    V t(std::make_move_iterator(v.begin() + static_cast<std::ptrdiff_t>(from)), std::make_move_iterator(v.end()));
-    v.erase(v.begin() + static_cast<std::ptrdiff_t>(from), v.end());
-    return t;
-  };
-  auto time_of = [&](const std::vector<Move>& moves) {
-    Program q;
-    q.units = p.units;
-    q.moves = moves;
-    return plan_motion(program_timeline(q), *c.machine.motion, PlanDetail::summary).cycle_time_s;
-  };
-  std::vector<Move> arcs_moves = tail(p.moves, first);
-  std::vector<std::string> arcs_notes = tail(p.notes, notes), arcs_warnings = tail(p.warnings, warnings);
+  std::vector<Move> arcs_moves = split_off(p.moves, first);
+  std::vector<std::string> arcs_notes = split_off(p.notes, notes), arcs_warnings = split_off(p.warnings, warnings);
   const EntityReport arcs_report = r;
   const Vec3 arcs_pos = ms.pos;
+  const bool arcs_known = ms.pos_known;
   r = report, ms.pos = pos, ms.pos_known = known;
   PocketCut(c, ms, r, safe, clear, members, true).run();
-  std::vector<Move> lines_moves = tail(p.moves, first);
+  std::vector<Move> lines_moves = split_off(p.moves, first);
   // (only a pocket its check finds as well cut: covered, the engagement
   // kept, no more warnings)
   auto sound = [](const EntityReport& e) { return e.pocket && e.pocket->covered() && e.pocket->engagement_kept(); };
   const bool take_lines = (sound(r) || !sound(arcs_report)) && p.warnings.size() - warnings <= arcs_warnings.size() &&
-                          take_cruise(time_of(arcs_moves), arcs_moves.size(), time_of(lines_moves), lines_moves.size());
+                          take_cruise(moves_time(p.units, arcs_moves, *c.machine.motion), arcs_moves.size(),
+                                      moves_time(p.units, lines_moves, *c.machine.motion), lines_moves.size());
   if (!take_lines) {
-    tail(p.notes, notes), tail(p.warnings, warnings);
+    p.notes.resize(notes);
+    p.warnings.resize(warnings);
     p.notes.insert(p.notes.end(), arcs_notes.begin(), arcs_notes.end());
     p.warnings.insert(p.warnings.end(), arcs_warnings.begin(), arcs_warnings.end());
-    r = arcs_report, ms.pos = arcs_pos, ms.pos_known = true;
+    r = arcs_report, ms.pos = arcs_pos, ms.pos_known = arcs_known;
   }
-  p.moves.insert(p.moves.end(), std::make_move_iterator((take_lines ? lines_moves : arcs_moves).begin()),
-                 std::make_move_iterator((take_lines ? lines_moves : arcs_moves).end()));
-  const std::string n = "G01 for the pocket passes that are faster in lines: machine " + c.machine.name +
-                        " gives arcs less acceleration than lines";
-  if (std::find(p.notes.begin(), p.notes.end(), n) == p.notes.end()) p.notes.push_back(n);
+  std::vector<Move>& kept = take_lines ? lines_moves : arcs_moves;
+  p.moves.insert(p.moves.end(), std::make_move_iterator(kept.begin()), std::make_move_iterator(kept.end()));
+  note_once(p, "G01 for the pocket passes that are faster in lines: machine " + c.machine.name +
+                   " gives arcs less acceleration than lines");
 }
 
 }  // namespace bezcam::detail
