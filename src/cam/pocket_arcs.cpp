@@ -92,6 +92,22 @@ class Fitter {
     return certify(i, j, Vec3{S.x + n.x * r, S.y + n.y * r, 0}, r > 0);
   }
 
+  // The arc from vertex i to vertex j arriving in direction d (unit): the
+  // tangent arc from j leaving in -d, run the other way.
+  Span tangent_arc_into(size_t i, size_t j, const Vec3& d) const {
+    const Vec3 S = p_[i], E = p_[j];
+    const Vec3 n{d.y, -d.x, 0}, w{S.x - E.x, S.y - E.y, 0};
+    const double wn = w.x * n.x + w.y * n.y, ww = w.x * w.x + w.y * w.y;
+    if (!(std::abs(wn) > 1e-12 * std::sqrt(ww)) || !(w.x * d.x + w.y * d.y < 0)) return {};
+    const double r = ww / (2 * wn);
+    const double R = std::abs(r);
+    if (!(R < kMaxRadius) || R < 100 * std::pow(10.0, -dec_)) return {};
+    return certify(i, j, Vec3{E.x + n.x * r, E.y + n.y * r, 0}, r < 0);
+  }
+
+  // The arc about c (its centre when printed from vertex i) to vertex j.
+  Span arc_about(size_t i, size_t j, const Vec3& c, bool ccw) const { return certify(i, j, c, ccw); }
+
   Span arc(size_t i, size_t j) const {
     Span s;
     const Vec3 S = p_[i], E = p_[j];
@@ -227,32 +243,178 @@ Span farthest(size_t i, size_t first, size_t n, F fits) {
 
 }  // namespace
 
+namespace {
+
+// Where a joint would turn, the move before it may end elsewhere so that a
+// tangent one goes on from there: a few vertices sooner (a polyline's
+// straight run taken a vertex into the round that follows, within the
+// distance yet turning there, leaves no tangent arc from its end), or at
+// the point where the two moves' supports touch (a line and the circle of
+// the arc after it, two circles), put on the polyline as a vertex of its
+// own when it falls between two.
+constexpr size_t kRetreat = 4;
+
+struct Taken {
+  Span span;
+  size_t from = 0;
+  Vec3 tin;  ///< the direction it had to leave in (zero: free)
+};
+
+// The move from t.from ending at vertex e instead, on the same terms (a
+// tangent one tangent again, a free one free), when one fits.
+Span refit(const Fitter& fit, const Taken& t, size_t e) {
+  const bool chained = t.tin.x != 0 || t.tin.y != 0;
+  Span s = t.span.move.kind == FitKind::line ? (chained ? fit.tangent_line(t.from, e, t.tin) : fit.line(t.from, e))
+                                             : (chained ? fit.tangent_arc(t.from, e, t.tin) : fit.arc(t.from, e));
+  if (s.ok && s.move.kind != t.span.move.kind) s.ok = false;
+  return s;
+}
+
+// The points where the support of `prev` (a line from a, or a circle) and
+// that of `next` touch or would, nearest the joint j first.
+std::vector<Vec3> touch_points(const Vec3& a, const FitMove& prev, const FitMove& next, const Vec3& j) {
+  std::vector<Vec3> q;
+  auto unit = [](double x, double y) {
+    const double l = std::hypot(x, y);
+    return l > 0 ? Vec3{x / l, y / l, 0} : Vec3{};
+  };
+  const bool pl = prev.kind == FitKind::line, nl = next.kind == FitKind::line;
+  if (pl && !nl) {
+    const Vec3 d = unit(prev.to.x - a.x, prev.to.y - a.y), c = next.center;
+    const double s = (c.x - a.x) * d.x + (c.y - a.y) * d.y;
+    q.push_back({a.x + d.x * s, a.y + d.y * s, 0});
+  } else if (!pl) {
+    const Vec3 c = prev.center;
+    const double R = dist_xy(prev.to, c);
+    const Vec3 w = nl ? unit(-(next.to.y - j.y), next.to.x - j.x) : unit(next.center.x - c.x, next.center.y - c.y);
+    if (w.x == 0 && w.y == 0) return q;
+    q.push_back({c.x + w.x * R, c.y + w.y * R, 0});
+    q.push_back({c.x - w.x * R, c.y - w.y * R, 0});
+  }
+  std::sort(q.begin(), q.end(), [&](const Vec3& u, const Vec3& v) { return dist_xy(u, j) < dist_xy(v, j); });
+  return q;
+}
+
+// The polyline's point nearest q on its segments from vertex lo to hi:
+// the segment's first vertex k and the point.
+std::pair<size_t, Vec3> nearest_on(const std::vector<Vec3>& p, size_t lo, size_t hi, const Vec3& q) {
+  size_t best = lo;
+  Vec3 at = p[lo];
+  double d = dist_xy(q, at);
+  for (size_t k = lo; k < hi && k + 1 < p.size(); ++k) {
+    const Vec3 &u = p[k], &v = p[k + 1];
+    const double ex = v.x - u.x, ey = v.y - u.y, ll = ex * ex + ey * ey;
+    const double t = ll > 0 ? std::clamp(((q.x - u.x) * ex + (q.y - u.y) * ey) / ll, 0.0, 1.0) : 0;
+    const Vec3 m{u.x + ex * t, u.y + ey * t, 0};
+    if (dist_xy(q, m) < d) d = dist_xy(q, m), best = k, at = m;
+  }
+  return {best, at};
+}
+
+// The tangent move from vertex i leaving in direction u that reaches
+// farthest. A line's direction is judged by its chord, surer the longer:
+// the farthest line first, then the farthest whose chord is tangent.
+Span chain_from(const Fitter& fit, size_t n, size_t i, const Vec3& u) {
+  Span tl = farthest(i, 1, n, [&](size_t j) { return fit.line(i, j); });
+  if (tl.ok) tl = fit.tangent_line(i, tl.end, u);
+  if (!tl.ok) tl = farthest(i, 1, n, [&](size_t j) { return fit.tangent_line(i, j, u); });
+  const Span ta = farthest(i, 1, n, [&](size_t j) { return fit.tangent_arc(i, j, u); });
+  return ta.ok && (!tl.ok || ta.end > tl.end) ? ta : tl;
+}
+
+// At a joint at vertex i that would turn: the move before ended where its
+// support and the free move's touch, and a tangent move from there that
+// reaches past i. The point is rounded as every vertex and, between two,
+// made a vertex of p; both moves' bounds then count its distance from the
+// segment it splits. On success prev and take are the two moves and i the
+// joint's vertex as p now numbers it.
+bool touch(const Fitter& fit, std::vector<Vec3>& p, Taken& prev, Taken& take, size_t& i, double tol, int decimals) {
+  for (const Vec3& t : touch_points(p[prev.from], prev.span.move, take.span.move, p[i])) {
+    const size_t lo = std::max(prev.from, i >= kRetreat ? i - kRetreat : 0);
+    const auto [k, at] = nearest_on(p, lo, std::min(take.span.end, i + kRetreat), t);
+    if (!(dist_xy(at, t) <= tol)) continue;
+    const Vec3 q = quantize(at, decimals);
+    size_t qi = k;
+    double eps = 0;
+    const bool inserted = dist_xy(q, p[k]) > 0 && (k + 1 >= p.size() || dist_xy(q, p[k + 1]) > 0);
+    if (inserted) {
+      eps = point_segment(q, p[k], p[k + 1]);
+      p.insert(p.begin() + static_cast<std::ptrdiff_t>(k + 1), q);
+      qi = k + 1;
+    } else if (dist_xy(q, p[k]) > 0) {
+      qi = k + 1;
+    }
+    const size_t ii = inserted && qi <= i ? i + 1 : i, end = inserted ? take.span.end + 1 : take.span.end;
+    if (qi > prev.from && qi != ii) {
+      const FitMove& m = prev.span.move;
+      Span before;
+      if (m.kind != FitKind::line && take.span.move.kind == FitKind::line && prev.tin.x == 0 && prev.tin.y == 0) {
+        const Vec3& e = p[end];
+        const double l = dist_xy(e, q);
+        if (l > 0) before = fit.tangent_arc_into(prev.from, qi, Vec3{(e.x - q.x) / l, (e.y - q.y) / l, 0});
+      }
+      if (!before.ok && m.kind != FitKind::line)
+        before = fit.arc_about(prev.from, qi, m.center, m.kind == FitKind::arc_ccw);
+      if (!before.ok) before = refit(fit, prev, qi);
+      const Vec3 u = before.ok ? move_tangent(p[prev.from], before.move, false) : Vec3{};
+      Span chain = before.ok ? chain_from(fit, p.size(), qi, u) : Span{};
+      if (chain.ok && chain.end > ii && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
+          before.move.bound + eps <= tol && chain.move.bound + eps <= tol) {
+        before.move.bound += eps, chain.move.bound += eps;
+        prev.span = before;
+        take = {chain, qi, u};
+        i = ii;
+        return true;
+      }
+    }
+    if (inserted) p.erase(p.begin() + static_cast<std::ptrdiff_t>(qi));
+  }
+  return false;
+}
+
+}  // namespace
+
 std::vector<FitMove> polyline_arcs(const std::vector<Vec3>& polyline, double tol, int decimals, double radius_tol) {
   std::vector<Vec3> p;
   for (const Vec3& v : polyline)
     if (p.empty() || dist_xy(p.back(), v) > 0) p.push_back({v.x, v.y, 0});
-  std::vector<FitMove> out;
+  std::vector<Taken> out;
   const Fitter fit(p, tol, decimals, radius_tol);
   Vec3 tin;  // the direction the last move ends in (zero: none)
   for (size_t i = 0; i + 1 < p.size();) {
     const Span ln = farthest(i, 1, p.size(), [&](size_t j) { return fit.line(i, j); });
     const Span ar = farthest(i, 2, p.size(), [&](size_t j) { return fit.arc(i, j); });
-    Span take = ar.ok && ar.end > ln.end ? ar : ln;
+    Taken take{ar.ok && ar.end > ln.end ? ar : ln, i, Vec3{}};
     // In a tangent chain: each move leaves in the direction the one
     // before ends in, so that a controller's planner runs through the
     // joint, unless a free move reaches much farther (one joint at an
     // angle).
+    bool tangent = false;
     if (tin.x != 0 || tin.y != 0) {
-      const Span tl = farthest(i, 1, p.size(), [&](size_t j) { return fit.tangent_line(i, j, tin); });
-      const Span ta = farthest(i, 1, p.size(), [&](size_t j) { return fit.tangent_arc(i, j, tin); });
-      const Span& chain = ta.ok && (!tl.ok || ta.end > tl.end) ? ta : tl;
-      if (chain.ok && kChainRestart * double(chain.end - i) >= double(take.end - i)) take = chain;
+      const Span chain = chain_from(fit, p.size(), i, tin);
+      if (chain.ok && kChainRestart * double(chain.end - i) >= double(take.span.end - i))
+        take = {chain, i, tin}, tangent = true;
     }
-    tin = move_tangent(p[i], take.move, false);
-    out.push_back(take.move);
-    i = take.end;
+    // Else the move before, ended sooner, and a tangent move from there.
+    for (size_t e = i - 1; !tangent && !out.empty() && e > out.back().from && i - e <= kRetreat; --e) {
+      const Span before = refit(fit, out.back(), e);
+      if (!before.ok) continue;
+      const Vec3 u = move_tangent(p[out.back().from], before.move, false);
+      const Span chain = chain_from(fit, p.size(), e, u);
+      if (!chain.ok || chain.end <= i || kChainRestart * double(chain.end - e) < double(take.span.end - e)) continue;
+      out.back().span = before;
+      take = {chain, e, u}, tangent = true;
+    }
+    if (!tangent && !out.empty() && (tin.x != 0 || tin.y != 0))
+      tangent = touch(fit, p, out.back(), take, i, tol, decimals);
+    tin = move_tangent(p[take.from], take.span.move, false);
+    out.push_back(take);
+    i = take.span.end;
   }
-  return out;
+  std::vector<FitMove> moves;
+  moves.reserve(out.size());
+  for (const Taken& t : out) moves.push_back(t.span.move);
+  return moves;
 }
 
 }  // namespace bezcam::detail

@@ -153,6 +153,28 @@ TEST(CruiseArcs, EveryArcJointIsTangentAsLinuxCncJudgesIt) {
   EXPECT_EQ(all.arc_arc_kinked, 0u) << "of " << all.arc_arc;
 }
 
+TEST(CruiseArcs, PocketPassesAreTangentChainsWhereTheirPolylineRounds) {
+  // A pocket pass's polyline is an offset of the walls' chords: its
+  // straight runs end a little before or after the round that follows, so
+  // an arc from a vertex turned there by up to 0.04 rad (the offset plate:
+  // 14 joints). The joints are made where the moves' supports touch. What
+  // may stay: a ring's first block, which starts free on a straight run
+  // (once per level).
+  const double kink = 0.1 * 1000 / (2 * (100 / 0.001 + 1000));
+  const MachineProfile m = load_machine_profile("linuxcnc");
+  for (const auto& [name, most] : {std::pair{"part-plate", 2u}, std::pair{"part-plate-drilled", 2u}}) {
+    SCOPED_TRACE(name);
+    const ConvertResult r = convert_as(sample_at(name, 6000), m, OutputMode::arcs);
+    const Joints j = arc_joints(r.program, kink);
+    std::cout << "[ joints   ] " << name << " in arcs at F6000: " << j.line_arc + j.arc_arc << " joints, "
+              << j.line_arc_kinked + j.arc_arc_kinked << " kinked\n";
+    EXPECT_GT(j.line_arc + j.arc_arc, 100u);
+    EXPECT_LE(j.line_arc_kinked + j.arc_arc_kinked, most);
+    EXPECT_LE(r.program.max_measured, r.program.max_bound);
+    EXPECT_LE(r.program.max_bound, r.program.tolerance);
+  }
+}
+
 TEST(CruiseArcs, LinesWhereTheToolSpeedsUpAndSlowsDownArcsBetween) {
   // The circle of radius 40 at F6000: the tool needs 5 mm to reach the
   // feed at 1000 mm/s^2, where LinuxCNC gives an arc of this radius 72 %
