@@ -11,7 +11,7 @@ N80 (T3 plunge feed 200 mm/min)
 N90 (estimated cycle time 10 min 00 s on the motion model of machine fanuc [acceleration, corners, tool changes])
 N100 (order shortest: 9 nested contours cut before what encloses them; rapids 317.3 mm in XY instead of 430.5 mm as written [113.2 mm saved])
 N110 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03637 mm grid)
-N120 (pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.002 mm at 76.02, 52, asked r + stock 3)
+N120 (pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.002 mm at 53.22, 33.02, asked r + stock 3)
 N130 (pocket recess: largest engagement 180 deg at 46.29, 23.96 [a full slot: 180]; no rapid through material)
 N140 G21 G90 G17
 N150 G40 G49 G80 G94
@@ -237,13 +237,13 @@ N2340 G03 X24.026 Y51.987 Z-2. I0. J0.75
 N2350 G03 X24.026 Y50.487 I0. J-0.75
 N2360 G03 X24.026 Y51.987 I0. J0.75
 N2370 G01 Y51.996 F800.
-N2380 G03 X23.004 Y50.985 I-0.024 J-0.998
-N2390 G01 X23.005 Y18.966
-N2400 G03 X24.015 Y18.004 I0.996 J0.034
-N2410 G01 X76.034 Y18.005
-N2420 G03 X76.996 Y19.015 I-0.034 J0.996
-N2430 G01 X76.995 Y51.034
-N2440 G03 X75.987 Y51.996 I-0.996 J-0.034
+N2380 G03 X23.004 Y50.998 I-0.024 J-0.998
+N2390 G01 Y19.
+N2400 G03 X24. Y18.004 I0.996 J0.
+N2410 G01 X76.
+N2420 G03 X76.996 Y19. I0. J0.996
+N2430 G01 Y51.
+N2440 G03 X76. Y51.996 I-0.996 J0.
 N2450 G01 X24.026
 N2460 X53.801 Y38.721
 N2470 G02 X70.285 Y31.473 I8.199 J-3.722
@@ -468,13 +468,13 @@ N4650 G03 X24.026 Y51.987 Z-4. I0. J0.75
 N4660 G03 X24.026 Y50.487 I0. J-0.75
 N4670 G03 X24.026 Y51.987 I0. J0.75
 N4680 G01 Y51.996 F800.
-N4690 G03 X23.004 Y50.985 I-0.024 J-0.998
-N4700 G01 X23.005 Y18.966
-N4710 G03 X24.015 Y18.004 I0.996 J0.034
-N4720 G01 X76.034 Y18.005
-N4730 G03 X76.996 Y19.015 I-0.034 J0.996
-N4740 G01 X76.995 Y51.034
-N4750 G03 X75.987 Y51.996 I-0.996 J-0.034
+N4690 G03 X23.004 Y50.998 I-0.024 J-0.998
+N4700 G01 Y19.
+N4710 G03 X24. Y18.004 I0.996 J0.
+N4720 G01 X76.
+N4730 G03 X76.996 Y19. I0. J0.996
+N4740 G01 Y51.
+N4750 G03 X76. Y51.996 I-0.996 J0.
 N4760 G01 X24.026
 N4770 X53.801 Y38.721
 N4780 G02 X70.285 Y31.473 I8.199 J-3.722

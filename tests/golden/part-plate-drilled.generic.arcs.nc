@@ -10,7 +10,7 @@
 (estimated cycle time 10 min 05 s on the motion model of machine generic [acceleration, corners, tool changes])
 (order shortest: 9 nested contours cut before what encloses them; rapids 317.3 mm in XY instead of 430.5 mm as written [113.2 mm saved])
 (pocket recess: uncut 0 mm^2 at the worst level, limit 2.685 = tolerance x perimeter; checked on a 0.03637 mm grid)
-(pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.002 mm at 76.02, 52, asked r + stock 3)
+(pocket recess: unreachable 0 mm^2 in 0 places; nearest approach to a wall 3.002 mm at 53.22, 33.02, asked r + stock 3)
 (pocket recess: largest engagement 180 deg at 46.29, 23.96 [a full slot: 180]; no rapid through material)
 G21 G90 G17
 G40 G49 G80 G94
@@ -233,13 +233,13 @@ G03 X24.026 Y51.987 Z-2. I0. J0.75
 G03 X24.026 Y50.487 I0. J-0.75
 G03 X24.026 Y51.987 I0. J0.75
 G01 Y51.996 F800.
-G03 X23.004 Y50.985 I-0.024 J-0.998
-G01 X23.005 Y18.966
-G03 X24.015 Y18.004 I0.996 J0.034
-G01 X76.034 Y18.005
-G03 X76.996 Y19.015 I-0.034 J0.996
-G01 X76.995 Y51.034
-G03 X75.987 Y51.996 I-0.996 J-0.034
+G03 X23.004 Y50.998 I-0.024 J-0.998
+G01 Y19.
+G03 X24. Y18.004 I0.996 J0.
+G01 X76.
+G03 X76.996 Y19. I0. J0.996
+G01 Y51.
+G03 X76. Y51.996 I-0.996 J0.
 G01 X24.026
 X53.801 Y38.721
 G02 X70.285 Y31.473 I8.199 J-3.722
@@ -464,13 +464,13 @@ G03 X24.026 Y51.987 Z-4. I0. J0.75
 G03 X24.026 Y50.487 I0. J-0.75
 G03 X24.026 Y51.987 I0. J0.75
 G01 Y51.996 F800.
-G03 X23.004 Y50.985 I-0.024 J-0.998
-G01 X23.005 Y18.966
-G03 X24.015 Y18.004 I0.996 J0.034
-G01 X76.034 Y18.005
-G03 X76.996 Y19.015 I-0.034 J0.996
-G01 X76.995 Y51.034
-G03 X75.987 Y51.996 I-0.996 J-0.034
+G03 X23.004 Y50.998 I-0.024 J-0.998
+G01 Y19.
+G03 X24. Y18.004 I0.996 J0.
+G01 X76.
+G03 X76.996 Y19. I0. J0.996
+G01 Y51.
+G03 X76. Y51.996 I-0.996 J0.
 G01 X24.026
 X53.801 Y38.721
 G02 X70.285 Y31.473 I8.199 J-3.722
