@@ -322,52 +322,80 @@ Span chain_from(const Fitter& fit, size_t n, size_t i, const Vec3& u) {
   return ta.ok && (!tl.ok || ta.end > tl.end) ? ta : tl;
 }
 
+// Where a joint may be put near point c: a vertex of p from lo to hi
+// (index k, eps 0), or c rounded (q) between vertices k and k + 1, with
+// its distance eps from that segment. Made a vertex there, it leaves the
+// polyline within eps of what it was, both ways, when it projects inside
+// the segment (each side of the projection is within eps of the
+// triangle's side through q: distance to a segment is convex).
+struct JointSpot {
+  size_t k = 0;
+  Vec3 q;
+  double eps = 0;
+  bool vertex = true;
+};
+
+std::optional<JointSpot> place_near(const std::vector<Vec3>& p, size_t lo, size_t hi, const Vec3& c, int decimals) {
+  const auto [k, at] = nearest_on(p, lo, hi, c);
+  JointSpot pl{k, quantize(Vec3{c.x, c.y, 0}, decimals), 0, true};
+  if (dist_xy(pl.q, p[k]) == 0) return pl;
+  if (k + 1 < p.size() && dist_xy(pl.q, p[k + 1]) == 0) return pl.k = k + 1, pl;
+  if (k + 1 >= p.size()) return std::nullopt;
+  const Vec3 &u = p[k], &v = p[k + 1];
+  const double ex = v.x - u.x, ey = v.y - u.y, ll = ex * ex + ey * ey;
+  const double t = ll > 0 ? ((pl.q.x - u.x) * ex + (pl.q.y - u.y) * ey) / ll : -1;
+  if (!(t > 0 && t < 1)) return std::nullopt;
+  pl.eps = point_segment(pl.q, u, v);
+  pl.vertex = false;
+  return pl;
+}
+
 // At a joint at vertex i that would turn: the move before ended where its
 // support and the free move's touch, and a tangent move from there that
-// reaches past i. The point is rounded as every vertex and, between two,
-// made a vertex of p; both moves' bounds then count its distance from the
-// segment it splits. On success prev and take are the two moves and i the
-// joint's vertex as p now numbers it.
+// reaches past i. The joint is the touch point itself (rounded) when it
+// lies within half the distance of the polyline, else the polyline's point
+// nearest it; between two vertices it is made a vertex of p, and both
+// moves' bounds count its distance eps from the segment it splits. On
+// success prev and take are the two moves and i the joint's vertex as p
+// now numbers it.
 bool touch(const Fitter& fit, std::vector<Vec3>& p, Taken& prev, Taken& take, size_t& i, double tol, int decimals) {
+  const size_t lo = std::max(prev.from, i >= kRetreat ? i - kRetreat : 0);
+  const size_t hi = std::min(take.span.end, i + kRetreat);
   for (const Vec3& t : touch_points(p[prev.from], prev.span.move, take.span.move, p[i])) {
-    const size_t lo = std::max(prev.from, i >= kRetreat ? i - kRetreat : 0);
-    const auto [k, at] = nearest_on(p, lo, std::min(take.span.end, i + kRetreat), t);
+    const Vec3 at = nearest_on(p, lo, hi, t).second;
     if (!(dist_xy(at, t) <= tol)) continue;
-    const Vec3 q = quantize(at, decimals);
-    size_t qi = k;
-    double eps = 0;
-    const bool inserted = dist_xy(q, p[k]) > 0 && (k + 1 >= p.size() || dist_xy(q, p[k + 1]) > 0);
-    if (inserted) {
-      eps = point_segment(q, p[k], p[k + 1]);
-      p.insert(p.begin() + static_cast<std::ptrdiff_t>(k + 1), q);
-      qi = k + 1;
-    } else if (dist_xy(q, p[k]) > 0) {
-      qi = k + 1;
-    }
-    const size_t ii = inserted && qi <= i ? i + 1 : i, end = inserted ? take.span.end + 1 : take.span.end;
-    if (qi > prev.from && qi != ii) {
-      const FitMove& m = prev.span.move;
-      Span before;
-      if (m.kind != FitKind::line && take.span.move.kind == FitKind::line && prev.tin.x == 0 && prev.tin.y == 0) {
-        const Vec3& e = p[end];
-        const double l = dist_xy(e, q);
-        if (l > 0) before = fit.tangent_arc_into(prev.from, qi, Vec3{(e.x - q.x) / l, (e.y - q.y) / l, 0});
+    for (const Vec3& c : {t, at}) {
+      const std::optional<JointSpot> pl = place_near(p, lo, hi, c, decimals);
+      if (!pl || !(pl->eps <= tol / 2)) continue;
+      const size_t qi = pl->vertex ? pl->k : pl->k + 1;
+      const double eps = pl->eps;
+      if (!pl->vertex) p.insert(p.begin() + static_cast<std::ptrdiff_t>(qi), pl->q);
+      const size_t ii = !pl->vertex && qi <= i ? i + 1 : i, end = pl->vertex ? take.span.end : take.span.end + 1;
+      if (qi > prev.from && qi != ii) {
+        const FitMove& m = prev.span.move;
+        const Vec3& q = p[qi];
+        Span before;
+        if (m.kind != FitKind::line && take.span.move.kind == FitKind::line && prev.tin.x == 0 && prev.tin.y == 0) {
+          const Vec3& e = p[end];
+          const double l = dist_xy(e, q);
+          if (l > 0) before = fit.tangent_arc_into(prev.from, qi, Vec3{(e.x - q.x) / l, (e.y - q.y) / l, 0});
+        }
+        if (!before.ok && m.kind != FitKind::line)
+          before = fit.arc_about(prev.from, qi, m.center, m.kind == FitKind::arc_ccw);
+        if (!before.ok) before = refit(fit, prev, qi);
+        const Vec3 u = before.ok ? move_tangent(p[prev.from], before.move, false) : Vec3{};
+        Span chain = before.ok ? chain_from(fit, p.size(), qi, u) : Span{};
+        if (chain.ok && chain.end > ii && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
+            before.move.bound + eps <= tol && chain.move.bound + eps <= tol) {
+          before.move.bound += eps, chain.move.bound += eps;
+          prev.span = before;
+          take = {chain, qi, u};
+          i = ii;
+          return true;
+        }
       }
-      if (!before.ok && m.kind != FitKind::line)
-        before = fit.arc_about(prev.from, qi, m.center, m.kind == FitKind::arc_ccw);
-      if (!before.ok) before = refit(fit, prev, qi);
-      const Vec3 u = before.ok ? move_tangent(p[prev.from], before.move, false) : Vec3{};
-      Span chain = before.ok ? chain_from(fit, p.size(), qi, u) : Span{};
-      if (chain.ok && chain.end > ii && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
-          before.move.bound + eps <= tol && chain.move.bound + eps <= tol) {
-        before.move.bound += eps, chain.move.bound += eps;
-        prev.span = before;
-        take = {chain, qi, u};
-        i = ii;
-        return true;
-      }
+      if (!pl->vertex) p.erase(p.begin() + static_cast<std::ptrdiff_t>(qi));
     }
-    if (inserted) p.erase(p.begin() + static_cast<std::ptrdiff_t>(qi));
   }
   return false;
 }

@@ -51,12 +51,17 @@ std::vector<Vec3> drawn(const Vec3& from, const FitMove& m, int n) {
 // Each block against the stretch of polyline it replaces, both ways, by
 // sampling; returns the largest reading and checks it against each bound.
 // A block ends at a vertex or, where the fitter made a joint a vertex of
-// its own, within a rounding of a segment (`decimals`): the stretch then ends at the
-// segment's nearest point, and the next starts there.
+// its own, within half the bound and a rounding (`decimals`) of a segment,
+// beside it: the stretch then ends at the segment's nearest point, and the
+// next starts there.
 double check_blocks(const std::vector<Vec3>& poly, const std::vector<FitMove>& moves, double tol, int decimals) {
   double worst = 0;
   size_t at = 0;
   Vec3 from = poly.front(), head = poly.front();  // the block's start, and the stretch's
+  auto inside = [](const Vec3& p, const Vec3& a, const Vec3& b) {
+    const double dx = b.x - a.x, dy = b.y - a.y, t = (p.x - a.x) * dx + (p.y - a.y) * dy;
+    return t > 0 && t < dx * dx + dy * dy;
+  };
   auto nearest = [](const Vec3& p, const Vec3& a, const Vec3& b) {
     const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
     const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
@@ -72,8 +77,8 @@ double check_blocks(const std::vector<Vec3>& poly, const std::vector<FitMove>& m
     for (size_t k = at; k + 1 < poly.size() && !found; ++k) {
       if (poly[k + 1].x == m.to.x && poly[k + 1].y == m.to.y) {
         end = k + 1, tail = poly[k + 1], found = true;
-      } else if (seg_dist(m.to, poly[k], poly[k + 1]) < 0.75 * std::pow(10.0, -decimals) &&
-                 (k > at || std::hypot(m.to.x - head.x, m.to.y - head.y) > 0)) {
+      } else if (seg_dist(m.to, poly[k], poly[k + 1]) <= tol / 2 + 0.75 * std::pow(10.0, -decimals) &&
+                 inside(m.to, poly[k], poly[k + 1]) && (k > at || std::hypot(m.to.x - head.x, m.to.y - head.y) > 0)) {
         end = k, tail = nearest(m.to, poly[k], poly[k + 1]), found = true;
       } else {
         stretch.push_back(poly[k + 1]);
