@@ -31,7 +31,10 @@ namespace {
 // chords of sagitta H, and they end where the running integral reaches
 // equal shares of the whole. H is kSpreadAim of the longest sagitta the
 // band allows with both ends shifted (longest_sagitta()) under the worst
-// rounding; a chord with an end on the curve (the piece's first and last)
+// rounding (aimed a little low: a chord planned closer to the limit often
+// needs the exact proof, the hull test reading a few per cent high, or
+// does not fit and is planned again, which costs more than the few more
+// chords; docs/flattening.md); a chord with an end on the curve (the piece's first and last)
 // has less room and is planned shorter. Near an inflection, where f
 // vanishes and a chord's gap grows like the cube of its step, the cubic
 // term's density takes over. The integral is taken by the trapezoid rule,
@@ -46,7 +49,7 @@ namespace {
 // one whose chord will not fit after kSpreadShrinks tries.
 constexpr int kSpreadSamples = 32;
 constexpr double kSpreadRefine = 1.0;
-constexpr double kSpreadAim = 0.95;
+constexpr double kSpreadAim = 0.92;
 constexpr double kSpreadMax = 1 << 16;
 constexpr int kSpreadShrinks = 32;
 // Cube root for planning only (a guess refined by two Newton steps: about
