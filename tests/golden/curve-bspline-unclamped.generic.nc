@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-bspline-unclamped.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009502 mm, proven bound 0.009606 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.00952 mm, proven bound 0.009606 mm, rounding included)
 (T1: uniform-cubic)
 (T1 plunge feed 300 mm/min)
 (estimated cycle time 22 s on the motion model of machine generic [acceleration, corners, tool changes])
@@ -37,28 +37,28 @@ X78.333 Y60.
 X80.126 Y59.162
 X82.242 Y58.033
 X84.406 Y56.735
-X86.63 Y55.255
-X88.946 Y53.562
-X91.348 Y51.649
-X93.852 Y49.49
-X96.481 Y47.056
-X99.265 Y44.303
-X102.244 Y41.176
-X105.533 Y37.535
-X109.242 Y33.228
-X113.796 Y27.724
+X86.63 Y55.256
+X88.946 Y53.563
+X91.347 Y51.649
+X93.851 Y49.491
+X96.48 Y47.056
+X99.264 Y44.304
+X102.243 Y41.177
+X105.531 Y37.537
+X109.24 Y33.23
+X113.793 Y27.728
 X120. Y20.
-X125.955 Y12.588
-X130.343 Y7.293
-X133.878 Y3.204
-X137.023 Y-0.255
-X139.892 Y-3.236
-X142.554 Y-5.833
-X145.057 Y-8.109
-X147.432 Y-10.108
-X149.704 Y-11.866
+X125.958 Y12.584
+X130.345 Y7.291
+X133.88 Y3.202
+X137.024 Y-0.257
+X139.893 Y-3.238
+X142.555 Y-5.834
+X145.058 Y-8.109
+X147.433 Y-10.109
+X149.705 Y-11.867
 X151.893 Y-13.409
-X154.013 Y-14.756
+X154.014 Y-14.756
 X156.076 Y-15.923
 X158.06 Y-16.908
 X160.009 Y-17.741

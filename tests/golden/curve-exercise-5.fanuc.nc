@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-5.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.00934 mm, proven bound 0.009364 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009438 mm, proven bound 0.009491 mm, rounding included)
 N30 (T1: seed-ex-5)
 N40 (T1 plunge feed 200 mm/min)
 N50 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])
@@ -18,11 +18,11 @@ N150 G00 Z5.
 N160 X0. Y0.
 N170 G01 Z-0.5 F200.
 N180 X0.482 Y0.453 F600.
-N190 X0.961 Y0.795
+N190 X0.96 Y0.795
 N200 X1.332 Y0.972
 N210 X1.5 Y1.
 N220 X1.332 Y1.028
-N230 X0.961 Y1.205
+N230 X0.96 Y1.205
 N240 X0.482 Y1.547
 N250 X0. Y2.
 N260 G00 Z5.

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-7.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009371 mm, proven bound 0.009967 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009371 mm, proven bound 0.009979 mm, rounding included)
 (T1: seed-ex-7)
 (T1 plunge feed 200 mm/min)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])
@@ -13,7 +13,7 @@ S12000 M03
 G00 Z5.
 X0. Y0.
 G01 Z-0.5 F200.
-X0.663 Y0.621 F600.
+X0.662 Y0.621 F600.
 X1.082 Y0.893
 X1.34 Y0.938
 X1.574 Y0.836

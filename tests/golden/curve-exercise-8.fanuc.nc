@@ -1,7 +1,7 @@
 %
 O1000 (BEZCAM)
 N10 (bezcam 0.1.0: curve-exercise-8.json, machine fanuc, output lines)
-N20 (tolerance 0.01 mm; largest deviation measured 0.009338 mm, proven bound 0.009741 mm, rounding included)
+N20 (tolerance 0.01 mm; largest deviation measured 0.009338 mm, proven bound 0.009745 mm, rounding included)
 N30 (T1: seed-ex-8)
 N40 (T1 plunge feed 200 mm/min)
 N50 (estimated cycle time 7 s on the motion model of machine fanuc [acceleration, corners, tool changes])

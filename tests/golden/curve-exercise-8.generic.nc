@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-exercise-8.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009338 mm, proven bound 0.009741 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009338 mm, proven bound 0.009745 mm, rounding included)
 (T1: seed-ex-8)
 (T1 plunge feed 200 mm/min)
 (estimated cycle time 9 s on the motion model of machine generic [acceleration, corners, tool changes])

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: curve-semicircle.json, machine generic, output lines)
-(tolerance 0.005 mm; largest deviation measured 0.004592 mm, proven bound 0.004713 mm, rounding included)
+(tolerance 0.005 mm; largest deviation measured 0.004446 mm, proven bound 0.004635 mm, rounding included)
 (T1: semicircle-r3)
 (T1 plunge feed 200 mm/min)
 (estimated cycle time 10 s on the motion model of machine generic [acceleration, corners, tool changes])
@@ -13,27 +13,28 @@ S12000 M03
 G00 Z5.
 X-3. Y0.
 G01 Z-0.5 F200.
-X-2.981 Y0.416 F800.
-X-2.9 Y0.865
-X-2.763 Y1.275
-X-2.573 Y1.647
-X-2.332 Y1.98
-X-2.041 Y2.274
-X-1.704 Y2.525
-X-1.323 Y2.729
-X-0.905 Y2.88
-X-0.46 Y2.973
-X0. Y3.004
-X0.46 Y2.973
-X0.905 Y2.88
-X1.323 Y2.729
-X1.704 Y2.525
-X2.041 Y2.274
-X2.332 Y1.98
-X2.573 Y1.647
-X2.763 Y1.275
-X2.9 Y0.865
-X2.981 Y0.416
+X-2.983 Y0.399 F800.
+X-2.909 Y0.83
+X-2.783 Y1.225
+X-2.609 Y1.586
+X-2.387 Y1.912
+X-2.121 Y2.202
+X-1.81 Y2.454
+X-1.459 Y2.664
+X-1.072 Y2.827
+X-0.655 Y2.94
+X-0.221 Y2.997
+X0.221
+X0.655 Y2.94
+X1.072 Y2.827
+X1.459 Y2.664
+X1.81 Y2.454
+X2.121 Y2.202
+X2.387 Y1.912
+X2.609 Y1.586
+X2.783 Y1.225
+X2.909 Y0.83
+X2.983 Y0.399
 X3. Y0.
 G00 Z5.
 M05

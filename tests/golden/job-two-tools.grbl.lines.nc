@@ -1,6 +1,6 @@
 (bezcam 0.1.0: job-two-tools.json, machine grbl, output lines)
 (program 4711)
-(tolerance 0.01 mm; largest deviation measured 0.009512 mm, proven bound 0.009806 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009438 mm, proven bound 0.009806 mm, rounding included)
 (T2: engraving)
 (T1: pocket-outline)
 (T2 plunge feed 250 mm/min)
@@ -21,27 +21,27 @@ X5. Y12.5
 Z1.
 G1 Z-0.2 F250.
 X5.819 Y13.227 F400.
-X6.775 Y13.91
+X6.775 Y13.909
 X7.732 Y14.439
 X8.699 Y14.831
 X9.688 Y15.092
 X10.715 Y15.229
-X11.799 Y15.24
+X11.798 Y15.24
 X12.961 Y15.116
 X14.233 Y14.844
-X15.696 Y14.385
-X17.499 Y13.665
+X15.695 Y14.386
+X17.498 Y13.665
 X20. Y12.5
-X22.501 Y11.335
-X24.304 Y10.615
+X22.502 Y11.335
+X24.305 Y10.614
 X25.767 Y10.156
 X27.039 Y9.884
-X28.201 Y9.76
+X28.202 Y9.76
 X29.285 Y9.771
 X30.312 Y9.908
 X31.301 Y10.169
 X32.268 Y10.561
-X33.225 Y11.09
+X33.225 Y11.091
 X34.181 Y11.773
 X35. Y12.5
 G0 Z5.

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: path-closed-teardrop.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.00946 mm, proven bound 0.009865 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.00946 mm, proven bound 0.009587 mm, rounding included)
 (T2: teardrop)
 (T2 plunge feed 300 mm/min)
 (estimated cycle time 16 s on the motion model of machine generic [acceleration, corners, tool changes])
@@ -13,23 +13,24 @@ S12000 M03
 G00 Z5.
 X0. Y0.
 G01 Z-1. F300.
-X3.509 Y1.799 F1000.
-X7.227 Y3.852
-X10.568 Y5.845
-X13.56 Y7.781
-X16.226 Y9.661
-X18.59 Y11.487
-X20.673 Y13.26
-X22.496 Y14.984
-X24.077 Y16.657
-X25.437 Y18.286
-X26.593 Y19.875
-X27.559 Y21.425
-X28.349 Y22.941
-X28.975 Y24.43
-X29.447 Y25.893
-X29.773 Y27.34
-X29.959 Y28.775
+X3.328 Y1.703 F1000.
+X6.875 Y3.651
+X10.082 Y5.545
+X12.972 Y7.388
+X15.565 Y9.179
+X17.881 Y10.921
+X19.94 Y12.616
+X21.76 Y14.265
+X23.358 Y15.871
+X24.748 Y17.433
+X25.947 Y18.958
+X26.968 Y20.447
+X27.824 Y21.902
+X28.527 Y23.33
+X29.084 Y24.732
+X29.506 Y26.115
+X29.798 Y27.483
+X29.964 Y28.84
 X30. Y30.
 X29.962 Y31.166
 X29.794 Y32.465

@@ -1,6 +1,6 @@
 %
 (bezcam 0.1.0: path-mixed-bezier-bspline.json, machine generic, output lines)
-(tolerance 0.01 mm; largest deviation measured 0.009405 mm, proven bound 0.009798 mm, rounding included)
+(tolerance 0.01 mm; largest deviation measured 0.009412 mm, proven bound 0.009798 mm, rounding included)
 (T1: lead-in-spline-lead-out)
 (T1 plunge feed 300 mm/min)
 (estimated cycle time 21 s on the motion model of machine generic [acceleration, corners, tool changes])
@@ -26,17 +26,17 @@ X30.784 Y5.913
 X33.989 Y7.211
 X37.217 Y8.647
 X40. Y10.
-X43.282 Y11.683
-X47.102 Y13.784
-X51.029 Y16.089
-X55.152 Y18.661
-X59.763 Y21.698
+X43.282 Y11.682
+X47.101 Y13.783
+X51.027 Y16.088
+X55.149 Y18.66
+X59.758 Y21.695
 X65.551 Y25.677
-X70.66 Y29.19
-X74.188 Y31.499
-X76.918 Y33.163
+X70.662 Y29.191
+X74.189 Y31.5
+X76.918 Y33.164
 X79.292 Y34.487
-X81.445 Y35.565
+X81.446 Y35.565
 X83.184 Y36.327
 X84.901 Y37.003
 X86.83 Y37.632
@@ -56,16 +56,16 @@ X109.026 Y33.618
 X110.5 Y32.5
 X111.965 Y31.302
 X113.899 Y29.565
-X116.401 Y27.148
+X116.399 Y27.15
 X119.918 Y23.576
-X124.15 Y19.286
-X127.516 Y16.033
-X130.543 Y13.278
-X133.414 Y10.835
-X136.215 Y8.618
-X138.996 Y6.579
-X141.787 Y4.691
-X144.61 Y2.936
+X124.153 Y19.283
+X127.518 Y16.031
+X130.544 Y13.277
+X133.415 Y10.834
+X136.216 Y8.617
+X138.997 Y6.578
+X141.788 Y4.69
+X144.611 Y2.936
 X147.481 Y1.303
 X150. Y0.
 X152.567 Y-1.239
