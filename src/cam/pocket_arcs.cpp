@@ -105,6 +105,9 @@ class Fitter {
     return certify(i, j, Vec3{E.x + n.x * r, E.y + n.y * r, 0}, r < 0);
   }
 
+  // The same fitter within a distance t instead.
+  Fitter within(double t) const { return Fitter(p_, t, dec_, rtol_); }
+
   // The arc about c (its centre when printed from vertex i) to vertex j.
   Span arc_about(size_t i, size_t j, const Vec3& c, bool ccw) const { return certify(i, j, c, ccw); }
 
@@ -372,19 +375,20 @@ bool touch(const Fitter& fit, std::vector<Vec3>& p, Taken& prev, Taken& take, si
       if (!pl->vertex) p.insert(p.begin() + static_cast<std::ptrdiff_t>(qi), pl->q);
       const size_t ii = !pl->vertex && qi <= i ? i + 1 : i, end = pl->vertex ? take.span.end : take.span.end + 1;
       if (qi > prev.from && qi != ii) {
+        const Fitter f2 = fit.within(tol - eps);  // (both moves then within tol of the polyline as it was)
         const FitMove& m = prev.span.move;
         const Vec3& q = p[qi];
         Span before;
         if (m.kind != FitKind::line && take.span.move.kind == FitKind::line && prev.tin.x == 0 && prev.tin.y == 0) {
           const Vec3& e = p[end];
           const double l = dist_xy(e, q);
-          if (l > 0) before = fit.tangent_arc_into(prev.from, qi, Vec3{(e.x - q.x) / l, (e.y - q.y) / l, 0});
+          if (l > 0) before = f2.tangent_arc_into(prev.from, qi, Vec3{(e.x - q.x) / l, (e.y - q.y) / l, 0});
         }
         if (!before.ok && m.kind != FitKind::line)
-          before = fit.arc_about(prev.from, qi, m.center, m.kind == FitKind::arc_ccw);
-        if (!before.ok) before = refit(fit, prev, qi);
+          before = f2.arc_about(prev.from, qi, m.center, m.kind == FitKind::arc_ccw);
+        if (!before.ok) before = refit(f2, prev, qi);
         const Vec3 u = before.ok ? move_tangent(p[prev.from], before.move, false) : Vec3{};
-        Span chain = before.ok ? chain_from(fit, p.size(), qi, u) : Span{};
+        Span chain = before.ok ? chain_from(f2, p.size(), qi, u) : Span{};
         if (chain.ok && chain.end > ii && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
             before.move.bound + eps <= tol && chain.move.bound + eps <= tol) {
           before.move.bound += eps, chain.move.bound += eps;
@@ -396,6 +400,49 @@ bool touch(const Fitter& fit, std::vector<Vec3>& p, Taken& prev, Taken& take, si
       }
       if (!pl->vertex) p.erase(p.begin() + static_cast<std::ptrdiff_t>(qi));
     }
+  }
+  return false;
+}
+
+// A ring (closed) whose first free move is an arc: it starts on the
+// straight run the ring closes with, a little before the round, where no
+// arc from the start is tangent to what follows. The ring then starts with
+// a line along the run to where the arc's circle touches the run (the foot
+// of its centre, placed as touch() places a joint), and a tangent move
+// from there. On success the line is in out and take the move after it.
+bool lead_line(const Fitter& fit, std::vector<Vec3>& p, Taken& take, std::vector<Taken>& out, double tol,
+               int decimals) {
+  const size_t n = p.size();
+  if (n < 4 || dist_xy(p.front(), p.back()) > 0 || take.span.move.kind == FitKind::line) return false;
+  const Vec3 &a = p[n - 2], s = p[0];
+  const double l = dist_xy(a, s);
+  if (!(l > 0)) return false;
+  const Vec3 u{(s.x - a.x) / l, (s.y - a.y) / l, 0}, c = take.span.move.center;
+  const double along = (c.x - s.x) * u.x + (c.y - s.y) * u.y;
+  if (!(along > 0)) return false;
+  const Vec3 t{s.x + u.x * along, s.y + u.y * along, 0};
+  const size_t hi = std::min(take.span.end, kRetreat);
+  const Vec3 at = nearest_on(p, 0, hi, t).second;
+  if (!(dist_xy(at, t) <= tol)) return false;
+  for (const Vec3& cand : {t, at}) {
+    const std::optional<JointSpot> pl = place_near(p, 0, hi, cand, decimals);
+    if (!pl || !(pl->eps <= tol / 2)) continue;
+    const size_t qi = pl->vertex ? pl->k : pl->k + 1;
+    if (qi == 0) continue;
+    if (!pl->vertex) p.insert(p.begin() + static_cast<std::ptrdiff_t>(qi), pl->q);
+    const size_t end = pl->vertex ? take.span.end : take.span.end + 1;
+    const Fitter f2 = fit.within(tol - pl->eps);
+    Span ln = f2.line(0, qi);
+    const Vec3 d = ln.ok ? move_tangent(p[0], ln.move, false) : Vec3{};
+    Span chain = ln.ok ? chain_from(f2, p.size(), qi, d) : Span{};
+    if (chain.ok && chain.end > qi && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
+        ln.move.bound + pl->eps <= tol && chain.move.bound + pl->eps <= tol) {
+      ln.move.bound += pl->eps, chain.move.bound += pl->eps;
+      out.push_back({ln, 0, Vec3{}});
+      take = {chain, qi, d};
+      return true;
+    }
+    if (!pl->vertex) p.erase(p.begin() + static_cast<std::ptrdiff_t>(qi));
   }
   return false;
 }
@@ -435,6 +482,7 @@ std::vector<FitMove> polyline_arcs(const std::vector<Vec3>& polyline, double tol
     }
     if (!tangent && !out.empty() && (tin.x != 0 || tin.y != 0))
       tangent = touch(fit, p, out.back(), take, i, tol, decimals);
+    if (!tangent && out.empty()) lead_line(fit, p, take, out, tol, decimals);
     tin = move_tangent(p[take.from], take.span.move, false);
     out.push_back(take);
     i = take.span.end;
