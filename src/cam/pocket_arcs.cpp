@@ -244,10 +244,6 @@ Span farthest(size_t i, size_t first, size_t n, F fits) {
   return best;
 }
 
-}  // namespace
-
-namespace {
-
 // Where a joint would turn, the move before it may end elsewhere so that a
 // tangent one goes on from there: a few vertices sooner (a polyline's
 // straight run taken a vertex into the round that follows, within the
