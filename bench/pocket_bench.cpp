@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
   std::printf(
       "(build s: passes and moves, best of %d; check s: the certificate's own time; len/(A/s): length cut "
       "over reachable area / stepover, or / load for adaptive; bound: arccos(1 - load/r) + 2; elsewhere: the "
-      "largest engagement away from corners sharper than the tool, where the engagement passes the bound)\n",
+      "largest engagement away from the places that wrap the tool, where the engagement passes the bound)\n",
       tries);
   return 0;
 }

@@ -133,8 +133,9 @@ Vec3 nearest_on(const Vec3& p, const Vec3& a, const Vec3& b) {
   return {a.x + t * dx, a.y + t * dy, 0};
 }
 
-// A place in a sharp corner where the engagement passes the bound: kept
-// once per corner (the largest).
+// A place that wraps the tool (a sharp corner, a gap narrower than the
+// tool and a load each side) where the engagement passes the bound: kept
+// once per 2 r (the largest).
 void corner_over(PocketCertificate& c, double deg, const Vec3& at, double r) {
   for (auto& p : c.engagement_corners)
     if (std::hypot(p.at.x - at.x, p.at.y - at.y) <= 2 * r) {
@@ -289,9 +290,10 @@ std::vector<std::string> certificate_lines(const std::string& label, const Pocke
                     (c.engagement_bound > 0 ? ", bound arccos(1 - load/r) + 2 = " + sig(c.engagement_bound) : "") +
                     " [a full slot: 180]; ";
   if (!c.engagement_corners.empty())
-    eng += "elsewhere than " + std::to_string(c.engagement_corners.size()) + " sharp " +
-           (c.engagement_corners.size() == 1 ? "corner" : "corners") + " at most " + sig(c.engagement_away_deg) +
-           " deg at " + sig(c.engagement_away_at.x) + ", " + sig(c.engagement_away_at.y) + "; ";
+    eng += "elsewhere than " + std::to_string(c.engagement_corners.size()) +
+           (c.engagement_corners.size() == 1 ? " place that wraps" : " places that wrap") + " the tool at most " +
+           sig(c.engagement_away_deg) + " deg at " + sig(c.engagement_away_at.x) + ", " + sig(c.engagement_away_at.y) +
+           "; ";
   eng += c.rapids_in_material == 0 ? "no rapid through material"
                                    : std::to_string(c.rapids_in_material) + " rapids through material";
   return {uncut, reach, eng};

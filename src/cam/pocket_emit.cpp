@@ -570,8 +570,8 @@ void PocketCut::certify() {
                     " gives";
     const auto& hot = cert.engagement_corners;
     if (!hot.empty()) {
-      w += "; in corners sharper than the tool (its edge within the load of material it cannot reach, which wraps "
-           "it): ";
+      w += "; in places that wrap the tool (corners sharper than it, its edge within the load of material it cannot "
+           "reach, or gaps where walls either side lie nearer together than the tool and a load each side): ";
       for (size_t i = 0; i < hot.size() && i < 6; ++i)
         w += (i ? ", " : "") + fmt_num(hot[i].deg, 4) + " at (" + fmt_num(hot[i].at.x, 4) + ", " +
              fmt_num(hot[i].at.y, 4) + ")";

@@ -127,11 +127,39 @@ TEST(PocketAdaptive, StarTipsNarrowerThanTheToolAreNamedWhereTheyWrapIt) {
     EXPECT_LE(c.engagement_away_deg, c.engagement_bound + (tip > 30 ? 2 : 0)) << tip;
     EXPECT_GE(c.engagement_away_deg, std::acos(1 - load / r) * 180 / std::numbers::pi - 10) << tip;
     const auto w = std::find_if(p.warnings.begin(), p.warnings.end(), [](const std::string& s) {
-      return s.find("in corners sharper than the tool") != std::string::npos;
+      return s.find("in places that wrap the tool (corners sharper than it") != std::string::npos;
     });
     ASSERT_NE(w, p.warnings.end()) << tip;
     EXPECT_NE(w->find("elsewhere at most"), std::string::npos) << *w;
   }
+}
+
+TEST(PocketAdaptive, AGapNarrowerThanTheToolAndALoadEachSideIsNamedAsOne) {
+  // A 40 x 25 plate round a boss of radius 5.9, a 6 mm tool, load 1.2:
+  // the gaps above and below the boss are 6.6 wide, narrower than the
+  // tool and a load each side (8.4), and every tool position reaches all
+  // of their material. The places the engagement passes the bound there
+  // are named as places that wrap the tool, and the warning gives both
+  // reasons (it gave only the corners', material out of reach, of which
+  // there is none in a gap).
+  const Program p = build(R"("pattern":"adaptive","load":1.2,"cut_z":-1)",
+                          {polygon({{0, 0}, {40, 0}, {40, 25}, {0, 25}}), circle(20, 12.5, 5.9)});
+  const PocketCertificate& c = cert(p);
+  EXPECT_TRUE(c.covered());
+  ASSERT_FALSE(c.engagement_corners.empty());
+  size_t in_gap = 0;
+  for (const auto& h : c.engagement_corners) in_gap += h.at.x > 14 && h.at.x < 26;  // (beside the boss)
+  EXPECT_GT(in_gap, 0u);
+  const auto w = std::find_if(p.warnings.begin(), p.warnings.end(),
+                              [](const std::string& s) { return s.find("engagement of") != std::string::npos; });
+  ASSERT_NE(w, p.warnings.end());
+  EXPECT_NE(w->find("gaps where walls either side lie nearer together than the tool and a load each side"),
+            std::string::npos)
+      << *w;
+  EXPECT_TRUE(std::any_of(p.notes.begin(), p.notes.end(), [](const std::string& n) {
+    return n.find("places that wrap the tool at most") != std::string::npos ||
+           n.find("place that wraps the tool at most") != std::string::npos;
+  }));
 }
 
 TEST(PocketAdaptive, EachPieceIsEnteredByAHelixInsideIt) {
