@@ -301,10 +301,7 @@ std::pair<size_t, Vec3> nearest_on(const std::vector<Vec3>& p, size_t lo, size_t
   Vec3 at = p[lo];
   double d = dist_xy(q, at);
   for (size_t k = lo; k < hi && k + 1 < p.size(); ++k) {
-    const Vec3 &u = p[k], &v = p[k + 1];
-    const double ex = v.x - u.x, ey = v.y - u.y, ll = ex * ex + ey * ey;
-    const double t = ll > 0 ? std::clamp(((q.x - u.x) * ex + (q.y - u.y) * ey) / ll, 0.0, 1.0) : 0;
-    const Vec3 m{u.x + ex * t, u.y + ey * t, 0};
+    const Vec3 m = segment_point(q, p[k], p[k + 1]);
     if (dist_xy(q, m) < d) d = dist_xy(q, m), best = k, at = m;
   }
   return {best, at};

@@ -126,13 +126,6 @@ void rapids(const PocketCheckInput& in, const std::vector<Piece>& path, PocketCe
   }
 }
 
-// The point of segment ab nearest p.
-Vec3 nearest_on(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-  const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0;
-  return {a.x + t * dx, a.y + t * dy, 0};
-}
-
 // A place that wraps the tool (a sharp corner, a gap narrower than the
 // tool and a load each side) where the engagement passes the bound: kept
 // once per 2 r (the largest).
@@ -197,13 +190,13 @@ PocketCertificate check_pocket(const PocketCheckInput& in) {
     double d1 = 1e300;
     for (const auto& l : in.walls)
       for (size_t i = 0; i < l.size(); ++i) {
-        const Vec3 q = nearest_on(p, l[i], l[(i + 1) % l.size()]);
+        const Vec3 q = detail::segment_point(p, l[i], l[(i + 1) % l.size()]);
         const double d = std::hypot(q.x - p.x, q.y - p.y);
         if (d < d1) d1 = d, n1 = q;
       }
     for (const auto& l : in.walls)
       for (size_t i = 0; i < l.size(); ++i) {
-        const Vec3 q = nearest_on(p, l[i], l[(i + 1) % l.size()]);
+        const Vec3 q = detail::segment_point(p, l[i], l[(i + 1) % l.size()]);
         const double d = std::hypot(q.x - p.x, q.y - p.y);
         if (d1 + d < 2 * wrap && (q.x - p.x) * (n1.x - p.x) + (q.y - p.y) * (n1.y - p.y) < 0) return true;
       }

@@ -7,11 +7,15 @@
 
 namespace bezcam::detail {
 
-double point_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+Vec3 segment_point(const Vec3& p, const Vec3& a, const Vec3& b) {
   const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-  double t = l2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2 : 0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+  const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0;
+  return {a.x + t * dx, a.y + t * dy, 0};
+}
+
+double point_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 q = segment_point(p, a, b);
+  return std::hypot(p.x - q.x, p.y - q.y);
 }
 
 PocketGrid::PocketGrid(const PocketLoops& bounds, double c, size_t max_cells) {

@@ -22,6 +22,8 @@ struct Piece {
   double bulge = 0;     ///< a chord of an arc: the arc lies within this of it (its sagitta)
 };
 
+/// The point of the segment ab nearest p in XY (z = 0).
+Vec3 segment_point(const Vec3& p, const Vec3& a, const Vec3& b);
 /// Distance from p to the segment ab in XY.
 double point_segment(const Vec3& p, const Vec3& a, const Vec3& b);
 
