@@ -309,9 +309,10 @@ std::pair<size_t, Vec3> nearest_on(const std::vector<Vec3>& p, size_t lo, size_t
 
 // The tangent move from vertex i leaving in direction u that reaches
 // farthest. A line's direction is judged by its chord, surer the longer:
-// the farthest line first, then the farthest whose chord is tangent.
-Span chain_from(const Fitter& fit, size_t n, size_t i, const Vec3& u) {
-  Span tl = farthest(i, 1, n, [&](size_t j) { return fit.line(i, j); });
+// the farthest line first (`free_line`, when the caller has it), then the
+// farthest whose chord is tangent.
+Span chain_from(const Fitter& fit, size_t n, size_t i, const Vec3& u, const Span* free_line = nullptr) {
+  Span tl = free_line ? *free_line : farthest(i, 1, n, [&](size_t j) { return fit.line(i, j); });
   if (tl.ok) tl = fit.tangent_line(i, tl.end, u);
   if (!tl.ok) tl = farthest(i, 1, n, [&](size_t j) { return fit.tangent_line(i, j, u); });
   const Span ta = farthest(i, 1, n, [&](size_t j) { return fit.tangent_arc(i, j, u); });
@@ -346,53 +347,63 @@ std::optional<JointSpot> place_near(const std::vector<Vec3>& p, size_t lo, size_
   return pl;
 }
 
+// A joint near c (place_near(), between vertices lo and hi), made a vertex
+// of p when it falls between two, offered to fits(qi, inserted, f2, eps):
+// qi its vertex, f2 the fitter within tol less its distance eps from the
+// polyline (moves f2 fits are within tol of the polyline as it was, once
+// eps is added to their bounds). The vertex stays when fits takes it.
+template <class F>
+bool try_joint(const Fitter& fit, std::vector<Vec3>& p, size_t lo, size_t hi, const Vec3& c, double tol, int decimals,
+               F&& fits) {
+  const std::optional<JointSpot> pl = place_near(p, lo, hi, c, decimals);
+  if (!pl || !(pl->eps <= tol / 2)) return false;
+  const size_t qi = pl->vertex ? pl->k : pl->k + 1;
+  if (!pl->vertex) p.insert(p.begin() + static_cast<std::ptrdiff_t>(qi), pl->q);
+  if (fits(qi, !pl->vertex, fit.within(tol - pl->eps), pl->eps)) return true;
+  if (!pl->vertex) p.erase(p.begin() + static_cast<std::ptrdiff_t>(qi));
+  return false;
+}
+
 // At a joint at vertex i that would turn: the move before ended where its
 // support and the free move's touch, and a tangent move from there that
 // reaches past i. The joint is the touch point itself (rounded) when it
 // lies within half the distance of the polyline, else the polyline's point
-// nearest it; between two vertices it is made a vertex of p, and both
-// moves' bounds count its distance eps from the segment it splits. On
-// success prev and take are the two moves and i the joint's vertex as p
-// now numbers it.
+// nearest it (try_joint()). On success prev and take are the two moves and
+// i the joint's vertex as p now numbers it.
 bool touch(const Fitter& fit, std::vector<Vec3>& p, Taken& prev, Taken& take, size_t& i, double tol, int decimals) {
   const size_t lo = std::max(prev.from, i >= kRetreat ? i - kRetreat : 0);
   const size_t hi = std::min(take.span.end, i + kRetreat);
+  auto fits = [&](size_t qi, bool inserted, const Fitter& f2, double eps) {
+    const size_t ii = inserted && qi <= i ? i + 1 : i, end = inserted ? take.span.end + 1 : take.span.end;
+    if (qi <= prev.from || qi == ii) return false;
+    const FitMove& m = prev.span.move;
+    const Vec3& q = p[qi];
+    Span before;
+    if (m.kind != FitKind::line && take.span.move.kind == FitKind::line && prev.tin.x == 0 && prev.tin.y == 0) {
+      const Vec3& e = p[end];
+      const double l = dist_xy(e, q);
+      if (l > 0) before = f2.tangent_arc_into(prev.from, qi, Vec3{(e.x - q.x) / l, (e.y - q.y) / l, 0});
+    }
+    if (!before.ok && m.kind != FitKind::line)
+      before = f2.arc_about(prev.from, qi, m.center, m.kind == FitKind::arc_ccw);
+    if (!before.ok) before = refit(f2, prev, qi);
+    if (!before.ok) return false;
+    const Vec3 u = move_tangent(p[prev.from], before.move, false);
+    Span chain = chain_from(f2, p.size(), qi, u);
+    if (!(chain.ok && chain.end > ii && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
+          before.move.bound + eps <= tol && chain.move.bound + eps <= tol))
+      return false;
+    before.move.bound += eps, chain.move.bound += eps;
+    prev.span = before;
+    take = {chain, qi, u};
+    i = ii;
+    return true;
+  };
   for (const Vec3& t : touch_points(p[prev.from], prev.span.move, take.span.move, p[i])) {
     const Vec3 at = nearest_on(p, lo, hi, t).second;
     if (!(dist_xy(at, t) <= tol)) continue;
-    for (const Vec3& c : {t, at}) {
-      const std::optional<JointSpot> pl = place_near(p, lo, hi, c, decimals);
-      if (!pl || !(pl->eps <= tol / 2)) continue;
-      const size_t qi = pl->vertex ? pl->k : pl->k + 1;
-      const double eps = pl->eps;
-      if (!pl->vertex) p.insert(p.begin() + static_cast<std::ptrdiff_t>(qi), pl->q);
-      const size_t ii = !pl->vertex && qi <= i ? i + 1 : i, end = pl->vertex ? take.span.end : take.span.end + 1;
-      if (qi > prev.from && qi != ii) {
-        const Fitter f2 = fit.within(tol - eps);  // (both moves then within tol of the polyline as it was)
-        const FitMove& m = prev.span.move;
-        const Vec3& q = p[qi];
-        Span before;
-        if (m.kind != FitKind::line && take.span.move.kind == FitKind::line && prev.tin.x == 0 && prev.tin.y == 0) {
-          const Vec3& e = p[end];
-          const double l = dist_xy(e, q);
-          if (l > 0) before = f2.tangent_arc_into(prev.from, qi, Vec3{(e.x - q.x) / l, (e.y - q.y) / l, 0});
-        }
-        if (!before.ok && m.kind != FitKind::line)
-          before = f2.arc_about(prev.from, qi, m.center, m.kind == FitKind::arc_ccw);
-        if (!before.ok) before = refit(f2, prev, qi);
-        const Vec3 u = before.ok ? move_tangent(p[prev.from], before.move, false) : Vec3{};
-        Span chain = before.ok ? chain_from(f2, p.size(), qi, u) : Span{};
-        if (chain.ok && chain.end > ii && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
-            before.move.bound + eps <= tol && chain.move.bound + eps <= tol) {
-          before.move.bound += eps, chain.move.bound += eps;
-          prev.span = before;
-          take = {chain, qi, u};
-          i = ii;
-          return true;
-        }
-      }
-      if (!pl->vertex) p.erase(p.begin() + static_cast<std::ptrdiff_t>(qi));
-    }
+    for (const Vec3& c : {t, at})
+      if (try_joint(fit, p, lo, hi, c, tol, decimals, fits)) return true;
   }
   return false;
 }
@@ -417,26 +428,23 @@ bool lead_line(const Fitter& fit, std::vector<Vec3>& p, Taken& take, std::vector
   const size_t hi = std::min(take.span.end, kRetreat);
   const Vec3 at = nearest_on(p, 0, hi, t).second;
   if (!(dist_xy(at, t) <= tol)) return false;
-  for (const Vec3& cand : {t, at}) {
-    const std::optional<JointSpot> pl = place_near(p, 0, hi, cand, decimals);
-    if (!pl || !(pl->eps <= tol / 2)) continue;
-    const size_t qi = pl->vertex ? pl->k : pl->k + 1;
-    if (qi == 0) continue;
-    if (!pl->vertex) p.insert(p.begin() + static_cast<std::ptrdiff_t>(qi), pl->q);
-    const size_t end = pl->vertex ? take.span.end : take.span.end + 1;
-    const Fitter f2 = fit.within(tol - pl->eps);
+  auto fits = [&](size_t qi, bool inserted, const Fitter& f2, double eps) {
+    if (qi == 0) return false;
+    const size_t end = inserted ? take.span.end + 1 : take.span.end;
     Span ln = f2.line(0, qi);
-    const Vec3 d = ln.ok ? move_tangent(p[0], ln.move, false) : Vec3{};
-    Span chain = ln.ok ? chain_from(f2, p.size(), qi, d) : Span{};
-    if (chain.ok && chain.end > qi && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
-        ln.move.bound + pl->eps <= tol && chain.move.bound + pl->eps <= tol) {
-      ln.move.bound += pl->eps, chain.move.bound += pl->eps;
-      out.push_back({ln, 0, Vec3{}});
-      take = {chain, qi, d};
-      return true;
-    }
-    if (!pl->vertex) p.erase(p.begin() + static_cast<std::ptrdiff_t>(qi));
-  }
+    if (!ln.ok) return false;
+    const Vec3 d = move_tangent(p[0], ln.move, false);
+    Span chain = chain_from(f2, p.size(), qi, d);
+    if (!(chain.ok && chain.end > qi && kChainRestart * double(chain.end - qi) >= double(end - qi) &&
+          ln.move.bound + eps <= tol && chain.move.bound + eps <= tol))
+      return false;
+    ln.move.bound += eps, chain.move.bound += eps;
+    out.push_back({ln, 0, Vec3{}});
+    take = {chain, qi, d};
+    return true;
+  };
+  for (const Vec3& cand : {t, at})
+    if (try_joint(fit, p, 0, hi, cand, tol, decimals, fits)) return true;
   return false;
 }
 
@@ -459,7 +467,7 @@ std::vector<FitMove> polyline_arcs(const std::vector<Vec3>& polyline, double tol
     // angle).
     bool tangent = false;
     if (tin.x != 0 || tin.y != 0) {
-      const Span chain = chain_from(fit, p.size(), i, tin);
+      const Span chain = chain_from(fit, p.size(), i, tin, &ln);
       if (chain.ok && kChainRestart * double(chain.end - i) >= double(take.span.end - i))
         take = {chain, i, tin}, tangent = true;
     }
