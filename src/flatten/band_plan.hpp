@@ -34,8 +34,8 @@ namespace {
 // rounding (aimed a little low: a chord planned closer to the limit often
 // needs the exact proof, the hull test reading a few per cent high, or
 // does not fit and is planned again, which costs more than the few more
-// chords; docs/flattening.md); a chord with an end on the curve (the piece's first and last)
-// has less room and is planned shorter. Near an inflection, where f
+// chords; docs/flattening.md); a chord with an end on the curve (the
+// piece's first and last) has less room and is planned shorter. Near an inflection, where f
 // vanishes and a chord's gap grows like the cube of its step, the cubic
 // term's density takes over. The integral is taken by the trapezoid rule,
 // on 16 or kSpreadSamples intervals (more for pieces that need more chords).

@@ -246,7 +246,8 @@ double flatten_into(std::span<const Bezier> pieces, const FlattenOptions& opt, s
 FlattenResult flatten(std::span<const Bezier> pieces, const FlattenOptions& opt) {
   // The vertices go straight into the result, given room for a quarter
   // more than the thread's last result held (curves flattened one after
-  // another are often alike): one allocation per call, no copy.
+  // another are often alike): one allocation per call unless the curve
+  // needs more room than that, no copy.
   thread_local size_t last = 0;
   FlattenResult r;
   r.points.reserve(std::min<size_t>(last + last / 4 + 4, size_t{1} << 16));
